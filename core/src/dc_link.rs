@@ -1,0 +1,126 @@
+//! Rectifier, DC bus and inverter (thesis ch. 2.2.3, eqs. 2.7-2.10), average models that
+//! conserve power.
+//!
+//! Each generator feeds the bus through a six-pulse diode bridge and the notching resistance R_p.
+//! Eq. 2.8 with the commutating reactance X_co = omega L_sg gives the bridge's DC voltage; the
+//! stator resistance adds the equivalent DC resistance (18/pi^2) R_sg, whose loss is the stator
+//! copper loss 3 R_sg |i_s|^2 with the fundamental |i_s| = (sqrt(6)/pi) i_gDC. The thesis' power
+//! balance across the rectifier, Re{3 (E_a i_s^* - R |i_s|^2)} = v_DC i_gDC, then holds exactly and
+//! fixes the generator's electrical power 3 Re{E_a i_s^*} (eq. 2.3).
+
+use std::f64::consts::PI;
+
+/// (3 sqrt(6) / pi): six-pulse bridge, phase rms to mean DC voltage (eq. 2.8).
+pub const BRIDGE_VOLTAGE_RATIO: f64 = 3.0 * 2.449_489_742_783_178 / PI;
+/// sqrt(6)/pi: fundamental phase rms current per unit DC current of a six-pulse bridge.
+pub const BRIDGE_CURRENT_RATIO: f64 = 2.449_489_742_783_178 / PI;
+
+/// Constants of one rectifier branch and the bus.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DcLink {
+    /// Bus capacitance C [F].
+    pub capacitance: f64,
+    /// Notching resistance R_p [ohm].
+    pub r_p: f64,
+    /// Generator stator inductance (commutating) [H].
+    pub l_commutation: f64,
+    /// Equivalent DC resistance of the stator resistance, (18/pi^2) R_sg [ohm].
+    pub r_stator_dc: f64,
+    /// Inverter: largest fundamental phase rms voltage per volt of bus [-].
+    pub inverter_voltage_ratio: f64,
+}
+
+/// What one rectifier branch does at one instant.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct RectifierFlow {
+    /// DC current into the bus i_gDC [A] (eq. 2.9), never negative (diodes).
+    pub i_dc: f64,
+    /// Bridge DC voltage v_DC [V] (eq. 2.8).
+    pub v_dc: f64,
+    /// Generator electrical (air-gap) power 3 Re{E_a i_s^*} [W] (eq. 2.3, Table 5.6).
+    pub p_generator: f64,
+    /// Stator copper loss 3 R_sg |i_s|^2 [W].
+    pub p_stator_loss: f64,
+    /// Notching loss R_p i_gDC^2 [W].
+    pub p_notching_loss: f64,
+    /// Fundamental stator current |i_s| [A rms].
+    pub i_s: f64,
+}
+
+impl DcLink {
+    /// Eqs. 2.8-2.9 with the bus at `v_c`, generator phase emf `e_a` and electrical speed `omega`.
+    pub fn rectify(&self, e_a: f64, omega: f64, v_c: f64) -> RectifierFlow {
+        let r_commutation = 3.0 / PI * omega * self.l_commutation;
+        let v_open = BRIDGE_VOLTAGE_RATIO * e_a;
+        let r_total = self.r_p + r_commutation + self.r_stator_dc;
+        let i_dc = ((v_open - v_c) / r_total).max(0.0);
+        let v_dc = v_open - (r_commutation + self.r_stator_dc) * i_dc;
+        let p_stator_loss = self.r_stator_dc * i_dc * i_dc;
+        RectifierFlow {
+            i_dc,
+            v_dc,
+            p_generator: v_dc * i_dc + p_stator_loss,
+            p_stator_loss,
+            p_notching_loss: self.r_p * i_dc * i_dc,
+            i_s: BRIDGE_CURRENT_RATIO * i_dc,
+        }
+    }
+
+    /// Largest motor phase rms voltage the inverter can make from bus voltage `v_c` [V]: the
+    /// dynamic saturation of ch. 2.2.3 through which a sagging bus limits the motor.
+    pub fn max_phase_voltage(&self, v_c: f64) -> f64 {
+        self.inverter_voltage_ratio * v_c.max(0.0)
+    }
+
+    /// Eq. 2.7: dv_c/dt = (sum i_gDC - i_mDC) / C, with eq. 2.10 i_mDC = P_inverter / v_c.
+    pub fn bus_voltage_rate(&self, i_rectifiers: f64, p_inverter: f64, v_c: f64) -> f64 {
+        let i_inv = if v_c.abs() > 1e-9 {
+            p_inverter / v_c
+        } else {
+            0.0
+        };
+        (i_rectifiers - i_inv) / self.capacitance
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn link() -> DcLink {
+        DcLink {
+            capacitance: 0.037,
+            r_p: 0.05,
+            l_commutation: 0.391e-3,
+            r_stator_dc: 18.0 / (PI * PI) * 2.27e-2,
+            inverter_voltage_ratio: std::f64::consts::SQRT_2 / PI,
+        }
+    }
+
+    /// No load: the bridge gives (3 sqrt(2)/pi) 4160 V = 5618 V (the bus per-unit base).
+    #[test]
+    fn no_load_voltage() {
+        let l = link();
+        let f = l.rectify(4160.0 / 3f64.sqrt(), 377.0, 5618.0);
+        assert!(f.i_dc.abs() < 0.1, "i = {}", f.i_dc);
+        assert!((BRIDGE_VOLTAGE_RATIO * 4160.0 / 3f64.sqrt() - 5617.9).abs() < 0.1);
+        // A bus above the bridge voltage draws nothing back through the diodes.
+        assert_eq!(l.rectify(2000.0, 377.0, 6000.0).i_dc, 0.0);
+    }
+
+    /// Power conservation across the rectifier: generator power = bus power + losses, and the
+    /// AC-side power factor stays at or below one.
+    #[test]
+    fn rectifier_conserves_power() {
+        let l = link();
+        let e_a = 2400.0;
+        let f = l.rectify(e_a, 377.0, 5300.0);
+        assert!(f.i_dc > 1000.0);
+        let v_c = f.v_dc - l.r_p * f.i_dc; // eq. 2.9
+        assert!((v_c - 5300.0).abs() < 1e-6);
+        let balance = f.p_generator - (v_c * f.i_dc + f.p_notching_loss + f.p_stator_loss);
+        assert!(balance.abs() < 1e-6 * f.p_generator, "residual {balance}");
+        let cos_phi = f.p_generator / (3.0 * e_a * f.i_s);
+        assert!(cos_phi > 0.8 && cos_phi <= 1.0, "cos phi = {cos_phi}");
+    }
+}

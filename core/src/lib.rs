@@ -1,0 +1,19 @@
+//! aes-core: the physics of the All Electric Ship simulator (Schmitt, MIT 2010).
+//!
+//! One module per physical subsystem, named after it; equation numbers are the thesis' own.
+//! Everything is SI inside; no I/O, no threads; the same scenario gives the same numbers on
+//! every platform.
+
+pub mod dc_link;
+pub mod generator;
+pub mod motor;
+pub mod presets;
+pub mod prime_mover;
+pub mod propeller;
+pub mod scenario;
+pub mod sim;
+pub mod surge;
+pub mod units;
+
+pub use scenario::Scenario;
+pub use sim::{run, RunResult, SimError, Simulation};

@@ -1,0 +1,362 @@
+//! Induction motor by its per-phase equivalent circuit (thesis ch. 2.2.2, eqs. 2.5-2.6, Table 2.1)
+//! and its volts-per-hertz slip-speed control (ch. 2.2.4).
+//!
+//! The circuit is solved with admittances written in the slip speed omega_s = s omega_e, so that it
+//! stays finite at zero slip and at standstill: the rotor branch R_r/s + j omega_e L_r has the
+//! admittance omega_s / (omega_e (R_r + j omega_s L_r)).
+//!
+//! Eq. 2.5 prints Q_m = 3 eta_m |I_r|^2 R_rm / omega_rm, which is the rotor copper loss over the
+//! shaft speed. The power converted to mechanical form is 3 |I_r|^2 R_r (1-s)/s (the
+//! "electromechanical resistor" the same section describes), so the torque used here is
+//! Q_e = 3 |I_r|^2 R_r / (s omega_e / p) = p P_airgap / omega_e.
+
+use crate::scenario::MotorParams;
+use num_complex::Complex64;
+use std::f64::consts::PI;
+
+/// Motor constants in SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InductionMotor {
+    pub r_s: f64,
+    pub l_s: f64,
+    pub r_r: f64,
+    pub l_r: f64,
+    pub l_m: f64,
+    /// Pole pairs p: omega_r = p omega_rm.
+    pub pole_pairs: f64,
+    /// Rated phase rms voltage [V].
+    pub v_rated: f64,
+    /// Rated electrical frequency [rad/s].
+    pub omega_rated: f64,
+    /// Rated shaft power [W].
+    pub p_rated: f64,
+    /// eta_m of eq. 2.5 [-].
+    pub eta_m: f64,
+}
+
+/// The motor's operating point.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct MotorPoint {
+    /// Electrical input 3 Re{v_m i_in^*} [W] (the inverter's output, Table 5.6).
+    pub p_in: f64,
+    /// Air-gap power [W].
+    pub p_airgap: f64,
+    /// Stator copper loss [W].
+    pub p_stator_loss: f64,
+    /// Rotor copper loss [W].
+    pub p_rotor_loss: f64,
+    /// Electromagnetic torque Q_e [N m].
+    pub torque_em: f64,
+    /// Shaft torque Q_m after the eta_m loss [N m] (eq. 2.5).
+    pub torque: f64,
+    /// Stator current |i_in| [A rms].
+    pub i_in: f64,
+}
+
+impl InductionMotor {
+    pub fn new(p: &MotorParams) -> InductionMotor {
+        InductionMotor {
+            r_s: p.stator_resistance_ohm,
+            l_s: p.stator_inductance_h,
+            r_r: p.rotor_resistance_ohm,
+            l_r: p.rotor_inductance_h,
+            l_m: p.magnetizing_inductance_h,
+            pole_pairs: p.pole_pairs as f64,
+            v_rated: p.rated_voltage_ll_v / 3f64.sqrt(),
+            omega_rated: 2.0 * PI * p.rated_frequency_hz,
+            p_rated: p.rated_power_w,
+            eta_m: p.efficiency,
+        }
+    }
+
+    /// Volts-per-hertz law v_m = (omega_e / omega_rated) v_rated, limited by what the inverter can
+    /// make, `v_max` [V phase rms].
+    pub fn phase_voltage(&self, omega_e: f64, v_max: f64) -> f64 {
+        (omega_e.abs() / self.omega_rated * self.v_rated).min(v_max)
+    }
+
+    /// Solves the equivalent circuit for phase voltage `v` [V rms], excitation frequency `omega_e`
+    /// and slip speed `omega_s` [rad/s electrical], with the shaft at `omega_rm` [rad/s].
+    pub fn operate(&self, v: f64, omega_e: f64, omega_s: f64, omega_rm: f64) -> MotorPoint {
+        if omega_e.abs() < 1e-9 || v <= 0.0 {
+            return MotorPoint::default();
+        }
+        let j = Complex64::new(0.0, 1.0);
+        let y_m = 1.0 / (j * (omega_e * self.l_m));
+        let y_r = omega_s / (omega_e * Complex64::new(self.r_r, omega_s * self.l_r));
+        let z_par = 1.0 / (y_m + y_r);
+        let z_in = Complex64::new(self.r_s, omega_e * self.l_s) + z_par;
+        let i_in = v / z_in;
+        let v_ag = i_in * z_par;
+        let p_airgap = 3.0 * v_ag.norm_sqr() * y_r.re;
+        let i_in_sq = i_in.norm_sqr();
+        let torque_em = self.pole_pairs * p_airgap / omega_e;
+        // eta_m takes its loss out of whatever flows through the shaft, in either direction.
+        let torque = if torque_em * omega_rm >= 0.0 {
+            self.eta_m * torque_em
+        } else {
+            torque_em / self.eta_m
+        };
+        MotorPoint {
+            p_in: 3.0 * v * i_in.re,
+            p_airgap,
+            p_stator_loss: 3.0 * self.r_s * i_in_sq,
+            p_rotor_loss: p_airgap * omega_s / omega_e,
+            torque_em,
+            torque,
+            i_in: i_in_sq.sqrt(),
+        }
+    }
+
+    /// The operating point under volts-per-hertz control: omega_e = omega_r + omega_s.
+    pub fn operate_vhz(&self, omega_rm: f64, omega_s: f64, v_max: f64) -> MotorPoint {
+        let omega_e = self.pole_pairs * omega_rm + omega_s;
+        self.operate(
+            self.phase_voltage(omega_e, v_max),
+            omega_e,
+            omega_s,
+            omega_rm,
+        )
+    }
+
+    fn shaft_torque(&self, omega_rm: f64, omega_s: f64, v_max: f64) -> f64 {
+        self.operate_vhz(omega_rm, omega_s, v_max).torque
+    }
+
+    /// The slip speed of peak motoring torque at shaft speed `omega_rm` with the inverter limit
+    /// `v_max` (the dynamic saturation of ch. 2.2.4), by Newton's method on dQ/domega_s with central
+    /// differences, started from `guess` (the previous sample's answer). Falls back to a golden
+    /// section search when Newton does not settle.
+    pub fn peak_torque_slip(&self, omega_rm: f64, v_max: f64, guess: f64) -> f64 {
+        let q = |ws: f64| self.shaft_torque(omega_rm, ws, v_max);
+        let mut x = if guess > 0.0 {
+            guess
+        } else {
+            self.r_r / (self.l_s + self.l_r)
+        };
+        for _ in 0..12 {
+            let h = 1e-4 * x.max(1e-3);
+            let (qm, q0, qp) = (q(x - h), q(x), q(x + h));
+            let d1 = (qp - qm) / (2.0 * h);
+            let d2 = (qp - 2.0 * q0 + qm) / (h * h);
+            if d2 >= 0.0 || !d1.is_finite() || !d2.is_finite() {
+                break;
+            }
+            let step = -d1 / d2;
+            let next = (x + step).clamp(0.5 * x, 2.0 * x);
+            if (next - x).abs() < 1e-9 * x.max(1.0) {
+                return next;
+            }
+            x = next;
+        }
+        // Golden section on a generous bracket.
+        let (mut a, mut b) = (1e-6, 20.0 * self.r_r / (self.l_s + self.l_r));
+        let g = (5f64.sqrt() - 1.0) / 2.0;
+        let mut c = b - g * (b - a);
+        let mut d = a + g * (b - a);
+        let (mut fc, mut fd) = (q(c), q(d));
+        for _ in 0..80 {
+            if fc > fd {
+                b = d;
+                d = c;
+                fd = fc;
+                c = b - g * (b - a);
+                fc = q(c);
+            } else {
+                a = c;
+                c = d;
+                fc = fd;
+                d = a + g * (b - a);
+                fd = q(d);
+            }
+        }
+        0.5 * (a + b)
+    }
+
+    /// The slip speed in [0, `omega_s_peak`] at which the shaft power Q_m omega_rm equals `p_max`,
+    /// or `omega_s_peak` if even the peak torque stays below it.
+    pub fn power_limited_slip(
+        &self,
+        omega_rm: f64,
+        v_max: f64,
+        omega_s_peak: f64,
+        p_max: f64,
+    ) -> f64 {
+        if omega_rm <= 0.0 {
+            return omega_s_peak;
+        }
+        self.slip_for_torque(omega_rm, v_max, omega_s_peak, p_max / omega_rm)
+    }
+
+    /// The slip speed in [0, `omega_s_peak`] at which the shaft torque equals `q_target` [N m]
+    /// (regula falsi, Illinois variant; torque rises monotonically there). Returns the end of the
+    /// interval when the target lies outside it.
+    pub fn slip_for_torque(
+        &self,
+        omega_rm: f64,
+        v_max: f64,
+        omega_s_peak: f64,
+        q_target: f64,
+    ) -> f64 {
+        let f = |ws: f64| self.shaft_torque(omega_rm, ws, v_max) - q_target;
+        let (mut a, mut b) = (0.0, omega_s_peak);
+        let (mut fa, mut fb) = (f(a), f(b));
+        if fb <= 0.0 {
+            return omega_s_peak;
+        }
+        if fa >= 0.0 {
+            return 0.0;
+        }
+        let tol = 1e-10 * q_target.abs().max(1.0);
+        let mut side = 0;
+        for _ in 0..100 {
+            let c = (a * fb - b * fa) / (fb - fa);
+            let fc = f(c);
+            if fc.abs() < tol || (b - a) < 1e-13 {
+                return c;
+            }
+            if fc > 0.0 {
+                b = c;
+                fb = fc;
+                if side == -1 {
+                    fa *= 0.5;
+                }
+                side = -1;
+            } else {
+                a = c;
+                fa = fc;
+                if side == 1 {
+                    fb *= 0.5;
+                }
+                side = 1;
+            }
+        }
+        0.5 * (a + b)
+    }
+}
+
+/// Discrete PI on electrical rotor speed error giving the slip speed command, saturated to
+/// [0, omega_s,lim] with conditional integration. The drive motors only: negative slip (AC braking)
+/// needs a path for the returned energy, which the diode rectifiers do not offer.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlipController {
+    pub kp: f64,
+    pub ki: f64,
+    /// Integrator [rad/s of slip].
+    pub integral: f64,
+}
+
+impl SlipController {
+    /// One sample: returns the slip speed [rad/s] to hold until the next.
+    pub fn update(&mut self, err: f64, limit: f64, ts: f64) -> f64 {
+        let unsat = self.kp * err + self.integral;
+        let out = unsat.clamp(0.0, limit);
+        if (unsat < limit || err < 0.0) && (unsat > 0.0 || err > 0.0) {
+            self.integral += self.ki * err * ts;
+        }
+        // Keep the integrator inside the band the output can reach (no stored wind-up).
+        self.integral = self.integral.clamp(-limit, limit);
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn motor() -> InductionMotor {
+        InductionMotor::new(&MotorParams::default())
+    }
+
+    /// Power flows through the circuit without loss or gain: p_in = stator loss + air gap,
+    /// air gap = rotor loss + Q_e omega_rm.
+    #[test]
+    fn circuit_conserves_power() {
+        let m = motor();
+        for &(rpm, ws) in &[(200.0, 2.0), (290.0, 5.0), (10.0, 6.0), (150.0, -3.0)] {
+            let w_rm = rpm * 2.0 * PI / 60.0;
+            let op = m.operate_vhz(w_rm, ws, 1e9);
+            let r1 = op.p_in - (op.p_stator_loss + op.p_airgap);
+            let r2 = op.p_airgap - (op.p_rotor_loss + op.torque_em * w_rm);
+            assert!(r1.abs() < 1e-6 * op.p_in.abs().max(1.0), "{rpm} {ws}: {r1}");
+            assert!(
+                r2.abs() < 1e-6 * op.p_airgap.abs().max(1.0),
+                "{rpm} {ws}: {r2}"
+            );
+        }
+        assert_eq!(m.operate_vhz(0.0, 0.0, 1e9), MotorPoint::default());
+    }
+
+    /// At rated frequency the peak-torque slip and torque agree with the Thevenin formulas
+    /// s_max = R_r / sqrt(R_th^2 + (X_th + X_r)^2), T_max = 3 p V_th^2 / (2 omega_e (R_th + sqrt(...)))
+    /// (e.g. Chapman, Electric Machinery Fundamentals, ch. 6) when the voltage is held fixed.
+    #[test]
+    fn peak_torque_matches_thevenin() {
+        let m = motor();
+        let we = m.omega_rated;
+        let j = Complex64::new(0.0, 1.0);
+        let z_s = Complex64::new(m.r_s, we * m.l_s);
+        let z_m = j * we * m.l_m;
+        let z_th = z_s * z_m / (z_s + z_m);
+        let v_th = (m.v_rated * z_m / (z_s + z_m)).norm();
+        let root = (z_th.re.powi(2) + (z_th.im + we * m.l_r).powi(2)).sqrt();
+        let s_max = m.r_r / root;
+        let t_max = 3.0 * m.pole_pairs * v_th * v_th / (2.0 * we * (z_th.re + root));
+        // Fixed voltage at fixed omega_e: sweep slip directly.
+        let mut best = (0.0, 0.0);
+        for i in 1..20000 {
+            let s = i as f64 * 1e-5;
+            let op = m.operate(m.v_rated, we, s * we, (1.0 - s) * we / m.pole_pairs);
+            if op.torque_em > best.1 {
+                best = (s, op.torque_em);
+            }
+        }
+        assert!((best.0 - s_max).abs() < 2e-5, "{} vs {}", best.0, s_max);
+        assert!(
+            (best.1 - t_max).abs() / t_max < 1e-6,
+            "{} vs {}",
+            best.1,
+            t_max
+        );
+        // Table 2.1 is a 38 MW machine: peak torque near 300 rpm carries more than 38 MW.
+        assert!(t_max * 2.0 * PI * 300.0 / 60.0 > 38e6, "T_max = {t_max}");
+    }
+
+    /// The inline solver finds the true maximum of the V/Hz torque curve (checked by sweeping).
+    #[test]
+    fn peak_slip_solver_finds_maximum() {
+        let m = motor();
+        for &(rpm, vmax) in &[(250.0, 1e9), (300.0, 2300.0), (20.0, 1e9), (100.0, 1e9)] {
+            let w_rm = rpm * 2.0 * PI / 60.0;
+            let ws = m.peak_torque_slip(w_rm, vmax, 0.0);
+            let q = m.operate_vhz(w_rm, ws, vmax).torque;
+            for i in 1..4000 {
+                let other = i as f64 * 0.01;
+                assert!(
+                    m.operate_vhz(w_rm, other, vmax).torque <= q * (1.0 + 1e-9),
+                    "{rpm}: {other} beats {ws}"
+                );
+            }
+            // Warm start from a neighbour converges to the same point.
+            let ws2 = m.peak_torque_slip(w_rm, vmax, ws * 1.3);
+            assert!((ws2 - ws).abs() < 1e-6 * ws, "{ws2} vs {ws}");
+        }
+    }
+
+    #[test]
+    fn power_limit_slip_gives_rated_power() {
+        let m = motor();
+        let w_rm = 300.0 * 2.0 * PI / 60.0;
+        let peak = m.peak_torque_slip(w_rm, 1e9, 0.0);
+        let ws = m.power_limited_slip(w_rm, 1e9, peak, m.p_rated);
+        let p = m.operate_vhz(w_rm, ws, 1e9).torque * w_rm;
+        assert!((p - m.p_rated).abs() < 1e-6 * m.p_rated, "P = {p}");
+        // At low speed the peak torque is below rated power: the peak slip is returned.
+        let w_low = 50.0 * 2.0 * PI / 60.0;
+        let peak_low = m.peak_torque_slip(w_low, 1e9, 0.0);
+        assert_eq!(
+            m.power_limited_slip(w_low, 1e9, peak_low, m.p_rated),
+            peak_low
+        );
+    }
+}

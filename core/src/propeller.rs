@@ -1,0 +1,268 @@
+//! Wageningen B-series open-water propeller (thesis ch. 2.3, eqs. 2.11-2.13).
+//!
+//! The Oosterveld & van Oossanen (1975) polynomials K = sum C J^s (P/D)^t (Ae/A0)^u Z^v are
+//! collapsed on load into cubics in J for the chosen P/D, Ae/A0 and Z, so each evaluation in the
+//! time loop costs a few multiplications.
+
+use crate::scenario::PropellerParams;
+use std::f64::consts::PI;
+
+/// The polynomial table, copied from shared/data with its source line.
+const B_SERIES_CSV: &str = include_str!("../data/wageningen_b_series.csv");
+
+/// Open-water characteristics of one B-series propeller.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OpenWater {
+    /// kT(J) = kt[0] + kt[1] J + kt[2] J^2 + kt[3] J^3.
+    kt: [f64; 4],
+    /// kQ(J), same form.
+    kq: [f64; 4],
+    /// Advance ratio of zero thrust [-]; the single-quadrant model holds J in [0, j_max].
+    pub j_max: f64,
+}
+
+/// Thrust and torque of one propeller at one instant.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct PropellerLoad {
+    /// Thrust T_p [N] (eq. 2.13).
+    pub thrust_n: f64,
+    /// Shaft torque Q_p [N m] (eq. 2.13), including the rotative efficiency.
+    pub torque_nm: f64,
+    /// Advance ratio J [-] (eq. 2.12), as used (clamped to the single-quadrant range).
+    pub advance_ratio: f64,
+}
+
+fn poly3(c: &[f64; 4], x: f64) -> f64 {
+    ((c[3] * x + c[2]) * x + c[1]) * x + c[0]
+}
+
+fn int_pow(x: f64, n: u32) -> f64 {
+    // Repeated multiplication: bit-identical on every platform (powi is not guaranteed to be).
+    let mut r = 1.0;
+    for _ in 0..n {
+        r *= x;
+    }
+    r
+}
+
+impl OpenWater {
+    /// Collapses the B-series polynomials for one geometry.
+    pub fn b_series(
+        pitch_ratio: f64,
+        blade_area_ratio: f64,
+        blades: u32,
+    ) -> Result<OpenWater, String> {
+        let mut kt = [0.0; 4];
+        let mut kq = [0.0; 4];
+        let mut n_t = 0;
+        let mut n_q = 0;
+        for (lineno, line) in B_SERIES_CSV.lines().enumerate() {
+            let line = line.trim();
+            if line.is_empty() || line.starts_with('#') || line.starts_with("coefficient_of") {
+                continue;
+            }
+            let f: Vec<&str> = line.split(',').collect();
+            let bad = || {
+                format!(
+                    "wageningen_b_series.csv line {}: cannot read '{line}'",
+                    lineno + 1
+                )
+            };
+            if f.len() != 6 {
+                return Err(bad());
+            }
+            let c: f64 = f[1].parse().map_err(|_| bad())?;
+            let e: Vec<u32> = f[2..6]
+                .iter()
+                .map(|x| x.parse::<u32>())
+                .collect::<Result<_, _>>()
+                .map_err(|_| bad())?;
+            if e[0] > 3 {
+                return Err(bad());
+            }
+            let term = c
+                * int_pow(pitch_ratio, e[1])
+                * int_pow(blade_area_ratio, e[2])
+                * int_pow(blades as f64, e[3]);
+            match f[0] {
+                "KT" => {
+                    kt[e[0] as usize] += term;
+                    n_t += 1;
+                }
+                "KQ" => {
+                    kq[e[0] as usize] += term;
+                    n_q += 1;
+                }
+                _ => return Err(bad()),
+            }
+        }
+        if n_t != 39 || n_q != 47 {
+            return Err(format!(
+                "wageningen_b_series.csv: expected 39 KT and 47 KQ terms, found {n_t} and {n_q}"
+            ));
+        }
+        let mut ow = OpenWater { kt, kq, j_max: 0.0 };
+        // Zero-thrust advance ratio by bisection on [0, 2]: kT falls monotonically in the first quadrant.
+        let (mut lo, mut hi) = (0.0, 2.0);
+        if ow.kt(lo) <= 0.0 || ow.kt(hi) > 0.0 {
+            return Err(
+                "B-series thrust coefficient has no zero in J = 0..2 for this geometry".into(),
+            );
+        }
+        for _ in 0..80 {
+            let mid = 0.5 * (lo + hi);
+            if ow.kt(mid) > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        ow.j_max = lo;
+        Ok(ow)
+    }
+
+    /// From the scenario's propeller parameters.
+    pub fn from_params(p: &PropellerParams) -> Result<OpenWater, String> {
+        OpenWater::b_series(p.pitch_ratio, p.blade_area_ratio, p.blades)
+    }
+
+    /// Thrust coefficient kT(J) [-].
+    pub fn kt(&self, j: f64) -> f64 {
+        poly3(&self.kt, j)
+    }
+
+    /// Torque coefficient kQ(J) [-].
+    pub fn kq(&self, j: f64) -> f64 {
+        poly3(&self.kq, j)
+    }
+
+    /// Open-water efficiency eta_0 = J kT / (2 pi kQ) [-].
+    pub fn efficiency(&self, j: f64) -> f64 {
+        let kq = self.kq(j);
+        if kq <= 0.0 {
+            0.0
+        } else {
+            j * self.kt(j) / (2.0 * PI * kq)
+        }
+    }
+
+    /// Thrust and torque (eq. 2.13) at shaft speed `n_hz` [rev/s] and advance speed `va` [m/s]
+    /// (eq. 2.12: va = u (1 - w)).
+    ///
+    /// Single-quadrant model: J is held in [0, j_max]; a shaft turning backwards is mirrored
+    /// (the four-quadrant model takes over for braking and reversing).
+    #[allow(clippy::too_many_arguments)]
+    pub fn load(
+        &self,
+        n_hz: f64,
+        va: f64,
+        diameter_m: f64,
+        rho: f64,
+        rotative_efficiency: f64,
+        beta_t: f64,
+        beta_q: f64,
+    ) -> PropellerLoad {
+        let n_abs = n_hz.abs();
+        if n_abs < 1e-9 {
+            return PropellerLoad {
+                thrust_n: 0.0,
+                torque_nm: 0.0,
+                advance_ratio: self.j_max,
+            };
+        }
+        let j = (va / (n_abs * diameter_m)).clamp(0.0, self.j_max);
+        let d2 = diameter_m * diameter_m;
+        let n2d4 = rho * n_hz * n_abs * d2 * d2; // signed: rho n |n| D^4
+        PropellerLoad {
+            thrust_n: beta_t * self.kt(j) * n2d4,
+            torque_nm: beta_q * self.kq(j) * n2d4 * diameter_m / rotative_efficiency,
+            advance_ratio: j,
+        }
+    }
+
+    /// Calm-water equilibrium advance ratio J* at which `n_prop` propellers (with beta_T = 1)
+    /// balance a resistance R = c_r u^2: n_prop kT(J) rho D^2 (1-w)^2 / J^2 = c_r.
+    pub fn equilibrium_advance_ratio(
+        &self,
+        c_r: f64,
+        n_prop: f64,
+        diameter_m: f64,
+        rho: f64,
+        wake: f64,
+    ) -> f64 {
+        let f = |j: f64| {
+            n_prop * self.kt(j) * rho * diameter_m * diameter_m * (1.0 - wake) * (1.0 - wake)
+                - c_r * j * j
+        };
+        let (mut lo, mut hi) = (0.0, self.j_max);
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if f(mid) > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// B4-70, P/D = 1.0: the polynomial values quoted in shared/data/four_quadrant_b4_70.csv
+    /// (kT(0) = 0.455, kT(0.6) = 0.226, kQ(0) = 0.0675), three significant figures.
+    #[test]
+    fn b4_70_matches_published_values() {
+        let ow = OpenWater::b_series(1.0, 0.70, 4).unwrap();
+        assert!(
+            (ow.kt(0.0) - 0.455).abs() < 0.0015,
+            "kT(0) = {}",
+            ow.kt(0.0)
+        );
+        assert!(
+            (ow.kt(0.6) - 0.226).abs() < 0.0015,
+            "kT(0.6) = {}",
+            ow.kt(0.6)
+        );
+        assert!(
+            (ow.kq(0.0) - 0.0675).abs() < 0.00015,
+            "kQ(0) = {}",
+            ow.kq(0.0)
+        );
+        // Zero thrust near J = 1.0 to 1.1 for P/D = 1 (Kuiper 1992, B4-70 chart).
+        assert!(ow.j_max > 0.95 && ow.j_max < 1.15, "J0 = {}", ow.j_max);
+    }
+
+    /// Peak open-water efficiency of B4-70 at P/D = 1 is about 0.68-0.70 near J = 0.8
+    /// (Kuiper 1992 charts); tolerance 0.02.
+    #[test]
+    fn b4_70_peak_efficiency() {
+        let ow = OpenWater::b_series(1.0, 0.70, 4).unwrap();
+        let (mut best, mut jbest) = (0.0, 0.0);
+        for i in 0..1000 {
+            let j = i as f64 * ow.j_max / 1000.0;
+            if ow.efficiency(j) > best {
+                best = ow.efficiency(j);
+                jbest = j;
+            }
+        }
+        assert!(
+            (best - 0.69).abs() < 0.02,
+            "eta0 max = {best} at J = {jbest}"
+        );
+        assert!(jbest > 0.7 && jbest < 0.95, "J at eta0 max = {jbest}");
+    }
+
+    #[test]
+    fn thrust_scales_with_n_squared_at_fixed_j() {
+        let ow = OpenWater::b_series(1.0, 0.75, 5).unwrap();
+        let a = ow.load(2.0, 2.0 * 0.5 * 4.5, 4.5, 1025.0, 1.0, 1.0, 1.0);
+        let b = ow.load(4.0, 4.0 * 0.5 * 4.5, 4.5, 1025.0, 1.0, 1.0, 1.0);
+        assert!((b.thrust_n / a.thrust_n - 4.0).abs() < 1e-12);
+        assert!((b.torque_nm / a.torque_nm - 4.0).abs() < 1e-12);
+        let stopped = ow.load(0.0, 5.0, 4.5, 1025.0, 1.0, 1.0, 1.0);
+        assert_eq!(stopped.thrust_n, 0.0);
+    }
+}

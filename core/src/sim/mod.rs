@@ -1,0 +1,608 @@
+//! The coupled simulation: controllers, commands, fixed-step integration, recording and
+//! divergence detection. `Simulation` can be advanced in chunks (the browser reports progress
+//! and honours cancel between chunks); `run` does it in one go.
+
+pub mod plant;
+pub mod summary;
+
+use crate::generator::FieldController;
+use crate::motor::SlipController;
+use crate::prime_mover::Governor;
+use crate::scenario::Scenario;
+use crate::units::{kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rpm_to_rad_s};
+use plant::{
+    bus_voltage, field_current, omega_rm, omega_t, rk4_step, Energy, Held, Outputs, Plant, State,
+    ENERGY0, NX, N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, X_POS,
+};
+use std::f64::consts::PI;
+use std::fmt;
+
+pub use summary::{Summary, TraceStats};
+
+/// A run that could not start or did not finish.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SimError {
+    /// The scenario cannot be built into a model.
+    Setup(String),
+    /// The run left the physical range: when, where and what.
+    Diverged {
+        time_s: f64,
+        subsystem: String,
+        message: String,
+    },
+}
+
+impl fmt::Display for SimError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SimError::Setup(m) => write!(f, "cannot set up the run: {m}"),
+            SimError::Diverged {
+                time_s,
+                subsystem,
+                message,
+            } => {
+                write!(
+                    f,
+                    "run diverged at t = {time_s:.3} s in {subsystem}: {message}"
+                )
+            }
+        }
+    }
+}
+
+impl std::error::Error for SimError {}
+
+/// Names of the recorded signals, in trace column order. Units are in the names; `_pu` signals
+/// are per unit of: turbine speed, the governor set point (3600 rpm); bus voltage, the field
+/// controller's set point (5618 V); motor voltage, rated phase voltage; motor power, rated
+/// power (38 MW). Per-shaft signals average the two shafts; `_1`, `_2` are the shafts.
+pub const SIGNALS: &[&str] = &[
+    "t_s",
+    "ship_speed_kn",
+    "speed_cmd_kn",
+    "prop_rpm",
+    "prop_rpm_1",
+    "prop_rpm_2",
+    "prop_rpm_ref",
+    "turbine_speed_pu",
+    "throttle",
+    "field_current_a",
+    "bus_voltage_pu",
+    "bus_voltage_v",
+    "motor_voltage_pu",
+    "slip_speed_rad_s",
+    "im_power_pu",
+    "im_torque_knm",
+    "thrust_kn",
+    "advance_ratio",
+    "prop_efficiency",
+    "beta_t",
+    "beta_q",
+    "x_m",
+    "y_m",
+    "heading_deg",
+    "p_turbine_w",
+    "p_generator_w",
+    "p_inverter_w",
+    "p_motor_w",
+    "p_ship_w",
+];
+
+/// A recorded trace: one column per signal of [`SIGNALS`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trace {
+    pub columns: Vec<Vec<f64>>,
+}
+
+impl Trace {
+    /// The column of a signal, by name.
+    pub fn column(&self, name: &str) -> Option<&[f64]> {
+        SIGNALS
+            .iter()
+            .position(|s| *s == name)
+            .map(|i| self.columns[i].as_slice())
+    }
+
+    /// Number of recorded rows.
+    pub fn len(&self) -> usize {
+        self.columns.first().map_or(0, |c| c.len())
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The trace as CSV text with a header row.
+    pub fn to_csv(&self) -> String {
+        let mut s = SIGNALS.join(",");
+        s.push('\n');
+        for r in 0..self.len() {
+            for (i, c) in self.columns.iter().enumerate() {
+                if i > 0 {
+                    s.push(',');
+                }
+                s.push_str(&format!("{}", c[r]));
+            }
+            s.push('\n');
+        }
+        s
+    }
+}
+
+/// What a finished run gives back.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunResult {
+    pub trace: Trace,
+    pub summary: Summary,
+}
+
+/// All discrete controllers and their held outputs.
+#[derive(Debug, Clone, PartialEq)]
+struct Controllers {
+    governor: [Governor; N_SETS],
+    field: [FieldController; N_SETS],
+    slip: [SlipController; N_SHAFTS],
+    /// Last peak-torque slip of each motor (warm start of the inline solver) [rad/s].
+    peak_slip: [f64; N_SHAFTS],
+    /// Slip limit of each motor now: peak torque or rated power, whichever is lower [rad/s].
+    slip_limit: [f64; N_SHAFTS],
+    /// Ship speed loop: gains in SI [rad/s per m/s], [rad/s per m], trim limit [-].
+    speed_kp: f64,
+    speed_ki: f64,
+    trim_limit: f64,
+    speed_integral: f64,
+    /// Ramp limit of the shaft speed reference [rad/s^2]; 0 for none.
+    ramp: f64,
+    max_shaft_speed: f64,
+    /// Shaft speed reference now [rad/s].
+    shaft_ref: f64,
+    /// Calm-water map: shaft speed per unit ship speed [rad/s per m/s].
+    map_slope: f64,
+    held: Held,
+}
+
+/// A run in progress.
+pub struct Simulation {
+    scenario: Scenario,
+    plant: Plant,
+    x: State,
+    ctl: Controllers,
+    out: Outputs,
+    t: f64,
+    step: u64,
+    total_steps: u64,
+    ctl_every: u64,
+    rec_every: u64,
+    dt: f64,
+    ts: f64,
+    next_command: usize,
+    speed_cmd: f64,
+    stored0: f64,
+    trace: Trace,
+    warnings: Vec<String>,
+}
+
+impl Simulation {
+    /// Builds the model and its initial state from a validated scenario.
+    pub fn new(scenario: &Scenario) -> Result<Simulation, SimError> {
+        scenario
+            .validate()
+            .map_err(|e| SimError::Setup(e.to_string()))?;
+        let plant = Plant::new(scenario).map_err(SimError::Setup)?;
+        let sim_cfg = &scenario.sim;
+        let dt = sim_cfg.dt_s;
+        let total_steps = (sim_cfg.duration_s / dt).round() as u64;
+        let ctl_every = (scenario.controllers.sample_period_s / dt).round().max(1.0) as u64;
+        let rec_every = (sim_cfg.record_interval_s / dt).round().max(1.0) as u64;
+        let rows = (total_steps / rec_every + 2) as usize;
+        let trace = Trace {
+            columns: (0..SIGNALS.len())
+                .map(|_| Vec::with_capacity(rows))
+                .collect(),
+        };
+
+        let sp = &scenario.controllers.speed;
+        let rpm_per_kn = rpm_to_rad_s(1.0) / kn_to_m_s(1.0);
+        let ow = &plant.open_water;
+        let d = plant.prop_diameter;
+        // Calm-water map: at equilibrium J is the same at every speed (R and T both go as u^2).
+        let j_calm = ow.equilibrium_advance_ratio(
+            plant.surge.c_r,
+            N_SHAFTS as f64,
+            d,
+            plant.rho,
+            plant.surge.wake,
+        );
+        let map_slope = (1.0 - plant.surge.wake) * 2.0 * PI / (j_calm * d);
+
+        let mut sim = Simulation {
+            scenario: scenario.clone(),
+            x: [0.0; NX],
+            ctl: Controllers {
+                governor: [Governor::new(&scenario.controllers.governor, 0.0); N_SETS],
+                field: [FieldController::new(
+                    &scenario.controllers.field,
+                    0.0,
+                    plant.generator.v_f_max,
+                ); N_SETS],
+                slip: [SlipController {
+                    kp: scenario.controllers.slip.kp,
+                    ki: scenario.controllers.slip.ki,
+                    integral: 0.0,
+                }; N_SHAFTS],
+                peak_slip: [0.0; N_SHAFTS],
+                slip_limit: [0.0; N_SHAFTS],
+                speed_kp: sp.kp_rpm_per_kn * rpm_per_kn,
+                speed_ki: sp.ki_rpm_per_kn_s * rpm_per_kn,
+                trim_limit: sp.trim_limit,
+                speed_integral: 0.0,
+                ramp: rpm_to_rad_s(sp.shaft_ramp_rpm_per_s),
+                max_shaft_speed: rpm_to_rad_s(sp.max_shaft_rpm),
+                shaft_ref: 0.0,
+                map_slope,
+                held: Held::default(),
+            },
+            plant,
+            out: Outputs::default(),
+            t: 0.0,
+            step: 0,
+            total_steps,
+            ctl_every,
+            rec_every,
+            dt,
+            ts: ctl_every as f64 * dt,
+            next_command: 0,
+            speed_cmd: 0.0,
+            stored0: 0.0,
+            trace,
+            warnings: Vec::new(),
+        };
+        sim.initialise()?;
+        sim.stored0 = sim.plant.stored_energy(&sim.x);
+        sim.apply_commands();
+        sim.refresh_outputs();
+        sim.record();
+        Ok(sim)
+    }
+
+    /// Initial state: idle (u0 = 0) or the calm-water steady state at the initial speed.
+    fn initialise(&mut self) -> Result<(), SimError> {
+        let p = &self.plant;
+        let sc = &self.scenario;
+        let w_t = p.turbine.rated_speed;
+        let v_ref = sc.controllers.field.bus_voltage_ref_v;
+        let u0 = kn_to_m_s(sc.initial.speed_kn);
+        // Shaft speed at which the propellers balance the resistance at u0 (with the run's beta_T).
+        let (w_rm0, p_inv_shaft, slip0) = if u0 > 0.0 {
+            let j = p.open_water.equilibrium_advance_ratio(
+                p.surge.c_r / p.beta_t.max(1e-6),
+                N_SHAFTS as f64,
+                p.prop_diameter,
+                p.rho,
+                p.surge.wake,
+            );
+            let w = p.surge.advance_speed(u0) * 2.0 * PI / (j * p.prop_diameter);
+            let q_p = p.propeller_load(w, u0).torque_nm;
+            let v_max = p.dc_link.max_phase_voltage(v_ref);
+            let peak = p.motor.peak_torque_slip(w, v_max, 0.0);
+            let ws = p.motor.slip_for_torque(w, v_max, peak, q_p);
+            let mp = p.motor.operate_vhz(w, ws, v_max);
+            if (mp.torque - q_p).abs() > 1e-6 * q_p.abs().max(1.0) {
+                return Err(SimError::Setup(format!(
+                    "initial.speed_kn = {}: the motor cannot carry the propeller torque {:.0} kN m at {:.0} rpm",
+                    sc.initial.speed_kn,
+                    q_p / 1e3,
+                    rad_s_to_rpm(w)
+                )));
+            }
+            self.ctl.peak_slip = [peak; N_SHAFTS];
+            (w, mp.p_in, ws)
+        } else {
+            (0.0, 0.0, 0.0)
+        };
+        // Each set carries half its shaft's inverter power at the bus set point.
+        let i_dc = p_inv_shaft / (SETS_PER_SHAFT as f64 * v_ref);
+        let w_e = p.generator.electrical_speed(w_t);
+        let r_total =
+            p.dc_link.r_p + 3.0 / PI * w_e * p.dc_link.l_commutation + p.dc_link.r_stator_dc;
+        let e_a = (v_ref + r_total * i_dc) / crate::dc_link::BRIDGE_VOLTAGE_RATIO;
+        let i_f = p.generator.field_current_for(e_a, w_t);
+        let flow = p.dc_link.rectify(e_a, w_e, v_ref);
+        let q_load = p.generator.friction_torque(w_t) + flow.p_generator / w_t;
+        let throttle = p.turbine.throttle_for(q_load, w_t);
+        if !(0.0..=1.0).contains(&throttle) {
+            return Err(SimError::Setup(format!(
+                "initial.speed_kn = {}: the turbines would need throttle {throttle:.2} (more than full)",
+                sc.initial.speed_kn
+            )));
+        }
+        for k in 0..N_SETS {
+            self.x[omega_t(k)] = w_t;
+            self.x[field_current(k)] = i_f;
+            self.ctl.governor[k] = Governor::new(&sc.controllers.governor, throttle);
+            let v_f = p.generator.r_f * i_f;
+            self.ctl.field[k] =
+                FieldController::new(&sc.controllers.field, v_f, p.generator.v_f_max);
+            self.ctl.held.throttle[k] = throttle;
+            self.ctl.held.field_voltage[k] = v_f;
+        }
+        for s in 0..N_SHAFTS {
+            // A shaft at rest with no load draws nothing: the bus floats at the bridge voltage.
+            self.x[bus_voltage(s)] = if u0 > 0.0 { v_ref } else { flow.v_dc };
+            self.x[omega_rm(s)] = w_rm0;
+            self.ctl.slip[s].integral = slip0;
+            self.ctl.held.slip[s] = slip0;
+        }
+        self.x[SURGE] = u0;
+        self.ctl.shaft_ref = w_rm0;
+        self.ctl.speed_integral = w_rm0 - self.ctl.map_slope * u0;
+        Ok(())
+    }
+
+    /// Takes every command whose time has come.
+    fn apply_commands(&mut self) {
+        let cmds = &self.scenario.commands;
+        while self.next_command < cmds.len()
+            && cmds[self.next_command].t_s <= self.t + 0.5 * self.dt
+        {
+            if let Some(kn) = cmds[self.next_command].speed_kn {
+                self.speed_cmd = kn_to_m_s(kn);
+            }
+            self.next_command += 1;
+        }
+    }
+
+    /// One sample of every discrete controller.
+    fn control(&mut self) {
+        let ts = self.ts;
+        let x = &self.x;
+        let p = &self.plant;
+        let c = &mut self.ctl;
+        // Ship speed: calm-water map plus PI trim, then the ramp-limited shaft reference.
+        let map = c.map_slope * self.speed_cmd;
+        let err_u = self.speed_cmd - x[SURGE];
+        let trim_max = c.trim_limit * map;
+        let unsat = c.speed_kp * err_u + c.speed_integral;
+        let trim = unsat.clamp(-trim_max, trim_max);
+        let target = (map + trim).clamp(0.0, c.max_shaft_speed);
+        let next_ref = if c.ramp > 0.0 {
+            c.shaft_ref + (target - c.shaft_ref).clamp(-c.ramp * ts, c.ramp * ts)
+        } else {
+            target
+        };
+        // Anti-windup: the trim integrates only while neither it nor the ramp is limiting, so a
+        // long acceleration does not leave it wound up (which would overshoot the ordered speed).
+        let limited = unsat.abs() > trim_max || (next_ref - target).abs() > 1e-12;
+        if !limited {
+            c.speed_integral =
+                (c.speed_integral + c.speed_ki * err_u * ts).clamp(-trim_max, trim_max);
+        }
+        c.shaft_ref = next_ref;
+        for k in 0..N_SETS {
+            let err = (p.turbine.rated_speed - x[omega_t(k)]) / p.turbine.rated_speed;
+            c.held.throttle[k] = c.governor[k].update(err, ts);
+            let s = k / SETS_PER_SHAFT;
+            c.held.field_voltage[k] = c.field[k].update(x[bus_voltage(s)], ts);
+        }
+        for s in 0..N_SHAFTS {
+            let w_rm = x[omega_rm(s)];
+            let v_max = p.dc_link.max_phase_voltage(x[bus_voltage(s)]);
+            let peak = p.motor.peak_torque_slip(w_rm, v_max, c.peak_slip[s]);
+            c.peak_slip[s] = peak;
+            let limit = p
+                .motor
+                .power_limited_slip(w_rm, v_max, peak, p.motor.p_rated);
+            c.slip_limit[s] = limit;
+            let err = p.motor.pole_pairs * (c.shaft_ref - w_rm);
+            c.held.slip[s] = c.slip[s].update(err, limit, ts);
+        }
+    }
+
+    fn refresh_outputs(&mut self) {
+        let mut dx = [0.0; NX];
+        self.plant
+            .evaluate(&self.x, &self.ctl.held, &mut self.out, &mut dx);
+    }
+
+    /// Checks the state after a step; names the subsystem that left its range.
+    fn check(&self) -> Result<(), SimError> {
+        let p = &self.plant;
+        let bad = |sub: String, msg: String| {
+            Err(SimError::Diverged {
+                time_s: self.t,
+                subsystem: sub,
+                message: msg,
+            })
+        };
+        for k in 0..N_SETS {
+            let w = self.x[omega_t(k)];
+            if !w.is_finite() || w < -0.1 * p.turbine.rated_speed || w > 3.0 * p.turbine.rated_speed
+            {
+                return bad(
+                    format!("gas turbine {} (shaft {})", k + 1, k / SETS_PER_SHAFT + 1),
+                    format!(
+                        "speed {:.0} rpm outside -10 % to 300 % of rated",
+                        rad_s_to_rpm(w)
+                    ),
+                );
+            }
+            let i_f = self.x[field_current(k)];
+            if !i_f.is_finite() || i_f.abs() > 1e5 {
+                return bad(
+                    format!("generator {} field", k + 1),
+                    format!("field current {i_f:.3e} A"),
+                );
+            }
+        }
+        let v_ref = self.scenario.controllers.field.bus_voltage_ref_v;
+        for s in 0..N_SHAFTS {
+            let v = self.x[bus_voltage(s)];
+            if !v.is_finite() || v < -0.1 * v_ref || v > 3.0 * v_ref {
+                return bad(
+                    format!("DC bus {}", s + 1),
+                    format!("voltage {v:.0} V outside -10 % to 300 % of the set point"),
+                );
+            }
+            let w = self.x[omega_rm(s)];
+            if !w.is_finite() || w.abs() > 3.0 * self.ctl.max_shaft_speed.max(1.0) {
+                return bad(
+                    format!("propeller shaft {}", s + 1),
+                    format!("speed {:.0} rpm", rad_s_to_rpm(w)),
+                );
+            }
+        }
+        let u = self.x[SURGE];
+        if !u.is_finite() || u.abs() > 40.0 {
+            return bad(
+                "ship surge".into(),
+                format!("speed {:.1} knots", m_s_to_kn(u)),
+            );
+        }
+        if self.x[ENERGY0..].iter().any(|v| !v.is_finite()) {
+            return bad("energy accounts".into(), "non-finite energy".into());
+        }
+        Ok(())
+    }
+
+    fn record(&mut self) {
+        let o = &self.out;
+        let x = &self.x;
+        let p = &self.plant;
+        let ns = N_SHAFTS as f64;
+        let mean_shaft = |f: &dyn Fn(usize) -> f64| (0..N_SHAFTS).map(f).sum::<f64>() / ns;
+        let mean_set = |f: &dyn Fn(usize) -> f64| (0..N_SETS).map(f).sum::<f64>() / N_SETS as f64;
+        let v_ref = self.scenario.controllers.field.bus_voltage_ref_v;
+        let rpm = |s: usize| rad_s_to_rpm(x[omega_rm(s)]);
+        let p_turbine: f64 = (0..N_SETS)
+            .map(|k| o.turbine_torque[k] * x[omega_t(k)])
+            .sum();
+        let p_generator: f64 = o.rectifier.iter().map(|r| r.p_generator).sum();
+        let p_inverter: f64 = o.motor.iter().map(|m| m.p_in).sum();
+        let p_motor: f64 = (0..N_SHAFTS)
+            .map(|s| o.motor[s].torque * x[omega_rm(s)])
+            .sum();
+        let j = mean_shaft(&|s| o.propeller[s].advance_ratio);
+        let row = [
+            self.t,
+            m_s_to_kn(x[SURGE]),
+            m_s_to_kn(self.speed_cmd),
+            mean_shaft(&rpm),
+            rpm(0),
+            rpm(1),
+            rad_s_to_rpm(self.ctl.shaft_ref),
+            mean_set(&|k| x[omega_t(k)] / p.turbine.rated_speed),
+            mean_set(&|k| self.ctl.held.throttle[k]),
+            mean_set(&|k| x[field_current(k)]),
+            mean_shaft(&|s| x[bus_voltage(s)] / v_ref),
+            mean_shaft(&|s| x[bus_voltage(s)]),
+            mean_shaft(&|s| o.motor_voltage[s] / p.motor.v_rated),
+            mean_shaft(&|s| self.ctl.held.slip[s]),
+            p_motor / ns / p.motor.p_rated,
+            mean_shaft(&|s| o.motor[s].torque) / 1e3,
+            o.thrust / 1e3,
+            j,
+            mean_shaft(&|s| p.open_water.efficiency(o.propeller[s].advance_ratio)),
+            p.beta_t,
+            p.beta_q,
+            x[X_POS],
+            0.0,
+            0.0,
+            p_turbine,
+            p_generator,
+            p_inverter,
+            p_motor,
+            o.resistance * x[SURGE],
+        ];
+        debug_assert_eq!(row.len(), SIGNALS.len());
+        for (col, v) in self.trace.columns.iter_mut().zip(row) {
+            col.push(v);
+        }
+    }
+
+    /// Simulated time now [s].
+    pub fn time(&self) -> f64 {
+        self.t
+    }
+
+    /// Fraction of the run done, 0 to 1.
+    pub fn progress(&self) -> f64 {
+        if self.total_steps == 0 {
+            1.0
+        } else {
+            self.step as f64 / self.total_steps as f64
+        }
+    }
+
+    /// Whether the run has reached its duration.
+    pub fn done(&self) -> bool {
+        self.step >= self.total_steps
+    }
+
+    /// Advances by at most `max_steps` time steps (stopping at the end of the run).
+    pub fn advance(&mut self, max_steps: u64) -> Result<(), SimError> {
+        let end = (self.step + max_steps).min(self.total_steps);
+        while self.step < end {
+            if self.step % self.ctl_every == 0 {
+                self.control();
+            }
+            rk4_step(
+                &self.plant,
+                &mut self.x,
+                &self.ctl.held,
+                self.dt,
+                &mut self.out,
+            );
+            self.step += 1;
+            self.t = self.step as f64 * self.dt;
+            self.check()?;
+            self.apply_commands();
+            if self.step % self.rec_every == 0 {
+                self.refresh_outputs();
+                self.record();
+            }
+        }
+        Ok(())
+    }
+
+    /// The state vector now (for tests and analysis).
+    pub fn state(&self) -> &State {
+        &self.x
+    }
+
+    /// The model constants.
+    pub fn plant(&self) -> &Plant {
+        &self.plant
+    }
+
+    /// Ends the run: the trace and its summary.
+    pub fn finish(mut self) -> RunResult {
+        self.refresh_outputs();
+        let energy: [f64; N_ENERGY] = self.x[ENERGY0..].try_into().unwrap_or([0.0; N_ENERGY]);
+        let stored_change = self.plant.stored_energy(&self.x) - self.stored0;
+        let summary = Summary::build(
+            &self.scenario,
+            &self.trace,
+            self.t,
+            self.step,
+            &energy,
+            stored_change,
+            std::mem::take(&mut self.warnings),
+        );
+        RunResult {
+            trace: self.trace,
+            summary,
+        }
+    }
+}
+
+/// Runs a scenario to its end.
+pub fn run(scenario: &Scenario) -> Result<RunResult, SimError> {
+    let mut sim = Simulation::new(scenario)?;
+    sim.advance(u64::MAX)?;
+    Ok(sim.finish())
+}
+
+/// Index of an energy account in the energy array given to [`Summary::build`].
+pub fn energy_index(e: Energy) -> usize {
+    e as usize
+}
