@@ -27,6 +27,26 @@ fn energy_balance_closes_over_startup() {
             && e.motor > e.ship
     );
     assert!(e.losses > 0.0);
+    // The recorded trace tells the same story: the trapezoidal integral of the recorded turbine
+    // and ship powers (0.1 s rows) matches the integrated accounts within 0.5 %.
+    let t = r.trace.column("t_s").unwrap();
+    let trapz = |name: &str| {
+        let p = r.trace.column(name).unwrap();
+        (1..t.len())
+            .map(|i| 0.5 * (p[i] + p[i - 1]) * (t[i] - t[i - 1]))
+            .sum::<f64>()
+    };
+    let (turb, ship) = (trapz("p_turbine_w"), trapz("p_ship_w"));
+    assert!(
+        (turb - e.turbine).abs() < 0.005 * e.turbine,
+        "{turb} vs {}",
+        e.turbine
+    );
+    assert!(
+        (ship - e.ship).abs() < 0.005 * e.ship,
+        "{ship} vs {}",
+        e.ship
+    );
 }
 
 /// At steady state each stage's output is below its input, and the generator stage loses exactly

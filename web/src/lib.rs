@@ -1,1 +1,119 @@
-pub fn placeholder() {}
+//! aes-web: wasm-bindgen bindings over aes-core for the browser page. Thin: no physics here.
+//!
+//! Scenarios cross as JSON text (the same public format as the command line), so that a scenario
+//! file, a shared link and a native run all speak one language.
+
+use aes_core::presets::{preset, PRESET_NAMES};
+use aes_core::{Scenario, Simulation};
+use wasm_bindgen::prelude::*;
+
+/// Names of the preset scenarios.
+#[wasm_bindgen(js_name = presetNames)]
+pub fn preset_names() -> Vec<String> {
+    PRESET_NAMES.iter().map(|s| s.to_string()).collect()
+}
+
+/// A preset scenario as JSON text.
+#[wasm_bindgen(js_name = presetJson)]
+pub fn preset_json(name: &str) -> Result<String, JsError> {
+    preset(name)
+        .map(|s| s.to_json())
+        .ok_or_else(|| JsError::new(&format!("no preset named '{name}'")))
+}
+
+/// Checks a scenario; returns every problem as a list of `{path, value, message}` (empty when valid).
+#[wasm_bindgen(js_name = validateScenario)]
+pub fn validate_scenario(json: &str) -> Result<JsValue, JsError> {
+    let errors = match Scenario::from_json(json) {
+        Ok(_) => Vec::new(),
+        Err(e) => e.0,
+    };
+    serde_wasm_bindgen::to_value(&errors).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// A run in progress, advanced in chunks so a worker can report progress and honour cancel.
+#[wasm_bindgen]
+pub struct Run {
+    sim: Option<Simulation>,
+    summary_json: String,
+    trace_csv: String,
+    columns: Vec<Vec<f64>>,
+}
+
+#[wasm_bindgen]
+impl Run {
+    /// Builds a run from scenario JSON; the error names every bad field.
+    #[wasm_bindgen(constructor)]
+    pub fn new(json: &str) -> Result<Run, JsError> {
+        let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+        let sim = Simulation::new(&sc).map_err(|e| JsError::new(&e.to_string()))?;
+        Ok(Run {
+            sim: Some(sim),
+            summary_json: String::new(),
+            trace_csv: String::new(),
+            columns: Vec::new(),
+        })
+    }
+
+    /// Advances by at most `steps` time steps; returns the fraction done (1 when finished).
+    pub fn advance(&mut self, steps: u32) -> Result<f64, JsError> {
+        let Some(sim) = self.sim.as_mut() else {
+            return Ok(1.0);
+        };
+        sim.advance(steps as u64)
+            .map_err(|e| JsError::new(&e.to_string()))?;
+        if sim.done() {
+            if let Some(sim) = self.sim.take() {
+                let r = sim.finish();
+                self.summary_json =
+                    serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default();
+                self.trace_csv = r.trace.to_csv();
+                self.columns = r.trace.columns;
+            }
+            return Ok(1.0);
+        }
+        Ok(sim.progress())
+    }
+
+    /// Summary JSON (after the run has finished; empty before).
+    #[wasm_bindgen(js_name = summaryJson)]
+    pub fn summary_json(&self) -> String {
+        self.summary_json.clone()
+    }
+
+    /// The trace as CSV (after the run has finished).
+    #[wasm_bindgen(js_name = traceCsv)]
+    pub fn trace_csv(&self) -> String {
+        self.trace_csv.clone()
+    }
+
+    /// Names of the trace columns.
+    #[wasm_bindgen(js_name = signalNames)]
+    pub fn signal_names() -> Vec<String> {
+        aes_core::sim::SIGNALS
+            .iter()
+            .map(|s| s.to_string())
+            .collect()
+    }
+
+    /// One trace column as a Float64Array (after the run has finished).
+    pub fn column(&self, name: &str) -> Result<js_sys::Float64Array, JsError> {
+        let i = aes_core::sim::SIGNALS
+            .iter()
+            .position(|s| *s == name)
+            .ok_or_else(|| JsError::new(&format!("no signal named '{name}'")))?;
+        let col = self
+            .columns
+            .get(i)
+            .ok_or_else(|| JsError::new("the run has not finished"))?;
+        Ok(js_sys::Float64Array::from(col.as_slice()))
+    }
+}
+
+/// Runs a scenario to the end and returns its summary JSON.
+#[wasm_bindgen(js_name = runSummary)]
+pub fn run_summary(json: &str) -> Result<String, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    let r = aes_core::run(&sc).map_err(|e| JsError::new(&e.to_string()))?;
+    Ok(serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default())
+}

@@ -1,0 +1,124 @@
+#!/usr/bin/env bash
+# aes-sim: the one entry point.
+#
+#   ./build.sh            set up what is missing, build the wasm into www/pkg, serve www on
+#                         http://127.0.0.1:${PORT:-8080}
+#   ./build.sh build      set up and build only (native CLI and www/pkg)
+#   ./build.sh test       set up, then rustfmt check, clippy (warnings denied), every native test
+#                         (release mode) and the wasm-bindgen tests in Node
+#   ./build.sh bench      simulated seconds per wall second of the start-up preset
+#
+# Safe on a fresh machine that reaches only the package registries: every tool comes from
+# crates.io or npm by name, and each step is skipped when its result is already there.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+say() { printf '\033[1m==> %s\033[0m\n' "$*"; }
+
+# Exact wasm-bindgen version of Cargo.lock: the CLI must match it.
+wasm_bindgen_version() {
+  awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock
+}
+
+setup() {
+  if ! command -v cargo >/dev/null; then
+    echo "build.sh: cargo not found; this project needs a Rust toolchain (rustup)" >&2
+    exit 1
+  fi
+  export PATH="$HOME/.cargo/bin:$PATH"
+  if ! rustup target list --installed 2>/dev/null | grep -qx wasm32-unknown-unknown; then
+    say "adding the wasm32-unknown-unknown target"
+    rustup target add wasm32-unknown-unknown
+  fi
+  for comp in rustfmt clippy; do
+    if ! rustup component list --installed 2>/dev/null | grep -q "^$comp"; then
+      say "adding rustup component $comp"
+      rustup component add "$comp"
+    fi
+  done
+  local want
+  want="$(wasm_bindgen_version)"
+  if [ "$(wasm-bindgen --version 2>/dev/null | awk '{print $2}')" != "$want" ]; then
+    say "installing wasm-bindgen-cli $want (about 3 minutes)"
+    cargo install wasm-bindgen-cli --version "=$want" --locked
+  fi
+  if ! command -v wasm-pack >/dev/null; then
+    say "installing wasm-pack (about 3 minutes)"
+    cargo install wasm-pack --locked
+  fi
+  if [ ! -d node_modules ] || [ package-lock.json -nt node_modules ]; then
+    if command -v npm >/dev/null; then
+      say "installing npm packages"
+      npm ci --no-audit --no-fund
+    else
+      echo "build.sh: npm not found; skipping uPlot and wasm-opt (the page still builds)" >&2
+    fi
+  fi
+}
+
+build_web() {
+  say "building the wasm (release) into www/pkg"
+  cargo build -p aes-web --target wasm32-unknown-unknown --release
+  wasm-bindgen --target web --out-dir www/pkg --no-typescript \
+    target/wasm32-unknown-unknown/release/aes_web.wasm
+  # npm's binaryen only: Debian's binaryen breaks current wasm-bindgen output (toolchain notes).
+  if [ -x node_modules/.bin/wasm-opt ]; then
+    node_modules/.bin/wasm-opt -O3 --enable-bulk-memory --enable-nontrapping-float-to-int \
+      --enable-sign-ext --enable-mutable-globals \
+      www/pkg/aes_web_bg.wasm -o www/pkg/aes_web_bg.wasm
+  fi
+  if [ -f node_modules/uplot/dist/uPlot.esm.js ]; then
+    mkdir -p www/vendor
+    cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css www/vendor/
+  fi
+}
+
+build_native() {
+  say "building the aes-sim command (release)"
+  cargo build --release -p aes-cli
+}
+
+run_tests() {
+  local log
+  log="$(mktemp)"
+  say "rustfmt check"
+  cargo fmt --all -- --check
+  say "clippy (warnings are errors)"
+  cargo clippy --workspace --all-targets --release -- -D warnings
+  say "native tests (release)"
+  cargo test --workspace --release 2>&1 | tee "$log"
+  say "wasm-bindgen tests in Node"
+  (cd web && wasm-pack test --node --release --mode no-install) 2>&1 | tee -a "$log"
+  # One closing line for the whole suite (pipefail has already stopped us on any failure).
+  awk '/^test result:/ { p += $4; f += $6 } END { printf "all tests: %d passed, %d failed\n", p, f }' "$log"
+  rm -f "$log"
+}
+
+case "${1:-serve}" in
+  serve)
+    setup
+    build_native
+    build_web
+    port="${PORT:-8080}"
+    say "serving www on http://127.0.0.1:$port (Ctrl-C to stop)"
+    exec python3 -m http.server --bind 127.0.0.1 --directory www "$port"
+    ;;
+  build)
+    setup
+    build_native
+    build_web
+    ;;
+  test)
+    setup
+    run_tests
+    ;;
+  bench)
+    setup
+    build_native
+    ./target/release/aes-sim bench startup
+    ;;
+  *)
+    echo "usage: ./build.sh [serve|build|test|bench]" >&2
+    exit 2
+    ;;
+esac

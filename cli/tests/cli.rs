@@ -1,0 +1,178 @@
+//! The command line as a user meets it: presets, runs, overrides, traces and errors.
+
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+fn aes_sim(args: &[&str]) -> (bool, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_aes-sim"))
+        .args(args)
+        .output()
+        .expect("run aes-sim");
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
+}
+
+#[test]
+fn presets_list_and_print() {
+    let (ok, out, _) = aes_sim(&["presets"]);
+    assert!(ok && out.contains("startup"));
+    let (ok, out, _) = aes_sim(&["preset", "startup"]);
+    assert!(ok);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["ship"]["mass_kg"], 7.0e6);
+}
+
+#[test]
+fn run_with_overrides_writes_trace_and_summary() {
+    let dir = std::env::temp_dir().join(format!("aes-cli-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("trace.csv");
+    let (ok, out, err) = aes_sim(&[
+        "run",
+        "preset:startup",
+        "--set",
+        "sim.duration_s=20",
+        "--set",
+        "sim.record_interval_s=0.5",
+        "--out",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let s: serde_json::Value = serde_json::from_str(&out).unwrap();
+    for key in [
+        "t_s",
+        "ship_speed_kn",
+        "prop_rpm",
+        "turbine_speed_pu",
+        "bus_voltage_pu",
+        "im_power_pu",
+        "thrust_kn",
+        "x_m",
+        "y_m",
+        "heading_deg",
+    ] {
+        for stat in ["final", "min", "max", "mean"] {
+            assert!(s["signals"][key][stat].is_number(), "signals.{key}.{stat}");
+        }
+    }
+    for key in ["turbine", "generator", "inverter", "motor", "ship"] {
+        assert!(
+            s["power_inventory_w"][key].as_f64().unwrap() >= 0.0,
+            "{key}"
+        );
+    }
+    assert_eq!(s["final_time_s"], 20.0);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(header[0], "t_s");
+    assert!(header.contains(&"bus_voltage_pu"));
+    assert_eq!(lines.count(), 41); // t = 0, 0.5, ..., 20
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn scenario_from_stdin() {
+    let (_, preset, _) = aes_sim(&["preset", "startup"]);
+    let mut v: serde_json::Value = serde_json::from_str(&preset).unwrap();
+    v["sim"]["duration_s"] = serde_json::json!(5.0);
+    let mut child = Command::new(env!("CARGO_BIN_EXE_aes-sim"))
+        .args(["run", "-"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(v.to_string().as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success());
+    let s: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(s["final_time_s"], 5.0);
+}
+
+#[test]
+fn bad_input_gets_a_clear_error_and_nonzero_exit() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["run", "preset:nope"], "no preset named 'nope'"),
+        (&["run", "/no/such/file.json"], "cannot read"),
+        (
+            &["run", "preset:startup", "--set", "ship.mass_kg=-3"],
+            "ship.mass_kg = -3",
+        ),
+        (
+            &["run", "preset:startup", "--set", "ship.mass_kgg=3"],
+            "ship.mass_kgg",
+        ),
+        (
+            &["run", "preset:startup", "--set", "nonsense"],
+            "expected PATH=VALUE",
+        ),
+        (
+            &[
+                "run",
+                "preset:startup",
+                "--set",
+                "plant.motor.pole_pairs=1.5",
+            ],
+            "plant.motor.pole_pairs",
+        ),
+        (
+            &[
+                "run",
+                "preset:startup",
+                "--set",
+                "commands.0.heading_deg=90",
+            ],
+            "commands.0.heading_deg",
+        ),
+        (&["preset", "nope"], "no preset named"),
+    ];
+    for (args, want) in cases {
+        let (ok, out, err) = aes_sim(args);
+        assert!(!ok, "{args:?} should fail");
+        assert!(out.is_empty(), "{args:?} printed to stdout: {out}");
+        assert!(err.contains(want), "{args:?}: stderr was: {err}");
+    }
+}
+
+#[test]
+fn diverging_run_names_time_and_subsystem() {
+    let (ok, _, err) = aes_sim(&[
+        "run",
+        "preset:startup",
+        "--set",
+        "sim.duration_s=30",
+        "--set",
+        "plant.dc_link.capacitance_f=0.0001",
+    ]);
+    assert!(!ok);
+    assert!(
+        err.contains("diverged at t =") && err.contains("DC bus"),
+        "{err}"
+    );
+}
+
+#[test]
+fn malformed_file_is_rejected() {
+    let dir = std::env::temp_dir().join(format!("aes-cli-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("bad.json");
+    std::fs::write(&f, "{\"ship\": {\"mass_kg\": \"heavy\"}}").unwrap();
+    let (ok, _, err) = aes_sim(&["run", f.to_str().unwrap()]);
+    assert!(!ok && err.contains("ship.mass_kg"), "{err}");
+    std::fs::write(
+        &f,
+        "[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[",
+    )
+    .unwrap();
+    let (ok, _, err) = aes_sim(&["run", f.to_str().unwrap()]);
+    assert!(!ok && err.contains("nesting"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}

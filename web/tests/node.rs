@@ -1,0 +1,46 @@
+//! wasm-bindgen tests, run in Node (`./build.sh test`).
+#![cfg(target_arch = "wasm32")]
+
+use aes_web::*;
+use wasm_bindgen_test::*;
+
+#[wasm_bindgen_test]
+fn presets_are_listed_and_valid() {
+    let names = preset_names();
+    assert!(names.iter().any(|n| n == "startup"));
+    for n in &names {
+        let json = preset_json(n).unwrap();
+        let errs = validate_scenario(&json).unwrap();
+        assert_eq!(js_sys::Array::from(&errs).length(), 0, "{n}");
+    }
+}
+
+#[wasm_bindgen_test]
+fn bad_scenario_names_the_field() {
+    let errs = validate_scenario(r#"{"ship": {"mass_kg": -1}}"#).unwrap();
+    let arr = js_sys::Array::from(&errs);
+    assert_eq!(arr.length(), 1);
+    let path = js_sys::Reflect::get(&arr.get(0), &"path".into()).unwrap();
+    assert_eq!(path.as_string().unwrap(), "ship.mass_kg");
+}
+
+/// A 60 s start-up in wasm, in chunks, gives the same summary as in one go, and moves the ship.
+#[wasm_bindgen_test]
+fn startup_runs_in_chunks() {
+    let mut sc: serde_json::Value = serde_json::from_str(&preset_json("startup").unwrap()).unwrap();
+    sc["sim"]["duration_s"] = serde_json::json!(60.0);
+    let json = sc.to_string();
+    let mut run = Run::new(&json).unwrap();
+    let mut progress = 0.0;
+    while progress < 1.0 {
+        progress = run.advance(5000).unwrap();
+    }
+    let chunked = run.summary_json();
+    assert_eq!(chunked, run_summary(&json).unwrap());
+    let s: serde_json::Value = serde_json::from_str(&chunked).unwrap();
+    let kn = s["signals"]["ship_speed_kn"]["final"].as_f64().unwrap();
+    assert!(kn > 15.0 && kn < 30.0, "{kn}");
+    let rel = s["energy_j"]["relative_residual"].as_f64().unwrap();
+    assert!(rel.abs() < 0.005);
+    assert_eq!(run.column("t_s").unwrap().length(), 601);
+}
