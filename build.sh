@@ -58,9 +58,8 @@ setup() {
 
 build_web() {
   say "building the wasm (release) into www/pkg"
-  cargo build -p aes-web --target wasm32-unknown-unknown --release
-  wasm-bindgen --target web --out-dir www/pkg --no-typescript \
-    target/wasm32-unknown-unknown/release/aes_web.wasm
+  # no-install: wasm-pack uses the wasm-bindgen on PATH and never downloads anything.
+  wasm-pack build web --release --mode no-install --target web --no-typescript --out-dir ../www/pkg
   # npm's binaryen only: Debian's binaryen breaks current wasm-bindgen output (toolchain notes).
   if [ -x node_modules/.bin/wasm-opt ]; then
     node_modules/.bin/wasm-opt -O3 --enable-bulk-memory --enable-nontrapping-float-to-int \
