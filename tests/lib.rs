@@ -18,9 +18,5 @@ pub fn run(s: &Scenario) -> RunResult {
 
 /// Final value of a recorded signal.
 pub fn final_value(r: &RunResult, name: &str) -> f64 {
-    r.summary
-        .signals
-        .get(name)
-        .unwrap_or_else(|| panic!("no signal {name}"))
-        .final_
+    r.summary.signals.get(name).unwrap_or_else(|| panic!("no signal {name}")).final_
 }

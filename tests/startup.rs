@@ -13,40 +13,20 @@ fn energy_balance_closes_over_startup() {
     let r = run(&startup());
     let e = r.summary.energy_j;
     assert!(e.turbine > 1e9, "turbine work {} J", e.turbine);
-    assert!(
-        e.relative_residual.abs() < 0.005,
-        "residual {} of {} J",
-        e.residual,
-        e.turbine
-    );
+    assert!(e.relative_residual.abs() < 0.005, "residual {} of {} J", e.residual, e.turbine);
     // Each stage passes on less energy than it receives.
-    assert!(
-        e.turbine > e.generator
-            && e.generator > e.inverter
-            && e.inverter > e.motor
-            && e.motor > e.ship
-    );
+    assert!(e.turbine > e.generator && e.generator > e.inverter && e.inverter > e.motor && e.motor > e.ship);
     assert!(e.losses > 0.0);
     // The recorded trace tells the same story: the trapezoidal integral of the recorded turbine
     // and ship powers (0.1 s rows) matches the integrated accounts within 0.5 %.
     let t = r.trace.column("t_s").unwrap();
     let trapz = |name: &str| {
         let p = r.trace.column(name).unwrap();
-        (1..t.len())
-            .map(|i| 0.5 * (p[i] + p[i - 1]) * (t[i] - t[i - 1]))
-            .sum::<f64>()
+        (1..t.len()).map(|i| 0.5 * (p[i] + p[i - 1]) * (t[i] - t[i - 1])).sum::<f64>()
     };
     let (turb, ship) = (trapz("p_turbine_w"), trapz("p_ship_w"));
-    assert!(
-        (turb - e.turbine).abs() < 0.005 * e.turbine,
-        "{turb} vs {}",
-        e.turbine
-    );
-    assert!(
-        (ship - e.ship).abs() < 0.005 * e.ship,
-        "{ship} vs {}",
-        e.ship
-    );
+    assert!((turb - e.turbine).abs() < 0.005 * e.turbine, "{turb} vs {}", e.turbine);
+    assert!((ship - e.ship).abs() < 0.005 * e.ship, "{ship} vs {}", e.ship);
 }
 
 /// At steady state each stage's output is below its input, and the generator stage loses exactly
@@ -55,19 +35,11 @@ fn energy_balance_closes_over_startup() {
 fn steady_state_power_inventory() {
     let r = run(&startup());
     let p = r.summary.power_inventory_w;
-    assert!(
-        p.turbine > p.generator
-            && p.generator > p.inverter
-            && p.inverter > p.motor
-            && p.motor > p.ship
-    );
+    assert!(p.turbine > p.generator && p.generator > p.inverter && p.inverter > p.motor && p.motor > p.ship);
     let w = rpm_to_rad_s(3600.0);
     let friction = 4.0 * 2.46 * w * w;
     let loss = p.turbine - p.generator;
-    assert!(
-        (loss - friction).abs() < 0.01 * friction,
-        "generator loss {loss} W vs friction {friction} W"
-    );
+    assert!((loss - friction).abs() < 0.01 * friction, "generator loss {loss} W vs friction {friction} W");
     // Settled: ship at the ordered 25 knots within 0.05 kn, bus and turbines at set point within 0.5 %.
     assert!((final_value(&r, "ship_speed_kn") - 25.0).abs() < 0.05);
     assert!((final_value(&r, "bus_voltage_pu") - 1.0).abs() < 0.005);
@@ -99,33 +71,15 @@ fn table_5_7_efficiencies() {
         let e = r.summary.efficiency;
         let got = [e.generator, e.power_electronics, e.motor, e.propeller];
         println!("{kn} kn: ours {got:.3?}, thesis {want:?}");
-        for (i, name) in ["generator", "power electronics", "motor"]
-            .iter()
-            .enumerate()
-        {
-            assert!(
-                (got[i] - want[i]).abs() < 0.03,
-                "{kn} kn {name}: {} vs {}",
-                got[i],
-                want[i]
-            );
+        for (i, name) in ["generator", "power electronics", "motor"].iter().enumerate() {
+            assert!((got[i] - want[i]).abs() < 0.03, "{kn} kn {name}: {} vs {}", got[i], want[i]);
         }
-        assert!(
-            (got[3] - want[3]).abs() < 0.05,
-            "{kn} kn propeller: {} vs {}",
-            got[3],
-            want[3]
-        );
+        assert!((got[3] - want[3]).abs() < 0.05, "{kn} kn propeller: {} vs {}", got[3], want[3]);
         // eta = eta_0 eta_R / (1 - w) at the running advance ratio.
         let j = final_value(&r, "advance_ratio");
         let eta0 = final_value(&r, "prop_efficiency");
         assert!(j > 0.7 && j < 0.85, "J = {j}");
-        assert!(
-            (got[3] - eta0 * 0.98 / 0.9).abs() < 1e-3,
-            "{} vs {}",
-            got[3],
-            eta0 * 0.98 / 0.9
-        );
+        assert!((got[3] - eta0 * 0.98 / 0.9).abs() < 1e-3, "{} vs {}", got[3], eta0 * 0.98 / 0.9);
     }
 }
 
@@ -159,18 +113,9 @@ fn propeller_speeds_of_fig_5_1() {
     let rpm_full = final_value(&r, "prop_rpm");
     let p_motor = r.summary.power_inventory_w.motor / 2.0;
     let kn = final_value(&r, "ship_speed_kn");
-    println!(
-        "full ahead: {rpm_full:.1} rpm, {kn:.2} kn, {:.2} MW per motor",
-        p_motor / 1e6
-    );
-    assert!(
-        (rpm_full - 300.0).abs() < 0.10 * 300.0,
-        "full ahead {rpm_full} rpm"
-    );
-    assert!(
-        p_motor <= 38.0e6 * 1.001,
-        "motor power {p_motor} W above rating"
-    );
+    println!("full ahead: {rpm_full:.1} rpm, {kn:.2} kn, {:.2} MW per motor", p_motor / 1e6);
+    assert!((rpm_full - 300.0).abs() < 0.10 * 300.0, "full ahead {rpm_full} rpm");
+    assert!(p_motor <= 38.0e6 * 1.001, "motor power {p_motor} W above rating");
 }
 
 /// A run that starts at the calm-water steady state stays there (the initial-state solver and the
@@ -180,22 +125,10 @@ fn steady_initial_state_is_steady() {
     let mut s = startup_to(25.0, 60.0);
     s.initial.speed_kn = 25.0;
     let r = run(&s);
-    for name in [
-        "ship_speed_kn",
-        "prop_rpm",
-        "turbine_speed_pu",
-        "bus_voltage_pu",
-        "im_power_pu",
-        "throttle",
-    ] {
+    for name in ["ship_speed_kn", "prop_rpm", "turbine_speed_pu", "bus_voltage_pu", "im_power_pu", "throttle"] {
         let st = r.summary.signals[name];
         let span = (st.max - st.min) / st.mean.abs();
-        assert!(
-            span < 1e-3,
-            "{name} wandered by {span:e} (min {}, max {})",
-            st.min,
-            st.max
-        );
+        assert!(span < 1e-3, "{name} wandered by {span:e} (min {}, max {})", st.min, st.max);
     }
 }
 
@@ -215,18 +148,11 @@ fn divergence_names_time_and_subsystem() {
     let mut s = startup_to(25.0, 30.0);
     s.plant.dc_link.capacitance_f = 1.0e-4;
     match aes_core::run(&s) {
-        Err(aes_core::SimError::Diverged {
-            time_s,
-            subsystem,
-            message,
-        }) => {
+        Err(aes_core::SimError::Diverged { time_s, subsystem, message }) => {
             println!("diverged at {time_s} s in {subsystem}: {message}");
             assert!(time_s > 0.0 && time_s < 30.0);
             assert!(!subsystem.is_empty());
         }
-        other => panic!(
-            "expected divergence, got {:?}",
-            other.map(|r| r.summary.final_time_s)
-        ),
+        other => panic!("expected divergence, got {:?}", other.map(|r| r.summary.final_time_s)),
     }
 }

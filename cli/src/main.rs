@@ -54,18 +54,11 @@ enum Cmd {
 
 fn load(file: &str, sets: &[String]) -> Result<Scenario, String> {
     let mut sc = if let Some(name) = file.strip_prefix("preset:") {
-        preset(name).ok_or_else(|| {
-            format!(
-                "no preset named '{name}' (try: {})",
-                PRESET_NAMES.join(", ")
-            )
-        })?
+        preset(name).ok_or_else(|| format!("no preset named '{name}' (try: {})", PRESET_NAMES.join(", ")))?
     } else {
         let text = if file == "-" {
             let mut s = String::new();
-            std::io::stdin()
-                .read_to_string(&mut s)
-                .map_err(|e| format!("cannot read standard input: {e}"))?;
+            std::io::stdin().read_to_string(&mut s).map_err(|e| format!("cannot read standard input: {e}"))?;
             s
         } else {
             std::fs::read_to_string(file).map_err(|e| format!("cannot read '{file}': {e}"))?
@@ -73,12 +66,9 @@ fn load(file: &str, sets: &[String]) -> Result<Scenario, String> {
         Scenario::from_json(&text).map_err(|e| format!("{file}: invalid scenario:\n{e}"))?
     };
     for s in sets {
-        let (path, value) = s
-            .split_once('=')
-            .ok_or_else(|| format!("--set '{s}': expected PATH=VALUE, e.g. sim.duration_s=60"))?;
-        sc = sc
-            .with_override(path.trim(), value.trim())
-            .map_err(|e| format!("--set {s}: {e}"))?;
+        let (path, value) =
+            s.split_once('=').ok_or_else(|| format!("--set '{s}': expected PATH=VALUE, e.g. sim.duration_s=60"))?;
+        sc = sc.with_override(path.trim(), value.trim()).map_err(|e| format!("--set {s}: {e}"))?;
     }
     Ok(sc)
 }
@@ -93,23 +83,30 @@ fn real_main() -> Result<(), String> {
             }
         }
         Cmd::Preset { name } => {
-            let sc = preset(&name).ok_or_else(|| {
-                format!(
-                    "no preset named '{name}' (try: {})",
-                    PRESET_NAMES.join(", ")
-                )
-            })?;
+            let sc =
+                preset(&name).ok_or_else(|| format!("no preset named '{name}' (try: {})", PRESET_NAMES.join(", ")))?;
             println!("{}", sc.to_json());
         }
         Cmd::Run { file, out, sets } => {
             let sc = load(&file, &sets)?;
-            let result = aes_core::run(&sc).map_err(|e| e.to_string())?;
-            if let Some(path) = out {
-                std::fs::write(&path, result.trace.to_csv())
-                    .map_err(|e| format!("cannot write '{path}': {e}"))?;
+            let mut sim = Simulation::new(&sc).map_err(|e| e.to_string())?;
+            let write = |trace: &aes_core::sim::Trace| -> Result<(), String> {
+                match &out {
+                    Some(path) => {
+                        std::fs::write(path, trace.to_csv()).map_err(|e| format!("cannot write '{path}': {e}"))
+                    }
+                    None => Ok(()),
+                }
+            };
+            if let Err(e) = sim.advance(u64::MAX) {
+                // Keep what led up to the failure: it is what the user needs to see.
+                write(sim.trace())?;
+                let hint = if out.is_some() { " (the trace up to the failure was written)" } else { "" };
+                return Err(format!("{e}{hint}"));
             }
-            let json = serde_json::to_string_pretty(&result.summary.to_json_value())
-                .map_err(|e| e.to_string())?;
+            let result = sim.finish();
+            write(&result.trace)?;
+            let json = serde_json::to_string_pretty(&result.summary.to_json_value()).map_err(|e| e.to_string())?;
             println!("{json}");
         }
         Cmd::Bench { name, repeat, sets } => {
@@ -133,10 +130,7 @@ fn real_main() -> Result<(), String> {
                 "realtime_factor": sim_s / best,
                 "ns_per_step": best * 1e9 / steps.max(1) as f64,
             });
-            println!(
-                "{}",
-                serde_json::to_string_pretty(&out).map_err(|e| e.to_string())?
-            );
+            println!("{}", serde_json::to_string_pretty(&out).map_err(|e| e.to_string())?);
         }
     }
     Ok(())

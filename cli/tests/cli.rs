@@ -4,15 +4,8 @@ use std::io::Write;
 use std::process::{Command, Stdio};
 
 fn aes_sim(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_aes-sim"))
-        .args(args)
-        .output()
-        .expect("run aes-sim");
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
+    let out = Command::new(env!("CARGO_BIN_EXE_aes-sim")).args(args).output().expect("run aes-sim");
+    (out.status.success(), String::from_utf8_lossy(&out.stdout).into(), String::from_utf8_lossy(&out.stderr).into())
 }
 
 #[test]
@@ -59,10 +52,7 @@ fn run_with_overrides_writes_trace_and_summary() {
         }
     }
     for key in ["turbine", "generator", "inverter", "motor", "ship"] {
-        assert!(
-            s["power_inventory_w"][key].as_f64().unwrap() >= 0.0,
-            "{key}"
-        );
+        assert!(s["power_inventory_w"][key].as_f64().unwrap() >= 0.0, "{key}");
     }
     assert_eq!(s["final_time_s"], 20.0);
     let text = std::fs::read_to_string(&csv).unwrap();
@@ -85,12 +75,7 @@ fn scenario_from_stdin() {
         .stdout(Stdio::piped())
         .spawn()
         .unwrap();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(v.to_string().as_bytes())
-        .unwrap();
+    child.stdin.take().unwrap().write_all(v.to_string().as_bytes()).unwrap();
     let out = child.wait_with_output().unwrap();
     assert!(out.status.success());
     let s: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
@@ -102,36 +87,11 @@ fn bad_input_gets_a_clear_error_and_nonzero_exit() {
     let cases: &[(&[&str], &str)] = &[
         (&["run", "preset:nope"], "no preset named 'nope'"),
         (&["run", "/no/such/file.json"], "cannot read"),
-        (
-            &["run", "preset:startup", "--set", "ship.mass_kg=-3"],
-            "ship.mass_kg = -3",
-        ),
-        (
-            &["run", "preset:startup", "--set", "ship.mass_kgg=3"],
-            "ship.mass_kgg",
-        ),
-        (
-            &["run", "preset:startup", "--set", "nonsense"],
-            "expected PATH=VALUE",
-        ),
-        (
-            &[
-                "run",
-                "preset:startup",
-                "--set",
-                "plant.motor.pole_pairs=1.5",
-            ],
-            "plant.motor.pole_pairs",
-        ),
-        (
-            &[
-                "run",
-                "preset:startup",
-                "--set",
-                "commands.0.heading_deg=90",
-            ],
-            "commands.0.heading_deg",
-        ),
+        (&["run", "preset:startup", "--set", "ship.mass_kg=-3"], "ship.mass_kg = -3"),
+        (&["run", "preset:startup", "--set", "ship.mass_kgg=3"], "ship.mass_kgg"),
+        (&["run", "preset:startup", "--set", "nonsense"], "expected PATH=VALUE"),
+        (&["run", "preset:startup", "--set", "plant.motor.pole_pairs=1.5"], "plant.motor.pole_pairs"),
+        (&["run", "preset:startup", "--set", "commands.0.heading_deg=90"], "commands.0.heading_deg"),
         (&["preset", "nope"], "no preset named"),
     ];
     for (args, want) in cases {
@@ -153,10 +113,7 @@ fn diverging_run_names_time_and_subsystem() {
         "plant.dc_link.capacitance_f=0.0001",
     ]);
     assert!(!ok);
-    assert!(
-        err.contains("diverged at t =") && err.contains("DC bus"),
-        "{err}"
-    );
+    assert!(err.contains("diverged at t =") && err.contains("DC bus"), "{err}");
 }
 
 #[test]
@@ -167,11 +124,7 @@ fn malformed_file_is_rejected() {
     std::fs::write(&f, "{\"ship\": {\"mass_kg\": \"heavy\"}}").unwrap();
     let (ok, _, err) = aes_sim(&["run", f.to_str().unwrap()]);
     assert!(!ok && err.contains("ship.mass_kg"), "{err}");
-    std::fs::write(
-        &f,
-        "[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[",
-    )
-    .unwrap();
+    std::fs::write(&f, "[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[").unwrap();
     let (ok, _, err) = aes_sim(&["run", f.to_str().unwrap()]);
     assert!(!ok && err.contains("nesting"), "{err}");
     std::fs::remove_dir_all(&dir).ok();

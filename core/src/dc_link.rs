@@ -49,11 +49,14 @@ pub struct RectifierFlow {
 
 impl DcLink {
     /// Eqs. 2.8-2.9 with the bus at `v_c`, generator phase emf `e_a` and electrical speed `omega`.
-    pub fn rectify(&self, e_a: f64, omega: f64, v_c: f64) -> RectifierFlow {
+    /// A diode bridge blocks reverse current; a `reversible` converter (average model, same
+    /// equations) lets power flow back into the generator.
+    pub fn rectify(&self, e_a: f64, omega: f64, v_c: f64, reversible: bool) -> RectifierFlow {
         let r_commutation = 3.0 / PI * omega * self.l_commutation;
         let v_open = BRIDGE_VOLTAGE_RATIO * e_a;
         let r_total = self.r_p + r_commutation + self.r_stator_dc;
-        let i_dc = ((v_open - v_c) / r_total).max(0.0);
+        let i_dc = (v_open - v_c) / r_total;
+        let i_dc = if reversible { i_dc } else { i_dc.max(0.0) };
         let v_dc = v_open - (r_commutation + self.r_stator_dc) * i_dc;
         let p_stator_loss = self.r_stator_dc * i_dc * i_dc;
         RectifierFlow {
@@ -74,11 +77,7 @@ impl DcLink {
 
     /// Eq. 2.7: dv_c/dt = (sum i_gDC - i_mDC) / C, with eq. 2.10 i_mDC = P_inverter / v_c.
     pub fn bus_voltage_rate(&self, i_rectifiers: f64, p_inverter: f64, v_c: f64) -> f64 {
-        let i_inv = if v_c.abs() > 1e-9 {
-            p_inverter / v_c
-        } else {
-            0.0
-        };
+        let i_inv = if v_c.abs() > 1e-9 { p_inverter / v_c } else { 0.0 };
         (i_rectifiers - i_inv) / self.capacitance
     }
 }
@@ -101,11 +100,17 @@ mod tests {
     #[test]
     fn no_load_voltage() {
         let l = link();
-        let f = l.rectify(4160.0 / 3f64.sqrt(), 377.0, 5618.0);
+        let f = l.rectify(4160.0 / 3f64.sqrt(), 377.0, 5618.0, false);
         assert!(f.i_dc.abs() < 0.1, "i = {}", f.i_dc);
         assert!((BRIDGE_VOLTAGE_RATIO * 4160.0 / 3f64.sqrt() - 5617.9).abs() < 0.1);
         // A bus above the bridge voltage draws nothing back through the diodes.
-        assert_eq!(l.rectify(2000.0, 377.0, 6000.0).i_dc, 0.0);
+        assert_eq!(l.rectify(2000.0, 377.0, 6000.0, false).i_dc, 0.0);
+        // A reversible converter returns power, and the books still balance.
+        let back = l.rectify(2000.0, 377.0, 6000.0, true);
+        assert!(back.i_dc < 0.0 && back.p_generator < 0.0);
+        let v_c = back.v_dc - l.r_p * back.i_dc;
+        let balance = back.p_generator - (v_c * back.i_dc + back.p_notching_loss + back.p_stator_loss);
+        assert!(balance.abs() < 1e-6 * back.p_generator.abs());
     }
 
     /// Power conservation across the rectifier: generator power = bus power + losses, and the
@@ -114,7 +119,7 @@ mod tests {
     fn rectifier_conserves_power() {
         let l = link();
         let e_a = 2400.0;
-        let f = l.rectify(e_a, 377.0, 5300.0);
+        let f = l.rectify(e_a, 377.0, 5300.0, false);
         assert!(f.i_dc > 1000.0);
         let v_c = f.v_dc - l.r_p * f.i_dc; // eq. 2.9
         assert!((v_c - 5300.0).abs() < 1e-6);

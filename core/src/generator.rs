@@ -94,13 +94,7 @@ pub struct FieldController {
 
 impl FieldController {
     pub fn new(p: &FieldControlParams, v_f0: f64, v_f_max: f64) -> FieldController {
-        FieldController {
-            kp: p.kp,
-            ki: p.ki,
-            v_ref: p.bus_voltage_ref_v,
-            v_f_max,
-            integral: v_f0,
-        }
+        FieldController { kp: p.kp, ki: p.ki, v_ref: p.bus_voltage_ref_v, v_f_max, integral: v_f0 }
     }
 
     /// One sample: returns the field voltage [V] to hold until the next.

@@ -6,10 +6,12 @@
 
 pub mod dc_link;
 pub mod generator;
+pub mod maneuvering;
 pub mod motor;
 pub mod presets;
 pub mod prime_mover;
 pub mod propeller;
+pub mod rudder;
 pub mod scenario;
 pub mod sim;
 pub mod surge;

@@ -92,11 +92,7 @@ impl InductionMotor {
         let i_in_sq = i_in.norm_sqr();
         let torque_em = self.pole_pairs * p_airgap / omega_e;
         // eta_m takes its loss out of whatever flows through the shaft, in either direction.
-        let torque = if torque_em * omega_rm >= 0.0 {
-            self.eta_m * torque_em
-        } else {
-            torque_em / self.eta_m
-        };
+        let torque = if torque_em * omega_rm >= 0.0 { self.eta_m * torque_em } else { torque_em / self.eta_m };
         MotorPoint {
             p_in: 3.0 * v * i_in.re,
             p_airgap,
@@ -111,12 +107,7 @@ impl InductionMotor {
     /// The operating point under volts-per-hertz control: omega_e = omega_r + omega_s.
     pub fn operate_vhz(&self, omega_rm: f64, omega_s: f64, v_max: f64) -> MotorPoint {
         let omega_e = self.pole_pairs * omega_rm + omega_s;
-        self.operate(
-            self.phase_voltage(omega_e, v_max),
-            omega_e,
-            omega_s,
-            omega_rm,
-        )
+        self.operate(self.phase_voltage(omega_e, v_max), omega_e, omega_s, omega_rm)
     }
 
     fn shaft_torque(&self, omega_rm: f64, omega_s: f64, v_max: f64) -> f64 {
@@ -128,12 +119,18 @@ impl InductionMotor {
     /// differences, started from `guess` (the previous sample's answer). Falls back to a golden
     /// section search when Newton does not settle.
     pub fn peak_torque_slip(&self, omega_rm: f64, v_max: f64, guess: f64) -> f64 {
-        let q = |ws: f64| self.shaft_torque(omega_rm, ws, v_max);
-        let mut x = if guess > 0.0 {
-            guess
-        } else {
-            self.r_r / (self.l_s + self.l_r)
-        };
+        self.peak_slip_dir(omega_rm, v_max, guess, 1.0)
+    }
+
+    /// The magnitude of the negative slip of peak generating (braking) torque.
+    pub fn peak_braking_slip(&self, omega_rm: f64, v_max: f64, guess: f64) -> f64 {
+        self.peak_slip_dir(omega_rm, v_max, guess, -1.0)
+    }
+
+    /// Peak of dir * Q(dir * x) over x > 0.
+    fn peak_slip_dir(&self, omega_rm: f64, v_max: f64, guess: f64, dir: f64) -> f64 {
+        let q = |x: f64| dir * self.shaft_torque(omega_rm, dir * x, v_max);
+        let mut x = if guess > 0.0 { guess } else { self.r_r / (self.l_s + self.l_r) };
         for _ in 0..12 {
             let h = 1e-4 * x.max(1e-3);
             let (qm, q0, qp) = (q(x - h), q(x), q(x + h));
@@ -142,8 +139,7 @@ impl InductionMotor {
             if d2 >= 0.0 || !d1.is_finite() || !d2.is_finite() {
                 break;
             }
-            let step = -d1 / d2;
-            let next = (x + step).clamp(0.5 * x, 2.0 * x);
+            let next = (x - d1 / d2).clamp(0.5 * x, 2.0 * x);
             if (next - x).abs() < 1e-9 * x.max(1.0) {
                 return next;
             }
@@ -175,29 +171,39 @@ impl InductionMotor {
 
     /// The slip speed in [0, `omega_s_peak`] at which the shaft power Q_m omega_rm equals `p_max`,
     /// or `omega_s_peak` if even the peak torque stays below it.
-    pub fn power_limited_slip(
-        &self,
-        omega_rm: f64,
-        v_max: f64,
-        omega_s_peak: f64,
-        p_max: f64,
-    ) -> f64 {
+    pub fn power_limited_slip(&self, omega_rm: f64, v_max: f64, omega_s_peak: f64, p_max: f64) -> f64 {
         if omega_rm <= 0.0 {
             return omega_s_peak;
         }
         self.slip_for_torque(omega_rm, v_max, omega_s_peak, p_max / omega_rm)
     }
 
+    /// Braking side: the magnitude of the negative slip in [0, `peak`] at which the power the shaft
+    /// returns, -Q_m omega_rm, equals `p_max`, or `peak` if the braking torque never gets there.
+    pub fn power_limited_braking_slip(&self, omega_rm: f64, v_max: f64, peak: f64, p_max: f64) -> f64 {
+        if omega_rm <= 0.0 {
+            return peak;
+        }
+        let f = |x: f64| -self.shaft_torque(omega_rm, -x, v_max) * omega_rm - p_max;
+        if f(peak) <= 0.0 {
+            return peak;
+        }
+        let (mut a, mut b) = (0.0, peak);
+        for _ in 0..60 {
+            let m = 0.5 * (a + b);
+            if f(m) > 0.0 {
+                b = m;
+            } else {
+                a = m;
+            }
+        }
+        0.5 * (a + b)
+    }
+
     /// The slip speed in [0, `omega_s_peak`] at which the shaft torque equals `q_target` [N m]
     /// (regula falsi, Illinois variant; torque rises monotonically there). Returns the end of the
     /// interval when the target lies outside it.
-    pub fn slip_for_torque(
-        &self,
-        omega_rm: f64,
-        v_max: f64,
-        omega_s_peak: f64,
-        q_target: f64,
-    ) -> f64 {
+    pub fn slip_for_torque(&self, omega_rm: f64, v_max: f64, omega_s_peak: f64, q_target: f64) -> f64 {
         let f = |ws: f64| self.shaft_torque(omega_rm, ws, v_max) - q_target;
         let (mut a, mut b) = (0.0, omega_s_peak);
         let (mut fa, mut fb) = (f(a), f(b));
@@ -236,26 +242,31 @@ impl InductionMotor {
 }
 
 /// Discrete PI on electrical rotor speed error giving the slip speed command, saturated to
-/// [0, omega_s,lim] with conditional integration. The drive motors only: negative slip (AC braking)
-/// needs a path for the returned energy, which the diode rectifiers do not offer.
+/// [-lower, upper] with conditional integration. `lower` is 0 unless the drive may brake (AC
+/// braking needs a path for the returned energy, which diode rectifiers alone do not offer).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SlipController {
     pub kp: f64,
     pub ki: f64,
+    /// Width of the skipped band around zero slip [rad/s] (ch. 5.2.2's offset; 0 for none).
+    pub offset: f64,
     /// Integrator [rad/s of slip].
     pub integral: f64,
 }
 
 impl SlipController {
     /// One sample: returns the slip speed [rad/s] to hold until the next.
-    pub fn update(&mut self, err: f64, limit: f64, ts: f64) -> f64 {
+    pub fn update(&mut self, err: f64, lower: f64, upper: f64, ts: f64) -> f64 {
         let unsat = self.kp * err + self.integral;
-        let out = unsat.clamp(0.0, limit);
-        if (unsat < limit || err < 0.0) && (unsat > 0.0 || err > 0.0) {
+        let mut out = unsat.clamp(-lower, upper);
+        if (unsat < upper || err < 0.0) && (unsat > -lower || err > 0.0) {
             self.integral += self.ki * err * ts;
         }
         // Keep the integrator inside the band the output can reach (no stored wind-up).
-        self.integral = self.integral.clamp(-limit, limit);
+        self.integral = self.integral.clamp(-lower, upper);
+        if self.offset > 0.0 && out.abs() < self.offset {
+            out = if out >= 0.0 { self.offset.min(upper) } else { -self.offset.min(lower) };
+        }
         out
     }
 }
@@ -279,10 +290,7 @@ mod tests {
             let r1 = op.p_in - (op.p_stator_loss + op.p_airgap);
             let r2 = op.p_airgap - (op.p_rotor_loss + op.torque_em * w_rm);
             assert!(r1.abs() < 1e-6 * op.p_in.abs().max(1.0), "{rpm} {ws}: {r1}");
-            assert!(
-                r2.abs() < 1e-6 * op.p_airgap.abs().max(1.0),
-                "{rpm} {ws}: {r2}"
-            );
+            assert!(r2.abs() < 1e-6 * op.p_airgap.abs().max(1.0), "{rpm} {ws}: {r2}");
         }
         assert_eq!(m.operate_vhz(0.0, 0.0, 1e9), MotorPoint::default());
     }
@@ -312,12 +320,7 @@ mod tests {
             }
         }
         assert!((best.0 - s_max).abs() < 2e-5, "{} vs {}", best.0, s_max);
-        assert!(
-            (best.1 - t_max).abs() / t_max < 1e-6,
-            "{} vs {}",
-            best.1,
-            t_max
-        );
+        assert!((best.1 - t_max).abs() / t_max < 1e-6, "{} vs {}", best.1, t_max);
         // Table 2.1 is a 38 MW machine: peak torque near 300 rpm carries more than 38 MW.
         assert!(t_max * 2.0 * PI * 300.0 / 60.0 > 38e6, "T_max = {t_max}");
     }
@@ -332,10 +335,7 @@ mod tests {
             let q = m.operate_vhz(w_rm, ws, vmax).torque;
             for i in 1..4000 {
                 let other = i as f64 * 0.01;
-                assert!(
-                    m.operate_vhz(w_rm, other, vmax).torque <= q * (1.0 + 1e-9),
-                    "{rpm}: {other} beats {ws}"
-                );
+                assert!(m.operate_vhz(w_rm, other, vmax).torque <= q * (1.0 + 1e-9), "{rpm}: {other} beats {ws}");
             }
             // Warm start from a neighbour converges to the same point.
             let ws2 = m.peak_torque_slip(w_rm, vmax, ws * 1.3);
@@ -354,9 +354,6 @@ mod tests {
         // At low speed the peak torque is below rated power: the peak slip is returned.
         let w_low = 50.0 * 2.0 * PI / 60.0;
         let peak_low = m.peak_torque_slip(w_low, 1e9, 0.0);
-        assert_eq!(
-            m.power_limited_slip(w_low, 1e9, peak_low, m.p_rated),
-            peak_low
-        );
+        assert_eq!(m.power_limited_slip(w_low, 1e9, peak_low, m.p_rated), peak_low);
     }
 }

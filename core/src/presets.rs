@@ -20,7 +20,7 @@ pub fn startup() -> Scenario {
         description: "Start-up from idle to 25 knots in calm water (thesis ch. 5.1, Figs. 5-1 and 5-2): \
                       power flows turbine -> generator -> inverter -> motor -> ship, each stage losing a little."
             .into(),
-        commands: vec![Command { t_s: 0.0, speed_kn: Some(25.0), heading_deg: None }],
+        commands: vec![Command { t_s: 0.0, speed_kn: Some(25.0), heading_deg: None, heading_rate_deg_s: None }],
         ..Scenario::default()
     };
     s.sim.duration_s = 400.0;

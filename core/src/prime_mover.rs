@@ -58,13 +58,7 @@ pub struct Governor {
 
 impl Governor {
     pub fn new(p: &GovernorParams, throttle0: f64) -> Governor {
-        Governor {
-            kp: p.kp,
-            ki: p.ki,
-            slew: p.slew_rate_per_s,
-            integral: throttle0,
-            throttle: throttle0,
-        }
+        Governor { kp: p.kp, ki: p.ki, slew: p.slew_rate_per_s, integral: throttle0, throttle: throttle0 }
     }
 
     /// One controller sample of period `ts` [s] with speed error `err_pu` (set point minus speed,

@@ -47,11 +47,7 @@ fn int_pow(x: f64, n: u32) -> f64 {
 
 impl OpenWater {
     /// Collapses the B-series polynomials for one geometry.
-    pub fn b_series(
-        pitch_ratio: f64,
-        blade_area_ratio: f64,
-        blades: u32,
-    ) -> Result<OpenWater, String> {
+    pub fn b_series(pitch_ratio: f64, blade_area_ratio: f64, blades: u32) -> Result<OpenWater, String> {
         let mut kt = [0.0; 4];
         let mut kq = [0.0; 4];
         let mut n_t = 0;
@@ -62,28 +58,16 @@ impl OpenWater {
                 continue;
             }
             let f: Vec<&str> = line.split(',').collect();
-            let bad = || {
-                format!(
-                    "wageningen_b_series.csv line {}: cannot read '{line}'",
-                    lineno + 1
-                )
-            };
+            let bad = || format!("wageningen_b_series.csv line {}: cannot read '{line}'", lineno + 1);
             if f.len() != 6 {
                 return Err(bad());
             }
             let c: f64 = f[1].parse().map_err(|_| bad())?;
-            let e: Vec<u32> = f[2..6]
-                .iter()
-                .map(|x| x.parse::<u32>())
-                .collect::<Result<_, _>>()
-                .map_err(|_| bad())?;
+            let e: Vec<u32> = f[2..6].iter().map(|x| x.parse::<u32>()).collect::<Result<_, _>>().map_err(|_| bad())?;
             if e[0] > 3 {
                 return Err(bad());
             }
-            let term = c
-                * int_pow(pitch_ratio, e[1])
-                * int_pow(blade_area_ratio, e[2])
-                * int_pow(blades as f64, e[3]);
+            let term = c * int_pow(pitch_ratio, e[1]) * int_pow(blade_area_ratio, e[2]) * int_pow(blades as f64, e[3]);
             match f[0] {
                 "KT" => {
                     kt[e[0] as usize] += term;
@@ -97,17 +81,13 @@ impl OpenWater {
             }
         }
         if n_t != 39 || n_q != 47 {
-            return Err(format!(
-                "wageningen_b_series.csv: expected 39 KT and 47 KQ terms, found {n_t} and {n_q}"
-            ));
+            return Err(format!("wageningen_b_series.csv: expected 39 KT and 47 KQ terms, found {n_t} and {n_q}"));
         }
         let mut ow = OpenWater { kt, kq, j_max: 0.0 };
         // Zero-thrust advance ratio by bisection on [0, 2]: kT falls monotonically in the first quadrant.
         let (mut lo, mut hi) = (0.0, 2.0);
         if ow.kt(lo) <= 0.0 || ow.kt(hi) > 0.0 {
-            return Err(
-                "B-series thrust coefficient has no zero in J = 0..2 for this geometry".into(),
-            );
+            return Err("B-series thrust coefficient has no zero in J = 0..2 for this geometry".into());
         }
         for _ in 0..80 {
             let mid = 0.5 * (lo + hi);
@@ -164,11 +144,7 @@ impl OpenWater {
     ) -> PropellerLoad {
         let n_abs = n_hz.abs();
         if n_abs < 1e-9 {
-            return PropellerLoad {
-                thrust_n: 0.0,
-                torque_nm: 0.0,
-                advance_ratio: self.j_max,
-            };
+            return PropellerLoad { thrust_n: 0.0, torque_nm: 0.0, advance_ratio: self.j_max };
         }
         let j = (va / (n_abs * diameter_m)).clamp(0.0, self.j_max);
         let d2 = diameter_m * diameter_m;
@@ -182,18 +158,9 @@ impl OpenWater {
 
     /// Calm-water equilibrium advance ratio J* at which `n_prop` propellers (with beta_T = 1)
     /// balance a resistance R = c_r u^2: n_prop kT(J) rho D^2 (1-w)^2 / J^2 = c_r.
-    pub fn equilibrium_advance_ratio(
-        &self,
-        c_r: f64,
-        n_prop: f64,
-        diameter_m: f64,
-        rho: f64,
-        wake: f64,
-    ) -> f64 {
-        let f = |j: f64| {
-            n_prop * self.kt(j) * rho * diameter_m * diameter_m * (1.0 - wake) * (1.0 - wake)
-                - c_r * j * j
-        };
+    pub fn equilibrium_advance_ratio(&self, c_r: f64, n_prop: f64, diameter_m: f64, rho: f64, wake: f64) -> f64 {
+        let f =
+            |j: f64| n_prop * self.kt(j) * rho * diameter_m * diameter_m * (1.0 - wake) * (1.0 - wake) - c_r * j * j;
         let (mut lo, mut hi) = (0.0, self.j_max);
         for _ in 0..100 {
             let mid = 0.5 * (lo + hi);
@@ -216,21 +183,9 @@ mod tests {
     #[test]
     fn b4_70_matches_published_values() {
         let ow = OpenWater::b_series(1.0, 0.70, 4).unwrap();
-        assert!(
-            (ow.kt(0.0) - 0.455).abs() < 0.0015,
-            "kT(0) = {}",
-            ow.kt(0.0)
-        );
-        assert!(
-            (ow.kt(0.6) - 0.226).abs() < 0.0015,
-            "kT(0.6) = {}",
-            ow.kt(0.6)
-        );
-        assert!(
-            (ow.kq(0.0) - 0.0675).abs() < 0.00015,
-            "kQ(0) = {}",
-            ow.kq(0.0)
-        );
+        assert!((ow.kt(0.0) - 0.455).abs() < 0.0015, "kT(0) = {}", ow.kt(0.0));
+        assert!((ow.kt(0.6) - 0.226).abs() < 0.0015, "kT(0.6) = {}", ow.kt(0.6));
+        assert!((ow.kq(0.0) - 0.0675).abs() < 0.00015, "kQ(0) = {}", ow.kq(0.0));
         // Zero thrust near J = 1.0 to 1.1 for P/D = 1 (Kuiper 1992, B4-70 chart).
         assert!(ow.j_max > 0.95 && ow.j_max < 1.15, "J0 = {}", ow.j_max);
     }
@@ -248,10 +203,7 @@ mod tests {
                 jbest = j;
             }
         }
-        assert!(
-            (best - 0.69).abs() < 0.02,
-            "eta0 max = {best} at J = {jbest}"
-        );
+        assert!((best - 0.69).abs() < 0.02, "eta0 max = {best} at J = {jbest}");
         assert!(jbest > 0.7 && jbest < 0.95, "J at eta0 max = {jbest}");
     }
 
@@ -264,5 +216,133 @@ mod tests {
         assert!((b.torque_nm / a.torque_nm - 4.0).abs() < 1e-12);
         let stopped = ow.load(0.0, 5.0, 4.5, 1025.0, 1.0, 1.0, 1.0);
         assert_eq!(stopped.thrust_n, 0.0);
+    }
+}
+
+/// Four-quadrant open-water data (Fourier series in the hydrodynamic pitch angle).
+const FOUR_QUADRANT_CSV: &str = include_str!("../data/four_quadrant_b4_70.csv");
+
+/// Number of Fourier terms (k = 0..20).
+const N_FOURIER: usize = 21;
+
+/// Four-quadrant propeller: thrust and torque for any sign of advance speed and shaft speed, from
+/// the Wageningen B4-70 (P/D = 1.0) Fourier series of van Lammeren et al. (1969) as quoted by
+/// Smogeli (2006). Used for AC braking (thesis ch. 5.2.2, after Rubis [60]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FourQuadrant {
+    at: [f64; N_FOURIER],
+    bt: [f64; N_FOURIER],
+    aq: [f64; N_FOURIER],
+    bq: [f64; N_FOURIER],
+}
+
+impl FourQuadrant {
+    /// The embedded B4-70 series.
+    pub fn b4_70() -> Result<FourQuadrant, String> {
+        let mut fq =
+            FourQuadrant { at: [0.0; N_FOURIER], bt: [0.0; N_FOURIER], aq: [0.0; N_FOURIER], bq: [0.0; N_FOURIER] };
+        let mut seen = [false; N_FOURIER];
+        for (lineno, line) in FOUR_QUADRANT_CSV.lines().enumerate() {
+            let line = line.trim();
+            if line.is_empty() || line.starts_with('#') || line.starts_with("k,") {
+                continue;
+            }
+            let bad = || format!("four_quadrant_b4_70.csv line {}: cannot read '{line}'", lineno + 1);
+            let f: Vec<f64> =
+                line.split(',').map(|x| x.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|_| bad())?;
+            if f.len() != 5 || f[0] < 0.0 || f[0] as usize >= N_FOURIER {
+                return Err(bad());
+            }
+            let k = f[0] as usize;
+            fq.at[k] = f[1];
+            fq.bt[k] = f[2];
+            fq.aq[k] = f[3];
+            fq.bq[k] = f[4];
+            seen[k] = true;
+        }
+        if seen.iter().any(|s| !s) {
+            return Err("four_quadrant_b4_70.csv: terms k = 0..20 are not all present".into());
+        }
+        Ok(fq)
+    }
+
+    /// C_T(beta) and C_Q(beta) [-], beta the hydrodynamic pitch angle [rad]. The harmonics come from
+    /// one sine and cosine by the angle-addition recurrence (cheap and the same on every platform).
+    pub fn coefficients(&self, beta: f64) -> (f64, f64) {
+        let (s1, c1) = (libm::sin(beta), libm::cos(beta));
+        let (mut s, mut c) = (0.0, 1.0);
+        let (mut ct, mut cq) = (0.0, 0.0);
+        for k in 0..N_FOURIER {
+            ct += self.at[k] * c + self.bt[k] * s;
+            cq += self.aq[k] * c + self.bq[k] * s;
+            let (sn, cn) = (s * c1 + c * s1, c * c1 - s * s1);
+            s = sn;
+            c = cn;
+        }
+        (ct, cq)
+    }
+
+    /// Thrust [N] and shaft torque [N m] at shaft speed `n_hz` [rev/s] and advance speed `va`
+    /// [m/s], any signs: beta = atan2(Va, 0.7 pi n D), T = C_T (1/2) rho V_r^2 (pi/4) D^2,
+    /// Q = C_Q (1/2) rho V_r^2 (pi/4) D^3 / eta_R, V_r^2 = Va^2 + (0.7 pi n D)^2.
+    #[allow(clippy::too_many_arguments)]
+    pub fn load(
+        &self,
+        n_hz: f64,
+        va: f64,
+        diameter_m: f64,
+        rho: f64,
+        rotative_efficiency: f64,
+        beta_t: f64,
+        beta_q: f64,
+    ) -> PropellerLoad {
+        let vt = 0.7 * PI * n_hz * diameter_m;
+        let vr2 = va * va + vt * vt;
+        let beta = libm::atan2(va, vt);
+        let (ct, cq) = self.coefficients(beta);
+        let q = 0.5 * rho * vr2 * PI / 4.0 * diameter_m * diameter_m;
+        let j = if n_hz.abs() > 1e-9 { va / (n_hz * diameter_m) } else { 0.0 };
+        PropellerLoad {
+            thrust_n: beta_t * ct * q,
+            torque_nm: beta_q * cq * q * diameter_m / rotative_efficiency,
+            advance_ratio: j,
+        }
+    }
+}
+
+#[cfg(test)]
+mod four_quadrant_tests {
+    use super::*;
+
+    /// The series against its file's own first-quadrant check values (KT(0) = 0.445,
+    /// KT(0.6) = 0.219, KQ(0) = 0.0666, three figures) and against the B4-70 polynomial within 0.02 in KT and 0.0025 in KQ (two fits of the same MARIN tests; they
+    /// differ by 0.010 at J = 0 already).
+    #[test]
+    fn first_quadrant_matches_b_series() {
+        let fq = FourQuadrant::b4_70().unwrap();
+        let ow = OpenWater::b_series(1.0, 0.70, 4).unwrap();
+        let (n, d, rho) = (2.0, 4.0, 1025.0);
+        let kt = |j: f64| fq.load(n, j * n * d, d, rho, 1.0, 1.0, 1.0).thrust_n / (rho * n * n * d.powi(4));
+        let kq = |j: f64| fq.load(n, j * n * d, d, rho, 1.0, 1.0, 1.0).torque_nm / (rho * n * n * d.powi(5));
+        assert!((kt(0.0) - 0.445).abs() < 0.0015, "KT(0) = {}", kt(0.0));
+        assert!((kt(0.6) - 0.219).abs() < 0.0015, "KT(0.6) = {}", kt(0.6));
+        assert!((kq(0.0) - 0.0666).abs() < 0.00015, "KQ(0) = {}", kq(0.0));
+        for i in 0..=8 {
+            let j = 0.1 * i as f64;
+            println!("J {j:.1}: KT {:.4} vs {:.4}, KQ {:.5} vs {:.5}", kt(j), ow.kt(j), kq(j), ow.kq(j));
+            assert!((kt(j) - ow.kt(j)).abs() < 0.02, "J = {j}: {} vs {}", kt(j), ow.kt(j));
+            assert!((kq(j) - ow.kq(j)).abs() < 0.0025, "J = {j}: {} vs {}", kq(j), ow.kq(j));
+        }
+    }
+
+    /// Beyond zero thrust the propeller windmills: thrust and torque both reverse (the ship drives the
+    /// shaft), and a locked propeller (n = 0) drags.
+    #[test]
+    fn windmilling_and_locked() {
+        let fq = FourQuadrant::b4_70().unwrap();
+        let wm = fq.load(1.0, 1.5 * 4.0, 4.0, 1025.0, 1.0, 1.0, 1.0);
+        assert!(wm.thrust_n < 0.0 && wm.torque_nm < 0.0, "{wm:?}");
+        let locked = fq.load(0.0, 5.0, 4.0, 1025.0, 1.0, 1.0, 1.0);
+        assert!(locked.thrust_n < 0.0, "{locked:?}");
     }
 }

@@ -5,6 +5,8 @@
 //! rotating machines are given in rpm and ship speeds in knots because that is how engineers state
 //! them; the physics converts to SI on load.
 
+use crate::maneuvering::AbkowitzCoefficients;
+use crate::rudder::{AutopilotParams, RudderParams};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -17,6 +19,8 @@ pub struct Scenario {
     /// One or two sentences for the reader: what this run shows.
     pub description: String,
     pub ship: ShipParams,
+    pub hull: HullParams,
+    pub rudder: RudderParams,
     pub propeller: PropellerParams,
     pub plant: PlantParams,
     pub controllers: ControllerParams,
@@ -49,10 +53,66 @@ pub struct ShipParams {
     pub length_m: f64,
 }
 
+/// Which hull model moves the ship.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum HullModelKind {
+    /// Straight-line surge (eqs. 2.15-2.16), as ch. 5.1 uses for start-up.
+    Surge,
+    /// Abkowitz 3-DOF maneuvering (eqs. 2.17-2.25) with the rudder; in surge it hands over smoothly
+    /// to the surge model below `hull.handover_low_kn`.
+    Maneuvering,
+}
+
+/// Hull model selection and the maneuvering model's data (ch. 2.4, Table 2.3).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct HullParams {
+    /// "surge" (default) or "maneuvering".
+    pub model: HullModelKind,
+    /// Abkowitz coefficients, non-dimensional x 1e-5 (Table 2.3, the 22-knot set).
+    pub abkowitz: AbkowitzCoefficients,
+    /// Speed about which the expansion was made, u0 [knots]. Ch. 2.4: 22.
+    pub linearization_speed_kn: f64,
+    /// Drop the straight-running side force and yaw moment (Y_0, N_0 and their Delta-u terms), as a
+    /// port-starboard symmetric hull must (see maneuvering.rs). Default true.
+    pub symmetric_hull: bool,
+    /// Below this speed surge follows the surge model alone [knots]. Our choice: 17. The Abkowitz
+    /// surge polynomial, fitted at 11 and 22 knots, turns propulsive near 11 knots.
+    pub handover_low_kn: f64,
+    /// Above this speed surge follows the Abkowitz model alone [knots]. Our choice: 21.
+    pub handover_high_kn: f64,
+}
+
+impl Default for HullParams {
+    fn default() -> Self {
+        HullParams {
+            model: HullModelKind::Surge,
+            abkowitz: AbkowitzCoefficients::default(),
+            linearization_speed_kn: 22.0,
+            symmetric_hull: true,
+            handover_low_kn: 17.0,
+            handover_high_kn: 21.0,
+        }
+    }
+}
+
+/// Which open-water model the propellers follow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PropellerModelKind {
+    /// Wageningen B-series polynomials, first quadrant only (eqs. 2.11-2.13).
+    BSeries,
+    /// Four-quadrant B4-70 Fourier series (ch. 5.2.2): any sign of thrust, torque and speed.
+    FourQuadrant,
+}
+
 /// Wageningen B-series propeller, one per shaft (eqs. 2.11-2.13, Table 5.1).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct PropellerParams {
+    /// Open-water model: "b_series" (default) or "four_quadrant" (needed for braking).
+    pub model: PropellerModelKind,
     /// Diameter D [m]. Table 5.1: 4.5.
     pub diameter_m: f64,
     /// Pitch ratio P/D [-]. Table 5.1: 1.0.
@@ -148,6 +208,24 @@ pub struct DcLinkParams {
     /// nominal 5618 V bus can drive the 4160 V motor at rated frequency with 5 % to spare.
     /// This is the "dynamic saturation of motor voltage" of ch. 2.2.3.
     pub inverter_voltage_ratio: f64,
+    /// Rectifier: "diode" (power flows only from the generators to the bus) or "reversible" (an
+    /// average model of a converter that also returns power to the generators, as ch. 5.2.2's
+    /// unbuffered braking needs to overspeed the turbines).
+    pub rectifier: RectifierKind,
+    /// Braking (dump) resistor on each bus, switched by a chopper [ohm]; 0 for none. Ch. 5.2.2's
+    /// "ideal power management". Our value for the braking preset: 1 ohm (31.6 MW at 5.62 kV).
+    pub brake_resistor_ohm: f64,
+    /// Bus voltage at which the chopper starts to conduct, per unit of the bus set point [-].
+    /// Our choice: 1.05; it conducts fully 5 % higher.
+    pub brake_on_pu: f64,
+}
+
+/// Rectifier average model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RectifierKind {
+    Diode,
+    Reversible,
 }
 
 /// 38 MW induction motor (eqs. 2.5-2.6, Table 2.1).
@@ -192,6 +270,7 @@ pub struct ControllerParams {
     pub field: FieldControlParams,
     pub slip: SlipControlParams,
     pub speed: SpeedControlParams,
+    pub autopilot: AutopilotParams,
 }
 
 /// Discrete PI governor on turbine speed acting on the throttle (ch. 2.1).
@@ -234,6 +313,14 @@ pub struct SlipControlParams {
     pub kp: f64,
     /// Integral gain [rad/s of slip per rad of electrical rotor angle error]. Not given; 0.1.
     pub ki: f64,
+    /// Allow negative slip, so the motor brakes as a generator (AC braking, ch. 5.2.2). Only
+    /// meaningful with a path for the returned power (brake resistor or reversible rectifier).
+    pub allow_braking: bool,
+    /// The "offset discontinuity" of ch. 5.2.2 [rad/s]: the slip command skips the band
+    /// (-offset, offset). The thesis needed it because its circuit is singular at zero slip; ours
+    /// (written in admittances) is regular there, so the default is 0; set it to reproduce the
+    /// thesis' scheme.
+    pub zero_slip_offset_rad_s: f64,
 }
 
 /// Outer ship-speed loop: a calm-water rpm map trimmed by a PI on ship speed error.
@@ -246,7 +333,8 @@ pub struct SpeedControlParams {
     /// Integral trim [rpm per knot second]. Our design; 0.2 (a 40 s integral time: it removes the
     /// steady error that waves, turns or fouling leave on the calm-water map).
     pub ki_rpm_per_kn_s: f64,
-    /// Largest trim as a fraction of the mapped shaft speed [-]. Our design; 0.2.
+    /// Largest trim as a fraction of the mapped shaft speed [-]. Our design; 0.4 (a tight turn at
+    /// 25 knots needs about a quarter more shaft speed than the straight-line map).
     pub trim_limit: f64,
     /// Rate limit of the shaft speed reference [rpm/s]. Our design; 5 rpm/s keeps the turbines'
     /// load rise within their slew limit. 0 means no limit (a true step command).
@@ -265,10 +353,14 @@ pub struct Command {
     /// Ordered ship speed [knots]. Omitted: keep the previous order.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub speed_kn: Option<f64>,
-    /// Ordered heading [degrees]. Needs the maneuvering model, which this version does not have:
-    /// a heading command is rejected.
+    /// Ordered heading [degrees, clockwise from north, not wrapped: 360 means one full turn to
+    /// starboard]. Needs `hull.model = "maneuvering"`. Omitted: keep the previous order.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub heading_deg: Option<f64>,
+    /// Rate at which the heading reference moves to the ordered heading [deg/s]; omitted: the
+    /// autopilot's `turn_rate_deg_s`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub heading_rate_deg_s: Option<f64>,
 }
 
 /// Where the run starts.
@@ -301,14 +393,12 @@ impl Default for Scenario {
             name: "custom".into(),
             description: String::new(),
             ship: ShipParams::default(),
+            hull: HullParams::default(),
+            rudder: RudderParams::default(),
             propeller: PropellerParams::default(),
             plant: PlantParams::default(),
             controllers: ControllerParams::default(),
-            commands: vec![Command {
-                t_s: 0.0,
-                speed_kn: Some(25.0),
-                heading_deg: None,
-            }],
+            commands: vec![Command { t_s: 0.0, speed_kn: Some(25.0), heading_deg: None, heading_rate_deg_s: None }],
             initial: InitialConditions::default(),
             sim: SimSettings::default(),
         }
@@ -333,6 +423,7 @@ impl Default for ShipParams {
 impl Default for PropellerParams {
     fn default() -> Self {
         PropellerParams {
+            model: PropellerModelKind::BSeries,
             diameter_m: 4.5,
             pitch_ratio: 1.0,
             blade_area_ratio: 0.75,
@@ -380,6 +471,9 @@ impl Default for DcLinkParams {
             capacitance_f: 0.037,
             notching_resistance_ohm: 0.05,
             inverter_voltage_ratio: std::f64::consts::SQRT_2 / std::f64::consts::PI,
+            rectifier: RectifierKind::Diode,
+            brake_resistor_ohm: 0.0,
+            brake_on_pu: 1.05,
         }
     }
 }
@@ -409,33 +503,26 @@ impl Default for ControllerParams {
             field: FieldControlParams::default(),
             slip: SlipControlParams::default(),
             speed: SpeedControlParams::default(),
+            autopilot: AutopilotParams::default(),
         }
     }
 }
 
 impl Default for GovernorParams {
     fn default() -> Self {
-        GovernorParams {
-            kp: 10.0,
-            ki: 10.0,
-            slew_rate_per_s: 0.1,
-        }
+        GovernorParams { kp: 10.0, ki: 10.0, slew_rate_per_s: 0.1 }
     }
 }
 
 impl Default for FieldControlParams {
     fn default() -> Self {
-        FieldControlParams {
-            bus_voltage_ref_v: 5618.0,
-            kp: 1.0e-4,
-            ki: 5.0e-4,
-        }
+        FieldControlParams { bus_voltage_ref_v: 5618.0, kp: 1.0e-4, ki: 5.0e-4 }
     }
 }
 
 impl Default for SlipControlParams {
     fn default() -> Self {
-        SlipControlParams { kp: 0.1, ki: 0.1 }
+        SlipControlParams { kp: 0.1, ki: 0.1, allow_braking: false, zero_slip_offset_rad_s: 0.0 }
     }
 }
 
@@ -444,7 +531,7 @@ impl Default for SpeedControlParams {
         SpeedControlParams {
             kp_rpm_per_kn: 4.0,
             ki_rpm_per_kn_s: 0.2,
-            trim_limit: 0.2,
+            trim_limit: 0.4,
             shaft_ramp_rpm_per_s: 5.0,
             max_shaft_rpm: 320.0,
         }
@@ -459,12 +546,7 @@ impl Default for InitialConditions {
 
 impl Default for SimSettings {
     fn default() -> Self {
-        SimSettings {
-            duration_s: 300.0,
-            dt_s: 0.001,
-            record_interval_s: 0.1,
-            seed: 0,
-        }
+        SimSettings { duration_s: 300.0, dt_s: 0.001, record_interval_s: 0.1, seed: 0 }
     }
 }
 
@@ -527,11 +609,7 @@ impl Checker {
         }
     }
     fn fail(&mut self, path: &str, value: String, message: &str) {
-        self.errors.push(FieldError {
-            path: path.into(),
-            value,
-            message: message.into(),
-        });
+        self.errors.push(FieldError { path: path.into(), value, message: message.into() });
     }
 }
 
@@ -556,54 +634,52 @@ impl Scenario {
         c.range("ship.drag_coeff", s.drag_coeff, 1.0e-5, 0.1);
         c.range("ship.thrust_deduction", s.thrust_deduction, 0.0, 0.5);
         c.range("ship.wake_fraction", s.wake_fraction, 0.0, 0.6);
-        c.range(
-            "ship.water_density_kg_m3",
-            s.water_density_kg_m3,
-            900.0,
-            1100.0,
-        );
+        c.range("ship.water_density_kg_m3", s.water_density_kg_m3, 900.0, 1100.0);
         c.range("ship.length_m", s.length_m, 5.0, 500.0);
 
+        let h = &self.hull;
+        c.range("hull.linearization_speed_kn", h.linearization_speed_kn, 1.0, 40.0);
+        c.range("hull.handover_low_kn", h.handover_low_kn, 0.0, 40.0);
+        c.range("hull.handover_high_kn", h.handover_high_kn, 0.0, 40.0);
+        if h.handover_high_kn <= h.handover_low_kn {
+            c.fail("hull.handover_high_kn", format!("{}", h.handover_high_kn), "must be above hull.handover_low_kn");
+        }
+        if let Ok(serde_json::Value::Object(map)) = serde_json::to_value(&h.abkowitz) {
+            for (name, v) in map {
+                c.range(&format!("hull.abkowitz.{name}"), v.as_f64().unwrap_or(f64::NAN), -1.0e6, 1.0e6);
+            }
+        }
+        for (name, v) in [
+            ("xudot_minus_m", h.abkowitz.xudot_minus_m),
+            ("yvdot_minus_m", h.abkowitz.yvdot_minus_m),
+            ("nrdot_minus_iz", h.abkowitz.nrdot_minus_iz),
+        ] {
+            if v >= 0.0 {
+                c.fail(&format!("hull.abkowitz.{name}"), format!("{v}"), "must be negative (added mass less the mass)");
+            }
+        }
+        let r = &self.rudder;
+        c.range("rudder.area_m2", r.area_m2, 0.0, 500.0);
+        c.range("rudder.x_p_m", r.x_p_m, 0.0, 500.0);
+        c.range("rudder.lift_slope", r.lift_slope, 0.0, 10.0);
+        c.range("rudder.drag_slope", r.drag_slope, 0.0, 5.0);
+        c.range("rudder.max_angle_deg", r.max_angle_deg, 1.0, 45.0);
+        c.range("rudder.swing_rate_rad_s", r.swing_rate_rad_s, 0.001, 1.0);
         let p = &self.propeller;
         c.range("propeller.diameter_m", p.diameter_m, 0.1, 15.0);
         // Ranges of the Oosterveld & van Oossanen regression.
         c.range("propeller.pitch_ratio", p.pitch_ratio, 0.5, 1.4);
         c.range("propeller.blade_area_ratio", p.blade_area_ratio, 0.3, 1.05);
         c.range_u("propeller.blades", p.blades as u64, 2, 7);
-        c.range(
-            "propeller.rotative_efficiency",
-            p.rotative_efficiency,
-            0.8,
-            1.2,
-        );
-        c.range(
-            "propeller.shaft_inertia_kg_m2",
-            p.shaft_inertia_kg_m2,
-            1.0,
-            1.0e8,
-        );
+        c.range("propeller.rotative_efficiency", p.rotative_efficiency, 0.8, 1.2);
+        c.range("propeller.shaft_inertia_kg_m2", p.shaft_inertia_kg_m2, 1.0, 1.0e8);
         c.range("propeller.beta_t", p.beta_t, 0.0, 1.0);
         c.range("propeller.beta_q", p.beta_q, 0.0, 1.0);
 
         let t = &self.plant.turbine;
-        c.range(
-            "plant.turbine.locking_torque_nm",
-            t.locking_torque_nm,
-            1.0e3,
-            1.0e7,
-        );
-        c.range(
-            "plant.turbine.no_load_speed_rpm",
-            t.no_load_speed_rpm,
-            100.0,
-            1.0e5,
-        );
-        c.range(
-            "plant.turbine.rated_speed_rpm",
-            t.rated_speed_rpm,
-            100.0,
-            1.0e5,
-        );
+        c.range("plant.turbine.locking_torque_nm", t.locking_torque_nm, 1.0e3, 1.0e7);
+        c.range("plant.turbine.no_load_speed_rpm", t.no_load_speed_rpm, 100.0, 1.0e5);
+        c.range("plant.turbine.rated_speed_rpm", t.rated_speed_rpm, 100.0, 1.0e5);
         if t.rated_speed_rpm >= t.no_load_speed_rpm {
             c.fail(
                 "plant.turbine.rated_speed_rpm",
@@ -615,216 +691,90 @@ impl Scenario {
         c.range("plant.turbine.rated_power_w", t.rated_power_w, 1.0e4, 1.0e9);
 
         let g = &self.plant.generator;
-        c.range(
-            "plant.generator.stator_resistance_ohm",
-            g.stator_resistance_ohm,
-            0.0,
-            10.0,
-        );
-        c.range(
-            "plant.generator.stator_inductance_h",
-            g.stator_inductance_h,
-            0.0,
-            1.0,
-        );
-        c.range(
-            "plant.generator.mutual_inductance_h",
-            g.mutual_inductance_h,
-            1.0e-5,
-            10.0,
-        );
+        c.range("plant.generator.stator_resistance_ohm", g.stator_resistance_ohm, 0.0, 10.0);
+        c.range("plant.generator.stator_inductance_h", g.stator_inductance_h, 0.0, 1.0);
+        c.range("plant.generator.mutual_inductance_h", g.mutual_inductance_h, 1.0e-5, 10.0);
         if g.poles % 2 != 0 {
-            c.fail(
-                "plant.generator.poles",
-                format!("{}", g.poles),
-                "must be even (2, 4, ...)",
-            );
+            c.fail("plant.generator.poles", format!("{}", g.poles), "must be even (2, 4, ...)");
         }
         c.range_u("plant.generator.poles", g.poles as u64, 2, 64);
-        c.range(
-            "plant.generator.rated_voltage_ll_v",
-            g.rated_voltage_ll_v,
-            100.0,
-            1.0e5,
-        );
-        c.range(
-            "plant.generator.field_resistance_ohm",
-            g.field_resistance_ohm,
-            1.0e-3,
-            100.0,
-        );
-        c.range(
-            "plant.generator.field_inductance_h",
-            g.field_inductance_h,
-            1.0e-3,
-            100.0,
-        );
-        c.range(
-            "plant.generator.field_ceiling_ratio",
-            g.field_ceiling_ratio,
-            1.0,
-            10.0,
-        );
-        c.range(
-            "plant.generator.friction_constant_nm",
-            g.friction_constant_nm,
-            0.0,
-            1.0e5,
-        );
-        c.range(
-            "plant.generator.friction_viscous_nm_s",
-            g.friction_viscous_nm_s,
-            0.0,
-            1.0e3,
-        );
+        c.range("plant.generator.rated_voltage_ll_v", g.rated_voltage_ll_v, 100.0, 1.0e5);
+        c.range("plant.generator.field_resistance_ohm", g.field_resistance_ohm, 1.0e-3, 100.0);
+        c.range("plant.generator.field_inductance_h", g.field_inductance_h, 1.0e-3, 100.0);
+        c.range("plant.generator.field_ceiling_ratio", g.field_ceiling_ratio, 1.0, 10.0);
+        c.range("plant.generator.friction_constant_nm", g.friction_constant_nm, 0.0, 1.0e5);
+        c.range("plant.generator.friction_viscous_nm_s", g.friction_viscous_nm_s, 0.0, 1.0e3);
 
         let d = &self.plant.dc_link;
-        c.range(
-            "plant.dc_link.capacitance_f",
-            d.capacitance_f,
-            1.0e-4,
-            100.0,
-        );
-        c.range(
-            "plant.dc_link.notching_resistance_ohm",
-            d.notching_resistance_ohm,
-            1.0e-4,
-            10.0,
-        );
-        c.range(
-            "plant.dc_link.inverter_voltage_ratio",
-            d.inverter_voltage_ratio,
-            0.1,
-            0.5,
-        );
+        c.range("plant.dc_link.capacitance_f", d.capacitance_f, 1.0e-4, 100.0);
+        c.range("plant.dc_link.notching_resistance_ohm", d.notching_resistance_ohm, 1.0e-4, 10.0);
+        c.range("plant.dc_link.inverter_voltage_ratio", d.inverter_voltage_ratio, 0.1, 0.5);
+        if d.brake_resistor_ohm != 0.0 {
+            c.range("plant.dc_link.brake_resistor_ohm", d.brake_resistor_ohm, 0.01, 1.0e4);
+        }
+        c.range("plant.dc_link.brake_on_pu", d.brake_on_pu, 1.0, 1.5);
 
         let m = &self.plant.motor;
-        c.range(
-            "plant.motor.stator_resistance_ohm",
-            m.stator_resistance_ohm,
-            0.0,
-            10.0,
-        );
-        c.range(
-            "plant.motor.stator_inductance_h",
-            m.stator_inductance_h,
-            0.0,
-            1.0,
-        );
-        c.range(
-            "plant.motor.rotor_resistance_ohm",
-            m.rotor_resistance_ohm,
-            1.0e-6,
-            10.0,
-        );
-        c.range(
-            "plant.motor.rotor_inductance_h",
-            m.rotor_inductance_h,
-            0.0,
-            1.0,
-        );
-        c.range(
-            "plant.motor.magnetizing_inductance_h",
-            m.magnetizing_inductance_h,
-            1.0e-5,
-            10.0,
-        );
+        c.range("plant.motor.stator_resistance_ohm", m.stator_resistance_ohm, 0.0, 10.0);
+        c.range("plant.motor.stator_inductance_h", m.stator_inductance_h, 0.0, 1.0);
+        c.range("plant.motor.rotor_resistance_ohm", m.rotor_resistance_ohm, 1.0e-6, 10.0);
+        c.range("plant.motor.rotor_inductance_h", m.rotor_inductance_h, 0.0, 1.0);
+        c.range("plant.motor.magnetizing_inductance_h", m.magnetizing_inductance_h, 1.0e-5, 10.0);
         c.range_u("plant.motor.pole_pairs", m.pole_pairs as u64, 1, 64);
-        c.range(
-            "plant.motor.rated_voltage_ll_v",
-            m.rated_voltage_ll_v,
-            100.0,
-            1.0e5,
-        );
-        c.range(
-            "plant.motor.rated_frequency_hz",
-            m.rated_frequency_hz,
-            1.0,
-            1000.0,
-        );
+        c.range("plant.motor.rated_voltage_ll_v", m.rated_voltage_ll_v, 100.0, 1.0e5);
+        c.range("plant.motor.rated_frequency_hz", m.rated_frequency_hz, 1.0, 1000.0);
         c.range("plant.motor.rated_power_w", m.rated_power_w, 1.0e3, 1.0e9);
         c.range("plant.motor.efficiency", m.efficiency, 0.5, 1.0);
 
         let k = &self.controllers;
-        c.range(
-            "controllers.sample_period_s",
-            k.sample_period_s,
-            1.0e-4,
-            1.0,
-        );
+        c.range("controllers.sample_period_s", k.sample_period_s, 1.0e-4, 1.0);
         c.range("controllers.governor.kp", k.governor.kp, 0.0, 1.0e3);
         c.range("controllers.governor.ki", k.governor.ki, 0.0, 1.0e3);
-        c.range(
-            "controllers.governor.slew_rate_per_s",
-            k.governor.slew_rate_per_s,
-            1.0e-3,
-            100.0,
-        );
-        c.range(
-            "controllers.field.bus_voltage_ref_v",
-            k.field.bus_voltage_ref_v,
-            10.0,
-            1.0e5,
-        );
+        c.range("controllers.governor.slew_rate_per_s", k.governor.slew_rate_per_s, 1.0e-3, 100.0);
+        c.range("controllers.field.bus_voltage_ref_v", k.field.bus_voltage_ref_v, 10.0, 1.0e5);
         c.range("controllers.field.kp", k.field.kp, 0.0, 10.0);
         c.range("controllers.field.ki", k.field.ki, 0.0, 10.0);
         c.range("controllers.slip.kp", k.slip.kp, 0.0, 100.0);
         c.range("controllers.slip.ki", k.slip.ki, 0.0, 100.0);
-        c.range(
-            "controllers.speed.kp_rpm_per_kn",
-            k.speed.kp_rpm_per_kn,
-            0.0,
-            100.0,
-        );
-        c.range(
-            "controllers.speed.ki_rpm_per_kn_s",
-            k.speed.ki_rpm_per_kn_s,
-            0.0,
-            100.0,
-        );
+        c.range("controllers.slip.zero_slip_offset_rad_s", k.slip.zero_slip_offset_rad_s, 0.0, 1.0);
+        c.range("controllers.autopilot.kp", k.autopilot.kp, 0.0, 1.0e3);
+        c.range("controllers.autopilot.ki", k.autopilot.ki, 0.0, 1.0e3);
+        c.range("controllers.autopilot.kd", k.autopilot.kd, 0.0, 1.0e4);
+        c.range("controllers.autopilot.ka", k.autopilot.ka, 0.0, 1.0e5);
+        c.range("controllers.autopilot.max_turn_rate_nondim", k.autopilot.max_turn_rate_nondim, 0.01, 2.0);
+        c.range("controllers.autopilot.turn_rate_deg_s", k.autopilot.turn_rate_deg_s, 0.01, 10.0);
+        c.range("controllers.speed.kp_rpm_per_kn", k.speed.kp_rpm_per_kn, 0.0, 100.0);
+        c.range("controllers.speed.ki_rpm_per_kn_s", k.speed.ki_rpm_per_kn_s, 0.0, 100.0);
         c.range("controllers.speed.trim_limit", k.speed.trim_limit, 0.0, 1.0);
-        c.range(
-            "controllers.speed.shaft_ramp_rpm_per_s",
-            k.speed.shaft_ramp_rpm_per_s,
-            0.0,
-            1.0e4,
-        );
-        c.range(
-            "controllers.speed.max_shaft_rpm",
-            k.speed.max_shaft_rpm,
-            1.0,
-            2000.0,
-        );
+        c.range("controllers.speed.shaft_ramp_rpm_per_s", k.speed.shaft_ramp_rpm_per_s, 0.0, 1.0e4);
+        c.range("controllers.speed.max_shaft_rpm", k.speed.max_shaft_rpm, 1.0, 2000.0);
 
         if self.commands.len() > 10_000 {
-            c.fail(
-                "commands",
-                format!("{} commands", self.commands.len()),
-                "at most 10000",
-            );
+            c.fail("commands", format!("{} commands", self.commands.len()), "at most 10000");
         }
         let mut last_t = f64::NEG_INFINITY;
         for (i, cmd) in self.commands.iter().enumerate().take(10_000) {
             let base = format!("commands.{i}");
             c.range(&format!("{base}.t_s"), cmd.t_s, 0.0, 1.0e7);
             if cmd.t_s < last_t {
-                c.fail(
-                    &format!("{base}.t_s"),
-                    format!("{}", cmd.t_s),
-                    "commands must be in time order",
-                );
+                c.fail(&format!("{base}.t_s"), format!("{}", cmd.t_s), "commands must be in time order");
             }
             last_t = cmd.t_s;
             if let Some(kn) = cmd.speed_kn {
                 c.range(&format!("{base}.speed_kn"), kn, 0.0, 40.0);
             }
-            if let Some(h) = cmd.heading_deg {
-                c.fail(
-                    &format!("{base}.heading_deg"),
-                    format!("{h}"),
-                    "heading commands need the maneuvering model, which this version does not \
-                     have yet; remove the field",
-                );
+            if let Some(hd) = cmd.heading_deg {
+                c.range(&format!("{base}.heading_deg"), hd, -3600.0, 3600.0);
+                if self.hull.model != HullModelKind::Maneuvering {
+                    c.fail(
+                        &format!("{base}.heading_deg"),
+                        format!("{hd}"),
+                        "heading commands need hull.model = \"maneuvering\" (the surge model only goes straight)",
+                    );
+                }
+            }
+            if let Some(rate) = cmd.heading_rate_deg_s {
+                c.range(&format!("{base}.heading_rate_deg_s"), rate, 0.01, 10.0);
             }
         }
         if self.commands.first().and_then(|c| c.speed_kn).is_none() {
@@ -840,31 +790,20 @@ impl Scenario {
         let sim = &self.sim;
         c.range("sim.duration_s", sim.duration_s, 0.0, 1.0e6);
         c.range("sim.dt_s", sim.dt_s, 1.0e-5, 0.01);
-        c.range(
-            "sim.record_interval_s",
-            sim.record_interval_s,
-            1.0e-4,
-            1.0e4,
-        );
+        c.range("sim.record_interval_s", sim.record_interval_s, 1.0e-4, 1.0e4);
         if sim.dt_s.is_finite() && sim.dt_s > 0.0 {
             if !whole_multiple(sim.record_interval_s, sim.dt_s) {
                 c.fail(
                     "sim.record_interval_s",
                     format!("{}", sim.record_interval_s),
-                    &format!(
-                        "must be a whole number (1 or more) of sim.dt_s = {}",
-                        sim.dt_s
-                    ),
+                    &format!("must be a whole number (1 or more) of sim.dt_s = {}", sim.dt_s),
                 );
             }
             if !whole_multiple(k.sample_period_s, sim.dt_s) {
                 c.fail(
                     "controllers.sample_period_s",
                     format!("{}", k.sample_period_s),
-                    &format!(
-                        "must be a whole number (1 or more) of sim.dt_s = {}",
-                        sim.dt_s
-                    ),
+                    &format!("must be a whole number (1 or more) of sim.dt_s = {}", sim.dt_s),
                 );
             }
             let steps = sim.duration_s / sim.dt_s;
@@ -872,10 +811,7 @@ impl Scenario {
                 c.fail(
                     "sim.duration_s",
                     format!("{}", sim.duration_s),
-                    &format!(
-                        "with sim.dt_s = {} this is {steps:.3e} steps; at most 1e9",
-                        sim.dt_s
-                    ),
+                    &format!("with sim.dt_s = {} this is {steps:.3e} steps; at most 1e9", sim.dt_s),
                 );
             }
             let rows = sim.duration_s / sim.record_interval_s;
@@ -907,11 +843,7 @@ impl Scenario {
         let sc: Scenario = serde_path_to_error::deserialize(value).map_err(|e| {
             let path = e.path().to_string();
             ScenarioError(vec![FieldError {
-                path: if path == "." {
-                    "(top level)".into()
-                } else {
-                    path
-                },
+                path: if path == "." { "(top level)".into() } else { path },
                 value: String::new(),
                 message: e.into_inner().to_string(),
             }])
@@ -929,8 +861,8 @@ impl Scenario {
     /// given as text (JSON; bare words are taken as strings), then re-validates.
     pub fn with_override(&self, path: &str, value_text: &str) -> Result<Scenario, ScenarioError> {
         let mut root = serde_json::to_value(self).map_err(|e| one_error(path, value_text, &e))?;
-        let new_value: serde_json::Value = serde_json::from_str(value_text)
-            .unwrap_or_else(|_| serde_json::Value::String(value_text.to_string()));
+        let new_value: serde_json::Value =
+            serde_json::from_str(value_text).unwrap_or_else(|_| serde_json::Value::String(value_text.to_string()));
         let mut node = &mut root;
         let parts: Vec<&str> = path.split('.').collect();
         for (i, part) in parts.iter().enumerate() {
@@ -946,18 +878,13 @@ impl Scenario {
                             return Err(unknown_path(&here, value_text));
                         }
                     }
-                    map.get_mut(*part)
-                        .ok_or_else(|| unknown_path(&here, value_text))?
+                    map.get_mut(*part).ok_or_else(|| unknown_path(&here, value_text))?
                 }
                 serde_json::Value::Array(items) => {
                     let idx: usize = part.parse().map_err(|_| unknown_path(&here, value_text))?;
                     let len = items.len();
                     items.get_mut(idx).ok_or_else(|| {
-                        one_error(
-                            &here,
-                            value_text,
-                            &format!("index out of range (0 to {})", len.saturating_sub(1)),
-                        )
+                        one_error(&here, value_text, &format!("index out of range (0 to {})", len.saturating_sub(1)))
                     })?
                 }
                 _ => return Err(unknown_path(&here, value_text)),
@@ -969,19 +896,11 @@ impl Scenario {
 }
 
 fn one_error(path: &str, value: &str, msg: &dyn fmt::Display) -> ScenarioError {
-    ScenarioError(vec![FieldError {
-        path: path.into(),
-        value: value.into(),
-        message: msg.to_string(),
-    }])
+    ScenarioError(vec![FieldError { path: path.into(), value: value.into(), message: msg.to_string() }])
 }
 
 fn unknown_path(path: &str, value: &str) -> ScenarioError {
-    one_error(
-        path,
-        value,
-        &"no such parameter (see `aes-sim preset startup` for the names)",
-    )
+    one_error(path, value, &"no such parameter (see `aes-sim preset startup` for the names)")
 }
 
 /// Largest scenario text accepted [bytes].
@@ -1051,8 +970,7 @@ mod tests {
 
     #[test]
     fn wrong_type_is_named_with_path() {
-        let e =
-            Scenario::from_json(r#"{"plant": {"motor": {"pole_pairs": "twelve"}}}"#).unwrap_err();
+        let e = Scenario::from_json(r#"{"plant": {"motor": {"pole_pairs": "twelve"}}}"#).unwrap_err();
         assert_eq!(e.0[0].path, "plant.motor.pole_pairs");
     }
 
@@ -1067,11 +985,7 @@ mod tests {
         assert!(paths.contains(&"sim.dt_s"));
         let m = e.0.iter().find(|f| f.path == "ship.mass_kg").unwrap();
         assert_eq!(m.value, "-5");
-        assert!(
-            m.message.contains("10000") && m.message.contains("1000000000"),
-            "{}",
-            m.message
-        );
+        assert!(m.message.contains("10000") && m.message.contains("1000000000"), "{}", m.message);
     }
 
     #[test]

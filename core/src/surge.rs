@@ -17,8 +17,7 @@ impl Surge {
     pub fn new(p: &ShipParams) -> Surge {
         Surge {
             mass_total: p.mass_kg + p.added_mass_kg,
-            c_r: 0.5 * p.water_density_kg_m3 * p.drag_coeff * p.wetted_area_m2
-                / (1.0 - p.thrust_deduction),
+            c_r: 0.5 * p.water_density_kg_m3 * p.drag_coeff * p.wetted_area_m2 / (1.0 - p.thrust_deduction),
             wake: p.wake_fraction,
         }
     }

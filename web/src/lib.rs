@@ -16,9 +16,7 @@ pub fn preset_names() -> Vec<String> {
 /// A preset scenario as JSON text.
 #[wasm_bindgen(js_name = presetJson)]
 pub fn preset_json(name: &str) -> Result<String, JsError> {
-    preset(name)
-        .map(|s| s.to_json())
-        .ok_or_else(|| JsError::new(&format!("no preset named '{name}'")))
+    preset(name).map(|s| s.to_json()).ok_or_else(|| JsError::new(&format!("no preset named '{name}'")))
 }
 
 /// Checks a scenario; returns every problem as a list of `{path, value, message}` (empty when valid).
@@ -47,12 +45,7 @@ impl Run {
     pub fn new(json: &str) -> Result<Run, JsError> {
         let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
         let sim = Simulation::new(&sc).map_err(|e| JsError::new(&e.to_string()))?;
-        Ok(Run {
-            sim: Some(sim),
-            summary_json: String::new(),
-            trace_csv: String::new(),
-            columns: Vec::new(),
-        })
+        Ok(Run { sim: Some(sim), summary_json: String::new(), trace_csv: String::new(), columns: Vec::new() })
     }
 
     /// Advances by at most `steps` time steps; returns the fraction done (1 when finished).
@@ -60,13 +53,11 @@ impl Run {
         let Some(sim) = self.sim.as_mut() else {
             return Ok(1.0);
         };
-        sim.advance(steps as u64)
-            .map_err(|e| JsError::new(&e.to_string()))?;
+        sim.advance(steps as u64).map_err(|e| JsError::new(&e.to_string()))?;
         if sim.done() {
             if let Some(sim) = self.sim.take() {
                 let r = sim.finish();
-                self.summary_json =
-                    serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default();
+                self.summary_json = serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default();
                 self.trace_csv = r.trace.to_csv();
                 self.columns = r.trace.columns;
             }
@@ -90,10 +81,7 @@ impl Run {
     /// Names of the trace columns.
     #[wasm_bindgen(js_name = signalNames)]
     pub fn signal_names() -> Vec<String> {
-        aes_core::sim::SIGNALS
-            .iter()
-            .map(|s| s.to_string())
-            .collect()
+        aes_core::sim::SIGNALS.iter().map(|s| s.to_string()).collect()
     }
 
     /// One trace column as a Float64Array (after the run has finished).
@@ -102,10 +90,7 @@ impl Run {
             .iter()
             .position(|s| *s == name)
             .ok_or_else(|| JsError::new(&format!("no signal named '{name}'")))?;
-        let col = self
-            .columns
-            .get(i)
-            .ok_or_else(|| JsError::new("the run has not finished"))?;
+        let col = self.columns.get(i).ok_or_else(|| JsError::new("the run has not finished"))?;
         Ok(js_sys::Float64Array::from(col.as_slice()))
     }
 }

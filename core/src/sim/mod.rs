@@ -8,11 +8,12 @@ pub mod summary;
 use crate::generator::FieldController;
 use crate::motor::SlipController;
 use crate::prime_mover::Governor;
-use crate::scenario::Scenario;
-use crate::units::{kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rpm_to_rad_s};
+use crate::rudder::Autopilot;
+use crate::scenario::{HullModelKind, Scenario};
+use crate::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg, rpm_to_rad_s};
 use plant::{
-    bus_voltage, field_current, omega_rm, omega_t, rk4_step, Energy, Held, Outputs, Plant, State,
-    ENERGY0, NX, N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, X_POS,
+    bus_voltage, field_current, omega_rm, omega_t, rk4_step, Energy, Held, Outputs, Plant, State, ENERGY0, HEADING, NX,
+    N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE, Y_POS,
 };
 use std::f64::consts::PI;
 use std::fmt;
@@ -25,26 +26,15 @@ pub enum SimError {
     /// The scenario cannot be built into a model.
     Setup(String),
     /// The run left the physical range: when, where and what.
-    Diverged {
-        time_s: f64,
-        subsystem: String,
-        message: String,
-    },
+    Diverged { time_s: f64, subsystem: String, message: String },
 }
 
 impl fmt::Display for SimError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             SimError::Setup(m) => write!(f, "cannot set up the run: {m}"),
-            SimError::Diverged {
-                time_s,
-                subsystem,
-                message,
-            } => {
-                write!(
-                    f,
-                    "run diverged at t = {time_s:.3} s in {subsystem}: {message}"
-                )
+            SimError::Diverged { time_s, subsystem, message } => {
+                write!(f, "run diverged at t = {time_s:.3} s in {subsystem}: {message}")
             }
         }
     }
@@ -55,7 +45,8 @@ impl std::error::Error for SimError {}
 /// Names of the recorded signals, in trace column order. Units are in the names; `_pu` signals
 /// are per unit of: turbine speed, the governor set point (3600 rpm); bus voltage, the field
 /// controller's set point (5618 V); motor voltage, rated phase voltage; motor power, rated
-/// power (38 MW). Per-shaft signals average the two shafts; `_1`, `_2` are the shafts.
+/// power (38 MW). Per-shaft signals average the two shafts; `_1`, `_2` are the shafts. Ship speed
+/// is the speed through the water, sqrt(u^2 + v^2).
 pub const SIGNALS: &[&str] = &[
     "t_s",
     "ship_speed_kn",
@@ -81,6 +72,11 @@ pub const SIGNALS: &[&str] = &[
     "x_m",
     "y_m",
     "heading_deg",
+    "heading_ref_deg",
+    "rudder_deg",
+    "drift_angle_deg",
+    "yaw_rate_deg_s",
+    "brake_power_w",
     "p_turbine_w",
     "p_generator_w",
     "p_inverter_w",
@@ -97,10 +93,7 @@ pub struct Trace {
 impl Trace {
     /// The column of a signal, by name.
     pub fn column(&self, name: &str) -> Option<&[f64]> {
-        SIGNALS
-            .iter()
-            .position(|s| *s == name)
-            .map(|i| self.columns[i].as_slice())
+        SIGNALS.iter().position(|s| *s == name).map(|i| self.columns[i].as_slice())
     }
 
     /// Number of recorded rows.
@@ -156,9 +149,31 @@ struct Controllers {
     max_shaft_speed: f64,
     /// Shaft speed reference now [rad/s].
     shaft_ref: f64,
-    /// Calm-water map: shaft speed per unit ship speed [rad/s per m/s].
-    map_slope: f64,
+    /// Calm-water map: equilibrium shaft speed [rad/s] at ship speeds 0, MAP_STEP, 2 MAP_STEP, ...
+    map: Vec<f64>,
+    /// Whether the slip may go negative (AC braking).
+    allow_braking: bool,
+    /// Last peak braking slip (warm start) [rad/s].
+    peak_brake_slip: [f64; N_SHAFTS],
+    /// Heading: reference [rad] moving to the target at `heading_rate` [rad/s] (0: a step).
+    psi_ref: f64,
+    psi_target: f64,
+    heading_rate: f64,
+    autopilot: Autopilot,
     held: Held,
+}
+
+/// Speed step of the calm-water map [m/s].
+const MAP_STEP: f64 = 0.25;
+
+impl Controllers {
+    /// The calm-water map at ship speed `u` [m/s] (linear interpolation).
+    fn map_speed(&self, u: f64) -> f64 {
+        let x = (u / MAP_STEP).clamp(0.0, (self.map.len() - 1) as f64);
+        let i = (x.floor() as usize).min(self.map.len() - 2);
+        let f = x - i as f64;
+        self.map[i] * (1.0 - f) + self.map[i + 1] * f
+    }
 }
 
 /// A run in progress.
@@ -180,14 +195,14 @@ pub struct Simulation {
     stored0: f64,
     trace: Trace,
     warnings: Vec<String>,
+    /// Largest heading reference error seen with the rudder hard over [rad].
+    max_heading_lag: f64,
 }
 
 impl Simulation {
     /// Builds the model and its initial state from a validated scenario.
     pub fn new(scenario: &Scenario) -> Result<Simulation, SimError> {
-        scenario
-            .validate()
-            .map_err(|e| SimError::Setup(e.to_string()))?;
+        scenario.validate().map_err(|e| SimError::Setup(e.to_string()))?;
         let plant = Plant::new(scenario).map_err(SimError::Setup)?;
         let sim_cfg = &scenario.sim;
         let dt = sim_cfg.dt_s;
@@ -195,39 +210,28 @@ impl Simulation {
         let ctl_every = (scenario.controllers.sample_period_s / dt).round().max(1.0) as u64;
         let rec_every = (sim_cfg.record_interval_s / dt).round().max(1.0) as u64;
         let rows = (total_steps / rec_every + 2) as usize;
-        let trace = Trace {
-            columns: (0..SIGNALS.len())
-                .map(|_| Vec::with_capacity(rows))
-                .collect(),
-        };
+        let trace = Trace { columns: (0..SIGNALS.len()).map(|_| Vec::with_capacity(rows)).collect() };
 
         let sp = &scenario.controllers.speed;
         let rpm_per_kn = rpm_to_rad_s(1.0) / kn_to_m_s(1.0);
-        let ow = &plant.open_water;
-        let d = plant.prop_diameter;
-        // Calm-water map: at equilibrium J is the same at every speed (R and T both go as u^2).
-        let j_calm = ow.equilibrium_advance_ratio(
-            plant.surge.c_r,
-            N_SHAFTS as f64,
-            d,
-            plant.rho,
-            plant.surge.wake,
-        );
-        let map_slope = (1.0 - plant.surge.wake) * 2.0 * PI / (j_calm * d);
+        // Calm-water map: the shaft speed at which the propellers (beta_T = 1) carry the hull's
+        // straight-line resistance, every 0.25 m/s up to 40 knots.
+        let mut calm = plant.clone();
+        calm.beta_t = 1.0;
+        calm.beta_q = 1.0;
+        let n_map = (kn_to_m_s(40.0) / MAP_STEP).ceil() as usize + 1;
+        let map: Vec<f64> = (0..n_map).map(|i| calm.equilibrium_shaft_speed(i as f64 * MAP_STEP)).collect();
 
         let mut sim = Simulation {
             scenario: scenario.clone(),
             x: [0.0; NX],
             ctl: Controllers {
                 governor: [Governor::new(&scenario.controllers.governor, 0.0); N_SETS],
-                field: [FieldController::new(
-                    &scenario.controllers.field,
-                    0.0,
-                    plant.generator.v_f_max,
-                ); N_SETS],
+                field: [FieldController::new(&scenario.controllers.field, 0.0, plant.generator.v_f_max); N_SETS],
                 slip: [SlipController {
                     kp: scenario.controllers.slip.kp,
                     ki: scenario.controllers.slip.ki,
+                    offset: scenario.controllers.slip.zero_slip_offset_rad_s,
                     integral: 0.0,
                 }; N_SHAFTS],
                 peak_slip: [0.0; N_SHAFTS],
@@ -239,7 +243,13 @@ impl Simulation {
                 ramp: rpm_to_rad_s(sp.shaft_ramp_rpm_per_s),
                 max_shaft_speed: rpm_to_rad_s(sp.max_shaft_rpm),
                 shaft_ref: 0.0,
-                map_slope,
+                map,
+                allow_braking: scenario.controllers.slip.allow_braking,
+                peak_brake_slip: [0.0; N_SHAFTS],
+                psi_ref: 0.0,
+                psi_target: 0.0,
+                heading_rate: 0.0,
+                autopilot: Autopilot::new(&scenario.controllers.autopilot, &scenario.rudder),
                 held: Held::default(),
             },
             plant,
@@ -256,6 +266,7 @@ impl Simulation {
             stored0: 0.0,
             trace,
             warnings: Vec::new(),
+            max_heading_lag: 0.0,
         };
         sim.initialise()?;
         sim.stored0 = sim.plant.stored_energy(&sim.x);
@@ -274,14 +285,7 @@ impl Simulation {
         let u0 = kn_to_m_s(sc.initial.speed_kn);
         // Shaft speed at which the propellers balance the resistance at u0 (with the run's beta_T).
         let (w_rm0, p_inv_shaft, slip0) = if u0 > 0.0 {
-            let j = p.open_water.equilibrium_advance_ratio(
-                p.surge.c_r / p.beta_t.max(1e-6),
-                N_SHAFTS as f64,
-                p.prop_diameter,
-                p.rho,
-                p.surge.wake,
-            );
-            let w = p.surge.advance_speed(u0) * 2.0 * PI / (j * p.prop_diameter);
+            let w = p.equilibrium_shaft_speed(u0);
             let q_p = p.propeller_load(w, u0).torque_nm;
             let v_max = p.dc_link.max_phase_voltage(v_ref);
             let peak = p.motor.peak_torque_slip(w, v_max, 0.0);
@@ -303,11 +307,10 @@ impl Simulation {
         // Each set carries half its shaft's inverter power at the bus set point.
         let i_dc = p_inv_shaft / (SETS_PER_SHAFT as f64 * v_ref);
         let w_e = p.generator.electrical_speed(w_t);
-        let r_total =
-            p.dc_link.r_p + 3.0 / PI * w_e * p.dc_link.l_commutation + p.dc_link.r_stator_dc;
+        let r_total = p.dc_link.r_p + 3.0 / PI * w_e * p.dc_link.l_commutation + p.dc_link.r_stator_dc;
         let e_a = (v_ref + r_total * i_dc) / crate::dc_link::BRIDGE_VOLTAGE_RATIO;
         let i_f = p.generator.field_current_for(e_a, w_t);
-        let flow = p.dc_link.rectify(e_a, w_e, v_ref);
+        let flow = p.dc_link.rectify(e_a, w_e, v_ref, false);
         let q_load = p.generator.friction_torque(w_t) + flow.p_generator / w_t;
         let throttle = p.turbine.throttle_for(q_load, w_t);
         if !(0.0..=1.0).contains(&throttle) {
@@ -321,8 +324,7 @@ impl Simulation {
             self.x[field_current(k)] = i_f;
             self.ctl.governor[k] = Governor::new(&sc.controllers.governor, throttle);
             let v_f = p.generator.r_f * i_f;
-            self.ctl.field[k] =
-                FieldController::new(&sc.controllers.field, v_f, p.generator.v_f_max);
+            self.ctl.field[k] = FieldController::new(&sc.controllers.field, v_f, p.generator.v_f_max);
             self.ctl.held.throttle[k] = throttle;
             self.ctl.held.field_voltage[k] = v_f;
         }
@@ -335,47 +337,71 @@ impl Simulation {
         }
         self.x[SURGE] = u0;
         self.ctl.shaft_ref = w_rm0;
-        self.ctl.speed_integral = w_rm0 - self.ctl.map_slope * u0;
+        self.ctl.speed_integral = w_rm0 - self.ctl.map_speed(u0);
         Ok(())
     }
 
     /// Takes every command whose time has come.
     fn apply_commands(&mut self) {
         let cmds = &self.scenario.commands;
-        while self.next_command < cmds.len()
-            && cmds[self.next_command].t_s <= self.t + 0.5 * self.dt
-        {
-            if let Some(kn) = cmds[self.next_command].speed_kn {
+        while self.next_command < cmds.len() && cmds[self.next_command].t_s <= self.t + 0.5 * self.dt {
+            let cmd = &cmds[self.next_command];
+            if let Some(kn) = cmd.speed_kn {
                 self.speed_cmd = kn_to_m_s(kn);
+                let h = &self.scenario.hull;
+                if h.model == HullModelKind::Maneuvering && kn > 0.0 && (kn < h.handover_low_kn || kn > 32.0) {
+                    self.warnings.push(format!(
+                        "commands.{}.speed_kn = {kn}: the maneuvering model is trusted from {} to about 32 knots \
+                         (fitted at 11 and {} knots); below {} knots surge follows the surge model",
+                        self.next_command, h.handover_low_kn, h.linearization_speed_kn, h.handover_low_kn
+                    ));
+                }
+            }
+            if let Some(deg) = cmd.heading_deg {
+                self.ctl.psi_target = deg_to_rad(deg);
+                let rate = cmd.heading_rate_deg_s.unwrap_or(self.scenario.controllers.autopilot.turn_rate_deg_s);
+                self.ctl.heading_rate = deg_to_rad(rate);
+                let limit = rad_to_deg(self.max_turn_rate());
+                if rate > limit {
+                    self.warnings.push(format!(
+                        "commands.{}: a turn at {rate} deg/s is faster than the autopilot holds for this hull at \
+                         {:.1} knots ({limit:.2} deg/s, controllers.autopilot.max_turn_rate_nondim); it turns at that",
+                        self.next_command,
+                        m_s_to_kn(self.x[SURGE].hypot(self.x[SWAY]))
+                    ));
+                }
             }
             self.next_command += 1;
         }
     }
 
+    /// Fastest turn the autopilot orders at the present speed [rad/s].
+    fn max_turn_rate(&self) -> f64 {
+        let l = self.scenario.ship.length_m;
+        self.scenario.controllers.autopilot.max_turn_rate_nondim * self.x[SURGE].hypot(self.x[SWAY]).max(1.0) / l
+    }
+
     /// One sample of every discrete controller.
     fn control(&mut self) {
         let ts = self.ts;
+        let max_turn_rate = self.max_turn_rate();
         let x = &self.x;
         let p = &self.plant;
         let c = &mut self.ctl;
         // Ship speed: calm-water map plus PI trim, then the ramp-limited shaft reference.
-        let map = c.map_slope * self.speed_cmd;
-        let err_u = self.speed_cmd - x[SURGE];
+        let map = c.map_speed(self.speed_cmd);
+        let err_u = self.speed_cmd - x[SURGE].hypot(x[SWAY]);
         let trim_max = c.trim_limit * map;
         let unsat = c.speed_kp * err_u + c.speed_integral;
         let trim = unsat.clamp(-trim_max, trim_max);
         let target = (map + trim).clamp(0.0, c.max_shaft_speed);
-        let next_ref = if c.ramp > 0.0 {
-            c.shaft_ref + (target - c.shaft_ref).clamp(-c.ramp * ts, c.ramp * ts)
-        } else {
-            target
-        };
+        let next_ref =
+            if c.ramp > 0.0 { c.shaft_ref + (target - c.shaft_ref).clamp(-c.ramp * ts, c.ramp * ts) } else { target };
         // Anti-windup: the trim integrates only while neither it nor the ramp is limiting, so a
         // long acceleration does not leave it wound up (which would overshoot the ordered speed).
         let limited = unsat.abs() > trim_max || (next_ref - target).abs() > 1e-12;
         if !limited {
-            c.speed_integral =
-                (c.speed_integral + c.speed_ki * err_u * ts).clamp(-trim_max, trim_max);
+            c.speed_integral = (c.speed_integral + c.speed_ki * err_u * ts).clamp(-trim_max, trim_max);
         }
         c.shaft_ref = next_ref;
         for k in 0..N_SETS {
@@ -389,49 +415,57 @@ impl Simulation {
             let v_max = p.dc_link.max_phase_voltage(x[bus_voltage(s)]);
             let peak = p.motor.peak_torque_slip(w_rm, v_max, c.peak_slip[s]);
             c.peak_slip[s] = peak;
-            let limit = p
-                .motor
-                .power_limited_slip(w_rm, v_max, peak, p.motor.p_rated);
+            let limit = p.motor.power_limited_slip(w_rm, v_max, peak, p.motor.p_rated);
             c.slip_limit[s] = limit;
+            let lower = if c.allow_braking {
+                let peak_b = p.motor.peak_braking_slip(w_rm, v_max, c.peak_brake_slip[s]);
+                c.peak_brake_slip[s] = peak_b;
+                p.motor.power_limited_braking_slip(w_rm, v_max, peak_b, p.motor.p_rated)
+            } else {
+                0.0
+            };
             let err = p.motor.pole_pairs * (c.shaft_ref - w_rm);
-            c.held.slip[s] = c.slip[s].update(err, limit, ts);
+            c.held.slip[s] = c.slip[s].update(err, lower, limit, ts);
+        }
+        // Heading: the reference ramps to the target; the autopilot steers the rudder.
+        if matches!(p.hull, plant::Hull::Maneuvering { .. }) {
+            let gap = c.psi_target - c.psi_ref;
+            let rate = c.heading_rate.min(max_turn_rate);
+            let r_ref = if rate > 0.0 && gap.abs() > rate * ts {
+                c.psi_ref += gap.signum() * rate * ts;
+                gap.signum() * rate
+            } else {
+                c.psi_ref = c.psi_target;
+                0.0
+            };
+            let err = c.psi_ref - x[HEADING];
+            c.held.rudder = c.autopilot.update(err, r_ref - x[YAW_RATE], ts);
+            if c.held.rudder.abs() >= c.autopilot.max_angle - 1e-9 {
+                self.max_heading_lag = self.max_heading_lag.max(err.abs());
+            }
         }
     }
 
     fn refresh_outputs(&mut self) {
         let mut dx = [0.0; NX];
-        self.plant
-            .evaluate(&self.x, &self.ctl.held, &mut self.out, &mut dx);
+        self.plant.evaluate(&self.x, &self.ctl.held, &mut self.out, &mut dx);
     }
 
     /// Checks the state after a step; names the subsystem that left its range.
     fn check(&self) -> Result<(), SimError> {
         let p = &self.plant;
-        let bad = |sub: String, msg: String| {
-            Err(SimError::Diverged {
-                time_s: self.t,
-                subsystem: sub,
-                message: msg,
-            })
-        };
+        let bad = |sub: String, msg: String| Err(SimError::Diverged { time_s: self.t, subsystem: sub, message: msg });
         for k in 0..N_SETS {
             let w = self.x[omega_t(k)];
-            if !w.is_finite() || w < -0.1 * p.turbine.rated_speed || w > 3.0 * p.turbine.rated_speed
-            {
+            if !w.is_finite() || w < -0.1 * p.turbine.rated_speed || w > 3.0 * p.turbine.rated_speed {
                 return bad(
                     format!("gas turbine {} (shaft {})", k + 1, k / SETS_PER_SHAFT + 1),
-                    format!(
-                        "speed {:.0} rpm outside -10 % to 300 % of rated",
-                        rad_s_to_rpm(w)
-                    ),
+                    format!("speed {:.0} rpm outside -10 % to 300 % of rated", rad_s_to_rpm(w)),
                 );
             }
             let i_f = self.x[field_current(k)];
             if !i_f.is_finite() || i_f.abs() > 1e5 {
-                return bad(
-                    format!("generator {} field", k + 1),
-                    format!("field current {i_f:.3e} A"),
-                );
+                return bad(format!("generator {} field", k + 1), format!("field current {i_f:.3e} A"));
             }
         }
         let v_ref = self.scenario.controllers.field.bus_voltage_ref_v;
@@ -445,18 +479,19 @@ impl Simulation {
             }
             let w = self.x[omega_rm(s)];
             if !w.is_finite() || w.abs() > 3.0 * self.ctl.max_shaft_speed.max(1.0) {
-                return bad(
-                    format!("propeller shaft {}", s + 1),
-                    format!("speed {:.0} rpm", rad_s_to_rpm(w)),
-                );
+                return bad(format!("propeller shaft {}", s + 1), format!("speed {:.0} rpm", rad_s_to_rpm(w)));
             }
         }
         let u = self.x[SURGE];
         if !u.is_finite() || u.abs() > 40.0 {
-            return bad(
-                "ship surge".into(),
-                format!("speed {:.1} knots", m_s_to_kn(u)),
-            );
+            return bad("ship surge".into(), format!("speed {:.1} knots", m_s_to_kn(u)));
+        }
+        let (v, r) = (self.x[SWAY], self.x[YAW_RATE]);
+        if !v.is_finite() || v.abs() > 20.0 || !r.is_finite() || r.abs() > 0.5 {
+            return bad("hull sway-yaw".into(), format!("sway {v:.2} m/s, yaw rate {:.2} deg/s", rad_to_deg(r)));
+        }
+        if !self.x[X_POS].is_finite() || !self.x[Y_POS].is_finite() || !self.x[HEADING].is_finite() {
+            return bad("ship position".into(), "non-finite position or heading".into());
         }
         if self.x[ENERGY0..].iter().any(|v| !v.is_finite()) {
             return bad("energy accounts".into(), "non-finite energy".into());
@@ -473,18 +508,14 @@ impl Simulation {
         let mean_set = |f: &dyn Fn(usize) -> f64| (0..N_SETS).map(f).sum::<f64>() / N_SETS as f64;
         let v_ref = self.scenario.controllers.field.bus_voltage_ref_v;
         let rpm = |s: usize| rad_s_to_rpm(x[omega_rm(s)]);
-        let p_turbine: f64 = (0..N_SETS)
-            .map(|k| o.turbine_torque[k] * x[omega_t(k)])
-            .sum();
+        let p_turbine: f64 = (0..N_SETS).map(|k| o.turbine_torque[k] * x[omega_t(k)]).sum();
         let p_generator: f64 = o.rectifier.iter().map(|r| r.p_generator).sum();
         let p_inverter: f64 = o.motor.iter().map(|m| m.p_in).sum();
-        let p_motor: f64 = (0..N_SHAFTS)
-            .map(|s| o.motor[s].torque * x[omega_rm(s)])
-            .sum();
+        let p_motor: f64 = (0..N_SHAFTS).map(|s| o.motor[s].torque * x[omega_rm(s)]).sum();
         let j = mean_shaft(&|s| o.propeller[s].advance_ratio);
         let row = [
             self.t,
-            m_s_to_kn(x[SURGE]),
+            m_s_to_kn(x[SURGE].hypot(x[SWAY])),
             m_s_to_kn(self.speed_cmd),
             mean_shaft(&rpm),
             rpm(0),
@@ -505,8 +536,13 @@ impl Simulation {
             p.beta_t,
             p.beta_q,
             x[X_POS],
-            0.0,
-            0.0,
+            x[Y_POS],
+            rad_to_deg(x[HEADING]),
+            rad_to_deg(self.ctl.psi_ref),
+            rad_to_deg(self.ctl.held.rudder),
+            rad_to_deg(libm::atan2(x[SWAY], x[SURGE].abs().max(1e-9))),
+            rad_to_deg(x[YAW_RATE]),
+            o.brake_power.iter().sum::<f64>(),
             p_turbine,
             p_generator,
             p_inverter,
@@ -545,13 +581,7 @@ impl Simulation {
             if self.step % self.ctl_every == 0 {
                 self.control();
             }
-            rk4_step(
-                &self.plant,
-                &mut self.x,
-                &self.ctl.held,
-                self.dt,
-                &mut self.out,
-            );
+            rk4_step(&self.plant, &mut self.x, &self.ctl.held, self.dt, &mut self.out);
             self.step += 1;
             self.t = self.step as f64 * self.dt;
             self.check()?;
@@ -562,6 +592,11 @@ impl Simulation {
             }
         }
         Ok(())
+    }
+
+    /// The trace recorded so far (also after a failed step: what led up to the failure).
+    pub fn trace(&self) -> &Trace {
+        &self.trace
     }
 
     /// The state vector now (for tests and analysis).
@@ -579,6 +614,13 @@ impl Simulation {
         self.refresh_outputs();
         let energy: [f64; N_ENERGY] = self.x[ENERGY0..].try_into().unwrap_or([0.0; N_ENERGY]);
         let stored_change = self.plant.stored_energy(&self.x) - self.stored0;
+        if self.max_heading_lag > deg_to_rad(15.0) {
+            self.warnings.push(format!(
+                "the heading reference ran up to {:.0} degrees ahead of the ship with the rudder hard over: \
+                 the ordered turn is faster than full rudder can give at this speed",
+                rad_to_deg(self.max_heading_lag)
+            ));
+        }
         let summary = Summary::build(
             &self.scenario,
             &self.trace,
@@ -588,10 +630,7 @@ impl Simulation {
             stored_change,
             std::mem::take(&mut self.warnings),
         );
-        RunResult {
-            trace: self.trace,
-            summary,
-        }
+        RunResult { trace: self.trace, summary }
     }
 }
 

@@ -7,11 +7,14 @@
 
 use crate::dc_link::{DcLink, RectifierFlow};
 use crate::generator::SyncGenerator;
+use crate::maneuvering::{handover_weight, Abkowitz};
 use crate::motor::{InductionMotor, MotorPoint};
 use crate::prime_mover::GasTurbine;
-use crate::propeller::{OpenWater, PropellerLoad};
-use crate::scenario::Scenario;
+use crate::propeller::{FourQuadrant, OpenWater, PropellerLoad};
+use crate::rudder::{rudder_force, stern_inflow, RudderParams};
+use crate::scenario::{HullModelKind, PropellerModelKind, RectifierKind, Scenario};
 use crate::surge::Surge;
+use crate::units::kn_to_m_s;
 use std::f64::consts::PI;
 
 /// Shafts (independent plants).
@@ -39,12 +42,20 @@ pub const fn omega_rm(s: usize) -> usize {
 }
 /// Ship surge speed u [m/s].
 pub const SURGE: usize = 2 * N_SETS + 2 * N_SHAFTS;
-/// Distance run x [m].
-pub const X_POS: usize = SURGE + 1;
+/// Sway speed v [m/s].
+pub const SWAY: usize = SURGE + 1;
+/// Yaw rate r [rad/s].
+pub const YAW_RATE: usize = SURGE + 2;
+/// North position x [m].
+pub const X_POS: usize = SURGE + 3;
+/// East position y [m].
+pub const Y_POS: usize = SURGE + 4;
+/// Heading psi [rad], not wrapped.
+pub const HEADING: usize = SURGE + 5;
 /// First energy accumulator [J]; see [`Energy`].
-pub const ENERGY0: usize = X_POS + 1;
+pub const ENERGY0: usize = HEADING + 1;
 /// Number of energy accumulators.
-pub const N_ENERGY: usize = 13;
+pub const N_ENERGY: usize = 14;
 /// Size of the state vector.
 pub const NX: usize = ENERGY0 + N_ENERGY;
 
@@ -79,8 +90,11 @@ pub enum Energy {
     Propeller,
     /// Thrust power, sum of T_p u.
     Thrust,
-    /// Work against resistance, R_sp u (Table 5.6 "ship").
+    /// Work against the hull's resistance and the rudder's drag in surge (R_sp u in the surge model,
+    /// Table 5.6 "ship").
     Ship,
+    /// Energy dissipated in the brake resistors.
+    Brake,
 }
 
 /// Held controller outputs (piecewise constant between controller samples).
@@ -92,6 +106,8 @@ pub struct Held {
     pub field_voltage: [f64; N_SETS],
     /// Slip speed of each motor [rad/s electrical].
     pub slip: [f64; N_SHAFTS],
+    /// Rudder angle [rad].
+    pub rudder: f64,
 }
 
 /// Everything algebraic at one instant.
@@ -110,8 +126,21 @@ pub struct Outputs {
     pub propeller: [PropellerLoad; N_SHAFTS],
     /// Total thrust [N].
     pub thrust: f64,
-    /// Resistance R_sp [N].
+    /// Resistance in surge (hull and rudder drag) [N].
     pub resistance: f64,
+    /// Brake resistor power of each bus [W].
+    pub brake_power: [f64; N_SHAFTS],
+    /// Advance speed V_a at the propellers, before the wake fraction [m/s] (eq. 2.26).
+    pub inflow_speed: f64,
+}
+
+/// The hull model in use.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Hull {
+    /// Eqs. 2.15-2.16.
+    Surge,
+    /// Eqs. 2.17-2.30, handing over to the surge model in surge between `lo` and `hi` [m/s].
+    Maneuvering { abkowitz: Box<Abkowitz>, rudder: RudderParams, lo: f64, hi: f64 },
 }
 
 /// Model constants of the whole drive train.
@@ -122,7 +151,18 @@ pub struct Plant {
     pub dc_link: DcLink,
     pub motor: InductionMotor,
     pub open_water: OpenWater,
+    /// Present when the propellers follow the four-quadrant series.
+    pub four_quadrant: Option<FourQuadrant>,
     pub surge: Surge,
+    pub hull: Hull,
+    /// Surge mass used by the equations of motion [kg].
+    pub surge_mass: f64,
+    /// Reversible rectifiers (power may flow back into the generators).
+    pub reversible: bool,
+    /// Brake resistor [ohm] (0: none) and the bus voltages where its chopper starts and saturates [V].
+    pub brake_resistor: f64,
+    pub brake_on_v: f64,
+    pub brake_full_v: f64,
     pub prop_diameter: f64,
     pub rho: f64,
     pub rotative_efficiency: f64,
@@ -142,13 +182,44 @@ impl Plant {
             r_stator_dc: 18.0 / (PI * PI) * sc.plant.generator.stator_resistance_ohm,
             inverter_voltage_ratio: sc.plant.dc_link.inverter_voltage_ratio,
         };
+        let surge = Surge::new(&sc.ship);
+        let hull = match sc.hull.model {
+            HullModelKind::Surge => Hull::Surge,
+            HullModelKind::Maneuvering => Hull::Maneuvering {
+                abkowitz: Box::new(Abkowitz::new(
+                    &sc.hull.abkowitz,
+                    sc.hull.symmetric_hull,
+                    kn_to_m_s(sc.hull.linearization_speed_kn),
+                    sc.ship.length_m,
+                    sc.ship.water_density_kg_m3,
+                )),
+                rudder: sc.rudder.clone(),
+                lo: kn_to_m_s(sc.hull.handover_low_kn),
+                hi: kn_to_m_s(sc.hull.handover_high_kn),
+            },
+        };
+        let surge_mass = match &hull {
+            Hull::Surge => surge.mass_total,
+            Hull::Maneuvering { abkowitz, .. } => abkowitz.m11,
+        };
+        let v_ref = sc.controllers.field.bus_voltage_ref_v;
         Ok(Plant {
             turbine,
             generator,
             dc_link,
             motor: InductionMotor::new(&sc.plant.motor),
             open_water: OpenWater::from_params(&sc.propeller)?,
-            surge: Surge::new(&sc.ship),
+            four_quadrant: match sc.propeller.model {
+                PropellerModelKind::BSeries => None,
+                PropellerModelKind::FourQuadrant => Some(FourQuadrant::b4_70()?),
+            },
+            surge,
+            hull,
+            surge_mass,
+            reversible: sc.plant.dc_link.rectifier == RectifierKind::Reversible,
+            brake_resistor: sc.plant.dc_link.brake_resistor_ohm,
+            brake_on_v: sc.plant.dc_link.brake_on_pu * v_ref,
+            brake_full_v: (sc.plant.dc_link.brake_on_pu + 0.05) * v_ref,
             prop_diameter: sc.propeller.diameter_m,
             rho: sc.ship.water_density_kg_m3,
             rotative_efficiency: sc.propeller.rotative_efficiency,
@@ -158,23 +229,79 @@ impl Plant {
         })
     }
 
-    /// Propeller thrust and torque at shaft speed `omega` [rad/s] and ship speed `u` [m/s].
-    pub fn propeller_load(&self, omega: f64, u: f64) -> PropellerLoad {
-        self.open_water.load(
-            omega / (2.0 * PI),
-            self.surge.advance_speed(u),
-            self.prop_diameter,
-            self.rho,
-            self.rotative_efficiency,
-            self.beta_t,
-            self.beta_q,
-        )
+    /// Propeller thrust and torque at shaft speed `omega` [rad/s] with inflow speed `va` [m/s] at the
+    /// stern (eq. 2.12 with V_a for u: the advance speed is va (1 - w)).
+    pub fn propeller_load(&self, omega: f64, va: f64) -> PropellerLoad {
+        let (n, va) = (omega / (2.0 * PI), self.surge.advance_speed(va));
+        match &self.four_quadrant {
+            None => self.open_water.load(
+                n,
+                va,
+                self.prop_diameter,
+                self.rho,
+                self.rotative_efficiency,
+                self.beta_t,
+                self.beta_q,
+            ),
+            Some(fq) => {
+                fq.load(n, va, self.prop_diameter, self.rho, self.rotative_efficiency, self.beta_t, self.beta_q)
+            }
+        }
+    }
+
+    /// Straight-line resistance of the hull at ship speed `u` [N] (what the calm-water map balances).
+    pub fn straight_resistance(&self, u: f64) -> f64 {
+        match &self.hull {
+            Hull::Surge => self.surge.resistance(u),
+            Hull::Maneuvering { abkowitz, lo, hi, .. } => {
+                let w = handover_weight(u, *lo, *hi);
+                (1.0 - w) * self.surge.resistance(u) - w * abkowitz.forces(u, 0.0, 0.0).x
+            }
+        }
+    }
+
+    /// Shaft speed [rad/s] at which the propellers carry the straight-line resistance at `u` [m/s]
+    /// (bisection: thrust rises monotonically with shaft speed at fixed ship speed).
+    pub fn equilibrium_shaft_speed(&self, u: f64) -> f64 {
+        let need = self.straight_resistance(u);
+        if need <= 0.0 {
+            return 0.0;
+        }
+        let f = |w: f64| N_SHAFTS as f64 * self.propeller_load(w, u).thrust_n - need;
+        let (mut a, mut b) = (0.0, 10.0);
+        while f(b) < 0.0 && b < 1.0e3 {
+            b *= 2.0;
+        }
+        for _ in 0..100 {
+            let m = 0.5 * (a + b);
+            if f(m) > 0.0 {
+                b = m;
+            } else {
+                a = m;
+            }
+        }
+        0.5 * (a + b)
+    }
+
+    /// Brake resistor power at bus voltage `v_c` [W]: the chopper's duty rises linearly from 0 at
+    /// `brake_on_v` to 1 at `brake_full_v`.
+    pub fn brake_power(&self, v_c: f64) -> f64 {
+        if self.brake_resistor <= 0.0 || v_c <= self.brake_on_v {
+            return 0.0;
+        }
+        let duty = ((v_c - self.brake_on_v) / (self.brake_full_v - self.brake_on_v)).min(1.0);
+        duty * v_c * v_c / self.brake_resistor
     }
 
     /// The algebraic outputs and the state derivative `dx` at state `x` with held controls `h`.
     pub fn evaluate(&self, x: &State, h: &Held, out: &mut Outputs, dx: &mut State) {
         let mut e = [0.0; N_ENERGY];
-        let u = x[SURGE];
+        let (u, v, r) = (x[SURGE], x[SWAY], x[YAW_RATE]);
+        // Inflow at the stern (eqs. 2.26-2.27); the surge model goes straight.
+        let (va, alpha) = match &self.hull {
+            Hull::Surge => (u, 0.0),
+            Hull::Maneuvering { rudder, .. } => stern_inflow(u, v, r, rudder.x_p_m),
+        };
         let mut thrust = 0.0;
         for s in 0..N_SHAFTS {
             let v_c = x[bus_voltage(s)];
@@ -185,15 +312,9 @@ impl Plant {
                 let q_t = self.turbine.torque(h.throttle[k], w_t); // eq. 2.1
                 let q_fric = self.generator.friction_torque(w_t);
                 let e_a = self.generator.emf(w_t, i_f);
-                let flow = self
-                    .dc_link
-                    .rectify(e_a, self.generator.electrical_speed(w_t), v_c); // eqs. 2.8-2.9
-                                                                              // Eq. 2.3 with the shaft (not electrical) speed, so that power is conserved for any pole count.
-                let q_g = if w_t.abs() > 1e-6 {
-                    flow.p_generator / w_t
-                } else {
-                    0.0
-                };
+                let flow = self.dc_link.rectify(e_a, self.generator.electrical_speed(w_t), v_c, self.reversible); // eqs. 2.8-2.9
+                                                                                                                  // Eq. 2.3 with the shaft (not electrical) speed, so that power is conserved for any pole count.
+                let q_g = if w_t.abs() > 1e-6 { flow.p_generator / w_t } else { 0.0 };
                 dx[omega_t(k)] = (q_t - q_fric - q_g) / self.turbine.inertia; // eq. 2.4 in rad/s
                 dx[field_current(k)] = self.generator.field_current_rate(h.field_voltage[k], i_f); // eq. 2.2
                 i_rect += flow.i_dc;
@@ -213,8 +334,9 @@ impl Plant {
             let omega_e = self.motor.pole_pairs * w_rm + h.slip[s];
             let v_m = self.motor.phase_voltage(omega_e, v_max);
             let mp = self.motor.operate(v_m, omega_e, h.slip[s], w_rm);
-            let pl = self.propeller_load(w_rm, u);
-            dx[bus_voltage(s)] = self.dc_link.bus_voltage_rate(i_rect, mp.p_in, v_c); // eqs. 2.7, 2.10
+            let pl = self.propeller_load(w_rm, va);
+            let p_brake = self.brake_power(v_c);
+            dx[bus_voltage(s)] = self.dc_link.bus_voltage_rate(i_rect, mp.p_in + p_brake, v_c); // eqs. 2.7, 2.10
             dx[omega_rm(s)] = (mp.torque - pl.torque_nm) / self.shaft_inertia; // eq. 2.6 in rad/s
             thrust += pl.thrust_n;
             e[Energy::Inverter as usize] += mp.p_in;
@@ -224,18 +346,42 @@ impl Plant {
             e[Energy::Motor as usize] += mp.torque * w_rm;
             e[Energy::Propeller as usize] += pl.torque_nm * w_rm;
             e[Energy::Thrust as usize] += pl.thrust_n * u;
+            e[Energy::Brake as usize] += p_brake;
+            out.brake_power[s] = p_brake;
             out.motor_v_max[s] = v_max;
             out.motor_voltage[s] = v_m;
             out.motor[s] = mp;
             out.propeller[s] = pl;
         }
-        let resistance = self.surge.resistance(u);
-        dx[SURGE] = self.surge.acceleration(thrust, u); // eq. 2.16
-        dx[X_POS] = u;
+        let resistance = match &self.hull {
+            Hull::Surge => {
+                dx[SURGE] = self.surge.acceleration(thrust, u); // eq. 2.16
+                dx[SWAY] = 0.0;
+                dx[YAW_RATE] = 0.0;
+                self.surge.resistance(u)
+            }
+            Hull::Maneuvering { abkowitz, rudder, lo, hi } => {
+                let f = abkowitz.forces(u, v, r); // eqs. 2.22-2.24, hull terms
+                let (fx_r, fy_r) = rudder_force(rudder, self.rho, va, alpha, h.rudder); // eqs. 2.28-2.30
+                                                                                        // Surge hands over smoothly from the surge model (low speed) to Abkowitz (near u0).
+                let w = handover_weight(u, *lo, *hi);
+                let x_hull = (1.0 - w) * -self.surge.resistance(u) + w * f.x;
+                dx[SURGE] = (thrust + x_hull + fx_r) / self.surge_mass; // eq. 2.20, first row
+                let (vd, rd) = abkowitz.sway_yaw_acceleration(f.y + fy_r, f.n - rudder.x_p_m * fy_r);
+                dx[SWAY] = vd;
+                dx[YAW_RATE] = rd;
+                -(x_hull + fx_r)
+            }
+        };
+        let (sp, cp) = (libm::sin(x[HEADING]), libm::cos(x[HEADING]));
+        dx[X_POS] = u * cp - v * sp; // eq. 2.25
+        dx[Y_POS] = u * sp + v * cp;
+        dx[HEADING] = r;
         e[Energy::Ship as usize] = resistance * u;
         dx[ENERGY0..].copy_from_slice(&e);
         out.thrust = thrust;
         out.resistance = resistance;
+        out.inflow_speed = va;
     }
 
     /// Kinetic and electric energy stored in the state [J]: turbine rotors, bus capacitors,
@@ -249,7 +395,14 @@ impl Plant {
             e += 0.5 * self.dc_link.capacitance * x[bus_voltage(s)] * x[bus_voltage(s)];
             e += 0.5 * self.shaft_inertia * x[omega_rm(s)] * x[omega_rm(s)];
         }
-        e + 0.5 * self.surge.mass_total * x[SURGE] * x[SURGE]
+        e += 0.5 * self.surge_mass * x[SURGE] * x[SURGE];
+        if let Hull::Maneuvering { abkowitz, .. } = &self.hull {
+            // Sway and yaw, with the symmetric part of the eq. 2.21 mass block.
+            let m = &abkowitz.m22;
+            let (v, r) = (x[SWAY], x[YAW_RATE]);
+            e += 0.5 * (m[0][0] * v * v + (m[0][1] + m[1][0]) * v * r + m[1][1] * r * r);
+        }
+        e
     }
 }
 

@@ -99,22 +99,9 @@ impl Summary {
             let min = col.iter().copied().fold(f64::INFINITY, f64::min);
             let max = col.iter().copied().fold(f64::NEG_INFINITY, f64::max);
             let mean = col.iter().sum::<f64>() / col.len() as f64;
-            signals.insert(
-                name.to_string(),
-                TraceStats {
-                    final_: col[col.len() - 1],
-                    min,
-                    max,
-                    mean,
-                },
-            );
+            signals.insert(name.to_string(), TraceStats { final_: col[col.len() - 1], min, max, mean });
         }
-        let last = |n: &str| {
-            trace
-                .column(n)
-                .and_then(|c| c.last().copied())
-                .unwrap_or(0.0)
-        };
+        let last = |n: &str| trace.column(n).and_then(|c| c.last().copied()).unwrap_or(0.0);
         let inv = PowerInventory {
             turbine: last("p_turbine_w"),
             generator: last("p_generator_w"),
@@ -162,10 +149,7 @@ impl Summary {
     pub fn to_json_value(&self) -> serde_json::Value {
         let mut sig = serde_json::Map::new();
         for (k, s) in &self.signals {
-            sig.insert(
-                k.clone(),
-                serde_json::json!({"final": s.final_, "min": s.min, "max": s.max, "mean": s.mean}),
-            );
+            sig.insert(k.clone(), serde_json::json!({"final": s.final_, "min": s.min, "max": s.max, "mean": s.mean}));
         }
         serde_json::json!({
             "scenario": self.scenario,

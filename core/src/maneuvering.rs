@@ -1,0 +1,267 @@
+//! Nonlinear 3-DOF maneuvering: Abkowitz's third-order expansion about u0 (thesis ch. 2.4,
+//! eqs. 2.17-2.25) with the Table 2.3 coefficients (Stettler's kayak tests at the Froude-scaled
+//! equivalent of 22 knots for a DDG-51).
+//!
+//! Non-dimensionalisation ("prime" system, L = 180 m): forces by q = (1/2) rho L^2 U^2, the yaw
+//! moment by q L, v' = v/U, r' = r L/U, du' = (u - u0)/U, masses by (1/2) rho L^3, inertias by
+//! (1/2) rho L^5, with U = sqrt(u^2 + v^2) the instantaneous speed (as in Fossen's Mariner model).
+//!
+//! Table 2.3 gives the mass-carrying combinations directly ((X_udot - m), (Y_vdot - m),
+//! (N_rdot - I_z), (X_vr + m), (Y_r - m u)), which are exactly the combinations eqs. 2.21-2.24 use,
+//! so no separate kayak mass is needed. Entries the equations do not name:
+//! - Y_vvr and N_vvr multiply v^2 r, the monomial the equations call Y_rvv and N_rvv: used as those.
+//! - Y_0, N_0 (and with them Y_0u, Y_0uu, N_0u, N_0uu) are side force and yaw moment with the ship
+//!   going straight. The thesis sets Y_0 = N_0 = 0 by symmetry but keeps the Delta-u terms; a port-
+//!   starboard symmetric hull has none of the family (they measure the kayak's asymmetry), so by
+//!   default all six are dropped (`symmetric_hull = true`); `false` keeps eqs. 2.23-2.24 literally.
+//! - X_vvu, X_rru are the terms eq. 2.22 prints as X_vvv v^2 du and X_rrr r^2 du.
+
+use serde::{Deserialize, Serialize};
+
+/// Table 2.3, non-dimensional, in units of 1e-5 (as printed).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct AbkowitzCoefficients {
+    pub xudot_minus_m: f64,
+    pub x0: f64,
+    pub xu: f64,
+    pub xuu: f64,
+    pub xuuu: f64,
+    pub xvr_plus_m: f64,
+    pub xvv: f64,
+    pub xrr: f64,
+    pub xvvu: f64,
+    pub xrru: f64,
+    pub xvru: f64,
+    pub yvdot_minus_m: f64,
+    pub y0: f64,
+    pub y0u: f64,
+    pub y0uu: f64,
+    pub yrdot: f64,
+    pub yr_minus_mu: f64,
+    pub yrrr: f64,
+    pub yv: f64,
+    pub yvvv: f64,
+    pub yvvr: f64,
+    pub yvrr: f64,
+    pub yvu: f64,
+    pub yvuu: f64,
+    pub yru: f64,
+    pub yruu: f64,
+    pub nrdot_minus_iz: f64,
+    pub n0: f64,
+    pub n0u: f64,
+    pub n0uu: f64,
+    pub nvdot: f64,
+    pub nv: f64,
+    pub nvvv: f64,
+    pub nr: f64,
+    pub nrrr: f64,
+    pub nvvr: f64,
+    pub nvrr: f64,
+    pub nvu: f64,
+    pub nvuu: f64,
+    pub nru: f64,
+    pub nruu: f64,
+}
+
+impl Default for AbkowitzCoefficients {
+    /// Table 2.3 (22-knot test), x 1e-5.
+    fn default() -> Self {
+        AbkowitzCoefficients {
+            xudot_minus_m: -646.9,
+            x0: -65.01,
+            xu: -167.3,
+            xuu: -178.1,
+            xuuu: -80.78,
+            xvr_plus_m: 93.65,
+            xvv: -268.7,
+            xrr: -101.58,
+            xvvu: -496.4,
+            xrru: -79.74,
+            xvru: 117.2,
+            yvdot_minus_m: -939.0,
+            y0: 3.216,
+            y0u: 6.836,
+            y0uu: 3.590,
+            yrdot: -13.17,
+            yr_minus_mu: -381.6,
+            yrrr: -156.8,
+            yv: -124.6,
+            yvvv: -39.94,
+            yvvr: -3704.0,
+            yvrr: -4580.0,
+            yvu: -2140.0,
+            yvuu: -1332.0,
+            yru: -543.5,
+            yruu: -111.4,
+            nrdot_minus_iz: -55.08,
+            n0: -6.813,
+            n0u: -17.38,
+            n0uu: -10.57,
+            nvdot: 16.85,
+            nv: -308.8,
+            nvvv: -3857.0,
+            nr: -219.9,
+            nrrr: -442.0,
+            nvvr: -1666.0,
+            nvrr: -14820.0,
+            nvu: -900.5,
+            nvuu: -671.1,
+            nru: -607.0,
+            nruu: -561.8,
+        }
+    }
+}
+
+/// Lowest speed used to non-dimensionalise [m/s]: below it the ship is all but stopped and the
+/// prime variables would divide by nearly zero.
+const U_FLOOR: f64 = 0.5;
+/// Lowest du' used in the expansion: the 11-knot test point of the kayak data (du' = -1 at U = u).
+const DU_MIN: f64 = -1.0;
+
+/// Dimensional Abkowitz model for one ship length and density.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Abkowitz {
+    c: AbkowitzCoefficients,
+    symmetric: bool,
+    /// Linearisation speed u0 [m/s].
+    pub u0: f64,
+    /// Ship length L [m].
+    pub length: f64,
+    rho: f64,
+    /// Surge mass m - X_udot [kg] (eq. 2.21).
+    pub m11: f64,
+    /// Inverse of the sway-yaw block of eq. 2.21.
+    inv22: [[f64; 2]; 2],
+    /// The sway-yaw block itself [kg, kg m; kg m, kg m^2].
+    pub m22: [[f64; 2]; 2],
+}
+
+/// Hydrodynamic hull forces [N] and yaw moment [N m] (the f of eq. 2.20 without thrust and rudder).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct HullForces {
+    pub x: f64,
+    pub y: f64,
+    pub n: f64,
+}
+
+impl Abkowitz {
+    pub fn new(c: &AbkowitzCoefficients, symmetric: bool, u0: f64, length: f64, rho: f64) -> Abkowitz {
+        let e = 1e-5;
+        let half_rho = 0.5 * rho;
+        let l3 = half_rho * length.powi(3);
+        let l4 = half_rho * length.powi(4);
+        let l5 = half_rho * length.powi(5);
+        // Eq. 2.21.
+        let m22 = [[-c.yvdot_minus_m * e * l3, -c.yrdot * e * l4], [-c.nvdot * e * l4, -c.nrdot_minus_iz * e * l5]];
+        let det = m22[0][0] * m22[1][1] - m22[0][1] * m22[1][0];
+        let inv22 = [[m22[1][1] / det, -m22[0][1] / det], [-m22[1][0] / det, m22[0][0] / det]];
+        Abkowitz { c: c.clone(), symmetric, u0, length, rho, m11: -c.xudot_minus_m * e * l3, inv22, m22 }
+    }
+
+    /// Eqs. 2.22-2.24 (hull terms): surge force, sway force and yaw moment at (u, v, r).
+    pub fn forces(&self, u: f64, v: f64, r: f64) -> HullForces {
+        let c = &self.c;
+        let big_u = (u * u + v * v).sqrt().max(U_FLOOR);
+        let q = 0.5 * self.rho * self.length * self.length * big_u * big_u * 1e-5;
+        let vp = v / big_u;
+        let rp = r * self.length / big_u;
+        let du = ((u - self.u0) / big_u).max(DU_MIN);
+        let (du2, du3) = (du * du, du * du * du);
+        let (v2, r2) = (vp * vp, rp * rp);
+        let x = c.x0
+            + c.xu * du
+            + c.xuu * du2
+            + c.xuuu * du3
+            + c.xvv * v2
+            + c.xrr * r2
+            + c.xvvu * v2 * du
+            + c.xrru * r2 * du
+            + c.xvr_plus_m * vp * rp
+            + c.xvru * vp * rp * du;
+        let mut y = c.yv * vp
+            + c.yvvv * v2 * vp
+            + c.yr_minus_mu * rp
+            + c.yrrr * r2 * rp
+            + c.yvrr * vp * r2
+            + c.yvu * vp * du
+            + c.yvuu * vp * du2
+            + c.yvvr * rp * v2
+            + c.yru * rp * du
+            + c.yruu * rp * du2;
+        let mut n = c.nv * vp
+            + c.nr * rp
+            + c.nvvv * v2 * vp
+            + c.nvrr * vp * r2
+            + c.nvu * vp * du
+            + c.nvuu * vp * du2
+            + c.nrrr * r2 * rp
+            + c.nvvr * rp * v2
+            + c.nru * rp * du
+            + c.nruu * rp * du2;
+        if !self.symmetric {
+            y += c.y0 + c.y0u * du + c.y0uu * du2;
+            n += c.n0 + c.n0u * du + c.n0uu * du2;
+        }
+        HullForces { x: q * x, y: q * y, n: q * self.length * n }
+    }
+
+    /// Sway and yaw accelerations from the sway force and yaw moment (eq. 2.20).
+    pub fn sway_yaw_acceleration(&self, y: f64, n: f64) -> (f64, f64) {
+        (self.inv22[0][0] * y + self.inv22[0][1] * n, self.inv22[1][0] * y + self.inv22[1][1] * n)
+    }
+}
+
+/// Smooth weight of the maneuvering model in surge, 0 below `lo` and 1 above `hi` [m/s]
+/// (a cubic smoothstep, so the surge force and its slope are continuous across the hand-over).
+pub fn handover_weight(u: f64, lo: f64, hi: f64) -> f64 {
+    let s = ((u - lo) / (hi - lo)).clamp(0.0, 1.0);
+    s * s * (3.0 - 2.0 * s)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::units::kn_to_m_s;
+
+    fn model() -> Abkowitz {
+        Abkowitz::new(&AbkowitzCoefficients::default(), true, kn_to_m_s(22.0), 180.0, 1025.0)
+    }
+
+    /// Straight ahead at u0 the hull force is X0 q: 65.01e-5 * (1/2) 1025 * 180^2 * (11.318)^2 =
+    /// 1.383 MN of resistance, and no side force or moment.
+    #[test]
+    fn resistance_at_u0_is_x0() {
+        let m = model();
+        let f = m.forces(kn_to_m_s(22.0), 0.0, 0.0);
+        let want = -65.01e-5 * 0.5 * 1025.0 * 180.0 * 180.0 * kn_to_m_s(22.0).powi(2);
+        assert!((f.x - want).abs() < 1e-6 * want.abs(), "{} vs {want}", f.x);
+        assert!(want < -1.38e6 && want > -1.39e6);
+        assert_eq!((f.y, f.n), (0.0, 0.0));
+    }
+
+    /// Mirror symmetry: (v, r) -> (-v, -r) flips Y and N and keeps X.
+    #[test]
+    fn port_starboard_symmetry() {
+        let m = model();
+        let a = m.forces(12.0, 0.8, 0.01);
+        let b = m.forces(12.0, -0.8, -0.01);
+        assert!((a.x - b.x).abs() < 1e-9 * a.x.abs());
+        assert!((a.y + b.y).abs() < 1e-9 * a.y.abs().max(1.0));
+        assert!((a.n + b.n).abs() < 1e-9 * a.n.abs().max(1.0));
+    }
+
+    /// Masses of eq. 2.21: the sway-yaw block times its inverse is the identity.
+    #[test]
+    fn mass_matrix() {
+        let m = model();
+        let half_rho_l3 = 0.5 * 1025.0 * 180f64.powi(3);
+        assert!((m.m11 - 646.9e-5 * half_rho_l3).abs() < 1.0);
+        let (a, b) = m.sway_yaw_acceleration(m.m22[0][0], m.m22[1][0]);
+        assert!((a - 1.0).abs() < 1e-12 && b.abs() < 1e-12);
+        assert_eq!(handover_weight(1.0, 2.0, 3.0), 0.0);
+        assert_eq!(handover_weight(4.0, 2.0, 3.0), 1.0);
+        assert!((handover_weight(2.5, 2.0, 3.0) - 0.5).abs() < 1e-12);
+    }
+}

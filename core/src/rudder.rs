@@ -1,0 +1,174 @@
+//! Rudder (thesis ch. 2.4.1, eqs. 2.26-2.30) and the saturated PID heading autopilot.
+//!
+//! Sign conventions (SNAME, z down): y to starboard, positive r turns to starboard. The rudder
+//! stands x_p aft of the centre of gravity, where the lateral flow is v - x_p r. Eqs. 2.26-2.27
+//! print v + x_p r, which holds with x_p signed (negative aft); eq. 2.19's moment -x_p F_y takes x_p
+//! positive aft, which is our convention. A positive rudder angle delta turns the ship to port.
+
+use serde::{Deserialize, Serialize};
+
+/// Rudder geometry and limits (Table 5.5).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct RudderParams {
+    /// Rudder area A_r [m^2]. Table 5.5: 20.
+    pub area_m2: f64,
+    /// Distance from the centre of gravity aft to the rudder and propellers x_p [m]. Table 5.5: 75.
+    pub x_p_m: f64,
+    /// Lift slope dC_L/dalpha [1/rad]. Table 5.5: 3.31 (No. 1 rudder of [42]).
+    pub lift_slope: f64,
+    /// Drag slope dC_D/dalpha [1/rad]. Table 5.5: 0.46.
+    pub drag_slope: f64,
+    /// Largest rudder angle [deg]: saturation before stall, ch. 2.4.1: 20.
+    pub max_angle_deg: f64,
+    /// Swing rate limit Delta_r [rad/s]. Table 5.5: 0.1.
+    pub swing_rate_rad_s: f64,
+}
+
+impl Default for RudderParams {
+    fn default() -> Self {
+        RudderParams {
+            area_m2: 20.0,
+            x_p_m: 75.0,
+            lift_slope: 3.31,
+            drag_slope: 0.46,
+            max_angle_deg: 20.0,
+            swing_rate_rad_s: 0.1,
+        }
+    }
+}
+
+/// Inflow at the stern (eqs. 2.26-2.27): speed V_a [m/s] and angle alpha_a [rad].
+pub fn stern_inflow(u: f64, v: f64, r: f64, x_p: f64) -> (f64, f64) {
+    let vs = v - x_p * r;
+    ((u * u + vs * vs).sqrt(), libm::atan2(vs, u.abs().max(1e-6)))
+}
+
+/// Rudder forces in the body frame [N] (eqs. 2.28, 2.30) at inflow speed `va`, inflow angle
+/// `alpha` and rudder angle `delta` [rad]. Lift is signed by (alpha - delta), drag always opposes
+/// the inflow.
+pub fn rudder_force(p: &RudderParams, rho: f64, va: f64, alpha: f64, delta: f64) -> (f64, f64) {
+    let q = 0.5 * rho * p.area_m2 * va * va;
+    let aoa = alpha - delta;
+    let lift = q * p.lift_slope * aoa;
+    let drag = q * p.drag_slope * aoa.abs();
+    let (s, c) = (libm::sin(alpha), libm::cos(alpha));
+    (lift * s - drag * c, -lift * c - drag * s)
+}
+
+/// Saturated PID heading autopilot gains.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct AutopilotParams {
+    /// Proportional gain [rad of rudder per rad of heading error]. Not given in the thesis; 3.
+    pub kp: f64,
+    /// Integral gain [rad of rudder per rad s]. Not given; 0.02.
+    pub ki: f64,
+    /// Derivative gain on yaw rate [rad of rudder per rad/s]. Not given; 80.
+    pub kd: f64,
+    /// Rate at which the heading reference moves when a command gives none [deg/s]. Our choice: 0.5
+    /// (about 8 ship lengths of radius at 25 knots). A step would put the rudder hard over and,
+    /// since the Table 2.3 hull turns unstable in tight turns, spiral the ship into a turn tighter
+    /// than full counter-rudder can stop.
+    pub turn_rate_deg_s: f64,
+    /// Fastest turn the autopilot will order, as a non-dimensional yaw rate r' = r L / U [-]. Our
+    /// choice: 0.25 (1 deg/s at 25 knots). With the Table 2.3 coefficients the hull's turning
+    /// motion grows unstable above r' = 0.1 (0.2 /s at r' = 0.2, 0.4 /s at r' = 0.33) and a rudder
+    /// swinging at 0.1 rad/s cannot hold it much beyond r' = 0.25. Faster orders are slowed to this
+    /// and a warning says so.
+    pub max_turn_rate_nondim: f64,
+    /// Yaw acceleration gain [rad of rudder per rad/s^2]. Not given; 1000: starts taking the rudder off
+    /// while the turn is still gathering pace, which this directionally marginal hull needs (its
+    /// rudder swings at only 0.1 rad/s).
+    pub ka: f64,
+}
+
+impl Default for AutopilotParams {
+    fn default() -> Self {
+        AutopilotParams { kp: 3.0, ki: 0.02, kd: 80.0, turn_rate_deg_s: 0.5, ka: 1000.0, max_turn_rate_nondim: 0.25 }
+    }
+}
+
+/// Discrete PID on heading with rudder saturation, swing-rate limit and anti-windup.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Autopilot {
+    pub kp: f64,
+    pub ki: f64,
+    pub kd: f64,
+    pub max_angle: f64,
+    pub swing_rate: f64,
+    pub ka: f64,
+    pub integral: f64,
+    /// Rudder angle now [rad].
+    pub delta: f64,
+    /// Yaw rate at the previous sample [rad/s] (for the yaw acceleration).
+    last_rate_err: Option<f64>,
+}
+
+impl Autopilot {
+    pub fn new(g: &AutopilotParams, r: &RudderParams) -> Autopilot {
+        Autopilot {
+            kp: g.kp,
+            ki: g.ki,
+            kd: g.kd,
+            ka: g.ka,
+            last_rate_err: None,
+            max_angle: r.max_angle_deg.to_radians(),
+            swing_rate: r.swing_rate_rad_s,
+            integral: 0.0,
+            delta: 0.0,
+        }
+    }
+
+    /// One sample: heading error `err` = psi_ref - psi [rad], yaw rate error `rate_err` =
+    /// r_ref - r [rad/s]. Returns the rudder angle [rad] to hold. Positive rudder turns to port,
+    /// hence the minus sign.
+    pub fn update(&mut self, err: f64, rate_err: f64, ts: f64) -> f64 {
+        let accel_err = self.last_rate_err.map_or(0.0, |last| (rate_err - last) / ts);
+        self.last_rate_err = Some(rate_err);
+        let unsat = -(self.kp * err + self.integral + self.kd * rate_err + self.ka * accel_err);
+        let cmd = unsat.clamp(-self.max_angle, self.max_angle);
+        if unsat.abs() < self.max_angle || (unsat > 0.0) == (err > 0.0) {
+            self.integral += self.ki * err * ts;
+        }
+        let step = self.swing_rate * ts;
+        self.delta += (cmd - self.delta).clamp(-step, step);
+        self.delta
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Straight inflow, rudder over: the lateral force is q C_L delta (small angle), towards the
+    /// side that makes the stern go to starboard and the bow to port for positive delta.
+    #[test]
+    fn lift_and_drag() {
+        let p = RudderParams::default();
+        let d = 5f64.to_radians();
+        let (fx, fy) = rudder_force(&p, 1025.0, 10.0, 0.0, d);
+        let q = 0.5 * 1025.0 * 20.0 * 100.0;
+        assert!((fy - q * 3.31 * d).abs() < 1e-6 * fy);
+        assert!((fx + q * 0.46 * d).abs() < 1e-6 * fx.abs());
+        // Moment -x_p F_y < 0: bow to port.
+        assert!(-p.x_p_m * fy < 0.0);
+        // Rudder aligned with the inflow: no force.
+        let (fx, fy) = rudder_force(&p, 1025.0, 10.0, 0.1, 0.1);
+        assert!(fx.abs() < 1e-9 && fy.abs() < 1e-9);
+    }
+
+    #[test]
+    fn autopilot_saturates_and_slews() {
+        let mut a = Autopilot::new(&AutopilotParams::default(), &RudderParams::default());
+        // Large heading error to starboard: rudder goes negative at 0.1 rad/s, stops at 20 deg.
+        let d = a.update(1.0, 0.0, 1.0);
+        assert!((d + 0.1).abs() < 1e-12);
+        for _ in 0..10 {
+            a.update(1.0, 0.0, 1.0);
+        }
+        assert!((a.delta + 20f64.to_radians()).abs() < 1e-12);
+        let (va, al) = stern_inflow(10.0, 0.0, 0.01, 75.0);
+        assert!((va - (100.0f64 + 0.5625).sqrt()).abs() < 1e-12 && al < 0.0);
+    }
+}
