@@ -216,7 +216,9 @@ pub struct DcLinkParams {
     /// "ideal power management". Our value for the braking preset: 1 ohm (31.6 MW at 5.62 kV).
     pub brake_resistor_ohm: f64,
     /// Bus voltage at which the chopper starts to conduct, per unit of the bus set point [-].
-    /// Our choice: 1.05; it conducts fully 5 % higher.
+    /// Our choice: 1.10, above the no-load voltage of the generators at the field current of full
+    /// power (1.08), so that the resistor takes the braking energy and not the generators' output;
+    /// it conducts fully 5 % higher.
     pub brake_on_pu: f64,
 }
 
@@ -473,7 +475,7 @@ impl Default for DcLinkParams {
             inverter_voltage_ratio: std::f64::consts::SQRT_2 / std::f64::consts::PI,
             rectifier: RectifierKind::Diode,
             brake_resistor_ohm: 0.0,
-            brake_on_pu: 1.05,
+            brake_on_pu: 1.10,
         }
     }
 }

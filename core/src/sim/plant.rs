@@ -55,7 +55,7 @@ pub const HEADING: usize = SURGE + 5;
 /// First energy accumulator [J]; see [`Energy`].
 pub const ENERGY0: usize = HEADING + 1;
 /// Number of energy accumulators.
-pub const N_ENERGY: usize = 14;
+pub const N_ENERGY: usize = 15;
 /// Size of the state vector.
 pub const NX: usize = ENERGY0 + N_ENERGY;
 
@@ -95,6 +95,8 @@ pub enum Energy {
     Ship,
     /// Energy dissipated in the brake resistors.
     Brake,
+    /// Energy the motors returned to the buses (integral of the negative part of the inverter power).
+    Regenerated,
 }
 
 /// Held controller outputs (piecewise constant between controller samples).
@@ -347,6 +349,7 @@ impl Plant {
             e[Energy::Propeller as usize] += pl.torque_nm * w_rm;
             e[Energy::Thrust as usize] += pl.thrust_n * u;
             e[Energy::Brake as usize] += p_brake;
+            e[Energy::Regenerated as usize] += (-mp.p_in).max(0.0);
             out.brake_power[s] = p_brake;
             out.motor_v_max[s] = v_max;
             out.motor_voltage[s] = v_m;

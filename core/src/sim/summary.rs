@@ -50,7 +50,12 @@ pub struct EnergyBalance {
     pub motor: f64,
     /// Work against the ship's resistance (output).
     pub ship: f64,
-    /// Generator friction, stator copper, notching, motor copper and mechanical, propeller losses.
+    /// Energy dissipated in the brake resistors (part of `losses`).
+    pub brake: f64,
+    /// Energy the motors returned to the buses while braking.
+    pub regenerated: f64,
+    /// Generator friction, stator copper, notching, motor copper and mechanical, brake resistor and
+    /// propeller losses.
     pub losses: f64,
     /// Change of kinetic energy (turbines, shafts, ship) and of the bus capacitors' energy.
     pub stored_change: f64,
@@ -116,6 +121,7 @@ impl Summary {
             + e(Energy::MotorStatorLoss)
             + e(Energy::MotorRotorLoss)
             + e(Energy::MotorMechLoss)
+            + e(Energy::Brake)
             + (e(Energy::Propeller) - e(Energy::Thrust));
         let residual = e(Energy::Turbine) - e(Energy::Ship) - losses - stored_change;
         Summary {
@@ -136,6 +142,8 @@ impl Summary {
                 inverter: e(Energy::Inverter),
                 motor: e(Energy::Motor),
                 ship: e(Energy::Ship),
+                brake: e(Energy::Brake),
+                regenerated: e(Energy::Regenerated),
                 losses,
                 stored_change,
                 residual,
