@@ -209,3 +209,25 @@ fn questionable_orders_warn() {
     let r = run(&preset("ac-braking").unwrap());
     assert!(r.summary.warnings.iter().any(|w| w.contains("trusted from")), "{:?}", r.summary.warnings);
 }
+
+/// The hand-over from the surge model (below 17 knots) to the Abkowitz model (above 21 knots) is
+/// smooth: the straight-line resistance and the calm-water shaft speed rise monotonically from 1 to
+/// 35 knots, and the resistance coefficient R/u^2 and the shaft speed per knot w/u change by less
+/// than 3 % between neighbouring 0.1-knot points (no kink at the hand-over).
+#[test]
+fn handover_is_smooth_and_monotone() {
+    let s = preset("turn-45").unwrap();
+    let p = aes_core::sim::plant::Plant::new(&s).unwrap();
+    let mut last: Option<(f64, f64)> = None;
+    for i in 10..=350 {
+        let u = kn_to_m_s(i as f64 * 0.1);
+        let (r, w) = (p.straight_resistance(u), p.equilibrium_shaft_speed(u));
+        if let Some((r0, w0)) = last {
+            assert!(r > r0 && w > w0, "not monotone at {} kn", i as f64 * 0.1);
+            let u0 = kn_to_m_s((i - 1) as f64 * 0.1);
+            let (cr, cw) = ((r / (u * u)) / (r0 / (u0 * u0)), (w / u) / (w0 / u0));
+            assert!((cr - 1.0).abs() < 0.03 && (cw - 1.0).abs() < 0.03, "step at {} kn: {cr} {cw}", i as f64 * 0.1);
+        }
+        last = Some((r, w));
+    }
+}
