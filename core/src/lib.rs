@@ -14,6 +14,7 @@ pub mod propeller;
 pub mod rudder;
 pub mod scenario;
 pub mod sim;
+pub mod stability;
 pub mod surge;
 pub mod units;
 

@@ -1,0 +1,164 @@
+//! The IPS performance and stability tool of thesis ch. 4: time-averaged nonlinear models of a
+//! scaled MVDC power system (the Purdue MVDC testbed), split into a generator side (the motor
+//! side seen as a current sink) and a motor side (the generator side seen as a DC voltage
+//! source); steady states, linearization, state-space models, eigenvalues and Bode plots.
+
+pub mod generator_side;
+pub mod motor_side;
+
+use nalgebra::{DMatrix, DVector};
+use num_complex::Complex64;
+use serde::Serialize;
+
+/// A linear time-invariant model dx/dt = A x + B u, y = C x + D u (single input, single output).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinearSystem {
+    pub a: DMatrix<f64>,
+    pub b: DMatrix<f64>,
+    pub c: DMatrix<f64>,
+    pub d: DMatrix<f64>,
+    /// Names of the states, in order.
+    pub states: Vec<&'static str>,
+}
+
+/// One eigenvalue with its damping ratio and natural frequency.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Pole {
+    pub re: f64,
+    pub im: f64,
+    /// Damping ratio -re/|lambda| [-].
+    pub damping: f64,
+    /// Natural frequency |lambda| [rad/s].
+    pub natural_frequency_rad_s: f64,
+}
+
+/// One point of a frequency response.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct BodePoint {
+    pub omega_rad_s: f64,
+    pub magnitude_db: f64,
+    pub phase_deg: f64,
+}
+
+impl LinearSystem {
+    /// Eigenvalues of A, sorted by real part (least stable last).
+    pub fn poles(&self) -> Vec<Pole> {
+        let ev = self.a.clone().complex_eigenvalues();
+        let mut poles: Vec<Pole> = ev
+            .iter()
+            .map(|l| {
+                let w = l.norm();
+                Pole { re: l.re, im: l.im, damping: if w > 0.0 { -l.re / w } else { 1.0 }, natural_frequency_rad_s: w }
+            })
+            .collect();
+        poles.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));
+        poles
+    }
+
+    /// Whether every pole has a negative real part.
+    pub fn is_stable(&self) -> bool {
+        self.poles().iter().all(|p| p.re < 0.0)
+    }
+
+    /// G(j omega) = C (j omega I - A)^-1 B + D.
+    pub fn response(&self, omega: f64) -> Complex64 {
+        let n = self.a.nrows();
+        let m = DMatrix::<Complex64>::from_fn(n, n, |i, j| {
+            let v = -self.a[(i, j)];
+            Complex64::new(v, if i == j { omega } else { 0.0 })
+        });
+        let b = DVector::<Complex64>::from_fn(n, |i, _| Complex64::new(self.b[(i, 0)], 0.0));
+        let x = m.lu().solve(&b).unwrap_or_else(|| DVector::from_element(n, Complex64::new(f64::NAN, f64::NAN)));
+        let mut g = Complex64::new(self.d[(0, 0)], 0.0);
+        for i in 0..n {
+            g += self.c[(0, i)] * x[i];
+        }
+        g
+    }
+
+    /// Bode points at the given frequencies [rad/s].
+    pub fn bode(&self, omegas: &[f64]) -> Vec<BodePoint> {
+        omegas
+            .iter()
+            .map(|&w| {
+                let g = self.response(w);
+                BodePoint { omega_rad_s: w, magnitude_db: 20.0 * g.norm().log10(), phase_deg: g.arg().to_degrees() }
+            })
+            .collect()
+    }
+
+    /// The public JSON form: matrices as arrays of rows, poles, state names.
+    pub fn to_json_value(&self) -> serde_json::Value {
+        let rows = |m: &DMatrix<f64>| -> Vec<Vec<f64>> {
+            (0..m.nrows()).map(|i| (0..m.ncols()).map(|j| m[(i, j)]).collect()).collect()
+        };
+        serde_json::json!({
+            "states": self.states,
+            "a": rows(&self.a),
+            "b": rows(&self.b),
+            "c": rows(&self.c),
+            "d": rows(&self.d),
+            "poles": self.poles(),
+            "stable": self.is_stable(),
+        })
+    }
+}
+
+/// Logarithmically spaced frequencies from `from` to `to` [rad/s], `n` points.
+pub fn log_space(from: f64, to: f64, n: usize) -> Vec<f64> {
+    let (a, b) = (from.ln(), to.ln());
+    (0..n).map(|i| (a + (b - a) * i as f64 / (n.max(2) - 1) as f64).exp()).collect()
+}
+
+/// Central-difference Jacobian of f at x (for checking the analytic linearizations).
+pub fn numerical_jacobian(f: &dyn Fn(&[f64]) -> Vec<f64>, x: &[f64]) -> DMatrix<f64> {
+    let n = x.len();
+    let m = f(x).len();
+    let mut j = DMatrix::zeros(m, n);
+    let mut xp = x.to_vec();
+    for k in 0..n {
+        let h = 1e-6 * x[k].abs().max(1e-3);
+        xp[k] = x[k] + h;
+        let fp = f(&xp);
+        xp[k] = x[k] - h;
+        let fm = f(&xp);
+        xp[k] = x[k];
+        for i in 0..m {
+            j[(i, k)] = (fp[i] - fm[i]) / (2.0 * h);
+        }
+    }
+    j
+}
+
+/// Gain and phase of a simulated sinusoidal response: the output's component at `omega` over a
+/// whole number of periods, divided by the input amplitude's.
+pub fn fourier_gain(t: &[f64], y: &[f64], omega: f64, input_amplitude: f64) -> BodePoint {
+    let (mut s, mut c) = (0.0, 0.0);
+    for i in 1..t.len() {
+        let dt = t[i] - t[i - 1];
+        let ym = 0.5 * (y[i] + y[i - 1]);
+        let tm = 0.5 * (t[i] + t[i - 1]);
+        s += ym * (omega * tm).sin() * dt;
+        c += ym * (omega * tm).cos() * dt;
+    }
+    let span = t[t.len() - 1] - t[0];
+    let (a_sin, a_cos) = (2.0 * s / span, 2.0 * c / span);
+    // Input u = A sin(omega t): y = |G| A sin(omega t + phi) = |G| A (sin cos phi + cos sin phi).
+    let g = Complex64::new(a_sin, a_cos) / input_amplitude;
+    BodePoint { omega_rad_s: omega, magnitude_db: 20.0 * g.norm().log10(), phase_deg: g.arg().to_degrees() }
+}
+
+/// One RK4 step of dx/dt = f(t, x).
+pub fn rk4(f: &dyn Fn(f64, &[f64]) -> Vec<f64>, t: f64, x: &mut [f64], dt: f64) {
+    let n = x.len();
+    let k1 = f(t, x);
+    let y: Vec<f64> = (0..n).map(|i| x[i] + 0.5 * dt * k1[i]).collect();
+    let k2 = f(t + 0.5 * dt, &y);
+    let y: Vec<f64> = (0..n).map(|i| x[i] + 0.5 * dt * k2[i]).collect();
+    let k3 = f(t + 0.5 * dt, &y);
+    let y: Vec<f64> = (0..n).map(|i| x[i] + dt * k3[i]).collect();
+    let k4 = f(t + dt, &y);
+    for i in 0..n {
+        x[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+    }
+}

@@ -1,0 +1,98 @@
+//! Thesis ch. 4: the IPS stability tool. Steady states against Tables 4.1 and 4.2, and the linear
+//! models' Bode plots against small sinusoidal perturbations of the nonlinear averaged models
+//! (the counterpart of the stars on Figs. 4-7 to 4-9 and 4-12).
+
+use aes_core::stability::motor_side::MotorSideParams;
+use aes_core::stability::{fourier_gain, rk4, BodePoint, LinearSystem};
+
+/// Simulates dx/dt = f(t, x) from `x0` with input amplitude `amp` at `omega`, discards `settle_s`,
+/// and returns the gain and phase of output `y` over the following whole periods.
+fn simulated_point(
+    f: &dyn Fn(f64, &[f64]) -> Vec<f64>,
+    y: &dyn Fn(&[f64]) -> f64,
+    x0: &[f64],
+    omega: f64,
+    amp: f64,
+    settle_s: f64,
+    dt: f64,
+) -> BodePoint {
+    let period = 2.0 * std::f64::consts::PI / omega;
+    let periods = (2.0 / period).ceil().max(4.0);
+    let steps_settle = (settle_s / period).ceil() * period / dt;
+    let steps_measure = periods * period / dt;
+    let (n_settle, n_meas) = (steps_settle.round() as usize, steps_measure.round() as usize);
+    let dt_settle = (settle_s / period).ceil() * period / n_settle as f64;
+    let dt_meas = periods * period / n_meas as f64;
+    let mut x = x0.to_vec();
+    let y0 = y(x0);
+    let mut t = 0.0;
+    for _ in 0..n_settle {
+        rk4(f, t, &mut x, dt_settle);
+        t += dt_settle;
+    }
+    let (mut ts, mut ys) = (vec![t], vec![y(&x) - y0]);
+    for _ in 0..n_meas {
+        rk4(f, t, &mut x, dt_meas);
+        t += dt_meas;
+        ts.push(t);
+        ys.push(y(&x) - y0);
+    }
+    fourier_gain(&ts, &ys, omega, amp)
+}
+
+fn compare(name: &str, sys: &LinearSystem, sim: &BodePoint) {
+    let lin = sys.bode(&[sim.omega_rad_s])[0];
+    let mut dphase = (lin.phase_deg - sim.phase_deg) % 360.0;
+    if dphase > 180.0 {
+        dphase -= 360.0;
+    }
+    if dphase < -180.0 {
+        dphase += 360.0;
+    }
+    println!(
+        "{name} at {:.2} rad/s: linear {:.2} dB {:.1} deg, nonlinear {:.2} dB {:.1} deg",
+        sim.omega_rad_s, lin.magnitude_db, lin.phase_deg, sim.magnitude_db, sim.phase_deg
+    );
+    assert!((lin.magnitude_db - sim.magnitude_db).abs() < 1.0, "{name}: gain");
+    assert!(dphase.abs() < 5.0, "{name}: phase {dphase}");
+}
+
+/// Fig. 4-8 (T* = 100 N m, five states) and Fig. 4-9 (200 N m, six states): open loop, stator
+/// voltage in, stator current magnitude out, at 1, 10 and 100 rad/s; perturbation 0.5 % of v_qs0.
+#[test]
+fn motor_open_loop_bode_matches_nonlinear_model() {
+    let p = MotorSideParams::default();
+    for t_star in [100.0, 200.0] {
+        let ss = p.steady_state(t_star).unwrap();
+        let sys = p.open_loop(&ss);
+        assert!(sys.is_stable(), "{t_star} N m open loop poles {:?}", sys.poles());
+        assert_eq!(sys.a.nrows(), if t_star > 150.0 { 6 } else { 5 });
+        let x0 = p.steady_vector(&ss, ss.above_threshold);
+        let amp = 0.005 * ss.v_qs;
+        for omega in [1.0, 10.0, 100.0] {
+            let f = |t: f64, x: &[f64]| p.open_loop_rhs(x, ss.v_qs + amp * (omega * t).sin(), ss.t_ref0, ss.t_star);
+            let y = |x: &[f64]| x[0].hypot(x[1]);
+            let sim = simulated_point(&f, &y, &x0, omega, amp, 6.0, 2e-4);
+            compare(&format!("motor open loop {t_star} N m"), &sys, &sim);
+        }
+    }
+}
+
+/// Fig. 4-12: closed loop with the equivalent control, torque command in, torque out, at 100 N m,
+/// below the trim bandwidth (1 / tau = 20 rad/s): 1, 5 and 10 rad/s; perturbation 1 N m.
+#[test]
+fn motor_closed_loop_bode_matches_nonlinear_model() {
+    let p = MotorSideParams::default();
+    let ss = p.steady_state(100.0).unwrap();
+    let sys = p.closed_loop(&ss);
+    println!("closed loop poles {:?}", sys.poles());
+    assert!(sys.is_stable());
+    let x0 = p.steady_vector(&ss, true);
+    let sign = ss.currents[0].signum();
+    for omega in [1.0, 5.0, 10.0] {
+        let f = |t: f64, x: &[f64]| p.closed_loop_rhs(x, ss.t_star + (omega * t).sin(), sign);
+        let y = |x: &[f64]| p.torque(&x[..4]);
+        let sim = simulated_point(&f, &y, &x0, omega, 1.0, 6.0, 2e-4);
+        compare("motor closed loop 100 N m", &sys, &sim);
+    }
+}
