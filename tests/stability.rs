@@ -3,10 +3,11 @@
 //! (the counterpart of the stars on Figs. 4-7 to 4-9 and 4-12).
 
 use aes_core::stability::motor_side::MotorSideParams;
-use aes_core::stability::{fourier_gain, rk4, BodePoint, LinearSystem};
+use aes_core::stability::{fourier_gain, rk4, trapezoid_step, BodePoint, LinearSystem};
 
-/// Simulates dx/dt = f(t, x) from `x0` with input amplitude `amp` at `omega`, discards `settle_s`,
-/// and returns the gain and phase of output `y` over the following whole periods.
+/// Simulates dx/dt = f(t, x) from `x0` with input amplitude `amp` at `omega` (RK4, or the implicit
+/// trapezoidal rule for stiff models), discards `settle_s`, and returns the gain and phase of
+/// output `y` over the following whole periods.
 fn simulated_point(
     f: &dyn Fn(f64, &[f64]) -> Vec<f64>,
     y: &dyn Fn(&[f64]) -> f64,
@@ -15,6 +16,7 @@ fn simulated_point(
     amp: f64,
     settle_s: f64,
     dt: f64,
+    implicit: bool,
 ) -> BodePoint {
     let period = 2.0 * std::f64::consts::PI / omega;
     let periods = (2.0 / period).ceil().max(4.0);
@@ -26,13 +28,20 @@ fn simulated_point(
     let mut x = x0.to_vec();
     let y0 = y(x0);
     let mut t = 0.0;
+    let step = |t: f64, x: &mut [f64], h: f64| {
+        if implicit {
+            assert!(trapezoid_step(f, t, x, h), "Newton failed at t = {t}");
+        } else {
+            rk4(f, t, x, h);
+        }
+    };
     for _ in 0..n_settle {
-        rk4(f, t, &mut x, dt_settle);
+        step(t, &mut x, dt_settle);
         t += dt_settle;
     }
     let (mut ts, mut ys) = (vec![t], vec![y(&x) - y0]);
     for _ in 0..n_meas {
-        rk4(f, t, &mut x, dt_meas);
+        step(t, &mut x, dt_meas);
         t += dt_meas;
         ts.push(t);
         ys.push(y(&x) - y0);
@@ -72,7 +81,7 @@ fn motor_open_loop_bode_matches_nonlinear_model() {
         for omega in [1.0, 10.0, 100.0] {
             let f = |t: f64, x: &[f64]| p.open_loop_rhs(x, ss.v_qs + amp * (omega * t).sin(), ss.t_ref0, ss.t_star);
             let y = |x: &[f64]| x[0].hypot(x[1]);
-            let sim = simulated_point(&f, &y, &x0, omega, amp, 6.0, 2e-4);
+            let sim = simulated_point(&f, &y, &x0, omega, amp, 6.0, 2e-4, false);
             compare(&format!("motor open loop {t_star} N m"), &sys, &sim);
         }
     }
@@ -92,7 +101,38 @@ fn motor_closed_loop_bode_matches_nonlinear_model() {
     for omega in [1.0, 5.0, 10.0] {
         let f = |t: f64, x: &[f64]| p.closed_loop_rhs(x, ss.t_star + (omega * t).sin(), sign);
         let y = |x: &[f64]| p.torque(&x[..4]);
-        let sim = simulated_point(&f, &y, &x0, omega, 1.0, 6.0, 2e-4);
+        let sim = simulated_point(&f, &y, &x0, omega, 1.0, 6.0, 2e-4, false);
         compare("motor closed loop 100 N m", &sys, &sim);
+    }
+}
+
+/// Fig. 4-7: generator side, field voltage in, droop feedback (v_dc + K_d i_dc) out, open loop,
+/// at the baseline point; perturbation 1 % of v_fd0. And the closed droop loop (eq. 4.48): voltage
+/// set point in, bus voltage out, below its bandwidth.
+#[test]
+fn generator_bode_matches_nonlinear_model() {
+    use aes_core::stability::generator_side::GeneratorSideParams;
+    let p = GeneratorSideParams::default();
+    let ss = p.steady_state(377.0, 28.5, 45.0).unwrap();
+    let ol = p.open_loop(&ss);
+    println!("generator open-loop poles {:?}", ol.poles().iter().map(|q| (q.re, q.im)).collect::<Vec<_>>());
+    assert!(ol.is_stable());
+    let amp = 0.01 * ss.v_fd;
+    let dt = 2e-4;
+    for omega in [1.0, 10.0, 100.0] {
+        let f = |t: f64, x: &[f64]| p.rhs(x, ss.v_fd + amp * (omega * t).sin(), ss.omega, ss.i_load);
+        let y = |x: &[f64]| x[10] + p.k_d * x[7];
+        let sim = simulated_point(&f, &y, &ss.x, omega, amp, 3.0, dt, true);
+        compare("generator open loop", &ol, &sim);
+    }
+    let cl = p.closed_loop(&ss);
+    println!("generator closed-loop poles {:?}", cl.poles().iter().map(|q| (q.re, q.im)).collect::<Vec<_>>());
+    assert!(cl.is_stable());
+    let (x0, v_star) = p.closed_loop_equilibrium(&ss);
+    for omega in [1.0, 5.0] {
+        let f = |t: f64, x: &[f64]| p.closed_loop_rhs(x, v_star + (omega * t).sin(), &ss, 10.0 * ss.v_fd);
+        let y = |x: &[f64]| x[10];
+        let sim = simulated_point(&f, &y, &x0, omega, 1.0, 3.0, dt, true);
+        compare("generator closed loop", &cl, &sim);
     }
 }
