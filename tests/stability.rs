@@ -5,6 +5,7 @@
 use aes_core::stability::motor_side::MotorSideParams;
 use aes_core::stability::{fourier_gain, rk4, trapezoid_step, BodePoint, LinearSystem};
 
+#[allow(clippy::too_many_arguments)]
 /// Simulates dx/dt = f(t, x) from `x0` with input amplitude `amp` at `omega` (RK4, or the implicit
 /// trapezoidal rule for stiff models), discards `settle_s`, and returns the gain and phase of
 /// output `y` over the following whole periods.
