@@ -129,3 +129,42 @@ fn malformed_file_is_rejected() {
     assert!(!ok && err.contains("nesting"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `aes-sim ips`: the steady-state JSON uses the quantity names of Tables 4.1 and 4.2, the linear
+/// model reports matrices and poles, Bode covers the asked range, and bad input is refused.
+#[test]
+fn ips_commands() {
+    let (ok, out, err) = aes_sim(&["ips", "steady", "--side", "generator"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    for key in ["v_gs_mag", "i_gs_mag", "i_fd", "v_dc", "i_dc", "cos_phi"] {
+        assert!(v["steady_state"][key].is_number(), "{key}");
+    }
+    let (ok, out, _) = aes_sim(&["ips", "steady", "--side", "motor", "--torque", "100"]);
+    assert!(ok);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    for key in ["t_m0", "omega_r0", "omega_s0", "i_s_mag", "i_r_mag", "v_s_mag"] {
+        assert!(v["steady_state"][key].is_number(), "{key}");
+    }
+    let (ok, out, _) = aes_sim(&["ips", "linear", "--side", "motor", "--loop", "closed"]);
+    assert!(ok);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["linear"]["a"].as_array().unwrap().len(), 6);
+    assert_eq!(v["linear"]["poles"].as_array().unwrap().len(), 6);
+    let (ok, out, _) =
+        aes_sim(&["ips", "bode", "--side", "generator", "--from", "0.1", "--to", "100", "--points", "31"]);
+    assert!(ok);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let hz = v["bode"]["frequency_hz"].as_array().unwrap();
+    assert_eq!(hz.len(), 31);
+    assert!((hz[30].as_f64().unwrap() - 100.0).abs() < 1e-9);
+    for (args, want) in [
+        (&["ips", "steady", "--side", "motor", "--set", "r_s=-1"][..], "r_s = -1"),
+        (&["ips", "steady", "--side", "motor", "--set", "nope=1"][..], "nope: no such parameter"),
+        (&["ips", "steady", "--side", "motor", "--torque=0"][..], "torque command 0"),
+        (&["ips", "bode", "--side", "motor", "--from", "10", "--to", "1"][..], "--from 10 --to 1"),
+    ] {
+        let (ok, _, err) = aes_sim(args);
+        assert!(!ok && err.contains(want), "{args:?}: {err}");
+    }
+}

@@ -102,3 +102,55 @@ pub fn run_summary(json: &str) -> Result<String, JsError> {
     let r = aes_core::run(&sc).map_err(|e| JsError::new(&e.to_string()))?;
     Ok(serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default())
 }
+
+/// The IPS stability tool (thesis ch. 4) for the page's stability tab. `side` is "generator" or
+/// "motor"; the operating point is omega [rad/s], v_fd [V] and I [A] (generator) or T* [N m]
+/// (motor); `closed` picks the closed-loop model; Bode from `from_hz` to `to_hz` in `points`
+/// points. Returns JSON: the steady state, poles and the Bode arrays.
+#[wasm_bindgen(js_name = ipsAnalysis)]
+#[allow(clippy::too_many_arguments)]
+pub fn ips_analysis(
+    side: &str,
+    omega: f64,
+    v_fd: f64,
+    i_load: f64,
+    torque: f64,
+    closed: bool,
+    from_hz: f64,
+    to_hz: f64,
+    points: u32,
+) -> Result<String, JsError> {
+    use aes_core::stability::{generator_side::GeneratorSideParams, log_space, motor_side::MotorSideParams};
+    if !(from_hz > 0.0 && to_hz > from_hz && (2..=5000).contains(&points)) {
+        return Err(JsError::new("Bode range: need 0 < from < to and 2 to 5000 points"));
+    }
+    let (steady, sys) = match side {
+        "generator" => {
+            let p = GeneratorSideParams::default();
+            let s = p.steady_state(omega, v_fd, i_load).map_err(|e| JsError::new(&e))?;
+            let sys = if closed { p.closed_loop(&s) } else { p.open_loop(&s) };
+            (serde_json::to_value(s).unwrap_or_default(), sys)
+        }
+        "motor" => {
+            let p = MotorSideParams::default();
+            let s = p.steady_state(torque).map_err(|e| JsError::new(&e))?;
+            let sys = if closed { p.closed_loop(&s) } else { p.open_loop(&s) };
+            (serde_json::to_value(s).unwrap_or_default(), sys)
+        }
+        other => return Err(JsError::new(&format!("side = '{other}': use 'generator' or 'motor'"))),
+    };
+    let hz = log_space(from_hz, to_hz, points as usize);
+    let omegas: Vec<f64> = hz.iter().map(|f| 2.0 * std::f64::consts::PI * f).collect();
+    let pts = sys.bode(&omegas);
+    Ok(serde_json::json!({
+        "steady_state": steady,
+        "poles": sys.poles(),
+        "stable": sys.is_stable(),
+        "bode": {
+            "frequency_hz": hz,
+            "magnitude_db": pts.iter().map(|p| p.magnitude_db).collect::<Vec<_>>(),
+            "phase_deg": pts.iter().map(|p| p.phase_deg).collect::<Vec<_>>(),
+        },
+    })
+    .to_string())
+}

@@ -190,3 +190,29 @@ pub fn trapezoid_step(f: &dyn Fn(f64, &[f64]) -> Vec<f64>, t: f64, x: &mut [f64]
     x.copy_from_slice(&y);
     false
 }
+
+/// Reads a parameter set from JSON (or its defaults), applies `path=value` overrides, and checks
+/// that every parameter is a positive finite number; errors name the field and its value.
+pub fn load_params<T>(base: &T, overrides: &[(String, String)]) -> Result<T, String>
+where
+    T: serde::Serialize + serde::de::DeserializeOwned,
+{
+    let mut v = serde_json::to_value(base).map_err(|e| e.to_string())?;
+    for (path, text) in overrides {
+        let slot = v
+            .as_object_mut()
+            .and_then(|m| m.get_mut(path.as_str()))
+            .ok_or_else(|| format!("{path}: no such parameter"))?;
+        let num: f64 = text.parse().map_err(|_| format!("{path} = {text}: not a number"))?;
+        *slot = serde_json::json!(num);
+    }
+    if let Some(map) = v.as_object() {
+        for (k, x) in map {
+            let x = x.as_f64().unwrap_or(f64::NAN);
+            if !(x.is_finite() && x > 0.0 && x < 1.0e9) {
+                return Err(format!("{k} = {x}: must be a positive number below 1e9"));
+            }
+        }
+    }
+    serde_path_to_error::deserialize(v).map_err(|e| format!("{}: {}", e.path(), e.inner()))
+}
