@@ -42,7 +42,7 @@ pub struct MotorSideParams {
     pub kq0: f64,
     /// Water density [kg/m^3].
     pub rho: f64,
-    /// Propeller diameter D [m]. Not given; 0.2925 so that T* = 100 N m is carried at
+    /// Propeller diameter D [m]. Not given; 0.29324 so that T* = 100 N m is carried at
     /// omega_r = 377 rad/s, as Table 4.2 reports (eq. 4.31).
     pub diameter: f64,
     /// Maximum rotor flux lambda_r,max [V s]. Not given; 1.261, which puts the torque threshold at
@@ -67,7 +67,7 @@ impl Default for MotorSideParams {
             inertia: 0.5,
             kq0: 0.05,
             rho: 1025.0,
-            diameter: 0.2925,
+            diameter: 0.29324,
             lambda_r_max: 1.261,
             trim_tau: 0.05,
             estimate_factor: 1.0,
