@@ -137,3 +137,32 @@ fn generator_bode_matches_nonlinear_model() {
         compare("generator closed loop", &cl, &sim);
     }
 }
+
+/// Stability margins where a loop is closed: the droop loop and the torque-trim loop are stable
+/// with positive gain and phase margins, consistent with their closed-loop poles.
+#[test]
+fn margins_agree_with_closed_loop_poles() {
+    use aes_core::stability::generator_side::GeneratorSideParams;
+    let g = GeneratorSideParams::default();
+    let ss = g.steady_state(377.0, 28.5, 45.0).unwrap();
+    let m = g.droop_margins(&ss);
+    println!("droop loop: {m:?}");
+    assert!(g.closed_loop(&ss).is_stable());
+    assert!(m.phase_margin_deg.unwrap() > 0.0);
+    if let Some(gm) = m.gain_margin_db {
+        assert!(gm > 0.0);
+    }
+    let p = MotorSideParams::default();
+    let ss = p.steady_state(100.0).unwrap();
+    let m = p.trim_margins(&ss);
+    println!("torque-trim loop: {m:?}");
+    assert!(p.closed_loop(&ss).is_stable());
+    assert!(m.phase_margin_deg.unwrap() > 0.0);
+    // A trim ten times faster: the margins and the closed-loop poles agree on stability.
+    let mut fast = p.clone();
+    fast.trim_tau = p.trim_tau / 10.0;
+    let mf = fast.trim_margins(&ss);
+    let stable = fast.closed_loop(&ss).is_stable();
+    println!("tau / 10: {mf:?}, closed loop stable: {stable}");
+    assert_eq!(stable, mf.phase_margin_deg.unwrap() > 0.0 && mf.gain_margin_db.is_none_or(|g| g > 0.0));
+}

@@ -147,7 +147,7 @@ fn ips(cmd: IpsCmd) -> Result<serde_json::Value, String> {
                 .ok_or_else(|| format!("--set '{s}': expected NAME=VALUE"))
         })
         .collect::<Result<_, _>>()?;
-    let (steady, sys) = match point.side {
+    let (steady, sys, margins) = match point.side {
         Side::Generator => {
             let p = load_params(&GeneratorSideParams::default(), &overrides)?;
             let s = p.steady_state(point.omega, point.vfd, point.load)?;
@@ -158,7 +158,8 @@ fn ips(cmd: IpsCmd) -> Result<serde_json::Value, String> {
                 "parameters": p,
             });
             let sys = loop_kind.map(|l| if l == Loop::Open { p.open_loop(&s) } else { p.closed_loop(&s) });
-            (steady, sys)
+            let margins = (loop_kind == Some(Loop::Closed)).then(|| p.droop_margins(&s));
+            (steady, sys, margins)
         }
         Side::Motor => {
             let p = load_params(&MotorSideParams::default(), &overrides)?;
@@ -169,10 +170,14 @@ fn ips(cmd: IpsCmd) -> Result<serde_json::Value, String> {
                 "above_threshold": s.above_threshold, "t_threshold": s.t_threshold, "parameters": p,
             });
             let sys = loop_kind.map(|l| if l == Loop::Open { p.open_loop(&s) } else { p.closed_loop(&s) });
-            (steady, sys)
+            let margins = (loop_kind == Some(Loop::Closed)).then(|| p.trim_margins(&s));
+            (steady, sys, margins)
         }
     };
     let mut out = serde_json::json!({ "steady_state": steady });
+    if let Some(m) = margins {
+        out["margins"] = serde_json::to_value(m).map_err(|e| e.to_string())?;
+    }
     if let Some(sys) = &sys {
         out["linear"] = sys.to_json_value();
     }

@@ -439,6 +439,13 @@ impl GeneratorSideParams {
         LinearSystem { a, b, c, d: DMatrix::zeros(1, 1), states }
     }
 
+    /// Margins of the droop loop: L(s) = K(s) G(s), K the PI of eq. 4.48, G the open loop.
+    pub fn droop_margins(&self, ss: &GeneratorSteadyState) -> super::Margins {
+        let ol = self.open_loop(ss);
+        let (kp, ki) = (self.kp_v, self.ki_v);
+        super::margins(&|w: f64| ol.response(w) * num_complex::Complex64::new(kp, -ki / w), 1e-3, 1e6)
+    }
+
     /// Numerical Jacobian of the nonlinear open-loop model at the steady state.
     pub fn numerical_open_loop(&self, ss: &GeneratorSteadyState) -> DMatrix<f64> {
         numerical_jacobian(&|x: &[f64]| self.rhs(x, ss.v_fd, ss.omega, ss.i_load), &ss.x)

@@ -216,3 +216,61 @@ where
     }
     serde_path_to_error::deserialize(v).map_err(|e| format!("{}: {}", e.path(), e.inner()))
 }
+
+/// Classical stability margins of a loop transfer function L(j omega) (negative feedback).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Margins {
+    /// Gain margin [dB] at the lowest phase crossover (L real and negative); None if none.
+    pub gain_margin_db: Option<f64>,
+    pub phase_crossover_rad_s: Option<f64>,
+    /// Phase margin [deg] at the lowest gain crossover (|L| = 1); None if none.
+    pub phase_margin_deg: Option<f64>,
+    pub gain_crossover_rad_s: Option<f64>,
+}
+
+/// Margins of `l` searched on a logarithmic grid from `w_lo` to `w_hi` [rad/s], crossings refined
+/// by bisection.
+pub fn margins(l: &dyn Fn(f64) -> Complex64, w_lo: f64, w_hi: f64) -> Margins {
+    let grid = log_space(w_lo, w_hi, 4000);
+    let refine = |a: f64, b: f64, g: &dyn Fn(f64) -> f64| {
+        let (mut a, mut b) = (a, b);
+        let ga = g(a);
+        for _ in 0..100 {
+            let m = (a * b).sqrt();
+            if (g(m) > 0.0) == (ga > 0.0) {
+                a = m;
+            } else {
+                b = m;
+            }
+        }
+        (a * b).sqrt()
+    };
+    let mut out = Margins {
+        gain_margin_db: None,
+        phase_crossover_rad_s: None,
+        phase_margin_deg: None,
+        gain_crossover_rad_s: None,
+    };
+    let mag = |w: f64| l(w).norm() - 1.0;
+    let im = |w: f64| l(w).im;
+    for k in 1..grid.len() {
+        let (a, b) = (grid[k - 1], grid[k]);
+        if out.gain_crossover_rad_s.is_none() && (mag(a) > 0.0) != (mag(b) > 0.0) {
+            let w = refine(a, b, &mag);
+            let mut pm = l(w).arg().to_degrees() + 180.0;
+            if pm > 180.0 {
+                pm -= 360.0;
+            }
+            out.gain_crossover_rad_s = Some(w);
+            out.phase_margin_deg = Some(pm);
+        }
+        if out.phase_crossover_rad_s.is_none() && (im(a) > 0.0) != (im(b) > 0.0) {
+            let w = refine(a, b, &im);
+            if l(w).re < 0.0 {
+                out.phase_crossover_rad_s = Some(w);
+                out.gain_margin_db = Some(-20.0 * l(w).norm().log10());
+            }
+        }
+    }
+    out
+}

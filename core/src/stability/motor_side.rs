@@ -380,6 +380,19 @@ impl MotorSideParams {
         }
     }
 
+    /// Margins of the torque-trim loop: L(s) = G(s) / (tau s), G the path from the torque
+    /// reference T** to the measured torque with the equivalent control in place.
+    pub fn trim_margins(&self, ss: &MotorSteadyState) -> super::Margins {
+        let cl = self.closed_loop(ss);
+        // The plant: the first five rows of the closed loop, T** (state 6) as its input.
+        let a = cl.a.view((0, 0), (5, 5)).into_owned();
+        let b = cl.a.view((0, 5), (5, 1)).into_owned();
+        let c = cl.c.view((0, 0), (1, 5)).into_owned();
+        let plant = LinearSystem { a, b, c, d: DMatrix::zeros(1, 1), states: vec![] };
+        let tau = self.trim_tau;
+        super::margins(&|w: f64| plant.response(w) / num_complex::Complex64::new(0.0, tau * w), 1e-3, 1e6)
+    }
+
     /// Numerical Jacobians of the nonlinear open-loop and closed-loop dynamics at the steady state
     /// (for checking the analytic linearizations).
     pub fn numerical_open_loop(&self, ss: &MotorSteadyState) -> DMatrix<f64> {
