@@ -5,7 +5,8 @@
 #                         http://127.0.0.1:${PORT:-8080}
 #   ./build.sh build      set up and build only (native CLI and www/pkg)
 #   ./build.sh test       set up, then rustfmt check, clippy (warnings denied), every native test
-#                         (release mode) and the wasm-bindgen tests in Node
+#                         (release mode), the wasm-bindgen tests in Node and the browser
+#                         end-to-end test in headless Chromium (screenshots in target/)
 #   ./build.sh bench      simulated seconds per wall second of the start-up preset
 #
 # Safe on a fresh machine that reaches only the package registries: every tool comes from
@@ -56,6 +57,17 @@ setup() {
   fi
 }
 
+ensure_chromium() {
+  if [ -x "${CHROMIUM:-/usr/bin/chromium}" ]; then
+    return
+  fi
+  say "installing Debian's chromium for the browser test"
+  local sudo=""
+  [ "$(id -u)" = 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq chromium > /dev/null
+}
+
 build_web() {
   say "building the wasm (release) into www/pkg"
   # no-install: wasm-pack uses the wasm-bindgen on PATH and never downloads anything.
@@ -88,8 +100,24 @@ run_tests() {
   cargo test --workspace --release 2>&1 | tee "$log"
   say "wasm-bindgen tests in Node"
   (cd web && wasm-pack test --node --release --mode no-install) 2>&1 | tee -a "$log"
+  say "browser end-to-end test (headless Chromium)"
+  ensure_chromium
+  build_web
+  local port shots
+  port="$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+  shots="$PWD/target/e2e-screenshots"
+  python3 -m http.server --bind 127.0.0.1 --directory www "$port" > /dev/null 2>&1 &
+  local server=$!
+  trap 'kill $server 2>/dev/null' EXIT
+  for _ in $(seq 1 50); do
+    python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/')" 2>/dev/null && break
+    sleep 0.1
+  done
+  node tests/e2e/e2e.mjs "http://127.0.0.1:$port/" "$shots" 2>&1 | tee -a "$log"
+  kill "$server" 2>/dev/null || true
+  trap - EXIT
   # One closing line for the whole suite (pipefail has already stopped us on any failure).
-  awk '/^test result:/ { p += $4; f += $6 } END { printf "all tests: %d passed, %d failed\n", p, f }' "$log"
+  awk '/^test result:/ { p += $4; f += $6 } /^e2e: / { p += $2; f += $4 } END { printf "all tests: %d passed, %d failed\n", p, f }' "$log"
   rm -f "$log"
 }
 

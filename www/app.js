@@ -1,80 +1,583 @@
-// Main thread: the form and the results. The simulation runs in worker.js, never here.
+// The page: scenario form, runs in a web worker, plots, share links, exports, stability tab.
+import uPlot from './vendor/uPlot.esm.js';
+
 const $ = (id) => document.getElementById(id);
-const SHOWN = [
-  ['ship_speed_kn', 'ship speed [kn]'],
-  ['prop_rpm', 'propeller speed [rpm]'],
-  ['turbine_speed_pu', 'turbine speed [pu]'],
-  ['bus_voltage_pu', 'bus voltage [pu]'],
-  ['im_power_pu', 'motor power [pu of 38 MW]'],
-  ['thrust_kn', 'thrust [kN]'],
+const LINK_VERSION = 1;
+const MAX_LINK_CHARS = 16000;
+const MAX_LINK_DEPTH = 12;
+const STORE_KEY = 'aes-sim/edits/v1';
+
+// Parameters shown in the form, grouped as a naval engineer thinks of them. [path, label, unit, help]
+const FIELDS = [
+  ['Ship and hull', [
+    ['ship.mass_kg', 'Displaced mass', 'kg', 'Table 5.1: 7e6.'],
+    ['ship.wetted_area_m2', 'Wetted area', 'm²', 'Table 5.1: 5200.'],
+    ['ship.drag_coeff', 'Drag coefficient C_r', '-', 'Eq. 2.15, Table 5.1: 3e-3.'],
+    ['ship.wake_fraction', 'Wake fraction w', '-', 'Eq. 2.12, Table 5.1: 0.1.'],
+    ['ship.thrust_deduction', 'Thrust deduction t', '-', 'Eq. 2.15, Table 5.1: 0.1.'],
+    ['hull.model', 'Hull model', '', 'surge: straight line (ch. 2.3); maneuvering: Abkowitz 3-DOF with rudder (ch. 2.4).', ['surge', 'maneuvering']],
+  ]],
+  ['Propulsion plant', [
+    ['propeller.model', 'Propeller model', '', 'B-series (first quadrant) or four-quadrant B4-70 (needed for braking).', ['b_series', 'four_quadrant']],
+    ['propeller.diameter_m', 'Propeller diameter', 'm', 'Table 5.1: 4.5.'],
+    ['propeller.pitch_ratio', 'Pitch ratio P/D', '-', 'Table 5.1: 1.0.'],
+    ['propeller.blades', 'Blades', '-', 'B-series range 2 to 7.'],
+    ['plant.turbine.inertia_kg_m2', 'Turbine inertia', 'kg m²', 'Table 5.2: 400.'],
+    ['plant.motor.rated_power_w', 'Motor rating', 'W', '38 MW (ch. 2.2.2).'],
+    ['plant.dc_link.capacitance_f', 'Bus capacitance', 'F', 'Table 5.4: 0.037.'],
+    ['plant.dc_link.rectifier', 'Rectifier', '', 'diode: power flows one way; reversible: it can flow back to the turbines.', ['diode', 'reversible']],
+    ['plant.dc_link.brake_resistor_ohm', 'Brake resistor', 'Ω', '0 for none.'],
+  ]],
+  ['Controllers', [
+    ['controllers.governor.kp', 'Governor K_p,t', '1/pu', 'Throttle per per-unit speed error.'],
+    ['controllers.governor.slew_rate_per_s', 'Throttle slew limit', '1/s', 'Fuel schedule limit.'],
+    ['controllers.field.kp', 'Field K_p,v', 'V/V', 'Ch. 5.2.1 baseline 1e-4.'],
+    ['controllers.field.ki', 'Field K_i,v', 'V/(V s)', 'Ch. 5.2.1 baseline 5e-4.'],
+    ['controllers.speed.shaft_ramp_rpm_per_s', 'Shaft ramp', 'rpm/s', '0 for a step.'],
+    ['controllers.slip.allow_braking', 'Allow AC braking', '', 'Negative slip: the motor brakes as a generator.', ['false', 'true']],
+    ['controllers.autopilot.turn_rate_deg_s', 'Default turn rate', 'deg/s', 'Used when a heading order gives none.'],
+  ]],
+  ['Simulation', [
+    ['initial.speed_kn', 'Initial speed', 'kn', '0 starts from idle.'],
+    ['sim.duration_s', 'Duration', 's', 'Simulated time.'],
+    ['sim.dt_s', 'Time step', 's', 'RK4 step, 1 ms.'],
+    ['sim.record_interval_s', 'Record every', 's', 'A whole number of steps.'],
+    ['sim.seed', 'Seed', '-', 'Fixes every random number.'],
+  ]],
 ];
+
+// What each study shows, for a class.
+const ABOUT_EXTRA = {
+  'startup': 'Watch the power inventory: each stage passes on a little less than it gets (Table 5.6).',
+  'acceleration': 'Compare turbine speed and bus voltage with Fig. 5-4; then try the higher field gains.',
+  'acceleration-high-gains': 'The bus voltage now recovers faster than the turbine speed (Fig. 5-5).',
+  'ac-braking': 'Motor power turns negative: the ship drives the propellers and the brake resistor burns the energy (Fig. 5-7).',
+  'ac-braking-unbuffered': 'No resistor: the energy goes back into the turbines, which overspeed with the throttle shut (Fig. 5-8).',
+  'turn-45': 'The ship track, rudder and the extra motor power needed to hold speed (Figs. 5-9, 5-10).',
+  'turn-90': 'A longer turn at the same rate: similar extra power, for longer.',
+  'turn-360': 'A full turn in calm water (Fig. 5-16 without the waves); note the counter-rudder in the steady turn.',
+};
+
+const PLOTS = [
+  { title: 'Ship speed [kn]', series: [['ship_speed_kn', 'speed', '#0b5cad'], ['speed_cmd_kn', 'ordered', '#999']] },
+  { title: 'Propeller speed [rpm]', series: [['prop_rpm', 'propeller', '#0b5cad'], ['prop_rpm_ref', 'reference', '#999']] },
+  { title: 'Bus voltage and turbine speed [per unit]', series: [['bus_voltage_pu', 'bus voltage', '#c0392b'], ['turbine_speed_pu', 'turbine speed', '#27ae60']] },
+  { title: 'Motor power [per unit of 38 MW]', series: [['im_power_pu', 'motor power', '#8e44ad']] },
+  { title: 'Power inventory [MW]', scale: 1e-6, series: [['p_turbine_w', 'turbine', '#27ae60'], ['p_generator_w', 'generator', '#16a085'], ['p_inverter_w', 'inverter', '#2980b9'], ['p_motor_w', 'motor', '#8e44ad'], ['p_ship_w', 'ship', '#2c3e50']] },
+  { title: 'Rudder and heading [deg]', series: [['rudder_deg', 'rudder', '#d35400'], ['heading_deg', 'heading', '#0b5cad'], ['heading_ref_deg', 'heading order', '#999']] },
+  { title: 'Brake resistor power [MW]', scale: 1e-6, series: [['brake_power_w', 'brake power', '#c0392b']], only: (c) => c.brake_power_w.some((v) => v > 0) },
+];
+
+const SUMMARY_ROWS = [
+  ['ship_speed_kn', 'ship speed [kn]'], ['prop_rpm', 'propeller speed [rpm]'], ['turbine_speed_pu', 'turbine speed [pu]'],
+  ['bus_voltage_pu', 'bus voltage [pu]'], ['im_power_pu', 'motor power [pu]'], ['thrust_kn', 'thrust [kN]'],
+];
+
 let worker = null;
 let presets = {};
+let scenario = null;      // the scenario being edited (object)
+let presetName = 'startup';
+let lastResult = null;    // { summary, csv, scenario }
+let runId = 0;
+let plots = [];
 
-function status(text, isError = false) {
-  $('status').textContent = text;
-  $('status').className = isError ? 'error' : '';
+// ---------- small utilities ----------
+function getPath(obj, path) { return path.split('.').reduce((o, k) => (o == null ? undefined : o[k]), obj); }
+function setPath(obj, path, value) {
+  const keys = path.split('.');
+  let o = obj;
+  for (const k of keys.slice(0, -1)) o = o[k];
+  o[keys[keys.length - 1]] = value;
+}
+function clone(x) { return JSON.parse(JSON.stringify(x)); }
+function status(text, isError = false) { $('status').textContent = text; $('status').className = isError ? 'error' : ''; }
+function notice(text) { $('notice').textContent = text; $('notice').hidden = !text; }
+
+// Only what differs from the preset goes into a link.
+function diff(base, cur) {
+  if (JSON.stringify(base) === JSON.stringify(cur)) return undefined;
+  if (base && cur && typeof base === 'object' && typeof cur === 'object' && !Array.isArray(base) && !Array.isArray(cur)) {
+    const out = {};
+    for (const k of Object.keys(cur)) {
+      const d = diff(base[k], cur[k]);
+      if (d !== undefined) out[k] = d;
+    }
+    return Object.keys(out).length ? out : undefined;
+  }
+  return cur;
+}
+function merge(base, d) {
+  if (d && typeof d === 'object' && !Array.isArray(d) && base && typeof base === 'object' && !Array.isArray(base)) {
+    const out = clone(base);
+    for (const k of Object.keys(d)) out[k] = merge(base[k], d[k]);
+    return out;
+  }
+  return d;
+}
+function depth(text) {
+  let d = 0, max = 0, inStr = false, esc = false;
+  for (const ch of text) {
+    if (inStr) { if (esc) esc = false; else if (ch === '\\') esc = true; else if (ch === '"') inStr = false; continue; }
+    if (ch === '"') inStr = true; else if (ch === '{' || ch === '[') { d++; max = Math.max(max, d); } else if (ch === '}' || ch === ']') d--;
+  }
+  return max;
+}
+function b64urlEncode(s) {
+  const bytes = new TextEncoder().encode(s);
+  let bin = '';
+  for (const b of bytes) bin += String.fromCharCode(b);
+  return btoa(bin).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+function b64urlDecode(s) {
+  if (!/^[A-Za-z0-9_-]*$/.test(s)) throw new Error('the scenario part holds characters a link never has');
+  const bin = atob(s.replace(/-/g, '+').replace(/_/g, '/'));
+  return new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(bin, (c) => c.charCodeAt(0)));
 }
 
+// ---------- worker ----------
+const pending = new Map();
 function startWorker() {
   worker = new Worker('worker.js', { type: 'module' });
   worker.onmessage = (ev) => {
     const m = ev.data;
-    if (m.type === 'ready') {
-      presets = m.presets;
-      $('preset').replaceChildren(...Object.keys(presets).map((n) => new Option(n, n)));
-      $('preset').onchange();
-      status('Ready.');
-    } else if (m.type === 'progress') {
-      $('progress').value = m.fraction;
-    } else if (m.type === 'done') {
-      $('run').disabled = false;
-      $('cancel').disabled = true;
-      $('progress').value = 1;
-      showSummary(JSON.parse(m.summary));
-      status(`Done: ${m.simulated_s} s simulated in ${(m.wall_ms / 1000).toFixed(2)} s.`);
-    } else if (m.type === 'error') {
-      $('run').disabled = false;
-      $('cancel').disabled = true;
-      status(m.message, true);
-    }
+    if (m.type === 'ready') { onReady(m); return; }
+    const cb = pending.get(m.id);
+    if (cb) cb(m);
   };
-  worker.onerror = (e) => status(`Worker failed: ${e.message}`, true);
+  worker.onerror = (e) => status(`The simulator failed to load: ${e.message || e}`, true);
+}
+function ask(msg, onMessage) {
+  const id = ++runId;
+  pending.set(id, onMessage);
+  worker.postMessage({ ...msg, id });
+  return id;
+}
+function validate(sc) {
+  return new Promise((resolve) => ask({ type: 'validate', scenario: JSON.stringify(sc) }, (m) => { pending.delete(m.id); resolve(m.errors); }));
+}
+
+// ---------- the form ----------
+function buildForm() {
+  const form = $('form');
+  form.replaceChildren();
+  for (const [group, fields] of FIELDS) {
+    const fs = document.createElement('fieldset');
+    const lg = document.createElement('legend');
+    lg.textContent = group;
+    fs.append(lg);
+    for (const [path, label, unit, help, choices] of fields) {
+      const id = 'f-' + path.replace(/\./g, '-');
+      const div = document.createElement('div');
+      div.className = 'field';
+      const lab = document.createElement('label');
+      lab.htmlFor = id;
+      lab.textContent = unit ? `${label} [${unit}]` : label;
+      let input;
+      if (choices) {
+        input = document.createElement('select');
+        for (const c of choices) input.append(new Option(c, c));
+      } else {
+        input = document.createElement('input');
+        input.type = 'number';
+        input.step = 'any';
+      }
+      input.id = id;
+      input.dataset.path = path;
+      input.setAttribute('aria-describedby', id + '-help');
+      input.addEventListener('change', () => onFieldChange(input));
+      const h = document.createElement('div');
+      h.className = 'help';
+      h.id = id + '-help';
+      h.textContent = help;
+      const err = document.createElement('div');
+      err.className = 'ferr';
+      err.id = id + '-err';
+      div.append(lab, input, h, err);
+      fs.append(div);
+    }
+    form.append(fs);
+  }
+  const fs = document.createElement('fieldset');
+  const lg = document.createElement('legend');
+  lg.textContent = 'Maneuver (orders)';
+  const ta = document.createElement('textarea');
+  ta.id = 'f-commands';
+  ta.rows = 6;
+  ta.setAttribute('aria-label', 'Orders as JSON: time [s], speed [kn], heading [deg], heading rate [deg/s]');
+  ta.addEventListener('change', () => {
+    try {
+      scenario.commands = JSON.parse(ta.value);
+      saveEdits();
+      markErrors([]);
+    } catch (e) {
+      markErrors([{ path: 'commands', value: '', message: 'not valid JSON: ' + e.message }]);
+    }
+  });
+  const h = document.createElement('div');
+  h.className = 'help';
+  h.textContent = 'Orders: [{"t_s": 0, "speed_kn": 25}, {"t_s": 10, "heading_deg": 90, "heading_rate_deg_s": 0.5}]';
+  fs.append(lg, ta, h);
+  form.append(fs);
+}
+
+function fillForm() {
+  for (const input of $('form').querySelectorAll('[data-path]')) {
+    const v = getPath(scenario, input.dataset.path);
+    input.value = v === undefined ? '' : String(v);
+  }
+  $('f-commands').value = JSON.stringify(scenario.commands, null, 1);
+}
+
+function onFieldChange(input) {
+  const path = input.dataset.path;
+  let v = input.value;
+  if (input.tagName === 'SELECT') {
+    v = v === 'true' ? true : v === 'false' ? false : v;
+  } else {
+    v = Number(v);
+    if (input.value.trim() === '' || !Number.isFinite(v)) {
+      markErrors([{ path, value: input.value, message: 'must be a number' }]);
+      return;
+    }
+  }
+  setPath(scenario, path, v);
+  saveEdits();
+  markErrors([]);
+}
+
+function markErrors(errors) {
+  for (const e of $('form').querySelectorAll('.ferr')) e.textContent = '';
+  const loose = [];
+  for (const e of errors) {
+    const el = $('f-' + e.path.replace(/\./g, '-') + '-err');
+    if (el) el.textContent = e.message; else loose.push(`${e.path}${e.value ? ' = ' + e.value : ''}: ${e.message}`);
+  }
+  if (loose.length) status(loose.join('\n'), true);
+}
+
+function saveEdits() {
+  try { localStorage.setItem(STORE_KEY, JSON.stringify({ preset: presetName, scenario })); } catch (_) { /* storage full or blocked */ }
+}
+
+function selectPreset(name, sc) {
+  presetName = name;
+  $('preset').value = name;
+  scenario = sc ? sc : JSON.parse(presets[name]);
+  $('about').textContent = `${JSON.parse(presets[name]).description} ${ABOUT_EXTRA[name] || ''}`;
+  fillForm();
+  markErrors([]);
+}
+
+// ---------- links ----------
+function linkFor() {
+  const d = diff(JSON.parse(presets[presetName]), scenario);
+  let hash = `#v=${LINK_VERSION}&preset=${encodeURIComponent(presetName)}`;
+  if (d !== undefined) hash += `&d=${b64urlEncode(JSON.stringify(d))}`;
+  return location.origin + location.pathname + hash;
+}
+
+async function fromLink() {
+  const hash = location.hash.slice(1);
+  if (!hash) return null;
+  const fail = (why) => { notice(`This link could not be used: ${why}. Showing the start-up study instead.`); return { failed: true }; };
+  if (hash.length > MAX_LINK_CHARS) return fail(`it is ${hash.length} characters long (at most ${MAX_LINK_CHARS})`);
+  const params = new URLSearchParams(hash);
+  const v = Number(params.get('v'));
+  if (!Number.isInteger(v) || v < 1) return fail('it has no version number');
+  if (v > LINK_VERSION) return fail(`it was made by a newer version of aes-sim (link version ${v}, this page reads ${LINK_VERSION})`);
+  const name = params.get('preset');
+  if (!name || !Object.prototype.hasOwnProperty.call(presets, name)) return fail(`it names an unknown study "${String(name).slice(0, 40)}"`);
+  let sc = JSON.parse(presets[name]);
+  const d = params.get('d');
+  if (d) {
+    let text;
+    try { text = b64urlDecode(d); } catch (e) { return fail(`its scenario part is damaged (${e.message})`); }
+    if (depth(text) > MAX_LINK_DEPTH) return fail('its scenario is nested too deeply');
+    let parsed;
+    try { parsed = JSON.parse(text); } catch (_) { return fail('its scenario part is not valid JSON (truncated?)'); }
+    if (parsed === null || typeof parsed !== 'object' || Array.isArray(parsed)) return fail('its scenario part is not an object');
+    sc = merge(sc, parsed);
+  }
+  const errors = await validate(sc);
+  if (errors.length) return fail(errors.slice(0, 3).map((e) => `${e.path}${e.value ? ' = ' + e.value : ''}: ${e.message}`).join('; '));
+  return { name, scenario: sc };
+}
+
+// ---------- running ----------
+function run() {
+  const sc = clone(scenario);
+  $('run').disabled = true;
+  $('cancel').disabled = false;
+  $('progress').value = 0;
+  $('eta').textContent = '';
+  status('Running...');
+  const started = performance.now();
+  ask({ type: 'run', scenario: JSON.stringify(sc) }, (m) => {
+    if (m.type === 'progress') {
+      $('progress').value = m.fraction;
+      const elapsed = (performance.now() - started) / 1000;
+      if (elapsed > 0.5 && m.fraction > 0.02) $('eta').textContent = `about ${Math.max(0, elapsed * (1 - m.fraction) / m.fraction).toFixed(1)} s left`;
+      return;
+    }
+    pending.delete(m.id);
+    $('run').disabled = false;
+    $('cancel').disabled = true;
+    $('eta').textContent = '';
+    if (m.type === 'error') {
+      // A failed run keeps the form and the earlier results.
+      status(m.message, true);
+      const errs = [];
+      for (const line of m.message.split('\n')) {
+        const mm = /^([\w.]+) = (.*?): (.*)$/.exec(line);
+        if (mm) errs.push({ path: mm[1], value: mm[2], message: mm[3] });
+      }
+      if (errs.length) markErrors(errs);
+      return;
+    }
+    $('progress').value = 1;
+    const summary = JSON.parse(m.summary);
+    lastResult = { summary, csv: m.csv, scenario: sc };
+    $('export-csv').disabled = false;
+    $('export-json').disabled = false;
+    showSummary(summary);
+    drawPlots(m.columns);
+    status(`Done: ${summary.final_time_s} s simulated in ${(m.wall_ms / 1000).toFixed(2)} s (${(summary.final_time_s / (m.wall_ms / 1000)).toFixed(0)} times real time).`);
+  });
+}
+
+function cancel() {
+  worker.terminate();
+  pending.clear();
+  $('run').disabled = true;
+  $('cancel').disabled = true;
+  $('eta').textContent = '';
+  status('Cancelled.');
+  startWorker();
 }
 
 function showSummary(s) {
   const body = $('summary').querySelector('tbody');
-  body.replaceChildren(...SHOWN.map(([key, label]) => {
+  body.replaceChildren(...SUMMARY_ROWS.map(([key, label]) => {
     const v = s.signals[key];
     const tr = document.createElement('tr');
-    const cells = [label, v.final, v.min, v.max].map((x, i) => {
-      const td = document.createElement(i === 0 ? 'th' : 'td');
-      td.textContent = i === 0 ? x : Number(x).toPrecision(4);
-      return td;
-    });
-    tr.append(...cells);
+    const th = document.createElement('th');
+    th.scope = 'row';
+    th.textContent = label;
+    tr.append(th, ...[v.final, v.min, v.max].map((x) => { const td = document.createElement('td'); td.textContent = Number(x).toPrecision(4); return td; }));
     return tr;
   }));
-  $('summary').hidden = false;
+  $('warnings').replaceChildren(...(s.warnings || []).map((w) => { const li = document.createElement('li'); li.textContent = w; return li; }));
+  $('summary-box').hidden = false;
 }
 
-$('preset').onchange = () => {
-  const sc = presets[$('preset').value];
-  $('description').textContent = sc ? JSON.parse(sc).description : '';
-};
-$('run').onclick = () => {
-  $('run').disabled = true;
-  $('cancel').disabled = false;
-  $('progress').value = 0;
-  status('Running...');
-  worker.postMessage({ type: 'run', scenario: presets[$('preset').value] });
-};
-$('cancel').onclick = () => {
-  // Ending the worker is the only cancel that always works; a fresh one takes its place.
-  worker.terminate();
+function plotWidth(box = 'plots') { return Math.max(420, Math.min(720, ($(box).clientWidth || 900) / 2 - 24)); }
+
+function drawPlots(cols) {
+  for (const p of plots) p.destroy && p.destroy();
+  plots = [];
+  const box = $('plots');
+  box.replaceChildren();
+  const t = cols.t_s;
+  // Ship track, equal scale, with time markers and heading arrows.
+  const tw = document.createElement('div');
+  tw.className = 'plot';
+  tw.innerHTML = '<h3>Ship track [m] (north up, east right; marks every 60 s)</h3>';
+  const cv = document.createElement('canvas');
+  cv.className = 'track';
+  cv.setAttribute('role', 'img');
+  cv.setAttribute('aria-label', 'Ship track seen from above');
+  tw.append(cv);
+  box.append(tw);
+  drawTrack(cv, cols);
+  for (const spec of PLOTS) {
+    if (spec.only && !spec.only(cols)) continue;
+    const k = spec.scale || 1;
+    const data = [t, ...spec.series.map(([name]) => (k === 1 ? cols[name] : cols[name].map((v) => v * k)))];
+    const div = document.createElement('div');
+    div.className = 'plot';
+    const h = document.createElement('h3');
+    h.textContent = spec.title;
+    div.append(h);
+    box.append(div);
+    const opts = {
+      width: plotWidth(),
+      height: 220,
+      scales: { x: { time: false } },
+      axes: [{ label: 'time [s]' }, { label: spec.title.replace(/^.*\[/, '[') }],
+      series: [{ label: 't [s]' }, ...spec.series.map(([, label, color]) => ({ label, stroke: color, width: 1.5 }))],
+    };
+    plots.push(new uPlot(opts, data, div));
+  }
+}
+
+function drawTrack(cv, cols) {
+  const dpr = window.devicePixelRatio || 1;
+  const w = cv.clientWidth || 460, h = 320;
+  cv.width = w * dpr; cv.height = h * dpr;
+  const g = cv.getContext('2d');
+  g.scale(dpr, dpr);
+  const xs = cols.y_m, ys = cols.x_m; // east to the right, north up
+  let [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+  const span = Math.max(x1 - x0, y1 - y0, 200) * 1.1;
+  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+  const s = Math.min(w, h) / span;
+  const px = (x) => w / 2 + (x - cx) * s, py = (y) => h / 2 - (y - cy) * s;
+  g.strokeStyle = '#ddd'; g.lineWidth = 1;
+  g.strokeRect(0.5, 0.5, w - 1, h - 1);
+  g.strokeStyle = '#0b5cad'; g.lineWidth = 2;
+  g.beginPath();
+  xs.forEach((x, i) => (i ? g.lineTo(px(x), py(ys[i])) : g.moveTo(px(x), py(ys[i]))));
+  g.stroke();
+  g.fillStyle = '#1b1b1b'; g.font = '11px system-ui';
+  const t = cols.t_s;
+  let next = 0;
+  for (let i = 0; i < t.length; i++) {
+    if (t[i] + 1e-9 < next) continue;
+    next += 60;
+    const hd = cols.heading_deg[i] * Math.PI / 180;
+    const X = px(xs[i]), Y = py(ys[i]);
+    g.beginPath(); g.arc(X, Y, 3, 0, 2 * Math.PI); g.fill();
+    g.beginPath(); g.moveTo(X, Y); g.lineTo(X + 14 * Math.sin(hd), Y - 14 * Math.cos(hd)); g.stroke();
+    g.fillText(`${t[i].toFixed(0)} s`, X + 5, Y - 5);
+  }
+  g.fillStyle = '#4a4a4a';
+  g.fillText(`${(span / 1.1).toFixed(0)} m across`, 8, h - 8);
+}
+
+function download(name, text, type) {
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(new Blob([text], { type }));
+  a.download = name;
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+}
+
+// ---------- stability tab ----------
+let ipsPlots = [];
+let ipsTimer = null;
+function ipsArgs() {
+  return {
+    side: $('ips-side').value, closed: $('ips-loop').value === 'closed',
+    omega: 377, vfd: Number($('ips-vfd').value), load: Number($('ips-load').value), torque: Number($('ips-torque').value),
+    from_hz: 0.01, to_hz: 1000, points: 300,
+  };
+}
+function ipsUpdate() {
+  clearTimeout(ipsTimer);
+  ipsTimer = setTimeout(() => {
+    const a = ipsArgs();
+    for (const el of document.querySelectorAll('.ips-motor')) el.hidden = a.side !== 'motor';
+    for (const el of document.querySelectorAll('.ips-gen')) el.hidden = a.side !== 'generator';
+    $('ips-torque-out').textContent = a.torque;
+    $('ips-load-out').textContent = a.load;
+    ask({ type: 'ips', args: a }, (m) => {
+      pending.delete(m.id);
+      if (m.error) { $('ips-status').textContent = m.error; $('ips-status').className = 'error'; return; }
+      $('ips-status').textContent = m.result.stable ? 'Stable: every pole in the left half plane.' : 'UNSTABLE: a pole in the right half plane.';
+      $('ips-status').className = m.result.stable ? '' : 'error';
+      showIps(m.result, a);
+    });
+  }, 60);
+}
+function showIps(r, a) {
+  const st = r.steady_state;
+  const keys = a.side === 'motor'
+    ? [['t_m0', 'T_m0 [N m]'], ['t_ref0', 'T** [N m]'], ['omega_r0', 'ω_r0 [rad/s]'], ['omega_s0', 'ω_s0 [rad/s]'], ['i_s_mag', '|i_s| [A]'], ['i_r_mag', '|i_r| [A]'], ['v_s_mag', '|v_s| [V]']]
+    : [['v_gs_mag', '|v_gs| [V]'], ['i_gs_mag', '|i_gs| [A]'], ['i_fd', 'i_fd [A]'], ['v_dc_rect', 'ṽ_dc [V]'], ['v_dc', 'v_dc, bus [V]'], ['i_dc', 'i_dc [A]'], ['cos_phi', 'cos φ']];
+  $('ips-steady').querySelector('tbody').replaceChildren(...keys.map(([k, label]) => {
+    const tr = document.createElement('tr');
+    const th = document.createElement('th'); th.scope = 'row'; th.textContent = label;
+    const td = document.createElement('td'); td.textContent = Number(st[k]).toPrecision(5);
+    tr.append(th, td); return tr;
+  }));
+  $('ips-poles').querySelector('tbody').replaceChildren(...r.poles.map((p) => {
+    const tr = document.createElement('tr');
+    tr.append(...[p.re, p.im, p.damping].map((x) => { const td = document.createElement('td'); td.textContent = Number(x).toPrecision(4); return td; }));
+    return tr;
+  }));
+  for (const p of ipsPlots) p.destroy();
+  ipsPlots = [];
+  const box = $('ips-plots');
+  box.replaceChildren();
+  const f = r.bode.frequency_hz;
+  const what = a.closed ? (a.side === 'motor' ? 'torque command to torque' : 'voltage set point to bus voltage') : (a.side === 'motor' ? 'stator voltage to stator current magnitude' : 'field voltage to droop feedback');
+  for (const [key, label] of [['magnitude_db', 'magnitude [dB]'], ['phase_deg', 'phase [deg]']]) {
+    const div = document.createElement('div');
+    div.className = 'plot';
+    const h = document.createElement('h3');
+    h.textContent = `Bode ${label}: ${what}`;
+    div.append(h);
+    box.append(div);
+    ipsPlots.push(new uPlot({
+      width: Math.max(420, Math.min(900, $('ips-plots').clientWidth - 30)), height: 240,
+      scales: { x: { time: false, distr: 3 } },
+      axes: [{ label: 'frequency [Hz]' }, { label }],
+      series: [{ label: 'f [Hz]' }, { label, stroke: '#0b5cad', width: 1.5 }],
+    }, [f, r.bode[key]], div));
+  }
+}
+
+// ---------- start ----------
+let initialised = false;
+async function onReady(m) {
+  if (initialised) {
+    // A fresh worker after a cancel: the form and the results stay as they are.
+    $('run').disabled = false;
+    return;
+  }
+  initialised = true;
+  presets = m.presets;
+  $('preset').replaceChildren(...Object.keys(presets).map((n) => new Option(n, n)));
+  buildForm();
+  const linked = await fromLink();
+  if (linked && !linked.failed) {
+    selectPreset(linked.name, linked.scenario);
+    $('run').disabled = false;
+    run();
+    return;
+  }
+  let restored = false;
+  if (!linked) {
+    try {
+      const saved = JSON.parse(localStorage.getItem(STORE_KEY) || 'null');
+      if (saved && presets[saved.preset] && saved.scenario) {
+        const errors = await validate(saved.scenario);
+        if (!errors.length) { selectPreset(saved.preset, saved.scenario); restored = true; status('Your last edits are back.'); }
+      }
+    } catch (_) { /* ignore broken storage */ }
+  }
+  if (!restored) selectPreset('startup');
   $('run').disabled = false;
-  $('cancel').disabled = true;
-  status('Cancelled.');
-  startWorker();
-};
+  if (!restored) status('Ready. Choose a study and press Run.');
+}
+
+$('form').addEventListener('submit', (e) => e.preventDefault());
+$('preset').addEventListener('change', () => { selectPreset($('preset').value); saveEdits(); });
+$('run').addEventListener('click', run);
+$('cancel').addEventListener('click', cancel);
+$('reset').addEventListener('click', () => { selectPreset(presetName); saveEdits(); status('Back to the preset.'); });
+$('share').addEventListener('click', async () => {
+  const url = linkFor();
+  $('share-url').hidden = false;
+  $('share-url').value = url;
+  $('share-url').select();
+  try { await navigator.clipboard.writeText(url); status('Link copied: it opens this scenario and runs it.'); } catch (_) { status('Link below: copy it by hand.'); }
+});
+$('export-csv').addEventListener('click', () => {
+  if (!lastResult) return;
+  download(`${lastResult.scenario.name}-trace.csv`, `# scenario: ${JSON.stringify(lastResult.scenario)}\n${lastResult.csv}`, 'text/csv');
+});
+$('export-json').addEventListener('click', () => {
+  if (!lastResult) return;
+  download(`${lastResult.scenario.name}-summary.json`, JSON.stringify({ scenario: lastResult.scenario, summary: lastResult.summary }, null, 1), 'application/json');
+});
+for (const [tab, panel, other, otherPanel] of [['tab-sim', 'panel-sim', 'tab-ips', 'panel-ips'], ['tab-ips', 'panel-ips', 'tab-sim', 'panel-sim']]) {
+  $(tab).addEventListener('click', () => {
+    $(tab).setAttribute('aria-selected', 'true'); $(other).setAttribute('aria-selected', 'false');
+    $(panel).hidden = false; $(otherPanel).hidden = true;
+    if (tab === 'tab-ips') ipsUpdate();
+  });
+}
+for (const id of ['ips-side', 'ips-loop', 'ips-torque', 'ips-load', 'ips-vfd']) $(id).addEventListener('input', ipsUpdate);
+window.addEventListener('hashchange', () => location.reload());
 startWorker();

@@ -1,33 +1,60 @@
-// Module worker: loads the wasm and runs scenarios in chunks, reporting progress.
-import init, { presetNames, presetJson, Run } from './pkg/aes_web.js';
+// Module worker: loads the wasm and runs scenarios in chunks, reporting progress. The main thread
+// never runs physics. Cancel = the page terminates this worker and starts a fresh one.
+import init, { presetNames, presetJson, validateScenario, Run, ipsAnalysis } from './pkg/aes_web.js';
 
 await init();
 const presets = {};
 for (const n of presetNames()) presets[n] = presetJson(n);
-postMessage({ type: 'ready', presets });
+postMessage({ type: 'ready', presets, signals: Run.signalNames() });
 
-onmessage = (ev) => {
-  const m = ev.data;
-  if (m.type !== 'run') return;
+function runScenario(id, scenario) {
   const t0 = performance.now();
   let run;
   try {
-    run = new Run(m.scenario);
+    run = new Run(scenario);
     let done = 0;
+    let lastReport = 0;
     while (done < 1) {
       done = run.advance(20000);
-      postMessage({ type: 'progress', fraction: done });
+      const now = performance.now();
+      if (now - lastReport > 100 || done >= 1) {
+        postMessage({ type: 'progress', id, fraction: done, elapsed_ms: now - t0 });
+        lastReport = now;
+      }
     }
     const summary = run.summaryJson();
-    postMessage({
-      type: 'done',
-      summary,
-      simulated_s: JSON.parse(summary).final_time_s,
-      wall_ms: performance.now() - t0,
-    });
+    const columns = {};
+    const transfer = [];
+    for (const name of Run.signalNames()) {
+      const col = run.column(name);
+      columns[name] = col;
+      transfer.push(col.buffer);
+    }
+    postMessage({ type: 'done', id, summary, columns, csv: run.traceCsv(), wall_ms: performance.now() - t0 }, transfer);
   } catch (e) {
-    postMessage({ type: 'error', message: String(e && e.message ? e.message : e) });
+    postMessage({ type: 'error', id, message: String(e && e.message ? e.message : e) });
   } finally {
     if (run) run.free();
+  }
+}
+
+onmessage = (ev) => {
+  const m = ev.data;
+  if (m.type === 'run') {
+    runScenario(m.id, m.scenario);
+  } else if (m.type === 'validate') {
+    try {
+      postMessage({ type: 'validated', id: m.id, errors: validateScenario(m.scenario) });
+    } catch (e) {
+      postMessage({ type: 'validated', id: m.id, errors: [{ path: '(scenario)', value: '', message: String(e) }] });
+    }
+  } else if (m.type === 'ips') {
+    try {
+      const a = m.args;
+      const out = ipsAnalysis(a.side, a.omega, a.vfd, a.load, a.torque, a.closed, a.from_hz, a.to_hz, a.points);
+      postMessage({ type: 'ips', id: m.id, result: JSON.parse(out) });
+    } catch (e) {
+      postMessage({ type: 'ips', id: m.id, error: String(e && e.message ? e.message : e) });
+    }
   }
 };

@@ -150,9 +150,9 @@ impl Abkowitz {
     pub fn new(c: &AbkowitzCoefficients, symmetric: bool, u0: f64, length: f64, rho: f64) -> Abkowitz {
         let e = 1e-5;
         let half_rho = 0.5 * rho;
-        let l3 = half_rho * length.powi(3);
-        let l4 = half_rho * length.powi(4);
-        let l5 = half_rho * length.powi(5);
+        let l3 = half_rho * length * length * length;
+        let l4 = l3 * length;
+        let l5 = l4 * length;
         // Eq. 2.21.
         let m22 = [[-c.yvdot_minus_m * e * l3, -c.yrdot * e * l4], [-c.nvdot * e * l4, -c.nrdot_minus_iz * e * l5]];
         let det = m22[0][0] * m22[1][1] - m22[0][1] * m22[1][0];

@@ -55,3 +55,18 @@ fn stability_tool_in_wasm() {
     assert_eq!(v["bode"]["magnitude_db"].as_array().unwrap().len(), 10);
     assert!(ips_analysis("rotor", 0.0, 0.0, 0.0, 0.0, false, 0.1, 1.0, 3).is_err());
 }
+
+/// Determinism across platforms: the same scenarios run in wasm give the summaries the native build
+/// computed at build time (web/build.rs), bit for bit (every number printed with full precision).
+#[wasm_bindgen_test]
+fn wasm_matches_native_bit_for_bit() {
+    let mut s: serde_json::Value = serde_json::from_str(&preset_json("startup").unwrap()).unwrap();
+    s["sim"]["duration_s"] = serde_json::json!(60.0);
+    assert_eq!(
+        run_summary(&s.to_string()).unwrap(),
+        include_str!(concat!(env!("OUT_DIR"), "/native_startup_60s.json"))
+    );
+    let mut t: serde_json::Value = serde_json::from_str(&preset_json("turn-90").unwrap()).unwrap();
+    t["sim"]["duration_s"] = serde_json::json!(40.0);
+    assert_eq!(run_summary(&t.to_string()).unwrap(), include_str!(concat!(env!("OUT_DIR"), "/native_turn90_40s.json")));
+}

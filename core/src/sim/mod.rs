@@ -367,7 +367,7 @@ impl Simulation {
                         "commands.{}: a turn at {rate} deg/s is faster than the autopilot holds for this hull at \
                          {:.1} knots ({limit:.2} deg/s, controllers.autopilot.max_turn_rate_nondim); it turns at that",
                         self.next_command,
-                        m_s_to_kn(self.x[SURGE].hypot(self.x[SWAY]))
+                        m_s_to_kn(speed_through_water(&self.x))
                     ));
                 }
             }
@@ -378,7 +378,7 @@ impl Simulation {
     /// Fastest turn the autopilot orders at the present speed [rad/s].
     fn max_turn_rate(&self) -> f64 {
         let l = self.scenario.ship.length_m;
-        self.scenario.controllers.autopilot.max_turn_rate_nondim * self.x[SURGE].hypot(self.x[SWAY]).max(1.0) / l
+        self.scenario.controllers.autopilot.max_turn_rate_nondim * speed_through_water(&self.x).max(1.0) / l
     }
 
     /// One sample of every discrete controller.
@@ -390,7 +390,7 @@ impl Simulation {
         let c = &mut self.ctl;
         // Ship speed: calm-water map plus PI trim, then the ramp-limited shaft reference.
         let map = c.map_speed(self.speed_cmd);
-        let err_u = self.speed_cmd - x[SURGE].hypot(x[SWAY]);
+        let err_u = self.speed_cmd - speed_through_water(x);
         let trim_max = c.trim_limit * map;
         let unsat = c.speed_kp * err_u + c.speed_integral;
         let trim = unsat.clamp(-trim_max, trim_max);
@@ -515,7 +515,7 @@ impl Simulation {
         let j = mean_shaft(&|s| o.propeller[s].advance_ratio);
         let row = [
             self.t,
-            m_s_to_kn(x[SURGE].hypot(x[SWAY])),
+            m_s_to_kn(speed_through_water(x)),
             m_s_to_kn(self.speed_cmd),
             mean_shaft(&rpm),
             rpm(0),
@@ -644,4 +644,10 @@ pub fn run(scenario: &Scenario) -> Result<RunResult, SimError> {
 /// Index of an energy account in the energy array given to [`Summary::build`].
 pub fn energy_index(e: Energy) -> usize {
     e as usize
+}
+
+/// Speed through the water sqrt(u^2 + v^2) [m/s]; written out (not `hypot`, which calls the
+/// platform's libm) so native and wasm runs agree to the bit.
+fn speed_through_water(x: &State) -> f64 {
+    (x[SURGE] * x[SURGE] + x[SWAY] * x[SWAY]).sqrt()
 }
