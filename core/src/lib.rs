@@ -17,6 +17,7 @@ pub mod sim;
 pub mod stability;
 pub mod surge;
 pub mod units;
+pub mod waves;
 
 pub use scenario::Scenario;
 pub use sim::{run, RunResult, SimError, Simulation};
