@@ -11,6 +11,7 @@ pub mod motor;
 pub mod presets;
 pub mod prime_mover;
 pub mod propeller;
+pub mod propeller_losses;
 pub mod rudder;
 pub mod scenario;
 pub mod sim;
