@@ -16,6 +16,7 @@ pub mod rudder;
 pub mod scenario;
 pub mod sim;
 pub mod stability;
+pub mod stats;
 pub mod surge;
 pub mod units;
 pub mod waves;
