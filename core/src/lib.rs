@@ -8,6 +8,7 @@ pub mod dc_link;
 pub mod generator;
 pub mod maneuvering;
 pub mod motor;
+pub mod numerics;
 pub mod presets;
 pub mod prime_mover;
 pub mod propeller;

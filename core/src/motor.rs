@@ -188,16 +188,7 @@ impl InductionMotor {
         if f(peak) <= 0.0 {
             return peak;
         }
-        let (mut a, mut b) = (0.0, peak);
-        for _ in 0..60 {
-            let m = 0.5 * (a + b);
-            if f(m) > 0.0 {
-                b = m;
-            } else {
-                a = m;
-            }
-        }
-        0.5 * (a + b)
+        crate::numerics::bisect(f, 0.0, peak, 60)
     }
 
     /// The slip speed in [0, `omega_s_peak`] at which the shaft torque equals `q_target` [N m]

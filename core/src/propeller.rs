@@ -85,19 +85,10 @@ impl OpenWater {
         }
         let mut ow = OpenWater { kt, kq, j_max: 0.0 };
         // Zero-thrust advance ratio by bisection on [0, 2]: kT falls monotonically in the first quadrant.
-        let (mut lo, mut hi) = (0.0, 2.0);
-        if ow.kt(lo) <= 0.0 || ow.kt(hi) > 0.0 {
+        if ow.kt(0.0) <= 0.0 || ow.kt(2.0) > 0.0 {
             return Err("B-series thrust coefficient has no zero in J = 0..2 for this geometry".into());
         }
-        for _ in 0..80 {
-            let mid = 0.5 * (lo + hi);
-            if ow.kt(mid) > 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        ow.j_max = lo;
+        ow.j_max = crate::numerics::bisect(|j| ow.kt(j), 0.0, 2.0, 80);
         Ok(ow)
     }
 
@@ -161,16 +152,7 @@ impl OpenWater {
     pub fn equilibrium_advance_ratio(&self, c_r: f64, n_prop: f64, diameter_m: f64, rho: f64, wake: f64) -> f64 {
         let f =
             |j: f64| n_prop * self.kt(j) * rho * diameter_m * diameter_m * (1.0 - wake) * (1.0 - wake) - c_r * j * j;
-        let (mut lo, mut hi) = (0.0, self.j_max);
-        for _ in 0..100 {
-            let mid = 0.5 * (lo + hi);
-            if f(mid) > 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        0.5 * (lo + hi)
+        crate::numerics::bisect(f, 0.0, self.j_max, 100)
     }
 }
 

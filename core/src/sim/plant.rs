@@ -270,19 +270,11 @@ impl Plant {
             return 0.0;
         }
         let f = |w: f64| N_SHAFTS as f64 * self.propeller_load(w, u).thrust_n - need;
-        let (mut a, mut b) = (0.0, 10.0);
+        let mut b = 10.0;
         while f(b) < 0.0 && b < 1.0e3 {
             b *= 2.0;
         }
-        for _ in 0..100 {
-            let m = 0.5 * (a + b);
-            if f(m) > 0.0 {
-                b = m;
-            } else {
-                a = m;
-            }
-        }
-        0.5 * (a + b)
+        crate::numerics::bisect(f, 0.0, b, 100)
     }
 
     /// Brake resistor power at bus voltage `v_c` [W]: the chopper's duty rises linearly from 0 at
