@@ -499,6 +499,7 @@ function showIps(r, a) {
   ipsPlots = [];
   const box = $('ips-plots');
   box.replaceChildren();
+  box.append(poleMap(r.poles));
   const f = r.bode.frequency_hz;
   const what = a.closed ? (a.side === 'motor' ? 'torque command to torque' : 'voltage set point to bus voltage') : (a.side === 'motor' ? 'stator voltage to stator current magnitude' : 'field voltage to droop feedback');
   for (const [key, label] of [['magnitude_db', 'magnitude [dB]'], ['phase_deg', 'phase [deg]']]) {
@@ -515,6 +516,41 @@ function showIps(r, a) {
       series: [{ label: 'f [Hz]' }, { label, stroke: '#0b5cad', width: 1.5 }],
     }, [f, r.bode[key]], div));
   }
+}
+
+// Pole map: the complex plane with the stable half shaded; poles faster than 2000 /s are listed
+// but left off the picture so the slow ones stay readable.
+function poleMap(poles) {
+  const div = document.createElement('div');
+  div.className = 'plot';
+  const shown = poles.filter((p) => Math.hypot(p.re, p.im) < 2000);
+  const h = document.createElement('h3');
+  h.textContent = `Pole map [1/s, rad/s]${shown.length < poles.length ? ` (${poles.length - shown.length} pole(s) faster than 2000 /s off the picture)` : ''}`;
+  const cv = document.createElement('canvas');
+  cv.className = 'track';
+  cv.setAttribute('role', 'img');
+  cv.setAttribute('aria-label', `Pole map: ${shown.map((p) => `${p.re.toPrecision(3)}${p.im >= 0 ? '+' : ''}${p.im.toPrecision(3)}j`).join(', ')}`);
+  div.append(h, cv);
+  requestAnimationFrame(() => {
+    const dpr = window.devicePixelRatio || 1;
+    const w = cv.clientWidth || 460, hh = 320;
+    cv.width = w * dpr; cv.height = hh * dpr;
+    const g = cv.getContext('2d');
+    g.scale(dpr, dpr);
+    const span = Math.max(1, ...shown.map((p) => Math.max(Math.abs(p.re), Math.abs(p.im)))) * 1.15;
+    const px = (x) => w * 0.85 + (x / span) * w * 0.8, py = (y) => hh / 2 - (y / span) * hh * 0.45;
+    g.fillStyle = '#eef6ee'; g.fillRect(0, 0, px(0), hh);
+    g.strokeStyle = '#888'; g.beginPath(); g.moveTo(0, py(0)); g.lineTo(w, py(0)); g.moveTo(px(0), 0); g.lineTo(px(0), hh); g.stroke();
+    g.strokeStyle = '#c0392b'; g.lineWidth = 2;
+    for (const p of shown) {
+      const X = px(p.re), Y = py(p.im);
+      g.beginPath(); g.moveTo(X - 5, Y - 5); g.lineTo(X + 5, Y + 5); g.moveTo(X + 5, Y - 5); g.lineTo(X - 5, Y + 5); g.stroke();
+    }
+    g.fillStyle = '#4a4a4a'; g.font = '11px system-ui';
+    g.fillText(`${(-span).toPrecision(3)} /s`, 4, py(0) - 4);
+    g.fillText(`${span.toPrecision(3)} rad/s`, px(0) + 4, 12);
+  });
+  return div;
 }
 
 // ---------- start ----------

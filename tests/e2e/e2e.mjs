@@ -131,6 +131,7 @@ await check('stability tab shows poles and Bode plots, and follows the slider', 
   await page.dispatchEvent('#ips-torque', 'input');
   await page.waitForFunction((b) => document.getElementById('ips-steady').textContent !== b, before, { timeout: 10000 });
   assert((await page.$$eval('#ips-plots .uplot', (els) => els.length)) === 2, 'no Bode plots');
+  assert((await page.$$eval('#ips-plots canvas.track', (els) => els.length)) === 1, 'no pole map');
   assert((await page.$$eval('#ips-poles tbody tr', (r) => r.length)) === 6, 'expected 6 poles above the torque threshold');
   await page.screenshot({ path: `${shots}/stability.png` });
 });
