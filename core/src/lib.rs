@@ -6,6 +6,7 @@
 
 pub mod dc_link;
 pub mod generator;
+pub mod hull_sections;
 pub mod maneuvering;
 pub mod motor;
 pub mod numerics;
