@@ -102,7 +102,7 @@ impl FieldController {
         let err = self.v_ref - v_bus;
         let unsat = self.kp * err + self.integral;
         let out = unsat.clamp(0.0, self.v_f_max);
-        if (unsat < self.v_f_max || err < 0.0) && (unsat > 0.0 || err > 0.0) {
+        if crate::numerics::may_integrate(unsat, 0.0, self.v_f_max, err) {
             self.integral += self.ki * err * ts;
         }
         out

@@ -250,7 +250,7 @@ impl SlipController {
     pub fn update(&mut self, err: f64, lower: f64, upper: f64, ts: f64) -> f64 {
         let unsat = self.kp * err + self.integral;
         let mut out = unsat.clamp(-lower, upper);
-        if (unsat < upper || err < 0.0) && (unsat > -lower || err > 0.0) {
+        if crate::numerics::may_integrate(unsat, -lower, upper, err) {
             self.integral += self.ki * err * ts;
         }
         // Keep the integrator inside the band the output can reach (no stored wind-up).

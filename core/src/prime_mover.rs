@@ -67,7 +67,7 @@ impl Governor {
         let unsat = self.kp * err_pu + self.integral;
         let cmd = unsat.clamp(0.0, 1.0);
         // Integrate only while the command is not pushed further into saturation.
-        if (unsat < 1.0 || err_pu < 0.0) && (unsat > 0.0 || err_pu > 0.0) {
+        if crate::numerics::may_integrate(unsat, 0.0, 1.0, err_pu) {
             self.integral += self.ki * err_pu * ts;
         }
         let step = self.slew * ts;

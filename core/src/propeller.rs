@@ -32,6 +32,27 @@ pub struct PropellerLoad {
     pub advance_ratio: f64,
 }
 
+/// What a propeller load depends on besides shaft and advance speed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Conditions {
+    /// Diameter D [m].
+    pub diameter_m: f64,
+    /// Water density [kg/m^3].
+    pub rho: f64,
+    /// Relative rotative efficiency eta_R [-] (divides the torque, eq. 2.11).
+    pub rotative_efficiency: f64,
+    /// Loss coefficients beta_T, beta_Q of eq. 2.13 [-].
+    pub beta_t: f64,
+    pub beta_q: f64,
+}
+
+impl Conditions {
+    /// Open water, no losses, eta_R = 1.
+    pub fn open_water(diameter_m: f64, rho: f64) -> Conditions {
+        Conditions { diameter_m, rho, rotative_efficiency: 1.0, beta_t: 1.0, beta_q: 1.0 }
+    }
+}
+
 fn poly3(c: &[f64; 4], x: f64) -> f64 {
     ((c[3] * x + c[2]) * x + c[1]) * x + c[0]
 }
@@ -122,17 +143,8 @@ impl OpenWater {
     ///
     /// Single-quadrant model: J is held in [0, j_max]; a shaft turning backwards is mirrored
     /// (the four-quadrant model takes over for braking and reversing).
-    #[allow(clippy::too_many_arguments)]
-    pub fn load(
-        &self,
-        n_hz: f64,
-        va: f64,
-        diameter_m: f64,
-        rho: f64,
-        rotative_efficiency: f64,
-        beta_t: f64,
-        beta_q: f64,
-    ) -> PropellerLoad {
+    pub fn load(&self, n_hz: f64, va: f64, c: &Conditions) -> PropellerLoad {
+        let Conditions { diameter_m, rho, rotative_efficiency, beta_t, beta_q } = *c;
         let n_abs = n_hz.abs();
         if n_abs < 1e-9 {
             return PropellerLoad { thrust_n: 0.0, torque_nm: 0.0, advance_ratio: self.j_max };
@@ -192,11 +204,12 @@ mod tests {
     #[test]
     fn thrust_scales_with_n_squared_at_fixed_j() {
         let ow = OpenWater::b_series(1.0, 0.75, 5).unwrap();
-        let a = ow.load(2.0, 2.0 * 0.5 * 4.5, 4.5, 1025.0, 1.0, 1.0, 1.0);
-        let b = ow.load(4.0, 4.0 * 0.5 * 4.5, 4.5, 1025.0, 1.0, 1.0, 1.0);
+        let ow_45 = Conditions::open_water(4.5, 1025.0);
+        let a = ow.load(2.0, 2.0 * 0.5 * 4.5, &ow_45);
+        let b = ow.load(4.0, 4.0 * 0.5 * 4.5, &ow_45);
         assert!((b.thrust_n / a.thrust_n - 4.0).abs() < 1e-12);
         assert!((b.torque_nm / a.torque_nm - 4.0).abs() < 1e-12);
-        let stopped = ow.load(0.0, 5.0, 4.5, 1025.0, 1.0, 1.0, 1.0);
+        let stopped = ow.load(0.0, 5.0, &ow_45);
         assert_eq!(stopped.thrust_n, 0.0);
     }
 }
@@ -267,17 +280,8 @@ impl FourQuadrant {
     /// Thrust [N] and shaft torque [N m] at shaft speed `n_hz` [rev/s] and advance speed `va`
     /// [m/s], any signs: beta = atan2(Va, 0.7 pi n D), T = C_T (1/2) rho V_r^2 (pi/4) D^2,
     /// Q = C_Q (1/2) rho V_r^2 (pi/4) D^3 / eta_R, V_r^2 = Va^2 + (0.7 pi n D)^2.
-    #[allow(clippy::too_many_arguments)]
-    pub fn load(
-        &self,
-        n_hz: f64,
-        va: f64,
-        diameter_m: f64,
-        rho: f64,
-        rotative_efficiency: f64,
-        beta_t: f64,
-        beta_q: f64,
-    ) -> PropellerLoad {
+    pub fn load(&self, n_hz: f64, va: f64, c: &Conditions) -> PropellerLoad {
+        let Conditions { diameter_m, rho, rotative_efficiency, beta_t, beta_q } = *c;
         let vt = 0.7 * PI * n_hz * diameter_m;
         let vr2 = va * va + vt * vt;
         let beta = libm::atan2(va, vt);
@@ -304,8 +308,8 @@ mod four_quadrant_tests {
         let fq = FourQuadrant::b4_70().unwrap();
         let ow = OpenWater::b_series(1.0, 0.70, 4).unwrap();
         let (n, d, rho) = (2.0, 4.0, 1025.0);
-        let kt = |j: f64| fq.load(n, j * n * d, d, rho, 1.0, 1.0, 1.0).thrust_n / (rho * n * n * d.powi(4));
-        let kq = |j: f64| fq.load(n, j * n * d, d, rho, 1.0, 1.0, 1.0).torque_nm / (rho * n * n * d.powi(5));
+        let kt = |j: f64| fq.load(n, j * n * d, &Conditions::open_water(d, rho)).thrust_n / (rho * n * n * d.powi(4));
+        let kq = |j: f64| fq.load(n, j * n * d, &Conditions::open_water(d, rho)).torque_nm / (rho * n * n * d.powi(5));
         assert!((kt(0.0) - 0.445).abs() < 0.0015, "KT(0) = {}", kt(0.0));
         assert!((kt(0.6) - 0.219).abs() < 0.0015, "KT(0.6) = {}", kt(0.6));
         assert!((kq(0.0) - 0.0666).abs() < 0.00015, "KQ(0) = {}", kq(0.0));
@@ -322,9 +326,9 @@ mod four_quadrant_tests {
     #[test]
     fn windmilling_and_locked() {
         let fq = FourQuadrant::b4_70().unwrap();
-        let wm = fq.load(1.0, 1.5 * 4.0, 4.0, 1025.0, 1.0, 1.0, 1.0);
+        let wm = fq.load(1.0, 1.5 * 4.0, &Conditions::open_water(4.0, 1025.0));
         assert!(wm.thrust_n < 0.0 && wm.torque_nm < 0.0, "{wm:?}");
-        let locked = fq.load(0.0, 5.0, 4.0, 1025.0, 1.0, 1.0, 1.0);
+        let locked = fq.load(0.0, 5.0, &Conditions::open_water(4.0, 1025.0));
         assert!(locked.thrust_n < 0.0, "{locked:?}");
     }
 }

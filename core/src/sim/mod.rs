@@ -12,7 +12,7 @@ use crate::rudder::Autopilot;
 use crate::scenario::{HullModelKind, Scenario};
 use crate::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg, rpm_to_rad_s};
 use plant::{
-    bus_voltage, field_current, omega_rm, omega_t, rk4_step, Energy, Held, Outputs, Plant, State, ENERGY0, HEADING, NX,
+    bus_voltage, field_current, omega_rm, omega_t, rk4_step, Held, Outputs, Plant, State, ENERGY0, HEADING, NX,
     N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE, Y_POS,
 };
 use std::f64::consts::PI;
@@ -137,8 +137,6 @@ struct Controllers {
     slip: [SlipController; N_SHAFTS],
     /// Last peak-torque slip of each motor (warm start of the inline solver) [rad/s].
     peak_slip: [f64; N_SHAFTS],
-    /// Slip limit of each motor now: peak torque or rated power, whichever is lower [rad/s].
-    slip_limit: [f64; N_SHAFTS],
     /// Ship speed loop: gains in SI [rad/s per m/s], [rad/s per m], trim limit [-].
     speed_kp: f64,
     speed_ki: f64,
@@ -235,7 +233,6 @@ impl Simulation {
                     integral: 0.0,
                 }; N_SHAFTS],
                 peak_slip: [0.0; N_SHAFTS],
-                slip_limit: [0.0; N_SHAFTS],
                 speed_kp: sp.kp_rpm_per_kn * rpm_per_kn,
                 speed_ki: sp.ki_rpm_per_kn_s * rpm_per_kn,
                 trim_limit: sp.trim_limit,
@@ -416,7 +413,6 @@ impl Simulation {
             let peak = p.motor.peak_torque_slip(w_rm, v_max, c.peak_slip[s]);
             c.peak_slip[s] = peak;
             let limit = p.motor.power_limited_slip(w_rm, v_max, peak, p.motor.p_rated);
-            c.slip_limit[s] = limit;
             let lower = if c.allow_braking {
                 let peak_b = p.motor.peak_braking_slip(w_rm, v_max, c.peak_brake_slip[s]);
                 c.peak_brake_slip[s] = peak_b;
@@ -639,11 +635,6 @@ pub fn run(scenario: &Scenario) -> Result<RunResult, SimError> {
     let mut sim = Simulation::new(scenario)?;
     sim.advance(u64::MAX)?;
     Ok(sim.finish())
-}
-
-/// Index of an energy account in the energy array given to [`Summary::build`].
-pub fn energy_index(e: Energy) -> usize {
-    e as usize
 }
 
 /// Speed through the water sqrt(u^2 + v^2) [m/s]; written out (not `hypot`, which calls the

@@ -10,7 +10,7 @@ use crate::generator::SyncGenerator;
 use crate::maneuvering::{handover_weight, Abkowitz};
 use crate::motor::{InductionMotor, MotorPoint};
 use crate::prime_mover::GasTurbine;
-use crate::propeller::{FourQuadrant, OpenWater, PropellerLoad};
+use crate::propeller::{Conditions, FourQuadrant, OpenWater, PropellerLoad};
 use crate::rudder::{rudder_force, stern_inflow, RudderParams};
 use crate::scenario::{HullModelKind, PropellerModelKind, RectifierKind, Scenario};
 use crate::surge::Surge;
@@ -235,19 +235,16 @@ impl Plant {
     /// stern (eq. 2.12 with V_a for u: the advance speed is va (1 - w)).
     pub fn propeller_load(&self, omega: f64, va: f64) -> PropellerLoad {
         let (n, va) = (omega / (2.0 * PI), self.surge.advance_speed(va));
+        let c = Conditions {
+            diameter_m: self.prop_diameter,
+            rho: self.rho,
+            rotative_efficiency: self.rotative_efficiency,
+            beta_t: self.beta_t,
+            beta_q: self.beta_q,
+        };
         match &self.four_quadrant {
-            None => self.open_water.load(
-                n,
-                va,
-                self.prop_diameter,
-                self.rho,
-                self.rotative_efficiency,
-                self.beta_t,
-                self.beta_q,
-            ),
-            Some(fq) => {
-                fq.load(n, va, self.prop_diameter, self.rho, self.rotative_efficiency, self.beta_t, self.beta_q)
-            }
+            None => self.open_water.load(n, va, &c),
+            Some(fq) => fq.load(n, va, &c),
         }
     }
 
