@@ -16,6 +16,7 @@ pub mod propeller;
 pub mod propeller_losses;
 pub mod rudder;
 pub mod scenario;
+pub mod seakeeping;
 pub mod sim;
 pub mod stability;
 pub mod stats;

@@ -23,8 +23,51 @@ pub fn may_integrate(unsat: f64, lo: f64, hi: f64, err: f64) -> bool {
     (unsat < hi || err < 0.0) && (unsat > lo || err > 0.0)
 }
 
+/// Gauss-Legendre nodes and weights on [`a`, `b`] with `n` points (Newton on the Legendre
+/// recurrence; libm only, so native and wasm give the same nodes).
+pub fn gauss_legendre(n: usize, a: f64, b: f64) -> (Vec<f64>, Vec<f64>) {
+    let (mut x, mut w) = (vec![0.0; n], vec![0.0; n]);
+    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+    for i in 0..n.div_ceil(2) {
+        let mut t = libm::cos(std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5));
+        let mut dp = 1.0;
+        for _ in 0..100 {
+            let (mut p0, mut p1) = (1.0, t);
+            for k in 2..=n {
+                let p2 = ((2 * k - 1) as f64 * t * p1 - (k - 1) as f64 * p0) / k as f64;
+                p0 = p1;
+                p1 = p2;
+            }
+            let p = if n == 0 { 1.0 } else { p1 };
+            dp = n as f64 * (t * p - p0) / (t * t - 1.0);
+            let dt = p / dp;
+            t -= dt;
+            if dt.abs() < 1e-15 {
+                break;
+            }
+        }
+        x[i] = mid - half * t;
+        x[n - 1 - i] = mid + half * t;
+        w[i] = 2.0 * half / ((1.0 - t * t) * dp * dp);
+        w[n - 1 - i] = w[i];
+    }
+    (x, w)
+}
+
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn gauss_legendre_integrates_polynomials_exactly() {
+        for n in [1, 2, 5, 16, 33] {
+            let (x, w) = super::gauss_legendre(n, -1.0, 3.0);
+            // Degree 2n-1 is exact: integral of t^(2n-1) over [-1, 3] = (3^(2n) - 1) / (2n).
+            let d = 2 * n as i32 - 1;
+            let exact = (3f64.powi(d + 1) - 1.0) / (d + 1) as f64;
+            let got: f64 = x.iter().zip(&w).map(|(t, w)| w * t.powi(d)).sum();
+            assert!((got / exact - 1.0).abs() < 1e-12, "n={n}: {got} vs {exact}");
+        }
+    }
+
     #[test]
     fn anti_windup_rule() {
         assert!(super::may_integrate(0.5, 0.0, 1.0, 1.0));

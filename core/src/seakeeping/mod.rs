@@ -1,0 +1,7 @@
+//! Seakeeping in the frequency domain (thesis ch. 2.5.1-2.5.3, Appendix A): conformal maps of the
+//! hull sections, 2-D radiation by multipoles, Salvesen-Tuck-Faltinsen strip theory, roll damping,
+//! second-order mean forces, and the tables the time-domain simulation interpolates.
+
+pub mod complex;
+pub mod conformal;
+pub mod radiation;
