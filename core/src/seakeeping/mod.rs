@@ -5,3 +5,6 @@
 pub mod complex;
 pub mod conformal;
 pub mod radiation;
+pub mod roll_damping;
+pub mod strip;
+pub mod tables;

@@ -46,7 +46,7 @@ pub struct Contour {
 }
 
 /// Number of contour nodes (half section).
-pub const NODES: usize = 96;
+pub const NODES: usize = 64;
 
 impl Contour {
     pub fn new(map: &SectionMap) -> Contour {
