@@ -1,6 +1,9 @@
 //! `aes-sim`: the command line of the All Electric Ship simulator.
 
+use aes_core::hull_sections::HullOffsets;
 use aes_core::presets::{preset, PRESET_NAMES};
+use aes_core::seakeeping::strip::{default_omega_grid, BilgeKeels, MassProperties, Ship};
+use aes_core::seakeeping::tables::{rao_json, section_json, FormChoice, RaoTable, SeakeepingGrid};
 use aes_core::{Scenario, Simulation};
 use clap::{Parser, Subcommand};
 use std::io::Read;
@@ -43,7 +46,59 @@ enum Cmd {
         #[command(subcommand)]
         command: IpsCmd,
     },
-    /// Measure simulated seconds per wall-clock second on a preset (default: startup).
+    /// Sectional added mass and damping of one ship section (thesis ch. 2.5.1: conformal map +
+    /// Ursell-Tasai multipoles, deep water); JSON on standard output.
+    Section {
+        /// Beam at the waterline [m].
+        #[arg(long)]
+        beam: f64,
+        /// Draft [m].
+        #[arg(long)]
+        draft: f64,
+        /// Area coefficient A / (B T).
+        #[arg(long = "area-coeff")]
+        area_coeff: f64,
+        /// Conformal form: auto (Lewis, or bulb where Lewis cannot), lewis, bulb.
+        #[arg(long, default_value = "auto")]
+        form: String,
+        /// Frequencies [rad/s], comma separated.
+        #[arg(long, value_delimiter = ',', required = true)]
+        omega: Vec<f64>,
+    },
+    /// Response amplitude operators and mean second-order forces of a hull by strip theory
+    /// (thesis ch. 2.5.2-2.5.3); JSON on standard output.
+    Rao {
+        /// Hull offsets CSV (long format of dtmb5415_offsets.csv); default: the embedded DTMB 5415.
+        #[arg(long)]
+        hull: Option<String>,
+        /// Waterline above the baseline [m] (default 6.15, the 5415's design draft).
+        #[arg(long, default_value_t = 6.15)]
+        draft: f64,
+        /// Centre of gravity above the baseline [m].
+        #[arg(long, default_value_t = 7.555)]
+        kg: f64,
+        /// Radii of gyration [m]: roll, pitch, yaw (defaults: 0.37 B, 0.25 L, 0.25 L of the 5415).
+        #[arg(long, default_value_t = 0.37 * 19.06)]
+        kxx: f64,
+        #[arg(long, default_value_t = 0.25 * 142.0)]
+        kyy: f64,
+        #[arg(long, default_value_t = 0.25 * 142.0)]
+        kzz: f64,
+        /// Ship speed [kn].
+        #[arg(long = "speed-kn")]
+        speed_kn: f64,
+        /// Wave heading [deg]: 180 head seas, 90 waves from starboard, 0 following seas.
+        #[arg(long = "heading-deg")]
+        heading_deg: f64,
+        /// Wave frequencies [rad/s], comma separated.
+        #[arg(long, value_delimiter = ',', required = true)]
+        omega: Vec<f64>,
+        /// Wave amplitude at which the nonlinear roll damping is linearised [m].
+        #[arg(long = "roll-wave-amplitude", default_value_t = 1.0)]
+        roll_wave_amplitude: f64,
+    },
+    /// Measure simulated seconds per wall-clock second on a preset (default: startup), or
+    /// `seakeeping`: the time to build the default RAO tables of the DTMB 5415.
     Bench {
         /// Preset to time.
         #[arg(default_value = "startup")]
@@ -253,6 +308,71 @@ fn real_main() -> Result<(), String> {
         }
         Cmd::Ips { command } => {
             let out = ips(command)?;
+            println!("{}", serde_json::to_string_pretty(&out).map_err(|e| e.to_string())?);
+        }
+        Cmd::Section { beam, draft, area_coeff, form, omega } => {
+            let form = match form.as_str() {
+                "auto" => FormChoice::Auto,
+                "lewis" => FormChoice::Lewis,
+                "bulb" => FormChoice::Bulb,
+                other => return Err(format!("--form '{other}': expected auto, lewis or bulb")),
+            };
+            let v = section_json(beam, draft, area_coeff, form, &omega, 1025.0, 9.81)?;
+            println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
+        }
+        Cmd::Rao { hull, draft, kg, kxx, kyy, kzz, speed_kn, heading_deg, omega, roll_wave_amplitude } => {
+            let offsets = match &hull {
+                Some(path) => {
+                    let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read '{path}': {e}"))?;
+                    HullOffsets::parse(&text).map_err(|e| format!("{path}: {e}"))?
+                }
+                None => HullOffsets::dtmb5415(),
+            };
+            for (name, v, lo, hi) in [
+                ("draft", draft, 0.01, 100.0),
+                ("kg", kg, -50.0, 100.0),
+                ("kxx", kxx, 0.01, 100.0),
+                ("kyy", kyy, 0.01, 500.0),
+                ("kzz", kzz, 0.01, 500.0),
+                ("roll-wave-amplitude", roll_wave_amplitude, 0.01, 20.0),
+            ] {
+                if !(v.is_finite() && (lo..=hi).contains(&v)) {
+                    return Err(format!("--{name} = {v} is outside [{lo}, {hi}]"));
+                }
+            }
+            let mass = MassProperties { kg_m: kg, kxx_m: kxx, kyy_m: kyy, kzz_m: kzz };
+            let keels = if hull.is_none() { Some(BilgeKeels { length_m: 0.25 * 142.0, breadth_m: 0.6 }) } else { None };
+            let ship = Ship::new(&offsets, draft, mass, keels, 1025.0, 9.81)?;
+            let v = rao_json(
+                &ship,
+                speed_kn * aes_core::units::KNOT_M_S,
+                heading_deg.to_radians(),
+                &omega,
+                roll_wave_amplitude,
+            )?;
+            println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
+        }
+        Cmd::Bench { name, repeat, sets } if name == "seakeeping" => {
+            let mut best = (f64::INFINITY, f64::INFINITY);
+            let grid = SeakeepingGrid::default();
+            for _ in 0..repeat.max(1) {
+                let t0 = Instant::now();
+                let ship = Ship::dtmb5415();
+                let rad = ship.radiation_table(&default_omega_grid());
+                let t1 = Instant::now();
+                let tab = RaoTable::from_radiation(&ship, &rad, &grid);
+                let t2 = Instant::now();
+                std::hint::black_box(tab);
+                best.0 = best.0.min((t1 - t0).as_secs_f64());
+                best.1 = best.1.min((t2 - t1).as_secs_f64());
+            }
+            let _ = sets;
+            let out = serde_json::json!({
+                "workload": "DTMB 5415: sectional coefficients of 29 strips at 48 encounter frequencies, then RAOs and drift on the 40 x 6 x 13 grid",
+                "sections_s": best.0,
+                "rao_grid_s": best.1,
+                "total_s": best.0 + best.1,
+            });
             println!("{}", serde_json::to_string_pretty(&out).map_err(|e| e.to_string())?);
         }
         Cmd::Bench { name, repeat, sets } => {

@@ -168,3 +168,46 @@ fn ips_commands() {
         assert!(!ok && err.contains(want), "{args:?}: {err}");
     }
 }
+
+/// `aes-sim section`: the semicircle's JSON, near- and far-field damping agree; bad input names
+/// the argument.
+#[test]
+fn section_command() {
+    let (ok, out, err) =
+        aes_sim(&["section", "--beam", "2", "--draft", "1", "--area-coeff", "0.7853982", "--omega", "0.5,2,4"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["omega"].as_array().unwrap().len(), 3);
+    for i in 0..3 {
+        let (b, f) = (v["heave"]["damping"][i].as_f64().unwrap(), v["heave"]["damping_far_field"][i].as_f64().unwrap());
+        assert!((b / f - 1.0).abs() < 0.01, "{b} vs {f}");
+        assert!(v["sway"]["added_mass"][i].as_f64().unwrap() > 0.0);
+    }
+    let (ok, _, err) = aes_sim(&["section", "--beam=-2", "--draft", "1", "--area-coeff", "0.7", "--omega", "1"]);
+    assert!(!ok && err.contains("beam = -2"), "{err}");
+    let (ok, _, err) =
+        aes_sim(&["section", "--beam", "2", "--draft", "1", "--area-coeff", "0.7", "--omega", "1", "--form", "oval"]);
+    assert!(!ok && err.contains("--form 'oval'"), "{err}");
+}
+
+/// `aes-sim rao`: long head waves give heave and pitch/k near 1; units and fields as documented.
+#[test]
+fn rao_command() {
+    let (ok, out, err) = aes_sim(&["rao", "--speed-kn", "20", "--heading-deg", "180", "--omega", "0.12,0.6"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let heave = v["heave"]["amp"][0].as_f64().unwrap();
+    let pitch = v["pitch"]["amp"][0].as_f64().unwrap();
+    let k = 0.12f64 * 0.12 / 9.81;
+    assert!((heave - 1.0).abs() < 0.03 && (pitch / k - 1.0).abs() < 0.03, "{heave} {pitch}");
+    assert!(v["omega_e"][0].as_f64().unwrap() > 0.12);
+    for key in ["sway", "roll", "yaw"] {
+        assert_eq!(v[key]["phase_deg"].as_array().unwrap().len(), 2);
+    }
+    assert!(v["added_resistance_n_per_m2"][1].as_f64().unwrap() > 0.0);
+    let (ok, _, err) = aes_sim(&["rao", "--speed-kn", "20", "--heading-deg", "180", "--omega", "0.5", "--kg", "20"]);
+    assert!(!ok && err.contains("unstable"), "{err}");
+    let (ok, _, err) =
+        aes_sim(&["rao", "--hull", "/nonexistent.csv", "--speed-kn", "20", "--heading-deg", "180", "--omega", "0.5"]);
+    assert!(!ok && err.contains("cannot read"), "{err}");
+}

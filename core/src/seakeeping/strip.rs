@@ -279,6 +279,46 @@ pub struct Response {
     pub b44_viscous: f64,
 }
 
+/// Sectional exciting forces per unit wave amplitude and density, without the longitudinal phase
+/// e^{-i k x cos beta}: Froude-Krylov f_j = -g int e^{kz - i k y sin beta} N_j dl and diffraction
+/// h_j = -i omega_e omega0 int psi_j e^{kz - i k y sin beta} (i N3 + sin beta N2) dl (STF's
+/// approximation: the incident wave's normal velocity without its x component, returned through
+/// the radiation potential by Green's theorem), for sway, heave, roll; and the diffraction with
+/// the conjugate incident wave (for eq. 2.47).
+pub fn sectional_forces(
+    c: &Contour,
+    psi: &[Vec<C>; 3],
+    k: f64,
+    sb: f64,
+    we: f64,
+    omega0: f64,
+    g: f64,
+) -> ([C; 3], [C; 3], [C; 3]) {
+    let (mut fs, mut ev, mut evc, mut od) = ([0.0f64; 3], C::new(0.0, 0.0), C::new(0.0, 0.0), [C::new(0.0, 0.0); 2]);
+    for q in 0..c.weight.len() {
+        let (x, y) = (c.z[q].re, c.z[q].im);
+        let w2q = 2.0 * c.weight[q] * libm::exp(k * y);
+        let (cs, sn) = (libm::cos(k * x * sb), libm::sin(k * x * sb));
+        let (n2, n3, n4) = (c.nl[0][q], c.nl[1][q], c.nl[2][q]);
+        // Even and odd parts in the lateral coordinate: the contour integral over both sides is
+        // twice the half-contour integral of the part with the potential's parity.
+        fs[0] += w2q * n2 * sn;
+        fs[1] += w2q * n3 * cs;
+        fs[2] += w2q * n4 * sn;
+        let even = C::new(0.0, n3 * cs - sb * n2 * sn);
+        let odd = n3 * sn + sb * n2 * cs;
+        ev += psi[1][q] * even * w2q;
+        evc += psi[1][q] * even.conj() * w2q;
+        od[0] += psi[0][q] * (odd * w2q);
+        od[1] += psi[2][q] * (odd * w2q);
+    }
+    let pre = C::new(0.0, -we * omega0);
+    let f = [C::new(0.0, g * fs[0]), C::new(-g * fs[1], 0.0), C::new(0.0, g * fs[2])];
+    let h = [pre * od[0], pre * ev, pre * od[1]];
+    let hh = [pre * od[0], pre * evc, pre * od[1]];
+    (f, h, hh)
+}
+
 /// Solves a small complex linear system by Gaussian elimination with partial pivoting
 /// (|re| + |im| as the pivot size, so no platform hypot is involved).
 fn solve_small<const N: usize>(mut a: [[C; N]; N], mut b: [C; N]) -> [C; N] {
@@ -385,32 +425,11 @@ pub fn response(
     let mut hh = vec![[C::new(0.0, 0.0); 3]; n];
     for i in 0..n {
         let st = &ship.strips[i];
-        let c = &st.contour;
         let ph = cexp(C::new(0.0, -k * st.xi * cb));
-        let (mut fs, mut ev, mut od, mut evc) =
-            ([0.0f64; 3], C::new(0.0, 0.0), [C::new(0.0, 0.0); 2], C::new(0.0, 0.0));
-        let mut odc = [C::new(0.0, 0.0); 2];
-        for q in 0..c.weight.len() {
-            let (x, y) = (c.z[q].re, c.z[q].im);
-            let w2q = 2.0 * c.weight[q] * libm::exp(k * y);
-            let (cs, sn) = (libm::cos(k * x * sb), libm::sin(k * x * sb));
-            let (n2, n3, n4) = (c.nl[0][q], c.nl[1][q], c.nl[2][q]);
-            fs[0] += w2q * n2 * sn;
-            fs[1] += w2q * n3 * cs;
-            fs[2] += w2q * n4 * sn;
-            let even = C::new(0.0, n3 * cs - sb * n2 * sn);
-            let odd = n3 * sn + sb * n2 * cs;
-            ev += secs[i].psi[1][q] * even * w2q;
-            evc += secs[i].psi[1][q] * even.conj() * w2q;
-            od[0] += secs[i].psi[0][q] * (odd * w2q);
-            od[1] += secs[i].psi[2][q] * (odd * w2q);
-            odc[0] += secs[i].psi[0][q] * (odd * w2q);
-            odc[1] += secs[i].psi[2][q] * (odd * w2q);
-        }
-        let pre = C::new(0.0, -we * omega0);
-        f[i] = [C::new(0.0, g * fs[0]) * ph, C::new(-g * fs[1], 0.0) * ph, C::new(0.0, g * fs[2]) * ph];
-        h[i] = [pre * ph * od[0], pre * ph * ev, pre * ph * od[1]];
-        hh[i] = [pre * ph.conj() * odc[0], pre * ph.conj() * evc, pre * ph.conj() * odc[1]];
+        let (fs, hs, hhs) = sectional_forces(&st.contour, &secs[i].psi, k, sb, we, omega0, g);
+        f[i] = fs.map(|v| v * ph);
+        h[i] = hs.map(|v| v * ph);
+        hh[i] = hhs.map(|v| v * ph.conj());
     }
     let ui = C::new(u, 0.0) / iw;
     // Forces per unit wave amplitude, [FK, diffraction] for sway, heave, roll, pitch, yaw.
@@ -551,6 +570,37 @@ mod tests {
     /// Fn 0.28 [m/s].
     fn fn028() -> f64 {
         0.28 * (9.81f64 * 142.0).sqrt()
+    }
+
+    /// Haskind: at zero speed in beam seas the strip-theory diffraction of a 2-D section is exact,
+    /// and its exciting force fixes the radiation damping, b_jj = omega |X_j|^2 / (rho g^2) for a
+    /// symmetric section (waves from either side alike). A third route to the damping besides the
+    /// near- and far-field ones (1 %), for heave and sway of a Lewis section, the semicircle, and
+    /// roll of the Lewis section.
+    #[test]
+    fn haskind_relation_for_sections() {
+        use crate::seakeeping::conformal::section_map;
+        let (rho, g) = (1025.0, 9.81);
+        for m in [
+            section_map(9.5, 6.15, 0.9).unwrap(),
+            section_map(5.0, 5.0, PI / 4.0).unwrap(),
+            section_map(8.0, 6.15, 0.6).unwrap(),
+        ] {
+            let c = Contour::new(&m);
+            for w in [0.4, 0.8, 1.2, 1.6] {
+                let r = solve(&m, &c, w, rho, g, default_multipoles(w * w / g, &m));
+                let k = w * w / g;
+                let (f, h, _) = sectional_forces(&c, &r.psi, k, 1.0, w, w, g);
+                for (j, b) in [(0, r.b22), (1, r.b33), (2, r.b44)] {
+                    let x = (f[j] + h[j]) * rho;
+                    let hask = w * x.norm_sqr() / (rho * g * g);
+                    if b < 1e-6 * (r.a33.abs() + r.a22.abs()) * w {
+                        continue; // the circle's roll
+                    }
+                    assert!((hask / b - 1.0).abs() < 0.01, "mode {j} omega {w}: Haskind {hask} vs {b} ({m:?})");
+                }
+            }
+        }
     }
 
     /// Long waves in head seas: the ship follows the surface, heave RAO -> 1 and pitch RAO / k
