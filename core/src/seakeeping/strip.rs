@@ -295,6 +295,7 @@ pub fn sectional_forces(
     g: f64,
 ) -> ([C; 3], [C; 3], [C; 3]) {
     let (mut fs, mut ev, mut evc, mut od) = ([0.0f64; 3], C::new(0.0, 0.0), C::new(0.0, 0.0), [C::new(0.0, 0.0); 2]);
+    #[allow(clippy::needless_range_loop)] // six parallel arrays indexed by node
     for q in 0..c.weight.len() {
         let (x, y) = (c.z[q].re, c.z[q].im);
         let w2q = 2.0 * c.weight[q] * libm::exp(k * y);
