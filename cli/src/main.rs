@@ -97,6 +97,19 @@ enum Cmd {
         #[arg(long = "roll-wave-amplitude", default_value_t = 1.0)]
         roll_wave_amplitude: f64,
     },
+    /// The fuel study of ch. 5.2.4 (Fig. 5-12): fuel power of one prime mover in regular head and
+    /// bow seas of 1 to 5 ft over wave frequency; JSON rows on standard output.
+    Fuel {
+        /// Scenario (default: the fuel-regular-seas preset); its first ordered speed is used.
+        #[arg(default_value = "preset:fuel-regular-seas")]
+        file: String,
+        /// Wave frequencies [rad/s], comma separated (default 0.3 to 1.5 in steps of 0.1).
+        #[arg(long, value_delimiter = ',')]
+        omega: Vec<f64>,
+        /// Override one parameter (repeatable).
+        #[arg(long = "set", value_name = "PATH=VALUE")]
+        sets: Vec<String>,
+    },
     /// Measure simulated seconds per wall-clock second on a preset (default: startup), or
     /// `seakeeping`: the time to build the default RAO tables of the DTMB 5415.
     Bench {
@@ -352,6 +365,24 @@ fn real_main() -> Result<(), String> {
             )?;
             println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
         }
+        Cmd::Fuel { file, omega, sets } => {
+            let sc = load(&file, &sets)?;
+            let omegas = if omega.is_empty() { (3..=15).map(|i| i as f64 / 10.0).collect() } else { omega };
+            for &w in &omegas {
+                if !(w.is_finite() && (0.1..=5.0).contains(&w)) {
+                    return Err(format!("--omega {w}: must be from 0.1 to 5 rad/s"));
+                }
+            }
+            let rows = aes_core::fuel::fuel_study(&sc, &omegas)?;
+            let extrapolated = rows.iter().any(|r| r.extrapolated);
+            let out = serde_json::json!({
+                "speed_kn": sc.commands.first().and_then(|c| c.speed_kn),
+                "turbine_rated_efficiency": sc.seakeeping.turbine_rated_efficiency,
+                "note": if extrapolated { "some turbine loads are below 30 % of rated, where the part-load curve has no data: extrapolated linearly" } else { "" },
+                "rows": rows,
+            });
+            println!("{}", serde_json::to_string_pretty(&out).map_err(|e| e.to_string())?);
+        }
         Cmd::Bench { name, repeat, sets } if name == "seakeeping" => {
             let mut best = (f64::INFINITY, f64::INFINITY);
             let grid = SeakeepingGrid::default();
@@ -388,7 +419,26 @@ fn real_main() -> Result<(), String> {
                 steps = r.summary.steps;
             }
             let sim_s = sc.sim.duration_s;
+            // The irreducible part in waves: the bare superposition of the wave components (one sum
+            // per sample period, as the run does it).
+            let wave_sums_s = match aes_core::sim::seaway::Seaway::new(&sc)? {
+                Some(mut sea) => {
+                    let n = (sim_s / sc.seakeeping.sample_period_s).round() as u64;
+                    sea.refresh(12.86, 0.0);
+                    let t0 = Instant::now();
+                    let mut acc = 0.0;
+                    for i in 0..n {
+                        let t = i as f64 * sc.seakeeping.sample_period_s;
+                        acc += sea.sample(t, 12.86 * t, 0.0, 12.86, 0.0).hub;
+                    }
+                    std::hint::black_box(acc);
+                    Some(t0.elapsed().as_secs_f64())
+                }
+                None => None,
+            };
             let out = serde_json::json!({
+                "wave_sums_s": wave_sums_s,
+                "wave_components": if wave_sums_s.is_some() { Some(sc.sea.components) } else { None },
                 "preset": name,
                 "simulated_s": sim_s,
                 "steps": steps,

@@ -5,6 +5,7 @@
 //! every platform.
 
 pub mod dc_link;
+pub mod fuel;
 pub mod generator;
 pub mod hull_sections;
 pub mod maneuvering;

@@ -1,6 +1,6 @@
 //! Named scenarios, one per study of thesis ch. 5 as they are implemented.
 
-use crate::scenario::{Command, HullModelKind, PropellerModelKind, RectifierKind, Scenario};
+use crate::scenario::{Command, HullModelKind, PropellerModelKind, RectifierKind, Scenario, SeaKind};
 
 /// Names of all presets, in the order of the thesis.
 pub const PRESET_NAMES: &[&str] = &[
@@ -12,6 +12,11 @@ pub const PRESET_NAMES: &[&str] = &[
     "turn-45",
     "turn-90",
     "turn-360",
+    "quarter-turn-ss3",
+    "quarter-turn-ss6",
+    "fuel-regular-seas",
+    "head-seas-ss6",
+    "turn-360-ss6",
 ];
 
 /// The preset of that name.
@@ -25,6 +30,11 @@ pub fn preset(name: &str) -> Option<Scenario> {
         "turn-45" => turn("turn-45", 45.0, None),
         "turn-90" => turn("turn-90", 90.0, None),
         "turn-360" => turn("turn-360", 360.0, Some(1.0)),
+        "quarter-turn-ss3" => quarter_turn(3),
+        "quarter-turn-ss6" => quarter_turn(6),
+        "fuel-regular-seas" => fuel_regular_seas(),
+        "head-seas-ss6" => head_seas_ss6(),
+        "turn-360-ss6" => turn_360_ss6(),
         _ => return None,
     })
 }
@@ -133,6 +143,73 @@ pub fn turn(name: &str, heading_deg: f64, rate_deg_s: Option<f64>) -> Scenario {
     });
     s.sim.duration_s = if heading_deg >= 360.0 { 500.0 } else { 300.0 };
     s
+}
+
+/// Ch. 5.2.4: a 90 degree turn at 25 knots in a random sea from ahead, sea state 3 or 6 (Fig. 5-11):
+/// added resistance slows the ship and the drift force pushes it sideways.
+pub fn quarter_turn(sea_state: u32) -> Scenario {
+    let mut s = at_speed_maneuvering(
+        &format!("quarter-turn-ss{sea_state}"),
+        &format!(
+            "A 90 degree turn at 25 knots in sea state {sea_state} from ahead (thesis ch. 5.2.4, Fig. 5-11): the waves'              second-order forces add resistance and, once the sea is on the beam, push the ship sideways (drift)."
+        ),
+    );
+    s.sea.kind = SeaKind::Random;
+    s.sea.sea_state = sea_state;
+    s.seakeeping.grid.roll_wave_amplitude_m = 0.5 * s.sea.spectrum().0;
+    s.commands.push(Command { t_s: 20.0, speed_kn: None, heading_deg: Some(90.0), heading_rate_deg_s: None });
+    s.sim.duration_s = 300.0;
+    s.sim.seed = 1;
+    sea_step(&mut s);
+    s
+}
+
+/// Ch. 5.2.4, Fig. 5-12: 25 knots in a regular head sea of 1 ft amplitude at 0.6 rad/s; `aes-sim fuel`
+/// sweeps amplitude (1 to 5 ft), frequency and heading (head and bow seas) from this scenario.
+pub fn fuel_regular_seas() -> Scenario {
+    let mut s = at_speed_maneuvering(
+        "fuel-regular-seas",
+        "Travel at 25 knots in a regular head sea (thesis ch. 5.2.4, Fig. 5-12): the added resistance raises the          power and with it the fuel burnt by each gas turbine. `aes-sim fuel` sweeps 1 to 5 ft waves over frequency          for head and bow seas.",
+    );
+    s.sea.kind = SeaKind::Regular;
+    s.sea.amplitude_m = 0.3048;
+    s.sea.omega_rad_s = 0.6;
+    s.seakeeping.grid.roll_wave_amplitude_m = 0.3048;
+    s.sim.duration_s = 120.0;
+    sea_step(&mut s);
+    s
+}
+
+/// Ch. 5.3.1: 25 knots in head seas, sea state 6, 80 s (Figs. 5-13 to 5-15).
+pub fn head_seas_ss6() -> Scenario {
+    let mut s = at_speed_maneuvering(
+        "head-seas-ss6",
+        "25 knots into head seas of sea state 6 (thesis ch. 5.3.1, Figs. 5-13 to 5-15): the stern rises and falls,          the propellers come near the surface, ventilate and lose thrust, race, and the motors' power swings by tens          of percent.",
+    );
+    s.sea.kind = SeaKind::Random;
+    s.sea.sea_state = 6;
+    s.sim.duration_s = 80.0;
+    s.sim.seed = 1;
+    sea_step(&mut s);
+    s
+}
+
+/// Ch. 5.3.2: the full turn at 25 knots in sea state 6, starting in head seas (Figs. 5-16 to 5-19).
+pub fn turn_360_ss6() -> Scenario {
+    let mut s = turn("turn-360-ss6", 360.0, Some(1.0));
+    s.description = "A full turn at 25 knots in sea state 6 starting in head seas (thesis ch. 5.3.2, Figs. 5-16 to                      5-19): the propellers are excited most in head seas, little in following seas, and the motors                      need well over their straight-line power to hold speed in the turn."
+        .into();
+    s.sea.kind = SeaKind::Random;
+    s.sea.sea_state = 6;
+    s.sim.seed = 1;
+    sea_step(&mut s);
+    s
+}
+
+/// The runs in waves step at 2.5 ms: the traces agree with 1 ms steps to 0.05 rpm and 0.2 % of
+/// motor power (tests/seas.rs), and the Monte Carlo studies run 2.3 times faster.
+fn sea_step(s: &mut Scenario) {
+    s.sim.dt_s = 0.0025;
 }
 
 #[cfg(test)]

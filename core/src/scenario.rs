@@ -28,6 +28,146 @@ pub struct Scenario {
     pub commands: Vec<Command>,
     pub initial: InitialConditions,
     pub sim: SimSettings,
+    /// The sea (calm unless set).
+    pub sea: SeaParams,
+    /// Ship motions in waves and the propeller's surface losses (used when the sea is not calm).
+    pub seakeeping: SeakeepingParams,
+}
+
+/// Which sea.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SeaKind {
+    Calm,
+    /// Bretschneider spectrum (eq. 2.58) sampled into components (ch. 2.5.4).
+    Random,
+    /// One regular wave (ch. 5.2.4).
+    Regular,
+}
+
+/// The sea (thesis ch. 2.5.4). Directions are where the waves come FROM, in the earth frame of the
+/// ship's heading (0 = north): a ship heading 0 deg in waves from 0 deg meets head seas.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SeaParams {
+    pub kind: SeaKind,
+    /// Table 2.4 sea state (2 to 6), used unless `h_sig_m` and `omega_n_rad_s` are both set.
+    pub sea_state: u32,
+    /// Significant wave height H_1/3 [m] and modal frequency [rad/s] (0: from the sea state).
+    pub h_sig_m: f64,
+    pub omega_n_rad_s: f64,
+    /// Mean direction the waves come from [deg].
+    pub from_deg: f64,
+    /// Number of components N_s (ch. 2.5.4: 100 to 500).
+    pub components: u32,
+    /// Spectrum bounds [rad/s] (0: 0.6 and 4 times the modal frequency, 99.5 % of the energy).
+    pub omega_min_rad_s: f64,
+    pub omega_max_rad_s: f64,
+    /// Exponent h of the cos^h spreading about the mean direction (0: long-crested).
+    pub spreading: f64,
+    /// Regular sea: amplitude [m] and frequency [rad/s].
+    pub amplitude_m: f64,
+    pub omega_rad_s: f64,
+}
+
+impl Default for SeaParams {
+    fn default() -> Self {
+        SeaParams {
+            kind: SeaKind::Calm,
+            sea_state: 6,
+            h_sig_m: 0.0,
+            omega_n_rad_s: 0.0,
+            from_deg: 0.0,
+            components: 200,
+            omega_min_rad_s: 0.0,
+            omega_max_rad_s: 0.0,
+            spreading: 2.0,
+            amplitude_m: 0.6096,
+            omega_rad_s: 0.6,
+        }
+    }
+}
+
+impl SeaParams {
+    /// (H_1/3 [m], modal frequency [rad/s]) of the random sea.
+    pub fn spectrum(&self) -> (f64, f64) {
+        if self.h_sig_m > 0.0 && self.omega_n_rad_s > 0.0 {
+            (self.h_sig_m, self.omega_n_rad_s)
+        } else {
+            let (w, h) = crate::waves::sea_state(self.sea_state).unwrap_or((0.507, 5.0));
+            (h, w)
+        }
+    }
+}
+
+/// How the stern's vertical motion enters the hub depth (eq. 2.57).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SternMotion {
+    /// h = h0 + eta_s - eta3 - x_p eta5 with STF's bow-down pitch: the stern rises by
+    /// eta3 + x_p eta5, and a hull that follows long waves keeps its propeller at h0.
+    Consistent,
+    /// Eq. 2.57 as printed, h0 + eta_s - eta3 + x_p eta5: pitch adds to the stern's relative
+    /// motion instead of following the wave. Several times larger swings of h/R; with it the
+    /// ch. 5.3 runs show the thesis' frequent ventilation at h0 = 6 m.
+    #[serde(rename = "thesis_eq_2_57")]
+    ThesisEq257,
+}
+
+/// Ship motions in waves and propeller surface losses (ch. 2.3, 2.5.4). The seakeeping hull is the
+/// DTMB 5415 at 6.15 m draft (`aes-sim rao` takes other hulls).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SeakeepingParams {
+    /// The RAO table's grid.
+    pub grid: crate::seakeeping::tables::SeakeepingGrid,
+    /// Calm-water depth of the propeller hub below the surface, h0 [m] (ch. 5.3: 6.0).
+    pub hub_depth_m: f64,
+    /// Propellers' distance aft of the centre of gravity [m]: the 5415's LCG is 70.3 m forward of
+    /// the aft perpendicular and a destroyer's propellers sit about 0.06 L forward of it, so 62 m.
+    pub prop_x_aft_m: f64,
+    /// Ventilation starts below this h/R and ends above `ventilation_off_h_over_r` (ch. 2.3; see
+    /// `propeller_losses` for why 1.1 starts and 1.3 ends the loop).
+    pub ventilation_on_h_over_r: f64,
+    pub ventilation_off_h_over_r: f64,
+    /// Thrust lost when fully ventilated [-] (ch. 2.3: 0.7).
+    pub ventilation_loss: f64,
+    /// Revolutions over which the lift returns (Wagner effect) [-] (ch. 2.3: about 4).
+    pub recovery_revolutions: f64,
+    /// beta_Q = beta_T^m (ch. 2.3: m = 0.85).
+    pub torque_exponent: f64,
+    /// Wave kinematics are summed every `sample_period_s` and carried between samples by a
+    /// second-order Taylor series; RAOs are looked up again every `rao_refresh_s` (quasi-steady
+    /// speed and heading, ch. 2.5.4) [s].
+    pub sample_period_s: f64,
+    pub rao_refresh_s: f64,
+    /// Second-order slowly varying forces in the maneuvering equations (eq. 2.60).
+    pub second_order_forces: bool,
+    /// Sign of the pitch term in the hub depth (eq. 2.57): "consistent" or "thesis_eq_2_57".
+    pub stern_motion: SternMotion,
+    /// Fuel: turbine thermal efficiency at rated power [-] (ch. 5.1: about 37 %), scaled by the
+    /// part-load curve of `core/data/gas_turbine_part_load.csv`.
+    pub turbine_rated_efficiency: f64,
+}
+
+impl Default for SeakeepingParams {
+    fn default() -> Self {
+        SeakeepingParams {
+            grid: Default::default(),
+            hub_depth_m: 6.0,
+            prop_x_aft_m: 62.0,
+            ventilation_on_h_over_r: 1.1,
+            ventilation_off_h_over_r: 1.3,
+            ventilation_loss: 0.7,
+            recovery_revolutions: 4.0,
+            torque_exponent: 0.85,
+            sample_period_s: 0.05,
+            rao_refresh_s: 0.25,
+            second_order_forces: true,
+            stern_motion: SternMotion::Consistent,
+            turbine_rated_efficiency: 0.37,
+        }
+    }
 }
 
 /// Ship surge model (thesis eqs. 2.15-2.16, Table 5.1).
@@ -403,6 +543,8 @@ impl Default for Scenario {
             commands: vec![Command { t_s: 0.0, speed_kn: Some(25.0), heading_deg: None, heading_rate_deg_s: None }],
             initial: InitialConditions::default(),
             sim: SimSettings::default(),
+            sea: SeaParams::default(),
+            seakeeping: SeakeepingParams::default(),
         }
     }
 }
@@ -788,6 +930,45 @@ impl Scenario {
         }
 
         c.range("initial.speed_kn", self.initial.speed_kn, 0.0, 35.0);
+
+        let sea = &self.sea;
+        if sea.kind != SeaKind::Calm {
+            c.range_u("sea.sea_state", sea.sea_state as u64, 2, 6);
+            if sea.h_sig_m != 0.0 || sea.omega_n_rad_s != 0.0 {
+                c.range("sea.h_sig_m", sea.h_sig_m, 0.01, 20.0);
+                c.range("sea.omega_n_rad_s", sea.omega_n_rad_s, 0.2, 3.0);
+            }
+            c.range("sea.from_deg", sea.from_deg, -3600.0, 3600.0);
+            c.range_u("sea.components", sea.components as u64, 1, 2000);
+            if sea.omega_min_rad_s != 0.0 || sea.omega_max_rad_s != 0.0 {
+                c.range("sea.omega_min_rad_s", sea.omega_min_rad_s, 0.05, 5.0);
+                c.range("sea.omega_max_rad_s", sea.omega_max_rad_s, sea.omega_min_rad_s.max(0.05) + 0.01, 6.0);
+            }
+            c.range("sea.spreading", sea.spreading, 0.0, 100.0);
+            if sea.kind == SeaKind::Regular {
+                c.range("sea.amplitude_m", sea.amplitude_m, 0.0, 10.0);
+                c.range("sea.omega_rad_s", sea.omega_rad_s, 0.1, 5.0);
+            }
+            if self.hull.model != HullModelKind::Maneuvering {
+                c.fail("sea.kind", format!("{:?}", sea.kind).to_lowercase(), "waves need hull.model = \"maneuvering\"");
+            }
+            let k = &self.seakeeping;
+            if let Err(e) = k.grid.validate() {
+                let (path, rest) = e.split_once(" = ").unwrap_or(("seakeeping.grid", e.as_str()));
+                let (value, msg) = rest.split_once(' ').unwrap_or((rest, ""));
+                c.fail(path, value.to_string(), msg);
+            }
+            c.range("seakeeping.hub_depth_m", k.hub_depth_m, 0.0, 50.0);
+            c.range("seakeeping.prop_x_aft_m", k.prop_x_aft_m, 0.0, 300.0);
+            c.range("seakeeping.ventilation_on_h_over_r", k.ventilation_on_h_over_r, -1.0, 5.0);
+            c.range("seakeeping.ventilation_off_h_over_r", k.ventilation_off_h_over_r, k.ventilation_on_h_over_r, 5.0);
+            c.range("seakeeping.ventilation_loss", k.ventilation_loss, 0.0, 1.0);
+            c.range("seakeeping.recovery_revolutions", k.recovery_revolutions, 0.01, 100.0);
+            c.range("seakeeping.torque_exponent", k.torque_exponent, 0.1, 2.0);
+            c.range("seakeeping.sample_period_s", k.sample_period_s, self.sim.dt_s, 0.5);
+            c.range("seakeeping.rao_refresh_s", k.rao_refresh_s, k.sample_period_s, 10.0);
+            c.range("seakeeping.turbine_rated_efficiency", k.turbine_rated_efficiency, 0.05, 0.8);
+        }
 
         let sim = &self.sim;
         c.range("sim.duration_s", sim.duration_s, 0.0, 1.0e6);

@@ -3,11 +3,13 @@
 //! and honours cancel between chunks); `run` does it in one go.
 
 pub mod plant;
+pub mod seaway;
 pub mod summary;
 
 use crate::generator::FieldController;
 use crate::motor::SlipController;
 use crate::prime_mover::Governor;
+use crate::propeller_losses::{loss_factors, LossParams, Ventilation};
 use crate::rudder::Autopilot;
 use crate::scenario::{HullModelKind, Scenario};
 use crate::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg, rpm_to_rad_s};
@@ -46,7 +48,9 @@ impl std::error::Error for SimError {}
 /// are per unit of: turbine speed, the governor set point (3600 rpm); bus voltage, the field
 /// controller's set point (5618 V); motor voltage, rated phase voltage; motor power, rated
 /// power (38 MW). Per-shaft signals average the two shafts; `_1`, `_2` are the shafts. Ship speed
-/// is the speed through the water, sqrt(u^2 + v^2).
+/// is the speed through the water, sqrt(u^2 + v^2). In waves: heave up, pitch bow down (STF), roll
+/// starboard down; `added_resistance_n` and `drift_force_n` are the slowly varying second-order
+/// force backwards and to starboard; `fuel_power_w` sums the four turbines.
 pub const SIGNALS: &[&str] = &[
     "t_s",
     "ship_speed_kn",
@@ -82,6 +86,15 @@ pub const SIGNALS: &[&str] = &[
     "p_inverter_w",
     "p_motor_w",
     "p_ship_w",
+    "wave_stern_m",
+    "hub_depth_m",
+    "h_over_r",
+    "heave_m",
+    "pitch_deg",
+    "roll_deg",
+    "added_resistance_n",
+    "drift_force_n",
+    "fuel_power_w",
 ];
 
 /// A recorded trace: one column per signal of [`SIGNALS`].
@@ -195,13 +208,31 @@ pub struct Simulation {
     warnings: Vec<String>,
     /// Largest heading reference error seen with the rudder hard over [rad].
     max_heading_lag: f64,
+    /// The seaway (None in calm water), its sampling and refresh intervals in steps, the
+    /// propellers' ventilation states and the loss model.
+    sea: Option<seaway::Seaway>,
+    sea_every: u64,
+    refresh_every: u64,
+    vent: [Ventilation; N_SHAFTS],
+    losses: LossParams,
+    /// Hub depth over the propeller radius now [-].
+    h_over_r: f64,
+    fuel_curve: Vec<(f64, f64)>,
+    fuel_extrapolated: bool,
 }
 
 impl Simulation {
     /// Builds the model and its initial state from a validated scenario.
     pub fn new(scenario: &Scenario) -> Result<Simulation, SimError> {
+        Self::with_extra_resistance(scenario, 0.0)
+    }
+
+    /// The same with a constant added resistance [N] in the hull (the fuel study's steady states
+    /// in regular seas: the mean second-order force).
+    pub fn with_extra_resistance(scenario: &Scenario, extra: f64) -> Result<Simulation, SimError> {
         scenario.validate().map_err(|e| SimError::Setup(e.to_string()))?;
-        let plant = Plant::new(scenario).map_err(SimError::Setup)?;
+        let mut plant = Plant::new(scenario).map_err(SimError::Setup)?;
+        plant.extra_resistance = extra;
         let sim_cfg = &scenario.sim;
         let dt = sim_cfg.dt_s;
         let total_steps = (sim_cfg.duration_s / dt).round() as u64;
@@ -217,6 +248,7 @@ impl Simulation {
         let mut calm = plant.clone();
         calm.beta_t = 1.0;
         calm.beta_q = 1.0;
+        calm.extra_resistance = 0.0;
         let n_map = (kn_to_m_s(40.0) / MAP_STEP).ceil() as usize + 1;
         let map: Vec<f64> = (0..n_map).map(|i| calm.equilibrium_shaft_speed(i as f64 * MAP_STEP)).collect();
 
@@ -264,8 +296,23 @@ impl Simulation {
             trace,
             warnings: Vec::new(),
             max_heading_lag: 0.0,
+            sea: seaway::Seaway::new(scenario).map_err(SimError::Setup)?,
+            sea_every: (scenario.seakeeping.sample_period_s / dt).round().max(1.0) as u64,
+            refresh_every: (scenario.seakeeping.rao_refresh_s / dt).round().max(1.0) as u64,
+            vent: [Ventilation::default(); N_SHAFTS],
+            losses: LossParams {
+                ventilation_on: scenario.seakeeping.ventilation_on_h_over_r,
+                ventilation_off: scenario.seakeeping.ventilation_off_h_over_r,
+                ventilation_loss: scenario.seakeeping.ventilation_loss,
+                recovery_revolutions: scenario.seakeeping.recovery_revolutions,
+                torque_exponent: scenario.seakeeping.torque_exponent,
+            },
+            h_over_r: 2.0 * scenario.seakeeping.hub_depth_m / scenario.propeller.diameter_m,
+            fuel_curve: crate::fuel::part_load_curve(),
+            fuel_extrapolated: false,
         };
         sim.initialise()?;
+        sim.sea_step();
         sim.stored0 = sim.plant.stored_energy(&sim.x);
         sim.apply_commands();
         sim.refresh_outputs();
@@ -509,6 +556,26 @@ impl Simulation {
         let p_inverter: f64 = o.motor.iter().map(|m| m.p_in).sum();
         let p_motor: f64 = (0..N_SHAFTS).map(|s| o.motor[s].torque * x[omega_rm(s)]).sum();
         let j = mean_shaft(&|s| o.propeller[s].advance_ratio);
+        let sea = match &self.sea {
+            Some(s) => {
+                let mut l = s.last;
+                l.hub = l.hub_at(self.t);
+                l
+            }
+            None => seaway::SeaSample { hub: self.scenario.seakeeping.hub_depth_m, ..Default::default() },
+        };
+        let mut fuel = 0.0;
+        let eta = self.scenario.seakeeping.turbine_rated_efficiency;
+        for k in 0..N_SETS {
+            let (f, ex) = crate::fuel::fuel_power(
+                &self.fuel_curve,
+                o.turbine_torque[k] * x[omega_t(k)],
+                self.scenario.plant.turbine.rated_power_w,
+                eta,
+            );
+            fuel += f;
+            self.fuel_extrapolated |= ex;
+        }
         let row = [
             self.t,
             m_s_to_kn(speed_through_water(x)),
@@ -529,8 +596,8 @@ impl Simulation {
             o.thrust / 1e3,
             j,
             mean_shaft(&|s| p.open_water.efficiency(o.propeller[s].advance_ratio)),
-            p.beta_t,
-            p.beta_q,
+            p.beta_t * mean_shaft(&|s| self.ctl.held.beta_t[s]),
+            p.beta_q * mean_shaft(&|s| self.ctl.held.beta_q[s]),
             x[X_POS],
             x[Y_POS],
             rad_to_deg(x[HEADING]),
@@ -544,6 +611,15 @@ impl Simulation {
             p_inverter,
             p_motor,
             o.resistance * x[SURGE],
+            sea.wave_stern,
+            sea.hub,
+            self.h_over_r,
+            sea.heave,
+            rad_to_deg(sea.pitch),
+            rad_to_deg(sea.roll),
+            -self.ctl.held.wave_fx,
+            self.ctl.held.wave_fy,
+            fuel,
         ];
         debug_assert_eq!(row.len(), SIGNALS.len());
         for (col, v) in self.trace.columns.iter_mut().zip(row) {
@@ -570,6 +646,34 @@ impl Simulation {
         self.step >= self.total_steps
     }
 
+    /// The seaway's part of a step: RAO refresh and wave sums when due, then the hub depth at
+    /// the middle of the step and the propellers' surface losses held over it.
+    fn sea_step(&mut self) {
+        let Some(sea) = self.sea.as_mut() else { return };
+        let x = &self.x;
+        if self.step % self.refresh_every == 0 {
+            sea.refresh(speed_through_water(x), x[HEADING]);
+        }
+        if self.step % self.sea_every == 0 {
+            let (sp, cp) = (libm::sin(x[HEADING]), libm::cos(x[HEADING]));
+            let xd = x[SURGE] * cp - x[SWAY] * sp;
+            let yd = x[SURGE] * sp + x[SWAY] * cp;
+            let s = sea.sample(self.t, x[X_POS], x[Y_POS], xd, yd);
+            self.ctl.held.wave_fx = s.fx;
+            self.ctl.held.wave_fy = s.fy;
+        }
+        let hub = sea.last.hub_at(self.t + 0.5 * self.dt);
+        let h_r = hub / (0.5 * self.plant.prop_diameter);
+        self.h_over_r = h_r;
+        for s in 0..N_SHAFTS {
+            let n_hz = x[omega_rm(s)] / (2.0 * PI);
+            let tv = self.vent[s].step(&self.losses, h_r, n_hz, self.dt);
+            let (bt, bq) = loss_factors(&self.losses, h_r, tv);
+            self.ctl.held.beta_t[s] = bt;
+            self.ctl.held.beta_q[s] = bq;
+        }
+    }
+
     /// Advances by at most `max_steps` time steps (stopping at the end of the run).
     pub fn advance(&mut self, max_steps: u64) -> Result<(), SimError> {
         let end = (self.step + max_steps).min(self.total_steps);
@@ -577,7 +681,17 @@ impl Simulation {
             if self.step % self.ctl_every == 0 {
                 self.control();
             }
+            if self.sea.is_some() && self.step > 0 {
+                self.sea_step();
+            }
             rk4_step(&self.plant, &mut self.x, &self.ctl.held, self.dt, &mut self.out);
+            if self.sea.is_some() && !self.x[HEADING].is_finite() {
+                return Err(SimError::Diverged {
+                    time_s: self.t,
+                    subsystem: "seaway".into(),
+                    message: "non-finite ship state in waves".into(),
+                });
+            }
             self.step += 1;
             self.t = self.step as f64 * self.dt;
             self.check()?;
@@ -603,6 +717,12 @@ impl Simulation {
     /// The model constants.
     pub fn plant(&self) -> &Plant {
         &self.plant
+    }
+
+    /// Shaft power of each gas turbine now [W].
+    pub fn turbine_power(&mut self) -> [f64; N_SETS] {
+        self.refresh_outputs();
+        std::array::from_fn(|k| self.out.turbine_torque[k] * self.x[omega_t(k)])
     }
 
     /// Ends the run: the trace and its summary.

@@ -99,8 +99,9 @@ pub enum Energy {
     Regenerated,
 }
 
-/// Held controller outputs (piecewise constant between controller samples).
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
+/// Held controller outputs (piecewise constant between controller samples) and held sea inputs
+/// (constant over one time step).
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Held {
     /// Throttle of each turbine [fraction].
     pub throttle: [f64; N_SETS],
@@ -110,6 +111,27 @@ pub struct Held {
     pub slip: [f64; N_SHAFTS],
     /// Rudder angle [rad].
     pub rudder: f64,
+    /// Surface losses of each propeller, beta_T and beta_Q (ch. 2.3) [-].
+    pub beta_t: [f64; N_SHAFTS],
+    pub beta_q: [f64; N_SHAFTS],
+    /// Slowly varying second-order wave force, ship axes: forward and to starboard [N] (eq. 2.60).
+    pub wave_fx: f64,
+    pub wave_fy: f64,
+}
+
+impl Default for Held {
+    fn default() -> Self {
+        Held {
+            throttle: [0.0; N_SETS],
+            field_voltage: [0.0; N_SETS],
+            slip: [0.0; N_SHAFTS],
+            rudder: 0.0,
+            beta_t: [1.0; N_SHAFTS],
+            beta_q: [1.0; N_SHAFTS],
+            wave_fx: 0.0,
+            wave_fy: 0.0,
+        }
+    }
 }
 
 /// Everything algebraic at one instant.
@@ -171,6 +193,9 @@ pub struct Plant {
     pub shaft_inertia: f64,
     pub beta_t: f64,
     pub beta_q: f64,
+    /// A constant added resistance [N] (the mean second-order force of a regular sea, for the
+    /// steady states of the fuel study); 0 in a normal run.
+    pub extra_resistance: f64,
 }
 
 impl Plant {
@@ -228,19 +253,26 @@ impl Plant {
             shaft_inertia: sc.propeller.shaft_inertia_kg_m2,
             beta_t: sc.propeller.beta_t,
             beta_q: sc.propeller.beta_q,
+            extra_resistance: 0.0,
         })
     }
 
     /// Propeller thrust and torque at shaft speed `omega` [rad/s] with inflow speed `va` [m/s] at the
     /// stern (eq. 2.12 with V_a for u: the advance speed is va (1 - w)).
     pub fn propeller_load(&self, omega: f64, va: f64) -> PropellerLoad {
+        self.propeller_load_in_waves(omega, va, 1.0, 1.0)
+    }
+
+    /// The same with the surface losses `bt`, `bq` (beta_T, beta_Q of ch. 2.3) on top of the
+    /// scenario's constant factors.
+    pub fn propeller_load_in_waves(&self, omega: f64, va: f64, bt: f64, bq: f64) -> PropellerLoad {
         let (n, va) = (omega / (2.0 * PI), self.surge.advance_speed(va));
         let c = Conditions {
             diameter_m: self.prop_diameter,
             rho: self.rho,
             rotative_efficiency: self.rotative_efficiency,
-            beta_t: self.beta_t,
-            beta_q: self.beta_q,
+            beta_t: self.beta_t * bt,
+            beta_q: self.beta_q * bq,
         };
         match &self.four_quadrant {
             None => self.open_water.load(n, va, &c),
@@ -250,13 +282,14 @@ impl Plant {
 
     /// Straight-line resistance of the hull at ship speed `u` [N] (what the calm-water map balances).
     pub fn straight_resistance(&self, u: f64) -> f64 {
-        match &self.hull {
-            Hull::Surge => self.surge.resistance(u),
-            Hull::Maneuvering { abkowitz, lo, hi, .. } => {
-                let w = handover_weight(u, *lo, *hi);
-                (1.0 - w) * self.surge.resistance(u) - w * abkowitz.forces(u, 0.0, 0.0).x
+        self.extra_resistance
+            + match &self.hull {
+                Hull::Surge => self.surge.resistance(u),
+                Hull::Maneuvering { abkowitz, lo, hi, .. } => {
+                    let w = handover_weight(u, *lo, *hi);
+                    (1.0 - w) * self.surge.resistance(u) - w * abkowitz.forces(u, 0.0, 0.0).x
+                }
             }
-        }
     }
 
     /// Shaft speed [rad/s] at which the propellers carry the straight-line resistance at `u` [m/s]
@@ -325,7 +358,7 @@ impl Plant {
             let omega_e = self.motor.pole_pairs * w_rm + h.slip[s];
             let v_m = self.motor.phase_voltage(omega_e, v_max);
             let mp = self.motor.operate(v_m, omega_e, h.slip[s], w_rm);
-            let pl = self.propeller_load(w_rm, va);
+            let pl = self.propeller_load_in_waves(w_rm, va, h.beta_t[s], h.beta_q[s]);
             let p_brake = self.brake_power(v_c);
             dx[bus_voltage(s)] = self.dc_link.bus_voltage_rate(i_rect, mp.p_in + p_brake, v_c); // eqs. 2.7, 2.10
             dx[omega_rm(s)] = (mp.torque - pl.torque_nm) / self.shaft_inertia; // eq. 2.6 in rad/s
@@ -347,10 +380,10 @@ impl Plant {
         }
         let resistance = match &self.hull {
             Hull::Surge => {
-                dx[SURGE] = self.surge.acceleration(thrust, u); // eq. 2.16
+                dx[SURGE] = self.surge.acceleration(thrust + h.wave_fx - self.extra_resistance, u); // eq. 2.16
                 dx[SWAY] = 0.0;
                 dx[YAW_RATE] = 0.0;
-                self.surge.resistance(u)
+                self.surge.resistance(u) - h.wave_fx + self.extra_resistance
             }
             Hull::Maneuvering { abkowitz, rudder, lo, hi } => {
                 let f = abkowitz.forces(u, v, r); // eqs. 2.22-2.24, hull terms
@@ -358,11 +391,14 @@ impl Plant {
                                                                                         // Surge hands over smoothly from the surge model (low speed) to Abkowitz (near u0).
                 let w = handover_weight(u, *lo, *hi);
                 let x_hull = (1.0 - w) * -self.surge.resistance(u) + w * f.x;
-                dx[SURGE] = (thrust + x_hull + fx_r) / self.surge_mass; // eq. 2.20, first row
-                let (vd, rd) = abkowitz.sway_yaw_acceleration(f.y + fy_r, f.n - rudder.x_p_m * fy_r);
+                // Second-order wave forces enter as F_x,add, F_y,add of eqs. 2.22-2.23; the added
+                // resistance is booked with the ship's resistance in the energy accounts.
+                let x_hull = x_hull - self.extra_resistance;
+                dx[SURGE] = (thrust + x_hull + fx_r + h.wave_fx) / self.surge_mass; // eq. 2.20, first row
+                let (vd, rd) = abkowitz.sway_yaw_acceleration(f.y + fy_r + h.wave_fy, f.n - rudder.x_p_m * fy_r);
                 dx[SWAY] = vd;
                 dx[YAW_RATE] = rd;
-                -(x_hull + fx_r)
+                -(x_hull + fx_r + h.wave_fx)
             }
         };
         let (sp, cp) = (libm::sin(x[HEADING]), libm::cos(x[HEADING]));
