@@ -49,7 +49,8 @@ impl std::error::Error for SimError {}
 /// controller's set point (5618 V); motor voltage, rated phase voltage; motor power, rated
 /// power (38 MW). Per-shaft signals average the two shafts; `_1`, `_2` are the shafts. Ship speed
 /// is the speed through the water, sqrt(u^2 + v^2). In waves: heave up, pitch bow down (STF), roll
-/// starboard down; `added_resistance_n` and `drift_force_n` are the slowly varying second-order
+/// starboard down, sway to starboard and yaw bow to starboard (first-order motions about the
+/// maneuvering track, not fed back into it); `added_resistance_n` and `drift_force_n` are the slowly varying second-order
 /// force backwards and to starboard; `fuel_power_w` sums the four turbines.
 pub const SIGNALS: &[&str] = &[
     "t_s",
@@ -92,6 +93,8 @@ pub const SIGNALS: &[&str] = &[
     "heave_m",
     "pitch_deg",
     "roll_deg",
+    "sway_m",
+    "yaw_deg",
     "added_resistance_n",
     "drift_force_n",
     "fuel_power_w",
@@ -617,6 +620,8 @@ impl Simulation {
             sea.heave,
             rad_to_deg(sea.pitch),
             rad_to_deg(sea.roll),
+            sea.sway,
+            rad_to_deg(sea.yaw),
             -self.ctl.held.wave_fx,
             self.ctl.held.wave_fy,
             fuel,

@@ -51,12 +51,12 @@ pub fn dtmb5415() -> &'static Ship {
 }
 
 /// One component with its RAO slice at its own frequency: [speed][heading] of
-/// (heave, pitch, roll, F_add).
+/// (heave, pitch, roll, sway, yaw; F_add).
 struct Component {
     wave: WaveComponent,
     cos_mu: f64,
     sin_mu: f64,
-    slice: Vec<([C; 3], f64)>,
+    slice: Vec<([C; 5], f64)>,
 }
 
 /// What one sample gives.
@@ -69,10 +69,13 @@ pub struct SeaSample {
     pub hub_accel: f64,
     /// Wave elevation at the stern [m].
     pub wave_stern: f64,
-    /// Heave [m, up], pitch [rad, bow down], roll [rad, starboard down].
+    /// Heave [m, up], pitch [rad, bow down], roll [rad, starboard down], sway [m, to starboard],
+    /// yaw [rad, bow to starboard]: the first-order motions about the maneuvering track.
     pub heave: f64,
     pub pitch: f64,
     pub roll: f64,
+    pub sway: f64,
+    pub yaw: f64,
     /// Slowly varying second-order force in ship axes [N]: forward and to starboard.
     pub fx: f64,
     pub fy: f64,
@@ -96,9 +99,10 @@ pub struct Seaway {
     second_order: bool,
     /// Eq. 2.57 as printed (+x_p eta5 with STF's bow-down pitch) instead of the consistent sign.
     thesis_pitch_sign: bool,
-    /// Per component, refreshed: hub transfer, heave, pitch, roll (roll signed for the side the
-    /// waves come from), stern factor; Newman weights for x and y with their signs.
-    h: Vec<[C; 5]>,
+    /// Per component, refreshed: hub transfer, heave, pitch, roll, stern factor, sway, yaw (the
+    /// lateral modes signed for the side the waves come from and turned to starboard-positive
+    /// axes); Newman weights for x and y with their signs.
+    h: Vec<[C; 7]>,
     wx: Vec<f64>,
     wy: Vec<f64>,
     sign_x: f64,
@@ -147,7 +151,7 @@ impl Seaway {
                         let r = table.interpolate(w.omega, u, b);
                         // F_add along the waves' travel = fx cos b + fy sin b of the table.
                         let fadd = r.fx * libm::cos(b) + r.fy * libm::sin(b);
-                        slice.push(([r.heave, r.pitch, r.roll], fadd));
+                        slice.push(([r.heave, r.pitch, r.roll, r.sway, r.yaw], fadd));
                     }
                 }
                 Component { cos_mu: libm::cos(w.direction), sin_mu: libm::sin(w.direction), wave: w, slice }
@@ -162,7 +166,7 @@ impl Seaway {
             x_p: k.prop_x_aft_m,
             second_order: k.second_order_forces,
             thesis_pitch_sign: k.stern_motion == crate::scenario::SternMotion::ThesisEq257,
-            h: vec![[C::new(0.0, 0.0); 5]; n],
+            h: vec![[C::new(0.0, 0.0); 7]; n],
             wx: vec![0.0; n],
             wy: vec![0.0; n],
             sign_x: 1.0,
@@ -187,7 +191,7 @@ impl Seaway {
             let beta = (psi - c.wave.direction).rem_euclid(2.0 * PI);
             let (bf, side) = if beta > PI { (2.0 * PI - beta, -1.0) } else { (beta, 1.0) };
             let (k0, fk) = bracket(&self.headings, bf);
-            let mut acc = [C::new(0.0, 0.0); 3];
+            let mut acc = [C::new(0.0, 0.0); 5];
             let mut fadd = 0.0;
             for (dj, wj) in [(0, 1.0 - fj), (1, fj)] {
                 for (dk, wk) in [(0, 1.0 - fk), (1, fk)] {
@@ -198,8 +202,8 @@ impl Seaway {
                     let j = (j0 + dj).min(self.speeds.len() - 1);
                     let k = (k0 + dk).min(nh - 1);
                     let (h, f) = &c.slice[j * nh + k];
-                    for m in 0..3 {
-                        acc[m] += h[m] * w;
+                    for (a, v) in acc.iter_mut().zip(h) {
+                        *a += v * w;
                     }
                     fadd += w * f;
                 }
@@ -212,7 +216,8 @@ impl Seaway {
             // depth is h0 + eta_s - eta3 - x_p eta5 (a hull following long waves keeps its depth).
             // Eq. 2.57 prints + x_p eta5; `stern_motion = "thesis_eq_2_57"` reproduces that.
             let hub = if self.thesis_pitch_sign { stern - h3 + h5 * self.x_p } else { stern - h3 - h5 * self.x_p };
-            self.h[i] = [hub, h3, h5, h4, stern];
+            // STF's sway is to port and its yaw bow to port: both flip for starboard-positive axes.
+            self.h[i] = [hub, h3, h5, h4, stern, -acc[3] * side, -acc[4] * side];
             // Mean force components per amplitude squared, ship axes (x forward, y starboard):
             // STF's y is to port.
             let a2 = c.wave.amplitude * c.wave.amplitude;
@@ -254,6 +259,8 @@ impl Seaway {
             s.pitch += a * re(h[2]);
             s.roll += a * re(h[3]);
             s.wave_stern += a * re(h[4]);
+            s.sway += a * re(h[5]);
+            s.yaw += a * re(h[6]);
             cx += self.wx[i] * cs;
             sx += self.wx[i] * sn;
             cy += self.wy[i] * cs;
