@@ -1,4 +1,4 @@
-//! Runs a short start-up natively at build time and stores its summary, so the wasm tests can check
+//! Runs a short start-up, a turn and a run in head seas natively at build time and stores its summary, so the wasm tests can check
 //! that the browser computes the same numbers bit for bit.
 fn main() {
     let mut s = aes_core::presets::startup();
@@ -7,7 +7,12 @@ fn main() {
     let mut m = aes_core::presets::preset("turn-90").unwrap_or_default();
     m.sim.duration_s = 40.0;
     let turn = aes_core::run(&m).map(|r| r.summary.to_json_value().to_string()).unwrap_or_default();
+    let mut h = aes_core::presets::preset("head-seas-ss6").unwrap_or_default();
+    h.sim.duration_s = 10.0;
+    h.seakeeping.stern_motion = aes_core::scenario::SternMotion::ThesisEq257;
+    let seas = aes_core::run(&h).map(|r| r.summary.to_json_value().to_string()).unwrap_or_default();
     let out = std::env::var("OUT_DIR").unwrap_or_else(|_| ".".into());
+    let _ = std::fs::write(format!("{out}/native_head_seas_10s.json"), seas);
     let _ = std::fs::write(format!("{out}/native_startup_60s.json"), summary);
     let _ = std::fs::write(format!("{out}/native_turn90_40s.json"), turn);
     println!("cargo:rerun-if-changed=../core/src");

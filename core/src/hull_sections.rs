@@ -167,7 +167,7 @@ impl HullOffsets {
             mz += tr(a.area * a.centroid_z, b.area * b.centroid_z);
             awp += tr(a.beam, b.beam);
             ax += tr(a.beam * a.x, b.beam * b.x);
-            it += tr(a.beam.powi(3) / 12.0, b.beam.powi(3) / 12.0);
+            it += tr(a.beam * a.beam * a.beam / 12.0, b.beam * b.beam * b.beam / 12.0);
             il += tr(a.beam * a.x * a.x, b.beam * b.x * b.x);
         }
         let xf = ax / awp;
@@ -262,15 +262,15 @@ impl LewisForm {
     /// Area coefficient of the mapped form (Lewis 1929).
     pub fn area_coefficient(&self) -> f64 {
         let (a1, a3) = (self.a1, self.a3);
-        PI / 4.0 * (1.0 - a1 * a1 - 3.0 * a3 * a3) / ((1.0 + a3).powi(2) - a1 * a1)
+        PI / 4.0 * (1.0 - a1 * a1 - 3.0 * a3 * a3) / ((1.0 + a3) * (1.0 + a3) - a1 * a1)
     }
     /// A contour point at angle `theta` from the keel (0) to the waterline (pi/2), on one side:
     /// (half-breadth, depth below the waterline) [m].
     pub fn point(&self, theta: f64) -> (f64, f64) {
         let m = self.scale;
         (
-            m * ((1.0 + self.a1) * theta.sin() - self.a3 * (3.0 * theta).sin()),
-            m * ((1.0 - self.a1) * theta.cos() + self.a3 * (3.0 * theta).cos()),
+            m * ((1.0 + self.a1) * libm::sin(theta) - self.a3 * libm::sin(3.0 * theta)),
+            m * ((1.0 - self.a1) * libm::cos(theta) + self.a3 * libm::cos(3.0 * theta)),
         )
     }
 }

@@ -85,7 +85,7 @@ impl Moments {
         if self.m2 <= 0.0 {
             0.0
         } else {
-            (self.n as f64).sqrt() * self.m3 / self.m2.powf(1.5)
+            (self.n as f64).sqrt() * self.m3 / libm::pow(self.m2, 1.5)
         }
     }
 
@@ -184,7 +184,7 @@ pub fn welch(signal: &[f64], dt: f64, segment: usize) -> (Vec<f64>, Vec<f64>) {
 /// Rice's mean rate of up-crossings of level `z` by a zero-mean Gaussian process with spectral
 /// moments m0 and m2 [1/s]: (1 / 2 pi) sqrt(m2 / m0) exp(-z^2 / (2 m0)).
 pub fn rice_upcrossing_rate(m0: f64, m2: f64, z: f64) -> f64 {
-    (m2 / m0).sqrt() / (2.0 * PI) * (-z * z / (2.0 * m0)).exp()
+    (m2 / m0).sqrt() / (2.0 * PI) * libm::exp(-z * z / (2.0 * m0))
 }
 
 #[cfg(test)]

@@ -69,4 +69,12 @@ fn wasm_matches_native_bit_for_bit() {
     let mut t: serde_json::Value = serde_json::from_str(&preset_json("turn-90").unwrap()).unwrap();
     t["sim"]["duration_s"] = serde_json::json!(40.0);
     assert_eq!(run_summary(&t.to_string()).unwrap(), include_str!(concat!(env!("OUT_DIR"), "/native_turn90_40s.json")));
+    // Waves: 200 components, the RAO table built in wasm, ventilation switching (eq. 2.57 as printed).
+    let mut h: serde_json::Value = serde_json::from_str(&preset_json("head-seas-ss6").unwrap()).unwrap();
+    h["sim"]["duration_s"] = serde_json::json!(10.0);
+    h["seakeeping"]["stern_motion"] = serde_json::json!("thesis_eq_2_57");
+    assert_eq!(
+        run_summary(&h.to_string()).unwrap(),
+        include_str!(concat!(env!("OUT_DIR"), "/native_head_seas_10s.json"))
+    );
 }

@@ -156,7 +156,13 @@ pub fn profile_error(map: &SectionMap, profile: &[(f64, f64)]) -> f64 {
     if profile.is_empty() {
         return 0.0;
     }
-    let s: f64 = profile.iter().map(|&(d, hb)| (half_breadth_at(map, d) - hb).powi(2)).sum();
+    let s: f64 = profile
+        .iter()
+        .map(|&(d, hb)| {
+            let e = half_breadth_at(map, d) - hb;
+            e * e
+        })
+        .sum();
     (s / profile.len() as f64).sqrt()
 }
 

@@ -3,7 +3,8 @@
 //! regressions of Ikeda's component method by Kawahara, Maekawa & Ikeda 2009, J. Marine Science
 //! and Technology 14), and hull lift at forward speed (Ikeda). The wave component comes from the
 //! strip theory itself. Each is returned as the equivalent linear coefficient B44* [N m s/rad]
-//! that dissipates the same energy per cycle at roll amplitude `phi_a` (eq. 2.45).
+//! that dissipates the same energy per cycle at roll amplitude `phi_a` (eq. 2.45). Powers and
+//! exponentials go through libm (identical native and wasm numbers).
 
 use std::f64::consts::PI;
 
@@ -41,23 +42,23 @@ pub fn components(h: &RollHull, phi_a: f64, omega: f64, u: f64, rho: f64, g: f64
     // number; Tamiya's factor for forward speed.
     let rf = d * ((0.887 + 0.145 * cb) * (1.7 + cb * b / d) - 2.0 * ogd) / PI;
     let sf = l * (1.75 * d + cb * b);
-    let cf = 1.328 * (3.22 * rf * rf * phi * phi * w / (2.0 * PI * nu_kin)).powf(-0.5);
-    let bf = 4.0 / (3.0 * PI) * rho * sf * rf.powi(3) * phi * w * cf * (1.0 + 4.1 * u / (w * l));
+    let cf = 1.328 * libm::pow(3.22 * rf * rf * phi * phi * w / (2.0 * PI * nu_kin), -0.5);
+    let bf = 4.0 / (3.0 * PI) * rho * sf * (rf * rf * rf) * phi * w * cf * (1.0 + 4.1 * u / (w * l));
     // Eddy making at zero speed (Kawahara et al. 2009 regression; valid for Cm 0.9-0.99, the
     // destroyer's 0.81 is taken at 0.9), reduced with speed by Ikeda's (0.04 K)^2 / (1 + (0.04 K)^2),
     // K = omega L / U.
     let cm = h.cm.clamp(0.9, 0.99);
     let bd = b / d;
-    let fe1 = (-0.0182 * cb + 0.0155) * (bd - 1.8).powi(3);
-    let fe2 = -79.414 * cb.powi(4) + 215.695 * cb.powi(3) - 215.883 * cb * cb + 93.894 * cb - 14.848;
+    let fe1 = (-0.0182 * cb + 0.0155) * ((bd - 1.8) * (bd - 1.8) * (bd - 1.8));
+    let fe2 = -79.414 * (cb * cb * cb * cb) + 215.695 * (cb * cb * cb) - 215.883 * cb * cb + 93.894 * cb - 14.848;
     let be1 = (3.98 * cb - 5.1525)
         * (-0.2 * bd + 1.6)
         * ogd
         * ((0.9717 * cb * cb - 1.55 * cb + 0.723) * ogd + 0.04567 * cb + 0.9408);
-    let be2 = (0.25 * ogd + 0.95) * ogd - 219.2 * cb.powi(3) + 443.7 * cb * cb - 283.3 * cb + 59.6;
+    let be2 = (0.25 * ogd + 0.95) * ogd - 219.2 * (cb * cb * cb) + 443.7 * cb * cb - 283.3 * cb + 59.6;
     let be3 = -15.0 * cb * bd + 46.5 * cb + 11.2 * bd - 28.6;
-    let cr = (fe1 + fe2) * (be1 + be2 * cm.powf(be3)).exp();
-    let be_hat = 4.0 * what * phi / (3.0 * PI * cb * bd.powi(3)) * cr;
+    let cr = (fe1 + fe2) * libm::exp(be1 + be2 * libm::pow(cm, be3));
+    let be_hat = 4.0 * what * phi / (3.0 * PI * cb * (bd * bd * bd)) * cr;
     let speed_factor = if u > 1e-6 {
         let k = 0.04 * w * l / u;
         k * k / (1.0 + k * k)
@@ -80,14 +81,14 @@ pub fn components(h: &RollHull, phi_a: f64, omega: f64, u: f64, rho: f64, g: f64
     // components; roll amplitude in degrees there).
     let bbk = if h.bk_length > 0.0 && h.bk_breadth > 0.0 {
         let (lbk, bbkb, phid) = (h.bk_length / l, h.bk_breadth / b, phi.to_degrees());
-        let f1 = (-0.3651 * cb + 0.3907) * (bd - 2.83).powi(2) - 2.21 * cb + 2.632;
+        let f1 = (-0.3651 * cb + 0.3907) * ((bd - 2.83) * (bd - 2.83)) - 2.21 * cb + 2.632;
         let f2 = 0.00255 * phid * phid + 0.122 * phid + 0.4794;
         let f3 = (-0.8913 * bbkb * bbkb - 0.0733 * bbkb) * lbk * lbk
             + (5.2857 * bbkb * bbkb - 0.01185 * bbkb + 0.00189) * lbk;
         let b1 = (5.0 * bbkb + 0.3 * bd - 0.2 * lbk + 0.00125 * phid * phid - 0.0425 * phid - 1.86) * ogd;
         let b2 = -15.0 * bbkb + 1.2 * cb - 0.1 * bd - 0.0657 * ogd * ogd + 0.0586 * ogd + 1.6164;
         let b3 = 2.5 * ogd + 15.75;
-        (f1 * f2 * f3 * (b1 + b2 * cm.powf(b3)).exp() * what).max(0.0) * to_dim
+        (f1 * f2 * f3 * libm::exp(b1 + b2 * libm::pow(cm, b3)) * what).max(0.0) * to_dim
     } else {
         0.0
     };

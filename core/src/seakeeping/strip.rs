@@ -547,12 +547,14 @@ pub fn natural_periods(ship: &Ship, table: &RadiationTable) -> (f64, f64) {
     let n = ship.strips.len();
     let int = |f: &dyn Fn(usize) -> f64| -> f64 { (0..n).map(|i| ship.strips[i].weight * f(i)).sum() };
     let c33 = rho * g * int(&|i| ship.strips[i].beam);
-    let c55 = rho * g * (int(&|i| ship.strips[i].xi.powi(2) * ship.strips[i].beam) + ship.volume * (ship.zb - ship.zg));
-    let i5 = ship.mass * (ship.mass_props.kyy_m.powi(2) + ship.zg * ship.zg);
+    let c55 = rho
+        * g
+        * (int(&|i| (ship.strips[i].xi * ship.strips[i].xi) * ship.strips[i].beam) + ship.volume * (ship.zb - ship.zg));
+    let i5 = ship.mass * ((ship.mass_props.kyy_m * ship.mass_props.kyy_m) + ship.zg * ship.zg);
     let (mut w3, mut w5) = (1.0, 1.0);
     for _ in 0..100 {
         let a33 = int(&|i| table.at(i, w3).a33);
-        let a55 = int(&|i| ship.strips[i].xi.powi(2) * table.at(i, w5).a33);
+        let a55 = int(&|i| (ship.strips[i].xi * ship.strips[i].xi) * table.at(i, w5).a33);
         w3 = (c33 / (ship.mass + a33)).sqrt();
         w5 = (c55 / (i5 + a55)).sqrt();
     }
@@ -663,7 +665,7 @@ mod tests {
         assert!((c33 / ship.awp - 1.0).abs() < 0.01, "Awp {} vs {}", c33, ship.awp);
         let (t3, t5) = natural_periods(ship, t);
         let est3 = 2.0 * PI * (2.0 * ship.volume / (9.81 * ship.awp)).sqrt();
-        let i5 = ship.mass * ship.mass_props.kyy_m.powi(2);
+        let i5 = ship.mass * (ship.mass_props.kyy_m * ship.mass_props.kyy_m);
         let est5 = 2.0 * PI * (2.0 * i5 / (1025.0 * 9.81 * ship.volume * ship.gm_l)).sqrt();
         println!("T3 {t3:.2} s (estimate {est3:.2}), T5 {t5:.2} s (estimate {est5:.2})");
         assert!((t3 / est3 - 1.0).abs() < 0.2 && (t5 / est5 - 1.0).abs() < 0.2);
