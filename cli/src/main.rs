@@ -97,6 +97,38 @@ enum Cmd {
         #[arg(long = "roll-wave-amplitude", default_value_t = 1.0)]
         roll_wave_amplitude: f64,
     },
+    /// A Monte Carlo study of a scenario (thesis ch. 5.4); prints the summary JSON.
+    Mc {
+        /// Scenario JSON file, `-` or `preset:NAME` (its `monte_carlo` section says what to collect).
+        file: String,
+        /// Number of trials (default: the scenario's monte_carlo.trials).
+        #[arg(long)]
+        trials: Option<u64>,
+        /// Master seed (default: the scenario's sim.seed); trial i uses a seed made from it and i.
+        #[arg(long)]
+        seed: Option<u64>,
+        /// Worker threads (default: all cores). The summary does not depend on it.
+        #[arg(long)]
+        threads: Option<usize>,
+        /// Run only trials A..B of the study (a shard).
+        #[arg(long = "trial-range", value_name = "A..B")]
+        trial_range: Option<String>,
+        /// Write the shard's partial statistics to this file (for `aes-sim merge`).
+        #[arg(long)]
+        partial: Option<String>,
+        /// Override one parameter (repeatable).
+        #[arg(long = "set", value_name = "PATH=VALUE")]
+        sets: Vec<String>,
+    },
+    /// Merges Monte Carlo shards (`aes-sim mc ... --partial`) into the study's summary.
+    Merge {
+        /// Partial files.
+        #[arg(required = true)]
+        files: Vec<String>,
+        /// Also write the merged partial to this file.
+        #[arg(long)]
+        partial: Option<String>,
+    },
     /// The fuel study of ch. 5.2.4 (Fig. 5-12): fuel power of one prime mover in regular head and
     /// bow seas of 1 to 5 ft over wave frequency; JSON rows on standard output.
     Fuel {
@@ -363,6 +395,85 @@ fn real_main() -> Result<(), String> {
                 &omega,
                 roll_wave_amplitude,
             )?;
+            println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
+        }
+        Cmd::Mc { file, trials, seed, threads, trial_range, partial, sets } => {
+            let mut sc = load(&file, &sets)?;
+            if let Some(n) = trials {
+                sc.monte_carlo.trials = n;
+            }
+            if let Some(s) = seed {
+                sc.sim.seed = s;
+            }
+            sc.validate().map_err(|e| format!("{file}: {e}"))?;
+            let n = sc.monte_carlo.trials;
+            let (a, b) = match &trial_range {
+                None => (0, n),
+                Some(r) => {
+                    let (x, y) = r.split_once("..").ok_or_else(|| format!("--trial-range '{r}': expected A..B"))?;
+                    let a: u64 =
+                        x.trim().parse().map_err(|_| format!("--trial-range '{r}': A is not a whole number"))?;
+                    let b: u64 =
+                        y.trim().parse().map_err(|_| format!("--trial-range '{r}': B is not a whole number"))?;
+                    if a >= b || b > n {
+                        return Err(format!("--trial-range {a}..{b}: must satisfy 0 <= A < B <= trials = {n}"));
+                    }
+                    (a, b)
+                }
+            };
+            if trial_range.is_some() && partial.is_none() {
+                return Err("--trial-range needs --partial FILE (merge the shards with `aes-sim merge`)".into());
+            }
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads.unwrap_or(0))
+                .build()
+                .map_err(|e| format!("--threads: {e}"))?;
+            let t0 = Instant::now();
+            let result = pool.install(|| {
+                use rayon::prelude::*;
+                (a..b).into_par_iter().map(|i| aes_core::montecarlo::run_trial(&sc, i)).try_reduce(
+                    || aes_core::montecarlo::Partial::empty(&sc),
+                    |mut x, y| {
+                        x.merge(&y)?;
+                        Ok(x)
+                    },
+                )
+            })?;
+            eprintln!(
+                "aes-sim mc: {} trials in {:.2} s on {} threads",
+                b - a,
+                t0.elapsed().as_secs_f64(),
+                pool.current_num_threads()
+            );
+            if let Some(path) = &partial {
+                let text = serde_json::to_string(&result).map_err(|e| e.to_string())?;
+                std::fs::write(path, text).map_err(|e| format!("cannot write '{path}': {e}"))?;
+            }
+            if trial_range.is_none() {
+                let v = aes_core::montecarlo::summary(&result)?;
+                println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
+            }
+        }
+        Cmd::Merge { files, partial } => {
+            let mut acc: Option<aes_core::montecarlo::Partial> = None;
+            for f in &files {
+                let text = std::fs::read_to_string(f).map_err(|e| format!("cannot read '{f}': {e}"))?;
+                if text.len() > 512 << 20 {
+                    return Err(format!("{f}: larger than 512 MB"));
+                }
+                let p: aes_core::montecarlo::Partial =
+                    serde_json::from_str(&text).map_err(|e| format!("{f}: not a Monte Carlo partial: {e}"))?;
+                match acc.as_mut() {
+                    None => acc = Some(p),
+                    Some(a) => a.merge(&p).map_err(|e| format!("{f}: {e}"))?,
+                }
+            }
+            let acc = acc.ok_or("no partials given")?;
+            if let Some(path) = &partial {
+                let text = serde_json::to_string(&acc).map_err(|e| e.to_string())?;
+                std::fs::write(path, text).map_err(|e| format!("cannot write '{path}': {e}"))?;
+            }
+            let v = aes_core::montecarlo::summary(&acc)?;
             println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
         }
         Cmd::Fuel { file, omega, sets } => {

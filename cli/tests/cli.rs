@@ -211,3 +211,49 @@ fn rao_command() {
         aes_sim(&["rao", "--hull", "/nonexistent.csv", "--speed-kn", "20", "--heading-deg", "180", "--omega", "0.5"]);
     assert!(!ok && err.contains("cannot read"), "{err}");
 }
+
+/// `aes-sim mc`: the same study on one and on two threads, and as two shards merged, prints the
+/// same summary; bad ranges are refused.
+#[test]
+fn monte_carlo_is_order_independent() {
+    let base = [
+        "mc",
+        "preset:mc-excess-energy",
+        "--trials",
+        "4",
+        "--set",
+        "monte_carlo.histogram_time_s=6",
+        "--set",
+        "sim.duration_s=12",
+        "--set",
+        "monte_carlo.periodogram_segment_s=4",
+    ];
+    let run = |extra: &[&str]| {
+        let mut args: Vec<&str> = base.to_vec();
+        args.extend_from_slice(extra);
+        let (ok, out, err) = aes_sim(&args);
+        assert!(ok, "{err}");
+        out
+    };
+    let one = run(&["--threads", "1"]);
+    let two = run(&["--threads", "2"]);
+    assert_eq!(one, two);
+    let dir = std::env::temp_dir().join(format!("aes-mc-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (a, b) = (dir.join("a.json"), dir.join("b.json"));
+    run(&["--trial-range", "2..4", "--partial", a.to_str().unwrap()]);
+    run(&["--trial-range", "0..2", "--partial", b.to_str().unwrap()]);
+    let (ok, merged, err) = aes_sim(&["merge", a.to_str().unwrap(), b.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    assert_eq!(merged, one);
+    let v: serde_json::Value = serde_json::from_str(&one).unwrap();
+    for key in ["trials", "seed", "excess_energy_mj", "arrival_time_s", "rice", "envelopes"] {
+        assert!(v.get(key).is_some(), "{key}");
+    }
+    let (ok, _, err) =
+        aes_sim(&["mc", "preset:mc-arrival", "--trials", "4", "--trial-range", "3..9", "--partial", "/tmp/x"]);
+    assert!(!ok && err.contains("--trial-range 3..9"), "{err}");
+    let (ok, _, err) = aes_sim(&["merge", a.to_str().unwrap(), a.to_str().unwrap()]);
+    assert!(!ok && err.contains("overlap"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -9,6 +9,7 @@ pub mod fuel;
 pub mod generator;
 pub mod hull_sections;
 pub mod maneuvering;
+pub mod montecarlo;
 pub mod motor;
 pub mod numerics;
 pub mod presets;

@@ -17,6 +17,8 @@ pub const PRESET_NAMES: &[&str] = &[
     "fuel-regular-seas",
     "head-seas-ss6",
     "turn-360-ss6",
+    "mc-excess-energy",
+    "mc-arrival",
 ];
 
 /// The preset of that name.
@@ -35,6 +37,8 @@ pub fn preset(name: &str) -> Option<Scenario> {
         "fuel-regular-seas" => fuel_regular_seas(),
         "head-seas-ss6" => head_seas_ss6(),
         "turn-360-ss6" => turn_360_ss6(),
+        "mc-excess-energy" => mc_excess_energy(),
+        "mc-arrival" => mc_arrival(),
         _ => return None,
     })
 }
@@ -203,6 +207,40 @@ pub fn turn_360_ss6() -> Scenario {
     s.sea.sea_state = 6;
     s.sim.seed = 1;
     sea_step(&mut s);
+    s
+}
+
+/// Ch. 5.4.1 (Figs. 5-20 to 5-23): 100 trials of 80 s at 25 knots in head seas SS6 with a 4.8 m
+/// propeller at only h0 = 4.0 m: envelopes of motor power, its histogram at 40 s, the excess energy
+/// due to surface effects per trial and the periodogram of motor power.
+pub fn mc_excess_energy() -> Scenario {
+    let mut s = head_seas_ss6();
+    s.name = "mc-excess-energy".into();
+    s.description = "Monte Carlo, 100 trials of 80 s at 25 knots in head seas SS6 with a 4.8 m propeller only 4 m deep                      (thesis ch. 5.4.1, Figs. 5-20 to 5-23): how much extra energy the motors draw because of surface                      effects, and how their power spreads over trials. Run it with `aes-sim mc` or the Monte Carlo tab."
+        .into();
+    s.propeller.diameter_m = 4.8;
+    s.seakeeping.hub_depth_m = 4.0;
+    s.monte_carlo.trials = 100;
+    s.monte_carlo.excess_energy = true;
+    s
+}
+
+/// Ch. 5.4.2 (Table 5.8, Figs. 5-24, 5-25): arrival time of the first surface effect with a 4.8 m
+/// propeller at h0 = 6.0 m, 200 trials stopped 12 s after their first event, 90 s cap; compared with
+/// Rice's rate. With the consistent hub depth (eq. 2.57 corrected) surface effects at h0 = 6 m are
+/// about one in 10^6 seconds, so this study uses eq. 2.57 as printed, as the thesis did.
+pub fn mc_arrival() -> Scenario {
+    let mut s = head_seas_ss6();
+    s.name = "mc-arrival".into();
+    s.description = "Monte Carlo, 200 trials at 25 knots in head seas SS6 with a 4.8 m propeller 6 m deep, each stopped                      12 s after its first surface effect or at 90 s (thesis ch. 5.4.2, Table 5.8, Figs. 5-24 and 5-25):                      the arrival times against Rice's up-crossing rate. Uses the hub depth of eq. 2.57 as printed, as the                      thesis did; with the corrected sign such events are a million times rarer."
+        .into();
+    s.propeller.diameter_m = 4.8;
+    s.seakeeping.hub_depth_m = 6.0;
+    s.seakeeping.stern_motion = crate::scenario::SternMotion::ThesisEq257;
+    s.sim.duration_s = 90.0;
+    s.monte_carlo.trials = 200;
+    s.monte_carlo.stop_at_first_event = true;
+    s.monte_carlo.envelope_signals = vec!["im_power_pu".into(), "h_over_r".into()];
     s
 }
 

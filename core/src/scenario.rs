@@ -32,6 +32,57 @@ pub struct Scenario {
     pub sea: SeaParams,
     /// Ship motions in waves and the propeller's surface losses (used when the sea is not calm).
     pub seakeeping: SeakeepingParams,
+    /// What a Monte Carlo study of this scenario collects (`aes-sim mc`, the page's Monte Carlo
+    /// tab); a single run ignores it.
+    pub monte_carlo: MonteCarloParams,
+}
+
+/// A Monte Carlo study (thesis ch. 5.4): trial i runs the scenario with the sea of seed
+/// `trial_seed(sim.seed, i)`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct MonteCarloParams {
+    pub trials: u64,
+    /// Signals whose envelope over trials (mean, +-2 sigma, min, max per recorded time) is kept.
+    pub envelope_signals: Vec<String>,
+    /// Histogram of `histogram_signal` at `histogram_time_s` over [`histogram_lo`, `histogram_hi`)
+    /// (empty when the trials end before that time).
+    pub histogram_signal: String,
+    pub histogram_time_s: f64,
+    pub histogram_lo: f64,
+    pub histogram_hi: f64,
+    pub histogram_bins: u32,
+    /// Excess motor energy due to surface effects per trial: against the same trial without
+    /// surface losses (doubles the cost).
+    pub excess_energy: bool,
+    /// Stop a trial `onset_window_s` after its first surface effect (beta_T < 1); trials without
+    /// one run to the end and count as censored at `sim.duration_s`.
+    pub stop_at_first_event: bool,
+    /// Window of motor power kept after the onset [s] (Fig. 5-25).
+    pub onset_window_s: f64,
+    /// Traces of the first trials kept for display (at most 10).
+    pub keep_traces: u32,
+    /// Welch segment for the periodogram of motor power [s].
+    pub periodogram_segment_s: f64,
+}
+
+impl Default for MonteCarloParams {
+    fn default() -> Self {
+        MonteCarloParams {
+            trials: 100,
+            envelope_signals: vec!["im_power_pu".into(), "h_over_r".into(), "prop_rpm".into()],
+            histogram_signal: "im_power_pu".into(),
+            histogram_time_s: 40.0,
+            histogram_lo: 0.0,
+            histogram_hi: 1.5,
+            histogram_bins: 30,
+            excess_energy: false,
+            stop_at_first_event: false,
+            onset_window_s: 12.0,
+            keep_traces: 1,
+            periodogram_segment_s: 25.6,
+        }
+    }
 }
 
 /// Which sea.
@@ -143,6 +194,8 @@ pub struct SeakeepingParams {
     pub rao_refresh_s: f64,
     /// Second-order slowly varying forces in the maneuvering equations (eq. 2.60).
     pub second_order_forces: bool,
+    /// Propeller surface losses (ch. 2.3); off gives the fully submerged counterpart of a run.
+    pub surface_losses: bool,
     /// Sign of the pitch term in the hub depth (eq. 2.57): "consistent" or "thesis_eq_2_57".
     pub stern_motion: SternMotion,
     /// Fuel: turbine thermal efficiency at rated power [-] (ch. 5.1: about 37 %), scaled by the
@@ -164,6 +217,7 @@ impl Default for SeakeepingParams {
             sample_period_s: 0.05,
             rao_refresh_s: 0.25,
             second_order_forces: true,
+            surface_losses: true,
             stern_motion: SternMotion::Consistent,
             turbine_rated_efficiency: 0.37,
         }
@@ -545,6 +599,7 @@ impl Default for Scenario {
             sim: SimSettings::default(),
             sea: SeaParams::default(),
             seakeeping: SeakeepingParams::default(),
+            monte_carlo: MonteCarloParams::default(),
         }
     }
 }
@@ -930,6 +985,35 @@ impl Scenario {
         }
 
         c.range("initial.speed_kn", self.initial.speed_kn, 0.0, 35.0);
+
+        let m = &self.monte_carlo;
+        c.range_u("monte_carlo.trials", m.trials, 1, 10_000_000);
+        if m.envelope_signals.len() > 20 {
+            c.fail("monte_carlo.envelope_signals", format!("{} signals", m.envelope_signals.len()), "at most 20");
+        }
+        for (i, n) in m.envelope_signals.iter().enumerate().take(20) {
+            if !crate::sim::SIGNALS.contains(&n.as_str()) {
+                c.fail(
+                    &format!("monte_carlo.envelope_signals.{i}"),
+                    n.chars().take(40).collect(),
+                    "is not a trace column",
+                );
+            }
+        }
+        if !crate::sim::SIGNALS.contains(&m.histogram_signal.as_str()) {
+            c.fail(
+                "monte_carlo.histogram_signal",
+                m.histogram_signal.chars().take(40).collect(),
+                "is not a trace column",
+            );
+        }
+        c.range("monte_carlo.histogram_time_s", m.histogram_time_s, 0.0, 1.0e6);
+        c.range("monte_carlo.histogram_lo", m.histogram_lo, -1.0e9, 1.0e9);
+        c.range("monte_carlo.histogram_hi", m.histogram_hi, m.histogram_lo, 1.0e9);
+        c.range_u("monte_carlo.histogram_bins", m.histogram_bins as u64, 1, 1000);
+        c.range("monte_carlo.onset_window_s", m.onset_window_s, 0.0, 600.0);
+        c.range_u("monte_carlo.keep_traces", m.keep_traces as u64, 0, 10);
+        c.range("monte_carlo.periodogram_segment_s", m.periodogram_segment_s, 1.0, 1.0e4);
 
         let sea = &self.sea;
         if sea.kind != SeaKind::Calm {

@@ -222,6 +222,8 @@ pub struct Simulation {
     h_over_r: f64,
     fuel_curve: Vec<(f64, f64)>,
     fuel_extrapolated: bool,
+    /// Time of the first surface effect (beta_T < 1 on either shaft) [s].
+    first_event: Option<f64>,
 }
 
 impl Simulation {
@@ -313,6 +315,7 @@ impl Simulation {
             h_over_r: 2.0 * scenario.seakeeping.hub_depth_m / scenario.propeller.diameter_m,
             fuel_curve: crate::fuel::part_load_curve(),
             fuel_extrapolated: false,
+            first_event: None,
         };
         sim.initialise()?;
         sim.sea_step();
@@ -670,12 +673,18 @@ impl Simulation {
         let hub = sea.last.hub_at(self.t + 0.5 * self.dt);
         let h_r = hub / (0.5 * self.plant.prop_diameter);
         self.h_over_r = h_r;
+        if !self.scenario.seakeeping.surface_losses {
+            return;
+        }
         for s in 0..N_SHAFTS {
             let n_hz = x[omega_rm(s)] / (2.0 * PI);
             let tv = self.vent[s].step(&self.losses, h_r, n_hz, self.dt);
             let (bt, bq) = loss_factors(&self.losses, h_r, tv);
             self.ctl.held.beta_t[s] = bt;
             self.ctl.held.beta_q[s] = bq;
+            if bt < 1.0 && self.first_event.is_none() {
+                self.first_event = Some(self.t);
+            }
         }
     }
 
@@ -722,6 +731,16 @@ impl Simulation {
     /// The model constants.
     pub fn plant(&self) -> &Plant {
         &self.plant
+    }
+
+    /// Time of the first surface effect (beta_T < 1) so far [s].
+    pub fn first_surface_event(&self) -> Option<f64> {
+        self.first_event
+    }
+
+    /// Record interval in steps and time step [s].
+    pub fn record_every(&self) -> u64 {
+        self.rec_every
     }
 
     /// Shaft power of each gas turbine now [W].

@@ -1,0 +1,461 @@
+//! Monte Carlo studies (thesis ch. 5.4): trials of one scenario in seas drawn from
+//! `trial_seed(master, i)`, their statistics accumulated online into a `Partial` that merges
+//! exactly (integer sums, fixed bins, min/max), so threads, shards and browser tabs all give the
+//! same summary; and Rice's analytical arrival rate of surface effects (eqs. 5.1-5.3).
+//!
+//! Definitions:
+//! - Excess energy of a trial: the energy drawn by one motor over the run minus that drawn in the
+//!   same sea (same seed) with the propeller's surface losses switched off (its fully submerged
+//!   counterpart) [MJ]. It isolates what the surface effects cost, not the added resistance. The
+//!   summary gives also the excess over the calm-water power at the ordered speed (which includes
+//!   the added resistance and every other effect of the sea).
+//! - Arrival time: the first instant beta_T < 1 on either shaft (ventilation or emergence); trials
+//!   without one by the end are censored at `sim.duration_s`.
+//! - Rice: Z = h0 - h_on R, the drop of the hub below its calm depth at which ventilation starts
+//!   (h/R = `ventilation_on_h_over_r`, 1.1); the hub-depth response spectrum
+//!   S_y = |H_p|^2 S(omega) D(mu) over the spreading, with H_p the hub transfer function of the run
+//!   (eq. 5.2 with the run's `stern_motion` sign) at the ordered speed; its moments in the
+//!   encounter frequency, and the up-crossing rate of eq. 5.3.
+
+use crate::scenario::{Scenario, SeaKind, SternMotion};
+use crate::sim::{Simulation, SIGNALS};
+use crate::stats::{rice_upcrossing_rate, trial_seed, welch, ExactMoments, Histogram};
+use serde::{Deserialize, Serialize};
+use serde_json::{json, Value};
+use std::f64::consts::PI;
+
+/// Identifies the shard format.
+pub const FORMAT: &str = "aes-sim monte carlo partial";
+pub const VERSION: u32 = 1;
+
+/// Envelope quantum (2^-16 of the unit; values to 2^29) and scalar quantum (2^-12; values to 4096).
+const ENV_BITS: i32 = 16;
+const SCALAR_BITS: i32 = 12;
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Envelope {
+    pub signal: String,
+    pub rows: Vec<ExactMoments>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct KeptTrace {
+    pub trial: u64,
+    pub seed: u64,
+    pub t_s: Vec<f64>,
+    pub columns: Vec<(String, Vec<f64>)>,
+}
+
+/// Accumulated statistics of a set of trials (a shard, or the whole study).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Partial {
+    pub format: String,
+    pub version: u32,
+    pub scenario: Scenario,
+    /// Trial index ranges [a, b) covered, sorted and disjoint.
+    pub ranges: Vec<(u64, u64)>,
+    pub record_interval_s: f64,
+    pub envelopes: Vec<Envelope>,
+    pub at_time: ExactMoments,
+    pub at_time_hist: Histogram,
+    pub excess_energy_mj: ExactMoments,
+    pub excess_hist: Histogram,
+    /// The same against the calm-water power of the ordered speed (the run's first row).
+    pub excess_vs_calm_mj: ExactMoments,
+    pub excess_vs_calm_hist: Histogram,
+    pub arrival: ExactMoments,
+    pub arrival_hist: Histogram,
+    /// min(arrival, cap) over all trials (for the censored comparison and the rate estimate).
+    pub exposure: ExactMoments,
+    pub censored: u64,
+    pub onset: Vec<ExactMoments>,
+    pub periodogram_hz: Vec<f64>,
+    pub periodogram: Vec<ExactMoments>,
+    pub traces: Vec<KeptTrace>,
+}
+
+impl Partial {
+    /// No trials yet.
+    pub fn empty(sc: &Scenario) -> Partial {
+        let m = &sc.monte_carlo;
+        let cap = sc.sim.duration_s;
+        Partial {
+            format: FORMAT.into(),
+            version: VERSION,
+            scenario: sc.clone(),
+            ranges: Vec::new(),
+            record_interval_s: sc.sim.record_interval_s,
+            envelopes: m.envelope_signals.iter().map(|s| Envelope { signal: s.clone(), rows: Vec::new() }).collect(),
+            at_time: ExactMoments::new(SCALAR_BITS, 4),
+            at_time_hist: Histogram::new(m.histogram_lo, m.histogram_hi, m.histogram_bins as usize),
+            excess_energy_mj: ExactMoments::new(SCALAR_BITS, 4),
+            excess_hist: Histogram::new(-200.0, 200.0, 40),
+            excess_vs_calm_mj: ExactMoments::new(SCALAR_BITS, 4),
+            excess_vs_calm_hist: Histogram::new(-200.0, 600.0, 40),
+            arrival: ExactMoments::new(SCALAR_BITS, 4),
+            arrival_hist: Histogram::new(0.0, cap, 45),
+            exposure: ExactMoments::new(SCALAR_BITS, 2),
+            censored: 0,
+            onset: Vec::new(),
+            periodogram_hz: Vec::new(),
+            periodogram: Vec::new(),
+            traces: Vec::new(),
+        }
+    }
+
+    /// Number of trials accumulated.
+    pub fn trials(&self) -> u64 {
+        self.ranges.iter().map(|(a, b)| b - a).sum()
+    }
+
+    /// Adds another partial of the same study (same scenario and master seed, disjoint trials).
+    pub fn merge(&mut self, b: &Partial) -> Result<(), String> {
+        if b.format != FORMAT || b.version != VERSION {
+            return Err(format!("not a partial of this version ({} v{})", b.format, b.version));
+        }
+        if b.scenario != self.scenario {
+            return Err("the partials come from different studies (scenario or seed differ)".into());
+        }
+        let mut ranges = self.ranges.clone();
+        ranges.extend(b.ranges.iter().copied());
+        ranges.sort();
+        for w in ranges.windows(2) {
+            if w[1].0 < w[0].1 {
+                return Err(format!("trial ranges {}..{} and {}..{} overlap", w[0].0, w[0].1, w[1].0, w[1].1));
+            }
+        }
+        // Join adjacent ranges.
+        let mut joined: Vec<(u64, u64)> = Vec::new();
+        for r in ranges {
+            match joined.last_mut() {
+                Some(last) if last.1 == r.0 => last.1 = r.1,
+                _ => joined.push(r),
+            }
+        }
+        self.ranges = joined;
+        for (e, f) in self.envelopes.iter_mut().zip(&b.envelopes) {
+            merge_rows(&mut e.rows, &f.rows, 2)?;
+        }
+        self.at_time.merge(&b.at_time)?;
+        self.at_time_hist.merge(&b.at_time_hist)?;
+        self.excess_energy_mj.merge(&b.excess_energy_mj)?;
+        self.excess_hist.merge(&b.excess_hist)?;
+        self.excess_vs_calm_mj.merge(&b.excess_vs_calm_mj)?;
+        self.excess_vs_calm_hist.merge(&b.excess_vs_calm_hist)?;
+        self.arrival.merge(&b.arrival)?;
+        self.arrival_hist.merge(&b.arrival_hist)?;
+        self.exposure.merge(&b.exposure)?;
+        self.censored += b.censored;
+        merge_rows(&mut self.onset, &b.onset, 2)?;
+        if self.periodogram_hz.is_empty() {
+            self.periodogram_hz = b.periodogram_hz.clone();
+        }
+        merge_rows(&mut self.periodogram, &b.periodogram, 2)?;
+        self.traces.extend(b.traces.iter().cloned());
+        self.traces.sort_by_key(|t| t.trial);
+        self.traces.truncate(self.scenario.monte_carlo.keep_traces as usize);
+        Ok(())
+    }
+}
+
+fn merge_rows(a: &mut Vec<ExactMoments>, b: &[ExactMoments], order: u8) -> Result<(), String> {
+    while a.len() < b.len() {
+        a.push(ExactMoments::new(ENV_BITS, order));
+    }
+    for (x, y) in a.iter_mut().zip(b) {
+        x.merge(y)?;
+    }
+    Ok(())
+}
+
+/// Energy of one motor over a trace [J] (trapezoid over the recorded rows of `im_power_pu`).
+fn motor_energy(sc: &Scenario, pu: &[f64], dt: f64) -> f64 {
+    let p = sc.plant.motor.rated_power_w;
+    pu.windows(2).map(|w| 0.5 * (w[0] + w[1]) * p * dt).sum()
+}
+
+/// Runs trial `i` of the study `sc` and returns its statistics as a one-trial partial.
+pub fn run_trial(sc: &Scenario, i: u64) -> Result<Partial, String> {
+    let m = &sc.monte_carlo;
+    let mut s = sc.clone();
+    s.sim.seed = trial_seed(sc.sim.seed, i);
+    let fail = |e: crate::SimError| format!("trial {i} (sea seed {}): {e}", s.sim.seed);
+    let mut sim = Simulation::new(&s).map_err(fail)?;
+    let chunk = sim.record_every().max(1) * 10;
+    while !sim.done() {
+        sim.advance(chunk).map_err(fail)?;
+        if m.stop_at_first_event {
+            if let Some(te) = sim.first_surface_event() {
+                if sim.time() >= te + m.onset_window_s {
+                    break;
+                }
+            }
+        }
+    }
+    let event = sim.first_surface_event();
+    let result = sim.finish();
+    let dt = s.sim.record_interval_s;
+    let mut p = Partial::empty(sc);
+    p.ranges = vec![(i, i + 1)];
+    let column = |name: &str| result.trace.column(name).unwrap_or(&[]);
+    for e in p.envelopes.iter_mut() {
+        e.rows = column(&e.signal)
+            .iter()
+            .map(|&v| {
+                let mut x = ExactMoments::new(ENV_BITS, 2);
+                x.push(v);
+                x
+            })
+            .collect();
+    }
+    let row = libm::round(m.histogram_time_s / dt) as usize;
+    if let Some(&v) = column(&m.histogram_signal).get(row) {
+        p.at_time.push(v);
+        p.at_time_hist.push(v);
+    }
+    let power = column("im_power_pu");
+    if m.excess_energy {
+        let mut sub = s.clone();
+        sub.seakeeping.surface_losses = false;
+        let r = crate::run(&sub).map_err(|e| format!("trial {i} (submerged counterpart): {e}"))?;
+        let n = power.len().min(r.trace.len());
+        let base = r.trace.column("im_power_pu").unwrap_or(&[]);
+        let e = (motor_energy(&s, &power[..n], dt) - motor_energy(&s, &base[..n], dt)) / 1e6;
+        p.excess_energy_mj.push(e);
+        p.excess_hist.push(e);
+        let calm: Vec<f64> = vec![power.first().copied().unwrap_or(0.0); n];
+        let c = (motor_energy(&s, &power[..n], dt) - motor_energy(&s, &calm, dt)) / 1e6;
+        p.excess_vs_calm_mj.push(c);
+        p.excess_vs_calm_hist.push(c);
+    }
+    let cap = s.sim.duration_s;
+    match event {
+        Some(t) => {
+            p.arrival.push(t);
+            p.arrival_hist.push(t);
+            p.exposure.push(t.min(cap));
+            let start = libm::ceil(t / dt) as usize;
+            let n = libm::round(m.onset_window_s / dt) as usize + 1;
+            p.onset = power
+                .iter()
+                .skip(start)
+                .take(n)
+                .map(|&v| {
+                    let mut x = ExactMoments::new(ENV_BITS, 2);
+                    x.push(v);
+                    x
+                })
+                .collect();
+        }
+        None => {
+            p.censored = 1;
+            p.exposure.push(cap);
+        }
+    }
+    // Welch periodogram of one motor's power [MW^2/Hz].
+    let seg = libm::round(m.periodogram_segment_s / dt) as usize;
+    if power.len() >= seg.max(4) {
+        let mw: Vec<f64> = power.iter().map(|v| v * s.plant.motor.rated_power_w / 1e6).collect();
+        let (f, psd) = welch(&mw, dt, seg);
+        p.periodogram_hz = f;
+        p.periodogram = psd
+            .iter()
+            .map(|&v| {
+                let mut x = ExactMoments::new(ENV_BITS, 2);
+                x.push(v);
+                x
+            })
+            .collect();
+    }
+    if i < m.keep_traces as u64 {
+        let t = column("t_s").to_vec();
+        let mut names: Vec<String> = m.envelope_signals.clone();
+        for extra in ["h_over_r", "beta_t", "im_power_pu"] {
+            if !names.iter().any(|n| n == extra) {
+                names.push(extra.into());
+            }
+        }
+        p.traces = vec![KeptTrace {
+            trial: i,
+            seed: s.sim.seed,
+            t_s: t,
+            columns: names.iter().map(|n| (n.clone(), column(n).to_vec())).collect(),
+        }];
+    }
+    Ok(p)
+}
+
+/// Runs trials `a..b` one after another (the browser's way; natively the CLI spreads them over
+/// threads and merges, with the same result).
+pub fn run_range(sc: &Scenario, a: u64, b: u64) -> Result<Partial, String> {
+    let mut acc = Partial::empty(sc);
+    for i in a..b {
+        acc.merge(&run_trial(sc, i)?)?;
+    }
+    Ok(acc)
+}
+
+/// Rice's prediction (eqs. 5.1-5.3) for the study's sea, speed and hub: Z [m], M0 [m^2],
+/// M2 [m^2/s^2], rate [1/s], mean arrival 1/rate [s], and the mean of min(arrival, cap) an
+/// exponential arrival at that rate gives when censored at the run's duration.
+pub fn rice(sc: &Scenario) -> Result<Value, String> {
+    if sc.sea.kind != SeaKind::Random {
+        return Ok(Value::Null);
+    }
+    let k = &sc.seakeeping;
+    let table = crate::sim::seaway::rao_table(&k.grid)?;
+    let (h, wn) = sc.sea.spectrum();
+    let (w_lo, w_hi) = if sc.sea.omega_min_rad_s > 0.0 && sc.sea.omega_max_rad_s > 0.0 {
+        (sc.sea.omega_min_rad_s, sc.sea.omega_max_rad_s)
+    } else {
+        (0.6 * wn, 4.0 * wn)
+    };
+    let u = crate::units::kn_to_m_s(sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(25.0));
+    let psi = 0.0;
+    let mu0 = (sc.sea.from_deg + 180.0).to_radians();
+    let (nw, nd) = (400usize, 61usize);
+    let dw = (w_hi - w_lo) / nw as f64;
+    // Spreading density cos^h on (-pi/2, pi/2), normalised numerically (midpoint rule).
+    let dd = PI / nd as f64;
+    let spread: Vec<(f64, f64)> = (0..nd)
+        .map(|j| {
+            let d = -PI / 2.0 + (j as f64 + 0.5) * dd;
+            (d, if sc.sea.spreading > 0.0 { libm::pow(libm::cos(d), sc.sea.spreading) } else { 0.0 })
+        })
+        .collect();
+    let norm: f64 = spread.iter().map(|(_, w)| w * dd).sum();
+    let dirs: Vec<(f64, f64)> = if sc.sea.spreading > 0.0 {
+        spread.iter().map(|&(d, w)| (d, w * dd / norm)).collect()
+    } else {
+        vec![(0.0, 1.0)]
+    };
+    let (mut m0, mut m2) = (0.0, 0.0);
+    for i in 0..nw {
+        let w = w_lo + (i as f64 + 0.5) * dw;
+        let s = crate::waves::bretschneider(w, h, wn);
+        let kw = w * w / crate::waves::G;
+        for &(d, wt) in &dirs {
+            let beta = psi - (mu0 + d);
+            let r = table.interpolate(w, u, beta);
+            let ph = kw * k.prop_x_aft_m * libm::cos(beta);
+            let stern = num_complex::Complex64::new(libm::cos(ph), libm::sin(ph));
+            let sign = if k.stern_motion == SternMotion::ThesisEq257 { 1.0 } else { -1.0 };
+            let hp = stern - r.heave + r.pitch * (sign * k.prop_x_aft_m);
+            let sy = hp.norm_sqr() * s * wt * dw;
+            let we = (w - kw * u * libm::cos(beta)).abs();
+            m0 += sy;
+            m2 += sy * we * we;
+        }
+    }
+    let radius = 0.5 * sc.propeller.diameter_m;
+    let z = k.hub_depth_m - k.ventilation_on_h_over_r * radius;
+    let rate = rice_upcrossing_rate(m0, m2, z);
+    let cap = sc.sim.duration_s;
+    Ok(json!({
+        "z_m": z,
+        "threshold_h_over_r": k.ventilation_on_h_over_r,
+        "m0": m0,
+        "m2": m2,
+        "rate_per_s": rate,
+        "mean_arrival_s": 1.0 / rate,
+        "mean_censored_s": (1.0 - libm::exp(-rate * cap)) / rate,
+        "cap_s": cap,
+    }))
+}
+
+fn hist_json(h: &Histogram) -> Value {
+    json!({"lo": h.lo, "hi": h.hi, "counts": h.counts, "below": h.below, "above": h.above})
+}
+
+fn rows_json(rows: &[ExactMoments], dt: f64) -> Value {
+    let t: Vec<f64> = (0..rows.len()).map(|i| i as f64 * dt).collect();
+    let mean: Vec<f64> = rows.iter().map(|r| r.mean()).collect();
+    let std: Vec<f64> = rows.iter().map(|r| r.std()).collect();
+    json!({
+        "t_s": t,
+        "n": rows.iter().map(|r| r.n).collect::<Vec<_>>(),
+        "mean": mean,
+        "std": std,
+        "min": rows.iter().map(|r| r.min).collect::<Vec<_>>(),
+        "max": rows.iter().map(|r| r.max).collect::<Vec<_>>(),
+        "plus_2sigma": mean.iter().zip(&std).map(|(m, s)| m + 2.0 * s).collect::<Vec<_>>(),
+        "minus_2sigma": mean.iter().zip(&std).map(|(m, s)| m - 2.0 * s).collect::<Vec<_>>(),
+    })
+}
+
+/// The public summary of a study (documented in the README).
+pub fn summary(p: &Partial) -> Result<Value, String> {
+    let sc = &p.scenario;
+    let m = &sc.monte_carlo;
+    let mut env = serde_json::Map::new();
+    for e in &p.envelopes {
+        env.insert(e.signal.clone(), rows_json(&e.rows, p.record_interval_s));
+    }
+    let events = p.arrival.n;
+    let excess = if m.excess_energy {
+        json!({
+            "mean": p.excess_energy_mj.mean(),
+            "std": p.excess_energy_mj.std(),
+            "min": p.excess_energy_mj.min,
+            "max": p.excess_energy_mj.max,
+            "histogram": hist_json(&p.excess_hist),
+            "definition": "energy drawn by one motor minus that drawn in the same sea without surface losses [MJ]",
+            "vs_calm_water": {
+                "mean": p.excess_vs_calm_mj.mean(),
+                "std": p.excess_vs_calm_mj.std(),
+                "histogram": hist_json(&p.excess_vs_calm_hist),
+                "definition": "energy drawn by one motor minus its calm-water power at the ordered speed times the duration [MJ]",
+            },
+        })
+    } else {
+        Value::Null
+    };
+    let exposure_total = p.exposure.mean() * p.exposure.n as f64;
+    Ok(json!({
+        "trials": p.trials(),
+        "trials_requested": m.trials,
+        "seed": sc.sim.seed,
+        "ranges": p.ranges,
+        "excess_energy_mj": excess,
+        "arrival_time_s": {
+            "events": events,
+            "censored": p.censored,
+            "cap_s": sc.sim.duration_s,
+            "mean": p.arrival.mean(),
+            "std": p.arrival.std(),
+            "skewness": p.arrival.skewness(),
+            "kurtosis": p.arrival.kurtosis(),
+            "median": p.arrival_hist.median(),
+            "mode": p.arrival_hist.mode(),
+            "histogram": hist_json(&p.arrival_hist),
+            "mean_censored": p.exposure.mean(),
+            "std_censored": p.exposure.std(),
+            "rate_per_s": if exposure_total > 0.0 { events as f64 / exposure_total } else { f64::NAN },
+        },
+        "rice": rice(sc)?,
+        "histogram_at_t": {
+            "signal": m.histogram_signal,
+            "t_s": m.histogram_time_s,
+            "n": p.at_time.n,
+            "mean": p.at_time.mean(),
+            "std": p.at_time.std(),
+            "skewness": p.at_time.skewness(),
+            "histogram": hist_json(&p.at_time_hist),
+        },
+        "envelopes": env,
+        "onset": rows_json(&p.onset, p.record_interval_s),
+        "periodogram": {
+            "freq_hz": p.periodogram_hz,
+            "unit": "MW^2/Hz",
+            "mean": p.periodogram.iter().map(|r| r.mean()).collect::<Vec<_>>(),
+            "min": p.periodogram.iter().map(|r| r.min).collect::<Vec<_>>(),
+            "max": p.periodogram.iter().map(|r| r.max).collect::<Vec<_>>(),
+        },
+        "traces": p.traces,
+    }))
+}
+
+/// Names of the trace columns a study may collect.
+pub fn signal_names() -> &'static [&'static str] {
+    SIGNALS
+}

@@ -1,0 +1,93 @@
+//! Thesis ch. 5.4: Monte Carlo studies, their exact merging, and Rice's arrival rate.
+
+use aes_core::montecarlo::{rice, run_range, run_trial, summary, Partial};
+use aes_core::presets::preset;
+use aes_core::scenario::SternMotion;
+
+/// Shards and merge orders give the summary of the whole study, bit for bit: trials 0..6 in one
+/// go, as shards 3..6 then 0..3, and trial by trial in reverse order.
+#[test]
+fn summaries_do_not_depend_on_order_or_sharding() {
+    let mut sc = preset("mc-excess-energy").unwrap();
+    sc.sim.duration_s = 15.0;
+    sc.monte_carlo.trials = 6;
+    sc.monte_carlo.histogram_time_s = 10.0;
+    sc.monte_carlo.periodogram_segment_s = 5.0;
+    let whole = summary(&run_range(&sc, 0, 6).unwrap()).unwrap();
+    let mut shards = run_range(&sc, 3, 6).unwrap();
+    shards.merge(&run_range(&sc, 0, 3).unwrap()).unwrap();
+    assert_eq!(summary(&shards).unwrap(), whole);
+    let mut rev = Partial::empty(&sc);
+    for i in (0..6).rev() {
+        rev.merge(&run_trial(&sc, i).unwrap()).unwrap();
+    }
+    let r = summary(&rev).unwrap();
+    for (k, v) in whole.as_object().unwrap() {
+        if let Some(o) = v.as_object() {
+            for (k2, v2) in o {
+                assert_eq!(&r[k][k2], v2, "{k}.{k2}");
+            }
+        }
+        assert_eq!(&r[k], v, "{k}");
+    }
+    // Through the shard file format.
+    let text = serde_json::to_string(&shards).unwrap();
+    let back: Partial = serde_json::from_str(&text).unwrap();
+    let bs = summary(&back).unwrap();
+    for (k, v) in whole.as_object().unwrap() {
+        if let Some(o) = v.as_object() {
+            for (k2, v2) in o {
+                assert_eq!(&bs[k][k2], v2, "{k}.{k2}");
+            }
+        }
+    }
+    assert_eq!(bs, whole);
+    // Overlapping shards are refused.
+    let mut twice = run_range(&sc, 0, 2).unwrap();
+    assert!(twice.merge(&run_range(&sc, 1, 3).unwrap()).unwrap_err().contains("overlap"));
+    assert_eq!(whole["trials"], 6);
+}
+
+/// Ch. 5.4.2: arrival times of the first surface effect against Rice's rate (eqs. 5.1-5.3), both
+/// treated alike: 200 trials censored at 90 s, compared on the mean of min(T, 90 s), which for
+/// Poisson arrivals at Rice's rate is (1 - e^{-90 rate}) / rate. The case: a 4.8 m propeller at
+/// h0 = 4 m with the consistent hub depth, where the level is two standard deviations of the hub's
+/// motion deep (Rice's assumption of rare, independent crossings); agreement within two Monte Carlo
+/// standard errors.
+#[test]
+fn arrival_times_agree_with_rice() {
+    let mut sc = preset("mc-arrival").unwrap();
+    sc.seakeeping.stern_motion = SternMotion::Consistent;
+    sc.seakeeping.hub_depth_m = 4.0;
+    sc.monte_carlo.trials = 200;
+    sc.monte_carlo.envelope_signals = vec!["h_over_r".into()];
+    let p = run_range(&sc, 0, 200).unwrap();
+    let s = summary(&p).unwrap();
+    let a = &s["arrival_time_s"];
+    let r = rice(&sc).unwrap();
+    let (mc, sd) = (a["mean_censored"].as_f64().unwrap(), a["std_censored"].as_f64().unwrap());
+    let se = sd / 200f64.sqrt();
+    let pred = r["mean_censored_s"].as_f64().unwrap();
+    println!(
+        "Rice: Z {:.2} m, M0 {:.3} m^2, M2 {:.3} m^2/s^2, rate {:.4}/s (mean {:.1} s, censored at 90 s {:.1} s); Monte \
+         Carlo: {} events, {} censored, mean of min(T, 90) {mc:.1} +- {se:.1} s, rate {:.4}/s; mean {:.1} s, std {:.1}, \
+         skewness {:.2}, kurtosis {:.2}, median {:.1}, mode {:.1}",
+        r["z_m"].as_f64().unwrap(),
+        r["m0"].as_f64().unwrap(),
+        r["m2"].as_f64().unwrap(),
+        r["rate_per_s"].as_f64().unwrap(),
+        r["mean_arrival_s"].as_f64().unwrap(),
+        pred,
+        a["events"],
+        a["censored"],
+        a["rate_per_s"].as_f64().unwrap(),
+        a["mean"].as_f64().unwrap(),
+        a["std"].as_f64().unwrap(),
+        a["skewness"].as_f64().unwrap(),
+        a["kurtosis"].as_f64().unwrap(),
+        a["median"].as_f64().unwrap(),
+        a["mode"].as_f64().unwrap()
+    );
+    assert!((mc - pred).abs() < 2.0 * se, "Monte Carlo {mc} +- {se} against Rice {pred}");
+    assert_eq!(a["events"].as_u64().unwrap() + a["censored"].as_u64().unwrap(), 200);
+}
