@@ -108,7 +108,7 @@ run_tests() {
   shots="$PWD/target/e2e-screenshots"
   python3 -m http.server --bind 127.0.0.1 --directory www "$port" > /dev/null 2>&1 &
   local server=$!
-  trap 'kill $server 2>/dev/null' EXIT
+  trap "kill $server 2>/dev/null || true" EXIT
   for _ in $(seq 1 50); do
     python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/')" 2>/dev/null && break
     sleep 0.1

@@ -37,6 +37,17 @@ const FIELDS = [
     ['controllers.slip.allow_braking', 'Allow AC braking', '', 'Negative slip: the motor brakes as a generator.', ['false', 'true']],
     ['controllers.autopilot.turn_rate_deg_s', 'Default turn rate', 'deg/s', 'Used when a heading order gives none.'],
   ]],
+  ['Sea and seakeeping', [
+    ['sea.kind', 'Sea', '', 'calm; random: Bretschneider spectrum (eq. 2.58) of a Table 2.4 sea state; regular: one wave.', ['calm', 'random', 'regular']],
+    ['sea.sea_state', 'Sea state', '-', 'Table 2.4: 2 to 6 (SS6: H1/3 5 m, peak 0.507 rad/s).'],
+    ['sea.from_deg', 'Waves from', 'deg', '0 = from north: head seas for a ship heading north.'],
+    ['sea.components', 'Wave components N_s', '-', 'Ch. 2.5.4: 100 to 500.'],
+    ['sea.amplitude_m', 'Regular wave amplitude', 'm', '1 ft = 0.3048 m.'],
+    ['sea.omega_rad_s', 'Regular wave frequency', 'rad/s', 'Wave length 2 pi g / omega^2.'],
+    ['seakeeping.hub_depth_m', 'Calm-water hub depth h0', 'm', 'Ch. 5.3: 6 m; ch. 5.4.1: 4 m.'],
+    ['seakeeping.stern_motion', 'Hub depth formula', '', 'consistent: the stern follows long waves; thesis_eq_2_57: the printed sign, which reproduces the thesis figures.', ['consistent', 'thesis_eq_2_57']],
+    ['monte_carlo.trials', 'Monte Carlo trials', '-', 'For the Monte Carlo button (ch. 5.4).'],
+  ]],
   ['Simulation', [
     ['initial.speed_kn', 'Initial speed', 'kn', '0 starts from idle.'],
     ['sim.duration_s', 'Duration', 's', 'Simulated time.'],
@@ -56,6 +67,13 @@ const ABOUT_EXTRA = {
   'turn-45': 'The ship track, rudder and the extra motor power needed to hold speed (Figs. 5-9, 5-10).',
   'turn-90': 'A longer turn at the same rate: similar extra power, for longer.',
   'turn-360': 'A full turn in calm water (Fig. 5-16 without the waves); note the counter-rudder in the steady turn.',
+  'quarter-turn-ss3': 'Added resistance slows the ship a little; after the turn the sea is on the beam and the drift force appears (Fig. 5-11).',
+  'quarter-turn-ss6': 'The same turn in sea state 6: over 40 times the added resistance of SS3 (it grows with the square of the wave height).',
+  'fuel-regular-seas': 'One regular head wave of 1 ft: compare fuel power with calm water; the command line sweeps 1 to 5 ft (Fig. 5-12).',
+  'head-seas-ss6': 'h/R against the ventilation band: with the consistent hub depth the propeller stays down; switch the hub depth formula to thesis_eq_2_57 to see the thesis\' ventilation and power swings (Figs. 5-13 to 5-15).',
+  'turn-360-ss6': 'Heave and pitch are strong in head seas and weak in following seas (Figs. 5-16 to 5-19).',
+  'mc-excess-energy': 'Press Monte Carlo: 100 seas, the envelope of motor power, the excess energy per trial and its histogram (Figs. 5-20 to 5-23).',
+  'mc-arrival': 'Press Monte Carlo: arrival times of the first surface effect against Rice\'s prediction (Table 5.8, Fig. 5-24).',
 };
 
 const PLOTS = [
@@ -65,6 +83,13 @@ const PLOTS = [
   { title: 'Motor power [per unit of 38 MW]', series: [['im_power_pu', 'motor power', '#8e44ad']] },
   { title: 'Power inventory [MW]', scale: 1e-6, series: [['p_turbine_w', 'turbine', '#27ae60'], ['p_generator_w', 'generator', '#16a085'], ['p_inverter_w', 'inverter', '#2980b9'], ['p_motor_w', 'motor', '#8e44ad'], ['p_ship_w', 'ship', '#2c3e50']] },
   { title: 'Rudder and heading [deg]', series: [['rudder_deg', 'rudder', '#d35400'], ['heading_deg', 'heading', '#0b5cad'], ['heading_ref_deg', 'heading order', '#999']] },
+  { title: 'Hub depth over propeller radius h/R [-] (ventilation starts below 1.1, ends above 1.3; disk reaches the surface at 1)', sea: true,
+    series: [['h_over_r', 'h/R', '#0b5cad'], ['_vent_on', 'ventilation onset 1.1', '#e67e22'], ['_vent_off', 'ventilation end 1.3', '#f5b041'], ['_surface', 'disk at surface 1.0', '#c0392b'], ['_hub_out', 'hub out of water -1', '#7b241c']] },
+  { title: 'Propeller surface losses beta_T, beta_Q [-]', sea: true, series: [['beta_t', 'beta_T', '#c0392b'], ['beta_q', 'beta_Q', '#8e44ad']] },
+  { title: 'Wave at the stern and hub depth [m]', sea: true, series: [['wave_stern_m', 'wave at stern', '#2980b9'], ['hub_depth_m', 'hub depth', '#2c3e50']] },
+  { title: 'Heave [m], pitch and roll [deg]', sea: true, series: [['heave_m', 'heave', '#16a085'], ['pitch_deg', 'pitch (bow down)', '#d35400'], ['roll_deg', 'roll', '#7f8c8d']] },
+  { title: 'Second-order wave force [kN]', sea: true, scale: 1e-3, series: [['added_resistance_n', 'added resistance', '#c0392b'], ['drift_force_n', 'drift force (to starboard)', '#2980b9']] },
+  { title: 'Fuel power, four turbines [MW]', scale: 1e-6, series: [['fuel_power_w', 'fuel power', '#6e2c00']] },
   { title: 'Brake resistor power [MW]', scale: 1e-6, series: [['brake_power_w', 'brake power', '#c0392b']], only: (c) => c.brake_power_w.some((v) => v > 0) },
 ];
 
@@ -345,7 +370,144 @@ function run() {
   });
 }
 
+// ---------- Monte Carlo (ch. 5.4): trials spread over several workers ----------
+let mcWorkers = [];
+function stopMonteCarlo() { for (const w of mcWorkers) w.terminate(); mcWorkers = []; }
+
+function runMonteCarlo() {
+  const sc = clone(scenario);
+  const n = Number(sc.monte_carlo && sc.monte_carlo.trials) || 0;
+  if (sc.sea.kind === 'calm') { status('Monte Carlo needs a sea: choose a random sea (or the mc-… studies).', true); return; }
+  if (!(n >= 1 && n <= 100000)) { status('monte_carlo.trials must be from 1 to 100000 in the page.', true); return; }
+  const k = Math.max(1, Math.min(4, (navigator.hardwareConcurrency || 2) - 1, n));
+  $('run').disabled = true; $('mc-run').disabled = true; $('cancel').disabled = false;
+  $('progress').value = 0; $('eta').textContent = '';
+  status(`Monte Carlo: ${n} trials on ${k} workers...`);
+  const started = performance.now();
+  const partials = new Array(k);
+  const doneBy = new Array(k).fill(0);
+  let finished = 0;
+  const fail = (msg) => { stopMonteCarlo(); $('run').disabled = false; $('mc-run').disabled = false; $('cancel').disabled = true; status(msg, true); };
+  for (let w = 0; w < k; w++) {
+    const a = Math.floor((n * w) / k), b = Math.floor((n * (w + 1)) / k);
+    const wk = new Worker('worker.js', { type: 'module' });
+    mcWorkers.push(wk);
+    wk.onmessage = (ev) => {
+      const m = ev.data;
+      if (m.type === 'ready') wk.postMessage({ type: 'mc', id: w, scenario: JSON.stringify(sc), a, b });
+      else if (m.type === 'mc-progress') {
+        doneBy[w] = m.done;
+        const done = doneBy.reduce((x, y) => x + y, 0);
+        $('progress').value = done / n;
+        const el = (performance.now() - started) / 1000;
+        if (el > 0.5 && done > 0) $('eta').textContent = `${done} of ${n} trials, about ${(el * (n - done) / done).toFixed(1)} s left`;
+      } else if (m.type === 'mc-done') {
+        partials[w] = m.partial;
+        wk.terminate();
+        if (++finished === k) {
+          mcWorkers = [];
+          ask({ type: 'mc-summary', partials }, (r) => {
+            pending.delete(r.id);
+            $('run').disabled = false; $('mc-run').disabled = false; $('cancel').disabled = true; $('eta').textContent = '';
+            if (r.type === 'error') { status(r.message, true); return; }
+            const summary = JSON.parse(r.summary);
+            lastResult = { summary, csv: '', scenario: sc };
+            $('export-json').disabled = false; $('export-csv').disabled = true;
+            showMonteCarlo(summary);
+            status(`Monte Carlo done: ${n} trials in ${((performance.now() - started) / 1000).toFixed(1)} s.`);
+          });
+        }
+      } else if (m.type === 'error') fail(m.message);
+    };
+    wk.onerror = (e) => fail('A worker failed: ' + (e.message || e));
+  }
+}
+
+function fmt(x, d = 4) { return x == null || Number.isNaN(x) ? '–' : Number(x).toPrecision(d); }
+
+function linePlot(box, title, x, series, xLabel, yLabel, opts = {}) {
+  const div = document.createElement('div');
+  div.className = 'plot';
+  const h = document.createElement('h3');
+  h.textContent = title;
+  div.append(h);
+  box.append(div);
+  const o = {
+    width: plotWidth(), height: 220, scales: { x: { time: false }, ...(opts.scales || {}) },
+    axes: [{ label: xLabel }, { label: yLabel }],
+    series: [{ label: xLabel }, ...series.map(([, label, color, extra]) => ({ label, stroke: color, width: 1.5, ...(extra || {}) }))],
+  };
+  plots.push(new uPlot(o, [x, ...series.map(([d]) => d)], div));
+}
+
+function histogramPlot(box, title, h, xLabel, overlay) {
+  const w = (h.hi - h.lo) / h.counts.length;
+  const centres = h.counts.map((_, i) => h.lo + (i + 0.5) * w);
+  const series = [[h.counts, 'trials', '#2980b9', { paths: uPlot.paths.bars({ size: [0.9, 100] }), fill: '#aed6f1' }]];
+  if (overlay) series.push([overlay.values, overlay.label, '#c0392b']);
+  linePlot(box, title, centres, series, xLabel, 'trials per bin');
+}
+
+function showMonteCarlo(s) {
+  for (const p of plots) p.destroy && p.destroy();
+  plots = [];
+  const box = $('plots');
+  box.replaceChildren();
+  $('summary-box').hidden = true;
+  const info = document.createElement('div');
+  info.className = 'plot';
+  const a = s.arrival_time_s, r = s.rice, e = s.excess_energy_mj;
+  const rows = [['Trials', s.trials], ['Seed', s.seed]];
+  if (e) rows.push(['Excess energy vs submerged counterpart [MJ]', `${fmt(e.mean)} ± ${fmt(e.std)}`], ['Excess energy vs calm water [MJ] (thesis: 94.1 ± 33.3)', `${fmt(e.vs_calm_water.mean)} ± ${fmt(e.vs_calm_water.std)}`]);
+  rows.push(['First surface effects / censored', `${a.events} / ${a.censored} (cap ${a.cap_s} s)`]);
+  const table = document.createElement('table');
+  table.innerHTML = '<caption>Monte Carlo summary</caption>';
+  for (const [k, v] of rows) { const tr = table.insertRow(); const th = document.createElement('th'); th.scope = 'row'; th.textContent = k; tr.append(th); tr.insertCell().textContent = v; }
+  info.append(table);
+  if (r) {
+    const lam = r.rate_per_s;
+    const t8 = document.createElement('table');
+    t8.innerHTML = '<caption>Arrival time of the first surface effect [s] (Table 5.8)</caption><thead><tr><th scope="col"></th><th scope="col">mean</th><th scope="col">std</th><th scope="col">skewness</th><th scope="col">kurtosis</th><th scope="col">median</th><th scope="col">mode</th></tr></thead>';
+    const body = t8.createTBody();
+    for (const [name, vals] of [[`Rice (Z ${fmt(r.z_m, 3)} m, rate ${fmt(lam, 3)}/s)`, [1 / lam, 1 / lam, 2, 9, Math.LN2 / lam, 0]], ['Monte Carlo', [a.mean, a.std, a.skewness, a.kurtosis, a.median, a.mode]]]) {
+      const tr = body.insertRow(); const th = document.createElement('th'); th.scope = 'row'; th.textContent = name; tr.append(th);
+      for (const v of vals) tr.insertCell().textContent = fmt(v);
+    }
+    const note = document.createElement('p');
+    note.className = 'about';
+    note.textContent = `Censored at ${a.cap_s} s alike: Monte Carlo mean of min(T, cap) ${fmt(a.mean_censored)} s, Rice ${fmt(r.mean_censored_s)} s.`;
+    info.append(t8, note);
+  }
+  box.append(info);
+  for (const [sig, env] of Object.entries(s.envelopes)) {
+    const series = [[env.mean, 'mean', '#0b5cad'], [env.plus_2sigma, '+2 sigma', '#85c1e9'], [env.minus_2sigma, '-2 sigma', '#85c1e9'], [env.min, 'min', '#999', { dash: [4, 4] }], [env.max, 'max', '#999', { dash: [4, 4] }]];
+    const tr = (s.traces || [])[0];
+    if (tr) { const c = tr.columns.find(([n]) => n === sig); if (c) series.push([c[1].slice(0, env.t_s.length), `trial ${tr.trial}`, '#c0392b']); }
+    linePlot(box, `${sig}: envelope over ${s.trials} trials (Fig. 5-20)`, env.t_s, series, 'time [s]', sig);
+  }
+  const ht = s.histogram_at_t;
+  if (ht.n > 0) histogramPlot(box, `${ht.signal} at t = ${ht.t_s} s (Fig. 5-21), skewness ${fmt(ht.skewness, 3)}`, ht.histogram, ht.signal);
+  if (e) histogramPlot(box, `Excess energy per trial vs the submerged counterpart [MJ] (Fig. 5-22): ${fmt(e.mean)} ± ${fmt(e.std)}`, e.histogram, 'MJ');
+  if (a.events > 0) {
+    const h = a.histogram, w = (h.hi - h.lo) / h.counts.length, total = s.trials;
+    const overlay = r ? { label: `exponential, Rice rate ${fmt(r.rate_per_s, 3)}/s`, values: h.counts.map((_, i) => total * (Math.exp(-r.rate_per_s * (h.lo + i * w)) - Math.exp(-r.rate_per_s * (h.lo + (i + 1) * w)))) } : null;
+    histogramPlot(box, 'Arrival time of the first surface effect [s] (Fig. 5-24)', h, 'time [s]', overlay);
+  }
+  if (s.onset && s.onset.t_s.length > 1) {
+    const o = s.onset;
+    linePlot(box, 'Motor power after the onset of a surface effect [pu] (Fig. 5-25)', o.t_s, [[o.mean, 'mean', '#0b5cad'], [o.plus_2sigma, '+2 sigma', '#85c1e9'], [o.min, 'min', '#999']], 'time after onset [s]', 'pu');
+  }
+  const pg = s.periodogram;
+  if (pg.freq_hz.length > 2) {
+    const k = pg.freq_hz.findIndex((f) => f > 1.0);
+    const n = k > 0 ? k : pg.freq_hz.length;
+    const pos = (v) => v.slice(1, n).map((x) => Math.max(x, 1e-9));
+    linePlot(box, 'Periodogram of motor power [MW²/Hz] (Welch, Fig. 5-23)', pg.freq_hz.slice(1, n), [[pos(pg.mean), 'mean', '#0b5cad'], [pos(pg.min), 'min', '#999'], [pos(pg.max), 'max', '#c0392b']], 'frequency [Hz]', 'MW²/Hz', { scales: { y: { distr: 3 } } });
+  }
+}
+
 function cancel() {
+  stopMonteCarlo();
   worker.terminate();
   pending.clear();
   $('run').disabled = true;
@@ -389,10 +551,13 @@ function drawPlots(cols) {
   tw.append(cv);
   box.append(tw);
   drawTrack(cv, cols);
+  const level = { _vent_on: 1.1, _vent_off: 1.3, _surface: 1.0, _hub_out: -1.0 };
+  const inWaves = cols.h_over_r && cols.h_over_r.some((v) => v !== cols.h_over_r[0]);
   for (const spec of PLOTS) {
     if (spec.only && !spec.only(cols)) continue;
+    if (spec.sea && !inWaves) continue;
     const k = spec.scale || 1;
-    const data = [t, ...spec.series.map(([name]) => (k === 1 ? cols[name] : cols[name].map((v) => v * k)))];
+    const data = [t, ...spec.series.map(([name]) => (name in level ? Array.from(t, () => level[name]) : k === 1 ? cols[name] : cols[name].map((v) => v * k)))];
     const div = document.createElement('div');
     div.className = 'plot';
     const h = document.createElement('h3');
@@ -558,7 +723,7 @@ let initialised = false;
 async function onReady(m) {
   if (initialised) {
     // A fresh worker after a cancel: the form and the results stay as they are.
-    $('run').disabled = false;
+    $('run').disabled = false; $('mc-run').disabled = false;
     return;
   }
   initialised = true;
@@ -568,7 +733,7 @@ async function onReady(m) {
   const linked = await fromLink();
   if (linked && !linked.failed) {
     selectPreset(linked.name, linked.scenario);
-    $('run').disabled = false;
+    $('run').disabled = false; $('mc-run').disabled = false;
     run();
     return;
   }
@@ -583,13 +748,14 @@ async function onReady(m) {
     } catch (_) { /* ignore broken storage */ }
   }
   if (!restored) selectPreset('startup');
-  $('run').disabled = false;
+  $('run').disabled = false; $('mc-run').disabled = false;
   if (!restored) status('Ready. Choose a study and press Run.');
 }
 
 $('form').addEventListener('submit', (e) => e.preventDefault());
 $('preset').addEventListener('change', () => { selectPreset($('preset').value); saveEdits(); });
 $('run').addEventListener('click', run);
+$('mc-run').addEventListener('click', runMonteCarlo);
 $('cancel').addEventListener('click', cancel);
 $('reset').addEventListener('click', () => { selectPreset(presetName); saveEdits(); status('Back to the preset.'); });
 $('share').addEventListener('click', async () => {

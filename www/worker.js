@@ -1,6 +1,6 @@
 // Module worker: loads the wasm and runs scenarios in chunks, reporting progress. The main thread
 // never runs physics. Cancel = the page terminates this worker and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, Run, ipsAnalysis } from './pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, Run, ipsAnalysis, mcRange, mcSummary, raoJson } from './pkg/aes_web.js';
 
 await init();
 const presets = {};
@@ -38,6 +38,10 @@ function runScenario(id, scenario) {
   }
 }
 
+// A worker's trials stay as separate partials (merging needs the exact integer sums, which only
+// the Rust side holds); the summary worker merges them all.
+function mcSummaryPartials(parts) { return parts; }
+
 onmessage = (ev) => {
   const m = ev.data;
   if (m.type === 'run') {
@@ -47,6 +51,30 @@ onmessage = (ev) => {
       postMessage({ type: 'validated', id: m.id, errors: validateScenario(m.scenario) });
     } catch (e) {
       postMessage({ type: 'validated', id: m.id, errors: [{ path: '(scenario)', value: '', message: String(e) }] });
+    }
+  } else if (m.type === 'mc') {
+    // Monte Carlo trials a..b, one at a time so that progress can be reported.
+    try {
+      const parts = [];
+      for (let i = m.a; i < m.b; i++) {
+        parts.push(mcRange(m.scenario, i, i + 1));
+        postMessage({ type: 'mc-progress', id: m.id, done: i + 1 - m.a });
+      }
+      postMessage({ type: 'mc-done', id: m.id, partial: mcSummaryPartials(parts) });
+    } catch (e) {
+      postMessage({ type: 'error', id: m.id, message: String(e && e.message ? e.message : e) });
+    }
+  } else if (m.type === 'mc-summary') {
+    try {
+      postMessage({ type: 'mc-summary', id: m.id, summary: mcSummary(m.partials.flat()) });
+    } catch (e) {
+      postMessage({ type: 'error', id: m.id, message: String(e && e.message ? e.message : e) });
+    }
+  } else if (m.type === 'rao') {
+    try {
+      postMessage({ type: 'rao', id: m.id, result: JSON.parse(raoJson(m.speed_kn, m.heading_deg, new Float64Array(m.omegas))) });
+    } catch (e) {
+      postMessage({ type: 'rao', id: m.id, error: String(e && e.message ? e.message : e) });
     }
   } else if (m.type === 'ips') {
     try {

@@ -112,9 +112,16 @@ pub struct ExactMoments {
     pub n: u64,
     #[serde(with = "i128_strings")]
     pub sums: [i128; 4],
+    /// Extremes (JSON null when empty, read back as NaN, which min/max then ignore).
+    #[serde(deserialize_with = "null_as_nan")]
     pub min: f64,
+    #[serde(deserialize_with = "null_as_nan")]
     pub max: f64,
     pub clamped: u64,
+}
+
+fn null_as_nan<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
 }
 
 mod i128_strings {
@@ -379,6 +386,11 @@ mod exact_tests {
         assert!(ExactMoments::new(12, 4).merge(&ExactMoments::new(16, 2)).is_err());
         let json = serde_json::to_string(&a).unwrap();
         assert_eq!(serde_json::from_str::<ExactMoments>(&json).unwrap(), a);
+        // An empty accumulator goes through JSON (its infinite extremes become null) and merges.
+        let mut e: ExactMoments =
+            serde_json::from_str(&serde_json::to_string(&ExactMoments::new(12, 4)).unwrap()).unwrap();
+        e.merge(&a).unwrap();
+        assert_eq!((e.min, e.max, e.n), (a.min, a.max, a.n));
     }
 
     #[test]

@@ -30,7 +30,8 @@ async function open(url) {
 }
 async function setField(page, path, value) {
   const sel = '#f-' + path.replace(/\./g, '-');
-  await page.fill(sel, String(value));
+  if ((await page.$eval(sel, (e) => e.tagName)) === 'SELECT') await page.selectOption(sel, String(value));
+  else await page.fill(sel, String(value));
   await page.dispatchEvent(sel, 'change');
 }
 async function runAndWait(page) {
@@ -122,6 +123,29 @@ await check('maneuvering study draws the track', async () => {
   const st = await runAndWait(page);
   assert(st.startsWith('Done'), st);
   await page.screenshot({ path: `${shots}/turn-90.png` });
+});
+await check('head seas: the sea plots appear (h/R with its bands, losses, wave, motions)', async () => {
+  await page.selectOption('#preset', 'head-seas-ss6');
+  await setField(page, 'seakeeping.stern_motion', 'thesis_eq_2_57');
+  await setField(page, 'sim.duration_s', 30);
+  await runAndWait(page);
+  assert(/^Done/.test(await page.textContent('#status')), await page.textContent('#status'));
+  const titles = await page.$$eval('#plots h3', (hs) => hs.map((h) => h.textContent));
+  assert(titles.some((t) => t.startsWith('Hub depth over propeller radius')), titles.join(' | '));
+  assert(titles.some((t) => t.startsWith('Propeller surface losses')), 'no loss plot');
+  await page.screenshot({ path: `${shots}/head-seas.png` });
+});
+await check('Monte Carlo runs over workers and shows the Table 5.8 comparison and histograms', async () => {
+  await page.selectOption('#preset', 'mc-arrival');
+  await setField(page, 'monte_carlo.trials', 6);
+  await page.click('#mc-run');
+  await page.waitForFunction(() => /^Monte Carlo done|error/.test(document.getElementById('status').textContent) || document.getElementById('status').className === 'error', null, { timeout: 120000 });
+  const st = await page.textContent('#status');
+  assert(/^Monte Carlo done: 6 trials/.test(st), st);
+  const text = await page.textContent('#plots');
+  assert(/Table 5.8/.test(text) && /Rice/.test(text), 'no Table 5.8');
+  assert((await page.$$eval('#plots .uplot', (els) => els.length)) >= 3, 'too few Monte Carlo plots');
+  await page.screenshot({ path: `${shots}/monte-carlo.png` });
 });
 await check('stability tab shows poles and Bode plots, and follows the slider', async () => {
   await page.click('#tab-ips');

@@ -154,3 +154,49 @@ pub fn ips_analysis(
     })
     .to_string())
 }
+
+/// Monte Carlo trials `a..b` of a scenario (run one after another in this worker); returns the
+/// partial statistics as JSON, to be merged with the other workers' by `mcSummary`.
+#[wasm_bindgen(js_name = mcRange)]
+pub fn mc_range(json: &str, a: u32, b: u32) -> Result<String, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    if a >= b || b as u64 > sc.monte_carlo.trials {
+        return Err(JsError::new(&format!("trials {a}..{b}: need a < b <= monte_carlo.trials")));
+    }
+    let p = aes_core::montecarlo::run_range(&sc, a as u64, b as u64).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// Merges partials (JSON strings from `mcRange`) and returns the study's summary JSON; the result
+/// does not depend on how the trials were split or in which order the partials come.
+#[wasm_bindgen(js_name = mcSummary)]
+pub fn mc_summary(partials: Vec<String>) -> Result<String, JsError> {
+    let mut acc: Option<aes_core::montecarlo::Partial> = None;
+    for p in &partials {
+        let p: aes_core::montecarlo::Partial =
+            serde_json::from_str(p).map_err(|e| JsError::new(&format!("not a partial: {e}")))?;
+        match acc.as_mut() {
+            None => acc = Some(p),
+            Some(a) => a.merge(&p).map_err(|e| JsError::new(&e))?,
+        }
+    }
+    let acc = acc.ok_or_else(|| JsError::new("no partials"))?;
+    let v = aes_core::montecarlo::summary(&acc).map_err(|e| JsError::new(&e))?;
+    Ok(v.to_string())
+}
+
+/// Heave and pitch RAOs of the DTMB 5415 (`aes-sim rao`'s JSON) at `speed_kn` and `heading_deg`
+/// over `omegas` [rad/s].
+#[wasm_bindgen(js_name = raoJson)]
+pub fn rao_json(speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -> Result<String, JsError> {
+    let ship = aes_core::sim::seaway::dtmb5415();
+    let v = aes_core::seakeeping::tables::rao_json(
+        ship,
+        speed_kn * aes_core::units::KNOT_M_S,
+        heading_deg.to_radians(),
+        &omegas,
+        1.0,
+    )
+    .map_err(|e| JsError::new(&e))?;
+    Ok(v.to_string())
+}

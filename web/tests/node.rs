@@ -78,3 +78,22 @@ fn wasm_matches_native_bit_for_bit() {
         include_str!(concat!(env!("OUT_DIR"), "/native_head_seas_10s.json"))
     );
 }
+
+/// Monte Carlo in wasm: two ranges merged give the summary of the whole range.
+#[wasm_bindgen_test]
+fn monte_carlo_in_wasm() {
+    let mut s: serde_json::Value = serde_json::from_str(&preset_json("mc-excess-energy").unwrap()).unwrap();
+    s["monte_carlo"]["trials"] = serde_json::json!(3);
+    s["monte_carlo"]["histogram_time_s"] = serde_json::json!(4.0);
+    s["monte_carlo"]["periodogram_segment_s"] = serde_json::json!(2.0);
+    s["sim"]["duration_s"] = serde_json::json!(6.0);
+    let j = s.to_string();
+    let whole = mc_summary(vec![mc_range(&j, 0, 3).unwrap()]).unwrap();
+    let split = mc_summary(vec![mc_range(&j, 2, 3).unwrap(), mc_range(&j, 0, 2).unwrap()]).unwrap();
+    assert_eq!(whole, split);
+    let v: serde_json::Value = serde_json::from_str(&whole).unwrap();
+    assert_eq!(v["trials"], 3);
+    assert!(mc_range(&j, 2, 9).is_err());
+    let r: serde_json::Value = serde_json::from_str(&rao_json(20.0, 180.0, vec![0.12, 0.6]).unwrap()).unwrap();
+    assert!((r["heave"]["amp"][0].as_f64().unwrap() - 1.0).abs() < 0.03);
+}
