@@ -366,6 +366,7 @@ function run() {
     $('export-json').disabled = false;
     showSummary(summary);
     drawPlots(m.columns);
+    if (sc.sea.kind !== 'calm') extraSeaPlots(sc);
     status(`Done: ${summary.final_time_s} s simulated in ${(m.wall_ms / 1000).toFixed(2)} s (${(summary.final_time_s / (m.wall_ms / 1000)).toFixed(0)} times real time).`);
   });
 }
@@ -379,7 +380,7 @@ function runMonteCarlo() {
   const n = Number(sc.monte_carlo && sc.monte_carlo.trials) || 0;
   if (sc.sea.kind === 'calm') { status('Monte Carlo needs a sea: choose a random sea (or the mc-… studies).', true); return; }
   if (!(n >= 1 && n <= 100000)) { status('monte_carlo.trials must be from 1 to 100000 in the page.', true); return; }
-  const k = Math.max(1, Math.min(4, (navigator.hardwareConcurrency || 2) - 1, n));
+  const k = Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2, n));
   $('run').disabled = true; $('mc-run').disabled = true; $('cancel').disabled = false;
   $('progress').value = 0; $('eta').textContent = '';
   status(`Monte Carlo: ${n} trials on ${k} workers...`);
@@ -420,6 +421,36 @@ function runMonteCarlo() {
       } else if (m.type === 'error') fail(m.message);
     };
     wk.onerror = (e) => fail('A worker failed: ' + (e.message || e));
+  }
+}
+
+// RAOs of the hull at the run's ordered speed in head and bow seas, and (for the fuel study) the
+// Fig. 5-12 curves, drawn after a run in waves.
+function extraSeaPlots(sc) {
+  const kn = (sc.commands[0] && sc.commands[0].speed_kn) || 25;
+  const lam = Array.from({ length: 60 }, (_, i) => 0.3 + i * 0.045);
+  const omegas = lam.map((l) => Math.sqrt((2 * Math.PI * 9.81) / (l * 142)));
+  for (const heading of [180, 135]) {
+    ask({ type: 'rao', speed_kn: kn, heading_deg: heading, omegas }, (m) => {
+      pending.delete(m.id);
+      if (m.error) return;
+      const r = m.result;
+      const pk = r.pitch.amp.map((p, i) => p / ((omegas[i] * omegas[i]) / 9.81));
+      linePlot($('plots'), `DTMB 5415 RAOs at ${kn} kn, ${heading === 180 ? 'head' : 'bow'} seas (strip theory, ch. 2.5.2)`, lam,
+        [[r.heave.amp, 'heave [m/m]', '#16a085'], [pk, 'pitch / k [-]', '#d35400'], [r.roll.amp, 'roll [rad/m]', '#7f8c8d']], 'wave length / ship length', 'amplitude');
+    });
+  }
+  if (sc.sea.kind === 'regular') {
+    const ws = Array.from({ length: 13 }, (_, i) => 0.3 + 0.1 * i);
+    ask({ type: 'fuel', scenario: JSON.stringify(sc), omegas: ws }, (m) => {
+      pending.delete(m.id);
+      if (m.error) { status(m.error, true); return; }
+      const colors = ['#aed6f1', '#5dade2', '#2e86c1', '#1f618d', '#154360'];
+      for (const heading of ['head', 'bow']) {
+        const series = [1, 2, 3, 4, 5].map((ft, j) => [ws.map((w) => { const r = m.rows.find((x) => x.heading === heading && x.amplitude_ft === ft && Math.abs(x.omega_rad_s - w) < 1e-9); return r ? r.fuel_power_w / 1e6 : null; }), `${ft} ft`, colors[j]]);
+        linePlot($('plots'), `Fuel power of one prime mover [MW], ${heading} seas, 1 to 5 ft (Fig. 5-12)`, ws, series, 'wave frequency [rad/s]', 'MW');
+      }
+    });
   }
 }
 

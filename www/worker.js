@@ -1,6 +1,6 @@
 // Module worker: loads the wasm and runs scenarios in chunks, reporting progress. The main thread
 // never runs physics. Cancel = the page terminates this worker and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, Run, ipsAnalysis, mcRange, mcSummary, raoJson } from './pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, Run, ipsAnalysis, mcRange, mcSummary, raoJson, fuelStudy } from './pkg/aes_web.js';
 
 await init();
 const presets = {};
@@ -69,6 +69,12 @@ onmessage = (ev) => {
       postMessage({ type: 'mc-summary', id: m.id, summary: mcSummary(m.partials.flat()) });
     } catch (e) {
       postMessage({ type: 'error', id: m.id, message: String(e && e.message ? e.message : e) });
+    }
+  } else if (m.type === 'fuel') {
+    try {
+      postMessage({ type: 'fuel', id: m.id, rows: JSON.parse(fuelStudy(m.scenario, new Float64Array(m.omegas))) });
+    } catch (e) {
+      postMessage({ type: 'fuel', id: m.id, error: String(e && e.message ? e.message : e) });
     }
   } else if (m.type === 'rao') {
     try {

@@ -147,6 +147,30 @@ await check('Monte Carlo runs over workers and shows the Table 5.8 comparison an
   assert((await page.$$eval('#plots .uplot', (els) => els.length)) >= 3, 'too few Monte Carlo plots');
   await page.screenshot({ path: `${shots}/monte-carlo.png` });
 });
+await check('a running Monte Carlo study can be cancelled and the form survives', async () => {
+  await setField(page, 'monte_carlo.trials', 400);
+  await page.click('#mc-run');
+  await page.waitForFunction(() => document.getElementById('progress').value > 0, null, { timeout: 60000 });
+  await page.click('#cancel');
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'Cancelled.', null, { timeout: 5000 });
+  await page.waitForFunction(() => !document.getElementById('mc-run').disabled, null, { timeout: 30000 });
+  assert((await page.inputValue('#f-monte_carlo-trials')) === '400', 'form lost its edit');
+});
+await check('100 Monte Carlo trials of head seas SS6 on 2 workers (speed report)', async () => {
+  await page.selectOption('#preset', 'head-seas-ss6');
+  await setField(page, 'monte_carlo.trials', 100);
+  const t0 = Date.now();
+  await page.click('#mc-run');
+  await page.waitForFunction(() => /^Monte Carlo done/.test(document.getElementById('status').textContent) || document.getElementById('status').className === 'error', null, { timeout: 180000 });
+  console.log(`     ${await page.textContent('#status')} (wall ${((Date.now() - t0) / 1000).toFixed(1)} s, ${await page.evaluate(() => navigator.hardwareConcurrency)} cores)`);
+});
+await check('fuel study draws the Fig. 5-12 curves and the RAOs', async () => {
+  await page.selectOption('#preset', 'fuel-regular-seas');
+  await setField(page, 'sim.duration_s', 10);
+  await runAndWait(page);
+  await page.waitForFunction(() => [...document.querySelectorAll('#plots h3')].filter((h) => /Fig. 5-12|RAOs/.test(h.textContent)).length >= 4, null, { timeout: 60000 });
+  await page.screenshot({ path: `${shots}/fuel.png`, fullPage: true });
+});
 await check('stability tab shows poles and Bode plots, and follows the slider', async () => {
   await page.click('#tab-ips');
   await page.waitForFunction(() => document.getElementById('ips-status').textContent.startsWith('Stable'), null, { timeout: 10000 });

@@ -200,3 +200,14 @@ pub fn rao_json(speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -> Result<Str
     .map_err(|e| JsError::new(&e))?;
     Ok(v.to_string())
 }
+
+/// The fuel study of ch. 5.2.4 (Fig. 5-12) from a scenario: JSON rows as `aes-sim fuel` prints.
+#[wasm_bindgen(js_name = fuelStudy)]
+pub fn fuel_study(json: &str, omegas: Vec<f64>) -> Result<String, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    if omegas.is_empty() || omegas.len() > 200 || omegas.iter().any(|w| !(w.is_finite() && (0.1..=5.0).contains(w))) {
+        return Err(JsError::new("fuel study: 1 to 200 frequencies from 0.1 to 5 rad/s"));
+    }
+    let rows = aes_core::fuel::fuel_study(&sc, &omegas).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
+}
