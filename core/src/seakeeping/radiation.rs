@@ -269,24 +269,18 @@ pub fn solve(map: &SectionMap, c: &Contour, omega: f64, rho: f64, g: f64, n_mult
         };
     // With the regular term first, the multipoles start one order later (p = 2m, 2m + 1 from
     // m = 1 on the circle, where the regular terms vanish).
-    let even = |i: usize, m: usize| {
+    // `parity` 0: even class (orders 2, 4, ...); 1: odd class (3, 5, ...).
+    let class = |regular: &[(f64, f64)], parity: usize, i: usize, m: usize| {
         if circle {
-            multipole(i, 2 * m + 2)
+            multipole(i, 2 * m + 2 + parity)
         } else if m == 0 {
-            regular_even[i]
+            regular[i]
         } else {
-            multipole(i, 2 * m)
+            multipole(i, 2 * m + parity)
         }
     };
-    let odd_b = |i: usize, m: usize| {
-        if circle {
-            multipole(i, 2 * m + 3)
-        } else if m == 0 {
-            regular_odd[i]
-        } else {
-            multipole(i, 2 * m + 1)
-        }
-    };
+    let even = |i: usize, m: usize| class(&regular_even, 0, i, m);
+    let odd_b = |i: usize, m: usize| class(&regular_odd, 1, i, m);
     let heave = solve_class(&src_heave, &even, &[&c.nl[1]]);
     let odd = solve_class(&src_sway, &odd_b, &[&c.nl[0], &c.nl[2]]);
     let (q3, psi3) = heave.into_iter().next().unwrap_or_default();

@@ -188,7 +188,7 @@ impl RaoTable {
 }
 
 /// Lower index and fraction of `x` in the increasing grid `g` (held at the ends).
-fn bracket(g: &[f64], x: f64) -> (usize, f64) {
+pub(crate) fn bracket(g: &[f64], x: f64) -> (usize, f64) {
     if g.len() < 2 || x <= g[0] {
         return (0, 0.0);
     }

@@ -16,7 +16,7 @@
 
 use crate::scenario::{Scenario, SeaKind};
 use crate::seakeeping::strip::Ship;
-use crate::seakeeping::tables::{RaoTable, SeakeepingGrid};
+use crate::seakeeping::tables::{bracket, RaoTable, SeakeepingGrid};
 use crate::waves::{SeaSampling, WaveComponent, G};
 use num_complex::Complex64 as C;
 use std::f64::consts::PI;
@@ -281,17 +281,4 @@ impl Seaway {
         let fy: f64 = self.wy.iter().map(|w| w * w).sum::<f64>() * self.sign_y;
         (fx, fy)
     }
-}
-
-/// Lower index and fraction of `x` in the increasing grid `g` (held at the ends).
-fn bracket(g: &[f64], x: f64) -> (usize, f64) {
-    if g.len() < 2 || x <= g[0] {
-        return (0, 0.0);
-    }
-    let n = g.len();
-    if x >= g[n - 1] {
-        return (n - 2, 1.0);
-    }
-    let j = g.partition_point(|&v| v <= x) - 1;
-    (j, (x - g[j]) / (g[j + 1] - g[j]))
 }
