@@ -46,7 +46,7 @@ pub struct Contour {
 }
 
 /// Number of contour nodes (half section).
-pub const NODES: usize = 64;
+pub const NODES: usize = 48;
 
 impl Contour {
     pub fn new(map: &SectionMap) -> Contour {
@@ -85,11 +85,11 @@ pub struct Radiation2d {
     pub multipoles: usize,
 }
 
-/// Multipoles used at `nu` for `map`: more for higher circle-plane wave numbers nu M; at most 46,
-/// so the least squares stays overdetermined two to one (the convergence test shows the default
-/// is converged to 1e-3).
+/// Multipoles used at `nu` for `map`: more for higher circle-plane wave numbers nu M; at most 22,
+/// so the least squares on the 48 nodes stays overdetermined two to one. With the regular first
+/// terms few are needed (the convergence test shows the default converged to 1e-3).
 pub fn default_multipoles(nu: f64, map: &SectionMap) -> usize {
-    (10.0 + 1.5 * nu * map.scale).ceil().min(46.0) as usize
+    (6.0 + nu * map.scale).ceil().min(22.0) as usize
 }
 
 /// The 2-D radiation problem of `map` at frequency `omega` [rad/s], water density `rho`, gravity
