@@ -155,7 +155,9 @@ pub fn quarter_turn(sea_state: u32) -> Scenario {
     let mut s = at_speed_maneuvering(
         &format!("quarter-turn-ss{sea_state}"),
         &format!(
-            "A 90 degree turn at 25 knots in sea state {sea_state} from ahead (thesis ch. 5.2.4, Fig. 5-11): the waves'              second-order forces add resistance and, once the sea is on the beam, push the ship sideways (drift)."
+            "A 90 degree turn at 25 knots in sea state {sea_state} from ahead (thesis ch. 5.2.4, Fig. 5-11): the \
+                waves' second-order forces add resistance and, once the sea is on the beam, push the ship \
+                sideways (drift)."
         ),
     );
     s.sea.kind = SeaKind::Random;
@@ -173,7 +175,9 @@ pub fn quarter_turn(sea_state: u32) -> Scenario {
 pub fn fuel_regular_seas() -> Scenario {
     let mut s = at_speed_maneuvering(
         "fuel-regular-seas",
-        "Travel at 25 knots in a regular head sea (thesis ch. 5.2.4, Fig. 5-12): the added resistance raises the          power and with it the fuel burnt by each gas turbine. `aes-sim fuel` sweeps 1 to 5 ft waves over frequency          for head and bow seas.",
+        "Travel at 25 knots in a regular head sea (thesis ch. 5.2.4, Fig. 5-12): the added resistance raises the \
+            power and with it the fuel burnt by each gas turbine. `aes-sim fuel` sweeps 1 to 5 ft waves over \
+            frequency for head and bow seas.",
     );
     s.sea.kind = SeaKind::Regular;
     s.sea.amplitude_m = 0.3048;
@@ -188,7 +192,10 @@ pub fn fuel_regular_seas() -> Scenario {
 pub fn head_seas_ss6() -> Scenario {
     let mut s = at_speed_maneuvering(
         "head-seas-ss6",
-        "25 knots into head seas of sea state 6 (thesis ch. 5.3.1, Figs. 5-13 to 5-15): the stern rises and falls,          the propellers come near the surface, ventilate and lose thrust, race, and the motors' power swings by tens          of percent.",
+        "25 knots into head seas of sea state 6 (thesis ch. 5.3.1, Figs. 5-13 to 5-15): the stern rises and falls and \
+         the propellers' depth swings. With the consistent hub depth they stay below the ventilation level at h0 = 6 m; \
+         with the hub depth of eq. 2.57 as printed (seakeeping.stern_motion) they ventilate, emerge and race, and the \
+         motors' power swings by tens of percent, as in the thesis.",
     );
     s.sea.kind = SeaKind::Random;
     s.sea.sea_state = 6;
@@ -201,7 +208,9 @@ pub fn head_seas_ss6() -> Scenario {
 /// Ch. 5.3.2: the full turn at 25 knots in sea state 6, starting in head seas (Figs. 5-16 to 5-19).
 pub fn turn_360_ss6() -> Scenario {
     let mut s = turn("turn-360-ss6", 360.0, Some(1.0));
-    s.description = "A full turn at 25 knots in sea state 6 starting in head seas (thesis ch. 5.3.2, Figs. 5-16 to                      5-19): the propellers are excited most in head seas, little in following seas, and the motors                      need well over their straight-line power to hold speed in the turn."
+    s.description = "A full turn at 25 knots in sea state 6 starting in head seas (thesis ch. 5.3.2, Figs. 5-16 \
+        to 5-19): the propellers are excited most in head seas, little in following seas, and the motors need \
+        well over their straight-line power to hold speed in the turn."
         .into();
     s.sea.kind = SeaKind::Random;
     s.sea.sea_state = 6;
@@ -216,7 +225,9 @@ pub fn turn_360_ss6() -> Scenario {
 pub fn mc_excess_energy() -> Scenario {
     let mut s = head_seas_ss6();
     s.name = "mc-excess-energy".into();
-    s.description = "Monte Carlo, 100 trials of 80 s at 25 knots in head seas SS6 with a 4.8 m propeller only 4 m deep                      (thesis ch. 5.4.1, Figs. 5-20 to 5-23): how much extra energy the motors draw because of surface                      effects, and how their power spreads over trials. Run it with `aes-sim mc` or the Monte Carlo tab."
+    s.description = "Monte Carlo, 100 trials of 80 s at 25 knots in head seas SS6 with a 4.8 m propeller only 4 \
+        m deep (thesis ch. 5.4.1, Figs. 5-20 to 5-23): how much extra energy the motors draw because of surface \
+        effects, and how their power spreads over trials. Run it with `aes-sim mc` or the Monte Carlo tab."
         .into();
     s.propeller.diameter_m = 4.8;
     s.seakeeping.hub_depth_m = 4.0;
@@ -232,7 +243,10 @@ pub fn mc_excess_energy() -> Scenario {
 pub fn mc_arrival() -> Scenario {
     let mut s = head_seas_ss6();
     s.name = "mc-arrival".into();
-    s.description = "Monte Carlo, 200 trials at 25 knots in head seas SS6 with a 4.8 m propeller 6 m deep, each stopped                      12 s after its first surface effect or at 90 s (thesis ch. 5.4.2, Table 5.8, Figs. 5-24 and 5-25):                      the arrival times against Rice's up-crossing rate. Uses the hub depth of eq. 2.57 as printed, as the                      thesis did; with the corrected sign such events are a million times rarer."
+    s.description = "Monte Carlo, 200 trials at 25 knots in head seas SS6 with a 4.8 m propeller 6 m deep, each \
+        stopped 12 s after its first surface effect or at 90 s (thesis ch. 5.4.2, Table 5.8, Figs. 5-24 and \
+        5-25): the arrival times against Rice's up-crossing rate. Uses the hub depth of eq. 2.57 as printed, as \
+        the thesis did; with the corrected sign such events are a million times rarer."
         .into();
     s.propeller.diameter_m = 4.8;
     s.seakeeping.hub_depth_m = 6.0;
