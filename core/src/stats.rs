@@ -187,10 +187,12 @@ impl ExactMoments {
         if b.bits != self.bits || b.order != self.order {
             return Err("exact moments with different quanta cannot be merged".into());
         }
-        self.n += b.n;
-        for k in 0..4 {
-            self.sums[k] += b.sums[k];
+        let mut sums = self.sums;
+        for (s, x) in sums.iter_mut().zip(b.sums) {
+            *s = s.checked_add(x).ok_or("exact moments overflow: more samples than the sums can hold")?;
         }
+        self.sums = sums;
+        self.n += b.n;
         self.min = self.min.min(b.min);
         self.max = self.max.max(b.max);
         self.clamped += b.clamped;
