@@ -67,7 +67,7 @@ pub fn fuel_study(sc: &crate::Scenario, omegas: &[f64]) -> Result<Vec<FuelPoint>
     let curve = part_load_curve();
     let speed_kn = sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(25.0);
     let u = crate::units::kn_to_m_s(speed_kn);
-    let table = crate::sim::seaway::rao_table(&sc.seakeeping.grid)?;
+    let table = crate::seakeeping::cache::rao_table(&sc.seakeeping.grid)?;
     let mut calm = sc.clone();
     calm.sea.kind = crate::scenario::SeaKind::Calm;
     calm.initial.speed_kn = speed_kn;

@@ -18,7 +18,8 @@
 //!   encounter frequency, and the up-crossing rate of eq. 5.3.
 
 use crate::scenario::{Scenario, SeaKind, SternMotion};
-use crate::sim::{Simulation, SIGNALS};
+use crate::signals::Signal;
+use crate::sim::Simulation;
 use crate::stats::{rice_upcrossing_rate, trial_seed, welch, ExactMoments, Histogram};
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
@@ -197,9 +198,13 @@ pub fn run_trial(sc: &Scenario, i: u64) -> Result<Partial, String> {
     let dt = s.sim.record_interval_s;
     let mut p = Partial::empty(sc);
     p.ranges = vec![(i, i + 1)];
-    let column = |name: &str| result.trace.column(name).unwrap_or(&[]);
+    // Signal names were checked when the scenario was validated; a name that is not a signal is
+    // an error here, never an empty column.
+    let column = |name: &str| {
+        result.trace.column(name).ok_or_else(|| format!("monte_carlo: '{name}' is not a trace column"))
+    };
     for e in p.envelopes.iter_mut() {
-        e.rows = column(&e.signal)
+        e.rows = column(&e.signal)?
             .iter()
             .map(|&v| {
                 let mut x = ExactMoments::new(ENV_BITS, 2);
@@ -209,17 +214,17 @@ pub fn run_trial(sc: &Scenario, i: u64) -> Result<Partial, String> {
             .collect();
     }
     let row = libm::round(m.histogram_time_s / dt) as usize;
-    if let Some(&v) = column(&m.histogram_signal).get(row) {
+    if let Some(&v) = column(&m.histogram_signal)?.get(row) {
         p.at_time.push(v);
         p.at_time_hist.push(v);
     }
-    let power = column("im_power_pu");
+    let power = result.trace.get(Signal::ImPowerPu);
     if m.excess_energy {
         let mut sub = s.clone();
         sub.seakeeping.surface_losses = false;
         let r = crate::run(&sub).map_err(|e| format!("trial {i} (submerged counterpart): {e}"))?;
         let n = power.len().min(r.trace.len());
-        let base = r.trace.column("im_power_pu").unwrap_or(&[]);
+        let base = r.trace.get(Signal::ImPowerPu);
         let e = (motor_energy(&s, &power[..n], dt) - motor_energy(&s, &base[..n], dt)) / 1e6;
         p.excess_energy_mj.push(e);
         p.excess_hist.push(e);
@@ -268,18 +273,18 @@ pub fn run_trial(sc: &Scenario, i: u64) -> Result<Partial, String> {
             .collect();
     }
     if i < m.keep_traces as u64 {
-        let t = column("t_s").to_vec();
+        let t = result.trace.get(Signal::TS).to_vec();
         let mut names: Vec<String> = m.envelope_signals.clone();
-        for extra in ["h_over_r", "beta_t", "im_power_pu"] {
-            if !names.iter().any(|n| n == extra) {
-                names.push(extra.into());
+        for extra in [Signal::HOverR, Signal::BetaT, Signal::ImPowerPu] {
+            if !names.iter().any(|n| n == extra.name()) {
+                names.push(extra.name().into());
             }
         }
         p.traces = vec![KeptTrace {
             trial: i,
             seed: s.sim.seed,
             t_s: t,
-            columns: names.iter().map(|n| (n.clone(), column(n).to_vec())).collect(),
+            columns: names.iter().map(|n| Ok((n.clone(), column(n)?.to_vec()))).collect::<Result<_, String>>()?,
         }];
     }
     Ok(p)
@@ -303,7 +308,7 @@ pub fn rice(sc: &Scenario) -> Result<Value, String> {
         return Ok(Value::Null);
     }
     let k = &sc.seakeeping;
-    let table = crate::sim::seaway::rao_table(&k.grid)?;
+    let table = crate::seakeeping::cache::rao_table(&k.grid)?;
     let (h, wn) = sc.sea.spectrum();
     let (w_lo, w_hi) = if sc.sea.omega_min_rad_s > 0.0 && sc.sea.omega_max_rad_s > 0.0 {
         (sc.sea.omega_min_rad_s, sc.sea.omega_max_rad_s)
@@ -456,6 +461,6 @@ pub fn summary(p: &Partial) -> Result<Value, String> {
 }
 
 /// Names of the trace columns a study may collect.
-pub fn signal_names() -> &'static [&'static str] {
-    SIGNALS
+pub fn signal_names() -> impl Iterator<Item = &'static str> {
+    crate::signals::names()
 }

@@ -8,6 +8,14 @@
 //! and to persist until the propeller is deeper again. We therefore start ventilation when h/R falls
 //! below 1.1 and end it when h/R rises above 1.3 (the same two numbers, as a loop).
 
+/// h/R at which the propeller disk's upper edge reaches the surface: below it eq. 2.14 loses
+/// thrust [-].
+pub const DISK_AT_SURFACE_H_OVER_R: f64 = 1.0;
+/// h/R with the hub at the surface (half the disk out) [-].
+pub const HUB_AT_SURFACE_H_OVER_R: f64 = 0.0;
+/// h/R with the whole disk out of the water (eq. 2.14 gives no thrust) [-].
+pub const DISK_OUT_H_OVER_R: f64 = -1.0;
+
 /// Parameters of the loss model.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LossParams {
@@ -39,9 +47,9 @@ impl Default for LossParams {
 /// surface (negative: above it): Re(1 - acos(h/R)/pi + (h/R)/pi sqrt(1 - (h/R)^2)), which is 1
 /// for a disk fully submerged and 0 for one fully out of the water.
 pub fn beta_out_of_water(h_over_r: f64) -> f64 {
-    if h_over_r >= 1.0 {
+    if h_over_r >= DISK_AT_SURFACE_H_OVER_R {
         1.0
-    } else if h_over_r <= -1.0 {
+    } else if h_over_r <= DISK_OUT_H_OVER_R {
         0.0
     } else {
         let x = h_over_r;

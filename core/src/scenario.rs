@@ -992,7 +992,7 @@ impl Scenario {
             c.fail("monte_carlo.envelope_signals", format!("{} signals", m.envelope_signals.len()), "at most 20");
         }
         for (i, n) in m.envelope_signals.iter().enumerate().take(20) {
-            if !crate::sim::SIGNALS.contains(&n.as_str()) {
+            if !crate::signals::Signal::from_name(n).is_some() {
                 c.fail(
                     &format!("monte_carlo.envelope_signals.{i}"),
                     n.chars().take(40).collect(),
@@ -1000,7 +1000,7 @@ impl Scenario {
                 );
             }
         }
-        if !crate::sim::SIGNALS.contains(&m.histogram_signal.as_str()) {
+        if !crate::signals::Signal::from_name(&m.histogram_signal).is_some() {
             c.fail(
                 "monte_carlo.histogram_signal",
                 m.histogram_signal.chars().take(40).collect(),

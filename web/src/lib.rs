@@ -29,6 +29,21 @@ pub fn validate_scenario(json: &str) -> Result<JsValue, JsError> {
     serde_wasm_bindgen::to_value(&errors).map_err(|e| JsError::new(&e.to_string()))
 }
 
+/// Every recorded signal's metadata, in trace column order, as JSON:
+/// `[{"name", "unit", "label", "description"}, ...]` (the page's axis units and labels).
+#[wasm_bindgen(js_name = signalMeta)]
+pub fn signal_meta() -> String {
+    serde_json::to_string(aes_core::signals::SIGNALS).unwrap_or_default()
+}
+
+/// The model's levels and ratings the page draws (bands, reference lines, per-unit bases), for a
+/// scenario, as JSON. The page copies none of these numbers.
+#[wasm_bindgen(js_name = pageConstants)]
+pub fn page_constants(json: &str) -> Result<String, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    serde_json::to_string(&aes_core::presentation::PageConstants::of(&sc)).map_err(|e| JsError::new(&e.to_string()))
+}
+
 /// A run in progress, advanced in chunks so a worker can report progress and honour cancel.
 #[wasm_bindgen]
 pub struct Run {
@@ -81,16 +96,14 @@ impl Run {
     /// Names of the trace columns.
     #[wasm_bindgen(js_name = signalNames)]
     pub fn signal_names() -> Vec<String> {
-        aes_core::sim::SIGNALS.iter().map(|s| s.to_string()).collect()
+        aes_core::signals::names().map(|s| s.to_string()).collect()
     }
 
     /// One trace column as a Float64Array (after the run has finished).
     pub fn column(&self, name: &str) -> Result<js_sys::Float64Array, JsError> {
-        let i = aes_core::sim::SIGNALS
-            .iter()
-            .position(|s| *s == name)
-            .ok_or_else(|| JsError::new(&format!("no signal named '{name}'")))?;
-        let col = self.columns.get(i).ok_or_else(|| JsError::new("the run has not finished"))?;
+        let s = aes_core::signals::Signal::from_name(name)
+            .ok_or_else(|| JsError::new(&format!("no signal named '{}'", name.chars().take(40).collect::<String>())))?;
+        let col = self.columns.get(s.index()).ok_or_else(|| JsError::new("the run has not finished"))?;
         Ok(js_sys::Float64Array::from(col.as_slice()))
     }
 }
@@ -189,7 +202,7 @@ pub fn mc_summary(partials: Vec<String>) -> Result<String, JsError> {
 /// over `omegas` [rad/s].
 #[wasm_bindgen(js_name = raoJson)]
 pub fn rao_json(speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -> Result<String, JsError> {
-    let ship = aes_core::sim::seaway::dtmb5415();
+    let ship = aes_core::seakeeping::cache::dtmb5415();
     let v = aes_core::seakeeping::tables::rao_json(
         ship,
         speed_kn * aes_core::units::KNOT_M_S,

@@ -3,6 +3,7 @@
 //! and honours cancel between chunks); `run` does it in one go.
 
 pub mod plant;
+mod record;
 pub mod seaway;
 pub mod summary;
 
@@ -12,6 +13,7 @@ use crate::prime_mover::Governor;
 use crate::propeller_losses::{loss_factors, LossParams, Ventilation};
 use crate::rudder::Autopilot;
 use crate::scenario::{HullModelKind, Scenario};
+use crate::signals::{Signal, N_SIGNALS};
 use crate::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg, rpm_to_rad_s};
 use plant::{
     bus_voltage, field_current, omega_rm, omega_t, rk4_step, Held, Outputs, Plant, State, ENERGY0, HEADING, NX,
@@ -44,72 +46,26 @@ impl fmt::Display for SimError {
 
 impl std::error::Error for SimError {}
 
-/// Names of the recorded signals, in trace column order. Units are in the names; `_pu` signals
-/// are per unit of: turbine speed, the governor set point (3600 rpm); bus voltage, the field
-/// controller's set point (5618 V); motor voltage, rated phase voltage; motor power, rated
-/// power (38 MW). Per-shaft signals average the two shafts; `_1`, `_2` are the shafts. Ship speed
-/// is the speed through the water, sqrt(u^2 + v^2). In waves: heave up, pitch bow down (STF), roll
-/// starboard down, sway to starboard and yaw bow to starboard (first-order motions about the
-/// maneuvering track, not fed back into it); `added_resistance_n` and `drift_force_n` are the slowly varying second-order
-/// force backwards and to starboard; `fuel_power_w` sums the four turbines.
-pub const SIGNALS: &[&str] = &[
-    "t_s",
-    "ship_speed_kn",
-    "speed_cmd_kn",
-    "prop_rpm",
-    "prop_rpm_1",
-    "prop_rpm_2",
-    "prop_rpm_ref",
-    "turbine_speed_pu",
-    "throttle",
-    "field_current_a",
-    "bus_voltage_pu",
-    "bus_voltage_v",
-    "motor_voltage_pu",
-    "slip_speed_rad_s",
-    "im_power_pu",
-    "im_torque_knm",
-    "thrust_kn",
-    "advance_ratio",
-    "prop_efficiency",
-    "beta_t",
-    "beta_q",
-    "x_m",
-    "y_m",
-    "heading_deg",
-    "heading_ref_deg",
-    "rudder_deg",
-    "drift_angle_deg",
-    "yaw_rate_deg_s",
-    "brake_power_w",
-    "p_turbine_w",
-    "p_generator_w",
-    "p_inverter_w",
-    "p_motor_w",
-    "p_ship_w",
-    "wave_stern_m",
-    "hub_depth_m",
-    "h_over_r",
-    "heave_m",
-    "pitch_deg",
-    "roll_deg",
-    "sway_m",
-    "yaw_deg",
-    "added_resistance_n",
-    "drift_force_n",
-    "fuel_power_w",
-];
-
-/// A recorded trace: one column per signal of [`SIGNALS`].
+/// A recorded trace: one column per signal of [`crate::signals::SIGNALS`], in its order.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Trace {
     pub columns: Vec<Vec<f64>>,
 }
 
 impl Trace {
-    /// The column of a signal, by name.
+    /// An empty trace with room for `rows` rows.
+    pub fn with_capacity(rows: usize) -> Trace {
+        Trace { columns: (0..N_SIGNALS).map(|_| Vec::with_capacity(rows)).collect() }
+    }
+
+    /// The column of a signal.
+    pub fn get(&self, s: Signal) -> &[f64] {
+        &self.columns[s.index()]
+    }
+
+    /// The column of a signal, by name (None for a name that is not a signal).
     pub fn column(&self, name: &str) -> Option<&[f64]> {
-        SIGNALS.iter().position(|s| *s == name).map(|i| self.columns[i].as_slice())
+        Signal::from_name(name).map(|s| self.get(s))
     }
 
     /// Number of recorded rows.
@@ -123,7 +79,7 @@ impl Trace {
 
     /// The trace as CSV text with a header row.
     pub fn to_csv(&self) -> String {
-        let mut s = SIGNALS.join(",");
+        let mut s = crate::signals::names().collect::<Vec<_>>().join(",");
         s.push('\n');
         for r in 0..self.len() {
             for (i, c) in self.columns.iter().enumerate() {
@@ -244,7 +200,7 @@ impl Simulation {
         let ctl_every = (scenario.controllers.sample_period_s / dt).round().max(1.0) as u64;
         let rec_every = (sim_cfg.record_interval_s / dt).round().max(1.0) as u64;
         let rows = (total_steps / rec_every + 2) as usize;
-        let trace = Trace { columns: (0..SIGNALS.len()).map(|_| Vec::with_capacity(rows)).collect() };
+        let trace = Trace::with_capacity(rows);
 
         let sp = &scenario.controllers.speed;
         let rpm_per_kn = rpm_to_rad_s(1.0) / kn_to_m_s(1.0);
@@ -551,17 +507,6 @@ impl Simulation {
     fn record(&mut self) {
         let o = &self.out;
         let x = &self.x;
-        let p = &self.plant;
-        let ns = N_SHAFTS as f64;
-        let mean_shaft = |f: &dyn Fn(usize) -> f64| (0..N_SHAFTS).map(f).sum::<f64>() / ns;
-        let mean_set = |f: &dyn Fn(usize) -> f64| (0..N_SETS).map(f).sum::<f64>() / N_SETS as f64;
-        let v_ref = self.scenario.controllers.field.bus_voltage_ref_v;
-        let rpm = |s: usize| rad_s_to_rpm(x[omega_rm(s)]);
-        let p_turbine: f64 = (0..N_SETS).map(|k| o.turbine_torque[k] * x[omega_t(k)]).sum();
-        let p_generator: f64 = o.rectifier.iter().map(|r| r.p_generator).sum();
-        let p_inverter: f64 = o.motor.iter().map(|m| m.p_in).sum();
-        let p_motor: f64 = (0..N_SHAFTS).map(|s| o.motor[s].torque * x[omega_rm(s)]).sum();
-        let j = mean_shaft(&|s| o.propeller[s].advance_ratio);
         let sea = match &self.sea {
             Some(s) => {
                 let mut l = s.last;
@@ -582,54 +527,21 @@ impl Simulation {
             fuel += f;
             self.fuel_extrapolated |= ex;
         }
-        let row = [
-            self.t,
-            m_s_to_kn(speed_through_water(x)),
-            m_s_to_kn(self.speed_cmd),
-            mean_shaft(&rpm),
-            rpm(0),
-            rpm(1),
-            rad_s_to_rpm(self.ctl.shaft_ref),
-            mean_set(&|k| x[omega_t(k)] / p.turbine.rated_speed),
-            mean_set(&|k| self.ctl.held.throttle[k]),
-            mean_set(&|k| x[field_current(k)]),
-            mean_shaft(&|s| x[bus_voltage(s)] / v_ref),
-            mean_shaft(&|s| x[bus_voltage(s)]),
-            mean_shaft(&|s| o.motor_voltage[s] / p.motor.v_rated),
-            mean_shaft(&|s| self.ctl.held.slip[s]),
-            p_motor / ns / p.motor.p_rated,
-            mean_shaft(&|s| o.motor[s].torque) / 1e3,
-            o.thrust / 1e3,
-            j,
-            mean_shaft(&|s| p.open_water.efficiency(o.propeller[s].advance_ratio)),
-            p.beta_t * mean_shaft(&|s| self.ctl.held.beta_t[s]),
-            p.beta_q * mean_shaft(&|s| self.ctl.held.beta_q[s]),
-            x[X_POS],
-            x[Y_POS],
-            rad_to_deg(x[HEADING]),
-            rad_to_deg(self.ctl.psi_ref),
-            rad_to_deg(self.ctl.held.rudder),
-            rad_to_deg(libm::atan2(x[SWAY], x[SURGE].abs().max(1e-9))),
-            rad_to_deg(x[YAW_RATE]),
-            o.brake_power.iter().sum::<f64>(),
-            p_turbine,
-            p_generator,
-            p_inverter,
-            p_motor,
-            o.resistance * x[SURGE],
-            sea.wave_stern,
-            sea.hub,
-            self.h_over_r,
-            sea.heave,
-            rad_to_deg(sea.pitch),
-            rad_to_deg(sea.roll),
-            sea.sway,
-            rad_to_deg(sea.yaw),
-            -self.ctl.held.wave_fx,
-            self.ctl.held.wave_fy,
+        let rec = record::Recording {
+            t: self.t,
+            plant: &self.plant,
+            x,
+            out: o,
+            ctl: &self.ctl,
+            speed_cmd: self.speed_cmd,
+            v_ref: self.scenario.controllers.field.bus_voltage_ref_v,
+            sea,
+            h_over_r: self.h_over_r,
+            p_turbine: (0..N_SETS).map(|k| o.turbine_torque[k] * x[omega_t(k)]).sum(),
+            p_motor: (0..N_SHAFTS).map(|s| o.motor[s].torque * x[omega_rm(s)]).sum(),
             fuel,
-        ];
-        debug_assert_eq!(row.len(), SIGNALS.len());
+        };
+        let row = record::row(&rec);
         for (col, v) in self.trace.columns.iter_mut().zip(row) {
             col.push(v);
         }

@@ -15,40 +15,11 @@
 //! again every `rao_refresh_s` at the ship's speed and heading then.
 
 use crate::scenario::{Scenario, SeaKind};
-use crate::seakeeping::strip::Ship;
-use crate::seakeeping::tables::{bracket, RaoTable, SeakeepingGrid};
+use crate::seakeeping::tables::bracket;
 use crate::waves::{SeaSampling, WaveComponent, G};
 use num_complex::Complex64 as C;
 use std::f64::consts::PI;
-use std::sync::{Arc, Mutex, OnceLock};
-
-/// RAO tables of the DTMB 5415, computed once per grid and shared (Monte Carlo trials, repeated
-/// runs in the browser).
-pub fn rao_table(grid: &SeakeepingGrid) -> Result<Arc<RaoTable>, String> {
-    type Cache = Mutex<Vec<(SeakeepingGrid, Arc<RaoTable>)>>;
-    static CACHE: OnceLock<Cache> = OnceLock::new();
-    let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
-    if let Ok(c) = cache.lock() {
-        if let Some((_, t)) = c.iter().find(|(g, _)| g == grid) {
-            return Ok(t.clone());
-        }
-    }
-    let ship = dtmb5415();
-    let t = Arc::new(RaoTable::compute(ship, grid)?);
-    if let Ok(mut c) = cache.lock() {
-        if c.len() >= 4 {
-            c.remove(0);
-        }
-        c.push((*grid, t.clone()));
-    }
-    Ok(t)
-}
-
-/// The seakeeping hull (built once).
-pub fn dtmb5415() -> &'static Ship {
-    static SHIP: OnceLock<Ship> = OnceLock::new();
-    SHIP.get_or_init(Ship::dtmb5415)
-}
+use crate::seakeeping::cache::rao_table;
 
 /// One component with its RAO slice at its own frequency: [speed][heading] of
 /// (heave, pitch, roll, sway, yaw; F_add).

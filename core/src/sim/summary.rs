@@ -2,7 +2,8 @@
 //! final time, stage efficiencies (Table 5.7) and the energy books of the whole run.
 
 use super::plant::{Energy, N_ENERGY};
-use super::{Trace, SIGNALS};
+use super::Trace;
+use crate::signals::{Signal, SIGNALS};
 use crate::scenario::Scenario;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -97,7 +98,8 @@ impl Summary {
         warnings: Vec<String>,
     ) -> Summary {
         let mut signals = BTreeMap::new();
-        for (name, col) in SIGNALS.iter().zip(&trace.columns) {
+        for (info, col) in SIGNALS.iter().zip(&trace.columns) {
+            let name = info.name;
             if col.is_empty() {
                 continue;
             }
@@ -106,13 +108,14 @@ impl Summary {
             let mean = col.iter().sum::<f64>() / col.len() as f64;
             signals.insert(name.to_string(), TraceStats { final_: col[col.len() - 1], min, max, mean });
         }
-        let last = |n: &str| trace.column(n).and_then(|c| c.last().copied()).unwrap_or(0.0);
+        // Every run records its initial row, so a column is never empty here.
+        let last = |s: Signal| trace.get(s).last().copied().unwrap_or(f64::NAN);
         let inv = PowerInventory {
-            turbine: last("p_turbine_w"),
-            generator: last("p_generator_w"),
-            inverter: last("p_inverter_w"),
-            motor: last("p_motor_w"),
-            ship: last("p_ship_w"),
+            turbine: last(Signal::PTurbineW),
+            generator: last(Signal::PGeneratorW),
+            inverter: last(Signal::PInverterW),
+            motor: last(Signal::PMotorW),
+            ship: last(Signal::PShipW),
         };
         let e = |k: Energy| energy[k as usize];
         let losses = e(Energy::Friction)
