@@ -8,6 +8,9 @@
 //! balance across the rectifier, Re{3 (E_a i_s^* - R |i_s|^2)} = v_DC i_gDC, then holds exactly and
 //! fixes the generator's electrical power 3 Re{E_a i_s^*} (eq. 2.3).
 
+use crate::check_range;
+use crate::validate::Validator;
+use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// (3 sqrt(6) / pi): six-pulse bridge, phase rms to mean DC voltage (eq. 2.8).
@@ -79,6 +82,72 @@ impl DcLink {
     pub fn bus_voltage_rate(&self, i_rectifiers: f64, p_inverter: f64, v_c: f64) -> f64 {
         let i_inv = if v_c.abs() > 1e-9 { p_inverter / v_c } else { 0.0 };
         (i_rectifiers - i_inv) / self.capacitance
+    }
+}
+
+/// Rectifier, DC bus and inverter (eqs. 2.7-2.10, Table 5.4).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct DcLinkParams {
+    /// Bus capacitance C [F]. Table 5.4: 0.037.
+    pub capacitance_f: f64,
+    /// Notching resistance R_p between each rectifier and the bus [ohm]. Table 5.4: 0.05.
+    pub notching_resistance_ohm: f64,
+    /// Largest fundamental phase rms voltage the inverter can make, as a fraction of the bus
+    /// voltage [-]. Not given in the thesis; sqrt(2)/pi = 0.450, six-step operation, so that the
+    /// nominal 5618 V bus can drive the 4160 V motor at rated frequency with 5 % to spare.
+    /// This is the "dynamic saturation of motor voltage" of ch. 2.2.3.
+    pub inverter_voltage_ratio: f64,
+    /// Rectifier: "diode" (power flows only from the generators to the bus) or "reversible" (an
+    /// average model of a converter that also returns power to the generators, as ch. 5.2.2's
+    /// unbuffered braking needs to overspeed the turbines).
+    pub rectifier: RectifierKind,
+    /// Braking (dump) resistor on each bus, switched by a chopper [ohm]; 0 for none. Ch. 5.2.2's
+    /// "ideal power management". Our value for the braking preset: 1 ohm (31.6 MW at 5.62 kV).
+    pub brake_resistor_ohm: f64,
+    /// Bus voltage at which the chopper starts to conduct, per unit of the bus set point [-].
+    /// Our choice: 1.10, above the no-load voltage of the generators at the field current of full
+    /// power (1.08), so that the resistor takes the braking energy and not the generators' output;
+    /// it conducts fully 5 % higher.
+    pub brake_on_pu: f64,
+}
+
+impl Default for DcLinkParams {
+    fn default() -> Self {
+        DcLinkParams {
+            capacitance_f: 0.037,
+            notching_resistance_ohm: 0.05,
+            inverter_voltage_ratio: std::f64::consts::SQRT_2 / std::f64::consts::PI,
+            rectifier: RectifierKind::Diode,
+            brake_resistor_ohm: 0.0,
+            brake_on_pu: 1.10,
+        }
+    }
+}
+
+/// Rectifier average model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RectifierKind {
+    Diode,
+    Reversible,
+}
+
+/// The brake chopper's duty rises linearly from zero at `brake_on_pu` to full conduction this much
+/// higher (per unit of the bus set point). Our choice: 0.05, a proportional band narrow enough to hold
+/// the bus within 5 % above the threshold at full braking power, wide enough to avoid chattering
+/// at the 1 ms step.
+pub const BRAKE_FULL_ABOVE_ON_PU: f64 = 0.05;
+
+impl DcLinkParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.capacitance_f, 1.0e-4, 100.0);
+        check_range!(v, self.notching_resistance_ohm, 1.0e-4, 10.0);
+        check_range!(v, self.inverter_voltage_ratio, 0.1, 0.5);
+        if self.brake_resistor_ohm != 0.0 {
+            check_range!(v, self.brake_resistor_ohm, 0.01, 1.0e4);
+        }
+        check_range!(v, self.brake_on_pu, 1.0, 1.5);
     }
 }
 

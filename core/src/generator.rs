@@ -8,7 +8,9 @@
 //! needs i_f = 500 A, and the bus sits at 5.6 kV, a medium-voltage DC bus; the line-to-line reading
 //! would put the bus at 9.7 kV.
 
-use crate::scenario::{FieldControlParams, GeneratorParams};
+use crate::check_range;
+use crate::validate::Validator;
+use serde::{Deserialize, Serialize};
 use std::f64::consts::SQRT_2;
 
 /// Generator constants in SI.
@@ -106,6 +108,104 @@ impl FieldController {
             self.integral += self.ki * err * ts;
         }
         out
+    }
+}
+
+/// Synchronous generator and its field circuit (eqs. 2.2-2.4, Table 5.3).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct GeneratorParams {
+    /// Stator resistance R_sg [ohm]. Table 5.3: 2.27e-2.
+    pub stator_resistance_ohm: f64,
+    /// Stator inductance L_sg [H]. Table 5.3: 0.391 mH. Also the commutating inductance of the
+    /// rectifier (X_co = omega L_sg in eq. 2.8).
+    pub stator_inductance_h: f64,
+    /// Mutual inductance M_g [H]. Table 5.3: 18.0 mH.
+    pub mutual_inductance_h: f64,
+    /// Number of poles P_g [-]. Table 5.3: 2 (3600 rpm gives 60 Hz).
+    pub poles: u32,
+    /// Rated line-to-line rms voltage at rated speed [V]. Table 5.3 caption: 4160 V. Sets the
+    /// initial field current (about 500 A with E_a taken as phase rms, see generator.rs).
+    pub rated_voltage_ll_v: f64,
+    /// Field winding resistance R_fg [ohm]. Not given in the thesis; 0.25 ohm puts the no-load
+    /// field voltage at 125 V, usual for a 20-25 MVA machine.
+    pub field_resistance_ohm: f64,
+    /// Field winding inductance L_fg [H]. Not given in the thesis; 0.25 H gives a field time
+    /// constant of 1 s, the order of the transient constant T'd of machines of this size.
+    pub field_inductance_h: f64,
+    /// Field voltage ceiling as a multiple of the no-load field voltage [-]. Not given in the
+    /// thesis; 3, a common static-exciter ceiling.
+    pub field_ceiling_ratio: f64,
+    /// Constant part mu_1 of the friction torque Q_fric = mu_1 + mu_2 omega_t [N m]. Not given in
+    /// the thesis; 0 (all of the loss is taken as speed-proportional, see mu_2).
+    pub friction_constant_nm: f64,
+    /// Viscous part mu_2 [N m s/rad]. Not given in the thesis; 2.46, i.e. 350 kW of friction,
+    /// windage and (unmodelled) core loss at 3600 rpm. That constant loss is what Table 5.7's three
+    /// generator efficiencies imply (0.35 MW at 20, 25 and 30 knots within 0.03 MW).
+    pub friction_viscous_nm_s: f64,
+}
+
+impl Default for GeneratorParams {
+    fn default() -> Self {
+        GeneratorParams {
+            stator_resistance_ohm: 2.27e-2,
+            stator_inductance_h: 0.391e-3,
+            mutual_inductance_h: 18.0e-3,
+            poles: 2,
+            rated_voltage_ll_v: 4160.0,
+            field_resistance_ohm: 0.25,
+            field_inductance_h: 0.25,
+            field_ceiling_ratio: 3.0,
+            friction_constant_nm: 0.0,
+            friction_viscous_nm_s: 2.46,
+        }
+    }
+}
+
+/// PI control of the bus voltage through the field voltage (ch. 2.2.1).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct FieldControlParams {
+    /// Bus voltage set point [V]: the no-load output of the rectifier (3 sqrt(2)/pi) 4160 V =
+    /// 5618 V, the per-unit base of the bus voltage.
+    pub bus_voltage_ref_v: f64,
+    /// Proportional gain K_p,v [V of field voltage per V of bus error]. Ch. 5.2.1 baseline: 1e-4.
+    /// The thesis does not state the units; volts per volt is the reading under which its own
+    /// remark holds that this loop acts only "slightly".
+    pub kp: f64,
+    /// Integral gain K_i,v [V per V s]. Ch. 5.2.1 baseline: 5e-4.
+    pub ki: f64,
+}
+
+impl Default for FieldControlParams {
+    fn default() -> Self {
+        FieldControlParams { bus_voltage_ref_v: 5618.0, kp: 1.0e-4, ki: 5.0e-4 }
+    }
+}
+
+impl GeneratorParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.stator_resistance_ohm, 0.0, 10.0);
+        check_range!(v, self.stator_inductance_h, 0.0, 1.0);
+        check_range!(v, self.mutual_inductance_h, 1.0e-5, 10.0);
+        if self.poles % 2 != 0 {
+            v.fail("poles", self.poles, "must be even (2, 4, ...)");
+        }
+        check_range!(v, self.poles as u64, 2, 64);
+        check_range!(v, self.rated_voltage_ll_v, 100.0, 1.0e5);
+        check_range!(v, self.field_resistance_ohm, 1.0e-3, 100.0);
+        check_range!(v, self.field_inductance_h, 1.0e-3, 100.0);
+        check_range!(v, self.field_ceiling_ratio, 1.0, 10.0);
+        check_range!(v, self.friction_constant_nm, 0.0, 1.0e5);
+        check_range!(v, self.friction_viscous_nm_s, 0.0, 1.0e3);
+    }
+}
+
+impl FieldControlParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.bus_voltage_ref_v, 10.0, 1.0e5);
+        check_range!(v, self.kp, 0.0, 10.0);
+        check_range!(v, self.ki, 0.0, 10.0);
     }
 }
 

@@ -22,10 +22,12 @@ pub mod scenario;
 pub mod seakeeping;
 pub mod signals;
 pub mod sim;
+pub mod speed_control;
 pub mod stability;
 pub mod stats;
 pub mod surge;
 pub mod units;
+pub mod validate;
 pub mod waves;
 
 pub use scenario::Scenario;

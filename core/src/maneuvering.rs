@@ -16,6 +16,8 @@
 //!   default all six are dropped (`symmetric_hull = true`); `false` keeps eqs. 2.23-2.24 literally.
 //! - X_vvu, X_rru are the terms eq. 2.22 prints as X_vvv v^2 du and X_rrr r^2 du.
 
+use crate::check_range;
+use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 
 /// Table 2.3, non-dimensional, in units of 1e-5 (as printed).
@@ -218,6 +220,81 @@ impl Abkowitz {
 pub fn handover_weight(u: f64, lo: f64, hi: f64) -> f64 {
     let s = ((u - lo) / (hi - lo)).clamp(0.0, 1.0);
     s * s * (3.0 - 2.0 * s)
+}
+
+/// Hull model selection and the maneuvering model's data (ch. 2.4, Table 2.3).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct HullParams {
+    /// "surge" (default) or "maneuvering".
+    pub model: HullModelKind,
+    /// Abkowitz coefficients, non-dimensional x 1e-5 (Table 2.3, the 22-knot set).
+    pub abkowitz: AbkowitzCoefficients,
+    /// Speed about which the expansion was made, u0 [knots]. Ch. 2.4: 22.
+    pub linearization_speed_kn: f64,
+    /// Drop the straight-running side force and yaw moment (Y_0, N_0 and their Delta-u terms), as a
+    /// port-starboard symmetric hull must (see maneuvering.rs). Default true.
+    pub symmetric_hull: bool,
+    /// Below this speed surge follows the surge model alone [knots]. Our choice: 17. The Abkowitz
+    /// surge polynomial, fitted at 11 and 22 knots, turns propulsive near 11 knots.
+    pub handover_low_kn: f64,
+    /// Above this speed surge follows the Abkowitz model alone [knots]. Our choice: 21.
+    pub handover_high_kn: f64,
+}
+
+impl Default for HullParams {
+    fn default() -> Self {
+        HullParams {
+            model: HullModelKind::Surge,
+            abkowitz: AbkowitzCoefficients::default(),
+            linearization_speed_kn: 22.0,
+            symmetric_hull: true,
+            handover_low_kn: 17.0,
+            handover_high_kn: 21.0,
+        }
+    }
+}
+
+/// Which hull model moves the ship.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum HullModelKind {
+    /// Straight-line surge (eqs. 2.15-2.16), as ch. 5.1 uses for start-up.
+    Surge,
+    /// Abkowitz 3-DOF maneuvering (eqs. 2.17-2.25) with the rudder; in surge it hands over smoothly
+    /// to the surge model below `hull.handover_low_kn`.
+    Maneuvering,
+}
+
+impl HullParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.linearization_speed_kn, 1.0, 40.0);
+        check_range!(v, self.handover_low_kn, 0.0, 40.0);
+        check_range!(v, self.handover_high_kn, 0.0, 40.0);
+        if self.handover_high_kn <= self.handover_low_kn {
+            v.fail("handover_high_kn", self.handover_high_kn, format!("must be above {}", v.path("handover_low_kn")));
+        }
+        v.section("abkowitz", |v| self.abkowitz.validate(v));
+    }
+}
+
+impl AbkowitzCoefficients {
+    pub fn validate(&self, v: &mut Validator) {
+        if let Ok(serde_json::Value::Object(map)) = serde_json::to_value(self) {
+            for (name, x) in map {
+                v.range(&name, x.as_f64().unwrap_or(f64::NAN), -1.0e6, 1.0e6);
+            }
+        }
+        for (name, x) in [
+            ("xudot_minus_m", self.xudot_minus_m),
+            ("yvdot_minus_m", self.yvdot_minus_m),
+            ("nrdot_minus_iz", self.nrdot_minus_iz),
+        ] {
+            if x >= 0.0 {
+                v.fail(name, x, "must be negative (added mass less the mass)");
+            }
+        }
+    }
 }
 
 #[cfg(test)]

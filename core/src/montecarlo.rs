@@ -200,9 +200,8 @@ pub fn run_trial(sc: &Scenario, i: u64) -> Result<Partial, String> {
     p.ranges = vec![(i, i + 1)];
     // Signal names were checked when the scenario was validated; a name that is not a signal is
     // an error here, never an empty column.
-    let column = |name: &str| {
-        result.trace.column(name).ok_or_else(|| format!("monte_carlo: '{name}' is not a trace column"))
-    };
+    let column =
+        |name: &str| result.trace.column(name).ok_or_else(|| format!("monte_carlo: '{name}' is not a trace column"));
     for e in p.envelopes.iter_mut() {
         e.rows = column(&e.signal)?
             .iter()

@@ -10,8 +10,10 @@
 //! "electromechanical resistor" the same section describes), so the torque used here is
 //! Q_e = 3 |I_r|^2 R_r / (s omega_e / p) = p P_airgap / omega_e.
 
-use crate::scenario::MotorParams;
+use crate::check_range;
+use crate::validate::Validator;
 use num_complex::Complex64;
+use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// Motor constants in SI.
@@ -259,6 +261,103 @@ impl SlipController {
             out = if out >= 0.0 { self.offset.min(upper) } else { -self.offset.min(lower) };
         }
         out
+    }
+}
+
+/// 38 MW induction motor (eqs. 2.5-2.6, Table 2.1).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct MotorParams {
+    /// Stator resistance R_sm [ohm]. Table 2.1: 2.2 mohm.
+    pub stator_resistance_ohm: f64,
+    /// Stator leakage inductance L_sm [H]. Table 2.1: 0.198 mH.
+    pub stator_inductance_h: f64,
+    /// Rotor resistance R_rm [ohm]. Table 2.1: 3.4 mohm.
+    pub rotor_resistance_ohm: f64,
+    /// Rotor leakage inductance L_rm [H]. Table 2.1: 0.330 mH.
+    pub rotor_inductance_h: f64,
+    /// Magnetizing inductance L_m [H]. Table 2.1: 11.74 mH.
+    pub magnetizing_inductance_h: f64,
+    /// Pole pairs [-]. Table 2.1 gives P = 12 and calls it pole pairs, while ch. 2.2.2 writes
+    /// omega_r = (P_m/2) omega_rm as if P were poles. Twelve pole pairs make a 300 rpm machine at
+    /// 60 Hz whose peak torque (1.34 MN m) delivers 38 MW there; twelve poles would make a 600 rpm
+    /// machine, which contradicts the 300 rpm rating of ch. 5. So: 12 pole pairs.
+    pub pole_pairs: u32,
+    /// Rated line-to-line rms voltage [V]. Table 2.1: 4160.
+    pub rated_voltage_ll_v: f64,
+    /// Rated frequency [Hz]. Table 2.1: 60.
+    pub rated_frequency_hz: f64,
+    /// Rated shaft power [W]: 38 MW (ch. 2.2.2). The slip saturation keeps the motor under it.
+    pub rated_power_w: f64,
+    /// Efficiency eta_m of eq. 2.5 for friction, windage and stray loss [-]. Not given in the
+    /// thesis; 0.998, i.e. 0.2 % mechanical loss, usual for large low-speed machines. Applied so
+    /// that the loss is positive in both motoring and generating.
+    pub efficiency: f64,
+}
+
+impl Default for MotorParams {
+    fn default() -> Self {
+        MotorParams {
+            stator_resistance_ohm: 2.2e-3,
+            stator_inductance_h: 0.198e-3,
+            rotor_resistance_ohm: 3.4e-3,
+            rotor_inductance_h: 0.330e-3,
+            magnetizing_inductance_h: 11.74e-3,
+            pole_pairs: 12,
+            rated_voltage_ll_v: 4160.0,
+            rated_frequency_hz: 60.0,
+            rated_power_w: 38.0e6,
+            efficiency: 0.998,
+        }
+    }
+}
+
+/// Volts-per-hertz slip-speed PI on rotor speed error (ch. 2.2.4).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SlipControlParams {
+    /// Proportional gain [rad/s of slip per rad/s of electrical rotor speed error]. Not given in
+    /// the thesis; 0.1: near zero slip the motor torque is 430 kN m per rad/s of slip, so the
+    /// shaft speed loop closes near 2 rad/s with K_i below.
+    pub kp: f64,
+    /// Integral gain [rad/s of slip per rad of electrical rotor angle error]. Not given; 0.1.
+    pub ki: f64,
+    /// Allow negative slip, so the motor brakes as a generator (AC braking, ch. 5.2.2). Only
+    /// meaningful with a path for the returned power (brake resistor or reversible rectifier).
+    pub allow_braking: bool,
+    /// The "offset discontinuity" of ch. 5.2.2 [rad/s]: the slip command skips the band
+    /// (-offset, offset). The thesis needed it because its circuit is singular at zero slip; ours
+    /// (written in admittances) is regular there, so the default is 0; set it to reproduce the
+    /// thesis' scheme.
+    pub zero_slip_offset_rad_s: f64,
+}
+
+impl Default for SlipControlParams {
+    fn default() -> Self {
+        SlipControlParams { kp: 0.1, ki: 0.1, allow_braking: false, zero_slip_offset_rad_s: 0.0 }
+    }
+}
+
+impl MotorParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.stator_resistance_ohm, 0.0, 10.0);
+        check_range!(v, self.stator_inductance_h, 0.0, 1.0);
+        check_range!(v, self.rotor_resistance_ohm, 1.0e-6, 10.0);
+        check_range!(v, self.rotor_inductance_h, 0.0, 1.0);
+        check_range!(v, self.magnetizing_inductance_h, 1.0e-5, 10.0);
+        check_range!(v, self.pole_pairs as u64, 1, 64);
+        check_range!(v, self.rated_voltage_ll_v, 100.0, 1.0e5);
+        check_range!(v, self.rated_frequency_hz, 1.0, 1000.0);
+        check_range!(v, self.rated_power_w, 1.0e3, 1.0e9);
+        check_range!(v, self.efficiency, 0.5, 1.0);
+    }
+}
+
+impl SlipControlParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.kp, 0.0, 100.0);
+        check_range!(v, self.ki, 0.0, 100.0);
+        check_range!(v, self.zero_slip_offset_rad_s, 0.0, 1.0);
     }
 }
 

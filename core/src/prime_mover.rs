@@ -1,8 +1,10 @@
 //! LM2500 gas turbine (thesis ch. 2.1, eq. 2.1) and its discrete PI speed governor with
 //! throttle saturation and slew limit.
 
-use crate::scenario::{GovernorParams, TurbineParams};
+use crate::check_range;
 use crate::units::rpm_to_rad_s;
+use crate::validate::Validator;
+use serde::{Deserialize, Serialize};
 
 /// Turbine constants in SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -73,6 +75,80 @@ impl Governor {
         let step = self.slew * ts;
         self.throttle += (cmd - self.throttle).clamp(-step, step);
         self.throttle
+    }
+}
+
+/// GE LM2500 gas turbine, linear torque model (eq. 2.1, Table 5.2).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct TurbineParams {
+    /// Full-throttle locking torque Q_lock [N m]. Table 5.2: 123 kN m.
+    pub locking_torque_nm: f64,
+    /// Full-throttle no-load speed n_t,max [rpm]. Table 5.2: 6875.
+    pub no_load_speed_rpm: f64,
+    /// Governor set point n_t* [rpm]: 60 Hz, ch. 2.1 (3600 rpm for the two-pole generator).
+    pub rated_speed_rpm: f64,
+    /// Shaft inertia of turbine and generator rotor I_t [kg m^2]. Table 5.2: 400.
+    pub inertia_kg_m2: f64,
+    /// Rated power [W]: 21.5 MW (ch. 2.1). Per-unit base for turbine power.
+    pub rated_power_w: f64,
+}
+
+impl Default for TurbineParams {
+    fn default() -> Self {
+        TurbineParams {
+            locking_torque_nm: 123.0e3,
+            no_load_speed_rpm: 6875.0,
+            rated_speed_rpm: 3600.0,
+            inertia_kg_m2: 400.0,
+            rated_power_w: 21.5e6,
+        }
+    }
+}
+
+/// Discrete PI governor on turbine speed acting on the throttle (ch. 2.1).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct GovernorParams {
+    /// Proportional gain K_p,t [throttle fraction per per-unit speed error]. Not given in the
+    /// thesis; 10, which with K_i,t gives a critically damped loop near 2 rad/s (throttle moves the
+    /// per-unit speed at 0.39 /s per unit throttle at 3600 rpm).
+    pub kp: f64,
+    /// Integral gain K_i,t [throttle fraction per per-unit speed error per second]. Not given; 10.
+    pub ki: f64,
+    /// Throttle slew limit Delta_t [1/s]. Not given in the thesis; 0.1, i.e. zero to full fuel in
+    /// 10 s, a conservative fuel schedule against compressor surge.
+    pub slew_rate_per_s: f64,
+}
+
+impl Default for GovernorParams {
+    fn default() -> Self {
+        GovernorParams { kp: 10.0, ki: 10.0, slew_rate_per_s: 0.1 }
+    }
+}
+
+impl TurbineParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.locking_torque_nm, 1.0e3, 1.0e7);
+        check_range!(v, self.no_load_speed_rpm, 100.0, 1.0e5);
+        check_range!(v, self.rated_speed_rpm, 100.0, 1.0e5);
+        if self.rated_speed_rpm >= self.no_load_speed_rpm {
+            v.fail(
+                "rated_speed_rpm",
+                self.rated_speed_rpm,
+                format!("must be below {} (eq. 2.1 gives no torque there)", v.path("no_load_speed_rpm")),
+            );
+        }
+        check_range!(v, self.inertia_kg_m2, 1.0, 1.0e6);
+        check_range!(v, self.rated_power_w, 1.0e4, 1.0e9);
+    }
+}
+
+impl GovernorParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.kp, 0.0, 1.0e3);
+        check_range!(v, self.ki, 0.0, 1.0e3);
+        check_range!(v, self.slew_rate_per_s, 1.0e-3, 100.0);
     }
 }
 

@@ -4,7 +4,9 @@
 //! collapsed on load into cubics in J for the chosen P/D, Ae/A0 and Z, so each evaluation in the
 //! time loop costs a few multiplications.
 
-use crate::scenario::PropellerParams;
+use crate::check_range;
+use crate::validate::Validator;
+use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// The polynomial table, copied from shared/data with its source line.
@@ -168,52 +170,6 @@ impl OpenWater {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// B4-70, P/D = 1.0: the polynomial values quoted in shared/data/four_quadrant_b4_70.csv
-    /// (kT(0) = 0.455, kT(0.6) = 0.226, kQ(0) = 0.0675), three significant figures.
-    #[test]
-    fn b4_70_matches_published_values() {
-        let ow = OpenWater::b_series(1.0, 0.70, 4).unwrap();
-        assert!((ow.kt(0.0) - 0.455).abs() < 0.0015, "kT(0) = {}", ow.kt(0.0));
-        assert!((ow.kt(0.6) - 0.226).abs() < 0.0015, "kT(0.6) = {}", ow.kt(0.6));
-        assert!((ow.kq(0.0) - 0.0675).abs() < 0.00015, "kQ(0) = {}", ow.kq(0.0));
-        // Zero thrust near J = 1.0 to 1.1 for P/D = 1 (Kuiper 1992, B4-70 chart).
-        assert!(ow.j_max > 0.95 && ow.j_max < 1.15, "J0 = {}", ow.j_max);
-    }
-
-    /// Peak open-water efficiency of B4-70 at P/D = 1 is about 0.68-0.70 near J = 0.8
-    /// (Kuiper 1992 charts); tolerance 0.02.
-    #[test]
-    fn b4_70_peak_efficiency() {
-        let ow = OpenWater::b_series(1.0, 0.70, 4).unwrap();
-        let (mut best, mut jbest) = (0.0, 0.0);
-        for i in 0..1000 {
-            let j = i as f64 * ow.j_max / 1000.0;
-            if ow.efficiency(j) > best {
-                best = ow.efficiency(j);
-                jbest = j;
-            }
-        }
-        assert!((best - 0.69).abs() < 0.02, "eta0 max = {best} at J = {jbest}");
-        assert!(jbest > 0.7 && jbest < 0.95, "J at eta0 max = {jbest}");
-    }
-
-    #[test]
-    fn thrust_scales_with_n_squared_at_fixed_j() {
-        let ow = OpenWater::b_series(1.0, 0.75, 5).unwrap();
-        let ow_45 = Conditions::open_water(4.5, 1025.0);
-        let a = ow.load(2.0, 2.0 * 0.5 * 4.5, &ow_45);
-        let b = ow.load(4.0, 4.0 * 0.5 * 4.5, &ow_45);
-        assert!((b.thrust_n / a.thrust_n - 4.0).abs() < 1e-12);
-        assert!((b.torque_nm / a.torque_nm - 4.0).abs() < 1e-12);
-        let stopped = ow.load(0.0, 5.0, &ow_45);
-        assert_eq!(stopped.thrust_n, 0.0);
-    }
-}
-
 /// Four-quadrant open-water data (Fourier series in the hydrodynamic pitch angle).
 const FOUR_QUADRANT_CSV: &str = include_str!("../data/four_quadrant_b4_70.csv");
 
@@ -330,5 +286,119 @@ mod four_quadrant_tests {
         assert!(wm.thrust_n < 0.0 && wm.torque_nm < 0.0, "{wm:?}");
         let locked = fq.load(0.0, 5.0, &Conditions::open_water(4.0, 1025.0));
         assert!(locked.thrust_n < 0.0, "{locked:?}");
+    }
+}
+
+/// Wageningen B-series propeller, one per shaft (eqs. 2.11-2.13, Table 5.1).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct PropellerParams {
+    /// Open-water model: "b_series" (default) or "four_quadrant" (needed for braking).
+    pub model: PropellerModelKind,
+    /// Diameter D [m]. Table 5.1: 4.5.
+    pub diameter_m: f64,
+    /// Pitch ratio P/D [-]. Table 5.1: 1.0.
+    pub pitch_ratio: f64,
+    /// Expanded blade area ratio Ae/A0 [-]. Not given in the thesis; 0.75, typical of a five-bladed
+    /// destroyer propeller sized against cavitation at 30+ knots.
+    pub blade_area_ratio: f64,
+    /// Number of blades Z [-]. Not given in the thesis; 5, as on the DDG-51 class.
+    pub blades: u32,
+    /// Relative rotative efficiency eta_R [-] of eq. 2.11. Not given in the thesis; 0.98 from
+    /// Holtrop's twin-screw regression (0.9737 + 0.111 (C_P - 0.0225 lcb) - 0.06325 P/D with
+    /// C_P = 0.6, lcb = -1.5 %).
+    pub rotative_efficiency: f64,
+    /// Moment of inertia of one shaft line (propeller, shaft, motor rotor) [kg m^2].
+    /// Table 5.1: 1.33e5.
+    pub shaft_inertia_kg_m2: f64,
+    /// Thrust loss coefficient beta_T of eq. 2.13 held for the whole run [-]; 1 in deep calm water.
+    pub beta_t: f64,
+    /// Torque loss coefficient beta_Q of eq. 2.13 held for the whole run [-]; 1 in deep calm water.
+    pub beta_q: f64,
+}
+
+impl Default for PropellerParams {
+    fn default() -> Self {
+        PropellerParams {
+            model: PropellerModelKind::BSeries,
+            diameter_m: 4.5,
+            pitch_ratio: 1.0,
+            blade_area_ratio: 0.75,
+            blades: 5,
+            rotative_efficiency: 0.98,
+            shaft_inertia_kg_m2: 1.33e5,
+            beta_t: 1.0,
+            beta_q: 1.0,
+        }
+    }
+}
+
+/// Which open-water model the propellers follow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PropellerModelKind {
+    /// Wageningen B-series polynomials, first quadrant only (eqs. 2.11-2.13).
+    BSeries,
+    /// Four-quadrant B4-70 Fourier series (ch. 5.2.2): any sign of thrust, torque and speed.
+    FourQuadrant,
+}
+
+impl PropellerParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.diameter_m, 0.1, 15.0);
+        // Ranges of the Oosterveld & van Oossanen regression.
+        check_range!(v, self.pitch_ratio, 0.5, 1.4);
+        check_range!(v, self.blade_area_ratio, 0.3, 1.05);
+        check_range!(v, self.blades as u64, 2, 7);
+        check_range!(v, self.rotative_efficiency, 0.8, 1.2);
+        check_range!(v, self.shaft_inertia_kg_m2, 1.0, 1.0e8);
+        check_range!(v, self.beta_t, 0.0, 1.0);
+        check_range!(v, self.beta_q, 0.0, 1.0);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// B4-70, P/D = 1.0: the polynomial values quoted in shared/data/four_quadrant_b4_70.csv
+    /// (kT(0) = 0.455, kT(0.6) = 0.226, kQ(0) = 0.0675), three significant figures.
+    #[test]
+    fn b4_70_matches_published_values() {
+        let ow = OpenWater::b_series(1.0, 0.70, 4).unwrap();
+        assert!((ow.kt(0.0) - 0.455).abs() < 0.0015, "kT(0) = {}", ow.kt(0.0));
+        assert!((ow.kt(0.6) - 0.226).abs() < 0.0015, "kT(0.6) = {}", ow.kt(0.6));
+        assert!((ow.kq(0.0) - 0.0675).abs() < 0.00015, "kQ(0) = {}", ow.kq(0.0));
+        // Zero thrust near J = 1.0 to 1.1 for P/D = 1 (Kuiper 1992, B4-70 chart).
+        assert!(ow.j_max > 0.95 && ow.j_max < 1.15, "J0 = {}", ow.j_max);
+    }
+
+    /// Peak open-water efficiency of B4-70 at P/D = 1 is about 0.68-0.70 near J = 0.8
+    /// (Kuiper 1992 charts); tolerance 0.02.
+    #[test]
+    fn b4_70_peak_efficiency() {
+        let ow = OpenWater::b_series(1.0, 0.70, 4).unwrap();
+        let (mut best, mut jbest) = (0.0, 0.0);
+        for i in 0..1000 {
+            let j = i as f64 * ow.j_max / 1000.0;
+            if ow.efficiency(j) > best {
+                best = ow.efficiency(j);
+                jbest = j;
+            }
+        }
+        assert!((best - 0.69).abs() < 0.02, "eta0 max = {best} at J = {jbest}");
+        assert!(jbest > 0.7 && jbest < 0.95, "J at eta0 max = {jbest}");
+    }
+
+    #[test]
+    fn thrust_scales_with_n_squared_at_fixed_j() {
+        let ow = OpenWater::b_series(1.0, 0.75, 5).unwrap();
+        let ow_45 = Conditions::open_water(4.5, 1025.0);
+        let a = ow.load(2.0, 2.0 * 0.5 * 4.5, &ow_45);
+        let b = ow.load(4.0, 4.0 * 0.5 * 4.5, &ow_45);
+        assert!((b.thrust_n / a.thrust_n - 4.0).abs() < 1e-12);
+        assert!((b.torque_nm / a.torque_nm - 4.0).abs() < 1e-12);
+        let stopped = ow.load(0.0, 5.0, &ow_45);
+        assert_eq!(stopped.thrust_n, 0.0);
     }
 }

@@ -5,6 +5,8 @@
 //! print v + x_p r, which holds with x_p signed (negative aft); eq. 2.19's moment -x_p F_y takes x_p
 //! positive aft, which is our convention. A positive rudder angle delta turns the ship to port.
 
+use crate::check_range;
+use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 
 /// Rudder geometry and limits (Table 5.5).
@@ -134,6 +136,28 @@ impl Autopilot {
         let step = self.swing_rate * ts;
         self.delta += (cmd - self.delta).clamp(-step, step);
         self.delta
+    }
+}
+
+impl RudderParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.area_m2, 0.0, 500.0);
+        check_range!(v, self.x_p_m, 0.0, 500.0);
+        check_range!(v, self.lift_slope, 0.0, 10.0);
+        check_range!(v, self.drag_slope, 0.0, 5.0);
+        check_range!(v, self.max_angle_deg, 1.0, 45.0);
+        check_range!(v, self.swing_rate_rad_s, 0.001, 1.0);
+    }
+}
+
+impl AutopilotParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.kp, 0.0, 1.0e3);
+        check_range!(v, self.ki, 0.0, 1.0e3);
+        check_range!(v, self.kd, 0.0, 1.0e4);
+        check_range!(v, self.ka, 0.0, 1.0e5);
+        check_range!(v, self.max_turn_rate_nondim, 0.01, 2.0);
+        check_range!(v, self.turn_rate_deg_s, 0.01, 10.0);
     }
 }
 

@@ -1,6 +1,8 @@
 //! Ship surge in calm water (thesis ch. 2.3, eqs. 2.15-2.16).
 
-use crate::scenario::ShipParams;
+use crate::check_range;
+use crate::validate::Validator;
+use serde::{Deserialize, Serialize};
 
 /// Surge constants in SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -35,6 +37,57 @@ impl Surge {
     /// Eq. 2.12: advance speed V_a = u (1 - w) [m/s].
     pub fn advance_speed(&self, u: f64) -> f64 {
         u * (1.0 - self.wake)
+    }
+}
+
+/// Ship surge model (thesis eqs. 2.15-2.16, Table 5.1).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct ShipParams {
+    /// Displaced mass m [kg]. Table 5.1: 7e6.
+    pub mass_kg: f64,
+    /// Surge added mass m_a [kg]. Not given in the thesis; 5 % of the displaced mass, the usual
+    /// slender-hull value of -X_udot (Fossen 2011, ch. 6).
+    pub added_mass_kg: f64,
+    /// Wetted area A_w [m^2]. Table 5.1: 5200.
+    pub wetted_area_m2: f64,
+    /// Hull drag coefficient C_r [-] of eq. 2.15. Table 5.1: 3e-3.
+    pub drag_coeff: f64,
+    /// Thrust deduction t [-]. Table 5.1 (called "thrust coefficient" there): 0.1.
+    pub thrust_deduction: f64,
+    /// Wake fraction w [-] of eq. 2.12. Table 5.1: 0.1.
+    pub wake_fraction: f64,
+    /// Sea water density rho [kg/m^3]. Table 5.1: 1025.
+    pub water_density_kg_m3: f64,
+    /// Ship length L [m]. Table 5.5: 180 (used by the maneuvering model).
+    pub length_m: f64,
+}
+
+impl Default for ShipParams {
+    fn default() -> Self {
+        ShipParams {
+            mass_kg: 7.0e6,
+            added_mass_kg: 3.5e5,
+            wetted_area_m2: 5200.0,
+            drag_coeff: 3.0e-3,
+            thrust_deduction: 0.1,
+            wake_fraction: 0.1,
+            water_density_kg_m3: 1025.0,
+            length_m: 180.0,
+        }
+    }
+}
+
+impl ShipParams {
+    pub fn validate(&self, v: &mut Validator) {
+        check_range!(v, self.mass_kg, 1.0e4, 1.0e9);
+        check_range!(v, self.added_mass_kg, 0.0, 1.0e9);
+        check_range!(v, self.wetted_area_m2, 1.0, 1.0e5);
+        check_range!(v, self.drag_coeff, 1.0e-5, 0.1);
+        check_range!(v, self.thrust_deduction, 0.0, 0.5);
+        check_range!(v, self.wake_fraction, 0.0, 0.6);
+        check_range!(v, self.water_density_kg_m3, 900.0, 1100.0);
+        check_range!(v, self.length_m, 5.0, 500.0);
     }
 }
 

@@ -8,8 +8,11 @@
 //! ship's heading psi: x north, y east); z_i(x, y, t) = a_i cos(w_i t - k_i (x cos mu_i + y sin mu_i)
 //! + gamma_i) with deep-water wave number k_i = w_i^2 / g.
 
+use crate::check_range;
+use crate::validate::Validator;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// Gravity [m/s^2].
@@ -133,6 +136,159 @@ pub fn elevation(components: &[WaveComponent], x: f64, y: f64, t: f64) -> f64 {
         .sum()
 }
 
+/// Slowly varying second-order force (eq. 2.60) with Newman's approximation
+/// F_add(w_i, w_j) = sqrt(F_i F_j) sign(F_i), which turns the double sum over component pairs into
+/// the squared magnitude of one single sum:
+/// sum_i sum_j a_i a_j sqrt(F_i F_j) cos(theta_i - theta_j) = |sum_i a_i sqrt(F_i) e^(i theta_i)|^2,
+/// O(N_s) per step instead of O(N_s^2). `f_unit[i]` is the mean force per amplitude squared of
+/// component i (N/m^2, one sign for the whole set) and `theta[i]` its instantaneous phase
+/// (encounter frequency times time plus phase and position lag).
+pub fn slow_drift_newman(amplitudes: &[f64], f_unit: &[f64], theta: &[f64]) -> f64 {
+    let sign = if f_unit.iter().sum::<f64>() < 0.0 { -1.0 } else { 1.0 };
+    let (mut c, mut s) = (0.0, 0.0);
+    for i in 0..amplitudes.len() {
+        let w = amplitudes[i] * (f_unit[i] * sign).max(0.0).sqrt();
+        c += w * libm::cos(theta[i]);
+        s += w * libm::sin(theta[i]);
+    }
+    sign * (c * c + s * s)
+}
+
+/// The same force by the direct double sum (the O(N_s^2) reference of the tests), with a free
+/// choice of the pair transfer function `pair(i, j)`.
+pub fn slow_drift_direct(amplitudes: &[f64], theta: &[f64], pair: &dyn Fn(usize, usize) -> f64) -> f64 {
+    let n = amplitudes.len();
+    let mut total = 0.0;
+    for i in 0..n {
+        for j in 0..n {
+            total += amplitudes[i] * amplitudes[j] * pair(i, j) * libm::cos(theta[i] - theta[j]);
+        }
+    }
+    total
+}
+
+#[cfg(test)]
+mod drift_tests {
+    use super::*;
+
+    /// Newman's factorised sum equals the direct double sum with the same pair function to 1e-10,
+    /// and its mean over time equals sum a_i^2 F_i (the first term of eq. 2.60).
+    #[test]
+    fn newman_factorisation_matches_double_sum() {
+        let (wn, h) = sea_state(6).unwrap();
+        let comps = SeaSampling::new(h, wn, 0.0).sample(11);
+        let a: Vec<f64> = comps.iter().map(|c| c.amplitude).collect();
+        // A smooth added-resistance curve per amplitude squared [N/m^2].
+        let f: Vec<f64> =
+            comps.iter().map(|c| -2.0e4 * (c.omega / wn).powi(2) * (-(c.omega / wn - 1.0).powi(2)).exp()).collect();
+        let mut mean = 0.0;
+        let steps = 4000;
+        for k in 0..steps {
+            let t = k as f64 * 0.5;
+            let theta: Vec<f64> = comps.iter().map(|c| c.omega * t + c.phase).collect();
+            let fast = slow_drift_newman(&a, &f, &theta);
+            if k % 400 == 0 {
+                let direct = slow_drift_direct(&a, &theta, &|i, j| -(f[i] * f[j]).sqrt());
+                assert!((fast - direct).abs() < 1e-10 * direct.abs().max(1.0), "{fast} vs {direct}");
+            }
+            mean += fast / steps as f64;
+        }
+        let first_term: f64 = a.iter().zip(&f).map(|(a, f)| a * a * f).sum();
+        assert!((mean / first_term - 1.0).abs() < 0.1, "time mean {mean} vs {first_term}");
+    }
+}
+
+/// The sea (thesis ch. 2.5.4). Directions are where the waves come FROM, in the earth frame of the
+/// ship's heading (0 = north): a ship heading 0 deg in waves from 0 deg meets head seas.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SeaParams {
+    pub kind: SeaKind,
+    /// Table 2.4 sea state (2 to 6), used unless `h_sig_m` and `omega_n_rad_s` are both set.
+    pub sea_state: u32,
+    /// Significant wave height H_1/3 [m] and modal frequency [rad/s] (0: from the sea state).
+    pub h_sig_m: f64,
+    pub omega_n_rad_s: f64,
+    /// Mean direction the waves come from [deg].
+    pub from_deg: f64,
+    /// Number of components N_s (ch. 2.5.4: 100 to 500).
+    pub components: u32,
+    /// Spectrum bounds [rad/s] (0: 0.6 and 4 times the modal frequency, 99.5 % of the energy).
+    pub omega_min_rad_s: f64,
+    pub omega_max_rad_s: f64,
+    /// Exponent h of the cos^h spreading about the mean direction (0: long-crested).
+    pub spreading: f64,
+    /// Regular sea: amplitude [m] and frequency [rad/s].
+    pub amplitude_m: f64,
+    pub omega_rad_s: f64,
+}
+
+impl Default for SeaParams {
+    fn default() -> Self {
+        SeaParams {
+            kind: SeaKind::Calm,
+            sea_state: 6,
+            h_sig_m: 0.0,
+            omega_n_rad_s: 0.0,
+            from_deg: 0.0,
+            components: 200,
+            omega_min_rad_s: 0.0,
+            omega_max_rad_s: 0.0,
+            spreading: 2.0,
+            amplitude_m: 0.6096,
+            omega_rad_s: 0.6,
+        }
+    }
+}
+
+impl SeaParams {
+    /// (H_1/3 [m], modal frequency [rad/s]) of the random sea.
+    pub fn spectrum(&self) -> (f64, f64) {
+        if self.h_sig_m > 0.0 && self.omega_n_rad_s > 0.0 {
+            (self.h_sig_m, self.omega_n_rad_s)
+        } else {
+            let (w, h) = crate::waves::sea_state(self.sea_state).unwrap_or((0.507, 5.0));
+            (h, w)
+        }
+    }
+}
+
+/// Which sea.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SeaKind {
+    Calm,
+    /// Bretschneider spectrum (eq. 2.58) sampled into components (ch. 2.5.4).
+    Random,
+    /// One regular wave (ch. 5.2.4).
+    Regular,
+}
+
+impl SeaParams {
+    /// Checks the sea (only what a non-calm sea uses).
+    pub fn validate(&self, v: &mut Validator) {
+        if self.kind == SeaKind::Calm {
+            return;
+        }
+        check_range!(v, self.sea_state as u64, 2, 6);
+        if self.h_sig_m != 0.0 || self.omega_n_rad_s != 0.0 {
+            check_range!(v, self.h_sig_m, 0.01, 20.0);
+            check_range!(v, self.omega_n_rad_s, 0.2, 3.0);
+        }
+        check_range!(v, self.from_deg, -3600.0, 3600.0);
+        check_range!(v, self.components as u64, 1, 2000);
+        if self.omega_min_rad_s != 0.0 || self.omega_max_rad_s != 0.0 {
+            check_range!(v, self.omega_min_rad_s, 0.05, 5.0);
+            check_range!(v, self.omega_max_rad_s, self.omega_min_rad_s.max(0.05) + 0.01, 6.0);
+        }
+        check_range!(v, self.spreading, 0.0, 100.0);
+        if self.kind == SeaKind::Regular {
+            check_range!(v, self.amplitude_m, 0.0, 10.0);
+            check_range!(v, self.omega_rad_s, 0.1, 5.0);
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -203,67 +359,5 @@ mod tests {
         let s = SeaSampling::new(5.0, 0.5, 0.0);
         assert_eq!(s.sample(42), s.sample(42));
         assert_ne!(s.sample(42), s.sample(43));
-    }
-}
-
-/// Slowly varying second-order force (eq. 2.60) with Newman's approximation
-/// F_add(w_i, w_j) = sqrt(F_i F_j) sign(F_i), which turns the double sum over component pairs into
-/// the squared magnitude of one single sum:
-/// sum_i sum_j a_i a_j sqrt(F_i F_j) cos(theta_i - theta_j) = |sum_i a_i sqrt(F_i) e^(i theta_i)|^2,
-/// O(N_s) per step instead of O(N_s^2). `f_unit[i]` is the mean force per amplitude squared of
-/// component i (N/m^2, one sign for the whole set) and `theta[i]` its instantaneous phase
-/// (encounter frequency times time plus phase and position lag).
-pub fn slow_drift_newman(amplitudes: &[f64], f_unit: &[f64], theta: &[f64]) -> f64 {
-    let sign = if f_unit.iter().sum::<f64>() < 0.0 { -1.0 } else { 1.0 };
-    let (mut c, mut s) = (0.0, 0.0);
-    for i in 0..amplitudes.len() {
-        let w = amplitudes[i] * (f_unit[i] * sign).max(0.0).sqrt();
-        c += w * libm::cos(theta[i]);
-        s += w * libm::sin(theta[i]);
-    }
-    sign * (c * c + s * s)
-}
-
-/// The same force by the direct double sum (the O(N_s^2) reference of the tests), with a free
-/// choice of the pair transfer function `pair(i, j)`.
-pub fn slow_drift_direct(amplitudes: &[f64], theta: &[f64], pair: &dyn Fn(usize, usize) -> f64) -> f64 {
-    let n = amplitudes.len();
-    let mut total = 0.0;
-    for i in 0..n {
-        for j in 0..n {
-            total += amplitudes[i] * amplitudes[j] * pair(i, j) * libm::cos(theta[i] - theta[j]);
-        }
-    }
-    total
-}
-
-#[cfg(test)]
-mod drift_tests {
-    use super::*;
-
-    /// Newman's factorised sum equals the direct double sum with the same pair function to 1e-10,
-    /// and its mean over time equals sum a_i^2 F_i (the first term of eq. 2.60).
-    #[test]
-    fn newman_factorisation_matches_double_sum() {
-        let (wn, h) = sea_state(6).unwrap();
-        let comps = SeaSampling::new(h, wn, 0.0).sample(11);
-        let a: Vec<f64> = comps.iter().map(|c| c.amplitude).collect();
-        // A smooth added-resistance curve per amplitude squared [N/m^2].
-        let f: Vec<f64> =
-            comps.iter().map(|c| -2.0e4 * (c.omega / wn).powi(2) * (-(c.omega / wn - 1.0).powi(2)).exp()).collect();
-        let mut mean = 0.0;
-        let steps = 4000;
-        for k in 0..steps {
-            let t = k as f64 * 0.5;
-            let theta: Vec<f64> = comps.iter().map(|c| c.omega * t + c.phase).collect();
-            let fast = slow_drift_newman(&a, &f, &theta);
-            if k % 400 == 0 {
-                let direct = slow_drift_direct(&a, &theta, &|i, j| -(f[i] * f[j]).sqrt());
-                assert!((fast - direct).abs() < 1e-10 * direct.abs().max(1.0), "{fast} vs {direct}");
-            }
-            mean += fast / steps as f64;
-        }
-        let first_term: f64 = a.iter().zip(&f).map(|(a, f)| a * a * f).sum();
-        assert!((mean / first_term - 1.0).abs() < 0.1, "time mean {mean} vs {first_term}");
     }
 }

@@ -32,4 +32,3 @@ pub fn dtmb5415() -> &'static Ship {
     static SHIP: OnceLock<Ship> = OnceLock::new();
     SHIP.get_or_init(Ship::dtmb5415)
 }
-

@@ -5,6 +5,7 @@
 pub mod cache;
 pub mod complex;
 pub mod conformal;
+pub mod params;
 pub mod radiation;
 pub mod roll_damping;
 pub mod strip;

@@ -15,11 +15,11 @@
 //! again every `rao_refresh_s` at the ship's speed and heading then.
 
 use crate::scenario::{Scenario, SeaKind};
+use crate::seakeeping::cache::rao_table;
 use crate::seakeeping::tables::bracket;
 use crate::waves::{SeaSampling, WaveComponent, G};
 use num_complex::Complex64 as C;
 use std::f64::consts::PI;
-use crate::seakeeping::cache::rao_table;
 
 /// One component with its RAO slice at its own frequency: [speed][heading] of
 /// (heave, pitch, roll, sway, yaw; F_add).

@@ -3,8 +3,8 @@
 
 use super::plant::{Energy, N_ENERGY};
 use super::Trace;
-use crate::signals::{Signal, SIGNALS};
 use crate::scenario::Scenario;
+use crate::signals::{Signal, SIGNALS};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
