@@ -94,6 +94,8 @@ run_tests() {
   log="$(mktemp)"
   say "rustfmt check"
   cargo fmt --all -- --check
+  say "no import cycle between core's modules"
+  python3 scripts/check_module_cycles.py
   say "clippy (warnings are errors)"
   cargo clippy --workspace --all-targets --release -- -D warnings
   say "native tests (release)"

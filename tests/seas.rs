@@ -218,7 +218,7 @@ fn quarter_turns_show_added_resistance_and_drift() {
 #[test]
 fn fuel_in_regular_seas() {
     let sc = preset("fuel-regular-seas").unwrap();
-    let rows = aes_core::fuel::fuel_study(&sc, &[0.6]).unwrap();
+    let rows = aes_core::fuel_study::run(&sc, &[0.6]).unwrap();
     let head: Vec<f64> = rows.iter().filter(|r| r.heading == "head").map(|r| r.fuel_power_w).collect();
     let bow: Vec<f64> = rows.iter().filter(|r| r.heading == "bow").map(|r| r.fuel_power_w).collect();
     println!("fuel power at 0.6 rad/s, 1-5 ft: head {head:?}, bow {bow:?}");

@@ -484,7 +484,7 @@ fn real_main() -> Result<(), String> {
                     return Err(format!("--omega {w}: must be from 0.1 to 5 rad/s"));
                 }
             }
-            let rows = aes_core::fuel::fuel_study(&sc, &omegas)?;
+            let rows = aes_core::fuel_study::run(&sc, &omegas)?;
             let extrapolated = rows.iter().any(|r| r.extrapolated);
             let out = serde_json::json!({
                 "speed_kn": sc.commands.first().and_then(|c| c.speed_kn),

@@ -6,6 +6,7 @@
 
 pub mod dc_link;
 pub mod fuel;
+pub mod fuel_study;
 pub mod generator;
 pub mod hull_sections;
 pub mod maneuvering;

@@ -221,6 +221,6 @@ pub fn fuel_study(json: &str, omegas: Vec<f64>) -> Result<String, JsError> {
     if omegas.is_empty() || omegas.len() > 200 || omegas.iter().any(|w| !(w.is_finite() && (0.1..=5.0).contains(w))) {
         return Err(JsError::new("fuel study: 1 to 200 frequencies from 0.1 to 5 rad/s"));
     }
-    let rows = aes_core::fuel::fuel_study(&sc, &omegas).map_err(|e| JsError::new(&e))?;
+    let rows = aes_core::fuel_study::run(&sc, &omegas).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
 }
