@@ -91,8 +91,7 @@ export function showMonteCarlo(box, s, signals, constants) {
     const tr = (s.traces || [])[0];
     const c = tr && tr.columns.find(([n]) => n === sig);
     if (c) series.push({ data: c[1].slice(0, env.t_s.length), label: `trial ${tr.trial}`, color: '#c0392b' });
-    const what = signals.labelWithUnit(sig, constants);
-    box.line(`${what}: envelope over ${s.trials} trials (Fig. 5-20)`, { data: env.t_s, label: time }, series, [{ scale: 'y', label: what }]);
+    box.line(`${signals.labelWithUnit(sig, constants)}: envelope over ${s.trials} trials (Fig. 5-20)`, { data: env.t_s, label: time }, series, [{ scale: 'y', label: signals.axisLabel(sig, constants) }]);
   }
   const ht = s.histogram_at_t;
   if (ht.n > 0) box.histogram(`${signals.labelWithUnit(ht.signal, constants)} at t = ${ht.t_s} s (Fig. 5-21), skewness ${fmt(ht.skewness, 3)}`, ht.histogram, signals.labelWithUnit(ht.signal, constants));
@@ -104,10 +103,9 @@ export function showMonteCarlo(box, s, signals, constants) {
   }
   if (s.onset && s.onset.t_s.length > 1) {
     const o = s.onset;
-    const what = signals.labelWithUnit(MC.onsetSignal, constants);
-    box.line(`${what} after the onset of a surface effect (Fig. 5-25)`, { data: o.t_s, label: 'time after onset [s]' },
+    box.line(`${signals.labelWithUnit(MC.onsetSignal, constants)} after the onset of a surface effect (Fig. 5-25)`, { data: o.t_s, label: 'time after onset [s]' },
       [{ data: o.mean, label: 'mean', color: '#0b5cad' }, { data: o.plus_2sigma, label: '+2 sigma', color: '#85c1e9' }, { data: o.min, label: 'min', color: '#999' }],
-      [{ scale: 'y', label: what }]);
+      [{ scale: 'y', label: signals.axisLabel(MC.onsetSignal, constants) }]);
   }
   const pg = s.periodogram;
   if (pg.freq_hz.length > 2) {
@@ -115,8 +113,8 @@ export function showMonteCarlo(box, s, signals, constants) {
     const n = k > 0 ? k : pg.freq_hz.length;
     const pos = (v) => v.slice(1, n).map((x) => Math.max(x, 1e-9));
     const unit = pg.unit.replace('^2', '²');
-    box.line(`Periodogram of motor power [${unit}] (Welch, Fig. 5-23)`, { data: pg.freq_hz.slice(1, n), label: 'frequency [Hz]' },
+    box.line(`Periodogram of one motor's power [${unit}] (Welch, Fig. 5-23)`, { data: pg.freq_hz.slice(1, n), label: 'frequency [Hz]' },
       [{ data: pos(pg.mean), label: 'mean', color: '#0b5cad' }, { data: pos(pg.min), label: 'min', color: '#999' }, { data: pos(pg.max), label: 'max', color: '#c0392b' }],
-      [{ scale: 'y', label: unit }], { scales: { y: { distr: 3 } } });
+      [{ scale: 'y', label: `[${unit}]` }], { scales: { y: { distr: 3 } } });
   }
 }

@@ -7,6 +7,7 @@ import { quantity, withPrefix } from './units.js';
 import { REQUEST } from './protocol.js';
 
 const HEIGHT = 220;
+const TRACK_MARGIN = 1.1; // the track fills 1/1.1 of the picture
 
 // A box of plots. clear() starts a new generation: plots that arrive late for an older one
 // (after an asynchronous request) are dropped.
@@ -104,10 +105,12 @@ function runPlot(box, spec, cols, signals, constants) {
   const series = [];
   for (const [unit, g] of groups) {
     const one = g.bases.size === 1 && g.series.every((s) => s.base);
-    axes.push({ scale: 'y:' + unit, label: one ? `pu of ${[...g.bases][0]}` : unit });
+    // "[kn]", "[pu of 38 MW]"; a dimensionless axis names its quantities: "h/R [-]".
+    const label = one ? `pu of ${[...g.bases][0]}` : unit;
+    axes.push({ scale: 'y:' + unit, unit: label, label: unit === '-' ? `${g.series.map((s) => s.label).join(', ')} [-]` : `[${label}]` });
     for (const { base, ...s } of g.series) series.push(base && !one ? { ...s, label: `${s.label} (pu of ${base})` } : s);
   }
-  let title = `${spec.title} [${axes.map((a) => a.label).join('; ')}]`;
+  let title = `${spec.title} [${axes.map((a) => a.unit).join('; ')}]`;
   let bands;
   if (spec.hOverR) {
     const scale = axes[0].scale;
@@ -142,7 +145,7 @@ function drawTrack(cv, cols, unit) {
   const { g, w, h } = sizedCanvas(cv, 320);
   const xs = cols.y_m, ys = cols.x_m; // east to the right, north up
   const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
-  const span = Math.max(x1 - x0, y1 - y0, TRACK_MIN_SPAN_M) * 1.1;
+  const span = Math.max(x1 - x0, y1 - y0, TRACK_MIN_SPAN_M) * TRACK_MARGIN;
   const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
   const s = Math.min(w, h) / span;
   const px = (x) => w / 2 + (x - cx) * s, py = (y) => h / 2 - (y - cy) * s;
@@ -165,7 +168,7 @@ function drawTrack(cv, cols, unit) {
     g.fillText(`${t[i].toFixed(0)} s`, X + 5, Y - 5);
   }
   g.fillStyle = '#4a4a4a';
-  g.fillText(`${(span / 1.1).toFixed(0)} ${unit} across`, 8, h - 8);
+  g.fillText(`${(span / TRACK_MARGIN).toFixed(0)} ${unit} across`, 8, h - 8);
 }
 
 // After a run in waves: the hull's RAOs at the speed ordered at the end of the run, in head and
@@ -197,7 +200,7 @@ export function drawSeaExtras(box, client, scenario, cols, constants, onError) {
       }));
       const range = amplitudes.length ? `${amplitudes[0]} to ${amplitudes[amplitudes.length - 1]} ft` : 'no amplitudes';
       box.line(`Fuel power of one prime mover [${unit}], ${heading} seas, ${range} (Fig. 5-12)`,
-        { data: FUEL_OMEGAS, label: 'wave frequency [rad/s]' }, series, [{ scale: 'y', label: unit }], { generation });
+        { data: FUEL_OMEGAS, label: 'wave frequency [rad/s]' }, series, [{ scale: 'y', label: `[${unit}]` }], { generation });
     }
   }, (e) => { if (!e.cancelled) onError(e); });
 }

@@ -31,11 +31,19 @@ export class Signals {
     return quantity(constants[b.constant], b.unit);
   }
 
-  // "label [unit]", per unit with its base: "motor power [pu of 38 MW]".
-  labelWithUnit(name, constants) {
+  // The unit as shown: "kn", per unit with its base: "pu of 38 MW".
+  unitText(name, constants) {
     const base = this.puBase(name, constants);
-    const { unit } = this.display(name);
-    return `${this.label(name)} [${base ? `pu of ${base}` : unit}]`;
+    return base ? `pu of ${base}` : this.display(name).unit;
+  }
+
+  // "label [unit]": "motor power [pu of 38 MW]".
+  labelWithUnit(name, constants) { return `${this.label(name)} [${this.unitText(name, constants)}]`; }
+
+  // A y-axis label (short: the title says what): "[pu of 38 MW]", dimensionless "h/R [-]".
+  axisLabel(name, constants) {
+    const unit = this.unitText(name, constants);
+    return unit === '-' ? `${this.label(name)} [-]` : `[${unit}]`;
   }
 }
 
