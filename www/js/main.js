@@ -85,7 +85,7 @@ function failed(e) {
   if (e.cancelled) return;
   setPhase('idle');
   status(e.message, true);
-  form.markErrors(e.fields);
+  form.markErrors(e.fields || []);
 }
 
 async function run() {
