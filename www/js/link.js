@@ -1,0 +1,90 @@
+// Share links: #v=1&preset=NAME&d=BASE64URL(JSON of what differs from the preset). Reading a link
+// refuses, with a reason a person can act on, anything too long, too deep, damaged, from a newer
+// page or naming an unknown study. Pure functions: no DOM, no worker (the caller validates).
+
+export const LINK_VERSION = 1;
+export const MAX_LINK_CHARS = 16000;
+export const MAX_LINK_DEPTH = 12;
+
+function clone(x) { return JSON.parse(JSON.stringify(x)); }
+const isObject = (x) => x && typeof x === 'object' && !Array.isArray(x);
+
+// What differs in `cur` from `base` (undefined when nothing does); arrays are taken whole.
+export function diff(base, cur) {
+  if (JSON.stringify(base) === JSON.stringify(cur)) return undefined;
+  if (isObject(base) && isObject(cur)) {
+    const out = {};
+    for (const k of Object.keys(cur)) {
+      const d = diff(base[k], cur[k]);
+      if (d !== undefined) out[k] = d;
+    }
+    return Object.keys(out).length ? out : undefined;
+  }
+  return cur;
+}
+
+export function merge(base, d) {
+  if (isObject(d) && isObject(base)) {
+    const out = clone(base);
+    for (const k of Object.keys(d)) out[k] = merge(base[k], d[k]);
+    return out;
+  }
+  return d;
+}
+
+// Nesting depth of JSON text, counted without parsing it (a hostile link cannot blow the stack).
+export function depth(text) {
+  let d = 0, max = 0, inStr = false, esc = false;
+  for (const ch of text) {
+    if (inStr) { if (esc) esc = false; else if (ch === '\\') esc = true; else if (ch === '"') inStr = false; continue; }
+    if (ch === '"') inStr = true; else if (ch === '{' || ch === '[') { d++; max = Math.max(max, d); } else if (ch === '}' || ch === ']') d--;
+  }
+  return max;
+}
+
+export function b64urlEncode(s) {
+  const bytes = new TextEncoder().encode(s);
+  let bin = '';
+  for (const b of bytes) bin += String.fromCharCode(b);
+  return btoa(bin).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+export function b64urlDecode(s) {
+  if (!/^[A-Za-z0-9_-]*$/.test(s)) throw new Error('the scenario part holds characters a link never has');
+  const bin = atob(s.replace(/-/g, '+').replace(/_/g, '/'));
+  return new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(bin, (c) => c.charCodeAt(0)));
+}
+
+// The hash of a link to `scenario`, edited from preset `name` (whose scenario is `preset`).
+export function linkHash(name, preset, scenario) {
+  const d = diff(preset, scenario);
+  let hash = `#v=${LINK_VERSION}&preset=${encodeURIComponent(name)}`;
+  if (d !== undefined) hash += `&d=${b64urlEncode(JSON.stringify(d))}`;
+  return hash;
+}
+
+// Reads a hash (without '#'): null when there is none, {refused: reason} when it cannot be used,
+// else {name, scenario} (not yet validated). `presets` maps names to scenario JSON text.
+export function readLink(hash, presets) {
+  if (!hash) return null;
+  const refuse = (reason) => ({ refused: reason });
+  if (hash.length > MAX_LINK_CHARS) return refuse(`it is ${hash.length} characters long (at most ${MAX_LINK_CHARS})`);
+  const params = new URLSearchParams(hash);
+  const v = Number(params.get('v'));
+  if (!Number.isInteger(v) || v < 1) return refuse('it has no version number');
+  if (v > LINK_VERSION) return refuse(`it was made by a newer version of aes-sim (link version ${v}, this page reads ${LINK_VERSION})`);
+  const name = params.get('preset');
+  if (!name || !Object.prototype.hasOwnProperty.call(presets, name)) return refuse(`it names an unknown study "${String(name).slice(0, 40)}"`);
+  let scenario = JSON.parse(presets[name]);
+  const d = params.get('d');
+  if (d) {
+    let text;
+    try { text = b64urlDecode(d); } catch (e) { return refuse(`its scenario part is damaged (${e.message})`); }
+    if (depth(text) > MAX_LINK_DEPTH) return refuse('its scenario is nested too deeply');
+    let parsed;
+    try { parsed = JSON.parse(text); } catch (_) { return refuse('its scenario part is not valid JSON (truncated?)'); }
+    if (!isObject(parsed)) return refuse('its scenario part is not an object');
+    scenario = merge(scenario, parsed);
+  }
+  return { name, scenario };
+}

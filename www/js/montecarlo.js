@@ -1,0 +1,120 @@
+// Monte Carlo (ch. 5.4): trials spread over several workers, merged by the page's worker, and the
+// study's tables and plots (Table 5.8, Figs. 5-20 to 5-25).
+import { MC } from './config.js';
+import { el, fmt } from './dom.js';
+import { REQUEST, WorkerClient } from './protocol.js';
+
+// A running study over k workers; stop() terminates them (their requests fail as cancelled).
+export class MonteCarlo {
+  constructor() { this.workers = []; }
+
+  stop() {
+    for (const w of this.workers) w.terminate();
+    this.workers = [];
+  }
+
+  // The number of trials the page runs for a scenario, or a reason it will not.
+  static refusal(sc) {
+    const n = Number(sc.monte_carlo && sc.monte_carlo.trials) || 0;
+    if (sc.sea.kind === 'calm') return 'Monte Carlo needs a sea: choose a random sea (or the mc-… studies).';
+    if (!(n >= 1 && n <= MC.maxTrials)) return `monte_carlo.trials must be from 1 to ${MC.maxTrials} in the page.`;
+    return null;
+  }
+
+  // Runs trials 0..n of `sc` on up to MC.maxWorkers fresh workers, then merges the partials on
+  // `client`. onProgress(done, k) after each chunk. Resolves to {summary, constants}.
+  async run(client, sc, onProgress) {
+    const n = Number(sc.monte_carlo.trials);
+    const k = Math.max(1, Math.min(MC.maxWorkers, navigator.hardwareConcurrency || 2, n));
+    const scenario = JSON.stringify(sc);
+    const doneBy = new Array(k).fill(0);
+    let failed = null;
+    this.workers = Array.from({ length: k }, () => new WorkerClient({ onFailure: (e) => { failed = failed || e; } }));
+    onProgress(0, k);
+    const parts = await Promise.all(this.workers.map(async (w, i) => {
+      const a = Math.floor((n * i) / k), b = Math.floor((n * (i + 1)) / k);
+      await w.ready;
+      const { partials } = await w.request(REQUEST.mc, { scenario, a, b }, (m) => {
+        doneBy[i] = m.done;
+        onProgress(doneBy.reduce((x, y) => x + y, 0), k);
+      });
+      w.terminate();
+      return partials;
+    })).catch((e) => { this.stop(); throw e; });
+    this.workers = [];
+    return client.request(REQUEST.mcSummary, { scenario, partials: parts.flat() });
+  }
+}
+
+// The moments of the exponential distribution of rate `lam` (Rice's first-passage model):
+// mean, std, skewness, kurtosis, median, mode.
+function exponentialMoments(lam) { return [1 / lam, 1 / lam, 2, 9, Math.LN2 / lam, 0]; }
+
+function table(caption, rows, head) {
+  const t = el('table');
+  t.createCaption().textContent = caption;
+  if (head) {
+    const tr = t.createTHead().insertRow();
+    for (const h of head) tr.append(el('th', { scope: 'col', textContent: h }));
+  }
+  const body = t.createTBody();
+  for (const [k, ...vals] of rows) {
+    const tr = body.insertRow();
+    tr.append(el('th', { scope: 'row', textContent: k }));
+    for (const v of vals) tr.insertCell().textContent = v;
+  }
+  return t;
+}
+
+// The study's summary: tables, then envelopes, histograms, onset and periodogram plots.
+export function showMonteCarlo(box, s, signals, constants) {
+  box.clear();
+  const a = s.arrival_time_s, r = s.rice, e = s.excess_energy_mj;
+  const rows = [['Trials', s.trials], ['Seed', s.seed]];
+  if (e) rows.push(['Excess energy vs submerged counterpart [MJ]', `${fmt(e.mean)} ± ${fmt(e.std)}`], [`Excess energy vs calm water [MJ] (${MC.calmWaterNote})`, `${fmt(e.vs_calm_water.mean)} ± ${fmt(e.vs_calm_water.std)}`]);
+  rows.push(['First surface effects / censored', `${a.events} / ${a.censored} (cap ${a.cap_s} s)`]);
+  const info = box.panel(null, box.generation, table('Monte Carlo summary', rows));
+  if (r) {
+    info.append(
+      table('Arrival time of the first surface effect [s] (Table 5.8)', [
+        [`Rice (Z ${fmt(r.z_m, 3)} m, rate ${fmt(r.rate_per_s, 3)}/s)`, ...exponentialMoments(r.rate_per_s).map((v) => fmt(v))],
+        ['Monte Carlo', ...[a.mean, a.std, a.skewness, a.kurtosis, a.median, a.mode].map((v) => fmt(v))],
+      ], ['', 'mean', 'std', 'skewness', 'kurtosis', 'median', 'mode']),
+      el('p', { className: 'about', textContent: `Censored at ${a.cap_s} s alike: Monte Carlo mean of min(T, cap) ${fmt(a.mean_censored)} s, Rice ${fmt(r.mean_censored_s)} s.` }));
+  }
+  const time = `time [${signals.meta('t_s').unit}]`;
+  for (const [sig, env] of Object.entries(s.envelopes)) {
+    const series = [
+      { data: env.mean, label: 'mean', color: '#0b5cad' }, { data: env.plus_2sigma, label: '+2 sigma', color: '#85c1e9' },
+      { data: env.minus_2sigma, label: '-2 sigma', color: '#85c1e9' }, { data: env.min, label: 'min', color: '#999', dash: [4, 4] },
+      { data: env.max, label: 'max', color: '#999', dash: [4, 4] }];
+    const tr = (s.traces || [])[0];
+    const c = tr && tr.columns.find(([n]) => n === sig);
+    if (c) series.push({ data: c[1].slice(0, env.t_s.length), label: `trial ${tr.trial}`, color: '#c0392b' });
+    box.line(`${signals.labelWithUnit(sig, constants)}: envelope over ${s.trials} trials (Fig. 5-20)`, { data: env.t_s, label: time }, series, [{ scale: 'y', label: signals.axisLabel(sig, constants) }]);
+  }
+  const ht = s.histogram_at_t;
+  if (ht.n > 0) box.histogram(`${signals.labelWithUnit(ht.signal, constants)} at t = ${ht.t_s} s (Fig. 5-21), skewness ${fmt(ht.skewness, 3)}`, ht.histogram, signals.labelWithUnit(ht.signal, constants));
+  if (e) box.histogram(`Excess energy per trial vs the submerged counterpart [MJ] (Fig. 5-22): ${fmt(e.mean)} ± ${fmt(e.std)}`, e.histogram, 'MJ');
+  if (a.events > 0) {
+    const h = a.histogram, w = (h.hi - h.lo) / h.counts.length, total = s.trials;
+    const overlay = r ? { label: `exponential, Rice rate ${fmt(r.rate_per_s, 3)}/s`, values: h.counts.map((_, i) => total * (Math.exp(-r.rate_per_s * (h.lo + i * w)) - Math.exp(-r.rate_per_s * (h.lo + (i + 1) * w)))) } : null;
+    box.histogram('Arrival time of the first surface effect [s] (Fig. 5-24)', h, time, overlay);
+  }
+  if (s.onset && s.onset.t_s.length > 1) {
+    const o = s.onset;
+    box.line(`${signals.labelWithUnit(MC.onsetSignal, constants)} after the onset of a surface effect (Fig. 5-25)`, { data: o.t_s, label: 'time after onset [s]' },
+      [{ data: o.mean, label: 'mean', color: '#0b5cad' }, { data: o.plus_2sigma, label: '+2 sigma', color: '#85c1e9' }, { data: o.min, label: 'min', color: '#999' }],
+      [{ scale: 'y', label: signals.axisLabel(MC.onsetSignal, constants) }]);
+  }
+  const pg = s.periodogram;
+  if (pg.freq_hz.length > 2) {
+    const k = pg.freq_hz.findIndex((f) => f > MC.periodogramMaxHz);
+    const n = k > 0 ? k : pg.freq_hz.length;
+    const pos = (v) => v.slice(1, n).map((x) => Math.max(x, 1e-9));
+    const unit = pg.unit.replace('^2', '²');
+    box.line(`Periodogram of one motor's power [${unit}] (Welch, Fig. 5-23)`, { data: pg.freq_hz.slice(1, n), label: 'frequency [Hz]' },
+      [{ data: pos(pg.mean), label: 'mean', color: '#0b5cad' }, { data: pos(pg.min), label: 'min', color: '#999' }, { data: pos(pg.max), label: 'max', color: '#c0392b' }],
+      [{ scale: 'y', label: `[${unit}]` }], { scales: { y: { distr: 3 } } });
+  }
+}

@@ -1,0 +1,99 @@
+// The worker protocol, shared by the page and the worker.
+//
+// Worker -> page, once after loading: {type: 'ready', presets: {name: json}, signals: [meta]}
+//   (signals: signalMeta() of the wasm, in trace column order), or, if loading fails,
+//   {type: 'error', id: null, error}.
+// Page -> worker: one message per request, {type, id, ...arguments}; the request types are
+//   REQUEST below. Worker -> page, for each request: any number of {type: 'progress', id, ...},
+//   then exactly one of {type: 'done', id, ...result} or {type: 'error', id, error}.
+// Every failure has one shape: error = {message, fields?: [{path, value, message}]}; `fields`
+// names scenario fields the checks refused (the form marks them). Nobody parses `message`.
+
+export const REQUEST = {
+  validate: 'validate', // {scenario} -> done {} | error with fields
+  run: 'run', // {scenario} -> progress {fraction} ... done {summary, columns, csv, wall_ms, constants}
+  mc: 'mc', // {scenario, a, b} -> progress {done} ... done {partials}
+  mcSummary: 'mc-summary', // {scenario, partials} -> done {summary, constants}
+  rao: 'rao', // {speed_kn, heading_deg, omegas} -> done {result}
+  fuel: 'fuel', // {scenario, omegas} -> done {rows}
+  ips: 'ips', // {args} -> done {result}
+};
+
+export function messageOf(e) {
+  return String(e && e.message ? e.message : e);
+}
+
+// One line for a refused field: "path = value: message".
+export function fieldLine(f) {
+  return `${f.path}${f.value ? ' = ' + f.value : ''}: ${f.message}`;
+}
+
+// The error of a failed request; `fields` only when the scenario checks named some.
+export function errorOf(e, fields) {
+  if (fields && fields.length) return { message: fields.map(fieldLine).join('\n'), fields };
+  return { message: messageOf(e) };
+}
+
+export const reply = {
+  ready: (presets, signals) => ({ type: 'ready', presets, signals }),
+  progress: (id, data) => ({ type: 'progress', id, ...data }),
+  done: (id, data) => ({ type: 'done', id, ...data }),
+  error: (id, error) => ({ type: 'error', id, error }),
+};
+
+// A request that failed: carries the protocol's error. `cancelled` when the worker was stopped.
+export class RequestError extends Error {
+  constructor(error, cancelled = false) {
+    super(error.message);
+    this.fields = error.fields || [];
+    this.cancelled = cancelled;
+  }
+}
+
+// The page's end of one worker: promise-based requests with progress callbacks.
+export class WorkerClient {
+  constructor({ onReady = () => {}, onFailure = () => {} } = {}) {
+    this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    this.pending = new Map();
+    this.nextId = 0;
+    this.ready = new Promise((resolve, reject) => { this.settleReady = { resolve, reject }; });
+    this.ready.catch(() => {}); // a failed start is reported through onFailure
+    this.worker.onmessage = (ev) => {
+      const m = ev.data;
+      if (m.type === 'ready') { this.settleReady.resolve(m); onReady(m); return; }
+      if (m.id == null) { this.settleReady.reject(new RequestError(m.error)); onFailure(m.error); return; }
+      const p = this.pending.get(m.id);
+      if (!p) return;
+      if (m.type === 'progress') { p.onProgress(m); return; }
+      this.pending.delete(m.id);
+      if (m.type === 'done') p.resolve(m);
+      else p.reject(new RequestError(m.error || { message: `unexpected reply '${m.type}'` }));
+    };
+    this.worker.onerror = (e) => {
+      const error = { message: messageOf(e) };
+      this.settleReady.reject(new RequestError(error));
+      this.failAll(error);
+      onFailure(error);
+    };
+  }
+
+  request(type, args = {}, onProgress = () => {}) {
+    const id = ++this.nextId;
+    return new Promise((resolve, reject) => {
+      this.pending.set(id, { resolve, reject, onProgress });
+      this.worker.postMessage({ ...args, type, id });
+    });
+  }
+
+  failAll(error, cancelled = false) {
+    for (const p of this.pending.values()) p.reject(new RequestError(error, cancelled));
+    this.pending.clear();
+  }
+
+  // Stops the worker; its open requests fail as cancelled.
+  terminate() {
+    this.worker.terminate();
+    this.settleReady.reject(new RequestError({ message: 'cancelled' }, true));
+    this.failAll({ message: 'cancelled' }, true);
+  }
+}

@@ -1,0 +1,55 @@
+// The page's busy/idle state, in one place: which buttons can be pressed, the progress bar, the
+// status line and the notice. Every other module asks for a phase; none touches these controls.
+import { $ } from './dom.js';
+
+// loading: no simulator yet (start-up, or a fresh worker after cancel); idle: ready;
+// running: one run; montecarlo: a Monte Carlo study.
+const PHASES = ['loading', 'idle', 'running', 'montecarlo'];
+let phase = 'loading';
+let result = null; // the last result: {summary, csv, scenario}; csv is empty for Monte Carlo
+
+function render() {
+  const idle = phase === 'idle';
+  const busy = phase === 'running' || phase === 'montecarlo';
+  $('run').disabled = !idle;
+  $('mc-run').disabled = !idle;
+  $('cancel').disabled = !busy;
+  $('export-csv').disabled = !(result && result.csv);
+  $('export-json').disabled = !result;
+  $('results').setAttribute('aria-busy', String(busy));
+}
+
+export function setPhase(p) {
+  if (!PHASES.includes(p)) throw new Error(`no phase '${p}'`);
+  phase = p;
+  if (p === 'running' || p === 'montecarlo') progress(0, '');
+  else $('eta').textContent = '';
+  render();
+}
+export function getPhase() { return phase; }
+export function isBusy() { return phase === 'running' || phase === 'montecarlo'; }
+
+export function setResult(r) { result = r; render(); }
+export function getResult() { return result; }
+
+export function progress(fraction, eta = '') {
+  $('progress').value = fraction;
+  $('eta').textContent = eta;
+}
+
+export function status(text, isError = false) {
+  $('status').textContent = text;
+  $('status').className = isError ? 'error' : '';
+}
+
+export function notice(text) {
+  $('notice').textContent = text;
+  $('notice').hidden = !text;
+}
+
+// "about 3.2 s left" from the elapsed wall time and the fraction done (empty early on).
+export function etaText(startedMs, fraction) {
+  const elapsed = (performance.now() - startedMs) / 1000;
+  if (elapsed <= 0.5 || fraction <= 0.02) return '';
+  return `about ${Math.max(0, (elapsed * (1 - fraction)) / fraction).toFixed(1)} s left`;
+}

@@ -1,0 +1,62 @@
+// Units and labels of recorded signals, from the wasm's signalMeta (sent in the worker's 'ready'
+// message), and the per-unit bases from pageConstants. The page guesses no unit.
+import { PU_BASES } from './config.js';
+
+const PREFIX = { '': 1, k: 1e3, M: 1e6 };
+// Units a metric prefix may go in front of.
+const PREFIXABLE = new Set(['W', 'N', 'V', 'A']);
+
+export class Signals {
+  constructor(meta) {
+    this.byName = new Map(meta.map((m) => [m.name, m]));
+  }
+
+  meta(name) {
+    const m = this.byName.get(name);
+    if (!m) throw new Error(`no signal '${name}' in signalMeta`);
+    return m;
+  }
+
+  label(name) { return this.meta(name).label; }
+
+  // Unit shown for a signal with an optional prefix ('k', 'M'): {unit, factor}.
+  display(name, prefix = '') {
+    return withPrefix(this.meta(name).unit, prefix);
+  }
+
+  // For a per-unit signal, what one unit is, e.g. "38 MW" (from pageConstants); null otherwise.
+  puBase(name, constants) {
+    const b = PU_BASES[name];
+    if (!b || !constants || !(b.constant in constants)) return null;
+    return quantity(constants[b.constant], b.unit);
+  }
+
+  // The unit as shown: "kn", per unit with its base: "pu of 38 MW".
+  unitText(name, constants) {
+    const base = this.puBase(name, constants);
+    return base ? `pu of ${base}` : this.display(name).unit;
+  }
+
+  // "label [unit]": "motor power [pu of 38 MW]".
+  labelWithUnit(name, constants) { return `${this.label(name)} [${this.unitText(name, constants)}]`; }
+
+  // A y-axis label (short: the title says what): "[pu of 38 MW]", dimensionless "h/R [-]".
+  axisLabel(name, constants) {
+    const unit = this.unitText(name, constants);
+    return unit === '-' ? `${this.label(name)} [-]` : `[${unit}]`;
+  }
+}
+
+// A unit with a metric prefix ('k', 'M') where one may go: {unit, factor} (value times factor).
+export function withPrefix(unit, prefix = '') {
+  if (!prefix || !PREFIXABLE.has(unit)) return { unit, factor: 1 };
+  return { unit: prefix + unit, factor: 1 / PREFIX[prefix] };
+}
+
+// A value with its unit, with a metric prefix where one reads better: 38e6 W -> "38 MW".
+export function quantity(value, unit) {
+  let prefix = '';
+  if (PREFIXABLE.has(unit)) prefix = Math.abs(value) >= 1e6 ? 'M' : Math.abs(value) >= 1e4 ? 'k' : '';
+  const v = value / PREFIX[prefix];
+  return `${Number(v.toPrecision(4))} ${prefix}${unit}`;
+}

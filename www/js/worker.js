@@ -1,0 +1,99 @@
+// Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
+// progress reports; the main thread never runs physics. Cancel = the page terminates this worker
+// and starts a fresh one.
+import init, { presetNames, presetJson, validateScenario, signalMeta, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, raoJson, fuelStudy } from '../pkg/aes_web.js';
+import { REQUEST, reply, errorOf } from './protocol.js';
+import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
+
+let signals = [];
+
+// Field errors of a scenario (JSON text): [] when it passes the checks.
+function check(scenario) {
+  try { return validateScenario(scenario); } catch (e) { return [{ path: '(scenario)', value: '', message: String(e) }]; }
+}
+
+// Refuses a scenario the checks refuse, with the refused fields.
+function checked(scenario) {
+  const fields = check(scenario);
+  if (fields.length) throw Object.assign(new Error('invalid scenario'), { fields });
+  return scenario;
+}
+
+const constantsOf = (scenario) => JSON.parse(pageConstants(scenario));
+
+const handlers = {
+  [REQUEST.validate]: (m) => { checked(m.scenario); return {}; },
+
+  [REQUEST.run]: (m, progress) => {
+    const t0 = performance.now();
+    const run = new Run(checked(m.scenario));
+    try {
+      let done = 0, lastReport = 0;
+      while (done < 1) {
+        done = run.advance(RUN_CHUNK_STEPS);
+        const now = performance.now();
+        if (now - lastReport > PROGRESS_EVERY_MS || done >= 1) { progress({ fraction: done }); lastReport = now; }
+      }
+      const columns = {};
+      const transfer = [];
+      for (const { name } of signals) {
+        columns[name] = run.column(name);
+        transfer.push(columns[name].buffer);
+      }
+      return [{ summary: JSON.parse(run.summaryJson()), columns, csv: run.traceCsv(), wall_ms: performance.now() - t0, constants: constantsOf(m.scenario) }, transfer];
+    } finally {
+      run.free();
+    }
+  },
+
+  // Monte Carlo trials a..b in about ten chunks: progress after each, and few partials to merge
+  // (each carries whole envelopes). They stay separate partials: merging needs the exact integer
+  // sums, which only the Rust side holds; the summary request merges them all.
+  [REQUEST.mc]: (m, progress) => {
+    checked(m.scenario);
+    const partials = [];
+    const chunk = Math.max(1, Math.ceil((m.b - m.a) / 10));
+    for (let i = m.a; i < m.b; i += chunk) {
+      const j = Math.min(m.b, i + chunk);
+      partials.push(mcRange(m.scenario, i, j));
+      progress({ done: j - m.a });
+    }
+    return { partials };
+  },
+
+  [REQUEST.mcSummary]: (m) => ({ summary: JSON.parse(mcSummary(m.partials)), constants: constantsOf(m.scenario) }),
+
+  [REQUEST.fuel]: (m) => ({ rows: JSON.parse(fuelStudy(checked(m.scenario), new Float64Array(m.omegas))) }),
+
+  [REQUEST.rao]: (m) => ({ result: JSON.parse(raoJson(m.speed_kn, m.heading_deg, new Float64Array(m.omegas))) }),
+
+  [REQUEST.ips]: (m) => {
+    const a = m.args;
+    return { result: JSON.parse(ipsAnalysis(a.side, a.omega, a.vfd, a.load, a.torque, a.closed, a.from_hz, a.to_hz, a.points)) };
+  },
+};
+
+// Requests that arrive while the wasm loads wait for it (in order).
+let loaded;
+
+onmessage = async (ev) => {
+  const m = ev.data;
+  try { await loaded; } catch (_) { return; } // the page was told in the failure message
+  const handler = handlers[m.type];
+  try {
+    if (!handler) throw new Error(`unknown request '${String(m.type).slice(0, 40)}'`);
+    const out = handler(m, (data) => postMessage(reply.progress(m.id, data)));
+    const [data, transfer] = Array.isArray(out) ? out : [out, []];
+    postMessage(reply.done(m.id, data), transfer);
+  } catch (e) {
+    postMessage(reply.error(m.id, errorOf(e, e && e.fields)));
+  }
+};
+
+loaded = init().then(() => {
+  signals = JSON.parse(signalMeta());
+  const presets = {};
+  for (const n of presetNames()) presets[n] = presetJson(n);
+  postMessage(reply.ready(presets, signals));
+});
+loaded.catch((e) => postMessage(reply.error(null, errorOf(e))));
