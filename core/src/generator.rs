@@ -9,6 +9,7 @@
 //! would put the bus at 9.7 kV.
 
 use crate::check_range;
+use crate::control::DiscretePi;
 use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::SQRT_2;
@@ -86,28 +87,20 @@ impl SyncGenerator {
 /// no-load field voltage, a ceiling and anti-windup.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FieldController {
-    pub kp: f64,
-    pub ki: f64,
+    /// PI on the bus voltage error [V]; its integrator carries the steady field voltage [V].
+    pub pi: DiscretePi,
     pub v_ref: f64,
     pub v_f_max: f64,
-    /// Integrator, including the steady field voltage [V].
-    pub integral: f64,
 }
 
 impl FieldController {
     pub fn new(p: &FieldControlParams, v_f0: f64, v_f_max: f64) -> FieldController {
-        FieldController { kp: p.kp, ki: p.ki, v_ref: p.bus_voltage_ref_v, v_f_max, integral: v_f0 }
+        FieldController { pi: DiscretePi::new(p.kp, p.ki, v_f0), v_ref: p.bus_voltage_ref_v, v_f_max }
     }
 
     /// One sample: returns the field voltage [V] to hold until the next.
     pub fn update(&mut self, v_bus: f64, ts: f64) -> f64 {
-        let err = self.v_ref - v_bus;
-        let unsat = self.kp * err + self.integral;
-        let out = unsat.clamp(0.0, self.v_f_max);
-        if crate::numerics::may_integrate(unsat, 0.0, self.v_f_max, err) {
-            self.integral += self.ki * err * ts;
-        }
-        out
+        self.pi.update(self.v_ref - v_bus, 0.0, self.v_f_max, ts)
     }
 }
 

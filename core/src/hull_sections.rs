@@ -188,7 +188,7 @@ fn section(s: &Station, t: f64) -> Section {
         for i in 1..s.z.len() {
             if zq <= s.z[i] {
                 let f = (zq - s.z[i - 1]) / (s.z[i] - s.z[i - 1]);
-                return s.half_breadth[i - 1] + f * (s.half_breadth[i] - s.half_breadth[i - 1]);
+                return crate::interp::lerp(s.half_breadth[i - 1], s.half_breadth[i], f);
             }
         }
         *s.half_breadth.last().unwrap_or(&0.0)

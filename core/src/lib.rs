@@ -4,11 +4,13 @@
 //! Everything is SI inside; no I/O, no threads; the same scenario gives the same numbers on
 //! every platform.
 
+pub mod control;
 pub mod dc_link;
 pub mod fuel;
 pub mod fuel_study;
 pub mod generator;
 pub mod hull_sections;
+pub mod interp;
 pub mod maneuvering;
 pub mod montecarlo;
 pub mod motor;

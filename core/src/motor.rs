@@ -11,6 +11,7 @@
 //! Q_e = 3 |I_r|^2 R_r / (s omega_e / p) = p P_airgap / omega_e.
 
 use crate::check_range;
+use crate::control::DiscretePi;
 use crate::validate::Validator;
 use num_complex::Complex64;
 use serde::{Deserialize, Serialize};
@@ -239,24 +240,18 @@ impl InductionMotor {
 /// braking needs a path for the returned energy, which diode rectifiers alone do not offer).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SlipController {
-    pub kp: f64,
-    pub ki: f64,
+    /// PI on the electrical rotor speed error; its integrator carries the slip [rad/s].
+    pub pi: DiscretePi,
     /// Width of the skipped band around zero slip [rad/s] (ch. 5.2.2's offset; 0 for none).
     pub offset: f64,
-    /// Integrator [rad/s of slip].
-    pub integral: f64,
 }
 
 impl SlipController {
     /// One sample: returns the slip speed [rad/s] to hold until the next.
     pub fn update(&mut self, err: f64, lower: f64, upper: f64, ts: f64) -> f64 {
-        let unsat = self.kp * err + self.integral;
-        let mut out = unsat.clamp(-lower, upper);
-        if crate::numerics::may_integrate(unsat, -lower, upper, err) {
-            self.integral += self.ki * err * ts;
-        }
+        let mut out = self.pi.update(err, -lower, upper, ts);
         // Keep the integrator inside the band the output can reach (no stored wind-up).
-        self.integral = self.integral.clamp(-lower, upper);
+        self.pi.integral = self.pi.integral.clamp(-lower, upper);
         if self.offset > 0.0 && out.abs() < self.offset {
             out = if out >= 0.0 { self.offset.min(upper) } else { -self.offset.min(lower) };
         }

@@ -2,6 +2,7 @@
 //! throttle saturation and slew limit.
 
 use crate::check_range;
+use crate::control::DiscretePi;
 use crate::units::rpm_to_rad_s;
 use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
@@ -48,30 +49,23 @@ impl GasTurbine {
 /// conditional integration, saturation 0 <= f <= 1 and slew limit |df/dt| <= Delta_t.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Governor {
-    pub kp: f64,
-    pub ki: f64,
+    /// PI on the per-unit speed error; its integrator carries the steady throttle.
+    pub pi: DiscretePi,
     /// Largest throttle change per second [1/s].
     pub slew: f64,
-    /// Integrator [throttle fraction].
-    pub integral: f64,
     /// Throttle now applied [fraction of full fuel].
     pub throttle: f64,
 }
 
 impl Governor {
     pub fn new(p: &GovernorParams, throttle0: f64) -> Governor {
-        Governor { kp: p.kp, ki: p.ki, slew: p.slew_rate_per_s, integral: throttle0, throttle: throttle0 }
+        Governor { pi: DiscretePi::new(p.kp, p.ki, throttle0), slew: p.slew_rate_per_s, throttle: throttle0 }
     }
 
     /// One controller sample of period `ts` [s] with speed error `err_pu` (set point minus speed,
     /// per unit of the set point). Returns the throttle to hold until the next sample.
     pub fn update(&mut self, err_pu: f64, ts: f64) -> f64 {
-        let unsat = self.kp * err_pu + self.integral;
-        let cmd = unsat.clamp(0.0, 1.0);
-        // Integrate only while the command is not pushed further into saturation.
-        if crate::numerics::may_integrate(unsat, 0.0, 1.0, err_pu) {
-            self.integral += self.ki * err_pu * ts;
-        }
+        let cmd = self.pi.update(err_pu, 0.0, 1.0, ts);
         let step = self.slew * ts;
         self.throttle += (cmd - self.throttle).clamp(-step, step);
         self.throttle
@@ -182,6 +176,6 @@ mod tests {
         }
         assert_eq!(f, 1.0);
         // Anti-windup: the integrator did not run away past the saturation.
-        assert!(g.integral <= 1.0 + 10.0 * 0.5 * 0.005 + 1e-12);
+        assert!(g.pi.integral <= 1.0 + 10.0 * 0.5 * 0.005 + 1e-12);
     }
 }

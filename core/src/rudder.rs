@@ -6,6 +6,7 @@
 //! positive aft, which is our convention. A positive rudder angle delta turns the ship to port.
 
 use crate::check_range;
+use crate::control::DiscretePi;
 use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 
@@ -94,13 +95,13 @@ impl Default for AutopilotParams {
 /// Discrete PID on heading with rudder saturation, swing-rate limit and anti-windup.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Autopilot {
-    pub kp: f64,
-    pub ki: f64,
+    /// PI on the heading error taken as psi - psi_ref (positive rudder turns to port), so its
+    /// integrator holds minus the rudder's integral action [rad].
+    pub pi: DiscretePi,
     pub kd: f64,
     pub max_angle: f64,
     pub swing_rate: f64,
     pub ka: f64,
-    pub integral: f64,
     /// Rudder angle now [rad].
     pub delta: f64,
     /// Yaw rate at the previous sample [rad/s] (for the yaw acceleration).
@@ -110,14 +111,12 @@ pub struct Autopilot {
 impl Autopilot {
     pub fn new(g: &AutopilotParams, r: &RudderParams) -> Autopilot {
         Autopilot {
-            kp: g.kp,
-            ki: g.ki,
+            pi: DiscretePi::new(g.kp, g.ki, 0.0),
             kd: g.kd,
             ka: g.ka,
             last_rate_err: None,
             max_angle: r.max_angle_deg.to_radians(),
             swing_rate: r.swing_rate_rad_s,
-            integral: 0.0,
             delta: 0.0,
         }
     }
@@ -128,11 +127,10 @@ impl Autopilot {
     pub fn update(&mut self, err: f64, rate_err: f64, ts: f64) -> f64 {
         let accel_err = self.last_rate_err.map_or(0.0, |last| (rate_err - last) / ts);
         self.last_rate_err = Some(rate_err);
-        let unsat = -(self.kp * err + self.integral + self.kd * rate_err + self.ka * accel_err);
-        let cmd = unsat.clamp(-self.max_angle, self.max_angle);
-        if unsat.abs() < self.max_angle || (unsat > 0.0) == (err > 0.0) {
-            self.integral += self.ki * err * ts;
-        }
+        // -(kp e + I + kd e' + ka e''), written with the negated error (IEEE negation is exact).
+        let e = -err;
+        let unsat = self.pi.unsaturated(e) - self.kd * rate_err - self.ka * accel_err;
+        let cmd = self.pi.saturate(unsat, e, -self.max_angle, self.max_angle, ts);
         let step = self.swing_rate * ts;
         self.delta += (cmd - self.delta).clamp(-step, step);
         self.delta

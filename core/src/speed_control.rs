@@ -2,6 +2,8 @@
 //! ordered ship speed to shaft speed, trimmed by a PI on the speed error, then a ramp limit.
 
 use crate::check_range;
+use crate::control::DiscretePi;
+use crate::units::{kn_to_m_s, rpm_to_rad_s};
 use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 /// Outer ship-speed loop: a calm-water rpm map trimmed by a PI on ship speed error.
@@ -44,5 +46,79 @@ impl SpeedControlParams {
         check_range!(v, self.trim_limit, 0.0, 1.0);
         check_range!(v, self.shaft_ramp_rpm_per_s, 0.0, 1.0e4);
         check_range!(v, self.max_shaft_rpm, 1.0, 2000.0);
+    }
+}
+
+/// Speed step of the calm-water map [m/s].
+pub const MAP_STEP_M_S: f64 = 0.25;
+/// Highest ship speed of the calm-water map [knots] (the command range's top).
+pub const MAP_TOP_KN: f64 = 40.0;
+
+/// The ship-speed loop's state: calm-water map, PI trim and ramp-limited shaft reference.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpeedController {
+    /// PI trim in SI: [rad/s of shaft per m/s], [rad/s per m]; its integrator is the trim [rad/s].
+    pub pi: DiscretePi,
+    /// Largest trim as a fraction of the mapped shaft speed [-].
+    pub trim_limit: f64,
+    /// Ramp limit of the shaft speed reference [rad/s^2]; 0 for none.
+    pub ramp: f64,
+    pub max_shaft_speed: f64,
+    /// Shaft speed reference now [rad/s].
+    pub shaft_ref: f64,
+    /// Calm-water map: equilibrium shaft speed [rad/s] at ship speeds 0, MAP_STEP_M_S, ...
+    map: Vec<f64>,
+}
+
+impl SpeedController {
+    /// The loop for parameters `p` with the calm-water map made by `equilibrium(u)`: the shaft
+    /// speed [rad/s] at which the propellers carry the hull's straight-line resistance at ship
+    /// speed u [m/s], every 0.25 m/s up to 40 knots.
+    pub fn new(p: &SpeedControlParams, equilibrium: impl Fn(f64) -> f64) -> SpeedController {
+        let rpm_per_kn = rpm_to_rad_s(1.0) / kn_to_m_s(1.0);
+        let n_map = (kn_to_m_s(MAP_TOP_KN) / MAP_STEP_M_S).ceil() as usize + 1;
+        SpeedController {
+            pi: DiscretePi::new(p.kp_rpm_per_kn * rpm_per_kn, p.ki_rpm_per_kn_s * rpm_per_kn, 0.0),
+            trim_limit: p.trim_limit,
+            ramp: rpm_to_rad_s(p.shaft_ramp_rpm_per_s),
+            max_shaft_speed: rpm_to_rad_s(p.max_shaft_rpm),
+            shaft_ref: 0.0,
+            map: (0..n_map).map(|i| equilibrium(i as f64 * MAP_STEP_M_S)).collect(),
+        }
+    }
+
+    /// The calm-water map at ship speed `u` [m/s] (linear interpolation, held at the ends).
+    pub fn map_speed(&self, u: f64) -> f64 {
+        crate::interp::uniform(&self.map, MAP_STEP_M_S, u)
+    }
+
+    /// Starts in the steady state: shaft at `w_rm0` [rad/s] at ship speed `u0` [m/s].
+    pub fn start(&mut self, w_rm0: f64, u0: f64) {
+        self.shaft_ref = w_rm0;
+        self.pi.integral = w_rm0 - self.map_speed(u0);
+    }
+
+    /// One sample with ordered speed `u_cmd` and speed through the water `u` [m/s]; returns the
+    /// shaft speed reference [rad/s].
+    pub fn update(&mut self, u_cmd: f64, u: f64, ts: f64) -> f64 {
+        let map = self.map_speed(u_cmd);
+        let err_u = u_cmd - u;
+        let trim_max = self.trim_limit * map;
+        let unsat = self.pi.unsaturated(err_u);
+        let trim = unsat.clamp(-trim_max, trim_max);
+        let target = (map + trim).clamp(0.0, self.max_shaft_speed);
+        let next_ref = if self.ramp > 0.0 {
+            self.shaft_ref + (target - self.shaft_ref).clamp(-self.ramp * ts, self.ramp * ts)
+        } else {
+            target
+        };
+        // Anti-windup: the trim integrates only while neither it nor the ramp is limiting, so a
+        // long acceleration does not leave it wound up (which would overshoot the ordered speed).
+        let limited = unsat.abs() > trim_max || (next_ref - target).abs() > 1e-12;
+        if !limited {
+            self.pi.integral = (self.pi.integral + self.pi.ki * err_u * ts).clamp(-trim_max, trim_max);
+        }
+        self.shaft_ref = next_ref;
+        next_ref
     }
 }

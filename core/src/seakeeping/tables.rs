@@ -5,6 +5,7 @@
 use super::conformal::{bulb, section_map, Form, SectionMap};
 use super::radiation::{default_multipoles, solve, Contour};
 use super::strip::{default_omega_grid, response, RadiationTable, Response, Ship};
+use crate::interp::bracket;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
@@ -185,19 +186,6 @@ impl RaoTable {
             fy: fy * s,
         }
     }
-}
-
-/// Lower index and fraction of `x` in the increasing grid `g` (held at the ends).
-pub(crate) fn bracket(g: &[f64], x: f64) -> (usize, f64) {
-    if g.len() < 2 || x <= g[0] {
-        return (0, 0.0);
-    }
-    let n = g.len();
-    if x >= g[n - 1] {
-        return (n - 2, 1.0);
-    }
-    let j = g.partition_point(|&v| v <= x) - 1;
-    (j, (x - g[j]) / (g[j + 1] - g[j]))
 }
 
 /// Which conformal form the `section` command uses.

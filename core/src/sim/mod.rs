@@ -7,6 +7,7 @@ mod record;
 pub mod seaway;
 pub mod summary;
 
+use crate::control::DiscretePi;
 use crate::generator::FieldController;
 use crate::motor::SlipController;
 use crate::prime_mover::Governor;
@@ -14,7 +15,8 @@ use crate::propeller_losses::{loss_factors, LossParams, Ventilation};
 use crate::rudder::Autopilot;
 use crate::scenario::{HullModelKind, Scenario};
 use crate::signals::{Signal, N_SIGNALS};
-use crate::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg, rpm_to_rad_s};
+use crate::speed_control::SpeedController;
+use crate::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg};
 use plant::{
     bus_voltage, field_current, omega_rm, omega_t, rk4_step, Held, Outputs, Plant, State, ENERGY0, HEADING, NX,
     N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE, Y_POS,
@@ -109,18 +111,8 @@ struct Controllers {
     slip: [SlipController; N_SHAFTS],
     /// Last peak-torque slip of each motor (warm start of the inline solver) [rad/s].
     peak_slip: [f64; N_SHAFTS],
-    /// Ship speed loop: gains in SI [rad/s per m/s], [rad/s per m], trim limit [-].
-    speed_kp: f64,
-    speed_ki: f64,
-    trim_limit: f64,
-    speed_integral: f64,
-    /// Ramp limit of the shaft speed reference [rad/s^2]; 0 for none.
-    ramp: f64,
-    max_shaft_speed: f64,
-    /// Shaft speed reference now [rad/s].
-    shaft_ref: f64,
-    /// Calm-water map: equilibrium shaft speed [rad/s] at ship speeds 0, MAP_STEP, 2 MAP_STEP, ...
-    map: Vec<f64>,
+    /// Ship speed loop (calm-water map, PI trim, ramp-limited shaft reference).
+    speed: SpeedController,
     /// Whether the slip may go negative (AC braking).
     allow_braking: bool,
     /// Last peak braking slip (warm start) [rad/s].
@@ -131,19 +123,6 @@ struct Controllers {
     heading_rate: f64,
     autopilot: Autopilot,
     held: Held,
-}
-
-/// Speed step of the calm-water map [m/s].
-const MAP_STEP: f64 = 0.25;
-
-impl Controllers {
-    /// The calm-water map at ship speed `u` [m/s] (linear interpolation).
-    fn map_speed(&self, u: f64) -> f64 {
-        let x = (u / MAP_STEP).clamp(0.0, (self.map.len() - 1) as f64);
-        let i = (x.floor() as usize).min(self.map.len() - 2);
-        let f = x - i as f64;
-        self.map[i] * (1.0 - f) + self.map[i + 1] * f
-    }
 }
 
 /// A run in progress.
@@ -202,16 +181,13 @@ impl Simulation {
         let rows = (total_steps / rec_every + 2) as usize;
         let trace = Trace::with_capacity(rows);
 
-        let sp = &scenario.controllers.speed;
-        let rpm_per_kn = rpm_to_rad_s(1.0) / kn_to_m_s(1.0);
-        // Calm-water map: the shaft speed at which the propellers (beta_T = 1) carry the hull's
-        // straight-line resistance, every 0.25 m/s up to 40 knots.
+        // The speed loop's calm-water map: propellers without surface losses (beta_T = 1), no
+        // added resistance.
         let mut calm = plant.clone();
         calm.beta_t = 1.0;
         calm.beta_q = 1.0;
         calm.extra_resistance = 0.0;
-        let n_map = (kn_to_m_s(40.0) / MAP_STEP).ceil() as usize + 1;
-        let map: Vec<f64> = (0..n_map).map(|i| calm.equilibrium_shaft_speed(i as f64 * MAP_STEP)).collect();
+        let speed = SpeedController::new(&scenario.controllers.speed, |u| calm.equilibrium_shaft_speed(u));
 
         let mut sim = Simulation {
             scenario: scenario.clone(),
@@ -220,20 +196,11 @@ impl Simulation {
                 governor: [Governor::new(&scenario.controllers.governor, 0.0); N_SETS],
                 field: [FieldController::new(&scenario.controllers.field, 0.0, plant.generator.v_f_max); N_SETS],
                 slip: [SlipController {
-                    kp: scenario.controllers.slip.kp,
-                    ki: scenario.controllers.slip.ki,
+                    pi: DiscretePi::new(scenario.controllers.slip.kp, scenario.controllers.slip.ki, 0.0),
                     offset: scenario.controllers.slip.zero_slip_offset_rad_s,
-                    integral: 0.0,
                 }; N_SHAFTS],
                 peak_slip: [0.0; N_SHAFTS],
-                speed_kp: sp.kp_rpm_per_kn * rpm_per_kn,
-                speed_ki: sp.ki_rpm_per_kn_s * rpm_per_kn,
-                trim_limit: sp.trim_limit,
-                speed_integral: 0.0,
-                ramp: rpm_to_rad_s(sp.shaft_ramp_rpm_per_s),
-                max_shaft_speed: rpm_to_rad_s(sp.max_shaft_rpm),
-                shaft_ref: 0.0,
-                map,
+                speed,
                 allow_braking: scenario.controllers.slip.allow_braking,
                 peak_brake_slip: [0.0; N_SHAFTS],
                 psi_ref: 0.0,
@@ -332,12 +299,11 @@ impl Simulation {
             // A shaft at rest with no load draws nothing: the bus floats at the bridge voltage.
             self.x[bus_voltage(s)] = if u0 > 0.0 { v_ref } else { flow.v_dc };
             self.x[omega_rm(s)] = w_rm0;
-            self.ctl.slip[s].integral = slip0;
+            self.ctl.slip[s].pi.integral = slip0;
             self.ctl.held.slip[s] = slip0;
         }
         self.x[SURGE] = u0;
-        self.ctl.shaft_ref = w_rm0;
-        self.ctl.speed_integral = w_rm0 - self.ctl.map_speed(u0);
+        self.ctl.speed.start(w_rm0, u0);
         Ok(())
     }
 
@@ -389,21 +355,7 @@ impl Simulation {
         let p = &self.plant;
         let c = &mut self.ctl;
         // Ship speed: calm-water map plus PI trim, then the ramp-limited shaft reference.
-        let map = c.map_speed(self.speed_cmd);
-        let err_u = self.speed_cmd - speed_through_water(x);
-        let trim_max = c.trim_limit * map;
-        let unsat = c.speed_kp * err_u + c.speed_integral;
-        let trim = unsat.clamp(-trim_max, trim_max);
-        let target = (map + trim).clamp(0.0, c.max_shaft_speed);
-        let next_ref =
-            if c.ramp > 0.0 { c.shaft_ref + (target - c.shaft_ref).clamp(-c.ramp * ts, c.ramp * ts) } else { target };
-        // Anti-windup: the trim integrates only while neither it nor the ramp is limiting, so a
-        // long acceleration does not leave it wound up (which would overshoot the ordered speed).
-        let limited = unsat.abs() > trim_max || (next_ref - target).abs() > 1e-12;
-        if !limited {
-            c.speed_integral = (c.speed_integral + c.speed_ki * err_u * ts).clamp(-trim_max, trim_max);
-        }
-        c.shaft_ref = next_ref;
+        let shaft_ref = c.speed.update(self.speed_cmd, speed_through_water(x), ts);
         for k in 0..N_SETS {
             let err = (p.turbine.rated_speed - x[omega_t(k)]) / p.turbine.rated_speed;
             c.held.throttle[k] = c.governor[k].update(err, ts);
@@ -423,7 +375,7 @@ impl Simulation {
             } else {
                 0.0
             };
-            let err = p.motor.pole_pairs * (c.shaft_ref - w_rm);
+            let err = p.motor.pole_pairs * (shaft_ref - w_rm);
             c.held.slip[s] = c.slip[s].update(err, lower, limit, ts);
         }
         // Heading: the reference ramps to the target; the autopilot steers the rudder.
@@ -477,7 +429,7 @@ impl Simulation {
                 );
             }
             let w = self.x[omega_rm(s)];
-            if !w.is_finite() || w.abs() > 3.0 * self.ctl.max_shaft_speed.max(1.0) {
+            if !w.is_finite() || w.abs() > 3.0 * self.ctl.speed.max_shaft_speed.max(1.0) {
                 return bad(format!("propeller shaft {}", s + 1), format!("speed {:.0} rpm", rad_s_to_rpm(w)));
             }
         }

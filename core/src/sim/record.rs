@@ -48,7 +48,7 @@ impl Recording<'_> {
         rad_s_to_rpm(self.x[omega_rm(s)])
     }
     pub fn shaft_ref_rpm(&self) -> f64 {
-        rad_s_to_rpm(self.ctl.shaft_ref)
+        rad_s_to_rpm(self.ctl.speed.shaft_ref)
     }
     pub fn turbine_speed_pu(&self, k: usize) -> f64 {
         self.x[omega_t(k)] / self.plant.turbine.rated_speed

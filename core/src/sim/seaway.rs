@@ -14,9 +14,9 @@
 //! transcendental cost). RAOs, the stern's phase offsets and the drift-force weights are looked up
 //! again every `rao_refresh_s` at the ship's speed and heading then.
 
+use crate::interp::bracket;
 use crate::scenario::{Scenario, SeaKind};
 use crate::seakeeping::cache::rao_table;
-use crate::seakeeping::tables::bracket;
 use crate::waves::{SeaSampling, WaveComponent, G};
 use num_complex::Complex64 as C;
 use std::f64::consts::PI;
