@@ -50,15 +50,40 @@ pub struct RectifierFlow {
     pub i_s: f64,
 }
 
+/// 18/pi^2: the stator resistance's equivalent DC resistance per ohm (its loss is the copper loss
+/// of the fundamental current, see the module notes).
+pub const STATOR_DC_RESISTANCE_RATIO: f64 = 18.0 / (PI * PI);
+
 impl DcLink {
+    /// The link between a generator of stator resistance `r_s` [ohm] and inductance `l_s` [H]
+    /// and its bus.
+    pub fn new(p: &DcLinkParams, r_s: f64, l_s: f64) -> DcLink {
+        DcLink {
+            capacitance: p.capacitance_f,
+            r_p: p.notching_resistance_ohm,
+            l_commutation: l_s,
+            r_stator_dc: STATOR_DC_RESISTANCE_RATIO * r_s,
+            inverter_voltage_ratio: p.inverter_voltage_ratio,
+        }
+    }
+
+    /// Commutation resistance (3/pi) omega L of eq. 2.8 at electrical speed `omega` [ohm].
+    pub fn commutation_resistance(&self, omega: f64) -> f64 {
+        3.0 / PI * omega * self.l_commutation
+    }
+
+    /// Resistance between the bridge's open-circuit voltage and the bus [ohm].
+    pub fn total_resistance(&self, omega: f64) -> f64 {
+        self.r_p + self.commutation_resistance(omega) + self.r_stator_dc
+    }
+
     /// Eqs. 2.8-2.9 with the bus at `v_c`, generator phase emf `e_a` and electrical speed `omega`.
     /// A diode bridge blocks reverse current; a `reversible` converter (average model, same
     /// equations) lets power flow back into the generator.
     pub fn rectify(&self, e_a: f64, omega: f64, v_c: f64, reversible: bool) -> RectifierFlow {
-        let r_commutation = 3.0 / PI * omega * self.l_commutation;
+        let r_commutation = self.commutation_resistance(omega);
         let v_open = BRIDGE_VOLTAGE_RATIO * e_a;
-        let r_total = self.r_p + r_commutation + self.r_stator_dc;
-        let i_dc = (v_open - v_c) / r_total;
+        let i_dc = (v_open - v_c) / self.total_resistance(omega);
         let i_dc = if reversible { i_dc } else { i_dc.max(0.0) };
         let v_dc = v_open - (r_commutation + self.r_stator_dc) * i_dc;
         let p_stator_loss = self.r_stator_dc * i_dc * i_dc;
@@ -160,7 +185,7 @@ mod tests {
             capacitance: 0.037,
             r_p: 0.05,
             l_commutation: 0.391e-3,
-            r_stator_dc: 18.0 / (PI * PI) * 2.27e-2,
+            r_stator_dc: STATOR_DC_RESISTANCE_RATIO * 2.27e-2,
             inverter_voltage_ratio: std::f64::consts::SQRT_2 / PI,
         }
     }

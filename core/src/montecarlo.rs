@@ -17,7 +17,8 @@
 //!   (eq. 5.2 with the run's `stern_motion` sign) at the ordered speed; its moments in the
 //!   encounter frequency, and the up-crossing rate of eq. 5.3.
 
-use crate::scenario::{Scenario, SeaKind, SternMotion};
+use crate::scenario::{Scenario, SeaKind};
+use crate::seakeeping::params::stern_wave;
 use crate::signals::Signal;
 use crate::sim::Simulation;
 use crate::stats::{rice_upcrossing_rate, trial_seed, welch, ExactMoments, Histogram};
@@ -341,10 +342,8 @@ pub fn rice(sc: &Scenario) -> Result<Value, String> {
         for &(d, wt) in &dirs {
             let beta = psi - (mu0 + d);
             let r = table.interpolate(w, u, beta);
-            let ph = kw * k.prop_x_aft_m * libm::cos(beta);
-            let stern = num_complex::Complex64::new(libm::cos(ph), libm::sin(ph));
-            let sign = if k.stern_motion == SternMotion::ThesisEq257 { 1.0 } else { -1.0 };
-            let hp = stern - r.heave + r.pitch * (sign * k.prop_x_aft_m);
+            let stern = stern_wave(kw, k.prop_x_aft_m, beta);
+            let hp = k.stern_motion.hub_transfer(stern, r.heave, r.pitch, k.prop_x_aft_m);
             let sy = hp.norm_sqr() * s * wt * dw;
             let we = (w - kw * u * libm::cos(beta)).abs();
             m0 += sy;

@@ -125,14 +125,20 @@ pub fn m0(components: &[WaveComponent]) -> f64 {
     components.iter().map(|c| 0.5 * c.amplitude * c.amplitude).sum()
 }
 
+impl WaveComponent {
+    /// Phase omega t - k (x cos mu + y sin mu) + phase at (x, y) [m] and time `t` [s], with the
+    /// direction's cosine and sine `cos_mu`, `sin_mu` given (the seaway keeps them).
+    pub fn phase_at(&self, cos_mu: f64, sin_mu: f64, x: f64, y: f64, t: f64) -> f64 {
+        let along = x * cos_mu + y * sin_mu;
+        self.omega * t - self.k * along + self.phase
+    }
+}
+
 /// Surface elevation at (x, y) [m] and time t [s] by superposition.
 pub fn elevation(components: &[WaveComponent], x: f64, y: f64, t: f64) -> f64 {
     components
         .iter()
-        .map(|c| {
-            let along = x * libm::cos(c.direction) + y * libm::sin(c.direction);
-            c.amplitude * libm::cos(c.omega * t - c.k * along + c.phase)
-        })
+        .map(|c| c.amplitude * libm::cos(c.phase_at(libm::cos(c.direction), libm::sin(c.direction), x, y, t)))
         .sum()
 }
 
@@ -144,13 +150,33 @@ pub fn elevation(components: &[WaveComponent], x: f64, y: f64, t: f64) -> f64 {
 /// component i (N/m^2, one sign for the whole set) and `theta[i]` its instantaneous phase
 /// (encounter frequency times time plus phase and position lag).
 pub fn slow_drift_newman(amplitudes: &[f64], f_unit: &[f64], theta: &[f64]) -> f64 {
-    let sign = if f_unit.iter().sum::<f64>() < 0.0 { -1.0 } else { 1.0 };
+    let sign = newman_sign(f_unit.iter().sum::<f64>());
     let (mut c, mut s) = (0.0, 0.0);
     for i in 0..amplitudes.len() {
-        let w = amplitudes[i] * (f_unit[i] * sign).max(0.0).sqrt();
+        let w = newman_weight(amplitudes[i], f_unit[i], sign);
         c += w * libm::cos(theta[i]);
         s += w * libm::sin(theta[i]);
     }
+    newman_force(sign, c, s)
+}
+
+/// The sign of Newman's force for a set whose mean force sum_i a_i^2 F_i is `mean` (one sign
+/// for the whole set; a component of the other sign is dropped).
+pub fn newman_sign(mean: f64) -> f64 {
+    if mean < 0.0 {
+        -1.0
+    } else {
+        1.0
+    }
+}
+
+/// Component weight a sqrt(sign F) of Newman's single sum.
+pub fn newman_weight(amplitude: f64, f_unit: f64, sign: f64) -> f64 {
+    amplitude * (sign * f_unit).max(0.0).sqrt()
+}
+
+/// Newman's force from the single sums c = sum w_i cos(theta_i), s = sum w_i sin(theta_i).
+pub fn newman_force(sign: f64, c: f64, s: f64) -> f64 {
     sign * (c * c + s * s)
 }
 

@@ -4,6 +4,7 @@
 use crate::check_range;
 use crate::propeller_losses::LossParams;
 use crate::validate::Validator;
+use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
 
 /// Ship motions in waves and propeller surface losses (ch. 2.3, 2.5.4). The seakeeping hull is the
@@ -79,6 +80,30 @@ pub enum SternMotion {
     /// ch. 5.3 runs show the thesis' frequent ventilation at h0 = 6 m.
     #[serde(rename = "thesis_eq_2_57")]
     ThesisEq257,
+}
+
+impl SternMotion {
+    /// Eq. 2.57 in the frequency domain: the hub depth's transfer function per unit wave
+    /// amplitude, from the wave at the stern `stern`, heave `heave` [m/m] and pitch `pitch`
+    /// [rad/m] (STF: bow down) with the propeller `x_p` [m] aft of the centre of gravity. The
+    /// simulator's seaway and the Rice prediction of the Monte Carlo studies both use this one.
+    pub fn hub_transfer(self, stern: C, heave: C, pitch: C, x_p: f64) -> C {
+        match self {
+            // The stern rises by eta3 + x_p eta5, so the hub's depth is h0 + eta_s - eta3 - x_p eta5
+            // (a hull following long waves keeps its depth).
+            SternMotion::Consistent => stern - heave - pitch * x_p,
+            // Eq. 2.57 as printed: + x_p eta5.
+            SternMotion::ThesisEq257 => stern - heave + pitch * x_p,
+        }
+    }
+}
+
+/// The wave at a point `x_p` [m] aft of the centre of gravity per unit wave at the centre, for
+/// wave number `k` [1/m] and heading `beta` [rad] (STF: 180 deg head seas): its phase leads by
+/// k x_p cos(beta).
+pub fn stern_wave(k: f64, x_p: f64, beta: f64) -> C {
+    let ph = k * x_p * libm::cos(beta);
+    C::new(libm::cos(ph), libm::sin(ph))
 }
 
 impl SeakeepingParams {

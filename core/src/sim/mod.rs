@@ -274,7 +274,7 @@ impl Simulation {
         // Each set carries half its shaft's inverter power at the bus set point.
         let i_dc = p_inv_shaft / (SETS_PER_SHAFT as f64 * v_ref);
         let w_e = p.generator.electrical_speed(w_t);
-        let r_total = p.dc_link.r_p + 3.0 / PI * w_e * p.dc_link.l_commutation + p.dc_link.r_stator_dc;
+        let r_total = p.dc_link.total_resistance(w_e);
         let e_a = (v_ref + r_total * i_dc) / crate::dc_link::BRIDGE_VOLTAGE_RATIO;
         let i_f = p.generator.field_current_for(e_a, w_t);
         let flow = p.dc_link.rectify(e_a, w_e, v_ref, false);

@@ -202,13 +202,8 @@ impl Plant {
     pub fn new(sc: &Scenario) -> Result<Plant, String> {
         let turbine = GasTurbine::new(&sc.plant.turbine);
         let generator = SyncGenerator::new(&sc.plant.generator, turbine.rated_speed);
-        let dc_link = DcLink {
-            capacitance: sc.plant.dc_link.capacitance_f,
-            r_p: sc.plant.dc_link.notching_resistance_ohm,
-            l_commutation: sc.plant.generator.stator_inductance_h,
-            r_stator_dc: 18.0 / (PI * PI) * sc.plant.generator.stator_resistance_ohm,
-            inverter_voltage_ratio: sc.plant.dc_link.inverter_voltage_ratio,
-        };
+        let g = &sc.plant.generator;
+        let dc_link = DcLink::new(&sc.plant.dc_link, g.stator_resistance_ohm, g.stator_inductance_h);
         let surge = Surge::new(&sc.ship);
         let hull = match sc.hull.model {
             HullModelKind::Surge => Hull::Surge,

@@ -17,7 +17,8 @@
 use crate::interp::bracket;
 use crate::scenario::{Scenario, SeaKind};
 use crate::seakeeping::cache::rao_table;
-use crate::waves::{SeaSampling, WaveComponent, G};
+use crate::seakeeping::params::{stern_wave, SternMotion};
+use crate::waves::{newman_force, newman_sign, newman_weight, SeaSampling, WaveComponent, G};
 use num_complex::Complex64 as C;
 use std::f64::consts::PI;
 
@@ -68,8 +69,8 @@ pub struct Seaway {
     hub0: f64,
     x_p: f64,
     second_order: bool,
-    /// Eq. 2.57 as printed (+x_p eta5 with STF's bow-down pitch) instead of the consistent sign.
-    thesis_pitch_sign: bool,
+    /// How the stern motion enters the hub depth (eq. 2.57).
+    stern_motion: SternMotion,
     /// Per component, refreshed: hub transfer, heave, pitch, roll, stern factor, sway, yaw (the
     /// lateral modes signed for the side the waves come from and turned to starboard-positive
     /// axes); Newman weights for x and y with their signs.
@@ -136,7 +137,7 @@ impl Seaway {
             hub0: k.hub_depth_m,
             x_p: k.prop_x_aft_m,
             second_order: k.second_order_forces,
-            thesis_pitch_sign: k.stern_motion == crate::scenario::SternMotion::ThesisEq257,
+            stern_motion: k.stern_motion,
             h: vec![[C::new(0.0, 0.0); 7]; n],
             wx: vec![0.0; n],
             wy: vec![0.0; n],
@@ -180,13 +181,8 @@ impl Seaway {
                 }
             }
             let (h3, h5, h4) = (acc[0], acc[1], acc[2] * side);
-            // The stern lies x_p aft of the centre of gravity: its phase leads by k x_p cos(beta).
-            let ph = c.wave.k * self.x_p * libm::cos(beta);
-            let stern = C::new(libm::cos(ph), libm::sin(ph));
-            // Eq. 2.57 with STF's bow-down pitch: the stern rises by eta3 + x_p eta5, so the hub's
-            // depth is h0 + eta_s - eta3 - x_p eta5 (a hull following long waves keeps its depth).
-            // Eq. 2.57 prints + x_p eta5; `stern_motion = "thesis_eq_2_57"` reproduces that.
-            let hub = if self.thesis_pitch_sign { stern - h3 + h5 * self.x_p } else { stern - h3 - h5 * self.x_p };
+            let stern = stern_wave(c.wave.k, self.x_p, beta);
+            let hub = self.stern_motion.hub_transfer(stern, h3, h5, self.x_p);
             // STF's sway is to port and its yaw bow to port: both flip for starboard-positive axes.
             self.h[i] = [hub, h3, h5, h4, stern, -acc[3] * side, -acc[4] * side];
             // Mean force components per amplitude squared, ship axes (x forward, y starboard):
@@ -199,11 +195,11 @@ impl Seaway {
         }
         // Newman: one sign per direction for the whole set (the components' own signs agree for a
         // sea from one side; where they do not, the weaker side is dropped).
-        self.sign_x = if sx < 0.0 { -1.0 } else { 1.0 };
-        self.sign_y = if sy < 0.0 { -1.0 } else { 1.0 };
+        self.sign_x = newman_sign(sx);
+        self.sign_y = newman_sign(sy);
         for (i, c) in self.comps.iter().enumerate() {
-            self.wx[i] = c.wave.amplitude * (self.sign_x * self.wx[i]).max(0.0).sqrt();
-            self.wy[i] = c.wave.amplitude * (self.sign_y * self.wy[i]).max(0.0).sqrt();
+            self.wx[i] = newman_weight(c.wave.amplitude, self.wx[i], self.sign_x);
+            self.wy[i] = newman_weight(c.wave.amplitude, self.wy[i], self.sign_y);
         }
     }
 
@@ -213,8 +209,7 @@ impl Seaway {
         let (mut cx, mut sx, mut cy, mut sy) = (0.0, 0.0, 0.0, 0.0);
         for (i, c) in self.comps.iter().enumerate() {
             let w = &c.wave;
-            let along = x * c.cos_mu + y * c.sin_mu;
-            let theta = w.omega * t - w.k * along + w.phase;
+            let theta = w.phase_at(c.cos_mu, c.sin_mu, x, y, t);
             let rate = w.omega - w.k * (xd * c.cos_mu + yd * c.sin_mu);
             let (sn, cs) = (libm::sin(theta), libm::cos(theta));
             let h = &self.h[i];
@@ -238,8 +233,8 @@ impl Seaway {
             sy += self.wy[i] * sn;
         }
         if self.second_order {
-            s.fx = self.sign_x * (cx * cx + sx * sx);
-            s.fy = self.sign_y * (cy * cy + sy * sy);
+            s.fx = newman_force(self.sign_x, cx, sx);
+            s.fy = newman_force(self.sign_y, cy, sy);
         }
         self.last = s;
         s
