@@ -429,27 +429,8 @@ impl Plant {
     }
 }
 
-/// One classical fourth-order Runge-Kutta step of `dt` [s] (held controls), with no allocation.
+/// One RK4 step of `dt` [s] with the controls held (no allocation); `out` keeps the outputs of
+/// the last stage evaluated.
 pub fn rk4_step(plant: &Plant, x: &mut State, h: &Held, dt: f64, out: &mut Outputs) {
-    let mut k1 = [0.0; NX];
-    let mut k2 = [0.0; NX];
-    let mut k3 = [0.0; NX];
-    let mut k4 = [0.0; NX];
-    let mut y = [0.0; NX];
-    plant.evaluate(x, h, out, &mut k1);
-    for i in 0..NX {
-        y[i] = x[i] + 0.5 * dt * k1[i];
-    }
-    plant.evaluate(&y, h, out, &mut k2);
-    for i in 0..NX {
-        y[i] = x[i] + 0.5 * dt * k2[i];
-    }
-    plant.evaluate(&y, h, out, &mut k3);
-    for i in 0..NX {
-        y[i] = x[i] + dt * k3[i];
-    }
-    plant.evaluate(&y, h, out, &mut k4);
-    for i in 0..NX {
-        x[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-    }
+    crate::numerics::rk4(x, 0.0, dt, |_, y, dx| plant.evaluate(y, h, out, dx));
 }

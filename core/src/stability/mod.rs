@@ -150,17 +150,9 @@ pub fn fourier_gain(t: &[f64], y: &[f64], omega: f64, input_amplitude: f64) -> B
 
 /// One RK4 step of dx/dt = f(t, x).
 pub fn rk4(f: &dyn Fn(f64, &[f64]) -> Vec<f64>, t: f64, x: &mut [f64], dt: f64) {
-    let n = x.len();
-    let k1 = f(t, x);
-    let y: Vec<f64> = (0..n).map(|i| x[i] + 0.5 * dt * k1[i]).collect();
-    let k2 = f(t + 0.5 * dt, &y);
-    let y: Vec<f64> = (0..n).map(|i| x[i] + 0.5 * dt * k2[i]).collect();
-    let k3 = f(t + 0.5 * dt, &y);
-    let y: Vec<f64> = (0..n).map(|i| x[i] + dt * k3[i]).collect();
-    let k4 = f(t + dt, &y);
-    for i in 0..n {
-        x[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-    }
+    let mut v = x.to_vec();
+    crate::numerics::rk4(&mut v, t, dt, |t, y, dx| *dx = f(t, y));
+    x.copy_from_slice(&v);
 }
 
 /// One step of the implicit trapezoidal rule for dx/dt = f(t, x), solved by Newton's method with
