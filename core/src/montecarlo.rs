@@ -23,7 +23,7 @@ use crate::signals::Signal;
 use crate::sim::Simulation;
 use crate::stats::{rice_upcrossing_rate, trial_seed, welch, ExactMoments, Histogram};
 use serde::{Deserialize, Serialize};
-use serde_json::{json, Value};
+use serde_json::Value;
 use std::f64::consts::PI;
 
 /// Identifies the shard format.
@@ -304,8 +304,13 @@ pub fn run_range(sc: &Scenario, a: u64, b: u64) -> Result<Partial, String> {
 /// M2 [m^2/s^2], rate [1/s], mean arrival 1/rate [s], and the mean of min(arrival, cap) an
 /// exponential arrival at that rate gives when censored at the run's duration.
 pub fn rice(sc: &Scenario) -> Result<Value, String> {
+    serde_json::to_value(rice_summary(sc)?).map_err(|e| e.to_string())
+}
+
+/// Rice's prediction, None unless the sea is random.
+pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
     if sc.sea.kind != SeaKind::Random {
-        return Ok(Value::Null);
+        return Ok(None);
     }
     let k = &sc.seakeeping;
     let table = crate::seakeeping::cache::rao_table(&k.grid)?;
@@ -354,108 +359,226 @@ pub fn rice(sc: &Scenario) -> Result<Value, String> {
     let z = k.hub_depth_m - k.ventilation_on_h_over_r * radius;
     let rate = rice_upcrossing_rate(m0, m2, z);
     let cap = sc.sim.duration_s;
-    Ok(json!({
-        "z_m": z,
-        "threshold_h_over_r": k.ventilation_on_h_over_r,
-        "m0": m0,
-        "m2": m2,
-        "rate_per_s": rate,
-        "mean_arrival_s": 1.0 / rate,
-        "mean_censored_s": (1.0 - libm::exp(-rate * cap)) / rate,
-        "cap_s": cap,
+    Ok(Some(RiceSummary {
+        z_m: z,
+        threshold_h_over_r: k.ventilation_on_h_over_r,
+        m0,
+        m2,
+        rate_per_s: rate,
+        mean_arrival_s: 1.0 / rate,
+        mean_censored_s: (1.0 - libm::exp(-rate * cap)) / rate,
+        cap_s: cap,
     }))
 }
 
-fn hist_json(h: &Histogram) -> Value {
-    json!({"lo": h.lo, "hi": h.hi, "counts": h.counts, "below": h.below, "above": h.above})
+/// A histogram in a summary: bins over [lo, hi), with the counts that fell outside.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HistogramSummary {
+    pub lo: f64,
+    pub hi: f64,
+    pub counts: Vec<u64>,
+    pub below: u64,
+    pub above: u64,
 }
 
-fn rows_json(rows: &[ExactMoments], dt: f64) -> Value {
-    let t: Vec<f64> = (0..rows.len()).map(|i| i as f64 * dt).collect();
-    let mean: Vec<f64> = rows.iter().map(|r| r.mean()).collect();
-    let std: Vec<f64> = rows.iter().map(|r| r.std()).collect();
-    json!({
-        "t_s": t,
-        "n": rows.iter().map(|r| r.n).collect::<Vec<_>>(),
-        "mean": mean,
-        "std": std,
-        "min": rows.iter().map(|r| r.min).collect::<Vec<_>>(),
-        "max": rows.iter().map(|r| r.max).collect::<Vec<_>>(),
-        "plus_2sigma": mean.iter().zip(&std).map(|(m, s)| m + 2.0 * s).collect::<Vec<_>>(),
-        "minus_2sigma": mean.iter().zip(&std).map(|(m, s)| m - 2.0 * s).collect::<Vec<_>>(),
-    })
+impl From<&Histogram> for HistogramSummary {
+    fn from(h: &Histogram) -> Self {
+        HistogramSummary { lo: h.lo, hi: h.hi, counts: h.counts.clone(), below: h.below, above: h.above }
+    }
+}
+
+/// Statistics over trials of one signal, row by recorded row (an envelope, the onset window).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RowStats {
+    pub t_s: Vec<f64>,
+    /// Trials that reached the row (fewer towards the end when trials stop at their first event).
+    pub n: Vec<u64>,
+    pub mean: Vec<f64>,
+    pub std: Vec<f64>,
+    pub min: Vec<f64>,
+    pub max: Vec<f64>,
+    pub plus_2sigma: Vec<f64>,
+    pub minus_2sigma: Vec<f64>,
+}
+
+impl RowStats {
+    fn of(rows: &[ExactMoments], dt: f64) -> RowStats {
+        let mean: Vec<f64> = rows.iter().map(|r| r.mean()).collect();
+        let std: Vec<f64> = rows.iter().map(|r| r.std()).collect();
+        RowStats {
+            t_s: (0..rows.len()).map(|i| i as f64 * dt).collect(),
+            n: rows.iter().map(|r| r.n).collect(),
+            min: rows.iter().map(|r| r.min).collect(),
+            max: rows.iter().map(|r| r.max).collect(),
+            plus_2sigma: mean.iter().zip(&std).map(|(m, s)| m + 2.0 * s).collect(),
+            minus_2sigma: mean.iter().zip(&std).map(|(m, s)| m - 2.0 * s).collect(),
+            mean,
+            std,
+        }
+    }
+}
+
+/// Excess energy against the calm-water power at the ordered speed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ExcessVsCalm {
+    pub mean: f64,
+    pub std: f64,
+    pub histogram: HistogramSummary,
+    pub definition: &'static str,
+}
+
+/// Excess motor energy due to surface effects, per trial [MJ].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ExcessEnergy {
+    pub mean: f64,
+    pub std: f64,
+    pub min: f64,
+    pub max: f64,
+    pub histogram: HistogramSummary,
+    pub definition: &'static str,
+    pub vs_calm_water: ExcessVsCalm,
+}
+
+/// Arrival times of the first surface effect [s], with censoring at the run's end.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ArrivalTimes {
+    pub events: u64,
+    pub censored: u64,
+    pub cap_s: f64,
+    pub mean: f64,
+    pub std: f64,
+    pub skewness: f64,
+    pub kurtosis: f64,
+    pub median: f64,
+    pub mode: f64,
+    pub histogram: HistogramSummary,
+    pub mean_censored: f64,
+    pub std_censored: f64,
+    pub rate_per_s: f64,
+}
+
+/// Rice's prediction (eqs. 5.1-5.3).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RiceSummary {
+    pub z_m: f64,
+    pub threshold_h_over_r: f64,
+    pub m0: f64,
+    pub m2: f64,
+    pub rate_per_s: f64,
+    pub mean_arrival_s: f64,
+    pub mean_censored_s: f64,
+    pub cap_s: f64,
+}
+
+/// The histogram of one signal at one time over trials.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HistogramAtTime {
+    pub signal: String,
+    pub t_s: f64,
+    pub n: u64,
+    pub mean: f64,
+    pub std: f64,
+    pub skewness: f64,
+    pub histogram: HistogramSummary,
+}
+
+/// Welch periodogram of one motor's power over trials.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PeriodogramSummary {
+    pub freq_hz: Vec<f64>,
+    pub unit: &'static str,
+    pub mean: Vec<f64>,
+    pub min: Vec<f64>,
+    pub max: Vec<f64>,
 }
 
 /// The public summary of a study (documented in the README).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StudySummary {
+    pub trials: u64,
+    pub trials_requested: u64,
+    pub seed: u64,
+    pub ranges: Vec<(u64, u64)>,
+    pub excess_energy_mj: Option<ExcessEnergy>,
+    pub arrival_time_s: ArrivalTimes,
+    pub rice: Option<RiceSummary>,
+    pub histogram_at_t: HistogramAtTime,
+    pub envelopes: std::collections::BTreeMap<String, RowStats>,
+    pub onset: RowStats,
+    pub periodogram: PeriodogramSummary,
+    pub traces: Vec<KeptTrace>,
+}
+
+/// The public summary of a study as JSON.
 pub fn summary(p: &Partial) -> Result<Value, String> {
+    serde_json::to_value(study_summary(p)?).map_err(|e| e.to_string())
+}
+
+/// The public summary of a study.
+pub fn study_summary(p: &Partial) -> Result<StudySummary, String> {
     let sc = &p.scenario;
     let m = &sc.monte_carlo;
-    let mut env = serde_json::Map::new();
-    for e in &p.envelopes {
-        env.insert(e.signal.clone(), rows_json(&e.rows, p.record_interval_s));
-    }
+    let envelopes =
+        p.envelopes.iter().map(|e| (e.signal.clone(), RowStats::of(&e.rows, p.record_interval_s))).collect();
     let events = p.arrival.n;
-    let excess = if m.excess_energy {
-        json!({
-            "mean": p.excess_energy_mj.mean(),
-            "std": p.excess_energy_mj.std(),
-            "min": p.excess_energy_mj.min,
-            "max": p.excess_energy_mj.max,
-            "histogram": hist_json(&p.excess_hist),
-            "definition": "energy drawn by one motor minus that drawn in the same sea without surface losses [MJ]",
-            "vs_calm_water": {
-                "mean": p.excess_vs_calm_mj.mean(),
-                "std": p.excess_vs_calm_mj.std(),
-                "histogram": hist_json(&p.excess_vs_calm_hist),
-                "definition": "energy drawn by one motor minus its calm-water power at the ordered speed times the duration [MJ]",
-            },
-        })
-    } else {
-        Value::Null
-    };
+    let excess_energy_mj = m.excess_energy.then(|| ExcessEnergy {
+        mean: p.excess_energy_mj.mean(),
+        std: p.excess_energy_mj.std(),
+        min: p.excess_energy_mj.min,
+        max: p.excess_energy_mj.max,
+        histogram: (&p.excess_hist).into(),
+        definition: "energy drawn by one motor minus that drawn in the same sea without surface losses [MJ]",
+        vs_calm_water: ExcessVsCalm {
+            mean: p.excess_vs_calm_mj.mean(),
+            std: p.excess_vs_calm_mj.std(),
+            histogram: (&p.excess_vs_calm_hist).into(),
+            definition:
+                "energy drawn by one motor minus its calm-water power at the ordered speed times the duration [MJ]",
+        },
+    });
     let exposure_total = p.exposure.mean() * p.exposure.n as f64;
-    Ok(json!({
-        "trials": p.trials(),
-        "trials_requested": m.trials,
-        "seed": sc.sim.seed,
-        "ranges": p.ranges,
-        "excess_energy_mj": excess,
-        "arrival_time_s": {
-            "events": events,
-            "censored": p.censored,
-            "cap_s": sc.sim.duration_s,
-            "mean": p.arrival.mean(),
-            "std": p.arrival.std(),
-            "skewness": p.arrival.skewness(),
-            "kurtosis": p.arrival.kurtosis(),
-            "median": p.arrival_hist.median(),
-            "mode": p.arrival_hist.mode(),
-            "histogram": hist_json(&p.arrival_hist),
-            "mean_censored": p.exposure.mean(),
-            "std_censored": p.exposure.std(),
-            "rate_per_s": if exposure_total > 0.0 { events as f64 / exposure_total } else { f64::NAN },
+    Ok(StudySummary {
+        trials: p.trials(),
+        trials_requested: m.trials,
+        seed: sc.sim.seed,
+        ranges: p.ranges.clone(),
+        excess_energy_mj,
+        arrival_time_s: ArrivalTimes {
+            events,
+            censored: p.censored,
+            cap_s: sc.sim.duration_s,
+            mean: p.arrival.mean(),
+            std: p.arrival.std(),
+            skewness: p.arrival.skewness(),
+            kurtosis: p.arrival.kurtosis(),
+            median: p.arrival_hist.median(),
+            mode: p.arrival_hist.mode(),
+            histogram: (&p.arrival_hist).into(),
+            mean_censored: p.exposure.mean(),
+            std_censored: p.exposure.std(),
+            rate_per_s: if exposure_total > 0.0 { events as f64 / exposure_total } else { f64::NAN },
         },
-        "rice": rice(sc)?,
-        "histogram_at_t": {
-            "signal": m.histogram_signal,
-            "t_s": m.histogram_time_s,
-            "n": p.at_time.n,
-            "mean": p.at_time.mean(),
-            "std": p.at_time.std(),
-            "skewness": p.at_time.skewness(),
-            "histogram": hist_json(&p.at_time_hist),
+        rice: rice_summary(sc)?,
+        histogram_at_t: HistogramAtTime {
+            signal: m.histogram_signal.clone(),
+            t_s: m.histogram_time_s,
+            n: p.at_time.n,
+            mean: p.at_time.mean(),
+            std: p.at_time.std(),
+            skewness: p.at_time.skewness(),
+            histogram: (&p.at_time_hist).into(),
         },
-        "envelopes": env,
-        "onset": rows_json(&p.onset, p.record_interval_s),
-        "periodogram": {
-            "freq_hz": p.periodogram_hz,
-            "unit": "MW^2/Hz",
-            "mean": p.periodogram.iter().map(|r| r.mean()).collect::<Vec<_>>(),
-            "min": p.periodogram.iter().map(|r| r.min).collect::<Vec<_>>(),
-            "max": p.periodogram.iter().map(|r| r.max).collect::<Vec<_>>(),
+        envelopes,
+        onset: RowStats::of(&p.onset, p.record_interval_s),
+        periodogram: PeriodogramSummary {
+            freq_hz: p.periodogram_hz.clone(),
+            unit: "MW^2/Hz",
+            mean: p.periodogram.iter().map(|r| r.mean()).collect(),
+            min: p.periodogram.iter().map(|r| r.min).collect(),
+            max: p.periodogram.iter().map(|r| r.max).collect(),
         },
-        "traces": p.traces,
-    }))
+        traces: p.traces.clone(),
+    })
 }
 
 /// Names of the trace columns a study may collect.

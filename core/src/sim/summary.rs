@@ -11,6 +11,7 @@ use std::collections::BTreeMap;
 /// Final value, extremes and time average of one recorded signal.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct TraceStats {
+    #[serde(rename = "final")]
     pub final_: f64,
     pub min: f64,
     pub max: f64,
@@ -66,8 +67,8 @@ pub struct EnergyBalance {
     pub relative_residual: f64,
 }
 
-/// Everything a run reports.
-#[derive(Debug, Clone, PartialEq)]
+/// Everything a run reports (its JSON is the public summary format).
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Summary {
     pub scenario: String,
     pub final_time_s: f64,
@@ -158,19 +159,6 @@ impl Summary {
 
     /// The public JSON form (documented in the README).
     pub fn to_json_value(&self) -> serde_json::Value {
-        let mut sig = serde_json::Map::new();
-        for (k, s) in &self.signals {
-            sig.insert(k.clone(), serde_json::json!({"final": s.final_, "min": s.min, "max": s.max, "mean": s.mean}));
-        }
-        serde_json::json!({
-            "scenario": self.scenario,
-            "final_time_s": self.final_time_s,
-            "steps": self.steps,
-            "signals": sig,
-            "power_inventory_w": self.power_inventory_w,
-            "efficiency": self.efficiency,
-            "energy_j": self.energy_j,
-            "warnings": self.warnings,
-        })
+        serde_json::to_value(self).unwrap_or_default()
     }
 }
