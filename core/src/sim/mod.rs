@@ -5,6 +5,7 @@
 pub mod plant;
 mod record;
 pub mod seaway;
+mod steady;
 pub mod summary;
 
 use crate::control::DiscretePi;
@@ -123,6 +124,28 @@ struct Controllers {
     heading_rate: f64,
     autopilot: Autopilot,
     held: Held,
+}
+
+/// Divergence limits: a state outside them means the run has left the physics the model
+/// represents (a numerical blow-up or an impossible parameter set), and the run stops with the
+/// subsystem named instead of printing nonsense.
+pub mod limits {
+    /// Turbine speed band, per unit of rated: a real LM2500 trips on overspeed near 1.1; three
+    /// times rated is far past anything physical; slightly negative allows numerical noise at rest.
+    pub const TURBINE_SPEED_PU: (f64, f64) = (-0.1, 3.0);
+    /// Field current [A]: about 200 times the 500 A of rated excitation.
+    pub const FIELD_CURRENT_A: f64 = 1.0e5;
+    /// Bus voltage band, per unit of the set point: three times the set point would have
+    /// destroyed the converters long before.
+    pub const BUS_VOLTAGE_PU: (f64, f64) = (-0.1, 3.0);
+    /// Shaft speed, multiple of the speed controller's largest reference.
+    pub const SHAFT_SPEED_OF_MAX_REF: f64 = 3.0;
+    /// Ship speed [m/s]: 40 m/s is 78 knots, twice a destroyer's top speed.
+    pub const SURGE_M_S: f64 = 40.0;
+    /// Sway speed [m/s] and yaw rate [rad/s]: 20 m/s sideways or 29 deg/s of turn are beyond any
+    /// ship of this size.
+    pub const SWAY_M_S: f64 = 20.0;
+    pub const YAW_RATE_RAD_S: f64 = 0.5;
 }
 
 /// A run in progress.
@@ -245,65 +268,26 @@ impl Simulation {
 
     /// Initial state: idle (u0 = 0) or the calm-water steady state at the initial speed.
     fn initialise(&mut self) -> Result<(), SimError> {
-        let p = &self.plant;
         let sc = &self.scenario;
-        let w_t = p.turbine.rated_speed;
-        let v_ref = sc.controllers.field.bus_voltage_ref_v;
-        let u0 = kn_to_m_s(sc.initial.speed_kn);
-        // Shaft speed at which the propellers balance the resistance at u0 (with the run's beta_T).
-        let (w_rm0, p_inv_shaft, slip0) = if u0 > 0.0 {
-            let w = p.equilibrium_shaft_speed(u0);
-            let q_p = p.propeller_load(w, u0).torque_nm;
-            let v_max = p.dc_link.max_phase_voltage(v_ref);
-            let peak = p.motor.peak_torque_slip(w, v_max, 0.0);
-            let ws = p.motor.slip_for_torque(w, v_max, peak, q_p);
-            let mp = p.motor.operate_vhz(w, ws, v_max);
-            if (mp.torque - q_p).abs() > 1e-6 * q_p.abs().max(1.0) {
-                return Err(SimError::Setup(format!(
-                    "initial.speed_kn = {}: the motor cannot carry the propeller torque {:.0} kN m at {:.0} rpm",
-                    sc.initial.speed_kn,
-                    q_p / 1e3,
-                    rad_s_to_rpm(w)
-                )));
-            }
-            self.ctl.peak_slip = [peak; N_SHAFTS];
-            (w, mp.p_in, ws)
-        } else {
-            (0.0, 0.0, 0.0)
-        };
-        // Each set carries half its shaft's inverter power at the bus set point.
-        let i_dc = p_inv_shaft / (SETS_PER_SHAFT as f64 * v_ref);
-        let w_e = p.generator.electrical_speed(w_t);
-        let r_total = p.dc_link.total_resistance(w_e);
-        let e_a = (v_ref + r_total * i_dc) / crate::dc_link::BRIDGE_VOLTAGE_RATIO;
-        let i_f = p.generator.field_current_for(e_a, w_t);
-        let flow = p.dc_link.rectify(e_a, w_e, v_ref, false);
-        let q_load = p.generator.friction_torque(w_t) + flow.p_generator / w_t;
-        let throttle = p.turbine.throttle_for(q_load, w_t);
-        if !(0.0..=1.0).contains(&throttle) {
-            return Err(SimError::Setup(format!(
-                "initial.speed_kn = {}: the turbines would need throttle {throttle:.2} (more than full)",
-                sc.initial.speed_kn
-            )));
-        }
+        let st = steady::calm_water(&self.plant, sc)?;
         for k in 0..N_SETS {
-            self.x[omega_t(k)] = w_t;
-            self.x[field_current(k)] = i_f;
-            self.ctl.governor[k] = Governor::new(&sc.controllers.governor, throttle);
-            let v_f = p.generator.r_f * i_f;
-            self.ctl.field[k] = FieldController::new(&sc.controllers.field, v_f, p.generator.v_f_max);
-            self.ctl.held.throttle[k] = throttle;
-            self.ctl.held.field_voltage[k] = v_f;
+            self.x[omega_t(k)] = st.turbine_speed;
+            self.x[field_current(k)] = st.field_current;
+            self.ctl.governor[k] = Governor::new(&sc.controllers.governor, st.throttle);
+            self.ctl.field[k] =
+                FieldController::new(&sc.controllers.field, st.field_voltage, self.plant.generator.v_f_max);
+            self.ctl.held.throttle[k] = st.throttle;
+            self.ctl.held.field_voltage[k] = st.field_voltage;
         }
         for s in 0..N_SHAFTS {
-            // A shaft at rest with no load draws nothing: the bus floats at the bridge voltage.
-            self.x[bus_voltage(s)] = if u0 > 0.0 { v_ref } else { flow.v_dc };
-            self.x[omega_rm(s)] = w_rm0;
-            self.ctl.slip[s].pi.integral = slip0;
-            self.ctl.held.slip[s] = slip0;
+            self.x[bus_voltage(s)] = st.bus_voltage;
+            self.x[omega_rm(s)] = st.shaft_speed;
+            self.ctl.slip[s].pi.integral = st.slip;
+            self.ctl.held.slip[s] = st.slip;
         }
-        self.x[SURGE] = u0;
-        self.ctl.speed.start(w_rm0, u0);
+        self.ctl.peak_slip = [st.peak_slip; N_SHAFTS];
+        self.x[SURGE] = st.ship_speed;
+        self.ctl.speed.start(st.shaft_speed, st.ship_speed);
         Ok(())
     }
 
@@ -408,37 +392,39 @@ impl Simulation {
         let bad = |sub: String, msg: String| Err(SimError::Diverged { time_s: self.t, subsystem: sub, message: msg });
         for k in 0..N_SETS {
             let w = self.x[omega_t(k)];
-            if !w.is_finite() || w < -0.1 * p.turbine.rated_speed || w > 3.0 * p.turbine.rated_speed {
+            let (lo, hi) = limits::TURBINE_SPEED_PU;
+            if !w.is_finite() || w < lo * p.turbine.rated_speed || w > hi * p.turbine.rated_speed {
                 return bad(
                     format!("gas turbine {} (shaft {})", k + 1, k / SETS_PER_SHAFT + 1),
-                    format!("speed {:.0} rpm outside -10 % to 300 % of rated", rad_s_to_rpm(w)),
+                    format!("speed {:.0} rpm outside {} % to {} % of rated", rad_s_to_rpm(w), lo * 100.0, hi * 100.0),
                 );
             }
             let i_f = self.x[field_current(k)];
-            if !i_f.is_finite() || i_f.abs() > 1e5 {
+            if !i_f.is_finite() || i_f.abs() > limits::FIELD_CURRENT_A {
                 return bad(format!("generator {} field", k + 1), format!("field current {i_f:.3e} A"));
             }
         }
         let v_ref = self.scenario.controllers.field.bus_voltage_ref_v;
         for s in 0..N_SHAFTS {
             let v = self.x[bus_voltage(s)];
-            if !v.is_finite() || v < -0.1 * v_ref || v > 3.0 * v_ref {
+            let (lo, hi) = limits::BUS_VOLTAGE_PU;
+            if !v.is_finite() || v < lo * v_ref || v > hi * v_ref {
                 return bad(
                     format!("DC bus {}", s + 1),
-                    format!("voltage {v:.0} V outside -10 % to 300 % of the set point"),
+                    format!("voltage {v:.0} V outside {} % to {} % of the set point", lo * 100.0, hi * 100.0),
                 );
             }
             let w = self.x[omega_rm(s)];
-            if !w.is_finite() || w.abs() > 3.0 * self.ctl.speed.max_shaft_speed.max(1.0) {
+            if !w.is_finite() || w.abs() > limits::SHAFT_SPEED_OF_MAX_REF * self.ctl.speed.max_shaft_speed.max(1.0) {
                 return bad(format!("propeller shaft {}", s + 1), format!("speed {:.0} rpm", rad_s_to_rpm(w)));
             }
         }
         let u = self.x[SURGE];
-        if !u.is_finite() || u.abs() > 40.0 {
+        if !u.is_finite() || u.abs() > limits::SURGE_M_S {
             return bad("ship surge".into(), format!("speed {:.1} knots", m_s_to_kn(u)));
         }
         let (v, r) = (self.x[SWAY], self.x[YAW_RATE]);
-        if !v.is_finite() || v.abs() > 20.0 || !r.is_finite() || r.abs() > 0.5 {
+        if !v.is_finite() || v.abs() > limits::SWAY_M_S || !r.is_finite() || r.abs() > limits::YAW_RATE_RAD_S {
             return bad("hull sway-yaw".into(), format!("sway {v:.2} m/s, yaw rate {:.2} deg/s", rad_to_deg(r)));
         }
         if !self.x[X_POS].is_finite() || !self.x[Y_POS].is_finite() || !self.x[HEADING].is_finite() {
