@@ -140,16 +140,16 @@ pub struct GeneratorSteadyState {
 /// Rectifier voltages from the currents (closed form of eqs. 4.8-4.10): (v~, v_qs, v_ds).
 pub fn rectifier_voltages(x_co: f64, i_qs: f64, i_ds: f64, i_dc: f64) -> Option<(f64, f64, f64)> {
     let k2 = 3.0 * x_co / PI;
-    let i_mag = i_qs.hypot(i_ds);
+    let i_mag = libm::hypot(i_qs, i_ds);
     let den = 2.0 / 3.0 * K1 * i_dc - i_mag;
     if den <= 0.0 || i_dc <= 0.0 {
         return None;
     }
     let v = 2.0 / 3.0 * k2 * i_dc * i_dc / den;
     let v_rect = K1 * v - k2 * i_dc;
-    let phi = (v_rect / (K1 * v)).clamp(-1.0, 1.0).acos();
-    let ang = i_ds.atan2(i_qs) - phi;
-    Some((v_rect, v * ang.cos(), v * ang.sin()))
+    let phi = libm::acos((v_rect / (K1 * v)).clamp(-1.0, 1.0));
+    let ang = libm::atan2(i_ds, i_qs) - phi;
+    Some((v_rect, v * libm::cos(ang), v * libm::sin(ang)))
 }
 
 impl GeneratorSideParams {
@@ -256,7 +256,7 @@ impl GeneratorSideParams {
             let idc0 = i_load + 0.1;
             let ang = -0.1 * k as f64;
             let mag = 0.97 * 2.0 / 3.0 * K1 * idc0;
-            let mut z = vec![mag * ang.cos(), mag * ang.sin(), idc0];
+            let mut z = vec![mag * libm::cos(ang), mag * libm::sin(ang), idc0];
             let mut r = resid(&z);
             for _ in 0..100 {
                 if norm(&r) < 1e-9 {
@@ -298,13 +298,13 @@ impl GeneratorSideParams {
             omega: w,
             v_fd,
             i_load,
-            v_gs_mag: vq.hypot(vd),
-            i_gs_mag: iq.hypot(id),
+            v_gs_mag: libm::hypot(vq, vd),
+            i_gs_mag: libm::hypot(iq, id),
             i_fd,
             v_dc_rect: vr,
             v_dc,
             i_dc: idc,
-            cos_phi: vr / (K1 * vq.hypot(vd)),
+            cos_phi: vr / (K1 * libm::hypot(vq, vd)),
             x,
         })
     }
@@ -314,10 +314,10 @@ impl GeneratorSideParams {
     fn rectifier_jacobian(&self, iq: f64, id: f64, idc: f64) -> Matrix3<f64> {
         let (vr, vq, vd) = rectifier_voltages(self.x_co, iq, id, idc).unwrap_or((0.0, 0.0, 0.0));
         let k2 = 3.0 * self.x_co / PI;
-        let v = vq.hypot(vd);
+        let v = libm::hypot(vq, vd);
         let c = vr / (K1 * v);
         let s = (1.0 - c * c).max(1e-300).sqrt();
-        let dc = [1.0 / (K1 * v), -vr * vq / (K1 * v.powi(3)), -vr * vd / (K1 * v.powi(3))];
+        let dc = [1.0 / (K1 * v), -vr * vq / (K1 * (v * v * v)), -vr * vd / (K1 * (v * v * v))];
         let ds = [-c / s * dc[0], -c / s * dc[1], -c / s * dc[2]];
         let t = 2.0 / 3.0;
         let gy = Matrix3::new(
