@@ -34,7 +34,7 @@ fn straight_ahead_equilibrium_balances_x0() {
     assert!(kn.max - kn.min < 1e-3, "speed wandered {} .. {}", kn.min, kn.max);
     // And the model's surge mass is Table 2.3's (m - X_udot).
     let a = Abkowitz::new(&AbkowitzCoefficients::default(), true, u0, 180.0, 1025.0);
-    assert!((a.m11 / (646.9e-5 * 0.5 * 1025.0 * 180f64.powi(3)) - 1.0).abs() < 1e-12);
+    assert!((a.m11 / (646.9e-5 * 0.5 * 1025.0 * (180.0 * 180.0 * 180.0)) - 1.0).abs() < 1e-12);
 }
 
 /// Ch. 5.2.1, Figs. 5-3 to 5-5: a step order from 25 knots to full ahead. The thesis: the turbines

@@ -20,7 +20,7 @@ fn mean(v: &[f64]) -> f64 {
 }
 fn std(v: &[f64]) -> f64 {
     let m = mean(v);
-    (v.iter().map(|x| (x - m).powi(2)).sum::<f64>() / v.len() as f64).sqrt()
+    (v.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / v.len() as f64).sqrt()
 }
 
 fn head_seas(seed: u64, stern: SternMotion, duration: f64) -> Scenario {
