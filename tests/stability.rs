@@ -63,8 +63,11 @@ fn compare(name: &str, sys: &LinearSystem, sim: &BodePoint) {
         "{name} at {:.2} rad/s: linear {:.2} dB {:.1} deg, nonlinear {:.2} dB {:.1} deg",
         sim.omega_rad_s, lin.magnitude_db, lin.phase_deg, sim.magnitude_db, sim.phase_deg
     );
-    assert!((lin.magnitude_db - sim.magnitude_db).abs() < 1.0, "{name}: gain");
-    assert!(dphase.abs() < 5.0, "{name}: phase {dphase}");
+    // Measured at most 2.3e-3 dB and 4.9e-3 deg (motor open loop at 100 rad/s; the gaps are the
+    // perturbations' nonlinearity and the integration steps): asserted at 0.01 dB and 0.01 deg.
+    let dgain = lin.magnitude_db - sim.magnitude_db;
+    assert!(dgain.abs() < 0.01, "{name}: gain off by {dgain} dB");
+    assert!(dphase.abs() < 0.01, "{name}: phase off by {dphase} deg");
 }
 
 /// Fig. 4-8 (T* = 100 N m, five states) and Fig. 4-9 (200 N m, six states): open loop, stator
