@@ -41,7 +41,8 @@ fn startup_runs_in_chunks() {
     let kn = s["signals"]["ship_speed_kn"]["final"].as_f64().unwrap();
     assert!(kn > 15.0 && kn < 30.0, "{kn}");
     let rel = s["energy_j"]["relative_residual"].as_f64().unwrap();
-    assert!(rel.abs() < 0.005);
+    // The books close to round-off, as natively (measured -1.5e-13 for this 60 s run).
+    assert!(rel.abs() < 1e-9, "{rel}");
     assert_eq!(run.column("t_s").unwrap().length(), 601);
 }
 
