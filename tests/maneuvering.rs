@@ -11,8 +11,9 @@ fn column<'a>(r: &'a aes_core::RunResult, name: &str) -> &'a [f64] {
 }
 
 /// Straight ahead at u0 = 22 knots the propellers' thrust balances X0 q = 1.383 MN (Table 2.3,
-/// prime system with L = 180 m): the steady state found on load holds for 60 s and its thrust is
-/// -X0 (1/2) rho L^2 u0^2 within 0.1 %.
+/// prime system with L = 180 m): the steady state found on load holds for 60 s (the speed unchanged
+/// to 1e-9 kn; measured exactly) and its thrust is -X0 (1/2) rho L^2 u0^2 within 1e-12 (measured
+/// 3.4e-15).
 #[test]
 fn straight_ahead_equilibrium_balances_x0() {
     let mut s = preset("turn-45").unwrap();
@@ -29,12 +30,12 @@ fn straight_ahead_equilibrium_balances_x0() {
     let x0 = 65.01e-5 * 0.5 * 1025.0 * 180.0 * 180.0 * u0 * u0;
     let thrust = final_value(&r, "thrust_kn") * 1e3;
     println!("thrust {thrust:.0} N, -X0 q = {x0:.0} N, {:.1} rpm", final_value(&r, "prop_rpm"));
-    assert!((thrust - x0).abs() < 1e-3 * x0, "thrust {thrust} vs {x0}");
+    assert!((thrust - x0).abs() < 1e-12 * x0, "thrust {thrust} vs {x0}");
     let kn = r.summary.signals["ship_speed_kn"];
-    assert!(kn.max - kn.min < 1e-3, "speed wandered {} .. {}", kn.min, kn.max);
+    assert!(kn.max - kn.min < 1e-9, "speed wandered {} .. {}", kn.min, kn.max);
     // And the model's surge mass is Table 2.3's (m - X_udot).
     let a = Abkowitz::new(&AbkowitzCoefficients::default(), true, u0, 180.0, 1025.0);
-    assert!((a.m11 / (646.9e-5 * 0.5 * 1025.0 * 180f64.powi(3)) - 1.0).abs() < 1e-12);
+    assert!((a.m11 / (646.9e-5 * 0.5 * 1025.0 * (180.0 * 180.0 * 180.0)) - 1.0).abs() < 1e-12);
 }
 
 /// Ch. 5.2.1, Figs. 5-3 to 5-5: a step order from 25 knots to full ahead. The thesis: the turbines
@@ -81,8 +82,8 @@ fn acceleration_dips_the_turbines_and_the_bus() {
 
 /// Ch. 5.2.2, Figs. 5-6 and 5-7: AC braking with a brake resistor. The ship's kinetic energy comes
 /// back through the propellers and motors; the books (turbine work, ship work, losses including the
-/// resistor, change of stored energy) close within 1 %; the turbines idle near rated speed while
-/// the resistor takes what the motors return.
+/// resistor, change of stored energy) close within 1e-9 of the turbine work (measured 4.0e-12); the
+/// turbines idle near rated speed while the resistor takes what the motors return.
 #[test]
 fn ac_braking_with_brake_resistor() {
     let r = run(&preset("ac-braking").unwrap());
@@ -95,17 +96,18 @@ fn ac_braking_with_brake_resistor() {
         e.stored_change / 1e6,
         e.relative_residual
     );
-    assert!(e.relative_residual.abs() < 0.01);
+    assert!(e.relative_residual.abs() < 1e-9);
     assert!(e.regenerated > 0.0);
     // The resistor takes the regenerated energy (the generators add a little at the start, before
-    // the bus reaches the chopper's threshold): within 2 %.
-    assert!((e.brake - e.regenerated).abs() < 0.02 * e.regenerated, "{} vs {}", e.brake, e.regenerated);
+    // the bus reaches the chopper's threshold): within 1 % (measured 0.71 %).
+    assert!((e.brake - e.regenerated).abs() < 0.01 * e.regenerated, "{} vs {}", e.brake, e.regenerated);
     // The sudden loss of load makes the turbines overshoot while the throttle closes at its slew
-    // limit (about +5 %, Fig. 5-7's "acceptably controlled" response); then they settle.
+    // limit (about +5 %, Fig. 5-7's "acceptably controlled" response); then they settle (to 1e-9
+    // pu; measured exactly at rated).
     let n = r.summary.signals["turbine_speed_pu"];
     println!("turbines {:.4} .. {:.4} pu, final {:.4}", n.min, n.max, n.final_);
     assert!(n.max < 1.06 && n.min > 0.98, "turbines {} .. {}", n.min, n.max);
-    assert!((n.final_ - 1.0).abs() < 0.005);
+    assert!((n.final_ - 1.0).abs() < 1e-9);
     let t = column(&r, "t_s");
     let throttle = column(&r, "throttle");
     let idle = t.iter().zip(throttle).filter(|(&t, _)| t > 40.0).all(|(_, &f)| f < 0.05);
@@ -127,12 +129,13 @@ fn ac_braking_unbuffered_overspeeds_the_turbines() {
     );
     assert!(n.max > 1.1, "turbine overspeed {}", n.max);
     assert_eq!(th.min, 0.0);
-    assert!(r.summary.energy_j.relative_residual.abs() < 0.01);
+    // The books close within 1e-9 (measured 5.5e-13).
+    assert!(r.summary.energy_j.relative_residual.abs() < 1e-9);
     assert_eq!(r.summary.energy_j.brake, 0.0);
 }
 
 /// The "offset discontinuity" of ch. 5.2.2 is not needed by our circuit (regular at zero slip);
-/// switching it on with a small band changes the braking energy by under 1 %.
+/// switching it on with a small band changes the braking energy by under 0.1 % (measured 0.024 %).
 #[test]
 fn zero_slip_offset_changes_little() {
     let base = run(&preset("ac-braking").unwrap()).summary.energy_j.regenerated;
@@ -140,7 +143,7 @@ fn zero_slip_offset_changes_little() {
     s.controllers.slip.zero_slip_offset_rad_s = 0.05;
     let with = run(&s).summary.energy_j.regenerated;
     println!("regenerated {base:.4e} J without offset, {with:.4e} J with");
-    assert!((with - base).abs() < 0.01 * base);
+    assert!((with - base).abs() < 1e-3 * base);
 }
 
 fn turn_figures(name: &str) -> (f64, f64, f64) {

@@ -20,7 +20,7 @@ fn mean(v: &[f64]) -> f64 {
 }
 fn std(v: &[f64]) -> f64 {
     let m = mean(v);
-    (v.iter().map(|x| (x - m).powi(2)).sum::<f64>() / v.len() as f64).sqrt()
+    (v.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / v.len() as f64).sqrt()
 }
 
 fn head_seas(seed: u64, stern: SternMotion, duration: f64) -> Scenario {
@@ -69,6 +69,7 @@ fn multi_rate_matches_single_rate() {
 /// Physics of eq. 2.57: in long regular head waves a hull follows the surface, so the hub keeps
 /// its depth (the wave at the stern and the stern's own motion cancel, within 10 % of the wave
 /// amplitude); eq. 2.57 as printed adds the pitch instead and the hub swings ten times as much.
+/// The stern wave itself has the ordered 1 m amplitude within 1e-5 m (measured 6.7e-7).
 #[test]
 fn long_waves_leave_the_hub_depth_alone() {
     let mut swings = Vec::new();
@@ -84,7 +85,7 @@ fn long_waves_leave_the_hub_depth_alone() {
         let wave = col(&r, "wave_stern_m");
         let swing = 0.5 * (max(h) - min(h));
         println!("{stern:?}: hub depth swing {swing:.3} m, stern wave {:.3} m", 0.5 * (max(wave) - min(wave)));
-        assert!((0.5 * (max(wave) - min(wave)) - 1.0).abs() < 0.02);
+        assert!((0.5 * (max(wave) - min(wave)) - 1.0).abs() < 1e-5);
         swings.push(swing);
     }
     assert!(swings[0] < 0.1 && swings[1] > 10.0 * swings[0], "{swings:?}");
@@ -134,8 +135,11 @@ fn head_seas_ss6_over_seeds() {
                     assert!((15.0..=100.0).contains(&(max(rpm) - min(rpm))), "rpm swing {}", max(rpm) - min(rpm));
                 }
             }
+            // Not round-off as in calm water: the maneuvering model books the surge work only, and
+            // the wave and hull forces in sway and yaw do work that no account holds (measured
+            // -0.9e-6 to -1.9e-5 over these ten runs; -3.4e-5 in the quarter-turn-ss6 preset).
             assert!(
-                r.summary.energy_j.relative_residual.abs() < 0.005,
+                r.summary.energy_j.relative_residual.abs() < 1e-4,
                 "energy residual {}",
                 r.summary.energy_j.relative_residual
             );

@@ -63,8 +63,11 @@ fn compare(name: &str, sys: &LinearSystem, sim: &BodePoint) {
         "{name} at {:.2} rad/s: linear {:.2} dB {:.1} deg, nonlinear {:.2} dB {:.1} deg",
         sim.omega_rad_s, lin.magnitude_db, lin.phase_deg, sim.magnitude_db, sim.phase_deg
     );
-    assert!((lin.magnitude_db - sim.magnitude_db).abs() < 1.0, "{name}: gain");
-    assert!(dphase.abs() < 5.0, "{name}: phase {dphase}");
+    // Measured at most 2.3e-3 dB and 4.9e-3 deg (motor open loop at 100 rad/s; the gaps are the
+    // perturbations' nonlinearity and the integration steps): asserted at 0.01 dB and 0.01 deg.
+    let dgain = lin.magnitude_db - sim.magnitude_db;
+    assert!(dgain.abs() < 0.01, "{name}: gain off by {dgain} dB");
+    assert!(dphase.abs() < 0.01, "{name}: phase off by {dphase} deg");
 }
 
 /// Fig. 4-8 (T* = 100 N m, five states) and Fig. 4-9 (200 N m, six states): open loop, stator
@@ -80,8 +83,8 @@ fn motor_open_loop_bode_matches_nonlinear_model() {
         let x0 = p.steady_vector(&ss, ss.above_threshold);
         let amp = 0.005 * ss.v_qs;
         for omega in [1.0, 10.0, 100.0] {
-            let f = |t: f64, x: &[f64]| p.open_loop_rhs(x, ss.v_qs + amp * (omega * t).sin(), ss.t_ref0, ss.t_star);
-            let y = |x: &[f64]| x[0].hypot(x[1]);
+            let f = |t: f64, x: &[f64]| p.open_loop_rhs(x, ss.v_qs + amp * libm::sin(omega * t), ss.t_ref0, ss.t_star);
+            let y = |x: &[f64]| libm::hypot(x[0], x[1]);
             let sim = simulated_point(&f, &y, &x0, omega, amp, 6.0, 2e-4, false);
             compare(&format!("motor open loop {t_star} N m"), &sys, &sim);
         }
@@ -100,7 +103,7 @@ fn motor_closed_loop_bode_matches_nonlinear_model() {
     let x0 = p.steady_vector(&ss, true);
     let sign = ss.currents[0].signum();
     for omega in [1.0, 5.0, 10.0] {
-        let f = |t: f64, x: &[f64]| p.closed_loop_rhs(x, ss.t_star + (omega * t).sin(), sign);
+        let f = |t: f64, x: &[f64]| p.closed_loop_rhs(x, ss.t_star + libm::sin(omega * t), sign);
         let y = |x: &[f64]| p.torque(&x[..4]);
         let sim = simulated_point(&f, &y, &x0, omega, 1.0, 6.0, 2e-4, false);
         compare("motor closed loop 100 N m", &sys, &sim);
@@ -121,7 +124,7 @@ fn generator_bode_matches_nonlinear_model() {
     let amp = 0.01 * ss.v_fd;
     let dt = 2e-4;
     for omega in [1.0, 10.0, 100.0] {
-        let f = |t: f64, x: &[f64]| p.rhs(x, ss.v_fd + amp * (omega * t).sin(), ss.omega, ss.i_load);
+        let f = |t: f64, x: &[f64]| p.rhs(x, ss.v_fd + amp * libm::sin(omega * t), ss.omega, ss.i_load);
         let y = |x: &[f64]| x[10] + p.k_d * x[7];
         let sim = simulated_point(&f, &y, &ss.x, omega, amp, 3.0, dt, true);
         compare("generator open loop", &ol, &sim);
@@ -131,7 +134,7 @@ fn generator_bode_matches_nonlinear_model() {
     assert!(cl.is_stable());
     let (x0, v_star) = p.closed_loop_equilibrium(&ss);
     for omega in [1.0, 5.0] {
-        let f = |t: f64, x: &[f64]| p.closed_loop_rhs(x, v_star + (omega * t).sin(), &ss, 10.0 * ss.v_fd);
+        let f = |t: f64, x: &[f64]| p.closed_loop_rhs(x, v_star + libm::sin(omega * t), &ss, 10.0 * ss.v_fd);
         let y = |x: &[f64]| x[10];
         let sim = simulated_point(&f, &y, &x0, omega, 1.0, 3.0, dt, true);
         compare("generator closed loop", &cl, &sim);

@@ -6,31 +6,33 @@ use aes_core::units::rpm_to_rad_s;
 use aes_tests::{final_value, run, startup_to};
 
 /// Over the whole start-up transient the energy books close: turbine work = work against the
-/// resistance + every loss + change of stored kinetic and electric energy, within 0.5 %
-/// (the tolerance; RK4 with 1 ms steps closes it to round-off).
+/// resistance + every loss + change of stored kinetic and electric energy, within 1e-9 of the
+/// turbine work (measured 4.8e-14: RK4 with 1 ms steps closes it to round-off).
 #[test]
 fn energy_balance_closes_over_startup() {
     let r = run(&startup());
     let e = r.summary.energy_j;
     assert!(e.turbine > 1e9, "turbine work {} J", e.turbine);
-    assert!(e.relative_residual.abs() < 0.005, "residual {} of {} J", e.residual, e.turbine);
+    assert!(e.relative_residual.abs() < 1e-9, "residual {} of {} J", e.residual, e.turbine);
     // Each stage passes on less energy than it receives.
     assert!(e.turbine > e.generator && e.generator > e.inverter && e.inverter > e.motor && e.motor > e.ship);
     assert!(e.losses > 0.0);
     // The recorded trace tells the same story: the trapezoidal integral of the recorded turbine
-    // and ship powers (0.1 s rows) matches the integrated accounts within 0.5 %.
+    // and ship powers (0.1 s rows) matches the integrated accounts, the turbine's within 5e-5
+    // (measured 5.7e-6: the throttle's steps within a row), the ship's within 1e-10 (measured 9e-12).
     let t = r.trace.column("t_s").unwrap();
     let trapz = |name: &str| {
         let p = r.trace.column(name).unwrap();
         (1..t.len()).map(|i| 0.5 * (p[i] + p[i - 1]) * (t[i] - t[i - 1])).sum::<f64>()
     };
     let (turb, ship) = (trapz("p_turbine_w"), trapz("p_ship_w"));
-    assert!((turb - e.turbine).abs() < 0.005 * e.turbine, "{turb} vs {}", e.turbine);
-    assert!((ship - e.ship).abs() < 0.005 * e.ship, "{ship} vs {}", e.ship);
+    assert!((turb - e.turbine).abs() < 5e-5 * e.turbine, "{turb} vs {}", e.turbine);
+    assert!((ship - e.ship).abs() < 1e-10 * e.ship, "{ship} vs {}", e.ship);
 }
 
 /// At steady state each stage's output is below its input, and the generator stage loses exactly
-/// its friction (4 machines x mu_2 omega_t^2 at 3600 rpm = 1.40 MW, analytic), within 1 %.
+/// its friction (4 machines x mu_2 omega_t^2 at 3600 rpm = 1.40 MW, analytic), within 2e-8
+/// (measured 1.8e-9: the turbines 6e-8 pu off rated after 400 s).
 #[test]
 fn steady_state_power_inventory() {
     let r = run(&startup());
@@ -39,26 +41,31 @@ fn steady_state_power_inventory() {
     let w = rpm_to_rad_s(3600.0);
     let friction = 4.0 * 2.46 * w * w;
     let loss = p.turbine - p.generator;
-    assert!((loss - friction).abs() < 0.01 * friction, "generator loss {loss} W vs friction {friction} W");
-    // Settled: ship at the ordered 25 knots within 0.05 kn, bus and turbines at set point within 0.5 %.
-    assert!((final_value(&r, "ship_speed_kn") - 25.0).abs() < 0.05);
-    assert!((final_value(&r, "bus_voltage_pu") - 1.0).abs() < 0.005);
-    assert!((final_value(&r, "turbine_speed_pu") - 1.0).abs() < 0.005);
+    assert!((loss - friction).abs() < 2e-8 * friction, "generator loss {loss} W vs friction {friction} W");
+    // Settled: ship at the ordered 25 knots within 0.005 kn (measured 1.6e-3), the bus at set point
+    // within 1e-4 pu (measured 2.2e-5) and the turbines within 1e-6 pu (measured 6.0e-8).
+    assert!((final_value(&r, "ship_speed_kn") - 25.0).abs() < 0.005);
+    assert!((final_value(&r, "bus_voltage_pu") - 1.0).abs() < 1e-4);
+    assert!((final_value(&r, "turbine_speed_pu") - 1.0).abs() < 1e-6);
 }
 
 /// Table 5.7 at 20, 25 and 30 knots (start-ups to each speed, 400 s to settle).
 ///
-/// - Generator (0.909/0.950/0.971): within 3 points. Not independent of the thesis: the friction
-///   coefficient mu_2 was chosen as the constant loss these three numbers imply.
+/// - Generator (0.909/0.950/0.971): within 1 point (measured at most 0.36, at 20 kn). Not
+///   independent of the thesis: the friction coefficient mu_2 was chosen as the constant loss these
+///   three numbers imply.
 /// - Power electronics (0.991/0.992/0.988): within 3 points. Ours is about 0.98: the notching
 ///   resistance (Table 5.4) and the stator resistance (Table 5.3) together lose about 2 % at these
-///   currents on a 5.6 kV bus; the thesis does not say how it got under 1 %.
-/// - Motor (0.993/0.992/0.991): within 3 points (copper losses of Table 2.1 plus eta_m = 0.998).
+///   currents on a 5.6 kV bus; the thesis does not say how it got under 1 % (gap measured at most
+///   1.95 points, at 30 kn).
+/// - Motor (0.993/0.992/0.991): within 1 point (measured at most 0.64, at 30 kn; copper losses of
+///   Table 2.1 plus eta_m = 0.998).
 /// - Propeller (0.705/0.703/0.702): within 5 points, not 3. By Table 5.6's definitions it is
 ///   R_sp u / (Q_m omega) = eta_0 eta_R / (1 - w) at the equilibrium advance ratio, which the
 ///   B-series polynomial fixes at eta_0 = 0.677 (J = 0.767) for P/D = 1: with eta_R = 0.98 that is
 ///   0.737. The thesis' 0.703 would need eta_R = 0.935 or a definition without the wake factor;
-///   we keep the physics and report the 3.4 point gap. The identity itself is checked to 1e-3.
+///   we keep the physics and report the 3.2-3.5 point gap. The identity itself is checked to 1e-3
+///   (measured at most 8.9e-5: the 400 s runs are not quite settled).
 #[test]
 fn table_5_7_efficiencies() {
     let thesis = [
@@ -71,8 +78,8 @@ fn table_5_7_efficiencies() {
         let e = r.summary.efficiency;
         let got = [e.generator, e.power_electronics, e.motor, e.propeller];
         println!("{kn} kn: ours {got:.3?}, thesis {want:?}");
-        for (i, name) in ["generator", "power electronics", "motor"].iter().enumerate() {
-            assert!((got[i] - want[i]).abs() < 0.03, "{kn} kn {name}: {} vs {}", got[i], want[i]);
+        for (i, name, tol) in [(0, "generator", 0.01), (1, "power electronics", 0.03), (2, "motor", 0.01)] {
+            assert!((got[i] - want[i]).abs() < tol, "{kn} kn {name}: {} vs {}", got[i], want[i]);
         }
         assert!((got[3] - want[3]).abs() < 0.05, "{kn} kn propeller: {} vs {}", got[3], want[3]);
         // eta = eta_0 eta_R / (1 - w) at the running advance ratio.
@@ -89,10 +96,11 @@ fn table_5_7_efficiencies() {
 /// shaft speed is fixed by the thrust balance alone: 2 kT(J) rho n^2 D^4 = R_sp(u) with Table 5.1's
 /// resistance (1.47 MN at 25 knots) gives J = 0.767 and 201 rpm for any B-series geometry near
 /// P/D = 1 (Z = 4..5, Ae/A0 = 0.55..0.8 all give 201-204 rpm). 225 rpm would need about 25 % more
-/// resistance than Table 5.1 gives. We test 201 rpm against that balance (1 %), and against the
-/// thesis within 12 %.
+/// resistance than Table 5.1 gives. We test 201 rpm against that balance (5e-4; measured 4.5e-5),
+/// and against the thesis within 12 %.
 ///
-/// Full ahead: the motors at their 38 MW limit; the thesis' "about 300 rpm" within 10 %.
+/// Full ahead: the motors at their 38 MW limit (to 1e-9; measured 1.3e-12 over); the thesis'
+/// "about 300 rpm" within 5 % (measured 3.7 %, 289 rpm).
 #[test]
 fn propeller_speeds_of_fig_5_1() {
     let r = run(&startup());
@@ -104,7 +112,7 @@ fn propeller_speeds_of_fig_5_1() {
     let j = ow.equilibrium_advance_ratio(surge.c_r, 2.0, 4.5, 1025.0, 0.1);
     let rpm_balance = 60.0 * aes_core::units::kn_to_m_s(25.0) * 0.9 / (j * 4.5);
     println!("25 kn: {rpm25:.1} rpm (balance {rpm_balance:.1}, thesis 225)");
-    assert!((rpm25 - rpm_balance).abs() < 0.01 * rpm_balance);
+    assert!((rpm25 - rpm_balance).abs() < 5e-4 * rpm_balance);
     assert!((rpm25 - 225.0).abs() < 0.12 * 225.0);
 
     let mut full = startup_to(40.0, 500.0);
@@ -114,12 +122,13 @@ fn propeller_speeds_of_fig_5_1() {
     let p_motor = r.summary.power_inventory_w.motor / 2.0;
     let kn = final_value(&r, "ship_speed_kn");
     println!("full ahead: {rpm_full:.1} rpm, {kn:.2} kn, {:.2} MW per motor", p_motor / 1e6);
-    assert!((rpm_full - 300.0).abs() < 0.10 * 300.0, "full ahead {rpm_full} rpm");
-    assert!(p_motor <= 38.0e6 * 1.001, "motor power {p_motor} W above rating");
+    assert!((rpm_full - 300.0).abs() < 0.05 * 300.0, "full ahead {rpm_full} rpm");
+    assert!(p_motor <= 38.0e6 * (1.0 + 1e-9), "motor power {p_motor} W above rating");
 }
 
 /// A run that starts at the calm-water steady state stays there (the initial-state solver and the
-/// dynamics agree): after 60 s every signal is within 0.1 % of its start.
+/// dynamics agree): after 60 s every signal is within 1e-12 of its start (measured: exactly
+/// unchanged, the initial state is a fixed point of the RK4 step).
 #[test]
 fn steady_initial_state_is_steady() {
     let mut s = startup_to(25.0, 60.0);
@@ -128,7 +137,7 @@ fn steady_initial_state_is_steady() {
     for name in ["ship_speed_kn", "prop_rpm", "turbine_speed_pu", "bus_voltage_pu", "im_power_pu", "throttle"] {
         let st = r.summary.signals[name];
         let span = (st.max - st.min) / st.mean.abs();
-        assert!(span < 1e-3, "{name} wandered by {span:e} (min {}, max {})", st.min, st.max);
+        assert!(span < 1e-12, "{name} wandered by {span:e} (min {}, max {})", st.min, st.max);
     }
 }
 

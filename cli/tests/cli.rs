@@ -180,7 +180,8 @@ fn section_command() {
     assert_eq!(v["omega"].as_array().unwrap().len(), 3);
     for i in 0..3 {
         let (b, f) = (v["heave"]["damping"][i].as_f64().unwrap(), v["heave"]["damping_far_field"][i].as_f64().unwrap());
-        assert!((b / f - 1.0).abs() < 0.01, "{b} vs {f}");
+        // Measured at most 2.2e-4 (at 4 rad/s).
+        assert!((b / f - 1.0).abs() < 1e-3, "{b} vs {f}");
         assert!(v["sway"]["added_mass"][i].as_f64().unwrap() > 0.0);
     }
     let (ok, _, err) = aes_sim(&["section", "--beam=-2", "--draft", "1", "--area-coeff", "0.7", "--omega", "1"]);
@@ -199,7 +200,8 @@ fn rao_command() {
     let heave = v["heave"]["amp"][0].as_f64().unwrap();
     let pitch = v["pitch"]["amp"][0].as_f64().unwrap();
     let k = 0.12f64 * 0.12 / 9.81;
-    assert!((heave - 1.0).abs() < 0.03 && (pitch / k - 1.0).abs() < 0.03, "{heave} {pitch}");
+    // Measured: heave 1 - 5.5e-4, pitch / k 1 + 0.0104 (lambda / L = 24 is not yet the limit).
+    assert!((heave - 1.0).abs() < 3e-3 && (pitch / k - 1.0).abs() < 0.02, "{heave} {pitch}");
     assert!(v["omega_e"][0].as_f64().unwrap() > 0.12);
     for key in ["sway", "roll", "yaw"] {
         assert_eq!(v[key]["phase_deg"].as_array().unwrap().len(), 2);

@@ -391,8 +391,11 @@ mod tests {
         let z_s = Complex64::new(m.r_s, we * m.l_s);
         let z_m = j * we * m.l_m;
         let z_th = z_s * z_m / (z_s + z_m);
-        let v_th = (m.v_rated * z_m / (z_s + z_m)).norm();
-        let root = (z_th.re.powi(2) + (z_th.im + we * m.l_r).powi(2)).sqrt();
+        let v_th = {
+            let v = m.v_rated * z_m / (z_s + z_m);
+            libm::hypot(v.re, v.im)
+        };
+        let root = libm::hypot(z_th.re, z_th.im + we * m.l_r);
         let s_max = m.r_r / root;
         let t_max = 3.0 * m.pole_pairs * v_th * v_th / (2.0 * we * (z_th.re + root));
         // Fixed voltage at fixed omega_e: sweep slip directly.

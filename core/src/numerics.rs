@@ -16,6 +16,24 @@ pub fn bisect(f: impl Fn(f64) -> f64, lo: f64, hi: f64, iterations: u32) -> f64 
     0.5 * (a + b)
 }
 
+/// x^n by repeated squaring, in the order LLVM expands `f64::powi` with a constant exponent
+/// (x^4 = (x x)(x x), x^5 = x ((x x)(x x))), so replacing such a `powi` by this kept every preset's
+/// numbers (the golden test). Plain multiplications in a fixed order: the same in every build,
+/// unlike `powi`, whose lowering is up to the optimizer (or a runtime call).
+pub fn powi(x: f64, n: u32) -> f64 {
+    let (mut result, mut square, mut n) = (1.0, x, n);
+    while n > 0 {
+        if n & 1 == 1 {
+            result *= square;
+        }
+        n >>= 1;
+        if n > 0 {
+            square *= square;
+        }
+    }
+    result
+}
+
 /// One classical fourth-order Runge-Kutta step of dx/dt = f(t, x) from `t` over `dt` [s], the
 /// integrator of the simulator and the stability tool. `f(t, y, dx)` writes the derivative into
 /// `dx`. With a fixed-size array state nothing is allocated.
@@ -82,10 +100,32 @@ mod tests {
         for n in [1, 2, 5, 16, 33] {
             let (x, w) = super::gauss_legendre(n, -1.0, 3.0);
             // Degree 2n-1 is exact: integral of t^(2n-1) over [-1, 3] = (3^(2n) - 1) / (2n).
-            let d = 2 * n as i32 - 1;
-            let exact = (3f64.powi(d + 1) - 1.0) / (d + 1) as f64;
-            let got: f64 = x.iter().zip(&w).map(|(t, w)| w * t.powi(d)).sum();
+            let d = 2 * n as u32 - 1;
+            let exact = (super::powi(3.0, d + 1) - 1.0) / (d + 1) as f64;
+            let got: f64 = x.iter().zip(&w).map(|(t, w)| w * super::powi(*t, d)).sum();
             assert!((got / exact - 1.0).abs() < 1e-12, "n={n}: {got} vs {exact}");
+        }
+    }
+
+    /// The helper multiplies in LLVM's order for a constant `powi` exponent (binary decomposition,
+    /// low bits first). Checked against explicit products rather than std's `powi`, whose bits
+    /// depend on how the optimizer lowers it in context (with x.powi(2..=7) in one expression
+    /// LLVM once gave x^6 one ulp off x^2 x^4).
+    #[test]
+    fn powi_multiplies_in_llvm_order() {
+        let mut x = 0.123_456_789_f64;
+        for _ in 0..10_000 {
+            x = x * 1.618_033_988_749_895 + 0.1;
+            if x > 50.0 {
+                x -= 49.876_543_21;
+            }
+            let (p, x2) = (super::powi, x * x);
+            let x4 = x2 * x2;
+            for (n, want) in
+                [(0, 1.0), (1, x), (2, x2), (3, x * x2), (4, x4), (5, x * x4), (6, x2 * x4), (7, x * x2 * x4)]
+            {
+                assert_eq!(p(x, n).to_bits(), want.to_bits(), "{x}^{n}");
+            }
         }
     }
 

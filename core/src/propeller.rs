@@ -264,8 +264,9 @@ mod four_quadrant_tests {
         let fq = FourQuadrant::b4_70().unwrap();
         let ow = OpenWater::b_series(1.0, 0.70, 4).unwrap();
         let (n, d, rho) = (2.0, 4.0, 1025.0);
-        let kt = |j: f64| fq.load(n, j * n * d, &Conditions::open_water(d, rho)).thrust_n / (rho * n * n * d.powi(4));
-        let kq = |j: f64| fq.load(n, j * n * d, &Conditions::open_water(d, rho)).torque_nm / (rho * n * n * d.powi(5));
+        let (d4, d5) = (crate::numerics::powi(d, 4), crate::numerics::powi(d, 5));
+        let kt = |j: f64| fq.load(n, j * n * d, &Conditions::open_water(d, rho)).thrust_n / (rho * n * n * d4);
+        let kq = |j: f64| fq.load(n, j * n * d, &Conditions::open_water(d, rho)).torque_nm / (rho * n * n * d5);
         assert!((kt(0.0) - 0.445).abs() < 0.0015, "KT(0) = {}", kt(0.0));
         assert!((kt(0.6) - 0.219).abs() < 0.0015, "KT(0.6) = {}", kt(0.6));
         assert!((kq(0.0) - 0.0666).abs() < 0.00015, "KQ(0) = {}", kq(0.0));

@@ -41,7 +41,8 @@ fn startup_runs_in_chunks() {
     let kn = s["signals"]["ship_speed_kn"]["final"].as_f64().unwrap();
     assert!(kn > 15.0 && kn < 30.0, "{kn}");
     let rel = s["energy_j"]["relative_residual"].as_f64().unwrap();
-    assert!(rel.abs() < 0.005);
+    // The books close to round-off, as natively (measured -1.5e-13 for this 60 s run).
+    assert!(rel.abs() < 1e-9, "{rel}");
     assert_eq!(run.column("t_s").unwrap().length(), 601);
 }
 
@@ -51,7 +52,8 @@ fn stability_tool_in_wasm() {
     let out = ips_analysis("motor", 377.0, 28.5, 45.0, 100.0, false, 0.1, 100.0, 10).unwrap();
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let i = v["steady_state"]["i_s_mag"].as_f64().unwrap();
-    assert!((i - 47.80).abs() < 0.02 * 47.80, "{i}");
+    // Within 1e-4 as natively (measured 5.5e-5, core's table_4_2).
+    assert!((i - 47.80).abs() < 1e-4 * 47.80, "{i}");
     assert_eq!(v["bode"]["magnitude_db"].as_array().unwrap().len(), 10);
     assert!(ips_analysis("rotor", 0.0, 0.0, 0.0, 0.0, false, 0.1, 1.0, 3).is_err());
 }

@@ -20,6 +20,11 @@ pub fn cabs(z: C) -> f64 {
     libm::hypot(z.re, z.im)
 }
 
+/// arg z in (-pi, pi] (libm's atan2, the same in every build).
+pub fn carg(z: C) -> f64 {
+    libm::atan2(z.im, z.re)
+}
+
 const EULER_GAMMA: f64 = 0.577_215_664_901_532_9;
 
 /// G(u) = e^u E1(u), the scaled exponential integral on its principal branch. The 2-D wave source

@@ -367,7 +367,8 @@ mod tests {
                     // slowly) the near-field value is at the level of the least-squares residual: the check
                     // is that both are negligible, |near - far| < 1e-3 omega a.
                     if far < 1e-3 * w * a {
-                        assert!((near - far).abs() < 1e-3 * w * a, "{name} at {w}: {near} vs {far}, a {a}");
+                        // Measured 8.0e-6 omega a.
+                        assert!((near - far).abs() < 1e-4 * w * a, "{name} at {w}: {near} vs {far}, a {a}");
                         continue;
                     }
                     assert!((near - far).abs() < 0.01 * far, "{name} at omega {w}, {m:?}: near {near} far {far}");
@@ -384,12 +385,14 @@ mod tests {
     fn semicircle_limits() {
         let hi = semicircle(40.0);
         assert!((hi.a33 / NORM - 1.0).abs() < 0.02, "a33(inf) {}", hi.a33 / NORM);
-        assert!(hi.b33 / (NORM * (40.0 * G).sqrt()) < 1e-4);
+        // Measured at the ends of the range: a33(inf) 1.09 % off, b33(inf) 4.2e-6, a22(0) 1.3e-4 off,
+        // b22(0) 6.3e-8, b33(0) 1.3e-3 off.
+        assert!(hi.b33 / (NORM * (40.0 * G).sqrt()) < 2e-5);
         let lo = semicircle(1e-4);
-        assert!((lo.a22 / NORM - 1.0).abs() < 0.01, "a22(0) {}", lo.a22 / NORM);
-        assert!(lo.b22 / (NORM * (1e-4 * G).sqrt()) < 1e-4);
+        assert!((lo.a22 / NORM - 1.0).abs() < 1e-3, "a22(0) {}", lo.a22 / NORM);
+        assert!(lo.b22 / (NORM * (1e-4 * G).sqrt()) < 1e-6);
         let w = (1e-4 * G).sqrt();
-        assert!((lo.b33 / (4.0 * RHO * w) - 1.0).abs() < 0.02, "b33(0) {}", lo.b33 / (4.0 * RHO * w));
+        assert!((lo.b33 / (4.0 * RHO * w) - 1.0).abs() < 5e-3, "b33(0) {}", lo.b33 / (4.0 * RHO * w));
         let a: Vec<f64> = [1e-1, 1e-2, 1e-3, 1e-4].iter().map(|&k| semicircle(k).a33 / NORM).collect();
         assert!(a.windows(2).all(|w| w[1] > w[0] + 0.3), "a33 grows as omega -> 0: {a:?}");
         for ka in [0.1, 1.0, 3.0] {

@@ -564,6 +564,7 @@ pub fn natural_periods(ship: &Ship, table: &RadiationTable) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::seakeeping::complex::{cabs, carg};
     use std::f64::consts::PI;
     use std::sync::OnceLock;
 
@@ -612,28 +613,30 @@ mod tests {
     }
 
     /// Long waves in head seas: the ship follows the surface, heave RAO -> 1 and pitch RAO / k
-    /// -> 1, at rest and at Fn 0.28 (tolerance 3 % at lambda / L = 27).
+    /// -> 1, at rest and at Fn 0.28, at lambda / L = 27: heave within 3e-3 (measured 1 - 1.0e-3 and
+    /// 1 + 6e-4), pitch / k within 2 % (measured 1.0143 and 1.0103).
     #[test]
     fn long_wave_limits_in_head_seas() {
         let (ship, t) = hull();
         for u in [0.0, fn028()] {
             let r = response(ship, t, 0.12, u, PI, 1.0);
-            println!("U {u:.2}: heave {:.4} pitch/k {:.4}", r.heave.norm(), r.pitch.norm() / r.k);
-            assert!((r.heave.norm() - 1.0).abs() < 0.03 && (r.pitch.norm() / r.k - 1.0).abs() < 0.03);
+            println!("U {u:.2}: heave {:.4} pitch/k {:.4}", cabs(r.heave), cabs(r.pitch) / r.k);
+            assert!((cabs(r.heave) - 1.0).abs() < 3e-3 && (cabs(r.pitch) / r.k - 1.0).abs() < 0.02);
             // Phases: heave in phase with the crest, pitch bow-down a quarter period later
             // (eta5 = i k cos(beta) for a surface-following hull).
-            assert!(r.heave.arg().abs() < 0.1, "heave phase {}", r.heave.arg());
-            assert!((r.pitch.arg() + PI / 2.0).abs() < 0.1, "pitch phase {}", r.pitch.arg());
+            assert!(carg(r.heave).abs() < 0.1, "heave phase {}", carg(r.heave));
+            assert!((carg(r.pitch) + PI / 2.0).abs() < 0.1, "pitch phase {}", carg(r.pitch));
         }
     }
 
-    /// In long beam waves the hull moves with the water particles: sway and heave RAO -> 1.
+    /// In long beam waves the hull moves with the water particles: sway and heave RAO -> 1 (sway
+    /// within 1 %, measured 0.9956; heave within 1e-3, measured 1.0000).
     #[test]
     fn long_wave_limits_in_beam_seas() {
         let (ship, t) = hull();
         let r = response(ship, t, 0.12, 0.0, PI / 2.0, 1.0);
-        println!("beam seas: sway {:.4} heave {:.4} roll/k {:.4}", r.sway.norm(), r.heave.norm(), r.roll.norm() / r.k);
-        assert!((r.sway.norm() - 1.0).abs() < 0.03 && (r.heave.norm() - 1.0).abs() < 0.03);
+        println!("beam seas: sway {:.4} heave {:.4} roll/k {:.4}", cabs(r.sway), cabs(r.heave), cabs(r.roll) / r.k);
+        assert!((cabs(r.sway) - 1.0).abs() < 0.01 && (cabs(r.heave) - 1.0).abs() < 1e-3);
     }
 
     /// Port/starboard symmetry: at beta and -beta heave and pitch are equal, sway, roll and yaw
@@ -646,10 +649,10 @@ mod tests {
             let m = response(ship, t, w, fn028(), (-b).to_radians(), 1.0);
             let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs()).max(1e-12);
             for (x, y) in [(p.sway, m.sway), (p.roll, m.roll), (p.yaw, m.yaw), (p.heave, m.heave), (p.pitch, m.pitch)] {
-                assert!(close(x.norm(), y.norm()), "{x} vs {y}");
+                assert!(close(cabs(x), cabs(y)), "{x} vs {y}");
             }
             assert!(close(p.drift_force, -m.drift_force) && close(p.added_resistance, m.added_resistance));
-            assert!(p.sway.norm() > 1e-3 && p.roll.norm() > 1e-4);
+            assert!(cabs(p.sway) > 1e-3 && cabs(p.roll) > 1e-4);
         }
     }
 
@@ -662,7 +665,8 @@ mod tests {
         let (ship, t) = hull();
         let n = ship.strips.len();
         let c33: f64 = (0..n).map(|i| ship.strips[i].weight * ship.strips[i].beam).sum::<f64>();
-        assert!((c33 / ship.awp - 1.0).abs() < 0.01, "Awp {} vs {}", c33, ship.awp);
+        // The same strip sum as the hull's Awp (measured exactly equal).
+        assert!((c33 / ship.awp - 1.0).abs() < 1e-12, "Awp {} vs {}", c33, ship.awp);
         let (t3, t5) = natural_periods(ship, t);
         let est3 = 2.0 * PI * (2.0 * ship.volume / (9.81 * ship.awp)).sqrt();
         let i5 = ship.mass * (ship.mass_props.kyy_m * ship.mass_props.kyy_m);
@@ -719,7 +723,8 @@ mod tests {
             let w = 0.3 + 0.03 * i as f64;
             let a = response(ship, t, w, fn028(), PI, 1.0);
             let b = response(ship, &tf, w, fn028(), PI, 1.0);
-            assert!((a.heave - b.heave).norm() < 0.01 && ((a.pitch - b.pitch) / a.k.max(b.k)).norm() < 0.01, "{w}");
+            // Measured at most 5.6e-4 (heave) and 2.0e-4 (pitch / k).
+            assert!(cabs(a.heave - b.heave) < 2e-3 && cabs((a.pitch - b.pitch) / a.k.max(b.k)) < 2e-3, "{w}");
         }
     }
 }

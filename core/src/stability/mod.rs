@@ -47,7 +47,7 @@ impl LinearSystem {
         let mut poles: Vec<Pole> = ev
             .iter()
             .map(|l| {
-                let w = l.norm();
+                let w = cabs(*l);
                 Pole { re: l.re, im: l.im, damping: if w > 0.0 { -l.re / w } else { 1.0 }, natural_frequency_rad_s: w }
             })
             .collect();
@@ -82,7 +82,7 @@ impl LinearSystem {
             .iter()
             .map(|&w| {
                 let g = self.response(w);
-                BodePoint { omega_rad_s: w, magnitude_db: 20.0 * g.norm().log10(), phase_deg: g.arg().to_degrees() }
+                BodePoint { omega_rad_s: w, magnitude_db: 20.0 * libm::log10(cabs(g)), phase_deg: carg(g).to_degrees() }
             })
             .collect()
     }
@@ -104,10 +104,20 @@ impl LinearSystem {
     }
 }
 
+/// |z| through libm (num-complex's `norm` calls the platform's hypot, which differs native vs wasm).
+fn cabs(z: Complex64) -> f64 {
+    libm::hypot(z.re, z.im)
+}
+
+/// arg z in (-pi, pi] through libm (num-complex's `arg` calls the platform's atan2).
+fn carg(z: Complex64) -> f64 {
+    libm::atan2(z.im, z.re)
+}
+
 /// Logarithmically spaced frequencies from `from` to `to` [rad/s], `n` points.
 pub fn log_space(from: f64, to: f64, n: usize) -> Vec<f64> {
-    let (a, b) = (from.ln(), to.ln());
-    (0..n).map(|i| (a + (b - a) * i as f64 / (n.max(2) - 1) as f64).exp()).collect()
+    let (a, b) = (libm::log(from), libm::log(to));
+    (0..n).map(|i| libm::exp(a + (b - a) * i as f64 / (n.max(2) - 1) as f64)).collect()
 }
 
 /// Central-difference Jacobian of f at x (for checking the analytic linearizations).
@@ -138,14 +148,14 @@ pub fn fourier_gain(t: &[f64], y: &[f64], omega: f64, input_amplitude: f64) -> B
         let dt = t[i] - t[i - 1];
         let ym = 0.5 * (y[i] + y[i - 1]);
         let tm = 0.5 * (t[i] + t[i - 1]);
-        s += ym * (omega * tm).sin() * dt;
-        c += ym * (omega * tm).cos() * dt;
+        s += ym * libm::sin(omega * tm) * dt;
+        c += ym * libm::cos(omega * tm) * dt;
     }
     let span = t[t.len() - 1] - t[0];
     let (a_sin, a_cos) = (2.0 * s / span, 2.0 * c / span);
     // Input u = A sin(omega t): y = |G| A sin(omega t + phi) = |G| A (sin cos phi + cos sin phi).
     let g = Complex64::new(a_sin, a_cos) / input_amplitude;
-    BodePoint { omega_rad_s: omega, magnitude_db: 20.0 * g.norm().log10(), phase_deg: g.arg().to_degrees() }
+    BodePoint { omega_rad_s: omega, magnitude_db: 20.0 * libm::log10(cabs(g)), phase_deg: carg(g).to_degrees() }
 }
 
 /// One RK4 step of dx/dt = f(t, x).
@@ -243,13 +253,13 @@ pub fn margins(l: &dyn Fn(f64) -> Complex64, w_lo: f64, w_hi: f64) -> Margins {
         phase_margin_deg: None,
         gain_crossover_rad_s: None,
     };
-    let mag = |w: f64| l(w).norm() - 1.0;
+    let mag = |w: f64| cabs(l(w)) - 1.0;
     let im = |w: f64| l(w).im;
     for k in 1..grid.len() {
         let (a, b) = (grid[k - 1], grid[k]);
         if out.gain_crossover_rad_s.is_none() && (mag(a) > 0.0) != (mag(b) > 0.0) {
             let w = refine(a, b, &mag);
-            let mut pm = l(w).arg().to_degrees() + 180.0;
+            let mut pm = carg(l(w)).to_degrees() + 180.0;
             if pm > 180.0 {
                 pm -= 360.0;
             }
@@ -260,7 +270,7 @@ pub fn margins(l: &dyn Fn(f64) -> Complex64, w_lo: f64, w_hi: f64) -> Margins {
             let w = refine(a, b, &im);
             if l(w).re < 0.0 {
                 out.phase_crossover_rad_s = Some(w);
-                out.gain_margin_db = Some(-20.0 * l(w).norm().log10());
+                out.gain_margin_db = Some(-20.0 * libm::log10(cabs(l(w))));
             }
         }
     }
