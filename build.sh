@@ -8,6 +8,8 @@
 #                         (release mode), the wasm-bindgen tests in Node and the browser
 #                         end-to-end test in headless Chromium (screenshots in target/)
 #   ./build.sh bench      simulated seconds per wall second of the start-up preset
+#   ./build.sh golden     regenerate the golden records of every preset (tests/golden/) after a
+#                         deliberate physics change; review the diff before committing
 #
 # Safe on a fresh machine that reaches only the package registries: every tool comes from
 # crates.io or npm by name, and each step is skipped when its result is already there.
@@ -141,13 +143,17 @@ case "${1:-serve}" in
     setup
     run_tests
     ;;
+  golden)
+    UPDATE_GOLDEN=1 cargo test --release -p aes-tests --test golden
+    git --no-pager diff --stat -- tests/golden || true
+    ;;
   bench)
     setup
     build_native
     ./target/release/aes-sim bench startup
     ;;
   *)
-    echo "usage: ./build.sh [serve|build|test|bench]" >&2
+    echo "usage: ./build.sh [serve|build|test|bench|golden]" >&2
     exit 2
     ;;
 esac

@@ -6,6 +6,7 @@
 
 pub mod control;
 pub mod dc_link;
+pub mod fft;
 pub mod fuel;
 pub mod fuel_study;
 pub mod generator;
@@ -20,6 +21,7 @@ pub mod presets;
 pub mod prime_mover;
 pub mod propeller;
 pub mod propeller_losses;
+pub mod regression;
 pub mod rudder;
 pub mod scenario;
 pub mod seakeeping;

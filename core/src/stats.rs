@@ -3,7 +3,6 @@
 //! threads, Welch periodograms, and the Rice up-crossing rate of a Gaussian process.
 
 use num_complex::Complex64;
-use rustfft::FftPlanner;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -329,7 +328,7 @@ pub fn welch(signal: &[f64], dt: f64, segment: usize) -> (Vec<f64>, Vec<f64>) {
     let step = (seg / 2).max(1);
     let window: Vec<f64> = (0..seg).map(|i| 0.5 - 0.5 * libm::cos(2.0 * PI * i as f64 / seg as f64)).collect();
     let wsum2: f64 = window.iter().map(|w| w * w).sum();
-    let fft = FftPlanner::<f64>::new().plan_fft_forward(seg);
+    let fft = crate::fft::Fft::new(seg);
     let n_out = seg / 2 + 1;
     let mut psd = vec![0.0; n_out];
     let mut count = 0usize;
@@ -341,7 +340,7 @@ pub fn welch(signal: &[f64], dt: f64, segment: usize) -> (Vec<f64>, Vec<f64>) {
         for i in 0..seg {
             buf[i] = Complex64::new((part[i] - mean) * window[i], 0.0);
         }
-        fft.process(&mut buf);
+        fft.forward(&mut buf);
         for (k, p) in psd.iter_mut().enumerate() {
             let two = if k == 0 || (seg % 2 == 0 && k == seg / 2) { 1.0 } else { 2.0 };
             *p += two * buf[k].norm_sqr() * dt / wsum2;

@@ -99,3 +99,66 @@ fn monte_carlo_in_wasm() {
     let r: serde_json::Value = serde_json::from_str(&rao_json(20.0, 180.0, vec![0.12, 0.6]).unwrap()).unwrap();
     assert!((r["heave"]["amp"][0].as_f64().unwrap() - 1.0).abs() < 0.03);
 }
+
+/// Every preset's golden record (tests/golden/*.json, made natively) recomputed in wasm: summary,
+/// trace fingerprint and the Monte Carlo presets' four-trial studies, bit for bit.
+#[wasm_bindgen_test]
+fn golden_records_in_wasm() {
+    macro_rules! golden {
+        ($($name:literal),*) => {
+            [$(($name, include_str!(concat!("../../tests/golden/", $name, ".json"))),)*]
+        };
+    }
+    let stored = golden!(
+        "startup",
+        "acceleration",
+        "acceleration-high-gains",
+        "ac-braking",
+        "ac-braking-unbuffered",
+        "turn-45",
+        "turn-90",
+        "turn-360",
+        "quarter-turn-ss3",
+        "quarter-turn-ss6",
+        "fuel-regular-seas",
+        "head-seas-ss6",
+        "turn-360-ss6",
+        "mc-excess-energy",
+        "mc-arrival"
+    );
+    assert_eq!(stored.len(), aes_core::presets::PRESET_NAMES.len(), "a preset without a golden record here");
+    let mut failed = Vec::new();
+    for (name, text) in stored {
+        let now = aes_core::regression::record(name).unwrap();
+        if now != text {
+            let (a, b): (serde_json::Value, serde_json::Value) =
+                (serde_json::from_str(text).unwrap(), serde_json::from_str(&now).unwrap());
+            let mut paths = Vec::new();
+            differences(&a, &b, name.to_string(), &mut paths);
+            failed.push(paths.into_iter().take(8).collect::<Vec<_>>().join("\n"));
+        }
+    }
+    assert!(failed.is_empty(), "wasm differs from the golden records at:\n{}", failed.join("\n"));
+}
+
+/// Paths (with both values) where two JSON documents differ.
+fn differences(a: &serde_json::Value, b: &serde_json::Value, path: String, out: &mut Vec<String>) {
+    use serde_json::Value;
+    match (a, b) {
+        (Value::Object(x), Value::Object(y)) => {
+            for (k, v) in x {
+                match y.get(k) {
+                    Some(w) => differences(v, w, format!("{path}.{k}"), out),
+                    None => out.push(format!("{path}.{k}: missing")),
+                }
+            }
+        }
+        (Value::Array(x), Value::Array(y)) if x.len() == y.len() => {
+            for (i, (v, w)) in x.iter().zip(y).enumerate() {
+                differences(v, w, format!("{path}.{i}"), out);
+            }
+        }
+        _ if a != b => out.push(format!("{path}: golden {a}, wasm {b}")),
+        _ => {}
+    }
+}
