@@ -511,8 +511,8 @@ impl Simulation {
             let xd = x[SURGE] * cp - x[SWAY] * sp;
             let yd = x[SURGE] * sp + x[SWAY] * cp;
             let s = sea.sample(self.t, x[X_POS], x[Y_POS], xd, yd);
-            self.ctl.held.wave_fx = s.fx;
-            self.ctl.held.wave_fy = s.fy;
+            self.ctl.held.sea.wave_fx = s.fx;
+            self.ctl.held.sea.wave_fy = s.fy;
         }
         let hub = sea.last.hub_at(self.t + 0.5 * self.dt);
         let h_r = hub / (0.5 * self.plant.prop_diameter);
@@ -524,8 +524,8 @@ impl Simulation {
             let n_hz = x[omega_rm(s)] / (2.0 * PI);
             let tv = self.vent[s].step(&self.losses, h_r, n_hz, self.dt);
             let (bt, bq) = loss_factors(&self.losses, h_r, tv);
-            self.ctl.held.beta_t[s] = bt;
-            self.ctl.held.beta_q[s] = bq;
+            self.ctl.held.sea.beta_t[s] = bt;
+            self.ctl.held.sea.beta_q[s] = bq;
             if bt < 1.0 && self.first_event.is_none() {
                 self.first_event = Some(self.t);
             }

@@ -99,8 +99,8 @@ pub enum Energy {
     Regenerated,
 }
 
-/// Held controller outputs (piecewise constant between controller samples) and held sea inputs
-/// (constant over one time step).
+/// Inputs held over a time step: the controllers' outputs (piecewise constant between controller
+/// samples) and the sea's (updated by the seaway between steps).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Held {
     /// Throttle of each turbine [fraction].
@@ -111,12 +111,26 @@ pub struct Held {
     pub slip: [f64; N_SHAFTS],
     /// Rudder angle [rad].
     pub rudder: f64,
+    /// What the sea does to the ship this step.
+    pub sea: SeaInputs,
+}
+
+/// The sea's inputs to the plant over one time step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeaInputs {
     /// Surface losses of each propeller, beta_T and beta_Q (ch. 2.3) [-].
     pub beta_t: [f64; N_SHAFTS],
     pub beta_q: [f64; N_SHAFTS],
     /// Slowly varying second-order wave force, ship axes: forward and to starboard [N] (eq. 2.60).
     pub wave_fx: f64,
     pub wave_fy: f64,
+}
+
+impl Default for SeaInputs {
+    /// Calm water: no losses, no force.
+    fn default() -> Self {
+        SeaInputs { beta_t: [1.0; N_SHAFTS], beta_q: [1.0; N_SHAFTS], wave_fx: 0.0, wave_fy: 0.0 }
+    }
 }
 
 impl Default for Held {
@@ -126,10 +140,7 @@ impl Default for Held {
             field_voltage: [0.0; N_SETS],
             slip: [0.0; N_SHAFTS],
             rudder: 0.0,
-            beta_t: [1.0; N_SHAFTS],
-            beta_q: [1.0; N_SHAFTS],
-            wave_fx: 0.0,
-            wave_fy: 0.0,
+            sea: SeaInputs::default(),
         }
     }
 }
@@ -353,7 +364,7 @@ impl Plant {
             let omega_e = self.motor.pole_pairs * w_rm + h.slip[s];
             let v_m = self.motor.phase_voltage(omega_e, v_max);
             let mp = self.motor.operate(v_m, omega_e, h.slip[s], w_rm);
-            let pl = self.propeller_load_in_waves(w_rm, va, h.beta_t[s], h.beta_q[s]);
+            let pl = self.propeller_load_in_waves(w_rm, va, h.sea.beta_t[s], h.sea.beta_q[s]);
             let p_brake = self.brake_power(v_c);
             dx[bus_voltage(s)] = self.dc_link.bus_voltage_rate(i_rect, mp.p_in + p_brake, v_c); // eqs. 2.7, 2.10
             dx[omega_rm(s)] = (mp.torque - pl.torque_nm) / self.shaft_inertia; // eq. 2.6 in rad/s
@@ -375,10 +386,10 @@ impl Plant {
         }
         let resistance = match &self.hull {
             Hull::Surge => {
-                dx[SURGE] = self.surge.acceleration(thrust + h.wave_fx - self.extra_resistance, u); // eq. 2.16
+                dx[SURGE] = self.surge.acceleration(thrust + h.sea.wave_fx - self.extra_resistance, u); // eq. 2.16
                 dx[SWAY] = 0.0;
                 dx[YAW_RATE] = 0.0;
-                self.surge.resistance(u) - h.wave_fx + self.extra_resistance
+                self.surge.resistance(u) - h.sea.wave_fx + self.extra_resistance
             }
             Hull::Maneuvering { abkowitz, rudder, lo, hi } => {
                 let f = abkowitz.forces(u, v, r); // eqs. 2.22-2.24, hull terms
@@ -389,11 +400,11 @@ impl Plant {
                 // Second-order wave forces enter as F_x,add, F_y,add of eqs. 2.22-2.23; the added
                 // resistance is booked with the ship's resistance in the energy accounts.
                 let x_hull = x_hull - self.extra_resistance;
-                dx[SURGE] = (thrust + x_hull + fx_r + h.wave_fx) / self.surge_mass; // eq. 2.20, first row
-                let (vd, rd) = abkowitz.sway_yaw_acceleration(f.y + fy_r + h.wave_fy, f.n - rudder.x_p_m * fy_r);
+                dx[SURGE] = (thrust + x_hull + fx_r + h.sea.wave_fx) / self.surge_mass; // eq. 2.20, first row
+                let (vd, rd) = abkowitz.sway_yaw_acceleration(f.y + fy_r + h.sea.wave_fy, f.n - rudder.x_p_m * fy_r);
                 dx[SWAY] = vd;
                 dx[YAW_RATE] = rd;
-                -(x_hull + fx_r + h.wave_fx)
+                -(x_hull + fx_r + h.sea.wave_fx)
             }
         };
         let (sp, cp) = (libm::sin(x[HEADING]), libm::cos(x[HEADING]));

@@ -87,10 +87,10 @@ impl Recording<'_> {
         self.plant.open_water.efficiency(self.out.propeller[s].advance_ratio)
     }
     pub fn beta_t(&self) -> f64 {
-        self.plant.beta_t * self.mean_shaft(|s| self.ctl.held.beta_t[s])
+        self.plant.beta_t * self.mean_shaft(|s| self.ctl.held.sea.beta_t[s])
     }
     pub fn beta_q(&self) -> f64 {
-        self.plant.beta_q * self.mean_shaft(|s| self.ctl.held.beta_q[s])
+        self.plant.beta_q * self.mean_shaft(|s| self.ctl.held.sea.beta_q[s])
     }
     pub fn x_m(&self) -> f64 {
         self.x[X_POS]
@@ -126,10 +126,10 @@ impl Recording<'_> {
         self.out.resistance * self.x[SURGE]
     }
     pub fn added_resistance(&self) -> f64 {
-        -self.ctl.held.wave_fx
+        -self.ctl.held.sea.wave_fx
     }
     pub fn drift_force(&self) -> f64 {
-        self.ctl.held.wave_fy
+        self.ctl.held.sea.wave_fy
     }
 }
 
