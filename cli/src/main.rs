@@ -25,6 +25,11 @@ struct Cli {
 enum Cmd {
     /// List the preset scenarios.
     Presets,
+    /// List the trace columns: name, unit and what each is (`--json` for the machine-readable table).
+    Signals {
+        #[arg(long)]
+        json: bool,
+    },
     /// Print a preset scenario as JSON (a starting point for your own).
     Preset {
         /// Preset name (see `aes-sim presets`).
@@ -322,6 +327,15 @@ fn real_main() -> Result<(), String> {
             for n in PRESET_NAMES {
                 let d = preset(n).map(|s| s.description).unwrap_or_default();
                 println!("{n:<12} {d}");
+            }
+        }
+        Cmd::Signals { json } => {
+            if json {
+                println!("{}", serde_json::to_string_pretty(aes_core::signals::SIGNALS).map_err(|e| e.to_string())?);
+            } else {
+                for s in aes_core::signals::SIGNALS {
+                    println!("{:<20} {:<6} {}", s.name, s.unit, s.description);
+                }
             }
         }
         Cmd::Preset { name } => {

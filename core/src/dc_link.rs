@@ -135,6 +135,11 @@ pub struct DcLinkParams {
     /// power (1.08), so that the resistor takes the braking energy and not the generators' output;
     /// it conducts fully 5 % higher.
     pub brake_on_pu: f64,
+    /// The chopper's duty rises linearly from zero at `brake_on_pu` to full conduction this much
+    /// higher, per unit of the bus set point [-]. Our choice: 0.05, a proportional band narrow
+    /// enough to hold the bus within 5 % above the threshold at full braking power, wide enough to
+    /// avoid chattering at the 1 ms step.
+    pub brake_band_pu: f64,
 }
 
 impl Default for DcLinkParams {
@@ -146,6 +151,7 @@ impl Default for DcLinkParams {
             rectifier: RectifierKind::Diode,
             brake_resistor_ohm: 0.0,
             brake_on_pu: 1.10,
+            brake_band_pu: 0.05,
         }
     }
 }
@@ -158,12 +164,6 @@ pub enum RectifierKind {
     Reversible,
 }
 
-/// The brake chopper's duty rises linearly from zero at `brake_on_pu` to full conduction this much
-/// higher (per unit of the bus set point). Our choice: 0.05, a proportional band narrow enough to hold
-/// the bus within 5 % above the threshold at full braking power, wide enough to avoid chattering
-/// at the 1 ms step.
-pub const BRAKE_FULL_ABOVE_ON_PU: f64 = 0.05;
-
 impl DcLinkParams {
     pub fn validate(&self, v: &mut Validator) {
         check_range!(v, self.capacitance_f, 1.0e-4, 100.0);
@@ -173,6 +173,7 @@ impl DcLinkParams {
             check_range!(v, self.brake_resistor_ohm, 0.01, 1.0e4);
         }
         check_range!(v, self.brake_on_pu, 1.0, 1.5);
+        check_range!(v, self.brake_band_pu, 0.001, 0.5);
     }
 }
 

@@ -9,16 +9,14 @@
 use crate::montecarlo::{run_range, summary};
 use crate::presets::preset;
 
-/// FNV-1a over the bits of every trace value, column by column: equal only if every recorded
-/// number is identical.
-pub fn fingerprint(columns: &[Vec<f64>]) -> String {
+/// FNV-1a over the bits of every value of a column: equal only if every recorded number is
+/// identical.
+pub fn fingerprint(column: &[f64]) -> String {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for col in columns {
-        for v in col {
-            for b in v.to_bits().to_le_bytes() {
-                h ^= b as u64;
-                h = h.wrapping_mul(0x0000_0100_0000_01b3);
-            }
+    for v in column {
+        for b in v.to_bits().to_le_bytes() {
+            h ^= b as u64;
+            h = h.wrapping_mul(0x0000_0100_0000_01b3);
         }
     }
     format!("{h:016x}")
@@ -31,7 +29,13 @@ pub fn record(name: &str) -> Result<String, String> {
     let mut v = serde_json::json!({
         "preset": name,
         "trace_rows": r.trace.len(),
-        "trace_fingerprint": fingerprint(&r.trace.columns),
+        // One fingerprint per signal, so a review sees which columns moved (and a new signal
+        // adds one line).
+        "trace_fingerprints": crate::signals::SIGNALS
+            .iter()
+            .zip(&r.trace.columns)
+            .map(|(s, c)| (s.name.to_string(), serde_json::Value::String(fingerprint(c))))
+            .collect::<serde_json::Map<_, _>>(),
         "summary": r.summary.to_json_value(),
     });
     if sc.monte_carlo.excess_energy || sc.monte_carlo.stop_at_first_event || name.starts_with("mc-") {

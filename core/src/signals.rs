@@ -41,6 +41,9 @@ macro_rules! for_each_signal {
                 |r| r.mean_set(|k| r.throttle(k));
             FieldCurrentA, "field_current_a", "A", "field current", "Generator field current, mean of the four sets.",
                 |r| r.mean_set(|k| r.field_current(k));
+            FieldVoltageV, "field_voltage_v", "V", "field voltage",
+                "Field voltage the bus-voltage controller applies, mean of the four sets (ch. 2.2.1).",
+                |r| r.mean_set(|k| r.ctl.held.field_voltage[k]);
             BusVoltagePu, "bus_voltage_pu", "pu", "bus voltage",
                 "DC bus voltage per unit of the field controller's set point, mean of the two buses.",
                 |r| r.mean_shaft(|s| r.bus_voltage_pu(s));

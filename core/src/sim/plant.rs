@@ -252,7 +252,7 @@ impl Plant {
             reversible: sc.plant.dc_link.rectifier == RectifierKind::Reversible,
             brake_resistor: sc.plant.dc_link.brake_resistor_ohm,
             brake_on_v: sc.plant.dc_link.brake_on_pu * v_ref,
-            brake_full_v: (sc.plant.dc_link.brake_on_pu + crate::dc_link::BRAKE_FULL_ABOVE_ON_PU) * v_ref,
+            brake_full_v: (sc.plant.dc_link.brake_on_pu + sc.plant.dc_link.brake_band_pu) * v_ref,
             prop_diameter: sc.propeller.diameter_m,
             rho: sc.ship.water_density_kg_m3,
             rotative_efficiency: sc.propeller.rotative_efficiency,
