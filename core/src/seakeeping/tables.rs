@@ -8,7 +8,7 @@ use super::strip::{default_omega_grid, response, RadiationTable, Response, Ship}
 use crate::interp::bracket;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
-use serde_json::{json, Value};
+use serde_json::Value;
 use std::f64::consts::PI;
 
 /// The table grid (part of the scenario). Headings cover 0..180 deg; waves from port use the
@@ -233,19 +233,77 @@ pub fn section_json(
     let c = Contour::new(&map);
     let rs: Vec<_> = omegas.iter().map(|&w| solve(&map, &c, w, rho, g, default_multipoles(w * w / g, &map))).collect();
     let col = |f: &dyn Fn(&super::radiation::Radiation2d) -> f64| -> Vec<f64> { rs.iter().map(f).collect() };
-    Ok(json!({
-        "form": map.form,
-        "clamped": map.clamped,
-        "scale_m": map.scale,
-        "coefficients": map.coeffs,
-        "area_coefficient": map.area_coefficient(),
-        "omega": omegas,
-        "heave": {"added_mass": col(&|r| r.a33), "damping": col(&|r| r.b33), "damping_far_field": col(&|r| r.b_far[1])},
-        "sway": {"added_mass": col(&|r| r.a22), "damping": col(&|r| r.b22), "damping_far_field": col(&|r| r.b_far[0])},
-        "roll": {"added_mass": col(&|r| r.a44), "damping": col(&|r| r.b44), "damping_far_field": col(&|r| r.b_far[2])},
-        "sway_roll": {"added_mass": col(&|r| r.a24), "damping": col(&|r| r.b24)},
-        "multipoles": rs.iter().map(|r| r.multipoles).collect::<Vec<_>>(),
-    }))
+    let mode = |a: &dyn Fn(&super::radiation::Radiation2d) -> f64,
+                b: &dyn Fn(&super::radiation::Radiation2d) -> f64,
+                far: Option<usize>| SectionMode {
+        added_mass: col(a),
+        damping: col(b),
+        damping_far_field: far.map(|k| col(&|r| r.b_far[k])),
+    };
+    let out = SectionCoefficients {
+        form: map.form,
+        clamped: map.clamped,
+        scale_m: map.scale,
+        coefficients: map.coeffs.clone(),
+        area_coefficient: map.area_coefficient(),
+        omega: omegas.to_vec(),
+        heave: mode(&|r| r.a33, &|r| r.b33, Some(1)),
+        sway: mode(&|r| r.a22, &|r| r.b22, Some(0)),
+        roll: mode(&|r| r.a44, &|r| r.b44, Some(2)),
+        sway_roll: mode(&|r| r.a24, &|r| r.b24, None),
+        multipoles: rs.iter().map(|r| r.multipoles).collect(),
+    };
+    serde_json::to_value(out).map_err(|e| e.to_string())
+}
+
+/// One mode's sectional coefficients over frequency (`aes-sim section`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SectionMode {
+    pub added_mass: Vec<f64>,
+    pub damping: Vec<f64>,
+    /// The damping from the radiated waves' energy flux (the check of the near-field value).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub damping_far_field: Option<Vec<f64>>,
+}
+
+/// The JSON of `aes-sim section`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SectionCoefficients {
+    pub form: Form,
+    pub clamped: bool,
+    pub scale_m: f64,
+    pub coefficients: Vec<f64>,
+    pub area_coefficient: f64,
+    pub omega: Vec<f64>,
+    pub heave: SectionMode,
+    pub sway: SectionMode,
+    pub roll: SectionMode,
+    pub sway_roll: SectionMode,
+    pub multipoles: Vec<usize>,
+}
+
+/// Amplitude and phase of one mode over frequency (`aes-sim rao`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RaoMode {
+    pub amp: Vec<f64>,
+    pub phase_deg: Vec<f64>,
+}
+
+/// The JSON of `aes-sim rao`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RaoReport {
+    pub speed_kn: f64,
+    pub heading_deg: f64,
+    pub omega0: Vec<f64>,
+    pub omega_e: Vec<f64>,
+    pub heave: RaoMode,
+    pub pitch: RaoMode,
+    pub sway: RaoMode,
+    pub roll: RaoMode,
+    pub yaw: RaoMode,
+    pub added_resistance_n_per_m2: Vec<f64>,
+    pub drift_force_n_per_m2: Vec<f64>,
+    pub added_resistance_gerritsma_beukelman_n_per_m2: Vec<f64>,
 }
 
 /// RAOs of `ship` as the JSON of `aes-sim rao`: amplitudes (m/m for heave and sway, rad/m for
@@ -274,26 +332,31 @@ pub fn rao_json(
     let rad = ship.radiation_table(&default_omega_grid());
     let rs: Vec<Response> =
         omegas.iter().map(|&w| response(ship, &rad, w, speed, heading, roll_wave_amplitude)).collect();
-    let mode = |f: &dyn Fn(&Response) -> C| -> Value {
-        json!({
-            "amp": rs.iter().map(|r| f(r).norm_sqr().sqrt()).collect::<Vec<_>>(),
-            "phase_deg": rs.iter().map(|r| { let c = f(r); libm::atan2(c.im, c.re).to_degrees() }).collect::<Vec<_>>(),
-        })
+    let mode = |f: &dyn Fn(&Response) -> C| RaoMode {
+        amp: rs.iter().map(|r| f(r).norm_sqr().sqrt()).collect(),
+        phase_deg: rs
+            .iter()
+            .map(|r| {
+                let c = f(r);
+                libm::atan2(c.im, c.re).to_degrees()
+            })
+            .collect(),
     };
-    Ok(json!({
-        "speed_kn": speed / crate::units::KNOT_M_S,
-        "heading_deg": heading.to_degrees(),
-        "omega0": omegas,
-        "omega_e": rs.iter().map(|r| r.omega_e).collect::<Vec<_>>(),
-        "heave": mode(&|r| r.heave),
-        "pitch": mode(&|r| r.pitch),
-        "sway": mode(&|r| r.sway),
-        "roll": mode(&|r| r.roll),
-        "yaw": mode(&|r| r.yaw),
-        "added_resistance_n_per_m2": rs.iter().map(|r| r.added_resistance).collect::<Vec<_>>(),
-        "drift_force_n_per_m2": rs.iter().map(|r| r.drift_force).collect::<Vec<_>>(),
-        "added_resistance_gerritsma_beukelman_n_per_m2": rs.iter().map(|r| r.added_resistance_gb).collect::<Vec<_>>(),
-    }))
+    let out = RaoReport {
+        speed_kn: speed / crate::units::KNOT_M_S,
+        heading_deg: heading.to_degrees(),
+        omega0: omegas.to_vec(),
+        omega_e: rs.iter().map(|r| r.omega_e).collect(),
+        heave: mode(&|r| r.heave),
+        pitch: mode(&|r| r.pitch),
+        sway: mode(&|r| r.sway),
+        roll: mode(&|r| r.roll),
+        yaw: mode(&|r| r.yaw),
+        added_resistance_n_per_m2: rs.iter().map(|r| r.added_resistance).collect(),
+        drift_force_n_per_m2: rs.iter().map(|r| r.drift_force).collect(),
+        added_resistance_gerritsma_beukelman_n_per_m2: rs.iter().map(|r| r.added_resistance_gb).collect(),
+    };
+    serde_json::to_value(out).map_err(|e| e.to_string())
 }
 
 #[cfg(test)]
