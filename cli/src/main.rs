@@ -46,6 +46,11 @@ enum Cmd {
         #[arg(long = "set", value_name = "PATH=VALUE")]
         sets: Vec<String>,
     },
+    /// Controller design (thesis ch. 3.1).
+    Design {
+        #[command(subcommand)]
+        command: DesignCmd,
+    },
     /// The IPS performance and stability tool of thesis ch. 4 (Purdue MVDC testbed).
     Ips {
         #[command(subcommand)]
@@ -195,6 +200,36 @@ struct IpsPoint {
     /// Override a parameter of the side, e.g. `--set l_md=0.014` (repeatable).
     #[arg(long = "set", value_name = "NAME=VALUE")]
     sets: Vec<String>,
+}
+
+#[derive(Subcommand)]
+enum DesignCmd {
+    /// LQG/LTR (eqs. 3.2-3.10) for a square plant given as JSON
+    /// {"a": [[..]], "b": [[..]], "c": [[..]], "d": [[..]], "mu": 0.005, "omega_p": 3.0, "q": 1000.0}
+    /// (FILE or `-`); prints the gains, the compensator, the closed-loop poles and the singular values.
+    LqgLtr {
+        /// Plant and tuning as JSON, or `-` for standard input.
+        file: String,
+    },
+}
+
+/// Largest design input read [bytes] (a 60-state plant in JSON is well under 1 MB).
+const MAX_DESIGN_BYTES: u64 = 4 << 20;
+
+/// Reads a file or standard input, refusing more than `limit` bytes without reading past it.
+fn read_bounded(file: &str, limit: u64) -> Result<String, String> {
+    use std::io::Read;
+    let mut text = String::new();
+    let reader: Box<dyn Read> = if file == "-" {
+        Box::new(std::io::stdin())
+    } else {
+        Box::new(std::fs::File::open(file).map_err(|e| format!("cannot read '{file}': {e}"))?)
+    };
+    reader.take(limit + 1).read_to_string(&mut text).map_err(|e| format!("cannot read '{file}': {e}"))?;
+    if text.len() as u64 > limit {
+        return Err(format!("'{file}' is larger than {limit} bytes"));
+    }
+    Ok(text)
 }
 
 #[derive(Subcommand)]
@@ -364,6 +399,13 @@ fn real_main() -> Result<(), String> {
             write(&result.trace)?;
             let json = serde_json::to_string_pretty(&result.summary.to_json_value()).map_err(|e| e.to_string())?;
             println!("{json}");
+        }
+        Cmd::Design { command: DesignCmd::LqgLtr { file } } => {
+            let text = read_bounded(&file, MAX_DESIGN_BYTES)?;
+            let input: aes_core::design::lqg_ltr::DesignInput =
+                serde_json::from_str(&text).map_err(|e| format!("{file}: {e}"))?;
+            let d = aes_core::design::lqg_ltr::design(&input)?;
+            println!("{}", serde_json::to_string_pretty(&d).map_err(|e| e.to_string())?);
         }
         Cmd::Ips { command } => {
             let out = ips(command)?;

@@ -6,6 +6,7 @@
 
 pub mod control;
 pub mod dc_link;
+pub mod design;
 pub mod fft;
 pub mod fuel;
 pub mod fuel_study;
