@@ -208,10 +208,26 @@ enum DesignCmd {
     /// {"a": [[..]], "b": [[..]], "c": [[..]], "d": [[..]], "mu": 0.005, "omega_p": 3.0, "q": 1000.0}
     /// (FILE or `-`); prints the gains, the compensator, the closed-loop poles and the singular values.
     LqgLtr {
-        /// Plant and tuning as JSON, or `-` for standard input.
-        file: String,
+        /// Plant and tuning as JSON, or `-` for standard input (not with --plant).
+        file: Option<String>,
+        /// `aes`: our own drive train linearised at --speed-kn (throttle and field voltage in,
+        /// turbine speed and bus voltage out, per unit), with the tuning below.
+        #[arg(long)]
+        plant: Option<String>,
+        /// Ship speed of the operating point [kn] (with --plant aes).
+        #[arg(long, default_value_t = 20.0)]
+        speed_kn: f64,
+        /// Tuning (with --plant aes): Kalman weight mu, pinch frequency [rad/s], recovery gain q.
+        #[arg(long, default_value_t = DEFAULT_MU)]
+        mu: f64,
+        #[arg(long, default_value_t = DEFAULT_OMEGA_P)]
+        omega_p: f64,
+        #[arg(long, default_value_t = DEFAULT_Q)]
+        q: f64,
     },
 }
+
+use aes_core::sim::linearize::{DEFAULT_MU, DEFAULT_OMEGA_P, DEFAULT_Q};
 
 /// Largest design input read [bytes] (a 60-state plant in JSON is well under 1 MB).
 const MAX_DESIGN_BYTES: u64 = 4 << 20;
@@ -400,10 +416,26 @@ fn real_main() -> Result<(), String> {
             let json = serde_json::to_string_pretty(&result.summary.to_json_value()).map_err(|e| e.to_string())?;
             println!("{json}");
         }
-        Cmd::Design { command: DesignCmd::LqgLtr { file } } => {
-            let text = read_bounded(&file, MAX_DESIGN_BYTES)?;
-            let input: aes_core::design::lqg_ltr::DesignInput =
-                serde_json::from_str(&text).map_err(|e| format!("{file}: {e}"))?;
+        Cmd::Design { command: DesignCmd::LqgLtr { file, plant, speed_kn, mu, omega_p, q } } => {
+            let input: aes_core::design::lqg_ltr::DesignInput = match (file, plant.as_deref()) {
+                (Some(file), None) => {
+                    let text = read_bounded(&file, MAX_DESIGN_BYTES)?;
+                    serde_json::from_str(&text).map_err(|e| format!("{file}: {e}"))?
+                }
+                (None, Some("aes")) => {
+                    if !(speed_kn.is_finite() && (5.0..=32.0).contains(&speed_kn)) {
+                        return Err(format!("--speed-kn = {speed_kn}: must be a number from 5 to 32"));
+                    }
+                    let mut sc = aes_core::presets::preset("acceleration").ok_or("no acceleration preset")?;
+                    sc.initial.speed_kn = speed_kn;
+                    sc.commands[0].speed_kn = Some(speed_kn);
+                    let m = aes_core::sim::linearize::drive_train(&sc).map_err(|e| e.to_string())?;
+                    aes_core::design::lqg_ltr::DesignInput::from_plant(&m.system, mu, omega_p, q)
+                }
+                (None, Some(other)) => return Err(format!("--plant = {other}: the only built-in plant is `aes`")),
+                (Some(_), Some(_)) => return Err("give a FILE or --plant aes, not both".into()),
+                (None, None) => return Err("give a FILE (or `-`) or --plant aes".into()),
+            };
             let d = aes_core::design::lqg_ltr::design(&input)?;
             println!("{}", serde_json::to_string_pretty(&d).map_err(|e| e.to_string())?);
         }

@@ -62,6 +62,31 @@ where
     }
 }
 
+/// Most QR sweeps of the eigenvalue and singular value iterations (nalgebra's defaults iterate
+/// without bound and can spin forever on some matrices; a few hundred sweeps suffice otherwise).
+pub const MAX_SWEEPS: usize = 10_000;
+
+/// Eigenvalues of a real square matrix by the real Schur form, with a bounded iteration; None when
+/// the matrix has a non-finite entry or the iteration does not converge.
+pub fn eigenvalues(m: &nalgebra::DMatrix<f64>) -> Option<Vec<num_complex::Complex64>> {
+    if !m.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    let schur = nalgebra::linalg::Schur::try_new(m.clone(), f64::EPSILON, MAX_SWEEPS)?;
+    Some(schur.complex_eigenvalues().iter().copied().collect())
+}
+
+/// Singular values of a complex matrix, largest first, with a bounded iteration.
+pub fn singular_values(m: &nalgebra::DMatrix<num_complex::Complex64>) -> Option<Vec<f64>> {
+    if !m.iter().all(|v| v.re.is_finite() && v.im.is_finite()) {
+        return None;
+    }
+    let svd = nalgebra::linalg::SVD::try_new(m.clone(), false, false, f64::EPSILON, MAX_SWEEPS)?;
+    let mut s: Vec<f64> = svd.singular_values.iter().copied().collect();
+    s.sort_by(|a, b| b.total_cmp(a));
+    Some(s)
+}
+
 /// Gauss-Legendre nodes and weights on [`a`, `b`] with `n` points (Newton on the Legendre
 /// recurrence; libm only, so native and wasm give the same nodes).
 pub fn gauss_legendre(n: usize, a: f64, b: f64) -> (Vec<f64>, Vec<f64>) {

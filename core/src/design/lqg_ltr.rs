@@ -79,6 +79,20 @@ fn rows(m: &DMatrix<f64>) -> Vec<Vec<f64>> {
 }
 
 impl DesignInput {
+    /// The input for a plant given as matrices.
+    pub fn from_plant(p: &StateSpace, mu: f64, omega_p: f64, q: f64) -> DesignInput {
+        DesignInput {
+            a: rows(&p.a),
+            b: rows(&p.b),
+            c: rows(&p.c),
+            d: Some(rows(&p.d)),
+            mu,
+            omega_p,
+            q,
+            frequencies: None,
+        }
+    }
+
     /// The plant, checked: square, n <= MAX_STATES, m <= MAX_CHANNELS, finite entries.
     pub fn plant(&self) -> Result<StateSpace, String> {
         let a = matrix(&self.a, "a")?;
@@ -254,17 +268,14 @@ impl Compensator {
     }
 }
 
-/// Singular values of a complex matrix, largest first.
+/// Singular values of a complex matrix, largest first (empty if the iteration failed).
 pub fn singular_values(m: &DMatrix<C>) -> Vec<f64> {
-    let mut s: Vec<f64> = m.clone().svd(false, false).singular_values.iter().copied().collect();
-    s.sort_by(|a, b| b.total_cmp(a));
-    s
+    crate::numerics::singular_values(m).unwrap_or_default()
 }
 
-fn poles(a: &DMatrix<f64>) -> Vec<Pole> {
-    let mut p: Vec<Pole> = a
-        .clone()
-        .complex_eigenvalues()
+fn poles(a: &DMatrix<f64>) -> Result<Vec<Pole>, String> {
+    let ev = crate::numerics::eigenvalues(a).ok_or("the closed-loop eigenvalues did not converge")?;
+    let mut p: Vec<Pole> = ev
         .iter()
         .map(|l| {
             let w = libm::hypot(l.re, l.im);
@@ -272,7 +283,7 @@ fn poles(a: &DMatrix<f64>) -> Vec<Pole> {
         })
         .collect();
     p.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));
-    p
+    Ok(p)
 }
 
 /// The whole design and its analysis for the public format.
@@ -294,13 +305,15 @@ pub fn design(input: &DesignInput) -> Result<Design, String> {
             .ok_or_else(|| format!("I + L is singular at {w} rad/s"))?;
         let f = k.target_at(w).ok_or_else(|| format!("the target loop is singular at {w} rad/s"))?;
         for (curves, mat) in [(&mut lp, &l), (&mut cf, &t), (&mut tg, &f)] {
-            for (c, s) in curves.iter_mut().zip(singular_values(mat)) {
+            let sv = crate::numerics::singular_values(mat)
+                .ok_or_else(|| format!("singular values at {w} rad/s did not converge"))?;
+            for (c, s) in curves.iter_mut().zip(sv) {
                 c.push(s);
             }
         }
     }
     let cl = k.closed_loop(&plant);
-    let closed_loop_poles = poles(&cl.a);
+    let closed_loop_poles = poles(&cl.a)?;
     let stable = closed_loop_poles.iter().all(|p| p.re < 0.0);
     if !(k.residual_filter.is_finite() && k.residual_control.is_finite()) {
         return Err("the design gave non-finite numbers".into());
@@ -343,7 +356,7 @@ mod tests {
         let k = compensator(&plant(), 5e-3, 3.0, 100.0).unwrap();
         assert!(k.residual_filter < 1e-9 && k.residual_control < 1e-9, "{} {}", k.residual_filter, k.residual_control);
         let cl = k.closed_loop(&plant());
-        assert!(poles(&cl.a).iter().all(|p| p.re < 0.0));
+        assert!(poles(&cl.a).unwrap().iter().all(|p| p.re < 0.0));
     }
 
     /// Eq. 3.10's eigenvalues (h = 0) equal the poles of the loop built from its parts: the

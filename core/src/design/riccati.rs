@@ -85,7 +85,9 @@ pub fn care(a: &DMatrix<f64>, g: &DMatrix<f64>, q: &DMatrix<f64>) -> Result<DMat
     lhs.view_mut((n, 0), (n, n)).copy_from(&(z.view((n, n), (n, n)) + DMatrix::identity(n, n)));
     rhs.view_mut((0, 0), (n, n)).copy_from(&(-(z.view((0, 0), (n, n)) + DMatrix::identity(n, n))));
     rhs.view_mut((n, 0), (n, n)).copy_from(&(-z.view((n, 0), (n, n))));
-    let x = lhs.svd(true, true).solve(&rhs, 1e-14).map_err(|e| format!("Riccati: {e}"))?;
+    let svd = nalgebra::linalg::SVD::try_new(lhs, true, true, f64::EPSILON, crate::numerics::MAX_SWEEPS)
+        .ok_or("Riccati: the least-squares solve did not converge")?;
+    let x = svd.solve(&rhs, 1e-14).map_err(|e| format!("Riccati: {e}"))?;
     let mut x = (&x + x.transpose()) * 0.5;
     // Newton-Kleinman: (A - GX)' D + D (A - GX) = -R(X), while it helps.
     if n <= NEWTON_MAX_ORDER {
@@ -109,7 +111,9 @@ pub fn care(a: &DMatrix<f64>, g: &DMatrix<f64>, q: &DMatrix<f64>) -> Result<DMat
     if !x.iter().all(|v| v.is_finite()) {
         return Err("Riccati: non-finite solution".into());
     }
-    if (a - g * &x).complex_eigenvalues().iter().any(|l| l.re >= 0.0) {
+    let closed =
+        crate::numerics::eigenvalues(&(a - g * &x)).ok_or("Riccati: closed-loop eigenvalues did not converge")?;
+    if closed.iter().any(|l| l.re >= 0.0) {
         return Err("Riccati: no stabilizing solution (an unstable mode is not reached by the input \
                     or not seen by the weight)"
             .into());
@@ -199,7 +203,7 @@ mod tests {
         let x = care(&a, &g, &q).unwrap();
         let res = residual(&a, &g, &q, &x);
         assert!(res < 1e-9, "{res:e}");
-        let poles = (&a - &g * &x).complex_eigenvalues();
+        let poles = crate::numerics::eigenvalues(&(&a - &g * &x)).unwrap();
         assert!(poles.iter().all(|p| p.re < 0.0));
     }
 

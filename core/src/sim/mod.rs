@@ -2,6 +2,7 @@
 //! divergence detection. `Simulation` can be advanced in chunks (the browser reports progress
 //! and honours cancel between chunks); `run` does it in one go.
 
+pub mod linearize;
 pub mod plant;
 mod record;
 pub mod seaway;
@@ -570,6 +571,11 @@ impl Simulation {
     /// The state vector now (for tests and analysis).
     pub fn state(&self) -> &State {
         &self.x
+    }
+
+    /// The inputs held over the present step (controller outputs and the sea's).
+    pub fn held(&self) -> &Held {
+        &self.ctl.held
     }
 
     /// The model constants.
