@@ -159,8 +159,8 @@ export class PlotBox {
   histogram(title, h, xLabel, overlay, generation) {
     const w = (h.hi - h.lo) / h.counts.length;
     const centres = h.counts.map((_, i) => h.lo + (i + 0.5) * w);
-    const series = [{ data: h.counts, label: 'trials', color: '#1f618d', paths: uPlot.paths.bars({ size: [0.9, 100] }), fill: '#aed6f1' }];
-    if (overlay) series.push({ data: overlay.values, label: overlay.label, color: '#b03a2e' });
+    const series = [{ data: h.counts, label: 'trials', color: '#1f618d', paths: uPlot.paths.bars({ size: [0.9, 100] }), fill: '#aed6f1', points: { show: false } }];
+    if (overlay) series.push({ data: overlay.values, label: overlay.label, color: '#b03a2e', points: { show: false } });
     this.line(title, { data: centres, label: xLabel }, series, [{ scale: 'y', label: 'trials per bin [count]' }], { generation });
   }
 
