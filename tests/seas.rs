@@ -25,6 +25,8 @@ fn std(v: &[f64]) -> f64 {
 
 fn head_seas(seed: u64, stern: SternMotion, duration: f64) -> Scenario {
     let mut s = preset("head-seas-ss6").unwrap();
+    // The thesis' depth (the preset's default is a light loading with a shallower hub).
+    s.seakeeping.hub_depth_m = 6.0;
     s.sim.seed = seed;
     s.seakeeping.stern_motion = stern;
     s.sim.duration_s = duration;

@@ -1,7 +1,10 @@
 // Browser end-to-end test of the page in headless Chromium (Debian's chromium + playwright-core).
 // Usage: node tests/e2e/e2e.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR
 import { chromium } from 'playwright-core';
-import { mkdirSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+
+const axeSource = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
 
 const base = process.argv[2];
 const shots = process.argv[3];
@@ -19,8 +22,8 @@ const browser = await chromium.launch({
 });
 const context = await browser.newContext({ viewport: { width: 1300, height: 1100 } });
 const consoleErrors = [];
-async function open(url) {
-  const page = await context.newPage();
+async function open(url, ctx = context) {
+  const page = await ctx.newPage();
   page.on('console', (m) => { if (m.type() === 'error') consoleErrors.push(`${url}: ${m.text()}`); });
   page.on('pageerror', (e) => consoleErrors.push(`${url}: ${e}`));
   page.on('request', (r) => { if (!r.url().startsWith(base) && !r.url().startsWith('data:') && !r.url().startsWith('blob:')) consoleErrors.push(`request left the origin: ${r.url()}`); });
@@ -30,6 +33,7 @@ async function open(url) {
 }
 async function setField(page, path, value) {
   const sel = '#f-' + path.replace(/\./g, '-');
+  await page.$eval('#all-fields', (d) => { d.open = true; }); // a field the study does not show on top
   if ((await page.$eval(sel, (e) => e.tagName)) === 'SELECT') await page.selectOption(sel, String(value));
   else await page.fill(sel, String(value));
   await page.dispatchEvent(sel, 'change');
@@ -109,14 +113,17 @@ await check('edits survive a reload', async () => {
   assert((await page.inputValue('#f-sim-duration_s')) === '50000', 'duration not restored');
   assert((await page.inputValue('#f-ship-drag_coeff')) === '0.004', 'C_r not restored');
 });
-await check('a bad value is named with its field and the earlier results stay', async () => {
+await check('a bad value is marked at its field (aria-invalid) and Run waits for it', async () => {
   await setField(page, 'sim.duration_s', 60);
   await setField(page, 'ship.mass_kg', -5);
-  const st = await runAndWait(page);
-  assert(/ship\.mass_kg/.test(st), st);
+  await page.waitForFunction(() => document.getElementById('f-ship-mass_kg').getAttribute('aria-invalid') === 'true', null, { timeout: 10000 });
   const err = await page.textContent('#f-ship-mass_kg-err');
   assert(err.includes('from'), `field error: ${err}`);
+  assert(await page.$eval('#run', (b) => b.disabled), 'Run is enabled while a field is invalid');
+  const desc = await page.getAttribute('#f-ship-mass_kg', 'aria-describedby');
+  assert(desc.includes('f-ship-mass_kg-err'), `aria-describedby: ${desc}`);
   await setField(page, 'ship.mass_kg', 7e6);
+  await page.waitForFunction(() => !document.getElementById('run').disabled, null, { timeout: 10000 });
 });
 await check('maneuvering study draws the track', async () => {
   await page.selectOption('#preset', 'turn-90');
@@ -124,16 +131,31 @@ await check('maneuvering study draws the track', async () => {
   assert(st.startsWith('Done'), st);
   await page.screenshot({ path: `${shots}/turn-90.png` });
 });
-await check('head seas: the sea plots appear (h/R with its bands, losses, wave, motions)', async () => {
+await check('head seas: with default settings the propeller ventilates (event markers, h/R band, losses)', async () => {
   await page.selectOption('#preset', 'head-seas-ss6');
-  await setField(page, 'seakeeping.stern_motion', 'thesis_eq_2_57');
-  await setField(page, 'sim.duration_s', 30);
-  await runAndWait(page);
-  assert(/^Done/.test(await page.textContent('#status')), await page.textContent('#status'));
+  assert((await page.inputValue('#f-seakeeping-stern_motion')) === 'consistent', 'the default is not the consistent hub depth');
+  const st = await runAndWait(page);
+  assert(/^Done/.test(st), st);
+  const m = st.match(/Surface losses started (\d+) time/);
+  assert(m && Number(m[1]) >= 1, `no ventilation event: ${st}`);
   const titles = await page.$$eval('#plots h3', (hs) => hs.map((h) => h.textContent));
-  assert(titles.some((t) => t.startsWith('Hub depth over propeller radius')), titles.join(' | '));
-  assert(titles.some((t) => t.startsWith('Propeller surface losses')), 'no loss plot');
+  assert(titles[0].startsWith('Hub depth over propeller radius'), titles.join(' | '));
+  assert(titles.some((t) => t.startsWith('Thrust and torque kept')), 'no loss plot');
+  assert(/loss onsets/.test(await page.textContent('#plots')), 'no event key');
   await page.screenshot({ path: `${shots}/head-seas.png` });
+});
+await check('compare runs: "compare with eq. 2.57 as printed" draws both runs on one plot and a table of differences', async () => {
+  await page.click('text=Compare with eq. 2.57 as printed');
+  await page.waitForFunction(() => !document.getElementById('compare-box').hidden && /^Done/.test(document.getElementById('status').textContent), null, { timeout: 60000 });
+  const legend = await page.$eval('#plots .plot', (p) => p.querySelector('.u-legend').textContent);
+  assert(/kept run/.test(legend), `no kept run in the first plot's legend: ${legend}`);
+  const series = await page.$eval('#plots .plot', (p) => p.querySelector('.chart').uplot.series.length);
+  assert(series >= 3, `${series} series`);
+  const rows = await page.$$eval('#compare-table tbody tr', (r) => r.length);
+  assert(rows >= 4, `${rows} rows of differences`);
+  assert((await page.inputValue('#f-seakeeping-stern_motion')) === 'thesis_eq_2_57', 'the compare did not switch the formula');
+  await page.screenshot({ path: `${shots}/compare.png` });
+  await page.click('#unkeep');
 });
 await check('Monte Carlo runs over workers and shows the Table 5.8 comparison and histograms', async () => {
   await page.selectOption('#preset', 'mc-arrival');
@@ -168,7 +190,7 @@ await check('fuel study draws the Fig. 5-12 curves and the RAOs', async () => {
   await page.selectOption('#preset', 'fuel-regular-seas');
   await setField(page, 'sim.duration_s', 10);
   await runAndWait(page);
-  await page.waitForFunction(() => [...document.querySelectorAll('#plots h3')].filter((h) => /Fig. 5-12|RAOs/.test(h.textContent)).length >= 4, null, { timeout: 60000 });
+  await page.waitForFunction(() => [...document.querySelectorAll('#results h3')].filter((h) => /Fig. 5-12|RAOs/.test(h.textContent)).length >= 4, null, { timeout: 60000 });
   await page.screenshot({ path: `${shots}/fuel.png`, fullPage: true });
 });
 await check('stability tab shows poles and Bode plots, and follows the slider', async () => {
@@ -186,6 +208,127 @@ await check('stability tab shows poles and Bode plots, and follows the slider', 
 await check('keyboard: the Run button is reachable and labelled inputs exist', async () => {
   const unlabelled = await page.$$eval('input, select, textarea', (els) => els.filter((e) => !e.labels?.length && !e.getAttribute('aria-label') && !e.hidden).map((e) => e.id));
   assert(unlabelled.length === 0, `unlabelled: ${unlabelled}`);
+});
+// The page as a class meets it: a laptop, a projector and a phone. Nothing overflows the viewport
+// width, no two plots overlap, plots re-fit after a resize, axe-core finds no serious or critical
+// violation on either tab, every axis has a unit, Back and Forward restore the study.
+const SIZES = [[1366, 768], [1920, 1080], [390, 844]];
+const wide = await browser.newContext({ viewport: { width: 1366, height: 768 }, bypassCSP: true });
+const layout = (p) => p.evaluate(() => {
+  const W = document.documentElement.clientWidth;
+  const clipped = (e) => { for (let a = e.parentElement; a && a !== document.body; a = a.parentElement) if (getComputedStyle(a).overflowX !== 'visible') return true; return false; };
+  const over = [...document.querySelectorAll('body *')].filter((e) => {
+    if (!e.getClientRects().length || e.classList.contains('skip')) return false;
+    const r = e.getBoundingClientRect();
+    return r.width > 0 && r.right > W + 1 && !clipped(e);
+  }).map((e) => `${e.tagName}#${e.id}.${e.className}`).slice(0, 5);
+  const plots = [...document.querySelectorAll('.plot')].filter((e) => e.getClientRects().length);
+  const boxes = plots.map((e) => e.getBoundingClientRect());
+  const overlaps = [];
+  for (let i = 0; i < boxes.length; i++) for (let j = i + 1; j < boxes.length; j++) {
+    const a = boxes[i], b = boxes[j];
+    if (a.left < b.right - 1 && b.left < a.right - 1 && a.top < b.bottom - 1 && b.top < a.bottom - 1) overlaps.push(`${i}/${j}`);
+  }
+  const unfit = plots.filter((p) => { const c = p.querySelector('.uplot, canvas.track'); return c && c.getBoundingClientRect().right > p.getBoundingClientRect().right + 1; }).length;
+  return { W, scroll: document.documentElement.scrollWidth, over, overlaps, unfit, plots: plots.length };
+});
+const assertLayout = (l, where) => {
+  assert(l.scroll <= l.W, `${where}: page is ${l.scroll} px wide in a ${l.W} px viewport`);
+  assert(!l.over.length, `${where}: overflowing ${l.over.join(', ')}`);
+  assert(!l.overlaps.length, `${where}: plots overlap (${l.overlaps.join(', ')})`);
+  assert(!l.unfit, `${where}: ${l.unfit} plot(s) wider than their panel`);
+};
+// Every axis of every drawn uPlot names a unit in brackets.
+const axesWithoutUnit = (p) => p.evaluate(() => [...document.querySelectorAll('.chart')].filter((c) => c.getClientRects().length && c.uplot)
+  .flatMap((c) => c.uplot.axes.filter((a) => a.show !== false && !/\[[^\]]+\]/.test(a.label || '')).map((a) => `${c.closest('.plot').querySelector('h3')?.textContent}: "${a.label}"`)));
+const axeSerious = async (p) => {
+  await p.addScriptTag({ content: axeSource });
+  const v = await p.evaluate(async () => (await window.axe.run(document, { resultTypes: ['violations'] })).violations
+    .filter((x) => x.impact === 'serious' || x.impact === 'critical').map((x) => `${x.id} (${x.impact}): ${x.nodes.slice(0, 2).map((n) => n.target.join(' ')).join('; ')}`));
+  return v;
+};
+for (const [w, h] of SIZES) {
+  await check(`at ${w}x${h}: no horizontal overflow, no overlapping plots, units on every axis, no serious axe violation`, async () => {
+    await wide.setDefaultTimeout(30000);
+    const p = await open(base + '#v=1&preset=head-seas-ss6', wide);
+    await p.setViewportSize({ width: w, height: h });
+    assertLayout(await layout(p), 'before a run');
+    await runAndWait(p);
+    await p.waitForTimeout(300);
+    assertLayout(await layout(p), 'head seas');
+    await p.screenshot({ path: `${shots}/size-${w}x${h}.png` });
+    await p.click('#more-plots-box summary');
+    await p.waitForFunction(() => document.querySelectorAll('#more-plots .uplot').length >= 4, null, { timeout: 30000 });
+    await p.waitForTimeout(300);
+    assertLayout(await layout(p), 'more plots open');
+    const noUnit = await axesWithoutUnit(p);
+    assert(!noUnit.length, `axes without a unit: ${noUnit.join(' | ')}`);
+    const v1 = await axeSerious(p);
+    assert(!v1.length, `simulator tab: ${v1.join(' | ')}`);
+    await p.click('#tab-ips');
+    await p.waitForFunction(() => document.querySelectorAll('#ips-plots .uplot').length === 2, null, { timeout: 10000 });
+    await p.waitForTimeout(300);
+    assertLayout(await layout(p), 'stability tab');
+    assert(!(await axesWithoutUnit(p)).length, 'stability axes without a unit');
+    const v2 = await axeSerious(p);
+    assert(!v2.length, `stability tab: ${v2.join(' | ')}`);
+    await p.screenshot({ path: `${shots}/stability-${w}x${h}.png` });
+    await p.close();
+  });
+}
+await check('a resize re-fits the plots to their panels', async () => {
+  const p = await open(base + '#v=1&preset=startup', wide);
+  await p.setViewportSize({ width: 1366, height: 768 });
+  await runAndWait(p);
+  const fit = () => p.$eval('#plots .chart', (c) => [c.uplot.width, Math.floor(c.getBoundingClientRect().width)]);
+  const [w0, c0] = await fit();
+  assert(Math.abs(w0 - c0) <= 2, `plot ${w0} px in a ${c0} px panel`);
+  await p.setViewportSize({ width: 1920, height: 1080 });
+  await p.waitForTimeout(400);
+  const [w1, c1] = await fit();
+  assert(w1 !== w0 && Math.abs(w1 - c1) <= 2, `after the resize: plot ${w1} px (was ${w0}) in a ${c1} px panel`);
+  await p.close();
+});
+await check('the tabs follow the ARIA pattern: arrow keys move between them', async () => {
+  const p = await open(base, wide);
+  await p.focus('#tab-sim');
+  await p.keyboard.press('ArrowRight');
+  assert((await p.getAttribute('#tab-ips', 'aria-selected')) === 'true', 'ArrowRight did not select the stability tab');
+  assert(await p.evaluate(() => document.activeElement.id === 'tab-ips'), 'focus did not follow');
+  await p.keyboard.press('ArrowLeft');
+  assert((await p.getAttribute('#tab-sim', 'aria-selected')) === 'true', 'ArrowLeft did not come back');
+  await p.close();
+});
+await check('the address follows the study; Back and Forward restore it', async () => {
+  const p = await open(base, wide);
+  await p.selectOption('#preset', 'turn-90');
+  await p.selectOption('#preset', 'ac-braking');
+  assert(p.url().includes('preset=ac-braking'), p.url());
+  await p.goBack();
+  await p.waitForFunction(() => document.getElementById('preset').value === 'turn-90', null, { timeout: 5000 });
+  await p.goForward();
+  await p.waitForFunction(() => document.getElementById('preset').value === 'ac-braking', null, { timeout: 5000 });
+  await p.close();
+});
+await check('a linked page marks the fields the link changed', async () => {
+  const d = Buffer.from(JSON.stringify({ ship: { drag_coeff: 0.004 } })).toString('base64url');
+  const p = await open(`${base}#v=1&preset=startup&d=${d}`, wide);
+  await p.waitForFunction(() => document.querySelector('#f-ship-drag_coeff-field.linked'), null, { timeout: 5000 });
+  assert((await p.$$eval('.field.linked', (e) => e.length)) === 1, 'more than one field marked');
+  await p.close();
+});
+await check('every study at 1920x1080 (screenshots)', async () => {
+  const p = await open(base, wide);
+  await p.setViewportSize({ width: 1920, height: 1080 });
+  const names = await p.$$eval('#preset option', (o) => o.map((x) => x.value));
+  for (const name of names) {
+    await p.selectOption('#preset', name);
+    const st = await runAndWait(p);
+    assert(st.startsWith('Done'), `${name}: ${st}`);
+    await p.waitForTimeout(200);
+    await p.screenshot({ path: `${shots}/study-${name}.png` });
+  }
+  await p.close();
 });
 await check('no console errors and no request left the page', async () => {
   assert(consoleErrors.length === 0, consoleErrors.join('\n'));

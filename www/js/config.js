@@ -11,17 +11,17 @@ export const FIELDS = [
     ['ship.drag_coeff', 'Drag coefficient C_r', '-', 'Eq. 2.15, Table 5.1.'],
     ['ship.wake_fraction', 'Wake fraction w', '-', 'Eq. 2.12, Table 5.1.'],
     ['ship.thrust_deduction', 'Thrust deduction t', '-', 'Eq. 2.15, Table 5.1.'],
-    ['hull.model', 'Hull model', '', 'surge: straight line (ch. 2.3); maneuvering: Abkowitz 3-DOF with rudder (ch. 2.4).', ['surge', 'maneuvering']],
+    ['hull.model', 'Hull model', '', 'Straight line only, or turns with a rudder.', [['surge', 'surge only: straight line (ch. 2.3)'], ['maneuvering', 'maneuvering: 3 DOF with rudder (ch. 2.4)']]],
   ]],
   ['Propulsion plant', [
-    ['propeller.model', 'Propeller model', '', 'B-series (first quadrant) or four-quadrant B4-70 (needed for braking).', ['b_series', 'four_quadrant']],
+    ['propeller.model', 'Propeller model', '', 'The four-quadrant model is needed for braking.', [['b_series', 'Wageningen B-series (ahead only)'], ['four_quadrant', 'four-quadrant B4-70 (ahead and astern)']]],
     ['propeller.diameter_m', 'Propeller diameter', 'm', 'Table 5.1.'],
     ['propeller.pitch_ratio', 'Pitch ratio P/D', '-', 'Table 5.1.'],
     ['propeller.blades', 'Blades', '-', 'Within the Wageningen B-series range.'],
     ['plant.turbine.inertia_kg_m2', 'Turbine inertia', 'kg m²', 'Table 5.2.'],
     ['plant.motor.rated_power_w', 'Motor rating', 'W', 'Ch. 2.2.2; the base of motor power in per unit.'],
     ['plant.dc_link.capacitance_f', 'Bus capacitance', 'F', 'Table 5.4.'],
-    ['plant.dc_link.rectifier', 'Rectifier', '', 'diode: power flows one way; reversible: it can flow back to the turbines.', ['diode', 'reversible']],
+    ['plant.dc_link.rectifier', 'Rectifier', '', 'Which way power may flow between turbines and bus.', [['diode', 'diode: one way only'], ['reversible', 'reversible: back to the turbines too']]],
     ['plant.dc_link.brake_resistor_ohm', 'Brake resistor', 'Ω', '0 for none.'],
   ]],
   ['Controllers', [
@@ -30,24 +30,24 @@ export const FIELDS = [
     ['controllers.field.kp', 'Field K_p,v', 'V/V', 'Ch. 5.2.1 baseline.'],
     ['controllers.field.ki', 'Field K_i,v', 'V/(V s)', 'Ch. 5.2.1 baseline.'],
     ['controllers.speed.shaft_ramp_rpm_per_s', 'Shaft ramp', 'rpm/s', '0 for a step.'],
-    ['controllers.slip.allow_braking', 'Allow AC braking', '', 'Negative slip: the motor brakes as a generator.', ['false', 'true']],
+    ['controllers.slip.allow_braking', 'Allow AC braking', '', 'Negative slip: the motor brakes as a generator.', [['false', 'no'], ['true', 'yes']]],
     ['controllers.autopilot.turn_rate_deg_s', 'Default turn rate', 'deg/s', 'Used when a heading order gives none.'],
   ]],
   ['Sea and seakeeping', [
-    ['sea.kind', 'Sea', '', 'calm; random: Bretschneider spectrum (eq. 2.58) of a Table 2.4 sea state; regular: one wave.', ['calm', 'random', 'regular']],
+    ['sea.kind', 'Sea', '', 'Random: Bretschneider spectrum (eq. 2.58) of a Table 2.4 sea state.', [['calm', 'calm water'], ['random', 'random sea of a sea state'], ['regular', 'one regular wave']]],
     ['sea.sea_state', 'Sea state', '-', 'Table 2.4 gives each sea state\'s significant height and peak frequency.'],
     ['sea.from_deg', 'Waves from', 'deg', '0 = from north: head seas for a ship heading north.'],
     ['sea.components', 'Wave components N_s', '-', 'Ch. 2.5.4.'],
     ['sea.amplitude_m', 'Regular wave amplitude', 'm', '1 ft = 0.3048 m.'],
     ['sea.omega_rad_s', 'Regular wave frequency', 'rad/s', 'Wave length 2 pi g / omega^2.'],
     ['seakeeping.hub_depth_m', 'Calm-water hub depth h0', 'm', 'Ch. 5.3 and ch. 5.4.1 use different depths.'],
-    ['seakeeping.stern_motion', 'Hub depth formula', '', 'consistent: the stern follows long waves; thesis_eq_2_57: the printed sign, which reproduces the thesis figures.', ['consistent', 'thesis_eq_2_57']],
+    ['seakeeping.stern_motion', 'Hub depth formula', '', 'Consistent: the stern rises with long waves, so the hub depth swings less than the wave. As printed, eq. 2.57 adds the stern motion with the opposite sign: the depth swings by wave plus motion, and surface effects come far more often (the thesis figures).', [['consistent', 'consistent (stern follows long waves)'], ['thesis_eq_2_57', 'as printed in eq. 2.57']]],
     ['monte_carlo.trials', 'Monte Carlo trials', '-', 'For the Monte Carlo button (ch. 5.4).'],
   ]],
   ['Simulation', [
     ['initial.speed_kn', 'Initial speed', 'kn', '0 starts from idle.'],
     ['sim.duration_s', 'Duration', 's', 'Simulated time.'],
-    ['sim.dt_s', 'Time step', 's', 'RK4 step.'],
+    ['sim.dt_s', 'Time step', 's', 'Fixed RK4 step; the record interval must be a whole number of steps.'],
     ['sim.record_interval_s', 'Record every', 's', 'A whole number of steps.'],
     ['sim.seed', 'Seed', '-', 'Fixes every random number.'],
   ]],
@@ -56,24 +56,67 @@ export const FIELDS = [
 export const ORDERS_HELP = 'Orders: [{"t_s": 0, "speed_kn": 25}, {"t_s": 10, "heading_deg": 90, "heading_rate_deg_s": 0.5}]';
 export const ORDERS_LABEL = 'Orders as JSON: time [s], speed [kn], heading [deg], heading rate [deg/s]';
 
-// What each study shows, for a class (added to the preset's own description).
-export const ABOUT_EXTRA = {
-  'startup': 'Watch the power inventory: each stage passes on a little less than it gets (Table 5.6).',
-  'acceleration': 'Compare turbine speed and bus voltage with Fig. 5-4; then try the higher field gains.',
-  'acceleration-high-gains': 'The bus voltage now recovers faster than the turbine speed (Fig. 5-5).',
-  'ac-braking': 'Motor power turns negative: the ship drives the propellers and the brake resistor burns the energy (Fig. 5-7).',
-  'ac-braking-unbuffered': 'No resistor: the energy goes back into the turbines, which overspeed with the throttle shut (Fig. 5-8).',
-  'turn-45': 'The ship track, rudder and the extra motor power needed to hold speed (Figs. 5-9, 5-10).',
-  'turn-90': 'A longer turn at the same rate: similar extra power, for longer.',
-  'turn-360': 'A full turn in calm water (Fig. 5-16 without the waves); note the counter-rudder in the steady turn.',
-  'quarter-turn-ss3': 'Added resistance slows the ship a little; after the turn the sea is on the beam and the drift force appears (Fig. 5-11).',
-  'quarter-turn-ss6': 'The same turn in sea state 6: over 40 times the added resistance of SS3 (it grows with the square of the wave height).',
-  'fuel-regular-seas': 'One regular head wave of 1 ft: compare fuel power with calm water; the command line sweeps 1 to 5 ft (Fig. 5-12).',
-  'head-seas-ss6': 'h/R against the ventilation band: with the consistent hub depth the propeller stays down; switch the hub depth formula to thesis_eq_2_57 to see the thesis\' ventilation and power swings (Figs. 5-13 to 5-15).',
-  'turn-360-ss6': 'Heave and pitch are strong in head seas and weak in following seas (Figs. 5-16 to 5-19).',
-  'mc-excess-energy': 'Press Monte Carlo: 100 seas, the envelope of motor power, the excess energy per trial and its histogram (Figs. 5-20 to 5-23).',
-  'mc-arrival': 'Press Monte Carlo: arrival times of the first surface effect against Rice\'s prediction (Table 5.8, Fig. 5-24).',
+// The studies as the page offers them: grouped by thesis chapter, each with a human name, what to
+// watch, the plots that tell its story first (ids of PLOTS; the others one click away), the
+// parameters that matter on top, and one-click comparisons ("compare with ..."): another study,
+// or this one with some values changed. `about` replaces the preset's description in the page.
+export const CHAPTERS = [
+  ['Ch. 5.1 Start-up', ['startup']],
+  ['Ch. 5.2.1 Acceleration', ['acceleration', 'acceleration-high-gains']],
+  ['Ch. 5.2.2 Braking', ['ac-braking', 'ac-braking-unbuffered']],
+  ['Ch. 5.2.3 Turns in calm water', ['turn-45', 'turn-90', 'turn-360']],
+  ['Ch. 5.2.4 Turns and fuel in waves', ['quarter-turn-ss3', 'quarter-turn-ss6', 'fuel-regular-seas']],
+  ['Ch. 5.3 Head seas and a turn in waves', ['head-seas-ss6', 'turn-360-ss6']],
+  ['Ch. 5.4 Monte Carlo', ['mc-excess-energy', 'mc-arrival']],
+];
+
+export const STUDIES = {
+  'startup': { title: 'Start-up from idle to 25 knots', plots: ['inventory', 'bus', 'speed', 'rpm', 'motor'], params: ['ship.drag_coeff', 'controllers.governor.kp', 'sim.duration_s'],
+    watch: 'The power inventory: each stage passes on a little less than it gets, turbine to generator to motor to ship. The table of efficiencies under the summary gives the numbers of Tables 5.6 and 5.7.' },
+  'acceleration': { title: 'Acceleration: step to full ahead', plots: ['bus', 'speed', 'rpm', 'motor'], params: ['controllers.field.kp', 'controllers.field.ki', 'controllers.speed.shaft_ramp_rpm_per_s'],
+    watch: 'Turbine speed and bus voltage dip when the motors take the load (Fig. 5-4). Then compare with higher field gains: the voltage recovers faster.',
+    compare: [{ label: 'higher field gains', preset: 'acceleration-high-gains' }] },
+  'acceleration-high-gains': { title: 'Acceleration with higher field gains', plots: ['bus', 'speed', 'rpm', 'motor'], params: ['controllers.field.kp', 'controllers.field.ki'],
+    watch: 'The bus voltage now recovers faster than the turbine speed (Fig. 5-5).',
+    compare: [{ label: 'the normal gains', preset: 'acceleration' }] },
+  'ac-braking': { title: 'Crash stop with AC braking and a brake resistor', plots: ['motor', 'brake', 'bus', 'speed', 'rpm'], params: ['plant.dc_link.brake_resistor_ohm', 'plant.dc_link.rectifier', 'controllers.slip.allow_braking'],
+    watch: 'Motor power turns negative: the water drives the propellers, the motors brake as generators and the resistor burns the energy (Fig. 5-7).',
+    compare: [{ label: 'no brake resistor', preset: 'ac-braking-unbuffered' }] },
+  'ac-braking-unbuffered': { title: 'Crash stop without a brake resistor', plots: ['bus', 'motor', 'speed', 'rpm'], params: ['plant.dc_link.rectifier', 'controllers.governor.kp'],
+    watch: 'No resistor: the braking energy flows back into the turbines, which overspeed with the throttle shut (Fig. 5-8).',
+    compare: [{ label: 'the brake resistor', preset: 'ac-braking' }] },
+  'turn-45': { title: 'A 45° turn at 25 knots', plots: ['track', 'rudder', 'motor', 'speed'], params: ['controllers.autopilot.turn_rate_deg_s', 'initial.speed_kn'],
+    watch: 'The rudder (right axis, a few degrees) against the heading (left axis), and the extra motor power needed to hold speed in the turn (Figs. 5-9, 5-10).',
+    compare: [{ label: 'a 90° turn', preset: 'turn-90' }] },
+  'turn-90': { title: 'A 90° turn at 25 knots', plots: ['track', 'rudder', 'motor', 'speed'], params: ['controllers.autopilot.turn_rate_deg_s', 'initial.speed_kn'],
+    watch: 'A longer turn at the same rate: similar extra power, for longer.', compare: [{ label: 'a 45° turn', preset: 'turn-45' }] },
+  'turn-360': { title: 'A full turn in calm water', plots: ['track', 'rudder', 'motor', 'speed'], params: ['controllers.autopilot.turn_rate_deg_s', 'initial.speed_kn'],
+    watch: 'In the steady turn the rudder settles at a small counter angle; speed drops and motor power rises to hold it (Fig. 5-16 without waves).',
+    compare: [{ label: 'the same turn in sea state 6', preset: 'turn-360-ss6' }] },
+  'quarter-turn-ss3': { title: 'A quarter turn in sea state 3', plots: ['track', 'force', 'speed', 'motor', 'rudder'], params: ['sea.sea_state', 'sea.from_deg', 'sim.seed'],
+    watch: 'Added resistance slows the ship a little; after the turn the sea is on the beam and the drift force appears (Fig. 5-11).',
+    compare: [{ label: 'sea state 6', preset: 'quarter-turn-ss6' }] },
+  'quarter-turn-ss6': { title: 'A quarter turn in sea state 6', plots: ['track', 'force', 'speed', 'motor', 'rudder'], params: ['sea.sea_state', 'sea.from_deg', 'sim.seed'],
+    watch: 'Over 40 times the added resistance of sea state 3: it grows with the square of the wave height.',
+    compare: [{ label: 'sea state 3', preset: 'quarter-turn-ss3' }] },
+  'fuel-regular-seas': { title: 'Fuel in one regular head wave', plots: ['fuel', 'speed', 'motor', 'heave', 'pitch'], params: ['sea.amplitude_m', 'sea.omega_rad_s'],
+    watch: 'One regular head wave of 1 ft: fuel power against calm water. After the run the page sweeps wave frequencies and heights (Fig. 5-12, below the run\'s plots).',
+    compare: [{ label: 'calm water', set: { 'sea.kind': 'calm' } }] },
+  'head-seas-ss6': { title: 'Head seas, sea state 6: ventilation', plots: ['hr', 'beta', 'motor', 'rpm', 'bus'], params: ['seakeeping.hub_depth_m', 'seakeeping.stern_motion', 'sea.sea_state', 'sim.seed'],
+    watch: 'h/R against the shaded ventilation band: each time it dips below 1.1 the propeller draws air (orange markers), thrust and torque drop (beta), the propeller races and the motor power falls. Below 1 the disk breaks the surface. Each event is a sudden load rejection for the plant: the turbines overspeed by up to a third and the bus voltage follows them, then both ring for tens of seconds (bus plot), far beyond the 1-2 % they move in these seas when the propellers stay down.',
+    compare: [{ label: 'eq. 2.57 as printed', set: { 'seakeeping.stern_motion': 'thesis_eq_2_57' } }, { label: 'fully loaded (h0 = 6 m)', set: { 'seakeeping.hub_depth_m': 6 } }],
+    note: 'The sign of eq. 2.57: as printed, the stern\'s own motion is added to the wave instead of taken from it, so the hub depth swings by wave plus motion and surface effects come several times as often; with the consistent sign the stern rides the long waves of SS6 and a fully loaded ship (h0 = 6 m) keeps its propellers down.' },
+  'turn-360-ss6': { title: 'A full turn in sea state 6', plots: ['track', 'heave', 'pitch', 'hr', 'motor'], params: ['sea.sea_state', 'sea.from_deg', 'sim.seed'],
+    watch: 'Heave and pitch are strong in head seas and weak in following seas (Figs. 5-16 to 5-19). The arrow on the track shows where the waves come from.',
+    compare: [{ label: 'calm water', preset: 'turn-360' }] },
+  'mc-excess-energy': { title: 'Monte Carlo: excess energy', plots: ['motor', 'hr', 'speed'], params: ['monte_carlo.trials', 'seakeeping.hub_depth_m', 'seakeeping.stern_motion'],
+    about: 'Monte Carlo over 100 random seas of 80 s at 25 knots in head seas SS6, with a 4.8 m propeller only 4 m deep (thesis ch. 5.4.1, Figs. 5-20 to 5-23): how much extra energy the motors draw because of surface effects, and how their power spreads over the trials.',
+    watch: 'Press Monte Carlo (Run shows one trial): the envelope of motor power, the excess energy per trial and its histogram (Figs. 5-20 to 5-23).' },
+  'mc-arrival': { title: 'Monte Carlo: when the first surface effect arrives', plots: ['hr', 'motor', 'beta'], params: ['monte_carlo.trials', 'seakeeping.hub_depth_m', 'seakeeping.stern_motion'],
+    watch: 'Press Monte Carlo (Run shows one trial): the arrival times of the first surface effect against Rice\'s prediction (Table 5.8, Fig. 5-24).' },
 };
+// What the page calls a study it has no entry for (a new preset): its name.
+export const studyTitle = (name) => (STUDIES[name] && STUDIES[name].title) || name;
 
 // The per-unit signals and the pageConstants entry that is their base, with its unit.
 export const PU_BASES = {
@@ -85,28 +128,53 @@ export const PU_BASES = {
 // Plots of a run. Each series is a trace column: its label and unit come from signalMeta (label
 // overrides a meta label only to add a sign convention). `prefix` shows W as MW, N as kN.
 // The axis label and the unit in the title are built from the series' units; series of different
-// units go on a left and a right axis. `sea`: only in waves. `hOverR`: adds the ventilation band
-// and the levels of pageConstants. `only`: drawn when it holds for the columns.
+// units go on a left and a right axis, and so does a series with `axis: 'right'` (a small angle
+// beside a large one). `sea`: only in waves. `hOverR`: the ventilation band and the levels of
+// pageConstants. `events`: markers where surface losses start. `only`: drawn when it holds.
+// Colours: distinct and >= 3:1 against white; a reference (order) is grey and dashed.
+const REF = { color: '#6b6b6b', dash: [6, 4] };
 export const PLOTS = [
-  { title: 'Ship speed', series: [{ signal: 'ship_speed_kn', color: '#0b5cad' }, { signal: 'speed_cmd_kn', color: '#999' }] },
-  { title: 'Propeller speed', series: [{ signal: 'prop_rpm', color: '#0b5cad' }, { signal: 'prop_rpm_ref', color: '#999' }] },
-  { title: 'Bus voltage and turbine speed', series: [{ signal: 'bus_voltage_pu', color: '#c0392b' }, { signal: 'turbine_speed_pu', color: '#27ae60' }] },
-  { title: 'Motor power', series: [{ signal: 'im_power_pu', color: '#8e44ad' }] },
-  { title: 'Power inventory', prefix: 'M', series: [{ signal: 'p_turbine_w', color: '#27ae60' }, { signal: 'p_generator_w', color: '#16a085' }, { signal: 'p_inverter_w', color: '#2980b9' }, { signal: 'p_motor_w', color: '#8e44ad' }, { signal: 'p_ship_w', color: '#2c3e50' }] },
-  { title: 'Rudder and heading', series: [{ signal: 'rudder_deg', color: '#d35400' }, { signal: 'heading_deg', color: '#0b5cad' }, { signal: 'heading_ref_deg', color: '#999' }] },
-  { title: 'Hub depth over propeller radius h/R', sea: true, hOverR: true, series: [{ signal: 'h_over_r', color: '#0b5cad' }] },
-  { title: 'Propeller surface losses beta_T, beta_Q', sea: true, series: [{ signal: 'beta_t', color: '#c0392b' }, { signal: 'beta_q', color: '#8e44ad' }] },
-  { title: 'Wave at the stern and hub depth', sea: true, series: [{ signal: 'wave_stern_m', color: '#2980b9' }, { signal: 'hub_depth_m', color: '#2c3e50' }] },
-  { title: 'Heave', sea: true, series: [{ signal: 'heave_m', label: 'heave (up)', color: '#16a085' }] },
-  { title: 'Pitch and roll', sea: true, series: [{ signal: 'pitch_deg', label: 'pitch (bow down)', color: '#d35400' }, { signal: 'roll_deg', label: 'roll (starboard down)', color: '#7f8c8d' }] },
-  { title: 'Second-order wave force', sea: true, prefix: 'k', series: [{ signal: 'added_resistance_n', color: '#c0392b' }, { signal: 'drift_force_n', label: 'drift force (to starboard)', color: '#2980b9' }] },
-  { title: 'Fuel power, four turbines', prefix: 'M', series: [{ signal: 'fuel_power_w', color: '#6e2c00' }] },
-  { title: 'Brake resistor power', prefix: 'M', series: [{ signal: 'brake_power_w', color: '#c0392b' }], only: (c) => c.brake_power_w.some((v) => v > 0) },
+  { id: 'speed', title: 'Ship speed', series: [{ signal: 'ship_speed_kn', color: '#0b5cad' }, { signal: 'speed_cmd_kn', ...REF }] },
+  { id: 'rpm', title: 'Propeller speed', events: true, series: [{ signal: 'prop_rpm', color: '#0b5cad' }, { signal: 'prop_rpm_ref', ...REF }] },
+  { id: 'bus', title: 'Bus voltage and turbine speed', series: [{ signal: 'bus_voltage_pu', color: '#b03a2e' }, { signal: 'turbine_speed_pu', color: '#1e7b3c', dash: [8, 3] }] },
+  { id: 'motor', title: 'Motor power', events: true, series: [{ signal: 'im_power_pu', color: '#6c3483' }] },
+  { id: 'inventory', title: 'Power inventory', prefix: 'M', series: [{ signal: 'p_turbine_w', color: '#1e7b3c' }, { signal: 'p_generator_w', color: '#b9770e', dash: [10, 3] }, { signal: 'p_inverter_w', color: '#0b5cad', dash: [3, 3] }, { signal: 'p_motor_w', color: '#6c3483', dash: [10, 3, 2, 3] }, { signal: 'p_ship_w', color: '#1b1b1b' }] },
+  { id: 'rudder', title: 'Heading and rudder', series: [{ signal: 'heading_deg', color: '#0b5cad' }, { signal: 'heading_ref_deg', ...REF }, { signal: 'rudder_deg', color: '#a04000', axis: 'right' }] },
+  { id: 'hr', title: 'Hub depth over propeller radius', sea: true, hOverR: true, events: true, series: [{ signal: 'h_over_r', color: '#0b5cad' }] },
+  { id: 'beta', title: 'Thrust and torque kept under surface losses', sea: true, events: true, series: [{ signal: 'beta_t', color: '#b03a2e' }, { signal: 'beta_q', color: '#6c3483', dash: [6, 3] }] },
+  { id: 'wave', title: 'Wave at the stern and hub depth', sea: true, series: [{ signal: 'wave_stern_m', color: '#0b5cad' }, { signal: 'hub_depth_m', color: '#1b1b1b', dash: [6, 3] }] },
+  { id: 'heave', title: 'Heave', sea: true, series: [{ signal: 'heave_m', label: 'heave (up)', color: '#117a65' }] },
+  { id: 'pitch', title: 'Pitch and roll', sea: true, series: [{ signal: 'pitch_deg', label: 'pitch (bow down)', color: '#a04000' }, { signal: 'roll_deg', label: 'roll (starboard down)', color: '#5b2c6f', dash: [6, 3] }] },
+  { id: 'force', title: 'Second-order wave force', sea: true, prefix: 'k', series: [{ signal: 'added_resistance_n', color: '#b03a2e' }, { signal: 'drift_force_n', label: 'drift force (to starboard)', color: '#0b5cad', dash: [6, 3] }] },
+  { id: 'fuel', title: 'Fuel power, four turbines', prefix: 'M', series: [{ signal: 'fuel_power_w', color: '#6e2c00' }] },
+  { id: 'brake', title: 'Brake resistor power', prefix: 'M', series: [{ signal: 'brake_power_w', color: '#b03a2e' }], only: (c) => c.brake_power_w.some((v) => v > 0) },
 ];
-// Colours of the h/R levels (in pageConstants order) and of the ventilation band.
-export const LEVEL_COLORS = ['#c0392b', '#922b21', '#7b241c'];
-export const BAND_COLOR = '#e67e22';
-export const BAND_FILL = 'rgba(230, 126, 34, 0.15)';
+// Plots shown when a study names none.
+export const DEFAULT_PLOTS = ['speed', 'rpm', 'bus', 'motor', 'track'];
+// Key figures of the comparison of a kept run with the new one: [label, from the summary].
+export const KEY_FIGURES = [
+  ['peak motor power [pu]', (s) => s.signals.im_power_pu.max],
+  ['lowest motor power [pu]', (s) => s.signals.im_power_pu.min],
+  ['lowest bus voltage (dip) [pu]', (s) => s.signals.bus_voltage_pu.min],
+  ['highest turbine speed [pu]', (s) => s.signals.turbine_speed_pu.max],
+  ['final ship speed [kn]', (s) => s.signals.ship_speed_kn.final],
+  ['propeller speed swing [rpm]', (s) => s.signals.prop_rpm.max - s.signals.prop_rpm.min],
+  ['lowest h/R [-]', (s) => s.signals.h_over_r.min],
+  ['mean fuel power [MW]', (s) => s.signals.fuel_power_w.mean / 1e6],
+  ['turbine energy [MJ]', (s) => s.energy_j.turbine / 1e6],
+  ['energy burnt in the brake [MJ]', (s) => s.energy_j.brake / 1e6],
+];
+
+// The h/R plot: the ventilation hysteresis band, the region where the disk is at or above the
+// surface, and the levels of pageConstants (dashed, labelled). Colours >= 3:1 on white.
+export const LEVEL_COLORS = ['#b03a2e', '#7b241c', '#4a0f0a'];
+export const BAND_FILL = 'rgba(211, 84, 0, 0.28)';
+export const BAND_EDGE = '#a04000';
+export const SURFACE_FILL = 'rgba(176, 58, 46, 0.12)';
+// Vertical markers where surface losses start (beta_T leaves 1 in the trace).
+export const EVENT_COLOR = '#a04000';
+// A kept run is drawn in this muted style under the new one.
+export const KEPT_STYLE = { color: '#8a8a8a', dash: [5, 4], width: 1.5 };
 
 // The ship track: a mark and heading arrow every TRACK_MARK_S of simulated time; the picture
 // spans at least TRACK_MIN_SPAN_M (a short run is not blown up to fill it).
@@ -120,12 +188,17 @@ export const SUMMARY_ROWS = ['ship_speed_kn', 'prop_rpm', 'turbine_speed_pu', 'b
 export const RAO = { lambdaFrom: 0.3, lambdaStep: 0.045, points: 60, headings: [[180, 'head'], [135, 'bow']] };
 // After a run in a regular sea: the fuel study (Fig. 5-12) at these wave frequencies [rad/s].
 export const FUEL_OMEGAS = Array.from({ length: 13 }, (_, i) => 0.3 + 0.1 * i);
-export const FUEL_COLORS = ['#aed6f1', '#5dade2', '#2e86c1', '#1f618d', '#154360'];
+export const FUEL_COLORS = ['#1f618d', '#117a65', '#a04000', '#6c3483', '#1b1b1b'];
 
 // Monte Carlo in the page: trial limit, at most this many workers, the periodogram's upper
 // frequency on the plot, and the signal of the onset plot (the study's motor power, ch. 5.4.3).
 export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, onsetSignal: 'im_power_pu',
-  calmWaterNote: 'thesis: 94.1 ± 33.3' };
+  calmWaterNote: 'thesis: 94.1 ± 33.3',
+  // Table 5.8 as printed in the thesis (a reference column, not a model number).
+  table58Thesis: { head: ['thesis mean', 'thesis std', 'thesis skewness', 'thesis kurtosis', 'thesis median', 'thesis mode'],
+    rice: ['22.64', '22.64', '2', '9', '15.69', '0'], monteCarlo: ['23.67', '22.11', '1.00', '3.13', '15.46', '0.0217'] },
+  riceNote: 'Rice\'s rate counts up-crossings of a stationary Gaussian response and treats them as rare, independent events, so that arrival times are exponential. That holds for a level many standard deviations away; at this study\'s level crossings are not rare and come in clusters on wave groups, and each trial is cut off, so the Monte Carlo skewness and kurtosis fall short of the exponential\'s 2 and 9 (as in the thesis) while the means stay close.',
+  excessNote: 'Two excess energies: against the same sea with surface losses switched off (the submerged counterpart: what ventilation and emergence alone cost), and against calm water (which adds the added resistance of the waves; this is the thesis\' figure).' };
 
 // Stability tab: the Bode range and the pole map's radius (faster poles are listed, not drawn).
 // The testbed's synchronous speed is an operating-point input like the sliders.

@@ -1,11 +1,12 @@
-// The scenario form: the study chooser's scenario being edited, its fields, field errors, and the
-// edits kept in localStorage so that they survive a reload.
-import { FIELDS, ABOUT_EXTRA, ORDERS_HELP, ORDERS_LABEL, STORE_KEY } from './config.js';
+// The scenario form: the study picker, the scenario being edited, its fields (the ones that matter
+// for the study on top, the rest folded below), errors at the field, the fields a link changed,
+// and the edits kept in localStorage so that they survive a reload.
+import { FIELDS, CHAPTERS, STUDIES, studyTitle, ORDERS_HELP, ORDERS_LABEL, STORE_KEY } from './config.js';
 import { $, el } from './dom.js';
 import { fieldLine } from './protocol.js';
 
 function getPath(obj, path) { return path.split('.').reduce((o, k) => (o == null ? undefined : o[k]), obj); }
-function setPath(obj, path, value) {
+export function setPath(obj, path, value) {
   const keys = path.split('.');
   let o = obj;
   for (const k of keys.slice(0, -1)) o = o[k];
@@ -13,14 +14,31 @@ function setPath(obj, path, value) {
 }
 const fieldId = (path) => 'f-' + path.replace(/\./g, '-');
 
+// Dotted paths of the leaves of a link's difference object.
+export function leafPaths(d, prefix = '') {
+  if (!d || typeof d !== 'object' || Array.isArray(d)) return [prefix];
+  return Object.keys(d).flatMap((k) => leafPaths(d[k], prefix ? `${prefix}.${k}` : k));
+}
+
 export class ScenarioForm {
-  // presets: {name: scenario JSON text}; onLooseErrors(text): errors of no field on the form.
-  constructor(presets, { onLooseErrors }) {
+  // presets: {name: scenario JSON text}; onLooseErrors(text): errors of no field on the form;
+  // onEdit(): after every accepted edit (the page validates and follows it in the address).
+  constructor(presets, { onLooseErrors, onEdit = () => {}, onValidity = () => {}, onSelect = () => {} }) {
+    this.onSelect = onSelect;
     this.presets = presets;
     this.onLooseErrors = onLooseErrors;
+    this.onEdit = onEdit;
+    this.onValidity = onValidity;
     this.name = null;
     this.scenario = null;
-    $('preset').replaceChildren(...Object.keys(presets).map((n) => new Option(n, n)));
+    this.invalid = new Set();
+    this.home = new Map(); // field div -> its fieldset in the full form
+    const listed = new Set(CHAPTERS.flatMap(([, names]) => names));
+    const groups = CHAPTERS.map(([chapter, names]) => el('optgroup', { label: chapter },
+      ...names.filter((n) => this.has(n)).map((n) => new Option(studyTitle(n), n))));
+    const others = Object.keys(presets).filter((n) => !listed.has(n));
+    if (others.length) groups.push(el('optgroup', { label: 'Other studies' }, ...others.map((n) => new Option(n, n))));
+    $('preset').replaceChildren(...groups);
     this.build();
   }
 
@@ -38,43 +56,70 @@ export class ScenarioForm {
         const id = fieldId(path);
         let input;
         if (choices) {
-          input = el('select', {}, ...choices.map((c) => new Option(c, c)));
+          input = el('select', {}, ...choices.map(([value, text]) => new Option(text, value)));
         } else {
-          input = el('input', { type: 'number', step: 'any' });
+          input = el('input', { type: 'text', inputMode: 'decimal', autocomplete: 'off' });
         }
         input.id = id;
         input.dataset.path = path;
-        input.setAttribute('aria-describedby', id + '-help');
+        input.setAttribute('aria-describedby', `${id}-help ${id}-err`);
         input.addEventListener('change', () => this.onFieldChange(input));
+        input.addEventListener('input', () => { if (input.tagName === 'INPUT') this.checkNumber(input); });
         const h = el('div', { className: 'help', id: id + '-help' }, el('span', { textContent: help }), el('span', { className: 'preset-value' }));
-        fs.append(el('div', { className: 'field' },
-          el('label', { htmlFor: id, textContent: unit ? `${label} [${unit}]` : label }),
-          input, h, el('div', { className: 'ferr', id: id + '-err' })));
+        const div = el('div', { className: 'field', id: id + '-field' },
+          el('label', { htmlFor: id, textContent: unit && unit !== '-' ? `${label} [${unit}]` : label }),
+          input, h, el('div', { className: 'ferr', id: id + '-err' }));
+        fs.append(div);
+        this.home.set(div, fs);
       }
       form.append(fs);
     }
-    const ta = el('textarea', { id: 'f-commands', rows: 6, attrs: { 'aria-label': ORDERS_LABEL } });
+    const ta = el('textarea', { id: 'f-commands', rows: 6, attrs: { 'aria-label': ORDERS_LABEL, 'aria-describedby': 'f-commands-err' } });
     ta.addEventListener('change', () => {
       try {
         this.scenario.commands = JSON.parse(ta.value);
+        this.setError('commands', '');
         this.save();
-        this.markErrors([]);
+        this.onEdit();
       } catch (e) {
-        this.markErrors([{ path: 'commands', value: '', message: 'not valid JSON: ' + e.message }]);
+        this.setError('commands', 'not valid JSON: ' + e.message);
       }
     });
-    form.append(el('fieldset', {}, el('legend', { textContent: 'Maneuver (orders)' }), ta, el('div', { className: 'help', textContent: ORDERS_HELP })));
+    form.append(el('fieldset', {}, el('legend', { textContent: 'Maneuver (orders)' }), ta, el('div', { className: 'ferr', id: 'f-commands-err' }), el('div', { className: 'help', textContent: ORDERS_HELP })));
+  }
+
+  // The study's parameters that matter go on top; the others back into the full form.
+  arrange() {
+    for (const [div, fs] of this.home) if (div.parentElement !== fs) fs.append(div);
+    const params = (STUDIES[this.name] && STUDIES[this.name].params) || [];
+    $('key-fields').replaceChildren(...params.map((p) => $(fieldId(p) + '-field')).filter(Boolean));
+    // Keep the full form's order inside each fieldset.
+    for (const fs of new Set(this.home.values())) {
+      const order = [...this.home.keys()].filter((d) => this.home.get(d) === fs && d.parentElement === fs);
+      fs.append(...order);
+    }
   }
 
   fill() {
     const preset = this.preset();
-    for (const input of $('form').querySelectorAll('[data-path]')) {
+    for (const input of $('controls').querySelectorAll('[data-path]')) {
       const v = getPath(this.scenario, input.dataset.path);
       input.value = v === undefined ? '' : String(v);
       const p = getPath(preset, input.dataset.path);
-      $(input.id + '-help').querySelector('.preset-value').textContent = p === undefined ? '' : ` Study value: ${p}.`;
+      const opt = input.tagName === 'SELECT' ? [...input.options].find((o) => o.value === String(p)) : null;
+      $(input.id + '-help').querySelector('.preset-value').textContent = p === undefined ? '' : ` Study value: ${opt ? opt.text : p}.`;
     }
     $('f-commands').value = JSON.stringify(this.scenario.commands, null, 1);
+  }
+
+  input(path) { return $(fieldId(path)); }
+
+  // A number field that does not hold a number is marked at once (Run waits for it).
+  checkNumber(input) {
+    const v = Number(input.value);
+    const bad = input.value.trim() === '' || !Number.isFinite(v);
+    this.setError(input.dataset.path, bad ? 'must be a number' : '');
+    return !bad;
   }
 
   onFieldChange(input) {
@@ -83,35 +128,54 @@ export class ScenarioForm {
     if (input.tagName === 'SELECT') {
       v = v === 'true' ? true : v === 'false' ? false : v;
     } else {
+      if (!this.checkNumber(input)) return;
       v = Number(v);
-      if (input.value.trim() === '' || !Number.isFinite(v)) {
-        this.markErrors([{ path, value: input.value, message: 'must be a number' }]);
-        return;
-      }
     }
     setPath(this.scenario, path, v);
+    this.setError(path, '');
     this.save();
-    this.markErrors([]);
+    this.onEdit();
   }
 
-  // Shows each refused field under its input; the others go to onLooseErrors.
+  // Sets or clears (message '') the error of one field: shown under it, aria-invalid on it.
+  setError(path, message) {
+    const input = path === 'commands' ? $('f-commands') : this.input(path);
+    const e = $((path === 'commands' ? 'f-commands' : fieldId(path)) + '-err');
+    if (!input || !e) return false;
+    e.textContent = message;
+    if (message) { input.setAttribute('aria-invalid', 'true'); this.invalid.add(path); } else { input.removeAttribute('aria-invalid'); this.invalid.delete(path); }
+    this.onValidity(this.invalid.size === 0);
+    return true;
+  }
+
+  // Shows each refused field under its input (all others cleared); the rest go to onLooseErrors.
   markErrors(fields) {
-    for (const e of $('form').querySelectorAll('.ferr')) e.textContent = '';
+    for (const p of [...this.invalid]) this.setError(p, '');
     const loose = [];
-    for (const f of fields) {
-      const e = $(fieldId(f.path) + '-err');
-      if (e) e.textContent = f.message; else loose.push(fieldLine(f));
-    }
+    for (const f of fields) if (!this.setError(f.path, f.message)) loose.push(fieldLine(f));
     if (loose.length) this.onLooseErrors(loose.join('\n'));
+    this.onValidity(this.invalid.size === 0);
+  }
+
+  // Marks the fields a link changed from the study's values.
+  markLinked(paths) {
+    for (const d of document.querySelectorAll('.field.linked')) d.classList.remove('linked');
+    for (const p of paths) { const d = $(fieldId(p) + '-field'); if (d) d.classList.add('linked'); }
   }
 
   select(name, scenario) {
     this.name = name;
     $('preset').value = name;
     this.scenario = scenario || this.preset(name);
-    $('about').textContent = `${this.preset(name).description} ${ABOUT_EXTRA[name] || ''}`;
+    const study = STUDIES[name] || {};
+    $('about').textContent = study.about || this.preset(name).description;
+    $('watch').replaceChildren(...(study.watch ? [el('strong', { textContent: 'What to watch' }), study.watch] : []),
+      ...(study.note ? [el('p', { textContent: study.note })] : []));
+    this.arrange();
     this.fill();
     this.markErrors([]);
+    this.markLinked([]);
+    this.onSelect(name);
   }
 
   save() {

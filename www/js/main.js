@@ -1,22 +1,24 @@
-// The page: wires the form, the worker, the plots, share links, exports and the stability tab.
-import { DEFAULT_PRESET, SUMMARY_ROWS } from './config.js';
-import { $, el, row, download } from './dom.js';
+// The page: wires the study picker and form, the worker, the plots, kept runs, share links and the
+// address bar, exports, presentation mode and the stability tab.
+import { DEFAULT_PRESET, SUMMARY_ROWS, STUDIES, DEFAULT_PLOTS, KEY_FIGURES, studyTitle } from './config.js';
+import { $, el, row, download, fmt } from './dom.js';
 import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
-import { setPhase, isBusy, setResult, getResult, progress, status, notice, etaText } from './state.js';
-import { linkHash, readLink } from './link.js';
-import { ScenarioForm } from './form.js';
+import { setPhase, isBusy, setResult, getResult, progress, status, notice, etaText, setFormValid } from './state.js';
+import { linkHash, readLink, diff } from './link.js';
+import { ScenarioForm, setPath, leafPaths } from './form.js';
 import { Signals } from './units.js';
 import { PlotBox, drawRun, drawSeaExtras } from './plots.js';
 import { MonteCarlo, showMonteCarlo } from './montecarlo.js';
 import { StabilityTab } from './stability.js';
 
-const plots = new PlotBox($('plots'));
+const plots = new PlotBox($('plots'), { more: $('more-plots'), moreBox: $('more-plots-box'), sync: 'run' });
 const monteCarlo = new MonteCarlo();
 // Set once the first worker is ready; `client` is replaced by a fresh worker after a cancel.
 let client = null;
 let form = null;
 let signals = null;
-const stability = new StabilityTab(() => client, new PlotBox($('ips-plots'), { maxWidth: 900, columns: 1 }));
+let kept = null; // a kept run: {name, columns, summary}
+const stability = new StabilityTab(() => client, new PlotBox($('ips-plots')));
 
 function startWorker() {
   setPhase('loading');
@@ -28,13 +30,21 @@ function startWorker() {
 
 const validate = (sc) => client.request(REQUEST.validate, { scenario: JSON.stringify(sc) });
 
-// The scenario of the page's link: null without one, {refused: true} (after saying why) when it
-// cannot be used, else {name, scenario}, validated.
-async function openLink() {
-  const link = readLink(location.hash.slice(1), form.presets);
+// The address follows the study: '#v=1&preset=NAME' (a copied link adds the edits).
+const studyHash = (name) => linkHash(name, form.preset(name), form.preset(name));
+function follow(name, push) {
+  const h = studyHash(name);
+  if (location.hash === h) return;
+  history[push ? 'pushState' : 'replaceState'](null, '', h);
+}
+
+// The scenario of a hash: null without one, {refused: true} (after saying why) when it cannot be
+// used, else {name, scenario, edited}, validated.
+async function openLink(hash) {
+  const link = readLink(hash, form.presets);
   if (!link) return null;
   const refuse = (why) => {
-    notice(`This link could not be used: ${why}. Showing the ${DEFAULT_PRESET} study instead.`);
+    notice(`This link could not be used: ${why}. Showing the ${studyTitle(DEFAULT_PRESET)} study instead.`);
     return { refused: true };
   };
   if (link.refused) return refuse(link.refused);
@@ -43,32 +53,68 @@ async function openLink() {
   } catch (e) {
     return refuse(e.fields.length ? e.fields.slice(0, 3).map(fieldLine).join('; ') : e.message);
   }
-  return link;
+  const d = diff(form.preset(link.name), link.scenario);
+  return { ...link, edited: d === undefined ? [] : leafPaths(d) };
 }
 
 async function onReady(m) {
   if (form) { setPhase('idle'); return; } // a fresh worker after a cancel: the page stays as it is
   signals = new Signals(m.signals);
-  form = new ScenarioForm(m.presets, { onLooseErrors: (text) => status(text, true) });
-  const linked = await openLink();
-  if (linked && !linked.refused) {
+  form = new ScenarioForm(m.presets, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => showCompareButtons() });
+  const linked = await openLink(location.hash.slice(1));
+  if (linked && !linked.refused && linked.edited.length) {
     form.select(linked.name, linked.scenario);
+    form.markLinked(linked.edited);
     setPhase('idle');
-    run();
+    status(`This link changed ${linked.edited.length} value(s) of the study (marked in the form).`);
+    run({ focus: false });
     return;
   }
+  const saved = linked && linked.refused ? null : form.saved();
+  const want = linked && !linked.refused ? linked.name : null;
   let restored = false;
-  const saved = linked ? null : form.saved();
-  if (saved) {
+  if (saved && (!want || want === saved.preset)) {
     try {
       await validate(saved.scenario);
       form.select(saved.preset, saved.scenario);
       restored = true;
     } catch (_) { /* stale edits: start from the preset */ }
   }
-  if (!restored) form.select(DEFAULT_PRESET);
+  if (!restored) form.select(want || DEFAULT_PRESET);
+  follow(form.name, false);
   setPhase('idle');
   status(restored ? 'Your last edits are back.' : 'Ready. Choose a study and press Run.');
+}
+
+// After an accepted edit: the scenario is checked at once (errors at the field, Run waits), and
+// a page opened from a link now shows the study, not the link's values.
+let validating = 0;
+async function onEdit() {
+  follow(form.name, false);
+  const mine = ++validating;
+  try {
+    await validate(form.current());
+    if (mine === validating) form.markErrors([]);
+  } catch (e) {
+    if (mine === validating && !e.cancelled) form.markErrors(e.fields || []);
+  }
+}
+
+function selectStudy(name, push = true) {
+  form.select(name);
+  form.save();
+  follow(name, push);
+}
+
+// Back/Forward and a hand-edited address: show the study of the address.
+async function route() {
+  if (!form) return;
+  const link = await openLink(location.hash.slice(1));
+  if (!link || link.refused) return;
+  if (link.name === form.name && !link.edited.length) return;
+  form.select(link.name, link.scenario);
+  form.markLinked(link.edited);
+  status(`${studyTitle(link.name)}: press Run.`);
 }
 
 function showSummary(s, constants) {
@@ -76,8 +122,41 @@ function showSummary(s, constants) {
     const v = s.signals[name];
     return row(signals.labelWithUnit(name, constants), [v.final, v.min, v.max].map((x) => Number(x).toPrecision(4)));
   }));
+  // Tables 5.6 and 5.7: each stage's power at the end and the efficiency of the stage.
+  const inv = s.power_inventory_w || {}, eff = s.efficiency || {};
+  const stages = [['turbine', 'gas turbines, shaft', null], ['generator', 'generators, electrical', 'generator'], ['inverter', 'into the motors', 'power_electronics'], ['motor', 'motors, shaft', 'motor'], ['ship', 'ship, resistance x speed', 'propeller']];
+  const body = $('inventory').querySelector('tbody');
+  body.replaceChildren(el('tr', {}, ...['stage', 'power [MW]', 'efficiency of the stage'].map((h) => el('th', { scope: 'col', textContent: h }))),
+    ...stages.filter(([k]) => k in inv).map(([k, label, e]) => row(label, [fmt(inv[k] / 1e6), e && e in eff ? `${(eff[e] * 100).toFixed(1)} %` : '–'])));
   $('warnings').replaceChildren(...(s.warnings || []).map((w) => el('li', { textContent: w })));
   $('summary-box').hidden = false;
+}
+
+// The kept run against the new one: key figures side by side.
+function showComparison(now) {
+  const box = $('compare-box');
+  if (!kept || !now) { box.hidden = true; return; }
+  const rows = [];
+  for (const [label, f] of KEY_FIGURES) {
+    let a, b;
+    try { a = f(kept.summary); b = f(now.summary); } catch (_) { continue; }
+    if (!Number.isFinite(a) || !Number.isFinite(b) || (a === 0 && b === 0)) continue;
+    const d = b - a;
+    const cell = el('td', { textContent: `${d >= 0 ? '+' : ''}${fmt(d, 3)}`, className: d > 0 ? 'up' : d < 0 ? 'down' : '' });
+    rows.push(el('tr', {}, el('th', { scope: 'row', textContent: label }), el('td', { textContent: fmt(a) }), el('td', { textContent: fmt(b) }), cell));
+  }
+  const head = el('tr', {}, ...['key figure', `kept: ${kept.name}`, `this run: ${now.name}`, 'difference'].map((h) => el('th', { scope: 'col', textContent: h })));
+  box.replaceChildren(el('h2', { textContent: 'Compared with the kept run (dashed, muted in every plot)' }),
+    el('div', { className: 'scroll' }, el('table', { id: 'compare-table' }, el('thead', {}, head), el('tbody', {}, ...rows))));
+  box.hidden = false;
+}
+
+// A run's name for legends: the study, and what differs from it.
+function runName(sc) {
+  const d = diff(form.preset(form.name), sc);
+  const paths = d === undefined ? [] : leafPaths(d);
+  const what = paths.slice(0, 2).map((p) => `${p.split('.').pop()} = ${JSON.stringify(p.split('.').reduce((o, k) => o[k], sc))}`).join(', ');
+  return `${studyTitle(form.name)}${what ? `, ${what}${paths.length > 2 ? ', ...' : ''}` : ''}`;
 }
 
 // A failed request keeps the form and the earlier results; refused fields are marked.
@@ -88,8 +167,8 @@ function failed(e) {
   form.markErrors(e.fields || []);
 }
 
-async function run() {
-  if (isBusy() || !form) return;
+async function run({ focus = true } = {}) {
+  if (isBusy() || !form || form.invalid.size) return;
   const sc = form.current();
   setPhase('running');
   status('Running...');
@@ -100,17 +179,22 @@ async function run() {
     m = await c.request(REQUEST.run, { scenario: JSON.stringify(sc) }, (p) => progress(p.fraction, etaText(started, p.fraction)));
   } catch (e) { failed(e); return; }
   progress(1);
-  setResult({ summary: m.summary, csv: m.csv, scenario: sc });
+  const name = runName(sc);
+  setResult({ summary: m.summary, csv: m.csv, scenario: sc, columns: m.columns, name });
   setPhase('idle');
   showSummary(m.summary, m.constants);
-  drawRun(plots, m.columns, signals, m.constants);
+  showComparison({ summary: m.summary, name });
+  const order = (STUDIES[form.name] && STUDIES[form.name].plots) || DEFAULT_PLOTS;
+  const { markers } = drawRun(plots, m.columns, signals, m.constants, sc, { order, kept });
   if (sc.sea.kind !== 'calm') drawSeaExtras(plots, c, sc, m.columns, m.constants, (e) => status(e.message, true));
   const t = m.summary.final_time_s, wall = m.wall_ms / 1000;
-  status(`Done: ${t} s simulated in ${wall.toFixed(2)} s (${(t / wall).toFixed(0)} times real time).`);
+  const events = sc.sea.kind === 'calm' ? '' : ` Surface losses started ${markers.length} time(s).`;
+  status(`Done: ${t} s simulated in ${wall.toFixed(2)} s (${(t / wall).toFixed(0)} times real time).${events}`);
+  if (focus) $('results').focus();
 }
 
 async function runMonteCarlo() {
-  if (isBusy() || !form) return;
+  if (isBusy() || !form || form.invalid.size) return;
   const sc = form.current();
   const why = MonteCarlo.refusal(sc);
   if (why) { status(why, true); return; }
@@ -128,8 +212,43 @@ async function runMonteCarlo() {
   setResult({ summary: out.summary, csv: '', scenario: sc });
   setPhase('idle');
   $('summary-box').hidden = true;
+  $('compare-box').hidden = true;
   showMonteCarlo(plots, out.summary, signals, out.constants);
   status(`Monte Carlo done: ${n} trials in ${((performance.now() - started) / 1000).toFixed(1)} s.`);
+  $('results').focus();
+}
+
+function keep() {
+  const r = getResult();
+  if (!r || !r.columns) return;
+  kept = { name: r.name, columns: r.columns, summary: r.summary };
+  $('unkeep').hidden = false;
+  status(`Kept: ${r.name}. The next runs draw over it, muted and dashed.`);
+}
+
+// "Compare with ...": keep this study's run (running it first if needed), then run the other.
+async function compareWith(c) {
+  if (isBusy() || !form) return;
+  const r = getResult();
+  if (!r || !r.columns || JSON.stringify(r.scenario) !== JSON.stringify(form.scenario)) await run({ focus: false });
+  if (!getResult() || !getResult().columns) return;
+  keep();
+  if (c.preset) selectStudy(c.preset);
+  else {
+    for (const [path, v] of Object.entries(c.set)) setPath(form.scenario, path, v);
+    form.fill();
+    form.save();
+  }
+  await run();
+}
+
+function showCompareButtons() {
+  const study = STUDIES[form.name] || {};
+  $('compare-with').replaceChildren(...(study.compare || []).map((c) => {
+    const b = el('button', { type: 'button', textContent: `Compare with ${c.label}` });
+    b.addEventListener('click', () => compareWith(c));
+    return b;
+  }));
 }
 
 function cancel() {
@@ -139,16 +258,52 @@ function cancel() {
   startWorker();
 }
 
+// Tabs (ARIA pattern): click, or arrow keys / Home / End on the tab list.
+const TABS = [['tab-sim', 'panel-sim'], ['tab-ips', 'panel-ips']];
+function selectTab(id, focus = false) {
+  for (const [tab, panel] of TABS) {
+    const on = tab === id;
+    $(tab).setAttribute('aria-selected', String(on));
+    $(tab).tabIndex = on ? 0 : -1;
+    $(panel).hidden = !on;
+  }
+  if (focus) $(id).focus();
+  if (id === 'tab-ips') stability.update();
+}
+for (const [tab] of TABS) $(tab).addEventListener('click', () => selectTab(tab));
+$('tabs').addEventListener('keydown', (e) => {
+  const i = TABS.findIndex(([t]) => t === document.activeElement.id);
+  if (i < 0) return;
+  const j = { ArrowRight: i + 1, ArrowLeft: i - 1, Home: 0, End: TABS.length - 1 }[e.key];
+  if (j === undefined) return;
+  e.preventDefault();
+  selectTab(TABS[(j + TABS.length) % TABS.length][0], true);
+});
+
+// Presentation mode: full screen, large type, the form folded away.
+function present(on) {
+  document.body.classList.toggle('presenting', on);
+  $('present').setAttribute('aria-pressed', String(on));
+  $('present').textContent = on ? 'Leave presentation' : 'Presentation mode';
+  if (on && document.documentElement.requestFullscreen && !document.fullscreenElement) document.documentElement.requestFullscreen().catch(() => {});
+  if (!on && document.fullscreenElement) document.exitFullscreen().catch(() => {});
+}
+$('present').addEventListener('click', () => present(!document.body.classList.contains('presenting')));
+document.addEventListener('fullscreenchange', () => { if (!document.fullscreenElement && document.body.classList.contains('presenting')) present(false); });
+
 $('form').addEventListener('submit', (e) => e.preventDefault());
-$('preset').addEventListener('change', () => { form.select($('preset').value); form.save(); });
-$('run').addEventListener('click', run);
+$('preset').addEventListener('change', () => selectStudy($('preset').value));
+$('run').addEventListener('click', () => run());
 $('mc-run').addEventListener('click', runMonteCarlo);
 $('cancel').addEventListener('click', cancel);
+$('keep').addEventListener('click', keep);
+$('unkeep').addEventListener('click', () => { kept = null; $('unkeep').hidden = true; $('compare-box').hidden = true; status('The kept run is forgotten.'); });
 $('reset').addEventListener('click', () => {
   if (!form) return;
   form.select(form.name);
   form.save();
-  status('Back to the preset.');
+  follow(form.name, false);
+  status('Back to the study\'s values.');
 });
 $('share').addEventListener('click', async () => {
   if (!form) return;
@@ -166,12 +321,6 @@ $('export-json').addEventListener('click', () => {
   const r = getResult();
   if (r) download(`${r.scenario.name}-summary.json`, JSON.stringify({ scenario: r.scenario, summary: r.summary }, null, 1), 'application/json');
 });
-for (const [tab, panel, other, otherPanel] of [['tab-sim', 'panel-sim', 'tab-ips', 'panel-ips'], ['tab-ips', 'panel-ips', 'tab-sim', 'panel-sim']]) {
-  $(tab).addEventListener('click', () => {
-    $(tab).setAttribute('aria-selected', 'true'); $(other).setAttribute('aria-selected', 'false');
-    $(panel).hidden = false; $(otherPanel).hidden = true;
-    if (tab === 'tab-ips') stability.update();
-  });
-}
-window.addEventListener('hashchange', () => location.reload());
+window.addEventListener('popstate', route);
+window.addEventListener('hashchange', route);
 startWorker();

@@ -73,29 +73,41 @@ export function showMonteCarlo(box, s, signals, constants) {
   const rows = [['Trials', s.trials], ['Seed', s.seed]];
   if (e) rows.push(['Excess energy vs submerged counterpart [MJ]', `${fmt(e.mean)} ± ${fmt(e.std)}`], [`Excess energy vs calm water [MJ] (${MC.calmWaterNote})`, `${fmt(e.vs_calm_water.mean)} ± ${fmt(e.vs_calm_water.std)}`]);
   rows.push(['First surface effects / censored', `${a.events} / ${a.censored} (cap ${a.cap_s} s)`]);
-  const info = box.panel(null, box.generation, table('Monte Carlo summary', rows));
+  const info = box.panel(null, box.generation, false, table('Monte Carlo summary', rows));
   if (r) {
+    const th = MC.table58Thesis;
     info.append(
-      table('Arrival time of the first surface effect [s] (Table 5.8)', [
-        [`Rice (Z ${fmt(r.z_m, 3)} m, rate ${fmt(r.rate_per_s, 3)}/s)`, ...exponentialMoments(r.rate_per_s).map((v) => fmt(v))],
-        ['Monte Carlo', ...[a.mean, a.std, a.skewness, a.kurtosis, a.median, a.mode].map((v) => fmt(v))],
-      ], ['', 'mean', 'std', 'skewness', 'kurtosis', 'median', 'mode']),
-      el('p', { className: 'about', textContent: `Censored at ${a.cap_s} s alike: Monte Carlo mean of min(T, cap) ${fmt(a.mean_censored)} s, Rice ${fmt(r.mean_censored_s)} s.` }));
+      el('div', { className: 'scroll' }, table('Arrival time of the first surface effect [s] (Table 5.8)', [
+        [`Rice (Z ${fmt(r.z_m, 3)} m, rate ${fmt(r.rate_per_s, 3)}/s)`, ...exponentialMoments(r.rate_per_s).map((v) => fmt(v)), ...th.rice],
+        ['Monte Carlo', ...[a.mean, a.std, a.skewness, a.kurtosis, a.median, a.mode].map((v) => fmt(v)), ...th.monteCarlo],
+      ], ['', 'mean', 'std', 'skewness', 'kurtosis', 'median', 'mode', ...th.head])),
+      el('p', { className: 'about', textContent: `Censored at ${a.cap_s} s alike: Monte Carlo mean of min(T, cap) ${fmt(a.mean_censored)} s, Rice ${fmt(r.mean_censored_s)} s.` }),
+      el('p', { className: 'about', textContent: MC.riceNote }));
   }
+  if (e) info.append(el('p', { className: 'about', textContent: MC.excessNote }));
   const time = `time [${signals.meta('t_s').unit}]`;
   for (const [sig, env] of Object.entries(s.envelopes)) {
     const series = [
-      { data: env.mean, label: 'mean', color: '#0b5cad' }, { data: env.plus_2sigma, label: '+2 sigma', color: '#85c1e9' },
-      { data: env.minus_2sigma, label: '-2 sigma', color: '#85c1e9' }, { data: env.min, label: 'min', color: '#999', dash: [4, 4] },
-      { data: env.max, label: 'max', color: '#999', dash: [4, 4] }];
+      { data: env.mean, label: 'mean', color: '#0b5cad' }, { data: env.plus_2sigma, label: 'mean + 2 std', color: '#2e86c1', dash: [6, 3] },
+      { data: env.minus_2sigma, label: 'mean - 2 std', color: '#2e86c1', dash: [6, 3] }, { data: env.min, label: 'lowest', color: '#6b6b6b', dash: [2, 3] },
+      { data: env.max, label: 'highest', color: '#6b6b6b', dash: [2, 3] }];
     const tr = (s.traces || [])[0];
     const c = tr && tr.columns.find(([n]) => n === sig);
-    if (c) series.push({ data: c[1].slice(0, env.t_s.length), label: `trial ${tr.trial}`, color: '#c0392b' });
-    box.line(`${signals.labelWithUnit(sig, constants)}: envelope over ${s.trials} trials (Fig. 5-20)`, { data: env.t_s, label: time }, series, [{ scale: 'y', label: signals.axisLabel(sig, constants) }]);
+    if (c) series.push({ data: c[1].slice(0, env.t_s.length), label: `trial ${tr.trial}`, color: '#b03a2e' });
+    // Trials still running under the envelope (a trial stopped after its first event leaves it).
+    const n = env.n || [];
+    const fewer = n.findIndex((k) => k < s.trials);
+    const axes = [{ scale: 'y', label: signals.axisLabel(sig, constants) }];
+    if (fewer >= 0) {
+      series.push({ data: n, label: 'trials still running', color: '#1b1b1b', dash: [2, 3], width: 1, scale: 'n' });
+      axes.push({ scale: 'n', label: 'trials still running [-]' });
+    }
+    box.line(`${signals.labelWithUnit(sig, constants)}: envelope over ${s.trials} trials (Fig. 5-20)`, { data: env.t_s, label: time }, series, axes,
+      { time: true, key: fewer >= 0 ? [`From t = ${fmt(env.t_s[fewer], 3)} s fewer trials are running (dotted, right axis): the envelope after that is drawn from those left.`] : null });
   }
   const ht = s.histogram_at_t;
   if (ht.n > 0) box.histogram(`${signals.labelWithUnit(ht.signal, constants)} at t = ${ht.t_s} s (Fig. 5-21), skewness ${fmt(ht.skewness, 3)}`, ht.histogram, signals.labelWithUnit(ht.signal, constants));
-  if (e) box.histogram(`Excess energy per trial vs the submerged counterpart [MJ] (Fig. 5-22): ${fmt(e.mean)} ± ${fmt(e.std)}`, e.histogram, 'MJ');
+  if (e) box.histogram(`Excess energy per trial vs the submerged counterpart [MJ] (Fig. 5-22): ${fmt(e.mean)} ± ${fmt(e.std)}`, e.histogram, 'excess energy [MJ]');
   if (a.events > 0) {
     const h = a.histogram, w = (h.hi - h.lo) / h.counts.length, total = s.trials;
     const overlay = r ? { label: `exponential, Rice rate ${fmt(r.rate_per_s, 3)}/s`, values: h.counts.map((_, i) => total * (Math.exp(-r.rate_per_s * (h.lo + i * w)) - Math.exp(-r.rate_per_s * (h.lo + (i + 1) * w)))) } : null;
@@ -104,7 +116,7 @@ export function showMonteCarlo(box, s, signals, constants) {
   if (s.onset && s.onset.t_s.length > 1) {
     const o = s.onset;
     box.line(`${signals.labelWithUnit(MC.onsetSignal, constants)} after the onset of a surface effect (Fig. 5-25)`, { data: o.t_s, label: 'time after onset [s]' },
-      [{ data: o.mean, label: 'mean', color: '#0b5cad' }, { data: o.plus_2sigma, label: '+2 sigma', color: '#85c1e9' }, { data: o.min, label: 'min', color: '#999' }],
+      [{ data: o.mean, label: 'mean', color: '#0b5cad' }, { data: o.plus_2sigma, label: 'mean + 2 std', color: '#2e86c1', dash: [6, 3] }, { data: o.min, label: 'lowest', color: '#6b6b6b', dash: [2, 3] }],
       [{ scale: 'y', label: signals.axisLabel(MC.onsetSignal, constants) }]);
   }
   const pg = s.periodogram;
@@ -114,7 +126,7 @@ export function showMonteCarlo(box, s, signals, constants) {
     const pos = (v) => v.slice(1, n).map((x) => Math.max(x, 1e-9));
     const unit = pg.unit.replace('^2', '²');
     box.line(`Periodogram of one motor's power [${unit}] (Welch, Fig. 5-23)`, { data: pg.freq_hz.slice(1, n), label: 'frequency [Hz]' },
-      [{ data: pos(pg.mean), label: 'mean', color: '#0b5cad' }, { data: pos(pg.min), label: 'min', color: '#999' }, { data: pos(pg.max), label: 'max', color: '#c0392b' }],
-      [{ scale: 'y', label: `[${unit}]` }], { scales: { y: { distr: 3 } } });
+      [{ data: pos(pg.mean), label: 'mean over trials', color: '#0b5cad' }, { data: pos(pg.min), label: 'lowest', color: '#6b6b6b', dash: [2, 3] }, { data: pos(pg.max), label: 'highest', color: '#b03a2e', dash: [6, 3] }],
+      [{ scale: 'y', label: `power spectral density [${unit}]` }], { scales: { y: { distr: 3, log: 10 } } });
   }
 }

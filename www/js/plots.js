@@ -1,76 +1,177 @@
-// Plots: uPlot charts and canvas pictures in a box, the plots of a run (units from signalMeta,
-// levels and bases from pageConstants) and the extra plots after a run in waves.
+// Plots: uPlot charts and canvas pictures in a box, sized to their container and re-fitted when it
+// changes (ResizeObserver); the plots of a run (units from signalMeta, levels and bases from
+// pageConstants), a kept run drawn muted under the new one, and the extra plots after a run in waves.
 import uPlot from '../vendor/uPlot.esm.js';
-import { PLOTS, LEVEL_COLORS, BAND_COLOR, BAND_FILL, TRACK_MARK_S, TRACK_MIN_SPAN_M, RAO, FUEL_OMEGAS, FUEL_COLORS } from './config.js';
-import { el } from './dom.js';
+import { PLOTS, DEFAULT_PLOTS, LEVEL_COLORS, BAND_FILL, BAND_EDGE, SURFACE_FILL, EVENT_COLOR, KEPT_STYLE, TRACK_MARK_S, TRACK_MIN_SPAN_M, RAO, FUEL_OMEGAS, FUEL_COLORS } from './config.js';
+import { el, fmt, downloadUrl } from './dom.js';
 import { quantity, withPrefix } from './units.js';
 import { REQUEST } from './protocol.js';
 
-const HEIGHT = 220;
 const TRACK_MARGIN = 1.1; // the track fills 1/1.1 of the picture
+const plotHeight = () => parseFloat(getComputedStyle(document.body).getPropertyValue('--plot-h')) || 240;
+
+// Tick labels with as many digits as the step needs ("0.995, 1, 1.005", not "1, 1, 1"); on a log
+// axis, powers of ten read as "1e-3".
+function ticks(u, splits, axisIdx, space, incr) {
+  const scaleKey = u.axes[axisIdx].scale;
+  if (u.scales[scaleKey] && u.scales[scaleKey].distr === 3) {
+    return splits.map((v) => {
+      if (v == null) return '';
+      const e = Math.log10(v);
+      if (Math.abs(e - Math.round(e)) > 1e-6) return '';
+      return Math.abs(e) <= 3 ? String(Number(v.toPrecision(1))) : `1e${Math.round(e)}`;
+    });
+  }
+  const digits = incr > 0 ? Math.max(0, Math.min(8, -Math.floor(Math.log10(incr) + 1e-9))) : 0;
+  return splits.map((v) => (v == null ? '' : Math.abs(v) >= 1e6 ? v.toExponential(2) : v.toFixed(digits)));
+}
 
 // A box of plots. clear() starts a new generation: plots that arrive late for an older one
-// (after an asynchronous request) are dropped.
+// (after an asynchronous request) are dropped. `more`: a second container for the plots that do
+// not tell the study's story (one click away).
 export class PlotBox {
-  constructor(box, { minWidth = 420, maxWidth = 720, columns = 2 } = {}) {
+  constructor(box, { more = null, moreBox = null, sync = null } = {}) {
     this.box = box;
+    this.more = more;
+    this.moreBox = moreBox;
+    this.sync = sync;
     this.plots = [];
     this.generation = 0;
-    this.size = { minWidth, maxWidth, columns };
+    this.observer = new ResizeObserver((entries) => {
+      for (const e of entries) {
+        const u = e.target.uplot;
+        const w = Math.floor(e.contentRect.width);
+        if (u && w > 0 && (w !== u.width || plotHeight() !== u.height)) u.setSize({ width: w, height: plotHeight() });
+      }
+    });
   }
 
   clear() {
     for (const p of this.plots) p.destroy();
     this.plots = [];
+    this.observer.disconnect();
     this.box.replaceChildren();
+    if (this.more) { this.more.replaceChildren(); this.moreBox.hidden = true; }
     return ++this.generation;
   }
 
-  width() {
-    const { minWidth, maxWidth, columns } = this.size;
-    return Math.max(minWidth, Math.min(maxWidth, (this.box.clientWidth || 900) / columns - (columns > 1 ? 24 : 30)));
-  }
-
-  // A panel (titled unless title is null) appended to the box (or null when `generation` is stale).
-  panel(title, generation = this.generation, ...content) {
+  // A panel (titled unless title is null) appended to the box or to `more` (or null when
+  // `generation` is stale).
+  panel(title, generation = this.generation, more = false, ...content) {
     if (generation !== this.generation) return null;
-    const div = el('div', { className: 'plot' }, ...(title ? [el('h3', { textContent: title })] : []), ...content);
-    this.box.append(div);
+    const div = el('figure', { className: 'plot' }, ...(title ? [el('h3', { textContent: title })] : []), ...content);
+    if (more && this.more) { this.more.append(div); this.moreBox.hidden = false; } else this.box.append(div);
     return div;
   }
 
   // A line plot. series: [{data, label, color, scale?, ...uPlot series options}]; axes: the
   // y axes [{scale, label}] (a second one goes on the right); x: {data, label, distr?}.
-  line(title, x, series, axes, { generation, scales = {}, bands } = {}) {
-    const div = this.panel(title, generation);
-    if (!div) return;
+  // hbands: [{from, to, fill, edge?}] shaded across the plot; levels: [{value, label, color}];
+  // markers: x values of events; key: a line under the plot saying what the shading means.
+  line(title, x, series, axes, { generation, scales = {}, more = false, hbands = [], levels = [], markers = [], key = null, time = false } = {}) {
+    const div = this.panel(title, generation, more);
+    if (!div) return null;
+    const chart = el('div', { className: 'chart' });
+    div.append(chart);
     const yScales = {};
     for (const a of axes) yScales[a.scale] = scales[a.scale] || {};
-    const opts = {
-      width: this.width(),
-      height: HEIGHT,
-      scales: { x: { time: false, ...(x.distr ? { distr: x.distr } : {}) }, ...yScales },
-      axes: [{ label: x.label }, ...axes.map((a, i) => ({ scale: a.scale, label: a.label, ...(i ? { side: 1, grid: { show: false } } : {}) }))],
-      series: [{ label: x.label }, ...series.map(({ data, color, ...rest }) => ({ stroke: color, width: 1.5, scale: axes[0].scale, ...rest }))],
-      ...(bands ? { bands } : {}),
+    const overlay = (u) => {
+      const { ctx } = u;
+      const { left, top, width, height } = u.bbox;
+      ctx.save();
+      ctx.beginPath(); ctx.rect(left, top, width, height); ctx.clip();
+      const sc = axes[0].scale;
+      for (const b of hbands) {
+        const y0 = u.valToPos(b.from, sc, true), y1 = u.valToPos(b.to, sc, true);
+        ctx.fillStyle = b.fill;
+        ctx.fillRect(left, Math.min(y0, y1), width, Math.abs(y1 - y0));
+        if (b.edge) {
+          ctx.strokeStyle = b.edge; ctx.lineWidth = 1;
+          for (const y of [y0, y1]) { ctx.beginPath(); ctx.moveTo(left, y); ctx.lineTo(left + width, y); ctx.stroke(); }
+        }
+      }
+      const dpr = devicePixelRatio || 1;
+      ctx.font = `${Math.round(11 * dpr)}px system-ui, sans-serif`;
+      for (const l of levels) {
+        const y = u.valToPos(l.value, sc, true);
+        ctx.strokeStyle = l.color; ctx.lineWidth = 1.5 * dpr; ctx.setLineDash([6 * dpr, 4 * dpr]);
+        ctx.beginPath(); ctx.moveTo(left, y); ctx.lineTo(left + width, y); ctx.stroke();
+        ctx.setLineDash([]);
+        ctx.fillStyle = l.color;
+        ctx.fillText(`${l.label} (${l.value})`, left + 4 * dpr, y - 3 * dpr);
+      }
+      ctx.strokeStyle = EVENT_COLOR; ctx.lineWidth = 1.5 * dpr;
+      for (const t of markers) {
+        const X = u.valToPos(t, 'x', true);
+        ctx.beginPath(); ctx.moveTo(X, top); ctx.lineTo(X, top + height); ctx.stroke();
+        ctx.fillStyle = EVENT_COLOR;
+        ctx.beginPath(); ctx.moveTo(X - 5 * dpr, top); ctx.lineTo(X + 5 * dpr, top); ctx.lineTo(X, top + 8 * dpr); ctx.fill();
+      }
+      ctx.restore();
     };
-    this.plots.push(new uPlot(opts, [x.data, ...series.map((s) => s.data)], div));
+    const opts = {
+      width: Math.max(200, Math.floor(chart.clientWidth || 440)),
+      height: plotHeight(),
+      scales: { x: { time: false, ...(x.distr ? { distr: x.distr } : {}) }, ...yScales },
+      axes: [{ label: x.label, values: ticks }, ...axes.map((a, i) => ({ scale: a.scale, label: a.label, values: ticks, size: 60, ...(i ? { side: 1, grid: { show: false } } : {}) }))],
+      series: [{ label: x.label }, ...series.map(({ data, color, ...rest }) => ({ stroke: color, width: 1.8, scale: axes[0].scale, spanGaps: true, ...rest }))],
+      legend: { live: false },
+      cursor: time && this.sync ? { sync: { key: this.sync, setSeries: false } } : {},
+      hooks: { drawClear: [overlay], ...(time && this.sync ? { setScale: [(u, key) => this.linkZoom(u, key)] } : {}) },
+    };
+    const u = new uPlot(opts, [x.data, ...series.map((s) => s.data)], chart);
+    u.linked = time;
+    chart.uplot = u;
+    this.observer.observe(chart);
+    this.plots.push(u);
+    div.append(this.tools(title, u, x, series, key));
+    return u;
+  }
+
+  // Zooming one time plot zooms all (guarded against the echo).
+  linkZoom(src, key) {
+    if (key !== 'x' || this.zooming) return;
+    this.zooming = true;
+    const { min, max } = src.scales.x;
+    for (const u of this.plots) if (u !== src && u.linked) u.setScale('x', { min, max });
+    this.zooming = false;
+  }
+
+  // Under a plot: what the shading means, PNG export, and the text alternative (a table of each
+  // line's first, lowest, highest and last value).
+  tools(title, u, x, series, key) {
+    const png = el('button', { type: 'button', textContent: 'PNG' });
+    png.setAttribute('aria-label', `Save "${title}" as PNG`);
+    png.addEventListener('click', () => downloadUrl(`${(title || 'plot').replace(/[^\w]+/g, '-').slice(0, 60)}.png`, u.ctx.canvas.toDataURL('image/png')));
+    const rows = series.map((s) => {
+      const v = Array.from(s.data).filter((y) => y != null && Number.isFinite(y));
+      return el('tr', {}, el('th', { scope: 'row', textContent: s.label }),
+        ...[v[0], Math.min(...v), Math.max(...v), v[v.length - 1]].map((y) => el('td', { textContent: v.length ? fmt(y) : '–' })));
+    });
+    const table = el('table', {}, el('caption', { textContent: `${title}: over ${x.label}` }),
+      el('thead', {}, el('tr', {}, ...['line', 'first', 'lowest', 'highest', 'last'].map((h) => el('th', { scope: 'col', textContent: h })))),
+      el('tbody', {}, ...rows));
+    const details = el('details', {}, el('summary', { textContent: 'Numbers' }), el('div', { className: 'scroll' }, table));
+    return el('div', { className: 'tools' }, ...(key ? [el('span', { className: 'key' }, ...key)] : []), png, details);
   }
 
   // A histogram {lo, hi, counts} as bars, with an optional overlay {label, values}.
   histogram(title, h, xLabel, overlay, generation) {
     const w = (h.hi - h.lo) / h.counts.length;
     const centres = h.counts.map((_, i) => h.lo + (i + 0.5) * w);
-    const series = [{ data: h.counts, label: 'trials', color: '#2980b9', paths: uPlot.paths.bars({ size: [0.9, 100] }), fill: '#aed6f1' }];
-    if (overlay) series.push({ data: overlay.values, label: overlay.label, color: '#c0392b' });
-    this.line(title, { data: centres, label: xLabel }, series, [{ scale: 'y', label: 'trials per bin' }], { generation });
+    const series = [{ data: h.counts, label: 'trials', color: '#1f618d', paths: uPlot.paths.bars({ size: [0.9, 100] }), fill: '#aed6f1', points: { show: false } }];
+    if (overlay) series.push({ data: overlay.values, label: overlay.label, color: '#b03a2e', points: { show: false } });
+    this.line(title, { data: centres, label: xLabel }, series, [{ scale: 'y', label: 'trials per bin [count]' }], { generation });
   }
 
-  // A panel with a canvas picture; draw(canvas) runs once it is laid out.
-  canvas(title, ariaLabel, draw) {
+  // A panel with a canvas picture; draw(canvas) runs once it is laid out and again on a resize.
+  canvas(title, ariaLabel, draw, more = false) {
     const cv = el('canvas', { className: 'track', attrs: { role: 'img', 'aria-label': ariaLabel } });
-    this.panel(title, this.generation, cv);
-    requestAnimationFrame(() => draw(cv));
+    this.panel(title, this.generation, more, cv);
+    let lastW = 0;
+    const ro = new ResizeObserver(() => { if (cv.clientWidth && cv.clientWidth !== lastW) { lastW = cv.clientWidth; draw(cv); } });
+    ro.observe(cv);
+    this.plots.push({ destroy: () => ro.disconnect() });
     return cv;
   }
 }
@@ -85,72 +186,117 @@ export function sizedCanvas(cv, height) {
   return { g, w, h: height };
 }
 
-const constant = (t, v) => Array.from(t, () => v);
+// Times where surface losses start: beta_T leaves 1 (read from the trace, not computed).
+export function lossStarts(cols) {
+  const b = cols.beta_t, t = cols.t_s, out = [];
+  for (let i = 1; i < b.length; i++) if (b[i] < 1 && b[i - 1] >= 1) out.push(t[i]);
+  return out;
+}
 
-// The plot of one PLOTS entry: series grouped by displayed unit onto one or two y axes.
-function runPlot(box, spec, cols, signals, constants) {
-  const t = cols.t_s;
-  const groups = new Map(); // unit -> {bases: Set, series: []}
-  for (const s of spec.series) {
+// Series data of a kept run on the new run's time base (uPlot.join fills gaps with null).
+function aligned(t, tk, columns) {
+  const same = t.length === tk.length && t.every((v, i) => v === tk[i]);
+  if (same) return { x: t, cols: columns.map(([a, b]) => [a, b]) };
+  const j = uPlot.join([[Array.from(t), ...columns.map(([a]) => Array.from(a))], [Array.from(tk), ...columns.map(([, b]) => Array.from(b))]]);
+  const n = columns.length;
+  return { x: j[0], cols: columns.map((_, i) => [j[1 + i], j[1 + n + i]]) };
+}
+
+// The plot of one PLOTS entry: series grouped by displayed unit (and `axis: 'right'`) onto one or
+// two y axes; a kept run's lines muted on the same axes.
+function runPlot(box, spec, cols, signals, constants, kept, more, markers) {
+  const groups = new Map(); // axis key -> {unit, bases: Set, series: []}
+  const keptCols = kept && spec.series.every((s) => kept.columns[s.signal]) ? kept.columns : null;
+  const { x, cols: pairs } = aligned(cols.t_s, keptCols ? keptCols.t_s : cols.t_s, spec.series.map((s) => [cols[s.signal], keptCols ? keptCols[s.signal] : cols[s.signal]]));
+  spec.series.forEach((s, k) => {
     const { unit, factor } = signals.display(s.signal, spec.prefix);
-    if (!groups.has(unit)) groups.set(unit, { bases: new Set(), series: [] });
-    const g = groups.get(unit);
+    const key = s.axis === 'right' ? `${unit}:right` : unit;
+    if (!groups.has(key)) groups.set(key, { unit, bases: new Set(), series: [], kept: [] });
+    const g = groups.get(key);
     const base = signals.puBase(s.signal, constants);
     if (base) g.bases.add(base);
-    const data = factor === 1 ? cols[s.signal] : Array.from(cols[s.signal], (v) => v * factor);
-    g.series.push({ data, base, label: s.label || signals.label(s.signal), color: s.color, scale: 'y:' + unit });
-  }
-  if (groups.size > 2) throw new Error(`plot '${spec.title}': more than two units`);
+    const scale = 'y:' + key;
+    const scaled = (d) => (factor === 1 ? d : Array.from(d, (v) => (v == null ? null : v * factor)));
+    const label = s.label || signals.label(s.signal);
+    const { signal, axis, ...style } = s;
+    g.series.push({ ...style, data: scaled(pairs[k][0]), base, label, scale });
+    if (keptCols) g.kept.push({ data: scaled(pairs[k][1]), label: `${label}, kept run (${kept.name})`, color: s.color + '88', dash: KEPT_STYLE.dash, width: KEPT_STYLE.width, scale });
+  });
+  if (groups.size > 2) throw new Error(`plot '${spec.title}': more than two axes`);
   const axes = [];
   const series = [];
-  for (const [unit, g] of groups) {
+  for (const [key, g] of groups) {
     const one = g.bases.size === 1 && g.series.every((s) => s.base);
-    // "[kn]", "[pu of 38 MW]"; a dimensionless axis names its quantities: "h/R [-]".
-    const label = one ? `pu of ${[...g.bases][0]}` : unit;
-    axes.push({ scale: 'y:' + unit, unit: label, label: unit === '-' ? `${g.series.map((s) => s.label).join(', ')} [-]` : `[${label}]` });
+    const unitText = one ? `pu of ${[...g.bases][0]}` : g.unit;
+    const names = g.series.map((s) => s.label).join(', ');
+    // "heading [deg]" / "rudder [deg]" when two axes share a unit; "h/R [-]" when dimensionless.
+    const label = groups.size > 1 || g.unit === '-' ? `${names.length > 40 ? names.slice(0, 38) + '…' : names} [${unitText}]` : `[${unitText}]`;
+    axes.push({ scale: 'y:' + key, unit: unitText, label });
     for (const { base, ...s } of g.series) series.push(base && !one ? { ...s, label: `${s.label} (pu of ${base})` } : s);
   }
-  let title = `${spec.title} [${axes.map((a) => a.unit).join('; ')}]`;
-  let bands;
+  for (const g of groups.values()) series.push(...g.kept);
+  const units = [...new Set(axes.map((a) => a.unit))];
+  const title = `${spec.title} [${units.join('; ')}]`;
+  const opts = { more, time: true, markers: spec.events ? markers : [] };
   if (spec.hOverR) {
-    const scale = axes[0].scale;
-    for (const b of constants.h_over_r_bands) {
-      const i = series.length + 1; // uPlot series index (0 is x)
-      series.push({ data: constant(t, b.to), label: `band to ${b.to}`, color: BAND_COLOR, width: 1, scale });
-      series.push({ data: constant(t, b.from), label: `band from ${b.from}`, color: BAND_COLOR, width: 1, scale });
-      bands = [...(bands || []), { series: [i, i + 1], fill: BAND_FILL }];
-      title += ` (${b.label})`;
-    }
-    constants.h_over_r_levels.forEach((l, j) => {
-      series.push({ data: constant(t, l.value), label: `${l.label} (${l.value})`, color: LEVEL_COLORS[j % LEVEL_COLORS.length], dash: [6, 4], width: 1, scale });
-    });
+    const lv = constants.h_over_r_levels;
+    opts.hbands = constants.h_over_r_bands.map((b) => ({ from: b.from, to: b.to, fill: BAND_FILL, edge: BAND_EDGE }));
+    const surface = Math.max(...lv.map((l) => l.value));
+    opts.hbands.unshift({ from: surface, to: Math.min(...lv.map((l) => l.value), ...Array.from(cols.h_over_r)) - 1, fill: SURFACE_FILL });
+    opts.levels = lv.map((l, j) => ({ value: l.value, label: l.label, color: LEVEL_COLORS[j % LEVEL_COLORS.length] }));
+    const sw = (fill) => el('span', { className: 'swatch', attrs: { style: `background:${fill}` } });
+    opts.key = [sw(BAND_FILL), ...constants.h_over_r_bands.map((b) => `${b.label}; `), sw(SURFACE_FILL), `below ${surface}: the disk breaks the surface; `,
+      el('span', { textContent: `▼ ${markers.length} loss onsets` })];
+    const lo = Math.min(...lv.map((l) => l.value));
+    opts.scales = { [axes[0].scale]: { range: (u, min, max) => [Math.min(min, lo - 0.2), Math.max(max, 2)] } };
+  } else if (spec.events && markers.length) {
+    opts.key = [`▼ surface losses start (${markers.length}×)`];
   }
-  box.line(title, { data: t, label: `time [${signals.meta('t_s').unit}]` }, series, axes, { bands });
+  return box.line(title, { data: x, label: `time [${signals.meta('t_s').unit}]` }, series, axes, opts);
 }
 
-// Every plot of a run: the track, then PLOTS (the sea plots only when the sea moved h/R).
-export function drawRun(box, cols, signals, constants) {
+// Every plot of a run: the study's plots first (`order`: PLOTS ids and 'track'), the others under
+// "More plots". kept: {name, columns} of a kept run, or null.
+export function drawRun(box, cols, signals, constants, scenario, { order = DEFAULT_PLOTS, kept = null } = {}) {
   box.clear();
-  const unit = signals.meta('x_m').unit;
-  box.canvas(`Ship track [${unit}] (north up, east right; marks every ${TRACK_MARK_S} ${signals.meta('t_s').unit})`, 'Ship track seen from above', (cv) => drawTrack(cv, cols, unit));
   const inWaves = cols.h_over_r.some((v) => v !== cols.h_over_r[0]);
-  for (const spec of PLOTS) {
-    if (spec.only && !spec.only(cols)) continue;
-    if (spec.sea && !inWaves) continue;
-    runPlot(box, spec, cols, signals, constants);
+  const markers = inWaves ? lossStarts(cols) : [];
+  const drawn = {};
+  const shown = (id) => order.includes(id);
+  const track = (more) => {
+    const unit = signals.meta('x_m').unit;
+    const from = scenario.sea.kind === 'calm' ? '' : `; arrow: waves from ${scenario.sea.from_deg}°`;
+    box.canvas(`Ship track [${unit}] (north up; marks every ${TRACK_MARK_S} ${signals.meta('t_s').unit}${from})`, 'Ship track seen from above', (cv) => drawTrack(cv, cols, unit, scenario, kept), more);
+  };
+  const specs = PLOTS.filter((spec) => !(spec.only && !spec.only(cols)) && !(spec.sea && !inWaves));
+  for (const id of order) {
+    if (id === 'track') { track(false); continue; }
+    const spec = specs.find((s) => s.id === id);
+    if (spec) drawn[id] = runPlot(box, spec, cols, signals, constants, kept, false, markers);
   }
+  for (const spec of specs) if (!shown(spec.id)) drawn[spec.id] = runPlot(box, spec, cols, signals, constants, kept, true, markers);
+  if (!shown('track')) track(true);
+  return { markers, drawn };
 }
 
-function drawTrack(cv, cols, unit) {
+function drawTrack(cv, cols, unit, scenario, kept) {
   const { g, w, h } = sizedCanvas(cv, 320);
   const xs = cols.y_m, ys = cols.x_m; // east to the right, north up
-  const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+  const all = (a, b) => (kept ? [...a, ...b] : [...a]);
+  const kx = kept ? kept.columns.y_m : [], ky = kept ? kept.columns.x_m : [];
+  const ax = all(xs, kx), ay = all(ys, ky);
+  const [x0, x1, y0, y1] = [Math.min(...ax), Math.max(...ax), Math.min(...ay), Math.max(...ay)];
   const span = Math.max(x1 - x0, y1 - y0, TRACK_MIN_SPAN_M) * TRACK_MARGIN;
   const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
   const s = Math.min(w, h) / span;
   const px = (x) => w / 2 + (x - cx) * s, py = (y) => h / 2 - (y - cy) * s;
   g.strokeStyle = '#ddd'; g.lineWidth = 1;
   g.strokeRect(0.5, 0.5, w - 1, h - 1);
+  if (kept) {
+    g.strokeStyle = '#8a8a8a'; g.setLineDash(KEPT_STYLE.dash); g.lineWidth = 2;
+    g.beginPath(); kx.forEach((x, i) => (i ? g.lineTo(px(x), py(ky[i])) : g.moveTo(px(x), py(ky[i])))); g.stroke();
+    g.setLineDash([]);
+  }
   g.strokeStyle = '#0b5cad'; g.lineWidth = 2;
   g.beginPath();
   xs.forEach((x, i) => (i ? g.lineTo(px(x), py(ys[i])) : g.moveTo(px(x), py(ys[i]))));
@@ -168,7 +314,16 @@ function drawTrack(cv, cols, unit) {
     g.fillText(`${t[i].toFixed(0)} s`, X + 5, Y - 5);
   }
   g.fillStyle = '#4a4a4a';
-  g.fillText(`${(span / TRACK_MARGIN).toFixed(0)} ${unit} across`, 8, h - 8);
+  g.fillText(`${(span / TRACK_MARGIN).toFixed(0)} ${unit} across${kept ? `; dashed: kept run (${kept.name})` : ''}`, 8, h - 8);
+  if (scenario.sea.kind !== 'calm') {
+    // Waves travel away from `from_deg`: an arrow in the corner pointing the way they go.
+    const d = ((scenario.sea.from_deg + 180) * Math.PI) / 180, X = w - 40, Y = 40, L = 24;
+    const ex = X + L * Math.sin(d), ey = Y - L * Math.cos(d);
+    g.strokeStyle = '#117a65'; g.fillStyle = '#117a65'; g.lineWidth = 3;
+    g.beginPath(); g.moveTo(X - L * Math.sin(d), Y + L * Math.cos(d)); g.lineTo(ex, ey); g.stroke();
+    g.beginPath(); g.arc(ex, ey, 5, 0, 2 * Math.PI); g.fill();
+    g.fillText('waves', X - 16, Y + 36);
+  }
 }
 
 // After a run in waves: the hull's RAOs at the speed ordered at the end of the run, in head and
@@ -183,10 +338,10 @@ export function drawSeaExtras(box, client, scenario, cols, constants, onError) {
   for (const [heading, name] of RAO.headings) {
     client.request(REQUEST.rao, { speed_kn: kn, heading_deg: heading, omegas }).then(({ result: r }) => {
       const pk = r.pitch.amp.map((p, i) => p / ((omegas[i] * omegas[i]) / g));
-      box.line(`DTMB 5415 RAOs at ${kn} kn, ${name} seas (strip theory, ch. 2.5.2)`,
-        { data: lam, label: `wave length / Lpp (Lpp = ${quantity(lpp, 'm')})` },
-        [{ data: r.heave.amp, label: 'heave [m/m]', color: '#16a085' }, { data: pk, label: 'pitch / k [-]', color: '#d35400' }, { data: r.roll.amp, label: 'roll [rad/m]', color: '#7f8c8d' }],
-        [{ scale: 'y', label: 'amplitude' }], { generation });
+      box.line(`DTMB 5415 RAOs at ${kn} kn, ${name} seas (strip theory, ch. 2.5.2) [m/m; -; rad/m]`,
+        { data: lam, label: `wave length / Lpp [-] (Lpp = ${quantity(lpp, 'm')})` },
+        [{ data: r.heave.amp, label: 'heave per wave amplitude [m/m]', color: '#117a65' }, { data: pk, label: 'pitch / wave slope [-]', color: '#a04000', dash: [6, 3] }, { data: r.roll.amp, label: 'roll per wave amplitude [rad/m]', color: '#5b2c6f', dash: [2, 3] }],
+        [{ scale: 'y', label: 'response per wave [m/m; -; rad/m]' }], { generation, more: true });
     }, () => { /* a cancelled or failed RAO leaves the run's plots as they are */ });
   }
   if (scenario.sea.kind !== 'regular') return;
@@ -200,7 +355,7 @@ export function drawSeaExtras(box, client, scenario, cols, constants, onError) {
       }));
       const range = amplitudes.length ? `${amplitudes[0]} to ${amplitudes[amplitudes.length - 1]} ft` : 'no amplitudes';
       box.line(`Fuel power of one prime mover [${unit}], ${heading} seas, ${range} (Fig. 5-12)`,
-        { data: FUEL_OMEGAS, label: 'wave frequency [rad/s]' }, series, [{ scale: 'y', label: `[${unit}]` }], { generation });
+        { data: FUEL_OMEGAS, label: 'wave frequency [rad/s]' }, series, [{ scale: 'y', label: `fuel power [${unit}]` }], { generation });
     }
   }, (e) => { if (!e.cancelled) onError(e); });
 }

@@ -6,13 +6,16 @@ import { $ } from './dom.js';
 // running: one run; montecarlo: a Monte Carlo study.
 const PHASES = ['loading', 'idle', 'running', 'montecarlo'];
 let phase = 'loading';
+let formValid = true; // Run waits while a field is invalid
 let result = null; // the last result: {summary, csv, scenario}; csv is empty for Monte Carlo
 
 function render() {
   const idle = phase === 'idle';
   const busy = phase === 'running' || phase === 'montecarlo';
-  $('run').disabled = !idle;
-  $('mc-run').disabled = !idle;
+  $('run').disabled = !idle || !formValid;
+  $('mc-run').disabled = !idle || !formValid;
+  $('keep').disabled = !idle || !(result && result.columns);
+  $('loading').hidden = phase !== 'loading';
   $('cancel').disabled = !busy;
   $('export-csv').disabled = !(result && result.csv);
   $('export-json').disabled = !result;
@@ -28,6 +31,8 @@ export function setPhase(p) {
 }
 export function getPhase() { return phase; }
 export function isBusy() { return phase === 'running' || phase === 'montecarlo'; }
+
+export function setFormValid(v) { formValid = v; render(); }
 
 export function setResult(r) { result = r; render(); }
 export function getResult() { return result; }
