@@ -8,6 +8,8 @@
 #                         (release mode), the wasm-bindgen tests in Node and the browser
 #                         end-to-end test in headless Chromium (screenshots in target/)
 #   ./build.sh bench      simulated seconds per wall second of the start-up preset
+#   ./build.sh fuzz       the property tests of every entry point (tests/fuzz.rs) with many more
+#                         cases (AES_FUZZ_CASES, default 20000; a few minutes), before releases
 #   ./build.sh golden     regenerate the golden records of every preset (tests/golden/) after a
 #                         deliberate physics change; review the diff before committing
 #
@@ -143,6 +145,10 @@ case "${1:-serve}" in
     setup
     run_tests
     ;;
+  fuzz)
+    AES_FUZZ_CASES="${AES_FUZZ_CASES:-20000}" cargo test --release -p aes-tests --test fuzz
+    cargo test --release -p aes-cli --test hardening
+    ;;
   golden)
     UPDATE_GOLDEN=1 cargo test --release -p aes-tests --test golden
     git --no-pager diff --stat -- tests/golden || true
@@ -153,7 +159,7 @@ case "${1:-serve}" in
     ./target/release/aes-sim bench startup
     ;;
   *)
-    echo "usage: ./build.sh [serve|build|test|bench|golden]" >&2
+    echo "usage: ./build.sh [serve|build|test|bench|fuzz|golden]" >&2
     exit 2
     ;;
 esac

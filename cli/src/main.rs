@@ -6,9 +6,85 @@ use aes_core::seakeeping::strip::{default_omega_grid, BilgeKeels, MassProperties
 use aes_core::seakeeping::tables::{rao_json, section_json, FormChoice, RaoTable, SeakeepingGrid};
 use aes_core::{Scenario, Simulation};
 use clap::{Parser, Subcommand};
-use std::io::Read;
+use std::io::{Read, Write};
 use std::process::ExitCode;
 use std::time::Instant;
+
+/// How a command ends other than with success.
+enum Failure {
+    /// A message for stderr; exit status 1.
+    Msg(String),
+    /// Standard output was closed by its reader (`aes-sim ... | head`): a normal end, exit 0.
+    PipeClosed,
+}
+
+impl From<String> for Failure {
+    fn from(s: String) -> Failure {
+        Failure::Msg(s)
+    }
+}
+
+impl From<&str> for Failure {
+    fn from(s: &str) -> Failure {
+        Failure::Msg(s.to_string())
+    }
+}
+
+/// Writes text to standard output; a closed pipe ends the command quietly (exit 0).
+fn emit(text: &str) -> Result<(), Failure> {
+    let mut out = std::io::stdout().lock();
+    let r = out.write_all(text.as_bytes()).and_then(|()| out.write_all(b"\n")).and_then(|()| out.flush());
+    match r {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Err(Failure::PipeClosed),
+        Err(e) => Err(Failure::Msg(format!("cannot write to standard output: {e}"))),
+    }
+}
+
+/// Prints a value as pretty JSON after checking that every number in it is finite (the error
+/// names the first that is not, by its path).
+fn emit_json<T: serde::Serialize + ?Sized>(x: &T) -> Result<(), Failure> {
+    aes_core::validate::check_finite(x)?;
+    // Through a Value, whose keys are sorted: the output keeps its established form.
+    let v = serde_json::to_value(x).map_err(|e| e.to_string())?;
+    emit(&serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?)
+}
+
+/// Largest Monte Carlo partial file [bytes].
+const MAX_PARTIAL_BYTES: u64 = 512 << 20;
+
+/// Reads a file (or standard input for `-`) as UTF-8, stopping at `limit` bytes: a larger or
+/// endless input (`/dev/zero`) is refused after reading `limit + 1` bytes, never read whole.
+fn read_bounded(file: &str, limit: u64, what: &str) -> Result<String, String> {
+    let mut buf = Vec::new();
+    let r = if file == "-" {
+        std::io::stdin().lock().take(limit + 1).read_to_end(&mut buf)
+    } else {
+        std::fs::File::open(file).and_then(|f| f.take(limit + 1).read_to_end(&mut buf))
+    };
+    let name = if file == "-" { "standard input".to_string() } else { format!("'{}'", shorten(file)) };
+    r.map_err(|e| format!("cannot read {name}: {e}"))?;
+    if buf.len() as u64 > limit {
+        return Err(format!("{name}: larger than {limit} bytes, the limit for {what}"));
+    }
+    String::from_utf8(buf).map_err(|e| format!("{name}: not UTF-8 text (byte {})", e.utf8_error().valid_up_to()))
+}
+
+/// Checks before a long computation that `path` can be written (created or truncated now, so a
+/// bad directory or permission is found before the run, not after).
+fn check_writable(path: &str, flag: &str) -> Result<(), String> {
+    std::fs::OpenOptions::new()
+        .write(true)
+        .create(true)
+        .truncate(true)
+        .open(path)
+        .map(|_| ())
+        .map_err(|e| format!("{flag} '{}': cannot write: {e}", shorten(path)))
+}
+
+fn shorten(s: &str) -> String {
+    aes_core::validate::shorten(s)
+}
 
 #[derive(Parser)]
 #[command(
@@ -232,22 +308,6 @@ use aes_core::sim::linearize::{DEFAULT_MU, DEFAULT_OMEGA_P, DEFAULT_Q};
 /// Largest design input read [bytes] (a 60-state plant in JSON is well under 1 MB).
 const MAX_DESIGN_BYTES: u64 = 4 << 20;
 
-/// Reads a file or standard input, refusing more than `limit` bytes without reading past it.
-fn read_bounded(file: &str, limit: u64) -> Result<String, String> {
-    use std::io::Read;
-    let mut text = String::new();
-    let reader: Box<dyn Read> = if file == "-" {
-        Box::new(std::io::stdin())
-    } else {
-        Box::new(std::fs::File::open(file).map_err(|e| format!("cannot read '{file}': {e}"))?)
-    };
-    reader.take(limit + 1).read_to_string(&mut text).map_err(|e| format!("cannot read '{file}': {e}"))?;
-    if text.len() as u64 > limit {
-        return Err(format!("'{file}' is larger than {limit} bytes"));
-    }
-    Ok(text)
-}
-
 #[derive(Subcommand)]
 enum IpsCmd {
     /// Steady state (Tables 4.1 and 4.2 quantities, SI).
@@ -280,18 +340,14 @@ enum IpsCmd {
 
 fn ips(cmd: IpsCmd) -> Result<serde_json::Value, String> {
     use aes_core::stability::{
-        generator_side::GeneratorSideParams, load_params, log_space, motor_side::MotorSideParams,
+        bode_frequencies, generator_side::GeneratorSideParams, load_params, motor_side::MotorSideParams,
     };
     let (point, loop_kind, bode) = match cmd {
         IpsCmd::Steady(p) => (p, None, None),
         IpsCmd::Linear { point, loop_kind } => (point, Some(loop_kind), None),
         IpsCmd::Bode { point, loop_kind, from, to, points } => {
-            if !(from > 0.0 && to > from && to < 1e7 && (2..=10_000).contains(&points)) {
-                return Err(format!(
-                    "--from {from} --to {to} --points {points}: need 0 < from < to < 1e7 Hz and 2 to 10000 points"
-                ));
-            }
-            (point, Some(loop_kind), Some((from, to, points)))
+            let hz = bode_frequencies(from, to, points).map_err(|e| format!("--from/--to/--points: {e}"))?;
+            (point, Some(loop_kind), Some(hz))
         }
     };
     let overrides: Vec<(String, String)> = point
@@ -300,7 +356,7 @@ fn ips(cmd: IpsCmd) -> Result<serde_json::Value, String> {
         .map(|s| {
             s.split_once('=')
                 .map(|(a, b)| (a.trim().to_string(), b.trim().to_string()))
-                .ok_or_else(|| format!("--set '{s}': expected NAME=VALUE"))
+                .ok_or_else(|| format!("--set '{}': expected NAME=VALUE", shorten(s)))
         })
         .collect::<Result<_, _>>()?;
     let (steady, sys, margins) = match point.side {
@@ -315,6 +371,7 @@ fn ips(cmd: IpsCmd) -> Result<serde_json::Value, String> {
             });
             let sys = loop_kind.map(|l| if l == Loop::Open { p.open_loop(&s) } else { p.closed_loop(&s) });
             let margins = (loop_kind == Some(Loop::Closed)).then(|| p.droop_margins(&s));
+            aes_core::validate::check_finite(&s)?;
             (steady, sys, margins)
         }
         Side::Motor => {
@@ -327,20 +384,21 @@ fn ips(cmd: IpsCmd) -> Result<serde_json::Value, String> {
             });
             let sys = loop_kind.map(|l| if l == Loop::Open { p.open_loop(&s) } else { p.closed_loop(&s) });
             let margins = (loop_kind == Some(Loop::Closed)).then(|| p.trim_margins(&s));
+            aes_core::validate::check_finite(&s)?;
             (steady, sys, margins)
         }
     };
     let mut out = serde_json::json!({ "steady_state": steady });
     if let Some(m) = margins {
+        aes_core::validate::check_finite(&m).map_err(|e| format!("margins: {e}"))?;
         out["margins"] = serde_json::to_value(m).map_err(|e| e.to_string())?;
     }
     if let Some(sys) = &sys {
-        out["linear"] = sys.to_json_value();
+        out["linear"] = sys.to_json_value()?;
     }
-    if let (Some(sys), Some((from, to, n))) = (&sys, bode) {
-        let hz = log_space(from, to, n);
+    if let (Some(sys), Some(hz)) = (&sys, bode) {
         let omegas: Vec<f64> = hz.iter().map(|f| 2.0 * std::f64::consts::PI * f).collect();
-        let pts = sys.bode(&omegas);
+        let pts = sys.bode(&omegas)?;
         out["bode"] = serde_json::json!({
             "frequency_hz": hz,
             "magnitude_db": pts.iter().map(|p| p.magnitude_db).collect::<Vec<_>>(),
@@ -352,79 +410,84 @@ fn ips(cmd: IpsCmd) -> Result<serde_json::Value, String> {
 
 fn load(file: &str, sets: &[String]) -> Result<Scenario, String> {
     let mut sc = if let Some(name) = file.strip_prefix("preset:") {
-        preset(name).ok_or_else(|| format!("no preset named '{name}' (try: {})", PRESET_NAMES.join(", ")))?
+        preset(name).ok_or_else(|| format!("no preset named '{}' (try: {})", shorten(name), PRESET_NAMES.join(", ")))?
     } else {
-        let text = if file == "-" {
-            let mut s = String::new();
-            std::io::stdin().read_to_string(&mut s).map_err(|e| format!("cannot read standard input: {e}"))?;
-            s
-        } else {
-            std::fs::read_to_string(file).map_err(|e| format!("cannot read '{file}': {e}"))?
-        };
-        Scenario::from_json(&text).map_err(|e| format!("{file}: invalid scenario:\n{e}"))?
+        let text = read_bounded(file, aes_core::scenario::MAX_SCENARIO_BYTES as u64, "a scenario")?;
+        Scenario::from_json(&text).map_err(|e| format!("{}: invalid scenario:\n{e}", shorten(file)))?
     };
     for s in sets {
-        let (path, value) =
-            s.split_once('=').ok_or_else(|| format!("--set '{s}': expected PATH=VALUE, e.g. sim.duration_s=60"))?;
-        sc = sc.with_override(path.trim(), value.trim()).map_err(|e| format!("--set {s}: {e}"))?;
+        let (path, value) = s
+            .split_once('=')
+            .ok_or_else(|| format!("--set '{}': expected PATH=VALUE, e.g. sim.duration_s=60", shorten(s)))?;
+        sc = sc.with_override(path.trim(), value.trim()).map_err(|e| format!("--set {}: {e}", shorten(path)))?;
     }
     Ok(sc)
 }
 
-fn real_main() -> Result<(), String> {
+fn real_main() -> Result<(), Failure> {
     let cli = Cli::parse();
     match cli.command {
         Cmd::Presets => {
+            let mut text = String::new();
             for n in PRESET_NAMES {
                 let d = preset(n).map(|s| s.description).unwrap_or_default();
-                println!("{n:<12} {d}");
+                text.push_str(&format!("{n:<12} {d}\n"));
             }
+            emit(text.trim_end())?;
         }
         Cmd::Signals { json } => {
             if json {
-                println!("{}", serde_json::to_string_pretty(aes_core::signals::SIGNALS).map_err(|e| e.to_string())?);
+                emit_json(aes_core::signals::SIGNALS)?;
             } else {
+                let mut text = String::new();
                 for s in aes_core::signals::SIGNALS {
-                    println!("{:<20} {:<6} {}", s.name, s.unit, s.description);
+                    text.push_str(&format!("{:<20} {:<6} {}\n", s.name, s.unit, s.description));
                 }
+                emit(text.trim_end())?;
             }
         }
         Cmd::Preset { name } => {
-            let sc =
-                preset(&name).ok_or_else(|| format!("no preset named '{name}' (try: {})", PRESET_NAMES.join(", ")))?;
-            println!("{}", sc.to_json());
+            let sc = preset(&name)
+                .ok_or_else(|| format!("no preset named '{}' (try: {})", shorten(&name), PRESET_NAMES.join(", ")))?;
+            emit(&sc.to_json())?;
         }
         Cmd::Run { file, out, sets } => {
             let sc = load(&file, &sets)?;
+            if let Some(path) = &out {
+                check_writable(path, "--out")?;
+            }
             let mut sim = Simulation::new(&sc).map_err(|e| e.to_string())?;
             let write = |trace: &aes_core::sim::Trace| -> Result<(), String> {
                 match &out {
-                    Some(path) => {
-                        std::fs::write(path, trace.to_csv()).map_err(|e| format!("cannot write '{path}': {e}"))
-                    }
+                    Some(path) => std::fs::write(path, trace.to_csv())
+                        .map_err(|e| format!("cannot write the trace to '{}': {e}", shorten(path))),
                     None => Ok(()),
                 }
             };
             if let Err(e) = sim.advance(u64::MAX) {
                 // Keep what led up to the failure: it is what the user needs to see.
-                write(sim.trace())?;
-                let hint = if out.is_some() { " (the trace up to the failure was written)" } else { "" };
-                return Err(format!("{e}{hint}"));
+                let hint = match write(sim.trace()) {
+                    Ok(()) if out.is_some() => " (the trace up to the failure was written)".to_string(),
+                    Ok(()) => String::new(),
+                    Err(w) => format!(" ({w})"),
+                };
+                return Err(format!("{e}{hint}").into());
             }
             let result = sim.finish();
-            write(&result.trace)?;
-            let json = serde_json::to_string_pretty(&result.summary.to_json_value()).map_err(|e| e.to_string())?;
-            println!("{json}");
+            // The summary is printed even when the trace cannot be written: a computed run is never lost.
+            let written = write(&result.trace);
+            emit_json(&result.summary)?;
+            written?;
         }
         Cmd::Design { command: DesignCmd::LqgLtr { file, plant, speed_kn, mu, omega_p, q } } => {
             let input: aes_core::design::lqg_ltr::DesignInput = match (file, plant.as_deref()) {
                 (Some(file), None) => {
-                    let text = read_bounded(&file, MAX_DESIGN_BYTES)?;
+                    let text = read_bounded(&file, MAX_DESIGN_BYTES, "a design input")?;
                     serde_json::from_str(&text).map_err(|e| format!("{file}: {e}"))?
                 }
                 (None, Some("aes")) => {
                     if !(speed_kn.is_finite() && (5.0..=32.0).contains(&speed_kn)) {
-                        return Err(format!("--speed-kn = {speed_kn}: must be a number from 5 to 32"));
+                        return Err(format!("--speed-kn = {speed_kn}: must be a number from 5 to 32").into());
                     }
                     let mut sc = aes_core::presets::preset("acceleration").ok_or("no acceleration preset")?;
                     sc.initial.speed_kn = speed_kn;
@@ -432,32 +495,35 @@ fn real_main() -> Result<(), String> {
                     let m = aes_core::sim::linearize::drive_train(&sc).map_err(|e| e.to_string())?;
                     aes_core::design::lqg_ltr::DesignInput::from_plant(&m.system, mu, omega_p, q)
                 }
-                (None, Some(other)) => return Err(format!("--plant = {other}: the only built-in plant is `aes`")),
+                (None, Some(other)) => {
+                    return Err(format!("--plant = {}: the only built-in plant is `aes`", shorten(other)).into())
+                }
                 (Some(_), Some(_)) => return Err("give a FILE or --plant aes, not both".into()),
                 (None, None) => return Err("give a FILE (or `-`) or --plant aes".into()),
             };
             let d = aes_core::design::lqg_ltr::design(&input)?;
-            println!("{}", serde_json::to_string_pretty(&d).map_err(|e| e.to_string())?);
+            emit_json(&d)?;
         }
         Cmd::Ips { command } => {
             let out = ips(command)?;
-            println!("{}", serde_json::to_string_pretty(&out).map_err(|e| e.to_string())?);
+            emit_json(&out)?;
         }
         Cmd::Section { beam, draft, area_coeff, form, omega } => {
             let form = match form.as_str() {
                 "auto" => FormChoice::Auto,
                 "lewis" => FormChoice::Lewis,
                 "bulb" => FormChoice::Bulb,
-                other => return Err(format!("--form '{other}': expected auto, lewis or bulb")),
+                other => return Err(format!("--form '{other}': expected auto, lewis or bulb").into()),
             };
             let v = section_json(beam, draft, area_coeff, form, &omega, 1025.0, 9.81)?;
-            println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
+            emit_json(&v)?;
         }
         Cmd::Rao { hull, draft, kg, kxx, kyy, kzz, speed_kn, heading_deg, omega, roll_wave_amplitude } => {
             let offsets = match &hull {
                 Some(path) => {
-                    let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read '{path}': {e}"))?;
-                    HullOffsets::parse(&text).map_err(|e| format!("{path}: {e}"))?
+                    let text =
+                        read_bounded(path, aes_core::hull_sections::MAX_HULL_BYTES as u64, "a hull offsets file")?;
+                    HullOffsets::parse(&text).map_err(|e| format!("{}: {e}", shorten(path)))?
                 }
                 None => HullOffsets::dtmb5415(),
             };
@@ -470,7 +536,7 @@ fn real_main() -> Result<(), String> {
                 ("roll-wave-amplitude", roll_wave_amplitude, 0.01, 20.0),
             ] {
                 if !(v.is_finite() && (lo..=hi).contains(&v)) {
-                    return Err(format!("--{name} = {v} is outside [{lo}, {hi}]"));
+                    return Err(format!("--{name} = {v} is outside [{lo}, {hi}]").into());
                 }
             }
             let mass = MassProperties { kg_m: kg, kxx_m: kxx, kyy_m: kyy, kzz_m: kzz };
@@ -483,7 +549,7 @@ fn real_main() -> Result<(), String> {
                 &omega,
                 roll_wave_amplitude,
             )?;
-            println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
+            emit_json(&v)?;
         }
         Cmd::Mc { file, trials, seed, threads, trial_range, partial, sets } => {
             let mut sc = load(&file, &sets)?;
@@ -493,7 +559,7 @@ fn real_main() -> Result<(), String> {
             if let Some(s) = seed {
                 sc.sim.seed = s;
             }
-            sc.validate().map_err(|e| format!("{file}: {e}"))?;
+            sc.validate().map_err(|e| format!("{}: {e}", shorten(&file)))?;
             let n = sc.monte_carlo.trials;
             let (a, b) = match &trial_range {
                 None => (0, n),
@@ -504,7 +570,7 @@ fn real_main() -> Result<(), String> {
                     let b: u64 =
                         y.trim().parse().map_err(|_| format!("--trial-range '{r}': B is not a whole number"))?;
                     if a >= b || b > n {
-                        return Err(format!("--trial-range {a}..{b}: must satisfy 0 <= A < B <= trials = {n}"));
+                        return Err(format!("--trial-range {a}..{b}: must satisfy 0 <= A < B <= trials = {n}").into());
                     }
                     (a, b)
                 }
@@ -512,10 +578,24 @@ fn real_main() -> Result<(), String> {
             if trial_range.is_some() && partial.is_none() {
                 return Err("--trial-range needs --partial FILE (merge the shards with `aes-sim merge`)".into());
             }
-            let pool = rayon::ThreadPoolBuilder::new()
-                .num_threads(threads.unwrap_or(0))
-                .build()
-                .map_err(|e| format!("--threads: {e}"))?;
+            if let Some(path) = &partial {
+                check_writable(path, "--partial")?;
+            }
+            // At most the machine's parallelism: more threads only cost time and memory.
+            let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
+            let threads = match threads {
+                None | Some(0) => cores,
+                Some(n) if n > cores => {
+                    let _ = writeln!(
+                        std::io::stderr(),
+                        "aes-sim mc: --threads {n} capped at {cores}, this machine's available parallelism"
+                    );
+                    cores
+                }
+                Some(n) => n,
+            };
+            let pool =
+                rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
             let t0 = Instant::now();
             let result = pool.install(|| {
                 use rayon::prelude::*;
@@ -527,49 +607,49 @@ fn real_main() -> Result<(), String> {
                     },
                 )
             })?;
-            eprintln!(
+            let _ = writeln!(
+                std::io::stderr(),
                 "aes-sim mc: {} trials in {:.2} s on {} threads",
                 b - a,
                 t0.elapsed().as_secs_f64(),
                 pool.current_num_threads()
             );
+            // The summary first: it is printed even when the partial cannot be written.
+            if trial_range.is_none() {
+                emit_json(&aes_core::montecarlo::study_summary(&result)?)?;
+            }
             if let Some(path) = &partial {
                 let text = serde_json::to_string(&result).map_err(|e| e.to_string())?;
-                std::fs::write(path, text).map_err(|e| format!("cannot write '{path}': {e}"))?;
-            }
-            if trial_range.is_none() {
-                let v = aes_core::montecarlo::summary(&result)?;
-                println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
+                std::fs::write(path, text).map_err(|e| format!("cannot write '{}': {e}", shorten(path)))?;
             }
         }
         Cmd::Merge { files, partial } => {
+            if let Some(path) = &partial {
+                check_writable(path, "--partial")?;
+            }
             let mut acc: Option<aes_core::montecarlo::Partial> = None;
             for f in &files {
-                let text = std::fs::read_to_string(f).map_err(|e| format!("cannot read '{f}': {e}"))?;
-                if text.len() > 512 << 20 {
-                    return Err(format!("{f}: larger than 512 MB"));
-                }
-                let p: aes_core::montecarlo::Partial =
-                    serde_json::from_str(&text).map_err(|e| format!("{f}: not a Monte Carlo partial: {e}"))?;
+                let text = read_bounded(f, MAX_PARTIAL_BYTES, "a Monte Carlo partial")?;
+                let p = aes_core::montecarlo::Partial::from_json(&text).map_err(|e| format!("{}: {e}", shorten(f)))?;
                 match acc.as_mut() {
                     None => acc = Some(p),
-                    Some(a) => a.merge(&p).map_err(|e| format!("{f}: {e}"))?,
+                    Some(a) => a.merge(&p).map_err(|e| format!("{}: {e}", shorten(f)))?,
                 }
             }
             let acc = acc.ok_or("no partials given")?;
+            let summary = aes_core::montecarlo::study_summary(&acc)?;
+            emit_json(&summary)?;
             if let Some(path) = &partial {
                 let text = serde_json::to_string(&acc).map_err(|e| e.to_string())?;
-                std::fs::write(path, text).map_err(|e| format!("cannot write '{path}': {e}"))?;
+                std::fs::write(path, text).map_err(|e| format!("cannot write '{}': {e}", shorten(path)))?;
             }
-            let v = aes_core::montecarlo::summary(&acc)?;
-            println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
         }
         Cmd::Fuel { file, omega, sets } => {
             let sc = load(&file, &sets)?;
             let omegas = if omega.is_empty() { (3..=15).map(|i| i as f64 / 10.0).collect() } else { omega };
             for &w in &omegas {
                 if !(w.is_finite() && (0.1..=5.0).contains(&w)) {
-                    return Err(format!("--omega {w}: must be from 0.1 to 5 rad/s"));
+                    return Err(format!("--omega {w}: must be from 0.1 to 5 rad/s").into());
                 }
             }
             let rows = aes_core::fuel_study::run(&sc, &omegas)?;
@@ -580,7 +660,8 @@ fn real_main() -> Result<(), String> {
                 "note": if extrapolated { "some turbine loads are below 30 % of rated, where the part-load curve has no data: extrapolated linearly" } else { "" },
                 "rows": rows,
             });
-            println!("{}", serde_json::to_string_pretty(&out).map_err(|e| e.to_string())?);
+            aes_core::validate::check_finite(&rows)?;
+            emit_json(&out)?;
         }
         Cmd::Bench { name, repeat, sets } if name == "seakeeping" => {
             let mut best = (f64::INFINITY, f64::INFINITY);
@@ -603,7 +684,7 @@ fn real_main() -> Result<(), String> {
                 "rao_grid_s": best.1,
                 "total_s": best.0 + best.1,
             });
-            println!("{}", serde_json::to_string_pretty(&out).map_err(|e| e.to_string())?);
+            emit_json(&out)?;
         }
         Cmd::Bench { name, repeat, sets } => {
             let sc = load(&format!("preset:{name}"), &sets)?;
@@ -645,17 +726,19 @@ fn real_main() -> Result<(), String> {
                 "realtime_factor": sim_s / best,
                 "ns_per_step": best * 1e9 / steps.max(1) as f64,
             });
-            println!("{}", serde_json::to_string_pretty(&out).map_err(|e| e.to_string())?);
+            emit_json(&out)?;
         }
     }
     Ok(())
 }
 
+/// Exit status: 0 on success and when standard output is closed by its reader (`| head`);
+/// 1 with a message on stderr for every error; 2 for a command line clap refuses.
 fn main() -> ExitCode {
     match real_main() {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("aes-sim: {e}");
+        Ok(()) | Err(Failure::PipeClosed) => ExitCode::SUCCESS,
+        Err(Failure::Msg(e)) => {
+            let _ = writeln!(std::io::stderr(), "aes-sim: {e}");
             ExitCode::FAILURE
         }
     }

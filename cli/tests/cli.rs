@@ -161,8 +161,14 @@ fn ips_commands() {
     for (args, want) in [
         (&["ips", "steady", "--side", "motor", "--set", "r_s=-1"][..], "r_s = -1"),
         (&["ips", "steady", "--side", "motor", "--set", "nope=1"][..], "nope: no such parameter"),
-        (&["ips", "steady", "--side", "motor", "--torque=0"][..], "torque command 0"),
-        (&["ips", "bode", "--side", "motor", "--from", "10", "--to", "1"][..], "--from 10 --to 1"),
+        (
+            &["ips", "steady", "--side", "motor", "--torque=0"][..],
+            "torque command T* = 0 N m: must be a number from 0.01",
+        ),
+        (
+            &["ips", "bode", "--side", "motor", "--from", "10", "--to", "1"][..],
+            "--from/--to/--points: Bode range from 10 Hz to 1 Hz",
+        ),
     ] {
         let (ok, _, err) = aes_sim(args);
         assert!(!ok && err.contains(want), "{args:?}: {err}");

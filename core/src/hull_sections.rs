@@ -12,6 +12,17 @@ use std::f64::consts::PI;
 /// The DTMB 5415 offsets (full scale, metres), embedded.
 pub const DTMB5415_OFFSETS: &str = include_str!("../data/dtmb5415_offsets.csv");
 
+/// Most stations a hull file may give (the 5415 has 29; strip theory's cost grows with them).
+pub const MAX_STATIONS: usize = 200;
+/// Most (z, half-breadth) rows of one station (the 5415 has up to 34).
+pub const MAX_ROWS_PER_STATION: usize = 200;
+/// Most data rows in a hull file.
+pub const MAX_HULL_ROWS: usize = 20_000;
+/// Largest hull file [bytes].
+pub const MAX_HULL_BYTES: usize = 2 << 20;
+/// Largest magnitude of a coordinate or half-breadth [m] (a ship, not an ocean).
+pub const MAX_COORDINATE_M: f64 = 10_000.0;
+
 /// One station: its position and (z, half-breadth) rows with z increasing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Station {
@@ -63,8 +74,12 @@ impl HullOffsets {
     /// Parses the long format `station_index,x_m,z_m,half_breadth_m` (lines starting with # are
     /// comments). Errors name the line and the problem.
     pub fn parse(text: &str) -> Result<HullOffsets, String> {
+        if text.len() > MAX_HULL_BYTES {
+            return Err(format!("{} bytes: a hull file may be at most {MAX_HULL_BYTES} bytes", text.len()));
+        }
         let mut stations: Vec<Station> = Vec::new();
         let mut header_seen = false;
+        let mut data_rows = 0usize;
         for (k, raw) in text.lines().enumerate() {
             let line_no = k + 1;
             let line = raw.trim();
@@ -74,15 +89,24 @@ impl HullOffsets {
             if !header_seen {
                 if line.replace(' ', "") != "station_index,x_m,z_m,half_breadth_m" {
                     return Err(format!(
-                        "line {line_no}: expected the header 'station_index,x_m,z_m,half_breadth_m', found '{line}'"
+                        "line {line_no}: expected the header 'station_index,x_m,z_m,half_breadth_m', found '{}'",
+                        crate::validate::shorten(line)
                     ));
                 }
                 header_seen = true;
                 continue;
             }
-            let f: Vec<&str> = line.split(',').map(|s| s.trim()).collect();
+            data_rows += 1;
+            if data_rows > MAX_HULL_ROWS {
+                return Err(format!("line {line_no}: more than {MAX_HULL_ROWS} data rows"));
+            }
+            let f: Vec<&str> = line.splitn(5, ',').map(|s| s.trim()).collect();
             if f.len() != 4 {
-                return Err(format!("line {line_no}: expected 4 numbers, found {} fields in '{line}'", f.len()));
+                return Err(format!(
+                    "line {line_no}: expected 4 numbers, found {} fields in '{}'",
+                    if f.len() == 5 { "more than 4".to_string() } else { f.len().to_string() },
+                    crate::validate::shorten(line)
+                ));
             }
             let mut v = [0.0; 4];
             for (i, s) in f.iter().enumerate() {
@@ -90,7 +114,15 @@ impl HullOffsets {
                     .parse::<f64>()
                     .ok()
                     .filter(|x| x.is_finite())
-                    .ok_or_else(|| format!("line {line_no}: '{s}' is not a number"))?;
+                    .ok_or_else(|| format!("line {line_no}: '{}' is not a number", crate::validate::shorten(s)))?;
+            }
+            for (name, x) in ["station_index", "x_m", "z_m", "half_breadth_m"].iter().zip(v) {
+                if x.abs() > MAX_COORDINATE_M {
+                    return Err(format!(
+                        "line {line_no}: {name} = {}: must be a number from -{MAX_COORDINATE_M} to {MAX_COORDINATE_M}",
+                        crate::validate::num(x)
+                    ));
+                }
             }
             let [index, x, z, hb] = v;
             if hb < 0.0 {
@@ -104,6 +136,11 @@ impl HullOffsets {
                     if z <= *s.z.last().unwrap_or(&f64::NEG_INFINITY) {
                         return Err(format!("line {line_no}: z_m = {z} does not increase within station {index}"));
                     }
+                    if s.z.len() >= MAX_ROWS_PER_STATION {
+                        return Err(format!(
+                            "line {line_no}: station {index} has more than {MAX_ROWS_PER_STATION} rows"
+                        ));
+                    }
                     s.z.push(z);
                     s.half_breadth.push(hb);
                 }
@@ -115,6 +152,9 @@ impl HullOffsets {
                                 prev.x
                             ));
                         }
+                    }
+                    if stations.len() >= MAX_STATIONS {
+                        return Err(format!("line {line_no}: more than {MAX_STATIONS} stations"));
                     }
                     stations.push(Station { index, x, z: vec![z], half_breadth: vec![hb] });
                 }

@@ -30,6 +30,9 @@ use std::f64::consts::PI;
 pub const FORMAT: &str = "aes-sim monte carlo partial";
 pub const VERSION: u32 = 1;
 
+/// Most trial ranges one partial may list.
+pub const MAX_RANGES: usize = 1_000_000;
+
 /// Envelope quantum (2^-16 of the unit; values to 2^29) and scalar quantum (2^-12; values to 4096).
 const ENV_BITS: i32 = 16;
 const SCALAR_BITS: i32 = 12;
@@ -105,9 +108,148 @@ impl Partial {
         }
     }
 
-    /// Number of trials accumulated.
+    /// Number of trials accumulated (saturating; [`Partial::validate`] refuses counts that do not fit).
     pub fn trials(&self) -> u64 {
-        self.ranges.iter().map(|(a, b)| b - a).sum()
+        self.ranges.iter().fold(0u64, |n, (a, b)| n.saturating_add(b.saturating_sub(*a)))
+    }
+
+    /// Reads a partial from JSON (bounded like a scenario's nesting, duplicate keys refused) and
+    /// validates it fully ([`Partial::validate`]).
+    pub fn from_json(text: &str) -> Result<Partial, String> {
+        let p: Partial = serde_json::from_str(text)
+            .map_err(|e| format!("not a Monte Carlo partial: {}", crate::validate::shorten_message(&e.to_string())))?;
+        p.validate()?;
+        Ok(p)
+    }
+
+    /// Checks everything a partial from outside claims: its format and version, its embedded
+    /// scenario, its trial ranges (each a..b with a < b <= monte_carlo.trials, sorted, disjoint),
+    /// and that every accumulator has the quantum, order, bins and counts this study makes
+    /// (nothing more samples than trials, nothing that could overflow when merged).
+    pub fn validate(&self) -> Result<(), String> {
+        use crate::validate::shorten;
+        if self.format != FORMAT || self.version != VERSION {
+            return Err(format!(
+                "format = '{}' version {}: expected '{FORMAT}' version {VERSION}",
+                shorten(&self.format),
+                self.version
+            ));
+        }
+        self.scenario.validate().map_err(|e| format!("its scenario is not valid: {e}"))?;
+        let sc = &self.scenario;
+        let max_trials = sc.monte_carlo.trials;
+        let mut last_end = 0u64;
+        for (k, &(a, b)) in self.ranges.iter().enumerate() {
+            if !(a < b && b <= max_trials) {
+                return Err(format!("ranges.{k} = [{a}, {b}]: need a < b <= monte_carlo.trials = {max_trials}"));
+            }
+            if k > 0 && a < last_end {
+                return Err(format!("ranges.{k} = [{a}, {b}]: ranges must be sorted and must not overlap"));
+            }
+            last_end = b;
+        }
+        let trials = self.trials(); // <= max_trials: the ranges are disjoint within [0, trials)
+        if self.ranges.len() > MAX_RANGES {
+            return Err(format!("ranges: {} ranges, at most {MAX_RANGES}", self.ranges.len()));
+        }
+        if self.record_interval_s != sc.sim.record_interval_s {
+            return Err(format!(
+                "record_interval_s = {}: must equal the scenario's sim.record_interval_s = {}",
+                crate::validate::num(self.record_interval_s),
+                sc.sim.record_interval_s
+            ));
+        }
+        let e = Partial::empty(sc);
+        let moments = |name: &str, x: &ExactMoments, want: &ExactMoments, max_n: u64| -> Result<(), String> {
+            if x.bits != want.bits || x.order != want.order {
+                return Err(format!(
+                    "{name}: bits = {}, order = {}: this study uses bits = {}, order = {}",
+                    x.bits, x.order, want.bits, want.order
+                ));
+            }
+            if x.n > max_n || x.clamped > x.n {
+                return Err(format!("{name}: n = {}, clamped = {}: at most {max_n} samples", x.n, x.clamped));
+            }
+            if x.n > 0 && !(x.min.is_finite() && x.max.is_finite() && x.min <= x.max) {
+                return Err(format!("{name}: min = {}, max = {}: need finite min <= max", x.min, x.max));
+            }
+            Ok(())
+        };
+        let hist = |name: &str, h: &Histogram, want: &Histogram, max_n: u64| -> Result<(), String> {
+            if h.lo != want.lo || h.hi != want.hi || h.counts.len() != want.counts.len() {
+                return Err(format!(
+                    "{name}: bins [{}, {}) x {}: this study uses [{}, {}) x {}",
+                    h.lo,
+                    h.hi,
+                    h.counts.len(),
+                    want.lo,
+                    want.hi,
+                    want.counts.len()
+                ));
+            }
+            let total =
+                h.counts.iter().try_fold(h.below, |a, c| a.checked_add(*c)).and_then(|a| a.checked_add(h.above));
+            match total {
+                Some(t) if t <= max_n => Ok(()),
+                _ => Err(format!("{name}: more counts than the {max_n} trials")),
+            }
+        };
+        moments("at_time", &self.at_time, &e.at_time, trials)?;
+        hist("at_time_hist", &self.at_time_hist, &e.at_time_hist, trials)?;
+        moments("excess_energy_mj", &self.excess_energy_mj, &e.excess_energy_mj, trials)?;
+        hist("excess_hist", &self.excess_hist, &e.excess_hist, trials)?;
+        moments("excess_vs_calm_mj", &self.excess_vs_calm_mj, &e.excess_vs_calm_mj, trials)?;
+        hist("excess_vs_calm_hist", &self.excess_vs_calm_hist, &e.excess_vs_calm_hist, trials)?;
+        moments("arrival", &self.arrival, &e.arrival, trials)?;
+        hist("arrival_hist", &self.arrival_hist, &e.arrival_hist, trials)?;
+        moments("exposure", &self.exposure, &e.exposure, trials)?;
+        if self.arrival.n.checked_add(self.censored) != Some(trials) || self.exposure.n != trials {
+            return Err(format!(
+                "censored = {}, arrival.n = {}, exposure.n = {}: events plus censored trials must be the {trials} trials",
+                self.censored, self.arrival.n, self.exposure.n
+            ));
+        }
+        let dt = sc.sim.record_interval_s;
+        let max_rows = (sc.sim.duration_s / dt) as usize + 2;
+        let rows = |name: &str, r: &[ExactMoments], max: usize| -> Result<(), String> {
+            if r.len() > max {
+                return Err(format!("{name}: {} rows, at most {max}", r.len()));
+            }
+            let want = ExactMoments::new(ENV_BITS, 2);
+            r.iter().enumerate().try_for_each(|(i, x)| moments(&format!("{name}.{i}"), x, &want, trials))
+        };
+        if self.envelopes.len() != sc.monte_carlo.envelope_signals.len()
+            || self.envelopes.iter().zip(&sc.monte_carlo.envelope_signals).any(|(a, b)| &a.signal != b)
+        {
+            return Err("envelopes: not the scenario's monte_carlo.envelope_signals".into());
+        }
+        for env in &self.envelopes {
+            rows(&format!("envelopes.{}", env.signal), &env.rows, max_rows)?;
+        }
+        rows("onset", &self.onset, (sc.monte_carlo.onset_window_s / dt) as usize + 2)?;
+        rows("periodogram", &self.periodogram, max_rows)?;
+        if !self.periodogram.is_empty() && self.periodogram_hz.len() != self.periodogram.len()
+            || self.periodogram_hz.iter().any(|f| !f.is_finite())
+        {
+            return Err("periodogram_hz: must be finite, one per periodogram row".into());
+        }
+        if self.traces.len() > sc.monte_carlo.keep_traces as usize {
+            return Err(format!(
+                "traces: {} kept, the scenario keeps {}",
+                self.traces.len(),
+                sc.monte_carlo.keep_traces
+            ));
+        }
+        for t in &self.traces {
+            if !self.ranges.iter().any(|&(a, b)| (a..b).contains(&t.trial))
+                || t.t_s.len() > max_rows
+                || t.columns.iter().any(|(_, c)| c.len() != t.t_s.len())
+                || t.t_s.iter().chain(t.columns.iter().flat_map(|(_, c)| c)).any(|x| !x.is_finite())
+            {
+                return Err(format!("traces: trial {} is not a finite trace of a trial in the ranges", t.trial));
+            }
+        }
+        Ok(())
     }
 
     /// Adds another partial of the same study (same scenario and master seed, disjoint trials).
@@ -147,7 +289,7 @@ impl Partial {
         self.arrival.merge(&b.arrival)?;
         self.arrival_hist.merge(&b.arrival_hist)?;
         self.exposure.merge(&b.exposure)?;
-        self.censored += b.censored;
+        self.censored = self.censored.checked_add(b.censored).ok_or("censored: the count overflows")?;
         merge_rows(&mut self.onset, &b.onset, 2)?;
         if self.periodogram_hz.is_empty() {
             self.periodogram_hz = b.periodogram_hz.clone();
@@ -393,27 +535,26 @@ pub struct RowStats {
     pub t_s: Vec<f64>,
     /// Trials that reached the row (fewer towards the end when trials stop at their first event).
     pub n: Vec<u64>,
-    pub mean: Vec<f64>,
-    pub std: Vec<f64>,
-    pub min: Vec<f64>,
-    pub max: Vec<f64>,
-    pub plus_2sigma: Vec<f64>,
-    pub minus_2sigma: Vec<f64>,
+    pub mean: Vec<Option<f64>>,
+    pub std: Vec<Option<f64>>,
+    pub min: Vec<Option<f64>>,
+    pub max: Vec<Option<f64>>,
+    pub plus_2sigma: Vec<Option<f64>>,
+    pub minus_2sigma: Vec<Option<f64>>,
 }
 
 impl RowStats {
     fn of(rows: &[ExactMoments], dt: f64) -> RowStats {
-        let mean: Vec<f64> = rows.iter().map(|r| r.mean()).collect();
-        let std: Vec<f64> = rows.iter().map(|r| r.std()).collect();
+        let each = |f: &dyn Fn(&ExactMoments) -> f64| rows.iter().map(|r| stat(r.n, f(r))).collect::<Vec<_>>();
         RowStats {
             t_s: (0..rows.len()).map(|i| i as f64 * dt).collect(),
             n: rows.iter().map(|r| r.n).collect(),
-            min: rows.iter().map(|r| r.min).collect(),
-            max: rows.iter().map(|r| r.max).collect(),
-            plus_2sigma: mean.iter().zip(&std).map(|(m, s)| m + 2.0 * s).collect(),
-            minus_2sigma: mean.iter().zip(&std).map(|(m, s)| m - 2.0 * s).collect(),
-            mean,
-            std,
+            min: each(&|r| r.min),
+            max: each(&|r| r.max),
+            plus_2sigma: each(&|r| r.mean() + 2.0 * r.std()),
+            minus_2sigma: each(&|r| r.mean() - 2.0 * r.std()),
+            mean: each(&|r| r.mean()),
+            std: rows.iter().map(|r| Some(r.std())).collect(),
         }
     }
 }
@@ -421,8 +562,8 @@ impl RowStats {
 /// Excess energy against the calm-water power at the ordered speed.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ExcessVsCalm {
-    pub mean: f64,
-    pub std: f64,
+    pub mean: Option<f64>,
+    pub std: Option<f64>,
     pub histogram: HistogramSummary,
     pub definition: &'static str,
 }
@@ -430,10 +571,10 @@ pub struct ExcessVsCalm {
 /// Excess motor energy due to surface effects, per trial [MJ].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ExcessEnergy {
-    pub mean: f64,
-    pub std: f64,
-    pub min: f64,
-    pub max: f64,
+    pub mean: Option<f64>,
+    pub std: Option<f64>,
+    pub min: Option<f64>,
+    pub max: Option<f64>,
     pub histogram: HistogramSummary,
     pub definition: &'static str,
     pub vs_calm_water: ExcessVsCalm,
@@ -445,16 +586,16 @@ pub struct ArrivalTimes {
     pub events: u64,
     pub censored: u64,
     pub cap_s: f64,
-    pub mean: f64,
-    pub std: f64,
-    pub skewness: f64,
-    pub kurtosis: f64,
-    pub median: f64,
-    pub mode: f64,
+    pub mean: Option<f64>,
+    pub std: Option<f64>,
+    pub skewness: Option<f64>,
+    pub kurtosis: Option<f64>,
+    pub median: Option<f64>,
+    pub mode: Option<f64>,
     pub histogram: HistogramSummary,
-    pub mean_censored: f64,
-    pub std_censored: f64,
-    pub rate_per_s: f64,
+    pub mean_censored: Option<f64>,
+    pub std_censored: Option<f64>,
+    pub rate_per_s: Option<f64>,
 }
 
 /// Rice's prediction (eqs. 5.1-5.3).
@@ -476,9 +617,9 @@ pub struct HistogramAtTime {
     pub signal: String,
     pub t_s: f64,
     pub n: u64,
-    pub mean: f64,
-    pub std: f64,
-    pub skewness: f64,
+    pub mean: Option<f64>,
+    pub std: Option<f64>,
+    pub skewness: Option<f64>,
     pub histogram: HistogramSummary,
 }
 
@@ -487,9 +628,9 @@ pub struct HistogramAtTime {
 pub struct PeriodogramSummary {
     pub freq_hz: Vec<f64>,
     pub unit: &'static str,
-    pub mean: Vec<f64>,
-    pub min: Vec<f64>,
-    pub max: Vec<f64>,
+    pub mean: Vec<Option<f64>>,
+    pub min: Vec<Option<f64>>,
+    pub max: Vec<Option<f64>>,
 }
 
 /// The public summary of a study (documented in the README).
@@ -509,6 +650,11 @@ pub struct StudySummary {
     pub traces: Vec<KeptTrace>,
 }
 
+/// A statistic of `n` samples: None (JSON null) when undefined because there are none.
+fn stat(n: u64, x: f64) -> Option<f64> {
+    (n > 0).then_some(x)
+}
+
 /// The public summary of a study as JSON.
 pub fn summary(p: &Partial) -> Result<Value, String> {
     serde_json::to_value(study_summary(p)?).map_err(|e| e.to_string())
@@ -521,16 +667,18 @@ pub fn study_summary(p: &Partial) -> Result<StudySummary, String> {
     let envelopes =
         p.envelopes.iter().map(|e| (e.signal.clone(), RowStats::of(&e.rows, p.record_interval_s))).collect();
     let events = p.arrival.n;
+    let ee = &p.excess_energy_mj;
+    let ec = &p.excess_vs_calm_mj;
     let excess_energy_mj = m.excess_energy.then(|| ExcessEnergy {
-        mean: p.excess_energy_mj.mean(),
-        std: p.excess_energy_mj.std(),
-        min: p.excess_energy_mj.min,
-        max: p.excess_energy_mj.max,
+        mean: stat(ee.n, ee.mean()),
+        std: Some(ee.std()),
+        min: stat(ee.n, ee.min),
+        max: stat(ee.n, ee.max),
         histogram: (&p.excess_hist).into(),
         definition: "energy drawn by one motor minus that drawn in the same sea without surface losses [MJ]",
         vs_calm_water: ExcessVsCalm {
-            mean: p.excess_vs_calm_mj.mean(),
-            std: p.excess_vs_calm_mj.std(),
+            mean: stat(ec.n, ec.mean()),
+            std: Some(ec.std()),
             histogram: (&p.excess_vs_calm_hist).into(),
             definition:
                 "energy drawn by one motor minus its calm-water power at the ordered speed times the duration [MJ]",
@@ -547,25 +695,25 @@ pub fn study_summary(p: &Partial) -> Result<StudySummary, String> {
             events,
             censored: p.censored,
             cap_s: sc.sim.duration_s,
-            mean: p.arrival.mean(),
-            std: p.arrival.std(),
-            skewness: p.arrival.skewness(),
-            kurtosis: p.arrival.kurtosis(),
-            median: p.arrival_hist.median(),
-            mode: p.arrival_hist.mode(),
+            mean: stat(events, p.arrival.mean()),
+            std: Some(p.arrival.std()),
+            skewness: Some(p.arrival.skewness()),
+            kurtosis: Some(p.arrival.kurtosis()),
+            median: stat(p.arrival_hist.total(), p.arrival_hist.median()),
+            mode: Some(p.arrival_hist.mode()),
             histogram: (&p.arrival_hist).into(),
-            mean_censored: p.exposure.mean(),
-            std_censored: p.exposure.std(),
-            rate_per_s: if exposure_total > 0.0 { events as f64 / exposure_total } else { f64::NAN },
+            mean_censored: stat(p.exposure.n, p.exposure.mean()),
+            std_censored: Some(p.exposure.std()),
+            rate_per_s: (exposure_total > 0.0).then(|| events as f64 / exposure_total),
         },
         rice: rice_summary(sc)?,
         histogram_at_t: HistogramAtTime {
             signal: m.histogram_signal.clone(),
             t_s: m.histogram_time_s,
             n: p.at_time.n,
-            mean: p.at_time.mean(),
-            std: p.at_time.std(),
-            skewness: p.at_time.skewness(),
+            mean: stat(p.at_time.n, p.at_time.mean()),
+            std: Some(p.at_time.std()),
+            skewness: Some(p.at_time.skewness()),
             histogram: (&p.at_time_hist).into(),
         },
         envelopes,
@@ -573,9 +721,9 @@ pub fn study_summary(p: &Partial) -> Result<StudySummary, String> {
         periodogram: PeriodogramSummary {
             freq_hz: p.periodogram_hz.clone(),
             unit: "MW^2/Hz",
-            mean: p.periodogram.iter().map(|r| r.mean()).collect(),
-            min: p.periodogram.iter().map(|r| r.min).collect(),
-            max: p.periodogram.iter().map(|r| r.max).collect(),
+            mean: p.periodogram.iter().map(|r| stat(r.n, r.mean())).collect(),
+            min: p.periodogram.iter().map(|r| stat(r.n, r.min)).collect(),
+            max: p.periodogram.iter().map(|r| stat(r.n, r.max)).collect(),
         },
         traces: p.traces.clone(),
     })

@@ -214,10 +214,20 @@ impl Default for SimSettings {
     }
 }
 
-/// How many recorded rows a run may hold; beyond it the run is refused before it starts.
-pub const MAX_RECORDED_ROWS: f64 = 2.0e6;
+/// How many recorded values (rows times trace columns) a run may hold; beyond it the run is
+/// refused before it starts. 1e7 values are 80 MB of columns and about 200 MB of CSV, which a
+/// browser tab still holds (the page keeps both); the presets record at most 2.4e5.
+pub const MAX_RECORDED_VALUES: f64 = 1.0e7;
+/// How many recorded rows a run may hold (the values budget over the trace's columns).
+pub const MAX_RECORDED_ROWS: f64 = MAX_RECORDED_VALUES / crate::signals::N_SIGNALS as f64;
 /// How many time steps a run may take.
 pub const MAX_STEPS: f64 = 1.0e9;
+/// The simulator's state size (sim::plant::NX; a test in sim checks that they agree).
+pub const STATE_SIZE: usize = 33;
+/// Budget of simulated work: time steps times the work of one step in state variables (the state
+/// size, plus in waves the wave components summed per step). 2e9 is about a minute natively and
+/// two in a browser; the presets need at most 1.7e7.
+pub const MAX_WORK: f64 = 2.0e9;
 /// How many commands a scenario may hold.
 pub const MAX_COMMANDS: usize = 10_000;
 /// How many signals a Monte Carlo study may keep envelopes of.
@@ -290,7 +300,12 @@ impl SimSettings {
             v.fail(
                 "record_interval_s",
                 self.record_interval_s,
-                format!("would record {rows:.3e} rows; at most {MAX_RECORDED_ROWS:e} (raise the interval)"),
+                format!(
+                    "with sim.duration_s = {} this records {rows:.3e} rows of {} columns; at most {:.0} rows ({MAX_RECORDED_VALUES:e} values): raise the interval or shorten the run",
+                    self.duration_s,
+                    crate::signals::N_SIGNALS,
+                    MAX_RECORDED_ROWS.floor()
+                ),
             );
         }
     }
@@ -330,6 +345,7 @@ impl Scenario {
         // Validated in calm water too: the fuel power uses the turbine efficiency in every run.
         v.section("seakeeping", |v| self.seakeeping.validate(v, self.sim.dt_s));
         v.section("sim", |v| self.sim.validate(v));
+        self.validate_work(&mut v);
         let dt = self.sim.dt_s;
         if dt.is_finite() && dt > 0.0 {
             for (path, period) in [
@@ -343,6 +359,37 @@ impl Scenario {
             }
         }
         v.finish()
+    }
+
+    /// The work a run asks for: time steps times the state variables advanced per step (plus, in
+    /// waves, the wave components summed per step).
+    pub fn work(&self) -> f64 {
+        let steps = self.sim.duration_s / self.sim.dt_s;
+        let mut per_step = STATE_SIZE as f64;
+        if self.sea.kind != SeaKind::Calm {
+            per_step += self.sea.components as f64 * self.sim.dt_s / self.seakeeping.sample_period_s;
+        }
+        steps * per_step
+    }
+
+    fn validate_work(&self, v: &mut Validator) {
+        if !(self.sim.dt_s.is_finite() && self.sim.dt_s > 0.0 && self.seakeeping.sample_period_s > 0.0) {
+            return;
+        }
+        let work = self.work();
+        if work > MAX_WORK {
+            v.section("sim", |v| {
+                v.fail(
+                    "duration_s",
+                    self.sim.duration_s,
+                    format!(
+                        "with sim.dt_s = {} this is {:.3e} steps and {work:.3e} units of work (steps times state size); at most {MAX_WORK:e}: shorten the run or raise sim.dt_s",
+                        self.sim.dt_s,
+                        self.sim.duration_s / self.sim.dt_s
+                    ),
+                )
+            });
+        }
     }
 
     fn validate_commands(&self, v: &mut Validator) {
@@ -392,9 +439,9 @@ impl Scenario {
         let sc: Scenario = serde_path_to_error::deserialize(value).map_err(|e| {
             let path = e.path().to_string();
             ScenarioError(vec![FieldError {
-                path: if path == "." { "(top level)".into() } else { path },
+                path: if path == "." { "(top level)".into() } else { crate::validate::shorten(&path) },
                 value: String::new(),
-                message: e.into_inner().to_string(),
+                message: crate::validate::shorten_message(&e.into_inner().to_string()),
             }])
         })?;
         sc.validate()?;
@@ -445,7 +492,12 @@ impl Scenario {
 }
 
 fn one_error(path: &str, value: &str, msg: &dyn fmt::Display) -> ScenarioError {
-    ScenarioError(vec![FieldError { path: path.into(), value: value.into(), message: msg.to_string() }])
+    use crate::validate::{shorten, shorten_message};
+    ScenarioError(vec![FieldError {
+        path: shorten(path),
+        value: shorten(value),
+        message: shorten_message(&msg.to_string()),
+    }])
 }
 
 fn unknown_path(path: &str, value: &str) -> ScenarioError {
@@ -457,7 +509,9 @@ pub const MAX_SCENARIO_BYTES: usize = 4 << 20;
 /// Deepest nesting accepted in a scenario file.
 pub const MAX_SCENARIO_DEPTH: usize = 32;
 
-/// Parses JSON after bounding its size and nesting, so hostile input cannot exhaust memory or stack.
+/// Parses JSON after bounding its size and nesting, so hostile input cannot exhaust memory or stack,
+/// and refuses duplicate keys (serde_json keeps the last one silently, which hides typos). Errors
+/// name the location: the dotted path, and serde_json's line and column.
 pub fn parse_bounded(text: &str) -> Result<serde_json::Value, ScenarioError> {
     if text.len() > MAX_SCENARIO_BYTES {
         return Err(one_error(
@@ -466,36 +520,99 @@ pub fn parse_bounded(text: &str) -> Result<serde_json::Value, ScenarioError> {
             &format!("a scenario may be at most {MAX_SCENARIO_BYTES} bytes"),
         ));
     }
-    let mut depth = 0usize;
-    let mut in_str = false;
-    let mut escaped = false;
-    for b in text.bytes() {
-        if in_str {
-            match (escaped, b) {
-                (true, _) => escaped = false,
-                (false, b'\\') => escaped = true,
-                (false, b'"') => in_str = false,
-                _ => {}
-            }
-            continue;
-        }
-        match b {
-            b'"' => in_str = true,
-            b'{' | b'[' => {
-                depth += 1;
-                if depth > MAX_SCENARIO_DEPTH {
-                    return Err(one_error(
-                        "(file)",
-                        &format!("nesting deeper than {MAX_SCENARIO_DEPTH}"),
-                        &"a scenario is at most a few levels deep",
-                    ));
-                }
-            }
-            b'}' | b']' => depth = depth.saturating_sub(1),
-            _ => {}
-        }
+    use serde::de::DeserializeSeed;
+    let mut de = serde_json::Deserializer::from_str(text);
+    let value = Strict { path: String::new(), depth: 0 }
+        .deserialize(&mut de)
+        .and_then(|v| de.end().map(|()| v))
+        .map_err(|e| one_error("(file)", "", &format!("not valid JSON: {e}")))?;
+    Ok(value)
+}
+
+/// A JSON value read with a depth limit and no duplicate keys; `path` is where it sits.
+struct Strict {
+    path: String,
+    depth: usize,
+}
+
+impl Strict {
+    fn child(&self, key: &str) -> Strict {
+        let path = if self.path.is_empty() { key.to_string() } else { format!("{}.{key}", self.path) };
+        Strict { path, depth: self.depth + 1 }
     }
-    serde_json::from_str(text).map_err(|e| one_error("(file)", "", &format!("not valid JSON: {e}")))
+    fn enter<E: serde::de::Error>(&self) -> Result<(), E> {
+        if self.depth >= MAX_SCENARIO_DEPTH {
+            let at = if self.path.is_empty() { "(top level)" } else { self.path.as_str() };
+            return Err(E::custom(format!(
+                "nesting deeper than {MAX_SCENARIO_DEPTH} levels at {}",
+                crate::validate::shorten(at)
+            )));
+        }
+        Ok(())
+    }
+}
+
+impl<'de> serde::de::DeserializeSeed<'de> for Strict {
+    type Value = serde_json::Value;
+    fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<serde_json::Value, D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl<'de> serde::de::Visitor<'de> for Strict {
+    type Value = serde_json::Value;
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("a JSON value")
+    }
+    fn visit_bool<E>(self, b: bool) -> Result<serde_json::Value, E> {
+        Ok(serde_json::Value::Bool(b))
+    }
+    fn visit_i64<E>(self, x: i64) -> Result<serde_json::Value, E> {
+        Ok(serde_json::Value::Number(x.into()))
+    }
+    fn visit_u64<E>(self, x: u64) -> Result<serde_json::Value, E> {
+        Ok(serde_json::Value::Number(x.into()))
+    }
+    fn visit_f64<E>(self, x: f64) -> Result<serde_json::Value, E> {
+        // As serde_json's own Value does.
+        Ok(serde_json::Number::from_f64(x).map_or(serde_json::Value::Null, serde_json::Value::Number))
+    }
+    fn visit_str<E>(self, x: &str) -> Result<serde_json::Value, E> {
+        Ok(serde_json::Value::String(x.to_string()))
+    }
+    fn visit_string<E>(self, x: String) -> Result<serde_json::Value, E> {
+        Ok(serde_json::Value::String(x))
+    }
+    fn visit_unit<E>(self) -> Result<serde_json::Value, E> {
+        Ok(serde_json::Value::Null)
+    }
+    fn visit_none<E>(self) -> Result<serde_json::Value, E> {
+        Ok(serde_json::Value::Null)
+    }
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<serde_json::Value, A::Error> {
+        self.enter()?;
+        let mut items = Vec::new();
+        while let Some(v) = seq.next_element_seed(self.child(&items.len().to_string()))? {
+            items.push(v);
+        }
+        Ok(serde_json::Value::Array(items))
+    }
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<serde_json::Value, A::Error> {
+        self.enter()?;
+        let mut out = serde_json::Map::new();
+        while let Some(key) = map.next_key::<String>()? {
+            let child = self.child(&key);
+            if out.contains_key(&key) {
+                return Err(serde::de::Error::custom(format!(
+                    "duplicate key {} (each key may appear once)",
+                    crate::validate::shorten(&child.path)
+                )));
+            }
+            let v = map.next_value_seed(child)?;
+            out.insert(key, v);
+        }
+        Ok(serde_json::Value::Object(out))
+    }
 }
 
 #[cfg(test)]
@@ -555,6 +672,27 @@ mod tests {
         assert!(Scenario::from_json(&deep).is_err());
         assert!(Scenario::from_json("{\"name\": 1e999}").is_err());
         assert!(Scenario::from_json("").is_err());
+    }
+
+    #[test]
+    fn the_work_budget_uses_the_plant_state_size() {
+        assert_eq!(STATE_SIZE, crate::sim::plant::NX);
+    }
+
+    /// The issue's reproducers: 1e9 steps, 2e6 recorded rows, duplicate keys, deep nesting.
+    #[test]
+    fn budgets_and_strict_json() {
+        let e = Scenario::from_json(r#"{"sim":{"duration_s":1e6,"dt_s":0.001}}"#).unwrap_err();
+        assert!(e.0.iter().any(|f| f.path == "sim.duration_s" && f.message.contains("2e9")), "{e}");
+        let e = Scenario::from_json(r#"{"sim":{"duration_s":20000,"record_interval_s":0.01}}"#).unwrap_err();
+        assert!(e.0.iter().any(|f| f.path == "sim.record_interval_s" && f.message.contains("1e7 values")), "{e}");
+        let e = Scenario::from_json(r#"{"ship":{"mass_kg":9e6,"mass_kg":9.1e6}}"#).unwrap_err();
+        assert!(e.to_string().contains("duplicate key ship.mass_kg"), "{e}");
+        let e = Scenario::from_json(&format!("{{\"commands\":{}", "[".repeat(100))).unwrap_err();
+        assert!(e.to_string().contains("nesting deeper than 32 levels at commands.0.0."), "{e}");
+        // Parsing with the checks gives serde_json's own value.
+        let text = Scenario::default().to_json();
+        assert_eq!(parse_bounded(&text).unwrap(), serde_json::from_str::<serde_json::Value>(&text).unwrap());
     }
 
     #[test]

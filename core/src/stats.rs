@@ -190,11 +190,13 @@ impl ExactMoments {
         for (s, x) in sums.iter_mut().zip(b.sums) {
             *s = s.checked_add(x).ok_or("exact moments overflow: more samples than the sums can hold")?;
         }
+        let n = self.n.checked_add(b.n).ok_or("exact moments: the sample count overflows")?;
+        let clamped = self.clamped.checked_add(b.clamped).ok_or("exact moments: the clamped count overflows")?;
         self.sums = sums;
-        self.n += b.n;
+        self.n = n;
         self.min = self.min.min(b.min);
         self.max = self.max.max(b.max);
-        self.clamped += b.clamped;
+        self.clamped = clamped;
         Ok(())
     }
 
@@ -283,12 +285,24 @@ impl Histogram {
         if b.lo != self.lo || b.hi != self.hi || b.counts.len() != self.counts.len() {
             return Err("histograms with different bins cannot be merged".into());
         }
-        for (a, c) in self.counts.iter_mut().zip(&b.counts) {
-            *a += c;
-        }
-        self.below += b.below;
-        self.above += b.above;
+        let overflow = || "histograms: a count overflows".to_string();
+        let counts: Vec<u64> = self
+            .counts
+            .iter()
+            .zip(&b.counts)
+            .map(|(a, c)| a.checked_add(*c).ok_or_else(overflow))
+            .collect::<Result<_, _>>()?;
+        let below = self.below.checked_add(b.below).ok_or_else(overflow)?;
+        let above = self.above.checked_add(b.above).ok_or_else(overflow)?;
+        self.counts = counts;
+        self.below = below;
+        self.above = above;
         Ok(())
+    }
+
+    /// Number of samples counted, inside the bins and outside.
+    pub fn total(&self) -> u64 {
+        self.below.saturating_add(self.above).saturating_add(self.counts.iter().fold(0u64, |a, c| a.saturating_add(*c)))
     }
 
     /// The median by linear interpolation inside the bin where the cumulative count crosses half

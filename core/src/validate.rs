@@ -22,7 +22,7 @@ pub struct FieldError {
 
 impl fmt::Display for FieldError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} = {}: {}", self.path, self.value, self.message)
+        write!(f, "{} = {}: {}", shorten(&self.path), shorten(&self.value), shorten_message(&self.message))
     }
 }
 
@@ -55,6 +55,56 @@ pub fn shorten(text: &str) -> String {
         let mut s: String = text.chars().take(MAX_VALUE_CHARS).collect();
         s.push_str("...");
         s
+    }
+}
+
+/// A message from a parser, with every quoted or backticked stretch longer than
+/// [`MAX_VALUE_CHARS`] cut (serde echoes the offending string whole: a 4 MB string would give
+/// 4 MB of stderr).
+pub fn shorten_message(msg: &str) -> String {
+    let mut out = String::new();
+    let mut quote: Option<(char, String)> = None;
+    for ch in msg.chars() {
+        match &mut quote {
+            Some((q, inner)) if ch == *q => {
+                out.push_str(&shorten(inner));
+                out.push(ch);
+                quote = None;
+            }
+            Some((_, inner)) => inner.push(ch),
+            None => {
+                out.push(ch);
+                if ch == '"' || ch == '`' {
+                    quote = Some((ch, String::new()));
+                }
+            }
+        }
+    }
+    if let Some((_, inner)) = quote {
+        out.push_str(&shorten(&inner));
+    }
+    shorten_long(&out)
+}
+
+/// Any text cut to 400 characters (a message's last guard).
+fn shorten_long(text: &str) -> String {
+    if text.chars().count() <= 400 {
+        text.to_string()
+    } else {
+        let mut s: String = text.chars().take(400).collect();
+        s.push_str("...");
+        s
+    }
+}
+
+/// A number for a message: as Rust prints it when that is short, else in scientific notation
+/// (`1e300`, not 301 digits).
+pub fn num(x: f64) -> String {
+    let plain = x.to_string();
+    if plain.len() <= 24 {
+        plain
+    } else {
+        format!("{x:e}")
     }
 }
 
@@ -93,7 +143,7 @@ impl Validator {
     /// A number in [lo, hi] (NaN and infinities fail).
     pub fn range(&mut self, field: &str, v: f64, lo: f64, hi: f64) {
         if !(v.is_finite() && v >= lo && v <= hi) {
-            self.fail(field, v, format!("must be a number from {lo} to {hi}"));
+            self.fail(field, num(v), format!("must be a number from {} to {}", num(lo), num(hi)));
         }
     }
 
@@ -136,6 +186,205 @@ macro_rules! check_range {
     };
 }
 
+/// Checks that every number in a serializable value is finite: an output must never carry NaN or
+/// an infinity (serde_json would print it as `null`, CSV as `NaN`). The error names the first
+/// offending number by its path, e.g. `steady_state.t_m0 = NaN is not a finite number`. Undefined
+/// statistics are `None` (printed as `null`), never NaN.
+pub fn check_finite<T: Serialize + ?Sized>(x: &T) -> Result<(), String> {
+    let mut c = FiniteCheck { path: Vec::new() };
+    x.serialize(&mut c).map_err(|e| e.0)
+}
+
+/// The error of [`check_finite`].
+#[derive(Debug)]
+pub struct NotFinite(String);
+
+impl fmt::Display for NotFinite {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for NotFinite {}
+
+impl serde::ser::Error for NotFinite {
+    fn custom<T: fmt::Display>(msg: T) -> Self {
+        NotFinite(msg.to_string())
+    }
+}
+
+struct FiniteCheck {
+    path: Vec<String>,
+}
+
+impl FiniteCheck {
+    fn float(&self, x: f64) -> Result<(), NotFinite> {
+        if x.is_finite() {
+            Ok(())
+        } else {
+            let path = if self.path.is_empty() { "(value)".to_string() } else { self.path.join(".") };
+            Err(NotFinite(format!("{} = {x} is not a finite number", shorten(&path))))
+        }
+    }
+    fn nested<T: Serialize + ?Sized>(&mut self, key: String, v: &T) -> Result<(), NotFinite> {
+        self.path.push(key);
+        let r = v.serialize(&mut *self);
+        self.path.pop();
+        r
+    }
+}
+
+/// The compound part of [`FiniteCheck`]: counts elements for their paths.
+struct Compound<'a> {
+    c: &'a mut FiniteCheck,
+    index: usize,
+    key: Option<String>,
+}
+
+macro_rules! ok_scalars {
+    ($($f:ident: $t:ty),*) => {
+        $(fn $f(self, _: $t) -> Result<(), NotFinite> { Ok(()) })*
+    };
+}
+
+impl<'a> serde::Serializer for &'a mut FiniteCheck {
+    type Ok = ();
+    type Error = NotFinite;
+    type SerializeSeq = Compound<'a>;
+    type SerializeTuple = Compound<'a>;
+    type SerializeTupleStruct = Compound<'a>;
+    type SerializeTupleVariant = Compound<'a>;
+    type SerializeMap = Compound<'a>;
+    type SerializeStruct = Compound<'a>;
+    type SerializeStructVariant = Compound<'a>;
+    ok_scalars!(serialize_bool: bool, serialize_i8: i8, serialize_i16: i16, serialize_i32: i32,
+        serialize_i64: i64, serialize_i128: i128, serialize_u8: u8, serialize_u16: u16,
+        serialize_u32: u32, serialize_u64: u64, serialize_u128: u128, serialize_char: char,
+        serialize_str: &str, serialize_bytes: &[u8], serialize_unit_struct: &'static str);
+    fn serialize_f32(self, x: f32) -> Result<(), NotFinite> {
+        self.float(x as f64)
+    }
+    fn serialize_f64(self, x: f64) -> Result<(), NotFinite> {
+        self.float(x)
+    }
+    fn serialize_none(self) -> Result<(), NotFinite> {
+        Ok(())
+    }
+    fn serialize_some<T: Serialize + ?Sized>(self, v: &T) -> Result<(), NotFinite> {
+        v.serialize(self)
+    }
+    fn serialize_unit(self) -> Result<(), NotFinite> {
+        Ok(())
+    }
+    fn serialize_unit_variant(self, _: &'static str, _: u32, _: &'static str) -> Result<(), NotFinite> {
+        Ok(())
+    }
+    fn serialize_newtype_struct<T: Serialize + ?Sized>(self, _: &'static str, v: &T) -> Result<(), NotFinite> {
+        v.serialize(self)
+    }
+    fn serialize_newtype_variant<T: Serialize + ?Sized>(
+        self,
+        _: &'static str,
+        _: u32,
+        variant: &'static str,
+        v: &T,
+    ) -> Result<(), NotFinite> {
+        self.nested(variant.to_string(), v)
+    }
+    fn serialize_seq(self, _: Option<usize>) -> Result<Compound<'a>, NotFinite> {
+        Ok(Compound { c: self, index: 0, key: None })
+    }
+    fn serialize_tuple(self, _: usize) -> Result<Compound<'a>, NotFinite> {
+        Ok(Compound { c: self, index: 0, key: None })
+    }
+    fn serialize_tuple_struct(self, _: &'static str, _: usize) -> Result<Compound<'a>, NotFinite> {
+        Ok(Compound { c: self, index: 0, key: None })
+    }
+    fn serialize_tuple_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Compound<'a>, NotFinite> {
+        Ok(Compound { c: self, index: 0, key: None })
+    }
+    fn serialize_map(self, _: Option<usize>) -> Result<Compound<'a>, NotFinite> {
+        Ok(Compound { c: self, index: 0, key: None })
+    }
+    fn serialize_struct(self, _: &'static str, _: usize) -> Result<Compound<'a>, NotFinite> {
+        Ok(Compound { c: self, index: 0, key: None })
+    }
+    fn serialize_struct_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Compound<'a>, NotFinite> {
+        Ok(Compound { c: self, index: 0, key: None })
+    }
+}
+
+impl Compound<'_> {
+    fn element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+        let key = self.index.to_string();
+        self.index += 1;
+        self.c.nested(key, v)
+    }
+}
+
+macro_rules! seq_like {
+    ($($tr:ident: $f:ident),*) => {
+        $(impl serde::ser::$tr for Compound<'_> {
+            type Ok = ();
+            type Error = NotFinite;
+            fn $f<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+                self.element(v)
+            }
+            fn end(self) -> Result<(), NotFinite> {
+                Ok(())
+            }
+        })*
+    };
+}
+seq_like!(SerializeSeq: serialize_element, SerializeTuple: serialize_element,
+    SerializeTupleStruct: serialize_field, SerializeTupleVariant: serialize_field);
+
+impl serde::ser::SerializeMap for Compound<'_> {
+    type Ok = ();
+    type Error = NotFinite;
+    fn serialize_key<T: Serialize + ?Sized>(&mut self, k: &T) -> Result<(), NotFinite> {
+        // Keys are strings or numbers in our outputs; their text is the path element.
+        self.key =
+            Some(serde_json::to_value(k).map(|v| v.as_str().map_or(v.to_string(), str::to_string)).unwrap_or_default());
+        Ok(())
+    }
+    fn serialize_value<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+        let key = self.key.take().unwrap_or_default();
+        self.c.nested(key, v)
+    }
+    fn end(self) -> Result<(), NotFinite> {
+        Ok(())
+    }
+}
+
+macro_rules! struct_like {
+    ($($tr:ident),*) => {
+        $(impl serde::ser::$tr for Compound<'_> {
+            type Ok = ();
+            type Error = NotFinite;
+            fn serialize_field<T: Serialize + ?Sized>(&mut self, key: &'static str, v: &T) -> Result<(), NotFinite> {
+                self.c.nested(key.to_string(), v)
+            }
+            fn end(self) -> Result<(), NotFinite> {
+                Ok(())
+            }
+        })*
+    };
+}
+struct_like!(SerializeStruct, SerializeStructVariant);
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -163,6 +412,23 @@ mod tests {
         assert_eq!(e.0[0].message, "must be a number from 0 to 1");
         assert_eq!(e.0[1].path, "plant.motor.blades");
         assert_eq!(e.0[1].message, "must be a whole number from 2 to 7");
+    }
+
+    #[test]
+    fn non_finite_numbers_are_named_by_path() {
+        #[derive(Serialize)]
+        struct S {
+            a: f64,
+            b: Vec<Option<f64>>,
+            m: std::collections::BTreeMap<String, (u8, f64)>,
+        }
+        let mut s = S { a: 1.0, b: vec![Some(2.0), None], m: [("k".to_string(), (1, 3.0))].into() };
+        assert_eq!(check_finite(&s), Ok(()));
+        s.b[1] = Some(f64::INFINITY);
+        assert_eq!(check_finite(&s), Err("b.1 = inf is not a finite number".to_string()));
+        s.b[1] = None;
+        s.m.insert("x".into(), (0, f64::NAN));
+        assert_eq!(check_finite(&s), Err("m.x.1 = NaN is not a finite number".to_string()));
     }
 
     #[test]

@@ -72,6 +72,7 @@ impl Run {
         if sim.done() {
             if let Some(sim) = self.sim.take() {
                 let r = sim.finish();
+                aes_core::validate::check_finite(&r.summary).map_err(|e| JsError::new(&e))?;
                 self.summary_json = serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default();
                 self.trace_csv = r.trace.to_csv();
                 self.columns = r.trace.columns;
@@ -133,32 +134,43 @@ pub fn ips_analysis(
     to_hz: f64,
     points: u32,
 ) -> Result<String, JsError> {
-    use aes_core::stability::{generator_side::GeneratorSideParams, log_space, motor_side::MotorSideParams};
-    if !(from_hz > 0.0 && to_hz > from_hz && (2..=5000).contains(&points)) {
-        return Err(JsError::new("Bode range: need 0 < from < to and 2 to 5000 points"));
+    use aes_core::stability::{bode_frequencies, generator_side::GeneratorSideParams, motor_side::MotorSideParams};
+    use aes_core::validate::check_finite;
+    let err = |e: String| JsError::new(&e);
+    let hz = bode_frequencies(from_hz, to_hz, points.min(5000) as usize).map_err(err)?;
+    if points > 5000 {
+        return Err(JsError::new(&format!("Bode points = {points}: must be a whole number from 2 to 5000")));
     }
     let (steady, sys) = match side {
         "generator" => {
             let p = GeneratorSideParams::default();
-            let s = p.steady_state(omega, v_fd, i_load).map_err(|e| JsError::new(&e))?;
+            let s = p.steady_state(omega, v_fd, i_load).map_err(err)?;
+            check_finite(&s).map_err(err)?;
             let sys = if closed { p.closed_loop(&s) } else { p.open_loop(&s) };
             (serde_json::to_value(s).unwrap_or_default(), sys)
         }
         "motor" => {
             let p = MotorSideParams::default();
-            let s = p.steady_state(torque).map_err(|e| JsError::new(&e))?;
+            let s = p.steady_state(torque).map_err(err)?;
+            check_finite(&s).map_err(err)?;
             let sys = if closed { p.closed_loop(&s) } else { p.open_loop(&s) };
             (serde_json::to_value(s).unwrap_or_default(), sys)
         }
-        other => return Err(JsError::new(&format!("side = '{other}': use 'generator' or 'motor'"))),
+        other => {
+            return Err(JsError::new(&format!(
+                "side = '{}': use 'generator' or 'motor'",
+                aes_core::validate::shorten(other)
+            )))
+        }
     };
-    let hz = log_space(from_hz, to_hz, points as usize);
     let omegas: Vec<f64> = hz.iter().map(|f| 2.0 * std::f64::consts::PI * f).collect();
-    let pts = sys.bode(&omegas);
+    let pts = sys.bode(&omegas).map_err(err)?;
+    let poles = sys.poles().map_err(err)?;
+    let stable = poles.iter().all(|p| p.re < 0.0);
     Ok(serde_json::json!({
         "steady_state": steady,
-        "poles": sys.poles(),
-        "stable": sys.is_stable(),
+        "poles": poles,
+        "stable": stable,
         "bode": {
             "frequency_hz": hz,
             "magnitude_db": pts.iter().map(|p| p.magnitude_db).collect::<Vec<_>>(),
@@ -186,14 +198,15 @@ pub fn mc_range(json: &str, a: u32, b: u32) -> Result<String, JsError> {
 pub fn mc_summary(partials: Vec<String>) -> Result<String, JsError> {
     let mut acc: Option<aes_core::montecarlo::Partial> = None;
     for p in &partials {
-        let p: aes_core::montecarlo::Partial =
-            serde_json::from_str(p).map_err(|e| JsError::new(&format!("not a partial: {e}")))?;
+        let p = aes_core::montecarlo::Partial::from_json(p).map_err(|e| JsError::new(&e))?;
         match acc.as_mut() {
             None => acc = Some(p),
             Some(a) => a.merge(&p).map_err(|e| JsError::new(&e))?,
         }
     }
     let acc = acc.ok_or_else(|| JsError::new("no partials"))?;
+    let s = aes_core::montecarlo::study_summary(&acc).map_err(|e| JsError::new(&e))?;
+    aes_core::validate::check_finite(&s).map_err(|e| JsError::new(&e))?;
     let v = aes_core::montecarlo::summary(&acc).map_err(|e| JsError::new(&e))?;
     Ok(v.to_string())
 }

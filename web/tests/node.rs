@@ -162,3 +162,39 @@ fn differences(a: &serde_json::Value, b: &serde_json::Value, path: String, out: 
         _ => {}
     }
 }
+
+/// The message of a JsError.
+fn message(e: wasm_bindgen::JsError) -> String {
+    let v = wasm_bindgen::JsValue::from(e);
+    js_sys::Reflect::get(&v, &"message".into()).ok().and_then(|m| m.as_string()).unwrap_or_default()
+}
+
+/// Issue 18 through the wasm exports: extreme inputs end at once with a named error (the page's
+/// stability worker froze on the first), and nothing non-finite comes back.
+#[wasm_bindgen_test]
+fn extreme_inputs_end_with_named_errors() {
+    let e = ips_analysis("motor", 377.0, 28.5, 45.0, 1e300, false, 0.01, 1000.0, 200).unwrap_err();
+    assert!(message(e).contains("torque command T* = 1e300 N m"));
+    for (omega, vfd, load) in [(1e300, 28.5, 45.0), (377.0, f64::NAN, 45.0), (377.0, 28.5, 1e-300)] {
+        assert!(ips_analysis("generator", omega, vfd, load, 100.0, true, 0.01, 1000.0, 200).is_err());
+    }
+    assert!(ips_analysis("motor", 377.0, 28.5, 45.0, 100.0, false, 0.0, 1000.0, 200).is_err());
+    assert!(ips_analysis("motor", 377.0, 28.5, 45.0, 100.0, false, 0.01, 1000.0, 1_000_000).is_err());
+    let ok = ips_analysis("motor", 377.0, 28.5, 45.0, 10_000.0, true, 1e-6, 1e7, 50).unwrap();
+    assert!(!ok.contains("null"), "{ok}");
+    // A run recording 2e6 rows is refused before it starts (it took 2.8 GB).
+    let big = r#"{"sim": {"duration_s": 20000, "dt_s": 0.01, "record_interval_s": 0.01}}"#;
+    assert!(message(Run::new(big).err().unwrap()).contains("sim.record_interval_s"));
+    let long = r#"{"sim": {"duration_s": 1000000, "dt_s": 0.001}}"#;
+    assert!(message(Run::new(long).err().unwrap()).contains("sim.duration_s"));
+    let errs = js_sys::Array::from(&validate_scenario(r#"{"ship": {"mass_kg": 7e6, "mass_kg": 8e6}}"#).unwrap());
+    let msg = js_sys::Reflect::get(&errs.get(0), &"message".into()).unwrap().as_string().unwrap();
+    assert!(msg.contains("duplicate key ship.mass_kg"), "{msg}");
+    // A partial with a reversed range is refused by mcSummary.
+    let mut sc: serde_json::Value = serde_json::from_str(&preset_json("mc-arrival").unwrap()).unwrap();
+    sc["sim"]["duration_s"] = serde_json::json!(2.0);
+    let p = mc_range(&sc.to_string(), 0, 1).unwrap();
+    let mut bad: serde_json::Value = serde_json::from_str(&p).unwrap();
+    bad["ranges"] = serde_json::json!([[2, 0]]);
+    assert!(message(mc_summary(vec![bad.to_string()]).unwrap_err()).contains("ranges.0 = [2, 0]"));
+}

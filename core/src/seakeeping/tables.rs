@@ -212,7 +212,7 @@ pub fn section_json(
         if v.is_finite() && v > lo && v <= hi {
             Ok(())
         } else {
-            Err(format!("{name} = {v} is outside ({lo}, {hi}]"))
+            Err(format!("{name} = {} is outside ({lo}, {hi}]", crate::validate::num(v)))
         }
     };
     chk("beam", beam, 0.0, 200.0)?;
@@ -222,7 +222,11 @@ pub fn section_json(
         return Err(format!("omega: give 1 to 10000 frequencies (got {})", omegas.len()));
     }
     for &w in omegas {
+        // Below 1e-3 rad/s the multipole series loses every digit (deep water's long-wave limit).
         chk("omega", w, 0.0, 50.0)?;
+        if w < MIN_OMEGA {
+            return Err(format!("omega = {}: must be from {MIN_OMEGA} to 50 rad/s", crate::validate::num(w)));
+        }
     }
     let map: SectionMap = match form {
         FormChoice::Auto => section_map(0.5 * beam, draft, sigma),
@@ -253,8 +257,13 @@ pub fn section_json(
         sway_roll: mode(&|r| r.a24, &|r| r.b24, None),
         multipoles: rs.iter().map(|r| r.multipoles).collect(),
     };
+    crate::validate::check_finite(&out)
+        .map_err(|e| format!("the section's coefficients are not finite ({e}): try another form or frequency"))?;
     serde_json::to_value(out).map_err(|e| e.to_string())
 }
+
+/// Lowest wave frequency `section` and `rao` accept [rad/s].
+pub const MIN_OMEGA: f64 = 1.0e-3;
 
 /// One mode's sectional coefficients over frequency (`aes-sim section`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -325,8 +334,8 @@ pub fn rao_json(
         return Err(format!("omega: give 1 to 10000 frequencies (got {})", omegas.len()));
     }
     for &w in omegas {
-        if !(w.is_finite() && w > 0.0 && w <= 10.0) {
-            return Err(format!("omega = {w} rad/s is outside (0, 10]"));
+        if !(w.is_finite() && (MIN_OMEGA..=10.0).contains(&w)) {
+            return Err(format!("omega = {} rad/s: must be from {MIN_OMEGA} to 10 rad/s", crate::validate::num(w)));
         }
     }
     let rad = ship.radiation_table(&default_omega_grid());
@@ -356,6 +365,8 @@ pub fn rao_json(
         drift_force_n_per_m2: rs.iter().map(|r| r.drift_force).collect(),
         added_resistance_gerritsma_beukelman_n_per_m2: rs.iter().map(|r| r.added_resistance_gb).collect(),
     };
+    crate::validate::check_finite(&out)
+        .map_err(|e| format!("the RAOs are not finite ({e}): check the hull, draft and mass properties"))?;
     serde_json::to_value(out).map_err(|e| e.to_string())
 }
 

@@ -228,9 +228,9 @@ impl GeneratorSideParams {
     /// and sink current `i_load` [A] (ch. 4.2.1), by Newton's method with a line search on the
     /// three unknowns (i_qs, i_ds, i_dc).
     pub fn steady_state(&self, omega_star: f64, v_fd: f64, i_load: f64) -> Result<GeneratorSteadyState, String> {
-        if !(omega_star > 0.0 && v_fd > 0.0 && i_load > 0.0) {
-            return Err(format!("omega = {omega_star} rad/s, v_fd = {v_fd} V, I = {i_load} A: all must be positive"));
-        }
+        super::check_input("omega", "rad/s", omega_star, 1.0, 5000.0)?;
+        super::check_input("v_fd", "V", v_fd, 0.01, 1000.0)?;
+        super::check_input("load current I", "A", i_load, 0.01, 1000.0)?;
         let w = omega_star;
         let i_fd = self.turns_ratio * v_fd / self.r_fd;
         let lq = self.l_ls + self.l_mq;
@@ -286,15 +286,18 @@ impl GeneratorSideParams {
                 best = Some((z, n));
             }
         }
-        let (z, _) =
-            best.ok_or("the generator-side steady state did not converge (is the load within the machine's reach?)")?;
+        let (z, _) = best.ok_or_else(|| {
+            format!(
+                "the generator-side steady state did not converge at load current I = {i_load} A (omega = {omega_star} rad/s, v_fd = {v_fd} V): the load is likely beyond what the machine delivers at this field voltage; lower I (--load) or raise v_fd (--vfd)"
+            )
+        })?;
         let (iq, id, idc) = (z[0], z[1], z[2]);
         let (vr, vq, vd) = rectifier_voltages(self.x_co, iq, id, idc).ok_or("rectifier constraint violated")?;
         let v_dc = (idc - i_load) * self.r3;
         let torque = self.torque(&[iq, id, 0.0, 0.0, i_fd]);
         let x =
             [iq, id, 0.0, 0.0, i_fd, 2.0 * w / self.poles, torque / self.ki_t, idc, v_dc + self.r2 * idc, idc, v_dc];
-        Ok(GeneratorSteadyState {
+        let ss = GeneratorSteadyState {
             omega: w,
             v_fd,
             i_load,
@@ -306,7 +309,22 @@ impl GeneratorSideParams {
             i_dc: idc,
             cos_phi: vr / (K1 * libm::hypot(vq, vd)),
             x,
-        })
+        };
+        let mut values = vec![
+            ("v_gs_mag", ss.v_gs_mag),
+            ("i_gs_mag", ss.i_gs_mag),
+            ("i_fd", ss.i_fd),
+            ("v_dc", ss.v_dc),
+            ("i_dc", ss.i_dc),
+            ("cos_phi", ss.cos_phi),
+        ];
+        values.extend(STATES.iter().zip(ss.x.iter()).map(|(n, v)| (*n, *v)));
+        super::check_steady(
+            "generator-side",
+            &format!("omega = {omega_star} rad/s, v_fd = {v_fd} V, I = {i_load} A"),
+            &values,
+        )?;
+        Ok(ss)
     }
 
     /// Analytic Jacobian of the rectifier voltages (v~, v_qs, v_ds) with respect to

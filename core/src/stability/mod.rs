@@ -41,9 +41,30 @@ pub struct BodePoint {
 }
 
 impl LinearSystem {
-    /// Eigenvalues of A, sorted by real part (least stable last).
-    pub fn poles(&self) -> Vec<Pole> {
-        let ev = self.a.clone().complex_eigenvalues();
+    /// Checks that every entry of A, B, C, D is finite (a model built from an extreme operating
+    /// point can overflow); the error names the matrix and the entry.
+    pub fn check_finite(&self) -> Result<(), String> {
+        for (name, m) in [("A", &self.a), ("B", &self.b), ("C", &self.c), ("D", &self.d)] {
+            if let Some(k) = m.iter().position(|x| !x.is_finite()) {
+                let (i, j) = (k % m.nrows(), k / m.nrows());
+                return Err(format!(
+                    "the linear model's {name}[{i}][{j}] = {} is not finite: the operating point or the parameters are outside what the model can represent",
+                    m[(i, j)]
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Eigenvalues of A, sorted by real part (least stable last). The QR iteration is bounded
+    /// ([`MAX_SCHUR_ITERATIONS`]); a non-finite A or a decomposition that does not converge is an
+    /// error, never a hang.
+    pub fn poles(&self) -> Result<Vec<Pole>, String> {
+        self.check_finite()?;
+        let n = self.a.nrows();
+        let schur = nalgebra::linalg::Schur::try_new(self.a.clone(), f64::EPSILON, MAX_SCHUR_ITERATIONS)
+            .ok_or_else(|| format!("the eigenvalues of the {n}x{n} linear model did not converge"))?;
+        let ev = schur.complex_eigenvalues();
         let mut poles: Vec<Pole> = ev
             .iter()
             .map(|l| {
@@ -51,13 +72,16 @@ impl LinearSystem {
                 Pole { re: l.re, im: l.im, damping: if w > 0.0 { -l.re / w } else { 1.0 }, natural_frequency_rad_s: w }
             })
             .collect();
+        if poles.iter().any(|p| !(p.re.is_finite() && p.im.is_finite() && p.natural_frequency_rad_s.is_finite())) {
+            return Err(format!("the eigenvalues of the {n}x{n} linear model are not finite"));
+        }
         poles.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));
-        poles
+        Ok(poles)
     }
 
     /// Whether every pole has a negative real part.
-    pub fn is_stable(&self) -> bool {
-        self.poles().iter().all(|p| p.re < 0.0)
+    pub fn is_stable(&self) -> Result<bool, String> {
+        Ok(self.poles()?.iter().all(|p| p.re < 0.0))
     }
 
     /// G(j omega) = C (j omega I - A)^-1 B + D.
@@ -76,33 +100,50 @@ impl LinearSystem {
         g
     }
 
-    /// Bode points at the given frequencies [rad/s].
-    pub fn bode(&self, omegas: &[f64]) -> Vec<BodePoint> {
+    /// Bode points at the given frequencies [rad/s]; an error (naming the frequency) where the
+    /// response is not finite (a pole on the axis, or a model that overflows).
+    pub fn bode(&self, omegas: &[f64]) -> Result<Vec<BodePoint>, String> {
+        self.check_finite()?;
         omegas
             .iter()
             .map(|&w| {
                 let g = self.response(w);
-                BodePoint { omega_rad_s: w, magnitude_db: 20.0 * libm::log10(cabs(g)), phase_deg: carg(g).to_degrees() }
+                let p = BodePoint {
+                    omega_rad_s: w,
+                    magnitude_db: 20.0 * libm::log10(cabs(g)),
+                    phase_deg: carg(g).to_degrees(),
+                };
+                if p.magnitude_db.is_finite() && p.phase_deg.is_finite() {
+                    Ok(p)
+                } else {
+                    Err(format!("the frequency response at {w} rad/s is not finite (|G| = {})", cabs(g)))
+                }
             })
             .collect()
     }
 
     /// The public JSON form: matrices as arrays of rows, poles, state names.
-    pub fn to_json_value(&self) -> serde_json::Value {
+    pub fn to_json_value(&self) -> Result<serde_json::Value, String> {
+        let poles = self.poles()?;
+        let stable = poles.iter().all(|p| p.re < 0.0);
         let rows = |m: &DMatrix<f64>| -> Vec<Vec<f64>> {
             (0..m.nrows()).map(|i| (0..m.ncols()).map(|j| m[(i, j)]).collect()).collect()
         };
-        serde_json::json!({
+        Ok(serde_json::json!({
             "states": self.states,
             "a": rows(&self.a),
             "b": rows(&self.b),
             "c": rows(&self.c),
             "d": rows(&self.d),
-            "poles": self.poles(),
-            "stable": self.is_stable(),
-        })
+            "poles": poles,
+            "stable": stable,
+        }))
     }
 }
+
+/// Most QR iterations the eigenvalue solver may take (the models have at most 12 states and
+/// converge in well under 100).
+pub const MAX_SCHUR_ITERATIONS: usize = 10_000;
 
 /// |z| through libm (num-complex's `norm` calls the platform's hypot, which differs native vs wasm).
 fn cabs(z: Complex64) -> f64 {
@@ -193,30 +234,82 @@ pub fn trapezoid_step(f: &dyn Fn(f64, &[f64]) -> Vec<f64>, t: f64, x: &mut [f64]
     false
 }
 
+/// How far `--set` may move a parameter from its default: a factor of [`PARAM_SPAN`] either way
+/// (the models are reconstructions of one 50 hp testbed; beyond that their numbers overflow or
+/// lose all meaning, e.g. `l_m = 1e-300`).
+pub const PARAM_SPAN: f64 = 1.0e3;
+
 /// Reads a parameter set from JSON (or its defaults), applies `path=value` overrides, and checks
-/// that every parameter is a positive finite number; errors name the field and its value.
+/// that every parameter is a finite number within [`PARAM_SPAN`] of its default (of `base`);
+/// errors name the field, its value (shortened) and the allowed range.
 pub fn load_params<T>(base: &T, overrides: &[(String, String)]) -> Result<T, String>
 where
     T: serde::Serialize + serde::de::DeserializeOwned,
 {
-    let mut v = serde_json::to_value(base).map_err(|e| e.to_string())?;
+    use crate::validate::shorten;
+    let defaults = serde_json::to_value(base).map_err(|e| e.to_string())?;
+    let mut v = defaults.clone();
     for (path, text) in overrides {
         let slot = v
             .as_object_mut()
             .and_then(|m| m.get_mut(path.as_str()))
-            .ok_or_else(|| format!("{path}: no such parameter"))?;
-        let num: f64 = text.parse().map_err(|_| format!("{path} = {text}: not a number"))?;
-        *slot = serde_json::json!(num);
+            .ok_or_else(|| format!("{}: no such parameter", shorten(path)))?;
+        let num: f64 = text.parse().map_err(|_| format!("{path} = {}: not a number", shorten(text)))?;
+        *slot = serde_json::Number::from_f64(num)
+            .map(serde_json::Value::Number)
+            .ok_or_else(|| format!("{path} = {}: not a finite number", shorten(text)))?;
     }
-    if let Some(map) = v.as_object() {
+    if let (Some(map), Some(def)) = (v.as_object(), defaults.as_object()) {
         for (k, x) in map {
             let x = x.as_f64().unwrap_or(f64::NAN);
-            if !(x.is_finite() && x > 0.0 && x < 1.0e9) {
-                return Err(format!("{k} = {x}: must be a positive number below 1e9"));
+            let d = def.get(k).and_then(|d| d.as_f64()).unwrap_or(1.0);
+            let (lo, hi) = (d / PARAM_SPAN, (d * PARAM_SPAN).min(1.0e9));
+            if !(x.is_finite() && x >= lo && x <= hi) {
+                return Err(format!(
+                    "{k} = {}: must be a number from {lo:e} to {hi:e} (the default {d} within a factor of {PARAM_SPAN})",
+                    crate::validate::num(x)
+                ));
             }
         }
     }
     serde_path_to_error::deserialize(v).map_err(|e| format!("{}: {}", e.path(), e.inner()))
+}
+
+/// `n` logarithmically spaced Bode frequencies [Hz] from `from_hz` to `to_hz`, after checking
+/// the range (0 < from < to <= 1e7 Hz, 2 to [`MAX_BODE_POINTS`] points).
+pub fn bode_frequencies(from_hz: f64, to_hz: f64, points: usize) -> Result<Vec<f64>, String> {
+    if !(from_hz.is_finite() && from_hz >= 1e-6 && to_hz.is_finite() && to_hz > from_hz && to_hz <= 1e7) {
+        return Err(format!("Bode range from {from_hz} Hz to {to_hz} Hz: need 1e-6 <= from < to <= 1e7 Hz"));
+    }
+    if !(2..=MAX_BODE_POINTS).contains(&points) {
+        return Err(format!("Bode points = {points}: must be a whole number from 2 to {MAX_BODE_POINTS}"));
+    }
+    Ok(log_space(from_hz, to_hz, points))
+}
+
+/// Most points of one Bode plot.
+pub const MAX_BODE_POINTS: usize = 10_000;
+
+/// Checks an operating-point input of a steady state: a finite number in [lo, hi], or an error
+/// naming it, its value and the range.
+pub(crate) fn check_input(name: &str, unit: &str, x: f64, lo: f64, hi: f64) -> Result<(), String> {
+    if x.is_finite() && x >= lo && x <= hi {
+        Ok(())
+    } else {
+        Err(format!("{name} = {} {unit}: must be a number from {lo} to {hi} {unit}", crate::validate::num(x)))
+    }
+}
+
+/// Checks that every number of a steady state is finite; the error names the quantity and the
+/// inputs that led to it.
+pub(crate) fn check_steady(side: &str, inputs: &str, values: &[(&str, f64)]) -> Result<(), String> {
+    match values.iter().find(|(_, x)| !x.is_finite()) {
+        None => Ok(()),
+        Some((name, x)) => Err(format!(
+            "the {side} steady state at {inputs} has {name} = {}: the parameters or the operating point are outside what the model can represent",
+            crate::validate::num(*x)
+        )),
+    }
 }
 
 /// Classical stability margins of a loop transfer function L(j omega) (negative feedback).

@@ -21,6 +21,10 @@ use nalgebra::{DMatrix, Matrix4, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
+/// Range of the torque command T* [N m] (the testbed's motor is rated near 200 N m).
+pub const MIN_TORQUE: f64 = 0.01;
+pub const MAX_TORQUE: f64 = 10_000.0;
+
 /// Motor-side parameters (SI; magnitudes are peak qd values, as the thesis' tables are).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -191,9 +195,7 @@ impl MotorSideParams {
 
     /// The five-step steady-state procedure of ch. 4.2.2 for torque command `t_star` [N m].
     pub fn steady_state(&self, t_star: f64) -> Result<MotorSteadyState, String> {
-        if !(t_star.is_finite() && t_star > 0.0) {
-            return Err(format!("torque command {t_star} N m: must be positive"));
-        }
+        super::check_input("torque command T*", "N m", t_star, MIN_TORQUE, MAX_TORQUE)?;
         // I: the propeller carries T* at steady state (eq. 4.31).
         let c = self.kq0 * self.rho * powi(self.diameter, 5) / ((2.0 * PI) * (2.0 * PI));
         let w_rm = (t_star / c).sqrt();
@@ -213,7 +215,7 @@ impl MotorSideParams {
             // V: the torque the machine makes; trim the reference if the estimates are off.
             let t_m = self.torque(&cur);
             if (t_m - t_star).abs() < 1e-10 * t_star || it == 50 {
-                return Ok(MotorSteadyState {
+                let ss = MotorSteadyState {
                     t_star,
                     t_m0: t_m,
                     t_ref0: t_ref,
@@ -227,7 +229,25 @@ impl MotorSideParams {
                     above_threshold: t_ref > self.torque_threshold(),
                     t_threshold: self.torque_threshold(),
                     iterations: it,
-                });
+                };
+                let [i_qs, i_ds, i_qr, i_dr] = ss.currents;
+                super::check_steady(
+                    "motor-side",
+                    &format!("T* = {t_star} N m"),
+                    &[
+                        ("t_m0", ss.t_m0),
+                        ("t_ref0", ss.t_ref0),
+                        ("omega_r0", ss.omega_r0),
+                        ("omega_s0", ss.omega_s0),
+                        ("i_qs", i_qs),
+                        ("i_ds", i_ds),
+                        ("i_qr", i_qr),
+                        ("i_dr", i_dr),
+                        ("v_s_mag", ss.v_s_mag),
+                        ("t_threshold", ss.t_threshold),
+                    ],
+                )?;
+                return Ok(ss);
             }
             t_ref *= t_star / t_m;
         }

@@ -1,0 +1,213 @@
+//! Property-based tests of every entry point (issue 18): mutated scenarios from every preset
+//! through `--set`-style overrides, hull CSVs, Monte Carlo partials for merge, and the ch. 4
+//! tool's parameters. The property: a clean error or a finite result, within a time bound, never
+//! a panic. Seeded (the same cases every run); `AES_FUZZ_CASES` sets the cases per property
+//! (default 128, about a second each; `./build.sh fuzz` runs 2000).
+
+use aes_core::hull_sections::HullOffsets;
+use aes_core::montecarlo::Partial;
+use aes_core::presets::{preset, PRESET_NAMES};
+use aes_core::seakeeping::strip::{MassProperties, Ship};
+use aes_core::validate::check_finite;
+use aes_core::Simulation;
+use proptest::prelude::*;
+use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+use std::time::{Duration, Instant};
+
+/// Most time one case may take (the issue's bound for a reproducer).
+const CASE_BOUND: Duration = Duration::from_secs(10);
+
+fn runner(seed: u8) -> TestRunner {
+    let cases = std::env::var("AES_FUZZ_CASES").ok().and_then(|s| s.parse().ok()).unwrap_or(128);
+    let config = Config { cases, failure_persistence: None, ..Config::default() };
+    TestRunner::new_with_rng(config, TestRng::from_seed(RngAlgorithm::ChaCha, &[seed; 32]))
+}
+
+/// Values a hostile or careless user types.
+fn value_text() -> impl Strategy<Value = String> {
+    prop_oneof![
+        prop::sample::select(vec![
+            "0",
+            "-1",
+            "1",
+            "1e308",
+            "-1e308",
+            "1e-300",
+            "5e-324",
+            "1e999",
+            "NaN",
+            "inf",
+            "\"x\"",
+            "true",
+            "null",
+            "[]",
+            "{}",
+            "[1,2]",
+            "18446744073709551615",
+            "-9223372036854775808",
+            "0.5",
+            "2",
+            "1000000",
+        ])
+        .prop_map(str::to_string),
+        any::<f64>().prop_map(|x| x.to_string()),
+        (-1.0e4..1.0e4f64).prop_map(|x| x.to_string()),
+    ]
+}
+
+/// Every leaf path of a JSON value (`plant.motor.rated_power_w`, `commands.0.speed_kn`).
+fn leaf_paths(v: &serde_json::Value, prefix: &str, out: &mut Vec<String>) {
+    let join = |k: &str| if prefix.is_empty() { k.to_string() } else { format!("{prefix}.{k}") };
+    match v {
+        serde_json::Value::Object(m) => m.iter().for_each(|(k, x)| leaf_paths(x, &join(k), out)),
+        serde_json::Value::Array(a) => {
+            a.iter().enumerate().for_each(|(i, x)| leaf_paths(x, &join(&i.to_string()), out))
+        }
+        _ => out.push(prefix.to_string()),
+    }
+}
+
+/// A scenario mutated in one to three places either fails with named fields or runs (its first
+/// 3000 steps here) to a finite summary.
+#[test]
+fn mutated_scenarios_fail_cleanly_or_stay_finite() {
+    let presets: Vec<_> = PRESET_NAMES.iter().map(|n| preset(n).unwrap()).collect();
+    let mut paths = Vec::new();
+    leaf_paths(&serde_json::to_value(&presets[0]).unwrap(), "", &mut paths);
+    let strategy = (0..presets.len(), prop::collection::vec((prop::sample::select(paths), value_text()), 1..4));
+    runner(1)
+        .run(&strategy, |(k, sets)| {
+            let t0 = Instant::now();
+            let mut sc = presets[k].clone();
+            for (path, value) in &sets {
+                match sc.with_override(path, value) {
+                    Ok(s) => sc = s,
+                    Err(e) => {
+                        prop_assert!(!e.0.is_empty() && e.to_string().len() < 4000, "{e}");
+                        return Ok(());
+                    }
+                }
+            }
+            if let Ok(mut sim) = Simulation::new(&sc) {
+                if sim.advance(3000).is_ok() {
+                    let r = sim.finish();
+                    prop_assert!(check_finite(&r.summary).is_ok(), "{sets:?}: {:?}", check_finite(&r.summary));
+                }
+            }
+            prop_assert!(t0.elapsed() < CASE_BOUND, "{sets:?} took {:?}", t0.elapsed());
+            Ok(())
+        })
+        .unwrap();
+}
+
+/// Hull offsets with hostile numbers parse with an error naming the line, or give finite RAOs.
+#[test]
+fn hull_csvs_fail_cleanly_or_give_finite_raos() {
+    let num = prop_oneof![
+        3 => 0.0..20.0f64,
+        1 => prop::sample::select(vec![0.0, -1.0, 1e300, -1e300, 1e-300, 5e-324, 1e4, f64::NAN]),
+    ];
+    let station = (prop::collection::vec((num.clone(), num.clone()), 2..6), num.clone());
+    let strategy = prop::collection::vec(station, 3..7);
+    runner(2)
+        .run(&strategy, |stations| {
+            let t0 = Instant::now();
+            let mut text = String::from("station_index,x_m,z_m,half_breadth_m\n");
+            for (i, (rows, x)) in stations.iter().enumerate() {
+                for (z, hb) in rows {
+                    text.push_str(&format!("{i},{},{z},{hb}\n", x + 10.0 * i as f64));
+                }
+            }
+            if let Ok(h) = HullOffsets::parse(&text) {
+                let mass = MassProperties { kg_m: 3.0, kxx_m: 2.0, kyy_m: 10.0, kzz_m: 10.0 };
+                if let Ok(ship) = Ship::new(&h, 2.0, mass, None, 1025.0, 9.81) {
+                    if let Ok(v) = aes_core::seakeeping::tables::rao_json(&ship, 5.0, 3.0, &[0.5, 1.0], 1.0) {
+                        prop_assert!(!v.to_string().contains("null"), "{text}");
+                    }
+                }
+            }
+            prop_assert!(t0.elapsed() < CASE_BOUND, "took {:?}", t0.elapsed());
+            Ok(())
+        })
+        .unwrap();
+}
+
+/// A partial with one value changed is refused by name, or merges and summarises finitely.
+#[test]
+fn mutated_partials_fail_cleanly_or_merge_finitely() {
+    let sc = preset("mc-arrival").unwrap().with_override("sim.duration_s", "2").unwrap();
+    let sc = sc.with_override("monte_carlo.trials", "4").unwrap();
+    let a = aes_core::montecarlo::run_range(&sc, 0, 2).unwrap();
+    let b = aes_core::montecarlo::run_range(&sc, 2, 4).unwrap();
+    let good = serde_json::to_value(&a).unwrap();
+    let mut paths = Vec::new();
+    leaf_paths(&good, "", &mut paths);
+    let strategy = prop::collection::vec((prop::sample::select(paths), value_text()), 1..3);
+    runner(3)
+        .run(&strategy, |changes| {
+            let t0 = Instant::now();
+            let mut v = good.clone();
+            for (path, value) in &changes {
+                let mut node = &mut v;
+                for part in path.split('.') {
+                    node = match node {
+                        serde_json::Value::Array(x) => &mut x[part.parse::<usize>().unwrap()],
+                        x => &mut x[part],
+                    };
+                }
+                *node = serde_json::from_str(value).unwrap_or(serde_json::Value::String(value.clone()));
+            }
+            if let Ok(mut p) = Partial::from_json(&v.to_string()) {
+                if p.merge(&b).is_ok() {
+                    if let Ok(s) = aes_core::montecarlo::study_summary(&p) {
+                        prop_assert!(check_finite(&s).is_ok(), "{changes:?}: {:?}", check_finite(&s));
+                    }
+                }
+            }
+            prop_assert!(t0.elapsed() < CASE_BOUND, "took {:?}", t0.elapsed());
+            Ok(())
+        })
+        .unwrap();
+}
+
+/// The ch. 4 tool at any operating point and parameter: an error, or finite poles and Bode.
+#[test]
+fn ips_parameters_fail_cleanly_or_stay_finite() {
+    use aes_core::stability::{generator_side::GeneratorSideParams, load_params, motor_side::MotorSideParams};
+    let x = prop_oneof![
+        (1e-3..1e4f64),
+        prop::sample::select(vec![0.0, -1.0, 1e100, 1e300, 1e-300, 5e-324, f64::NAN, f64::INFINITY]),
+    ];
+    let names = vec!["r_s", "l_m", "kq0", "inertia", "trim_tau", "l_md", "r_fd", "x_co", "estimate_factor"];
+    let strategy =
+        (any::<bool>(), x.clone(), x.clone(), x.clone(), prop::sample::select(names), value_text(), any::<bool>());
+    runner(4)
+        .run(&strategy, |(motor, a, b, c, name, value, closed)| {
+            let t0 = Instant::now();
+            let sets = vec![(name.to_string(), value.clone())];
+            let sys = if motor {
+                load_params(&MotorSideParams::default(), &sets).and_then(|p| {
+                    let s = p.steady_state(a)?;
+                    check_finite(&s)?;
+                    Ok(if closed { p.closed_loop(&s) } else { p.open_loop(&s) })
+                })
+            } else {
+                load_params(&GeneratorSideParams::default(), &sets).and_then(|p| {
+                    let s = p.steady_state(a, b, c)?;
+                    check_finite(&s)?;
+                    Ok(if closed { p.closed_loop(&s) } else { p.open_loop(&s) })
+                })
+            };
+            if let Ok(sys) = sys {
+                if let Ok(p) = sys.poles() {
+                    prop_assert!(check_finite(&p).is_ok());
+                }
+                if let Ok(pts) = sys.bode(&[0.1, 10.0, 1000.0]) {
+                    prop_assert!(check_finite(&pts).is_ok());
+                }
+            }
+            prop_assert!(t0.elapsed() < CASE_BOUND, "took {:?}", t0.elapsed());
+            Ok(())
+        })
+        .unwrap();
+}
