@@ -43,15 +43,21 @@ pub fn calm_water(p: &Plant, sc: &Scenario) -> Result<SteadyState, SimError> {
         let ws = p.motor.slip_for_torque(w, v_max, peak, q_p);
         let mp = p.motor.operate_vhz(w, ws, v_max);
         if (mp.torque - q_p).abs() > TORQUE_MATCH * q_p.abs().max(1.0) {
+            // The volts-per-hertz law sets the flux from the rated voltage and frequency, so those
+            // (and the circuit) limit the torque; the inverter caps the voltage.
+            let m = &sc.plant.motor;
             return Err(SimError::Setup(format!(
-                "initial.speed_kn = {}: the motor cannot carry the propeller torque {:.0} kN m at {:.0} rpm \
-                 (its peak torque at the inverter's {:.0} V is {:.0} kN m; see plant.motor and \
-                 plant.dc_link.inverter_voltage_ratio)",
-                sc.initial.speed_kn,
+                "plant.motor.rated_voltage_ll_v = {} (at {} Hz): the motor cannot carry the propeller torque \
+                 {:.0} kN m at {:.0} rpm that initial.speed_kn = {} needs; with this volts-per-hertz ratio and \
+                 circuit its peak torque is {:.0} kN m at the inverter's {:.0} V (raise the rated voltage, \
+                 check the circuit of plant.motor and plant.dc_link.inverter_voltage_ratio, or start slower)",
+                m.rated_voltage_ll_v,
+                m.rated_frequency_hz,
                 q_p / 1e3,
                 rad_s_to_rpm(w),
-                v_max,
-                p.motor.operate_vhz(w, peak, v_max).torque / 1e3
+                sc.initial.speed_kn,
+                p.motor.operate_vhz(w, peak, v_max).torque / 1e3,
+                v_max
             )));
         }
         (w, mp.p_in, ws, peak)
