@@ -304,6 +304,23 @@ for (const [w, h] of SIZES) {
     await p.close();
   });
 }
+await check('presentation mode: form folded away, wider plots, no overflow, and back', async () => {
+  await page.click('#tab-sim');
+  const widthBefore = await page.$eval('#plots .uplot', (e) => e.getBoundingClientRect().width);
+  await page.click('#present');
+  await page.waitForFunction(() => document.body.classList.contains('presenting'), null, { timeout: 5000 });
+  await page.waitForTimeout(400);
+  assert(await page.$eval('#present', (b) => b.getAttribute('aria-pressed') === 'true'), 'aria-pressed not set');
+  assert(!(await page.isVisible('#preset')), 'the study picker is still shown');
+  const widthAfter = await page.$eval('#plots .uplot', (e) => e.getBoundingClientRect().width);
+  assert(widthAfter > widthBefore, `plots did not grow: ${widthBefore} -> ${widthAfter}`);
+  const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  assert(overflow <= 1, `horizontal overflow ${overflow} px`);
+  await page.screenshot({ path: `${shots}/presentation.png` });
+  await page.click('#present');
+  await page.waitForFunction(() => !document.body.classList.contains('presenting'), null, { timeout: 5000 });
+  assert(await page.isVisible('#preset'), 'the study picker did not come back');
+});
 await check('a resize re-fits the plots to their panels', async () => {
   const p = await open(base + '#v=1&preset=startup', wide);
   await p.setViewportSize({ width: 1366, height: 768 });

@@ -97,8 +97,15 @@ export class PlotBox {
         ctx.strokeStyle = l.color; ctx.lineWidth = 1.5 * dpr; ctx.setLineDash([6 * dpr, 4 * dpr]);
         ctx.beginPath(); ctx.moveTo(left, y); ctx.lineTo(left + width, y); ctx.stroke();
         ctx.setLineDash([]);
+        // uPlot leaves its axis text alignment on the context: set ours, and put the label on a
+        // light backdrop so it stays readable over the band and the trace.
+        ctx.textAlign = 'left'; ctx.textBaseline = 'bottom';
+        const text = `${l.label} (${l.value})`;
+        const tw = ctx.measureText(text).width, th = 13 * dpr;
+        ctx.fillStyle = 'rgba(255, 255, 255, 0.8)';
+        ctx.fillRect(left + 2 * dpr, y - 3 * dpr - th, tw + 4 * dpr, th);
         ctx.fillStyle = l.color;
-        ctx.fillText(`${l.label} (${l.value})`, left + 4 * dpr, y - 3 * dpr);
+        ctx.fillText(text, left + 4 * dpr, y - 3 * dpr);
       }
       ctx.strokeStyle = EVENT_COLOR; ctx.lineWidth = 1.5 * dpr;
       for (const t of markers) {

@@ -16,6 +16,25 @@ pub struct TraceStats {
     pub min: f64,
     pub max: f64,
     pub mean: f64,
+    /// Settling time [s]: the time of the last recorded row outside the band of
+    /// `SETTLING_BAND` times the signal's range (max - min) around its final value; 0 for a
+    /// signal that never leaves it (a constant one). Meaningful for runs that end settled.
+    pub settling_time_s: f64,
+}
+
+/// Half-width of the settling band, as a fraction of the signal's range over the run: 2 %, the
+/// usual control-engineering choice.
+pub const SETTLING_BAND: f64 = 0.02;
+
+/// The settling time of a column recorded at times `t` (see [`TraceStats::settling_time_s`]).
+pub fn settling_time(t: &[f64], col: &[f64], min: f64, max: f64) -> f64 {
+    let Some(&last) = col.last() else { return 0.0 };
+    let band = SETTLING_BAND * (max - min);
+    match col.iter().rposition(|v| (v - last).abs() > band) {
+        // The signal settles between this row and the next one.
+        Some(i) => t.get(i + 1).or(t.last()).copied().unwrap_or(0.0),
+        None => t.first().copied().unwrap_or(0.0),
+    }
 }
 
 /// Table 5.6 power inventory [W], sums over machines.
@@ -107,7 +126,9 @@ impl Summary {
             let min = col.iter().copied().fold(f64::INFINITY, f64::min);
             let max = col.iter().copied().fold(f64::NEG_INFINITY, f64::max);
             let mean = col.iter().sum::<f64>() / col.len() as f64;
-            signals.insert(name.to_string(), TraceStats { final_: col[col.len() - 1], min, max, mean });
+            let settling_time_s = settling_time(trace.get(Signal::TS), col, min, max);
+            signals
+                .insert(name.to_string(), TraceStats { final_: col[col.len() - 1], min, max, mean, settling_time_s });
         }
         // Every run records its initial row, so a column is never empty here.
         let last = |s: Signal| trace.get(s).last().copied().unwrap_or(f64::NAN);
@@ -160,5 +181,24 @@ impl Summary {
     /// The public JSON form (documented in the README).
     pub fn to_json_value(&self) -> serde_json::Value {
         serde_json::to_value(self).unwrap_or_default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A first-order step x = 1 - e^(-t/tau) sampled every 0.1 s settles within 2 % of its range
+    /// at t = tau ln(50) (3.91 tau), to the sample.
+    #[test]
+    fn settling_time_of_a_first_order_step() {
+        let tau = 2.0;
+        let t: Vec<f64> = (0..=400).map(|i| i as f64 * 0.1).collect();
+        let x: Vec<f64> = t.iter().map(|t| 1.0 - libm::exp(-t / tau)).collect();
+        let (min, max) = (x[0], x[400]);
+        let ts = settling_time(&t, &x, min, max);
+        // The band is 2 % of the range actually reached (1 - e^-20), final value likewise.
+        assert!((ts - tau * libm::log(50.0)).abs() <= 0.1 + 1e-9, "{ts}");
+        assert_eq!(settling_time(&t, &vec![3.0; 401], 3.0, 3.0), 0.0);
     }
 }
