@@ -311,7 +311,9 @@ await check('presentation mode: form folded away, wider plots, no overflow, and 
   await page.waitForFunction(() => document.body.classList.contains('presenting'), null, { timeout: 5000 });
   await page.waitForTimeout(400);
   assert(await page.$eval('#present', (b) => b.getAttribute('aria-pressed') === 'true'), 'aria-pressed not set');
-  assert(!(await page.isVisible('#preset')), 'the study picker is still shown');
+  // The study picker and the Run buttons stay (a teacher switches studies); the form folds away.
+  assert(!(await page.isVisible('#all-fields')), 'the full form is still shown');
+  assert(await page.isVisible('#preset') && await page.isVisible('#run'), 'study picker or Run hidden');
   const widthAfter = await page.$eval('#plots .uplot', (e) => e.getBoundingClientRect().width);
   assert(widthAfter > widthBefore, `plots did not grow: ${widthBefore} -> ${widthAfter}`);
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
@@ -319,7 +321,7 @@ await check('presentation mode: form folded away, wider plots, no overflow, and 
   await page.screenshot({ path: `${shots}/presentation.png` });
   await page.click('#present');
   await page.waitForFunction(() => !document.body.classList.contains('presenting'), null, { timeout: 5000 });
-  assert(await page.isVisible('#preset'), 'the study picker did not come back');
+  assert(await page.isVisible('#all-fields'), 'the form did not come back');
 });
 await check('a resize re-fits the plots to their panels', async () => {
   const p = await open(base + '#v=1&preset=startup', wide);
