@@ -1,5 +1,6 @@
 //! Runs a short start-up, a turn and a run in head seas natively at build time and stores its summary, so the wasm tests can check
-//! that the browser computes the same numbers bit for bit.
+//! that the browser computes the same numbers bit for bit; and lists the golden record of every preset
+//! (tests/golden/NAME.json, from the preset list itself) for the wasm golden test.
 fn main() {
     let mut s = aes_core::presets::startup();
     s.sim.duration_s = 60.0;
@@ -15,5 +16,12 @@ fn main() {
     let _ = std::fs::write(format!("{out}/native_head_seas_10s.json"), seas);
     let _ = std::fs::write(format!("{out}/native_startup_60s.json"), summary);
     let _ = std::fs::write(format!("{out}/native_turn90_40s.json"), turn);
+    let golden = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/golden");
+    let list: Vec<String> = aes_core::presets::PRESET_NAMES
+        .iter()
+        .map(|n| format!("({n:?}, include_str!({:?}))", golden.join(format!("{n}.json")).display().to_string()))
+        .collect();
+    let _ = std::fs::write(format!("{out}/golden_files.rs"), format!("[{}]", list.join(",\n")));
     println!("cargo:rerun-if-changed=../core/src");
+    println!("cargo:rerun-if-changed=../tests/golden");
 }

@@ -141,7 +141,8 @@ mod tests {
             .collect()
     }
 
-    /// Radix-2 and Bluestein lengths against the direct sum, to 1e-12 of the signal's size.
+    /// Radix-2 and Bluestein lengths against the direct sum, to 1e-12 n (measured: at most 5.3e-16 n,
+    /// 1.35e-13 at n = 257; the bound is the loose one of the determinism work, kept).
     #[test]
     fn matches_the_direct_transform() {
         for n in [1usize, 2, 8, 64, 3, 5, 50, 100, 257] {

@@ -165,6 +165,8 @@ mod tests {
             let mut u = nalgebra::DVector::zeros(2);
             u[col] = du;
             let (mut worst, mut peak) = ([0.0f64; 2], [0.0f64; 2]);
+            let w0: f64 = (0..N_SETS).map(|k| m.x0[omega_t(k)]).sum::<f64>() / N_SETS as f64;
+            let v0: f64 = (0..N_SHAFTS).map(|s| m.x0[bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
             for _ in 0..1000 {
                 rk4_step(plant, &mut x, &h, dt, &mut out);
                 // The linear model by RK4 as well.
@@ -177,8 +179,6 @@ mod tests {
                 let y_lin = &m.system.c * &z;
                 let w: f64 = (0..N_SETS).map(|k| x[omega_t(k)]).sum::<f64>() / N_SETS as f64;
                 let v: f64 = (0..N_SHAFTS).map(|s| x[bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
-                let w0: f64 = (0..N_SETS).map(|k| m.x0[omega_t(k)]).sum::<f64>() / N_SETS as f64;
-                let v0: f64 = (0..N_SHAFTS).map(|s| m.x0[bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
                 let y_nl = [(w - w0) / m.turbine_speed_base, (v - v0) / m.bus_voltage_base];
                 for o in 0..2 {
                     worst[o] = worst[o].max((y_nl[o] - y_lin[o]).abs());
