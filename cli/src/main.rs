@@ -290,20 +290,41 @@ enum DesignCmd {
         /// turbine speed and bus voltage out, per unit), with the tuning below.
         #[arg(long)]
         plant: Option<String>,
-        /// Ship speed of the operating point [kn] (with --plant aes).
-        #[arg(long, default_value_t = 20.0)]
-        speed_kn: f64,
-        /// Tuning (with --plant aes): Kalman weight mu, pinch frequency [rad/s], recovery gain q.
-        #[arg(long, default_value_t = DEFAULT_MU)]
-        mu: f64,
-        #[arg(long, default_value_t = DEFAULT_OMEGA_P)]
-        omega_p: f64,
-        #[arg(long, default_value_t = DEFAULT_Q)]
-        q: f64,
+        /// Ship speed of the operating point [kn] (with --plant aes; default
+        /// controllers.lqg_ltr.design_speed_kn, 25).
+        #[arg(long)]
+        speed_kn: Option<f64>,
+        /// Tuning (with --plant aes): Kalman weight mu, pinch frequency [rad/s], recovery gain q
+        /// (defaults: controllers.lqg_ltr, 0.01, 1 and 100).
+        #[arg(long)]
+        mu: Option<f64>,
+        #[arg(long)]
+        omega_p: Option<f64>,
+        #[arg(long)]
+        q: Option<f64>,
+    },
+    /// PI against LQG/LTR in the acceleration, AC braking and head seas SS6 studies: turbine
+    /// dip, bus-voltage excursion, settling, fuel (a Markdown table; --json for JSON).
+    Compare {
+        /// LQG/LTR tuning and operating point, as `controllers.lqg_ltr.*` (defaults 0.01, 1, 1000,
+        /// 25 knots).
+        #[arg(long)]
+        mu: Option<f64>,
+        #[arg(long)]
+        omega_p: Option<f64>,
+        #[arg(long)]
+        q: Option<f64>,
+        #[arg(long)]
+        speed_kn: Option<f64>,
+        /// Weight of the turbine-speed error beside the bus voltage's (default 1).
+        #[arg(long)]
+        turbine_weight: Option<f64>,
+        /// Print JSON instead of the table.
+        #[arg(long)]
+        json: bool,
     },
 }
 
-use aes_core::sim::linearize::{DEFAULT_MU, DEFAULT_OMEGA_P, DEFAULT_Q};
 
 /// Largest design input read [bytes] (a 60-state plant in JSON is well under 1 MB).
 const MAX_DESIGN_BYTES: u64 = 4 << 20;
@@ -486,6 +507,9 @@ fn real_main() -> Result<(), Failure> {
                     serde_json::from_str(&text).map_err(|e| format!("{file}: {e}"))?
                 }
                 (None, Some("aes")) => {
+                    let t = aes_core::design::LqgLtrParams::default();
+                    let speed_kn = speed_kn.unwrap_or(t.design_speed_kn);
+                    let (mu, omega_p, q) = (mu.unwrap_or(t.mu), omega_p.unwrap_or(t.omega_p_rad_s), q.unwrap_or(t.q));
                     if !(speed_kn.is_finite() && (5.0..=32.0).contains(&speed_kn)) {
                         return Err(format!("--speed-kn = {speed_kn}: must be a number from 5 to 32").into());
                     }
@@ -503,6 +527,25 @@ fn real_main() -> Result<(), Failure> {
             };
             let d = aes_core::design::lqg_ltr::design(&input)?;
             emit_json(&d)?;
+        }
+        Cmd::Design { command: DesignCmd::Compare { mu, omega_p, q, speed_kn, turbine_weight, json } } => {
+            let d = aes_core::design::LqgLtrParams::default();
+            let t = aes_core::design::LqgLtrParams {
+                mu: mu.unwrap_or(d.mu),
+                omega_p_rad_s: omega_p.unwrap_or(d.omega_p_rad_s),
+                q: q.unwrap_or(d.q),
+                turbine_speed_weight: turbine_weight.unwrap_or(d.turbine_speed_weight),
+                design_speed_kn: speed_kn.unwrap_or(d.design_speed_kn),
+            };
+            let mut v = aes_core::validate::Validator::new();
+            v.section("controllers", |v| v.section("lqg_ltr", |v| t.validate(v)));
+            v.finish().map_err(|e| e.to_string())?;
+            let rows = aes_core::controller_study::compare(&t)?;
+            if json {
+                emit_json(&rows)?;
+            } else {
+                emit(&aes_core::controller_study::markdown(&rows))?;
+            }
         }
         Cmd::Ips { command } => {
             let out = ips(command)?;

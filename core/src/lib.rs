@@ -5,6 +5,7 @@
 //! every platform.
 
 pub mod control;
+pub mod controller_study;
 pub mod dc_link;
 pub mod design;
 pub mod fft;
