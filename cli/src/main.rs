@@ -302,6 +302,9 @@ enum DesignCmd {
         omega_p: Option<f64>,
         #[arg(long)]
         q: Option<f64>,
+        /// Weight of the turbine-speed error beside the bus voltage's (default 1).
+        #[arg(long)]
+        turbine_weight: Option<f64>,
     },
     /// PI against LQG/LTR in the acceleration, AC braking and head seas SS6 studies: turbine
     /// dip, bus-voltage excursion, settling, fuel (a Markdown table; --json for JSON).
@@ -324,7 +327,6 @@ enum DesignCmd {
         json: bool,
     },
 }
-
 
 /// Largest design input read [bytes] (a 60-state plant in JSON is well under 1 MB).
 const MAX_DESIGN_BYTES: u64 = 4 << 20;
@@ -500,24 +502,22 @@ fn real_main() -> Result<(), Failure> {
             emit_json(&result.summary)?;
             written?;
         }
-        Cmd::Design { command: DesignCmd::LqgLtr { file, plant, speed_kn, mu, omega_p, q } } => {
+        Cmd::Design { command: DesignCmd::LqgLtr { file, plant, speed_kn, mu, omega_p, q, turbine_weight } } => {
             let input: aes_core::design::lqg_ltr::DesignInput = match (file, plant.as_deref()) {
                 (Some(file), None) => {
                     let text = read_bounded(&file, MAX_DESIGN_BYTES, "a design input")?;
                     serde_json::from_str(&text).map_err(|e| format!("{file}: {e}"))?
                 }
                 (None, Some("aes")) => {
-                    let t = aes_core::design::LqgLtrParams::default();
-                    let speed_kn = speed_kn.unwrap_or(t.design_speed_kn);
-                    let (mu, omega_p, q) = (mu.unwrap_or(t.mu), omega_p.unwrap_or(t.omega_p_rad_s), q.unwrap_or(t.q));
-                    if !(speed_kn.is_finite() && (5.0..=32.0).contains(&speed_kn)) {
-                        return Err(format!("--speed-kn = {speed_kn}: must be a number from 5 to 32").into());
-                    }
                     let mut sc = aes_core::presets::preset("acceleration").ok_or("no acceleration preset")?;
-                    sc.initial.speed_kn = speed_kn;
-                    sc.commands[0].speed_kn = Some(speed_kn);
-                    let m = aes_core::sim::linearize::drive_train(&sc).map_err(|e| e.to_string())?;
-                    aes_core::design::lqg_ltr::DesignInput::from_plant(&m.system, mu, omega_p, q)
+                    let t = &mut sc.controllers.lqg_ltr;
+                    t.design_speed_kn = speed_kn.unwrap_or(t.design_speed_kn);
+                    t.mu = mu.unwrap_or(t.mu);
+                    t.omega_p_rad_s = omega_p.unwrap_or(t.omega_p_rad_s);
+                    t.q = q.unwrap_or(t.q);
+                    t.turbine_speed_weight = turbine_weight.unwrap_or(t.turbine_speed_weight);
+                    let d = aes_core::sim::lqg::analyse(&sc)?;
+                    return emit_json(&d);
                 }
                 (None, Some(other)) => {
                     return Err(format!("--plant = {}: the only built-in plant is `aes`", shorten(other)).into())

@@ -180,6 +180,17 @@ pub fn ips_analysis(
     .to_string())
 }
 
+/// The LQG/LTR design (thesis ch. 3.1) for a scenario's drive train and `controllers.lqg_ltr`
+/// tuning, with its singular values, closed-loop poles and input margins, as JSON (the format of
+/// `aes-sim design lqg-ltr --plant aes`).
+#[wasm_bindgen(js_name = designLqgLtr)]
+pub fn design_lqg_ltr(json: &str) -> Result<String, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    let d = aes_core::sim::lqg::analyse(&sc).map_err(|e| JsError::new(&e))?;
+    aes_core::validate::check_finite(&d).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&d).map_err(|e| JsError::new(&e.to_string()))
+}
+
 /// Monte Carlo trials `a..b` of a scenario (run one after another in this worker); returns the
 /// partial statistics as JSON, to be merged with the other workers' by `mcSummary`.
 #[wasm_bindgen(js_name = mcRange)]

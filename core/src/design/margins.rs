@@ -5,6 +5,7 @@
 //! class reads off a Bode plot; they are not guaranteed margins for simultaneous changes in all
 //! channels.
 
+use crate::seakeeping::complex::cabs;
 use crate::stability::log_space;
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C;
@@ -91,8 +92,8 @@ pub fn input_margins(m: usize, loop_at: &dyn Fn(f64) -> Option<DMatrix<C>>) -> R
                 }
             }
             // Gain crossover.
-            if (p.norm() > 1.0) != (q.norm() > 1.0) {
-                let (w, z) = refine(ws[k - 1], ws[k], i, &|z: C| z.norm() - 1.0)?;
+            if (cabs(p) > 1.0) != (cabs(q) > 1.0) {
+                let (w, z) = refine(ws[k - 1], ws[k], i, &|z: C| cabs(z) - 1.0)?;
                 let margin = 180.0 - libm::fabs(libm::atan2(z.im, z.re).to_degrees());
                 if pm.is_none_or(|(best, _)| margin < best) {
                     pm = Some((margin, w));

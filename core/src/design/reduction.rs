@@ -7,6 +7,7 @@
 //! real: a conjugate pair becomes the block [[sigma, -omega], [omega, sigma]].
 
 use super::lqg_ltr::StateSpace;
+use crate::seakeeping::complex::cabs;
 use crate::stability::log_space;
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C;
@@ -60,7 +61,7 @@ pub struct ReductionReport {
 /// Eigenvector of `a` for eigenvalue `l` by inverse iteration with a slightly shifted pivot.
 fn eigenvector(a: &DMatrix<f64>, l: C) -> Option<nalgebra::DVector<C>> {
     let n = a.nrows();
-    let shift = l + C::new(1e-10 * (1.0 + l.norm()), 0.0);
+    let shift = l + C::new(1e-10 * (1.0 + cabs(l)), 0.0);
     let m = DMatrix::<C>::from_fn(n, n, |i, j| C::new(a[(i, j)], 0.0) - if i == j { shift } else { C::new(0.0, 0.0) });
     let lu = m.lu();
     let mut v = nalgebra::DVector::<C>::from_fn(n, |i, _| C::new(1.0 / (i + 1) as f64, 0.0));
@@ -82,7 +83,8 @@ fn sigma_max(m: &DMatrix<C>) -> f64 {
 
 /// Reduces `g` as `opt` says, with the error measured on the grid `ws` [rad/s].
 pub fn reduce(g: &StateSpace, opt: &ReduceOptions, ws: &[f64]) -> Result<(StateSpace, ReductionReport), String> {
-    for (name, v) in [("max_frequency_rad_s", opt.max_frequency_rad_s), ("min_relative_residue", opt.min_relative_residue)]
+    for (name, v) in
+        [("max_frequency_rad_s", opt.max_frequency_rad_s), ("min_relative_residue", opt.min_relative_residue)]
     {
         if let Some(x) = v {
             if !(x.is_finite() && x > 0.0) {
@@ -92,10 +94,10 @@ pub fn reduce(g: &StateSpace, opt: &ReduceOptions, ws: &[f64]) -> Result<(StateS
     }
     let (n, m) = (g.a.nrows(), g.b.ncols());
     let lam = crate::numerics::eigenvalues(&g.a).ok_or("reduce: the eigenvalues of A did not converge")?;
-    let scale = lam.iter().map(|l| l.norm()).fold(1.0, f64::max);
+    let scale = lam.iter().map(|&l| cabs(l)).fold(1.0, f64::max);
     for i in 0..n {
         for j in 0..i {
-            if (lam[i] - lam[j]).norm() <= 1e-8 * scale {
+            if cabs(lam[i] - lam[j]) <= 1e-8 * scale {
                 return Err(format!(
                     "reduce: A has a repeated eigenvalue ({:.4e} {:+.4e}j); modal reduction needs distinct modes",
                     lam[i].re, lam[i].im
@@ -118,7 +120,7 @@ pub fn reduce(g: &StateSpace, opt: &ReduceOptions, ws: &[f64]) -> Result<(StateS
     let a_c = g.a.map(|x| C::new(x, 0.0));
     let resid = (&a_c * &v - &v * DMatrix::from_diagonal(&nalgebra::DVector::from_vec(lam.clone()))).norm();
     let w = v.clone().try_inverse().ok_or("reduce: A is not diagonalisable (its eigenvectors are dependent)")?;
-    if !(resid <= 1e-8 * scale * v.norm()) || !w.iter().all(|z| z.re.is_finite() && z.im.is_finite()) {
+    if resid.is_nan() || resid > 1e-8 * scale * v.norm() || !w.iter().all(|z| z.re.is_finite() && z.im.is_finite()) {
         return Err("reduce: A is too close to a defective matrix for a modal form".into());
     }
     let bm = &w * g.b.map(|x| C::new(x, 0.0));
@@ -133,7 +135,7 @@ pub fn reduce(g: &StateSpace, opt: &ReduceOptions, ws: &[f64]) -> Result<(StateS
         let rel = if l.re < 0.0 { sigma_max(&residue(i)) / -l.re / peak_g.max(1e-300) } else { f64::INFINITY };
         let reason = if l.re >= 0.0 {
             None
-        } else if opt.max_frequency_rad_s.is_some_and(|f| l.norm() > f) {
+        } else if opt.max_frequency_rad_s.is_some_and(|f| cabs(l) > f) {
             Some("fast")
         } else if opt.min_relative_residue.is_some_and(|r| rel < r) {
             Some("small residue")
@@ -149,7 +151,7 @@ pub fn reduce(g: &StateSpace, opt: &ReduceOptions, ws: &[f64]) -> Result<(StateS
     // guard against rounding).
     for i in 0..n {
         if !is_real(lam[i]) && lam[i].im > 0.0 {
-            if let Some(j) = (0..n).find(|&j| j != i && (lam[j] - lam[i].conj()).norm() <= 1e-8 * scale) {
+            if let Some(j) = (0..n).find(|&j| j != i && cabs(lam[j] - lam[i].conj()) <= 1e-8 * scale) {
                 let k = keep[i] && keep[j];
                 keep[i] = k;
                 keep[j] = k;
@@ -242,7 +244,7 @@ mod tests {
         assert_eq!((rep.states_full, rep.states_kept, rep.dropped.len()), (2, 1, 1));
         assert!((r.d[(0, 0)] - 0.5).abs() < 1e-12 && rep.dc_relative_error < 1e-12);
         let s = C::new(0.0, 0.01);
-        let peak = (C::new(1.0, 0.0) / (s + 1.0) + C::new(50.0, 0.0) / (s + 100.0)).norm();
+        let peak = cabs(C::new(1.0, 0.0) / (s + 1.0) + C::new(50.0, 0.0) / (s + 100.0));
         let want = 0.5 * 1000.0 / libm::hypot(1000.0, 100.0) / peak;
         assert!((rep.max_relative_error - want).abs() < 1e-12, "{} vs {want}", rep.max_relative_error);
         assert!((rep.frequency_of_max_error_rad_s - 1000.0).abs() < 1e-9);
@@ -266,7 +268,7 @@ mod tests {
             let s = C::new(0.0, w);
             let want = C::new(4.0, 0.0) / (s * s + s * 0.4 + 4.0) + 0.1;
             let got = r.response(w).unwrap()[(0, 0)];
-            assert!((got - want).norm() < 1e-10, "w {w}: {got} vs {want}");
+            assert!(cabs(got - want) < 1e-10, "w {w}: {got} vs {want}");
         }
     }
 

@@ -17,7 +17,6 @@ use crate::design::lqg_ltr::StateSpace;
 use crate::scenario::Scenario;
 use nalgebra::DMatrix;
 
-
 /// The linear model and what it was made from.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DriveTrainModel {
@@ -206,10 +205,7 @@ mod tests {
         assert!(d.stable);
         assert!(d.riccati_residual_filter < 1e-12 && d.riccati_residual_control < 1e-12);
         for mg in &d.input_margins {
-            assert!(
-                mg.gain_margin_db.unwrap_or(f64::INFINITY) > 10.0 && mg.phase_margin_deg.unwrap() > 45.0,
-                "{mg:?}"
-            );
+            assert!(mg.gain_margin_db.unwrap_or(f64::INFINITY) > 10.0 && mg.phase_margin_deg.unwrap() > 45.0, "{mg:?}");
         }
         let sv = &d.singular_values;
         let cross = |c: &[f64]| {

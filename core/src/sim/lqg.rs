@@ -14,10 +14,10 @@
 //! applied, so its estimate stays consistent with the real plant input instead of winding up.
 //! Unsaturated, this is eq. 3.7 exactly.
 
-use super::linearize::drive_train;
+use super::linearize::{drive_train, DriveTrainModel};
 use super::SimError;
 use crate::design::discrete::zero_order_hold;
-use crate::design::lqg_ltr::compensator;
+use crate::design::lqg_ltr::{compensator, design, Design, DesignInput, StateSpace};
 use crate::design::ControllerDesign;
 use crate::scenario::{Command, Scenario};
 use crate::waves::SeaParams;
@@ -55,32 +55,15 @@ impl LqgDesign {
     /// sample period.
     pub fn new(sc: &Scenario, v_f_max: f64) -> Result<LqgDesign, SimError> {
         let p = &sc.controllers.lqg_ltr;
-        let setup = |what: &str, e: String| {
-            SimError::Setup(format!(
-                "controllers.lqg_ltr: {what} at design_speed_kn = {} failed: {e}",
-                p.design_speed_kn
-            ))
-        };
-        // The operating point: calm water at the design speed, the PI loops holding it (the
-        // steady state does not depend on which controller holds it).
-        let mut op = sc.clone();
-        op.controllers.design = ControllerDesign::Pi;
-        op.sea = SeaParams::default();
-        op.initial.speed_kn = p.design_speed_kn;
-        op.commands = vec![Command { t_s: 0.0, speed_kn: Some(p.design_speed_kn), heading_deg: None, heading_rate_deg_s: None }];
-        op.sim.duration_s = op.sim.dt_s.max(op.controllers.sample_period_s);
-        let model = drive_train(&op).map_err(|e| setup("the linearisation", e.to_string()))?;
-        let mut weighted = model.system.clone();
-        weighted.c.row_mut(0).scale_mut(p.turbine_speed_weight);
-        weighted.d.row_mut(0).scale_mut(p.turbine_speed_weight);
-        let k = compensator(&weighted, p.mu, p.omega_p_rad_s, p.q).map_err(|e| setup("the design", e))?;
+        let (model, weighted) = design_model(sc)?;
+        let k = compensator(&weighted, p.mu, p.omega_p_rad_s, p.q).map_err(|e| setup(sc, "the design", e))?;
         let a_obs = &k.a_aug - &k.k_f * &k.c_aug;
         let m = k.b_aug.ncols();
         let mut inputs = DMatrix::zeros(a_obs.nrows(), 2 * m);
         inputs.view_mut((0, 0), (a_obs.nrows(), m)).copy_from(&k.k_f);
         inputs.view_mut((0, m), (a_obs.nrows(), m)).copy_from(&(-&k.b_aug));
-        let (phi, gam) =
-            zero_order_hold(&a_obs, &inputs, sc.controllers.sample_period_s).map_err(|e| setup("the discretisation", e))?;
+        let (phi, gam) = zero_order_hold(&a_obs, &inputs, sc.controllers.sample_period_s)
+            .map_err(|e| setup(sc, "the discretisation", e))?;
         let n = phi.nrows();
         Ok(LqgDesign {
             n,
@@ -96,6 +79,43 @@ impl LqgDesign {
             v_f_max,
         })
     }
+}
+
+fn setup(sc: &Scenario, what: &str, e: String) -> SimError {
+    SimError::Setup(format!(
+        "controllers.lqg_ltr: {what} at design_speed_kn = {} failed: {e}",
+        sc.controllers.lqg_ltr.design_speed_kn
+    ))
+}
+
+/// The plant the design is made for: the drive train linearised in calm water at
+/// `controllers.lqg_ltr.design_speed_kn` (the PI loops holding the steady state, which does not
+/// depend on which controller holds it), and the same with its turbine-speed output weighted by
+/// `turbine_speed_weight`.
+pub fn design_model(sc: &Scenario) -> Result<(DriveTrainModel, StateSpace), SimError> {
+    let p = &sc.controllers.lqg_ltr;
+    let mut op = sc.clone();
+    op.controllers.design = ControllerDesign::Pi;
+    op.sea = SeaParams::default();
+    op.initial.speed_kn = p.design_speed_kn;
+    op.commands =
+        vec![Command { t_s: 0.0, speed_kn: Some(p.design_speed_kn), heading_deg: None, heading_rate_deg_s: None }];
+    // Only the steady state is needed: no long trace.
+    op.sim.duration_s = op.sim.dt_s.max(op.controllers.sample_period_s);
+    let model = drive_train(&op).map_err(|e| setup(sc, "the linearisation", e.to_string()))?;
+    let mut weighted = model.system.clone();
+    weighted.c.row_mut(0).scale_mut(p.turbine_speed_weight);
+    weighted.d.row_mut(0).scale_mut(p.turbine_speed_weight);
+    Ok((model, weighted))
+}
+
+/// The design and its analysis (singular values, poles, margins) for the scenario's tuning, as
+/// `aes-sim design lqg-ltr --plant aes` and the page's design tab show it.
+pub fn analyse(sc: &Scenario) -> Result<Design, String> {
+    sc.validate().map_err(|e| e.to_string())?;
+    let p = &sc.controllers.lqg_ltr;
+    let (_, weighted) = design_model(sc).map_err(|e| e.to_string())?;
+    design(&DesignInput::from_plant(&weighted, p.mu, p.omega_p_rad_s, p.q))
 }
 
 /// One set's compensator state.
