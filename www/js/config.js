@@ -25,6 +25,10 @@ export const FIELDS = [
     ['plant.dc_link.brake_resistor_ohm', 'Brake resistor', 'Ω', '0 for none.'],
   ]],
   ['Controllers', [
+    ['controllers.design', 'Turbine and field control', '', 'Two PI loops per set (ch. 2, 5), or one LQG/LTR controller per set moving throttle and field together (ch. 3.1; tune it in the Controller design tab).', [['pi', 'PI loops: governor and field'], ['lqg_ltr', 'LQG/LTR (ch. 3.1)']]],
+    ['controllers.lqg_ltr.q', 'LQG/LTR recovery gain q', '-', 'Eq. 3.6: larger q recovers more of the Kalman target loop.'],
+    ['controllers.lqg_ltr.mu', 'LQG/LTR Kalman weight mu', '-', 'Eq. 3.4: smaller mu makes the target loop faster.'],
+    ['controllers.lqg_ltr.turbine_speed_weight', 'LQG/LTR turbine-speed weight', '-', 'How much the turbine-speed error counts beside the bus voltage error.'],
     ['controllers.governor.kp', 'Governor K_p,t', '1/pu', 'Throttle per per-unit speed error.'],
     ['controllers.governor.slew_rate_per_s', 'Throttle slew limit', '1/s', 'Fuel schedule limit.'],
     ['controllers.field.kp', 'Field K_p,v', 'V/V', 'Ch. 5.2.1 baseline.'],
@@ -159,7 +163,9 @@ export const KEY_FIGURES = [
   ['peak motor power [pu]', (s) => s.signals.im_power_pu.max],
   ['lowest motor power [pu]', (s) => s.signals.im_power_pu.min],
   ['lowest bus voltage (dip) [pu]', (s) => s.signals.bus_voltage_pu.min],
+  ['lowest turbine speed (dip) [pu]', (s) => s.signals.turbine_speed_pu.min],
   ['highest turbine speed [pu]', (s) => s.signals.turbine_speed_pu.max],
+  ['peak fuel power [MW]', (s) => s.signals.fuel_power_w.max / 1e6],
   ['final ship speed [kn]', (s) => s.signals.ship_speed_kn.final],
   ['ship speed settles after [s]', (s) => s.signals.ship_speed_kn.settling_time_s],
   ['bus voltage settles after [s]', (s) => s.signals.bus_voltage_pu.settling_time_s],
@@ -209,6 +215,10 @@ export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, ons
 // Stability tab: the Bode range and the pole map's radius (faster poles are listed, not drawn).
 // The testbed's synchronous speed is an operating-point input like the sliders.
 export const IPS = { omegaRadS: 377, fromHz: 0.01, toHz: 1000, points: 300, poleMapMax: 2000, debounceMs: 60 };
+
+// The controller design tab (ch. 3.1): the plant is the acceleration study's; poles faster than
+// poleMapMax [1/s] are listed, not drawn (the compensator's fastest are near -216 /s).
+export const DESIGN = { basePreset: 'acceleration', poleMapMax: 40, debounceMs: 120 };
 
 // Progress reports while running: at most one per this many milliseconds; steps per chunk.
 export const RUN_CHUNK_STEPS = 20000;

@@ -1,6 +1,6 @@
 // The page: wires the study picker and form, the worker, the plots, kept runs, share links and the
 // address bar, exports, presentation mode and the stability tab.
-import { DEFAULT_PRESET, SUMMARY_ROWS, STUDIES, DEFAULT_PLOTS, KEY_FIGURES, studyTitle } from './config.js';
+import { DESIGN, DEFAULT_PRESET, SUMMARY_ROWS, STUDIES, DEFAULT_PLOTS, KEY_FIGURES, studyTitle } from './config.js';
 import { $, el, row, download, fmt } from './dom.js';
 import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
 import { setPhase, isBusy, setResult, getResult, progress, status, notice, etaText, setFormValid } from './state.js';
@@ -10,6 +10,7 @@ import { Signals } from './units.js';
 import { PlotBox, drawRun, drawSeaExtras } from './plots.js';
 import { MonteCarlo, showMonteCarlo } from './montecarlo.js';
 import { StabilityTab } from './stability.js';
+import { DesignTab } from './design.js';
 
 const plots = new PlotBox($('plots'), { more: $('more-plots'), moreBox: $('more-plots-box'), sync: 'run' });
 const monteCarlo = new MonteCarlo();
@@ -19,6 +20,16 @@ let form = null;
 let signals = null;
 let kept = null; // a kept run: {name, columns, summary}
 const stability = new StabilityTab(() => client, new PlotBox($('ips-plots')));
+// The design tab's "run next to the PI loops": the acceleration with the PI loops, kept, then
+// again with this LQG/LTR tuning, drawn over it.
+const design = new DesignTab(() => client, new PlotBox($('design-plots')), () => form.preset(DESIGN.basePreset), (tuning) => {
+  if (isBusy() || !form) return;
+  selectTab('tab-sim');
+  selectStudy(DESIGN.basePreset);
+  const set = { 'controllers.design': 'lqg_ltr' };
+  for (const [k, v] of Object.entries(tuning)) set[`controllers.lqg_ltr.${k}`] = v;
+  compareWith({ set });
+});
 
 function startWorker() {
   setPhase('loading');
@@ -259,7 +270,7 @@ function cancel() {
 }
 
 // Tabs (ARIA pattern): click, or arrow keys / Home / End on the tab list.
-const TABS = [['tab-sim', 'panel-sim'], ['tab-ips', 'panel-ips']];
+const TABS = [['tab-sim', 'panel-sim'], ['tab-design', 'panel-design'], ['tab-ips', 'panel-ips']];
 function selectTab(id, focus = false) {
   for (const [tab, panel] of TABS) {
     const on = tab === id;
@@ -269,6 +280,7 @@ function selectTab(id, focus = false) {
   }
   if (focus) $(id).focus();
   if (id === 'tab-ips') stability.update();
+  if (id === 'tab-design') design.update();
 }
 for (const [tab] of TABS) $(tab).addEventListener('click', () => selectTab(tab));
 $('tabs').addEventListener('keydown', (e) => {

@@ -17,6 +17,7 @@ export const REQUEST = {
   rao: 'rao', // {speed_kn, heading_deg, omegas} -> done {result}
   fuel: 'fuel', // {scenario, omegas} -> done {rows}
   ips: 'ips', // {args} -> done {result}
+  design: 'design', // {scenario} -> done {result} (LQG/LTR design and analysis, ch. 3.1)
 };
 
 export function messageOf(e) {

@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, raoJson, fuelStudy } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, raoJson, fuelStudy, designLqgLtr } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -67,6 +67,7 @@ const handlers = {
 
   [REQUEST.rao]: (m) => ({ result: JSON.parse(raoJson(m.speed_kn, m.heading_deg, new Float64Array(m.omegas))) }),
 
+  [REQUEST.design]: (m) => ({ result: JSON.parse(designLqgLtr(checked(m.scenario))) }),
   [REQUEST.ips]: (m) => {
     const a = m.args;
     return { result: JSON.parse(ipsAnalysis(a.side, a.omega, a.vfd, a.load, a.torque, a.closed, a.from_hz, a.to_hz, a.points)) };
