@@ -278,6 +278,42 @@ struct IpsPoint {
     sets: Vec<String>,
 }
 
+/// The LQG/LTR tuning and operating point, as `controllers.lqg_ltr.*` (defaults there: mu 0.01,
+/// omega_p 1 rad/s, q 1000, turbine weight 1, 25 knots).
+#[derive(clap::Args)]
+struct TuningArgs {
+    /// Kalman filter weight mu (eq. 3.4).
+    #[arg(long)]
+    mu: Option<f64>,
+    /// Pinch frequency omega_p [rad/s].
+    #[arg(long)]
+    omega_p: Option<f64>,
+    /// Recovery gain q (eq. 3.6).
+    #[arg(long)]
+    q: Option<f64>,
+    /// Weight of the turbine-speed error beside the bus voltage's.
+    #[arg(long)]
+    turbine_weight: Option<f64>,
+    /// Ship speed of the operating point [kn].
+    #[arg(long)]
+    speed_kn: Option<f64>,
+}
+
+impl TuningArgs {
+    fn any(&self) -> bool {
+        [self.mu, self.omega_p, self.q, self.turbine_weight, self.speed_kn].iter().any(Option::is_some)
+    }
+
+    /// The defaults with the given values in place.
+    fn apply(&self, t: &mut aes_core::design::LqgLtrParams) {
+        t.mu = self.mu.unwrap_or(t.mu);
+        t.omega_p_rad_s = self.omega_p.unwrap_or(t.omega_p_rad_s);
+        t.q = self.q.unwrap_or(t.q);
+        t.turbine_speed_weight = self.turbine_weight.unwrap_or(t.turbine_speed_weight);
+        t.design_speed_kn = self.speed_kn.unwrap_or(t.design_speed_kn);
+    }
+}
+
 #[derive(Subcommand)]
 enum DesignCmd {
     /// LQG/LTR (eqs. 3.2-3.10) for a square plant given as JSON
@@ -290,38 +326,14 @@ enum DesignCmd {
         /// turbine speed and bus voltage out, per unit), with the tuning below.
         #[arg(long)]
         plant: Option<String>,
-        /// Ship speed of the operating point [kn] (with --plant aes; default
-        /// controllers.lqg_ltr.design_speed_kn, 25).
-        #[arg(long)]
-        speed_kn: Option<f64>,
-        /// Tuning (with --plant aes): Kalman weight mu, pinch frequency [rad/s], recovery gain q
-        /// (defaults: controllers.lqg_ltr, 0.01, 1 and 100).
-        #[arg(long)]
-        mu: Option<f64>,
-        #[arg(long)]
-        omega_p: Option<f64>,
-        #[arg(long)]
-        q: Option<f64>,
-        /// Weight of the turbine-speed error beside the bus voltage's (default 1).
-        #[arg(long)]
-        turbine_weight: Option<f64>,
+        #[command(flatten)]
+        tuning: TuningArgs,
     },
     /// PI against LQG/LTR in the acceleration, AC braking and head seas SS6 studies: turbine
     /// dip, bus-voltage excursion, settling, fuel (a Markdown table; --json for JSON).
     Compare {
-        /// LQG/LTR tuning and operating point, as `controllers.lqg_ltr.*` (defaults 0.01, 1, 1000,
-        /// 25 knots).
-        #[arg(long)]
-        mu: Option<f64>,
-        #[arg(long)]
-        omega_p: Option<f64>,
-        #[arg(long)]
-        q: Option<f64>,
-        #[arg(long)]
-        speed_kn: Option<f64>,
-        /// Weight of the turbine-speed error beside the bus voltage's (default 1).
-        #[arg(long)]
-        turbine_weight: Option<f64>,
+        #[command(flatten)]
+        tuning: TuningArgs,
         /// Print JSON instead of the table.
         #[arg(long)]
         json: bool,
@@ -502,20 +514,20 @@ fn real_main() -> Result<(), Failure> {
             emit_json(&result.summary)?;
             written?;
         }
-        Cmd::Design { command: DesignCmd::LqgLtr { file, plant, speed_kn, mu, omega_p, q, turbine_weight } } => {
+        Cmd::Design { command: DesignCmd::LqgLtr { file, plant, tuning } } => {
             let input: aes_core::design::lqg_ltr::DesignInput = match (file, plant.as_deref()) {
+                (Some(_), None) if tuning.any() => {
+                    return Err("--mu, --omega-p, --q, --turbine-weight and --speed-kn go with --plant aes; a FILE \
+                                carries its own mu, omega_p and q"
+                        .into())
+                }
                 (Some(file), None) => {
                     let text = read_bounded(&file, MAX_DESIGN_BYTES, "a design input")?;
                     serde_json::from_str(&text).map_err(|e| format!("{file}: {e}"))?
                 }
                 (None, Some("aes")) => {
                     let mut sc = aes_core::presets::preset("acceleration").ok_or("no acceleration preset")?;
-                    let t = &mut sc.controllers.lqg_ltr;
-                    t.design_speed_kn = speed_kn.unwrap_or(t.design_speed_kn);
-                    t.mu = mu.unwrap_or(t.mu);
-                    t.omega_p_rad_s = omega_p.unwrap_or(t.omega_p_rad_s);
-                    t.q = q.unwrap_or(t.q);
-                    t.turbine_speed_weight = turbine_weight.unwrap_or(t.turbine_speed_weight);
+                    tuning.apply(&mut sc.controllers.lqg_ltr);
                     let d = aes_core::sim::lqg::analyse(&sc)?;
                     return emit_json(&d);
                 }
@@ -528,15 +540,9 @@ fn real_main() -> Result<(), Failure> {
             let d = aes_core::design::lqg_ltr::design(&input)?;
             emit_json(&d)?;
         }
-        Cmd::Design { command: DesignCmd::Compare { mu, omega_p, q, speed_kn, turbine_weight, json } } => {
-            let d = aes_core::design::LqgLtrParams::default();
-            let t = aes_core::design::LqgLtrParams {
-                mu: mu.unwrap_or(d.mu),
-                omega_p_rad_s: omega_p.unwrap_or(d.omega_p_rad_s),
-                q: q.unwrap_or(d.q),
-                turbine_speed_weight: turbine_weight.unwrap_or(d.turbine_speed_weight),
-                design_speed_kn: speed_kn.unwrap_or(d.design_speed_kn),
-            };
+        Cmd::Design { command: DesignCmd::Compare { tuning, json } } => {
+            let mut t = aes_core::design::LqgLtrParams::default();
+            tuning.apply(&mut t);
             let mut v = aes_core::validate::Validator::new();
             v.section("controllers", |v| v.section("lqg_ltr", |v| t.validate(v)));
             v.finish().map_err(|e| e.to_string())?;

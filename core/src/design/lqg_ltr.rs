@@ -258,29 +258,24 @@ impl Compensator {
         StateSpace { a, b, c, d: DMatrix::zeros(m, m) }
     }
 
-    /// The open loop broken at the error: L(s) = G(s) (I/s) K(s), K = C_k (sI - A_k)^-1 B_k.
-    pub fn loop_at(&self, g: &StateSpace, w: f64) -> Option<DMatrix<C>> {
-        let k = StateSpace {
+    /// The compensator K(s) = C_k (sI - A_k)^-1 B_k of eq. 3.7 (error to integrator input).
+    pub fn transfer(&self) -> StateSpace {
+        StateSpace {
             a: self.a_k.clone(),
             b: self.b_k.clone(),
             c: self.c_k.clone(),
             d: DMatrix::zeros(self.c_k.nrows(), self.b_k.ncols()),
         }
-        .response(w)?;
-        let gs = g.response(w)?;
-        Some(gs * k / C::new(0.0, w))
+    }
+
+    /// The open loop broken at the error: L(s) = G(s) (I/s) K(s).
+    pub fn loop_at(&self, g: &StateSpace, w: f64) -> Option<DMatrix<C>> {
+        Some(g.response(w)? * self.transfer().response(w)? / C::new(0.0, w))
     }
 
     /// The loop broken at the plant input: L_i(s) = (I/s) K(s) G(s) (negative feedback).
     pub fn input_loop_at(&self, g: &StateSpace, w: f64) -> Option<DMatrix<C>> {
-        let k = StateSpace {
-            a: self.a_k.clone(),
-            b: self.b_k.clone(),
-            c: self.c_k.clone(),
-            d: DMatrix::zeros(self.c_k.nrows(), self.b_k.ncols()),
-        }
-        .response(w)?;
-        Some(k * g.response(w)? / C::new(0.0, w))
+        Some(self.transfer().response(w)? * g.response(w)? / C::new(0.0, w))
     }
 
     /// The Kalman target loop G_f(j w) = C_ (j w I - A_)^-1 K_f.

@@ -5,8 +5,7 @@
 //! class reads off a Bode plot; they are not guaranteed margins for simultaneous changes in all
 //! channels.
 
-use crate::seakeeping::complex::cabs;
-use crate::stability::log_space;
+use crate::stability::{crossings, log_space, Crossing};
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C;
 use serde::Serialize;
@@ -50,54 +49,34 @@ fn broken_at(l: &DMatrix<C>, i: usize) -> Option<C> {
 }
 
 /// Margins at every input of the loop `loop_at(w)` (the m x m matrix L(j w) = K_tot G at the
-/// plant input). An error when the loop cannot be evaluated somewhere in the band.
+/// plant input): the worst over every crossing in the band. An error when the loop cannot be
+/// evaluated somewhere in the band.
 pub fn input_margins(m: usize, loop_at: &dyn Fn(f64) -> Option<DMatrix<C>>) -> Result<Vec<LoopMargins>, String> {
     let ws = log_space(BAND.0, BAND.1, BAND.2);
-    let eval = |w: f64, i: usize| -> Result<C, String> {
-        let l = loop_at(w).ok_or_else(|| format!("the loop cannot be evaluated at {w:.3e} rad/s"))?;
-        broken_at(&l, i).ok_or_else(|| format!("I + L is singular at {w:.3e} rad/s"))
-    };
-    // Bisection on a sign change of f between w0 and w1 (log-spaced midpoints).
-    let refine = |w0: f64, w1: f64, i: usize, f: &dyn Fn(C) -> f64| -> Result<(f64, C), String> {
-        let (mut a, mut b) = (w0, w1);
-        let fa = f(eval(a, i)?);
-        for _ in 0..BISECTIONS {
-            let mid = libm::sqrt(a * b);
-            let fm = f(eval(mid, i)?);
-            if (fm > 0.0) == (fa > 0.0) {
-                a = mid;
-            } else {
-                b = mid;
-            }
-        }
-        let w = libm::sqrt(a * b);
-        Ok((w, eval(w, i)?))
-    };
     let mut out = Vec::with_capacity(m);
     for i in 0..m {
-        let vals: Vec<C> = ws.iter().map(|&w| eval(w, i)).collect::<Result<_, _>>()?;
+        let scalar = |w: f64| -> Result<C, String> {
+            let l = loop_at(w).ok_or_else(|| format!("the loop cannot be evaluated at {w:.3e} rad/s"))?;
+            broken_at(&l, i).ok_or_else(|| format!("I + L is singular at {w:.3e} rad/s"))
+        };
         let (mut gm_up, mut gm_down, mut pm): (Option<f64>, Option<f64>, Option<(f64, f64)>) = (None, None, None);
-        for k in 1..ws.len() {
-            let (p, q) = (vals[k - 1], vals[k]);
-            // Phase crossover: the Nyquist curve crosses the negative real axis.
-            if (p.im > 0.0) != (q.im > 0.0) && (p.re < 0.0 || q.re < 0.0) {
-                let (_, z) = refine(ws[k - 1], ws[k], i, &|z: C| z.im)?;
-                if z.re < 0.0 && z.re.is_finite() {
-                    let db = -20.0 * libm::log10(-z.re);
+        for c in crossings(&scalar, &ws, BISECTIONS)? {
+            match c {
+                Crossing::Phase { l, .. } if l.re < 0.0 => {
+                    let db = -20.0 * libm::log10(-l.re);
                     if db > 0.0 {
                         gm_up = Some(gm_up.map_or(db, |g: f64| g.min(db)));
                     } else {
                         gm_down = Some(gm_down.map_or(db, |g: f64| g.max(db)));
                     }
                 }
-            }
-            // Gain crossover.
-            if (cabs(p) > 1.0) != (cabs(q) > 1.0) {
-                let (w, z) = refine(ws[k - 1], ws[k], i, &|z: C| cabs(z) - 1.0)?;
-                let margin = 180.0 - libm::fabs(libm::atan2(z.im, z.re).to_degrees());
-                if pm.is_none_or(|(best, _)| margin < best) {
-                    pm = Some((margin, w));
+                Crossing::Gain { w, l } => {
+                    let margin = 180.0 - libm::fabs(libm::atan2(l.im, l.re).to_degrees());
+                    if pm.is_none_or(|(best, _)| margin < best) {
+                        pm = Some((margin, w));
+                    }
                 }
+                _ => {}
             }
         }
         out.push(LoopMargins {
