@@ -241,6 +241,20 @@ enum Cmd {
         #[arg(long = "set", value_name = "PATH=VALUE")]
         sets: Vec<String>,
     },
+    /// The validation report: every thesis number we compare with, beside ours, with the
+    /// difference, tolerance, verdict and reason (Markdown; docs/validation.md). Exit status 1 when
+    /// a row leaves its tolerance.
+    Validate {
+        /// Monte Carlo trials per study (docs/validation.md is made with the default).
+        #[arg(long, default_value_t = 200)]
+        trials: u64,
+        /// Write the report to this file instead of standard output.
+        #[arg(long)]
+        out: Option<String>,
+        /// Compare the report with this file and fail if it differs (a stale committed report).
+        #[arg(long)]
+        check: Option<String>,
+    },
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -711,6 +725,40 @@ fn real_main() -> Result<(), Failure> {
             });
             aes_core::validate::check_finite(&rows)?;
             emit_json(&out)?;
+        }
+        Cmd::Validate { trials, out, check } => {
+            if !(1..=100_000).contains(&trials) {
+                return Err(format!("--trials = {trials}: must be a whole number from 1 to 100000").into());
+            }
+            let size = aes_core::validation::Size { trials };
+            let sections = aes_core::validation::sections(size)?;
+            let text = aes_core::validation::markdown(&sections, size);
+            let failed: Vec<String> = sections
+                .iter()
+                .flat_map(|s| &s.rows)
+                .filter(|r| r.verdict == aes_core::validation::Verdict::Fail)
+                .map(|r| format!("{}: ours {} against {} ({})", r.quantity, r.ours, r.thesis, r.source))
+                .collect();
+            if let Some(path) = check {
+                let old = read_bounded(&path, 8 << 20, "a validation report")?;
+                if let Some((i, (a, b))) = old.lines().zip(text.lines()).enumerate().find(|(_, (a, b))| a != b) {
+                    return Err(format!(
+                        "{path} is stale (run ./build.sh validate and commit it); line {}:\n  committed: {a}\n  now:       {b}",
+                        i + 1
+                    )
+                    .into());
+                }
+                if old.lines().count() != text.lines().count() {
+                    return Err(format!("{path} is stale (run ./build.sh validate and commit it): the number of lines differs").into());
+                }
+            } else if let Some(path) = out {
+                std::fs::write(&path, &text).map_err(|e| format!("{path}: {e}"))?;
+            } else {
+                emit(&text)?;
+            }
+            if !failed.is_empty() {
+                return Err(format!("{} row(s) outside their tolerance:\n{}", failed.len(), failed.join("\n")).into());
+            }
         }
         Cmd::Bench { name, repeat, sets } if name == "seakeeping" => {
             let mut best = (f64::INFINITY, f64::INFINITY);

@@ -34,6 +34,7 @@ pub mod stability;
 pub mod stats;
 pub mod surge;
 pub mod units;
+pub mod validation;
 pub mod validate;
 pub mod waves;
 
