@@ -54,14 +54,18 @@ fn lqg_comes_out_of_saturation_cleanly() {
     assert!((t.final_ - 1.0).abs() < 1e-3 && (v.final_ - 1.0).abs() < 1e-3, "final {} {}", t.final_, v.final_);
 }
 
-/// The controller choice is only a scenario field: every calm-water study runs with it, and a
-/// bad tuning is refused with the field named.
+/// AC braking: the brake chopper holds the bus above its set point for about a hundred seconds
+/// with the field at 0 V. The compensator stops integrating the bus error while the field sits at
+/// that limit, so the turbine ends at its set point: within 1e-3 (measured 3.3e-4; without the
+/// rule it ended at 0.971 pu). A bad tuning is refused with the field named.
 #[test]
-fn lqg_runs_in_other_studies_and_bad_tuning_is_named() {
+fn lqg_in_braking_ends_at_speed_and_bad_tuning_is_named() {
     let mut sc = preset("ac-braking").unwrap();
     sc.controllers.design = ControllerDesign::LqgLtr;
     let r = run(&sc);
-    assert!(stats(&r, "bus_voltage_pu").max < 1.2);
+    assert_eq!(stats(&r, "field_voltage_v").min, 0.0);
+    let t = stats(&r, "turbine_speed_pu");
+    assert!((t.final_ - 1.0).abs() < 1e-3, "turbine ends at {}", t.final_);
     sc.controllers.lqg_ltr.mu = -1.0;
     let e = aes_core::Simulation::new(&sc).err().unwrap().to_string();
     assert!(e.contains("controllers.lqg_ltr.mu"), "{e}");

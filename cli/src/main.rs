@@ -749,7 +749,10 @@ fn real_main() -> Result<(), Failure> {
                     .into());
                 }
                 if old.lines().count() != text.lines().count() {
-                    return Err(format!("{path} is stale (run ./build.sh validate and commit it): the number of lines differs").into());
+                    return Err(format!(
+                        "{path} is stale (run ./build.sh validate and commit it): the number of lines differs"
+                    )
+                    .into());
                 }
             } else if let Some(path) = out {
                 std::fs::write(&path, &text).map_err(|e| format!("{path}: {e}"))?;

@@ -10,6 +10,9 @@ use serde::Serialize;
 /// The studies compared, by preset name.
 pub const STUDIES: &[&str] = &["acceleration", "ac-braking", "head-seas-ss6"];
 
+/// Half-width of the band around the set point that counts as recovered [per unit].
+pub const RECOVERY_BAND: f64 = 0.01;
+
 /// One run's figures.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ControllerRun {
@@ -22,10 +25,11 @@ pub struct ControllerRun {
     /// Lowest and highest bus voltage [per unit of the set point].
     pub bus_voltage_min_pu: f64,
     pub bus_voltage_max_pu: f64,
-    /// Settling time of the bus voltage and of the turbine speed (2 % band) [s]; None in waves,
-    /// where the load never settles.
-    pub bus_settling_s: Option<f64>,
-    pub turbine_settling_s: Option<f64>,
+    /// Recovery of the bus voltage and of the turbine speed: time from the order (the second
+    /// command) until the signal is back within +-1 % of its set point for good [s]; None in
+    /// waves (the load never settles) or when it is not back by the end of the run.
+    pub bus_recovery_s: Option<f64>,
+    pub turbine_recovery_s: Option<f64>,
     /// Fuel energy of the run [J] and the peak fuel power [W], all four prime movers.
     pub fuel_energy_j: f64,
     pub fuel_power_peak_w: f64,
@@ -45,6 +49,16 @@ pub fn compare(tuning: &LqgLtrParams) -> Result<Vec<ControllerRun>, String> {
             let st = |s: Signal| r.summary.signals[s.name()];
             let calm = sc.sea.kind == crate::scenario::SeaKind::Calm;
             let fuel = st(Signal::FuelPowerW);
+            let order = sc.commands.get(1).map_or(0.0, |c| c.t_s);
+            let recovery = |s: Signal| -> Option<f64> {
+                let (t, x) = (r.trace.column("t_s")?, r.trace.column(s.name())?);
+                let out = x.iter().rposition(|v| (v - 1.0).abs() > RECOVERY_BAND);
+                match out {
+                    None => Some(0.0),
+                    Some(i) if i + 1 < t.len() => Some((t[i + 1] - order).max(0.0)),
+                    Some(_) => None,
+                }
+            };
             out.push(ControllerRun {
                 study: name.to_string(),
                 controller: design,
@@ -52,8 +66,8 @@ pub fn compare(tuning: &LqgLtrParams) -> Result<Vec<ControllerRun>, String> {
                 turbine_speed_max_pu: st(Signal::TurbineSpeedPu).max,
                 bus_voltage_min_pu: st(Signal::BusVoltagePu).min,
                 bus_voltage_max_pu: st(Signal::BusVoltagePu).max,
-                bus_settling_s: calm.then_some(st(Signal::BusVoltagePu).settling_time_s),
-                turbine_settling_s: calm.then_some(st(Signal::TurbineSpeedPu).settling_time_s),
+                bus_recovery_s: if calm { recovery(Signal::BusVoltagePu) } else { None },
+                turbine_recovery_s: if calm { recovery(Signal::TurbineSpeedPu) } else { None },
                 fuel_energy_j: fuel.mean * r.summary.final_time_s,
                 fuel_power_peak_w: fuel.max,
                 field_voltage_max_v: st(Signal::FieldVoltageV).max,
@@ -66,11 +80,16 @@ pub fn compare(tuning: &LqgLtrParams) -> Result<Vec<ControllerRun>, String> {
 /// The comparison as a Markdown table.
 pub fn markdown(rows: &[ControllerRun]) -> String {
     let mut s = String::from(
-        "| study | controller | turbine speed min / max [pu] | bus voltage min / max [pu] | bus settling [s] \
-         | turbine settling [s] | fuel [GJ] | peak fuel power [MW] | peak field voltage [V] |\n\
+        "| study | controller | turbine speed min / max [pu] | bus voltage min / max [pu] | bus back within 1 % \
+         [s] | turbine back within 1 % [s] | fuel [GJ] | peak fuel power [MW] | peak field voltage [V] |\n\
          |---|---|---|---|---|---|---|---|---|\n",
     );
-    let opt = |v: Option<f64>| v.map_or("(waves)".to_string(), |x| format!("{x:.1}"));
+    let calm = |r: &ControllerRun| r.study != "head-seas-ss6";
+    let opt = |r: &ControllerRun, v: Option<f64>| match v {
+        Some(x) => format!("{x:.1}"),
+        None if calm(r) => "not by the end".to_string(),
+        None => "(waves)".to_string(),
+    };
     for r in rows {
         s.push_str(&format!(
             "| {} | {} | {:.3} / {:.3} | {:.3} / {:.3} | {} | {} | {:.3} | {:.1} | {:.0} |\n",
@@ -83,8 +102,8 @@ pub fn markdown(rows: &[ControllerRun]) -> String {
             r.turbine_speed_max_pu,
             r.bus_voltage_min_pu,
             r.bus_voltage_max_pu,
-            opt(r.bus_settling_s),
-            opt(r.turbine_settling_s),
+            opt(r, r.bus_recovery_s),
+            opt(r, r.turbine_recovery_s),
             r.fuel_energy_j / 1e9,
             r.fuel_power_peak_w / 1e6,
             r.field_voltage_max_v,

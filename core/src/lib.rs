@@ -34,8 +34,8 @@ pub mod stability;
 pub mod stats;
 pub mod surge;
 pub mod units;
-pub mod validation;
 pub mod validate;
+pub mod validation;
 pub mod waves;
 
 pub use scenario::Scenario;

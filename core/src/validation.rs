@@ -137,7 +137,15 @@ fn table_2_4() -> Result<Section, String> {
     let mut rows = Vec::new();
     for (ss, w, h_ft) in printed {
         let (w_ours, h_ours) = crate::waves::sea_state(ss).ok_or("no sea state")?;
-        rows.push(row(&format!("SS{ss} peak frequency"), "Table 2.4", w, w_ours, "rad/s", Tolerance::Abs(0.0), "copied"));
+        rows.push(row(
+            &format!("SS{ss} peak frequency"),
+            "Table 2.4",
+            w,
+            w_ours,
+            "rad/s",
+            Tolerance::Abs(0.0),
+            "copied",
+        ));
         rows.push(row(
             &format!("SS{ss} significant height"),
             "Table 2.4",
@@ -414,7 +422,10 @@ fn excess_energy(size: Size) -> Result<Section, String> {
     let se = std / (n.max(1) as f64).sqrt();
     Ok(Section {
         title: "Ch. 5.4.1: excess energy over the first surface effect (mc-excess-energy)",
-        note: format!("{} trials; ours against calm water, the definition that matches the thesis' in kind.", size.trials),
+        note: format!(
+            "{} trials; ours against calm water, the definition that matches the thesis' in kind.",
+            size.trials
+        ),
         rows: vec![
             open(
                 "mean excess energy",
@@ -526,7 +537,11 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
             };
             let rel = if r.thesis != 0.0 && r.ours != r.thesis {
                 let pct = 100.0 * (r.ours - r.thesis) / r.thesis;
-                if pct.abs() >= 0.1 { format!(" ({pct:+.1} %)") } else { format!(" ({pct:+.1e} %)") }
+                if pct.abs() >= 0.1 {
+                    format!(" ({pct:+.1} %)")
+                } else {
+                    format!(" ({pct:+.1e} %)")
+                }
             } else {
                 String::new()
             };

@@ -38,22 +38,25 @@ export class DesignTab {
   }
 
   update() {
+    // The readouts (and what a screen reader says for the log sliders) follow at once; the design
+    // waits for the slider to rest.
+    const t = this.tuning();
+    $('design-mu-out').textContent = t.mu;
+    $('design-q-out').textContent = t.q;
+    $('design-omega-out').textContent = t.omega_p_rad_s;
+    $('design-speed-out').textContent = t.design_speed_kn;
+    $('design-mu').setAttribute('aria-valuetext', `mu = ${t.mu}`);
+    $('design-q').setAttribute('aria-valuetext', `q = ${t.q}`);
     clearTimeout(this.timer);
     this.timer = setTimeout(() => {
-      const t = this.tuning();
-      $('design-mu-out').textContent = t.mu;
-      $('design-q-out').textContent = t.q;
-      $('design-omega-out').textContent = t.omega_p_rad_s;
-      $('design-speed-out').textContent = t.design_speed_kn;
       const sc = this.baseScenario();
       sc.controllers.lqg_ltr = t;
       this.client().request(REQUEST.design, { scenario: JSON.stringify(sc) }).then(({ result }) => {
         this.ok = true;
         $('design-run').disabled = !result.stable;
-        const worst = Math.min(...result.input_margins.map((m) => m.phase_margin_deg ?? Infinity));
-        $('design-status').textContent = result.stable
-          ? `Stable. Smallest phase margin at a plant input: ${worst.toFixed(0)}°.`
-          : 'UNSTABLE: a closed-loop pole in the right half plane.';
+        const pms = result.input_margins.map((m) => m.phase_margin_deg).filter((x) => x !== null && x !== undefined);
+        const worst = pms.length ? ` Smallest phase margin at a plant input: ${Math.min(...pms).toFixed(0)}°.` : '';
+        $('design-status').textContent = result.stable ? `Stable.${worst}` : 'UNSTABLE: a closed-loop pole in the right half plane.';
         $('design-status').className = result.stable ? '' : 'error';
         this.show(result);
       }, (e) => {

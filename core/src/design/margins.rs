@@ -21,8 +21,9 @@ pub struct LoopMargins {
     /// Gain decrease that makes it marginally stable [dB, negative], at a phase crossover where
     /// |l| > 1; None when there is none (the loop tolerates any reduction).
     pub gain_reduction_margin_db: Option<f64>,
-    /// Smallest distance of the phase from -180 degrees at a gain crossover |l| = 1 [deg]; None
-    /// when |l| never crosses 1 in the band searched.
+    /// Phase margin at the worst gain crossover |l| = 1 [deg]: 180 + arg l wrapped to
+    /// (-180, 180], negative when the phase is past -180 degrees there; None when |l| never
+    /// crosses 1 in the band searched.
     pub phase_margin_deg: Option<f64>,
     /// Frequency of that gain crossover [rad/s].
     pub crossover_rad_s: Option<f64>,
@@ -71,7 +72,12 @@ pub fn input_margins(m: usize, loop_at: &dyn Fn(f64) -> Option<DMatrix<C>>) -> R
                     }
                 }
                 Crossing::Gain { w, l } => {
-                    let margin = 180.0 - libm::fabs(libm::atan2(l.im, l.re).to_degrees());
+                    // Signed, as the ch. 4 tool reports it: 180 + arg l wrapped to (-180, 180], so a
+                    // loop past -180 degrees at crossover shows a negative margin.
+                    let mut margin = libm::atan2(l.im, l.re).to_degrees() + 180.0;
+                    if margin > 180.0 {
+                        margin -= 360.0;
+                    }
                     if pm.is_none_or(|(best, _)| margin < best) {
                         pm = Some((margin, w));
                     }
@@ -113,6 +119,18 @@ mod tests {
         assert!((k / (wc * (1.0 + wc * wc)) - 1.0).abs() < 1e-9, "{wc}");
         let pm = 90.0 - 2.0 * libm::atan(wc).to_degrees();
         assert!((m.phase_margin_deg.unwrap() - pm).abs() < 1e-7, "{:?} vs {pm}", m.phase_margin_deg);
+        // k = 4: unstable. The phase crossover has |l| = 2 (a gain reduction margin of -6.02 dB)
+        // and the phase margin is negative, 90 - 2 atan(w_c) = -18.2 degrees.
+        let l4 = |w: f64| {
+            let s = C::new(0.0, w);
+            Some(DMatrix::from_element(1, 1, C::new(4.0, 0.0) / (s * (s + 1.0) * (s + 1.0))))
+        };
+        let m4 = &input_margins(1, &l4).unwrap()[0];
+        assert!(m4.gain_margin_db.is_none());
+        assert!((m4.gain_reduction_margin_db.unwrap() + 20.0 * libm::log10(2.0)).abs() < 1e-9);
+        let wc4 = m4.crossover_rad_s.unwrap();
+        let pm4 = 90.0 - 2.0 * libm::atan(wc4).to_degrees();
+        assert!(pm4 < -18.0 && (m4.phase_margin_deg.unwrap() - pm4).abs() < 1e-7, "{:?} vs {pm4}", m4.phase_margin_deg);
     }
 
     /// Two decoupled loops: breaking one leaves exactly that loop's scalar margins.

@@ -129,23 +129,23 @@ pub fn reduce(g: &StateSpace, opt: &ReduceOptions, ws: &[f64]) -> Result<(StateS
     let peak_g = ws.iter().map(|&w| g.response(w).map_or(0.0, |r| sigma_max(&r))).fold(0.0, f64::max);
     // Keep or drop each mode (unstable and marginal modes always stay: the design must see them).
     let mut keep = vec![true; n];
-    let mut dropped = Vec::new();
+    let mut why: Vec<Option<&'static str>> = vec![None; n];
+    let mut rel = vec![f64::INFINITY; n];
     for i in 0..n {
         let l = lam[i];
-        let rel = if l.re < 0.0 { sigma_max(&residue(i)) / -l.re / peak_g.max(1e-300) } else { f64::INFINITY };
-        let reason = if l.re >= 0.0 {
+        if l.re < 0.0 {
+            rel[i] = sigma_max(&residue(i)) / -l.re / peak_g.max(1e-300);
+        }
+        why[i] = if l.re >= 0.0 {
             None
         } else if opt.max_frequency_rad_s.is_some_and(|f| cabs(l) > f) {
             Some("fast")
-        } else if opt.min_relative_residue.is_some_and(|r| rel < r) {
+        } else if opt.min_relative_residue.is_some_and(|r| rel[i] < r) {
             Some("small residue")
         } else {
             None
         };
-        if let Some(reason) = reason {
-            keep[i] = false;
-            dropped.push(DroppedMode { re: l.re, im: l.im, reason: reason.into(), relative_residue: rel });
-        }
+        keep[i] = why[i].is_none();
     }
     // A pair goes or stays together (its members have the same |lambda| and residue size, but
     // guard against rounding).
@@ -155,8 +155,27 @@ pub fn reduce(g: &StateSpace, opt: &ReduceOptions, ws: &[f64]) -> Result<(StateS
                 let k = keep[i] && keep[j];
                 keep[i] = k;
                 keep[j] = k;
+                if !k {
+                    let w = why[i].or(why[j]);
+                    why[i] = w;
+                    why[j] = w;
+                }
             }
         }
+    }
+    let dropped: Vec<DroppedMode> = (0..n)
+        .filter(|&i| !keep[i])
+        .map(|i| DroppedMode {
+            re: lam[i].re,
+            im: lam[i].im,
+            reason: why[i].unwrap_or("fast").into(),
+            relative_residue: rel[i],
+        })
+        .collect();
+    if keep.iter().all(|k| !k) {
+        return Err("reduce: every mode would be dropped; keep at least one (raise max_frequency_rad_s or lower \
+                    min_relative_residue)"
+            .into());
     }
     // Real realisation of the kept modes.
     let reps: Vec<usize> = (0..n).filter(|&i| keep[i] && (is_real(lam[i]) || lam[i].im > 0.0)).collect();
@@ -270,6 +289,20 @@ mod tests {
             let got = r.response(w).unwrap()[(0, 0)];
             assert!(cabs(got - want) < 1e-10, "w {w}: {got} vs {want}");
         }
+    }
+
+    /// A reduction that would keep nothing is refused with a clear message (it used to reach a
+    /// 0 x 0 solve).
+    #[test]
+    fn dropping_every_mode_is_refused() {
+        let g = StateSpace {
+            a: DMatrix::from_element(1, 1, -100.0),
+            b: DMatrix::from_element(1, 1, 100.0),
+            c: DMatrix::from_element(1, 1, 1.0),
+            d: DMatrix::zeros(1, 1),
+        };
+        let opt = ReduceOptions { max_frequency_rad_s: Some(10.0), min_relative_residue: None, match_dc: true };
+        assert!(reduce(&g, &opt, &default_grid()).unwrap_err().contains("every mode"));
     }
 
     #[test]

@@ -12,7 +12,9 @@
 //! the commanded u is clamped to the actuator's range and slew (throttle 0 to 1 at the governor's
 //! slew limit, field voltage 0 to the ceiling) and the observer is fed the du that was actually
 //! applied, so its estimate stays consistent with the real plant input instead of winding up.
-//! Unsaturated, this is eq. 3.7 exactly.
+//! Unsaturated, this is eq. 3.7 sampled: the actuator steps by du T at each sample while the
+//! observer's hold takes du constant over it, half a sample apart (0.7 degrees of phase at the
+//! 4.7 rad/s crossover with the 5 ms sample).
 
 use super::linearize::{drive_train, DriveTrainModel};
 use super::SimError;
@@ -152,6 +154,17 @@ impl LqgSet {
         let throttle = th_prev + (th_cmd - th_prev).clamp(-step, step);
         let v_f = (self.base[1] + d.v_f_base * (self.u[1] + du[1] * ts)).clamp(0.0, d.v_f_max);
         let applied = [throttle - self.base[0], (v_f - self.base[1]) / d.v_f_base];
+        // A field held at a limit by the bus error (at 0 V while the brake chopper holds the bus
+        // above its set point in AC braking, for a hundred seconds) cannot act on it: the
+        // compensator stops integrating the bus error, so the throttle loop settles the turbine
+        // at its own set point instead of trading speed for bus voltage (conditional integration
+        // at the output; without it the braking study ended 2.9 % under speed). Not applied to
+        // the throttle: its limits are met only for seconds, which the observer rule handles, and
+        // there it made the braking study's turbine speed worse (0.991 against 0.999 pu).
+        let mut e = e;
+        if (v_f <= 0.0 && e[1] < 0.0) || (v_f >= d.v_f_max && e[1] > 0.0) {
+            e[1] = 0.0;
+        }
         let du_applied = [(applied[0] - self.u[0]) / ts, (applied[1] - self.u[1]) / ts];
         let mut next = vec![0.0; n];
         for (i, x_i) in next.iter_mut().enumerate() {
