@@ -237,3 +237,46 @@ pub fn fuel_study(json: &str, omegas: Vec<f64>) -> Result<String, JsError> {
     let rows = aes_core::fuel_study::run(&sc, &omegas).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
 }
+
+/// The side profile and waterline of the hull a run in waves uses, as JSON (the live stern and
+/// plan views draw it; positions from the aft perpendicular, heights from the calm waterline).
+#[wasm_bindgen(js_name = hullProfile)]
+pub fn hull_profile(json: &str) -> Result<String, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    serde_json::to_string(&aes_core::presentation::HullProfile::of(&sc)).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// A run's sea surface for pictures: the same seeded wave components the run sails in
+/// (`sim::seaway::wave_components`), summed at points the page asks for.
+#[wasm_bindgen]
+pub struct Sea {
+    comps: Vec<aes_core::waves::WaveComponent>,
+    out: Vec<f64>,
+}
+
+#[wasm_bindgen]
+impl Sea {
+    /// The sea of a scenario (no components in calm water).
+    #[wasm_bindgen(constructor)]
+    pub fn new(json: &str) -> Result<Sea, JsError> {
+        let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+        Ok(Sea { comps: aes_core::sim::seaway::wave_components(&sc), out: Vec::new() })
+    }
+
+    /// Number of wave components.
+    #[wasm_bindgen(getter)]
+    pub fn components(&self) -> usize {
+        self.comps.len()
+    }
+
+    /// Surface elevation [m, up] at the points (xs[i] north, ys[i] east) [m] at time t [s]
+    /// (eq. 2.55's superposition; at most 20,000 points a call).
+    pub fn elevations(&mut self, t: f64, xs: &[f64], ys: &[f64]) -> Result<js_sys::Float64Array, JsError> {
+        if xs.len() != ys.len() || xs.len() > 20_000 {
+            return Err(JsError::new("elevations: xs and ys of equal length, at most 20000 points"));
+        }
+        self.out.resize(xs.len(), 0.0);
+        aes_core::waves::elevations(&self.comps, xs, ys, t, &mut self.out);
+        Ok(js_sys::Float64Array::from(self.out.as_slice()))
+    }
+}

@@ -10,9 +10,11 @@ import { Signals } from './units.js';
 import { PlotBox, drawRun, drawSeaExtras } from './plots.js';
 import { MonteCarlo, showMonteCarlo } from './montecarlo.js';
 import { StabilityTab } from './stability.js';
+import { LiveViews } from './live.js';
 
 const plots = new PlotBox($('plots'), { more: $('more-plots'), moreBox: $('more-plots-box'), sync: 'run' });
 const monteCarlo = new MonteCarlo();
+const live = new LiveViews($('live'), plots);
 // Set once the first worker is ready; `client` is replaced by a fresh worker after a cancel.
 let client = null;
 let form = null;
@@ -187,6 +189,7 @@ async function run({ focus = true } = {}) {
   const order = (STUDIES[form.name] && STUDIES[form.name].plots) || DEFAULT_PLOTS;
   const { markers } = drawRun(plots, m.columns, signals, m.constants, sc, { order, kept });
   if (sc.sea.kind !== 'calm') drawSeaExtras(plots, c, sc, m.columns, m.constants, (e) => status(e.message, true));
+  live.show(m.columns, m.constants, sc).catch((e) => status(`The live views failed: ${e.message}`, true));
   const t = m.summary.final_time_s, wall = m.wall_ms / 1000;
   const events = sc.sea.kind === 'calm' ? '' : ` Surface losses started ${markers.length} time(s).`;
   status(`Done: ${t} s simulated in ${wall.toFixed(2)} s (${(t / wall).toFixed(0)} times real time).${events}`);
@@ -200,6 +203,7 @@ async function runMonteCarlo() {
   if (why) { status(why, true); return; }
   const n = Number(sc.monte_carlo.trials);
   setPhase('montecarlo');
+  live.hide();
   const started = performance.now();
   let out;
   try {
