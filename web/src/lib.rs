@@ -109,6 +109,29 @@ impl Run {
     }
 }
 
+#[wasm_bindgen]
+impl Run {
+    /// Rows recorded so far (during the run and after it).
+    pub fn rows(&self) -> usize {
+        match &self.sim {
+            Some(sim) => sim.trace().len(),
+            None => self.columns.first().map_or(0, |c| c.len()),
+        }
+    }
+
+    /// Rows `from..` of one trace column recorded so far (the page follows a run as it goes).
+    #[wasm_bindgen(js_name = columnFrom)]
+    pub fn column_from(&self, name: &str, from: usize) -> Result<js_sys::Float64Array, JsError> {
+        let s = aes_core::signals::Signal::from_name(name)
+            .ok_or_else(|| JsError::new(&format!("no signal named '{}'", name.chars().take(40).collect::<String>())))?;
+        let col = match &self.sim {
+            Some(sim) => sim.trace().get(s),
+            None => self.columns.get(s.index()).map(|c| c.as_slice()).unwrap_or_default(),
+        };
+        Ok(js_sys::Float64Array::from(col.get(from.min(col.len())..).unwrap_or_default()))
+    }
+}
+
 /// Runs a scenario to the end and returns its summary JSON.
 #[wasm_bindgen(js_name = runSummary)]
 pub fn run_summary(json: &str) -> Result<String, JsError> {
@@ -190,6 +213,22 @@ pub fn mc_range(json: &str, a: u32, b: u32) -> Result<String, JsError> {
     }
     let p = aes_core::montecarlo::run_range(&sc, a as u64, b as u64).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The scenario of Monte Carlo trial `i` as JSON text: the study's scenario sailing the sea of
+/// seed `trial_seed(sim.seed, i)`, which reproduces the trial as a single run. Text, because the
+/// seed uses all 64 bits and a JavaScript number keeps 53.
+#[wasm_bindgen(js_name = trialScenario)]
+pub fn trial_scenario(json: &str, i: u32) -> Result<String, JsError> {
+    let mut sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    if i as u64 >= sc.monte_carlo.trials {
+        return Err(JsError::new(&format!(
+            "trial {i}: the study has trials 0 to {}",
+            sc.monte_carlo.trials.saturating_sub(1)
+        )));
+    }
+    sc.sim.seed = aes_core::stats::trial_seed(sc.sim.seed, i as u64);
+    Ok(sc.to_json())
 }
 
 /// Merges partials (JSON strings from `mcRange`) and returns the study's summary JSON; the result

@@ -225,8 +225,10 @@ export const LIVE = {
   // Arrows of the drive train: width at a link's rated power, and how fast the dashes move
   // (pixels per second of wall time at rated power and 1x).
   arrowMaxPx: 16, dashPxPerS: 60,
+  // Below this canvas width [px] the drive train runs top to bottom.
+  trainVerticalBelowPx: 560,
   // Stern view window [m]: aft of the AP, forward of it, above and below the calm waterline.
-  stern: { aftM: 16, foreM: 46, upM: 9, downM: 11 },
+  stern: { aftM: 14, foreM: 38, upM: 8, downM: 10 },
   // Plan view: half the span shown [m] as a multiple of Lpp, the wave picture's grid (cells
   // across), and how much track is drawn behind the ship [s].
   plan: { spanOfLpp: 0.75, grid: 36, trackS: 600 },

@@ -25,6 +25,9 @@ function rowAt(ts, t) {
 
 const mw = (w) => `${(w / 1e6).toFixed(1)} MW`;
 const pct = (x) => (Number.isFinite(x) ? `${(100 * x).toFixed(1)} %` : '–');
+// What a stage keeps of the power through it: out/in flowing forward, in/out flowing back (a
+// braking motor passes the shaft's power to the bus); none while the flow turns round.
+const keeps = (out, into) => (into > 0 && out >= 0 ? `keeps ${pct(out / into)}` : into < 0 && out < 0 ? `keeps ${pct(into / out)}` : 'flow turning');
 const signed = (x, d = 2) => `${x >= 0 ? '+' : '−'}${Math.abs(x).toFixed(d)}`;
 
 // A canvas that follows its box's width at a CSS height; draw() redraws after a resize.
@@ -32,8 +35,7 @@ class View {
   constructor(title, label, heightVar, onResize) {
     this.canvas = el('canvas', { className: 'live-canvas', attrs: { role: 'img', 'aria-label': label, 'aria-describedby': 'live-text' } });
     this.canvas.style.height = `var(${heightVar})`;
-    // A wide picture scrolls sideways on a phone instead of shrinking below legibility.
-    this.figure = el('figure', { className: 'plot live-view' }, el('h3', { textContent: title }), el('div', { className: 'live-scroll' }, this.canvas));
+    this.figure = el('figure', { className: 'plot live-view' }, el('h3', { textContent: title }), this.canvas);
     this.w = 0; this.h = 0;
     new ResizeObserver(() => {
       const w = this.canvas.clientWidth, h = this.canvas.clientHeight;
@@ -56,7 +58,7 @@ export class LiveViews {
     this.plots = plots;
     this.cols = null;
     this.t = 0; this.playing = false; this.speed = LIVE.defaultSpeed;
-    this.frameMs = []; this.dashPhase = 0; this.lastText = 0; this.drawn = {};
+    this.frameMs = []; this.log = []; this.dashPhase = 0; this.lastText = 0; this.drawn = {};
     this.play = el('button', { type: 'button', id: 'live-play', textContent: 'Play' });
     this.speedSel = el('select', { id: 'live-speed' }, ...LIVE.speeds.map((s) => el('option', { value: String(s), textContent: `${s}×` })));
     this.speedSel.value = String(this.speed);
@@ -82,28 +84,71 @@ export class LiveViews {
   }
 
   // After a run: the trace, pageConstants and the scenario. Resolves once the pictures are ready.
-  async show(cols, constants, scenario) {
+  show(cols, constants, scenario, text = JSON.stringify(scenario)) {
+    return this.queued(async () => {
+      this.streaming = false;
+      await this.prepare(cols, constants, scenario, text);
+      this.attachPlots();
+      this.scrub.disabled = false; this.play.disabled = false;
+      this.seek(this.t0);
+    });
+  }
+
+  // During a run: the rows recorded since the last call ({name: Float64Array}); the first call of
+  // a run brings the page constants. The views show the newest row; the plots come at the end.
+  follow(rows, constants, scenario, text = JSON.stringify(scenario)) {
+    return this.queued(async () => {
+      if (constants) {
+        this.streaming = true;
+        await this.prepare(rows, constants, scenario, text);
+        this.scrub.disabled = true; this.play.disabled = true;
+      } else if (this.streaming && this.cols) {
+        const cat = (a, b) => { const c = new Float64Array(a.length + b.length); c.set(a); c.set(b, a.length); return c; };
+        const cols = {};
+        for (const name of Object.keys(this.cols)) cols[name] = cat(this.cols[name], rows[name]);
+        this.setColumns(cols);
+      } else return;
+      this.t = this.t1; this.snapped = true;
+      this.scrub.value = String(this.t);
+      this.draw();
+    });
+  }
+
+  // Calls run one after another (a chunk may arrive while the wasm is still loading).
+  queued(fn) {
+    this.queue = (this.queue || Promise.resolve()).then(fn);
+    return this.queue;
+  }
+
+  // text: the scenario as JSON text (a replayed trial's seed needs all 64 bits).
+  async prepare(cols, constants, scenario, text) {
     this.pause();
-    this.cols = cols; this.k = constants;
+    this.k = constants;
+    this.from = scenario.sea.kind === 'calm' ? null : scenario.sea.from_deg;
+    const w = constants.warnings;
+    this.note.textContent = `Both plants draw the trace's figures (it records sums and means over machines; the shafts' speeds are each shaft's own). Block outlines turn red with a word when a limit is reached: turbine overspeed above ${w.turbine_overspeed_pu} pu, bus voltage outside ${w.bus_voltage_low_pu} to ${w.bus_voltage_high_pu} pu, motor at its ${w.motor_power_limit_pu} pu rating, brake resistor on. Arrow width follows the power; dashes move with it${reducedMotion.matches ? ' (held still: your system asks for reduced motion)' : ''}.`;
+    await loadWasm();
+    if (this.sea) this.sea.free();
+    this.sea = new Sea(text);
+    this.hull = JSON.parse(hullProfile(text));
+    this.setColumns(cols);
+    this.root.hidden = false;
+  }
+
+  setColumns(cols) {
+    this.cols = cols;
     const ts = cols.t_s;
     this.t0 = ts[0]; this.t1 = ts[ts.length - 1];
     this.inWaves = cols.h_over_r.some((v) => v !== cols.h_over_r[0]);
-    this.from = scenario.sea.kind === 'calm' ? null : scenario.sea.from_deg;
+    this.stern.figure.hidden = !this.inWaves;
     this.scrub.min = String(this.t0); this.scrub.max = String(this.t1);
     this.scrub.step = String(ts.length > 1 ? ts[1] - ts[0] : 1);
-    this.stern.figure.hidden = !this.inWaves;
-    this.waveScale = Math.max(0.5, ...Array.from(cols.wave_stern_m, Math.abs));
-    this.note.textContent = `Both plants draw the trace's figures (it records sums and means over machines; the shafts' speeds are each shaft's own). Block outlines turn red with a word when a limit is reached: turbine overspeed above ${constants.warnings.turbine_overspeed_pu} pu, bus voltage outside ${constants.warnings.bus_voltage_low_pu} to ${constants.warnings.bus_voltage_high_pu} pu, motor at its ${constants.warnings.motor_power_limit_pu} pu rating, brake resistor on. Arrow width follows the power; dashes move with it${reducedMotion.matches ? ' (held still: your system asks for reduced motion)' : ''}.`;
-    await loadWasm();
-    if (this.sea) this.sea.free();
-    this.sea = new Sea(JSON.stringify(scenario));
-    this.hull = JSON.parse(hullProfile(JSON.stringify(scenario)));
-    this.root.hidden = false;
-    this.attachPlots();
-    this.seek(this.t0);
+    let m = 0.5;
+    for (const x of cols.wave_stern_m) m = Math.max(m, Math.abs(x));
+    this.waveScale = m;
   }
 
-  hide() { this.pause(); this.root.hidden = true; this.cols = null; }
+  hide() { this.queued(() => { this.pause(); this.streaming = false; this.root.hidden = true; this.cols = null; }); }
 
   // The plots' cursor follows the playback; a click on a time plot moves the playback there.
   attachPlots() {
@@ -136,6 +181,7 @@ export class LiveViews {
     if (this.t >= this.t1) this.t = this.t0;
     this.playing = true;
     this.play.textContent = 'Pause';
+    this.log = []; this.frameMs = [];
     this.last = null; this.rate = null;
     requestAnimationFrame(this.loop);
   }
@@ -192,11 +238,15 @@ export class LiveViews {
     if (this.train.ready()) this.drawTrain(this.train);
     if (this.inWaves && this.stern.ready()) this.drawStern(this.stern);
     if (this.plan.ready()) this.drawPlan(this.plan);
-    this.cursorToPlots();
-    this.clock.value = `${this.t.toFixed(1)} s of ${this.t1.toFixed(0)} s`;
+    if (!this.streaming) this.cursorToPlots();
+    this.clock.value = this.streaming ? `running: ${this.t.toFixed(1)} s` : `${this.t.toFixed(1)} s of ${this.t1.toFixed(0)} s`;
     this.scrub.setAttribute('aria-valuetext', `${this.t.toFixed(1)} seconds of ${this.t1.toFixed(0)}`);
     const now = performance.now();
     if (!this.playing || now - this.lastText > LIVE.textEveryMs) { this.lastText = now; this.text.textContent = this.describe(); }
+    if (this.playing && this.log.length < 20000) {
+      const d = this.drawn;
+      this.log.push({ t: this.t, h_over_r: d.stern ? d.stern.h_over_r : null, disc_out: d.stern ? d.stern.disc_out_of_water : null, turbine_pu: this.v('turbine_speed_pu'), turbine_warn: d.train ? d.train.warn.turbine : null, turbine_edge: d.train ? d.train.turbineEdge : null });
+    }
     this.frameMs.push(performance.now() - t0);
     if (this.frameMs.length > 2000) this.frameMs.splice(0, 1000);
   }
@@ -227,45 +277,61 @@ export class LiveViews {
     g.lineWidth = warn ? 3 : 1.2;
     g.beginPath(); g.roundRect(x, y, w, h, 6); g.fill(); g.stroke();
     const all = warn ? [...lines, warn] : lines;
-    const fs = Math.max(10, Math.min(14, Math.floor((h - 6) / all.length) - 2));
+    const fs = Math.max(10, Math.min(this.big ? 20 : 14, Math.floor((h - 6) / all.length) - 2, Math.floor(w / 7.5)));
     g.textAlign = 'center'; g.textBaseline = 'middle';
     all.forEach((s, j) => {
       g.font = `${j === 0 ? '600 ' : ''}${fs}px system-ui, sans-serif`;
       g.fillStyle = warn && j === all.length - 1 ? C.warnEdge : C.text;
-      g.fillText(s, x + w / 2, y + h / 2 + (j - (all.length - 1) / 2) * (fs + 2), w - 4);
+      g.fillText(s, x + w / 2, y + h / 2 + (j - (all.length - 1) / 2) * (fs + 2), w - 6);
     });
     return warn ? C.warnEdge : C.blockEdge;
   }
 
-  // An arrow from (x0, y) to (x1, y) for power p [W] against a link rating [W]: width with the
-  // power, dashes moving with it; backwards (other colour) when the power flows back.
-  arrow(g, x0, x1, y, p, rating) {
+  // An arrow from (x0, y0) to (x1, y1) (along one axis) for power p [W] against a link rating
+  // [W]: width with the power, dashes moving with it; reversed (other colour) when power flows back.
+  arrow(g, x0, y0, x1, y1, p, rating) {
     const frac = Math.min(1.5, Math.abs(p) / rating);
     const width = Math.max(1.5, LIVE.arrowMaxPx * frac);
     const back = p < 0;
+    const [ax, ay, bx, by] = back ? [x1, y1, x0, y0] : [x0, y0, x1, y1];
+    const len = Math.hypot(bx - ax, by - ay) || 1, ux = (bx - ax) / len, uy = (by - ay) / len;
+    const head = Math.min(10, len / 3);
     g.save();
     g.strokeStyle = back ? C.back : C.flow; g.fillStyle = g.strokeStyle;
     g.lineWidth = width;
     g.setLineDash([10, 6]);
-    g.lineDashOffset = -(back ? -1 : 1) * this.dashPhase * LIVE.dashPxPerS * frac * this.speed;
-    const head = Math.min(10, (x1 - x0) / 3);
-    const [a, b] = back ? [x1, x0] : [x0, x1];
-    const dir = back ? -1 : 1;
-    g.beginPath(); g.moveTo(a, y); g.lineTo(b - dir * head, y); g.stroke();
+    g.lineDashOffset = -this.dashPhase * LIVE.dashPxPerS * frac * this.speed;
+    g.beginPath(); g.moveTo(ax, ay); g.lineTo(bx - ux * head, by - uy * head); g.stroke();
     g.setLineDash([]);
-    g.beginPath(); g.moveTo(b, y); g.lineTo(b - dir * head, y - width / 2 - 4); g.lineTo(b - dir * head, y + width / 2 + 4); g.closePath(); g.fill();
+    const hw = width / 2 + 4;
+    g.beginPath(); g.moveTo(bx, by); g.lineTo(bx - ux * head - uy * hw, by - uy * head + ux * hw); g.lineTo(bx - ux * head + uy * hw, by - uy * head - ux * hw); g.closePath(); g.fill();
     g.restore();
   }
 
+  // Fig. 2-1 left to right (top to bottom on a narrow screen): stages along one axis (turbines,
+  // generators, buses, inverters, motors, propellers, ship), the four sets across the other.
   drawTrain(view) {
     const { g, w, h } = view;
     const v = (n) => this.v(n), k = this.k, lv = k.warnings;
     g.clearRect(0, 0, w, h);
-    const cols = 7, colW = w / cols, bw = Math.min(colW * 0.8, 130), rowH = h / 4;
-    const short = bw < 100; // narrow: short block names
-    const bh = Math.min(rowH * 0.86, 64);
-    const cx = (j) => (j + 0.5) * colW;
-    const setY = (s) => (s + 0.5) * rowH, plantY = (p) => (2 * p + 1) * rowH;
+    const down = w < LIVE.trainVerticalBelowPx; // stages from top to bottom
+    const along = down ? h : w, across = down ? w : h;
+    const stage = along / 7, lane = across / 4;
+    // Block extents along the flow and across it, and the picture position of (stage, lane).
+    const big = (this.big = document.body.classList.contains('presenting')) ? 1.45 : 1; // presentation: larger blocks and type
+    const bs = Math.min(stage * (down ? 0.7 : 0.8), 130 * big), bl = Math.min(lane * (down ? 0.92 : 0.86), (down ? 130 : 64) * big);
+    const at = (st, ln) => (down ? [ln * lane, (st + 0.5) * stage] : [(st + 0.5) * stage, ln * lane]);
+    const box = (st, ln, ext, lines, warn) => {
+      const [cx, cy] = at(st, ln);
+      const [bw, bh] = down ? [ext, bs] : [bs, ext];
+      return this.block(g, cx - bw / 2, cy - bh / 2, bw, bh, lines, warn);
+    };
+    const link = (st, ln, p, rating) => {
+      const [x0, y0] = at(st, ln), [x1, y1] = at(st + 1, ln);
+      if (down) this.arrow(g, x0, y0 + bs / 2, x1, y1 - bs / 2, p, rating);
+      else this.arrow(g, x0 + bs / 2, y0, x1 - bs / 2, y1, p, rating);
+    };
+    const short = (down ? lane : bs) < 100; // narrow blocks: short names
     const pT = v('p_turbine_w') / 4, pG = v('p_generator_w') / 4, pI = v('p_inverter_w') / 2, pM = v('p_motor_w') / 2, pS = v('p_ship_w');
     const setRating = k.motor_rated_power_w / 2, plantRating = k.motor_rated_power_w;
     const speedPu = v('turbine_speed_pu'), busPu = v('bus_voltage_pu'), imPu = v('im_power_pu'), brake = v('brake_power_w');
@@ -276,40 +342,29 @@ export class LiveViews {
       brake: brake > 0 ? 'BRAKE ON' : null,
     };
     const d = this.drawn.train = { turbine_mw: pT / 1e6, generator_mw: pG / 1e6, inverter_mw: pI / 1e6, motor_mw: pM / 1e6, ship_mw: pS / 1e6, warn };
+    const setLn = (s) => s + 0.5, plantLn = (p) => 2 * p + 1;
     // Arrows first, blocks over their ends.
-    for (let s = 0; s < 4; s++) {
-      this.arrow(g, cx(0) + bw / 2, cx(1) - bw / 2, setY(s), pT, setRating);
-      this.arrow(g, cx(1) + bw / 2, cx(2) - bw / 2, setY(s), pG, setRating);
-    }
+    for (let s = 0; s < 4; s++) { link(0, setLn(s), pT, setRating); link(1, setLn(s), pG, setRating); }
     for (let p = 0; p < 2; p++) {
-      this.arrow(g, cx(2) + bw / 2, cx(3) - bw / 2, plantY(p), pI, plantRating);
-      this.arrow(g, cx(3) + bw / 2, cx(4) - bw / 2, plantY(p), pI, plantRating);
-      this.arrow(g, cx(4) + bw / 2, cx(5) - bw / 2, plantY(p), pM, plantRating);
-      // Useful power (resistance times speed), half per shaft.
-      this.arrow(g, cx(5) + bw / 2, cx(6) - bw / 2, plantY(p) + (p ? -1 : 1) * rowH * 0.3, pS / 2, plantRating);
+      link(2, plantLn(p), pI, plantRating);
+      link(3, plantLn(p), pI, plantRating);
+      link(4, plantLn(p), pM, plantRating);
+      // Useful power (resistance times speed), half per shaft, into the one ship; backwards
+      // when the propellers brake the ship (negative thrust).
+      link(5, plantLn(p) + (p ? -0.3 : 0.3), v('thrust_kn') < 0 ? -pS / 2 : pS / 2, plantRating);
     }
-    d.turbineEdge = null;
     for (let s = 0; s < 4; s++) {
-      d.turbineEdge = this.block(g, cx(0) - bw / 2, setY(s) - bh / 2, bw, bh, [`${short ? 'GT' : 'Gas turbine'} ${s + 1}`, mw(pT), `${speedPu.toFixed(3)} pu`], warn.turbine);
-      this.block(g, cx(1) - bw / 2, setY(s) - bh / 2, bw, bh, [`${short ? 'Gen.' : 'Generator'} ${s + 1}`, mw(pG), `keeps ${pct(v('p_generator_w') / v('p_turbine_w'))}`], null);
+      d.turbineEdge = box(0, setLn(s), bl, [`${short ? 'GT' : 'Gas turbine'} ${s + 1}`, mw(pT), `${speedPu.toFixed(3)} pu`], warn.turbine);
+      box(1, setLn(s), bl, [`${short ? 'Gen.' : 'Generator'} ${s + 1}`, mw(pG), keeps(v('p_generator_w'), v('p_turbine_w'))], null);
     }
-    const tall = Math.min(2 * rowH * 0.9, bh * 1.6);
+    const wide = Math.min(2 * lane * 0.9, bl * 1.6);
     for (let p = 0; p < 2; p++) {
-      const y = plantY(p) - tall / 2;
-      this.block(g, cx(2) - bw / 2, y, bw, tall, [`DC bus ${p + 1}`, `${busPu.toFixed(3)} pu`, `${(v('bus_voltage_v') / 1e3).toFixed(2)} kV`], warn.bus);
-      this.block(g, cx(3) - bw / 2, y, bw, tall, [`${short ? 'Inv.' : 'Inverter'} ${p + 1}`, mw(pI), `keeps ${pct(v('p_inverter_w') / v('p_generator_w'))}`, `${v('motor_voltage_pu').toFixed(2)} pu V`], null);
-      this.block(g, cx(4) - bw / 2, y, bw, tall, [`Motor ${p + 1}`, mw(pM), `${imPu.toFixed(2)} pu`, `keeps ${pct(v('p_motor_w') / v('p_inverter_w'))}`], warn.motor);
-      this.block(g, cx(5) - bw / 2, y, bw, tall, [`${short ? 'Prop.' : 'Propeller'} ${p + 1}`, `${v(`prop_rpm_${p + 1}`).toFixed(0)} rpm`, `β_T ${v('beta_t').toFixed(2)}`], null);
-      // The brake resistor hangs under its bus (diode rectifiers burn braking power there).
-      const by = p ? y - 0.28 * rowH - 4 : y + tall + 4, bhh = Math.min(0.28 * rowH, 22);
-      if (warn.brake) this.block(g, cx(2) - bw / 2, p ? by - bhh + 0.28 * rowH : by, bw, bhh, [`brake ${mw(brake / 2)}`], null);
+      box(2, plantLn(p), wide, [`DC bus ${p + 1}`, `${busPu.toFixed(3)} pu`, `${(v('bus_voltage_v') / 1e3).toFixed(2)} kV`, ...(warn.brake ? [`brake ${mw(brake / 2)}`] : [])], warn.bus || warn.brake);
+      box(3, plantLn(p), wide, [`${short ? 'Inv.' : 'Inverter'} ${p + 1}`, mw(pI), keeps(v('p_inverter_w'), v('p_generator_w')), `${v('motor_voltage_pu').toFixed(2)} pu V`], null);
+      box(4, plantLn(p), wide, [`Motor ${p + 1}`, mw(pM), `${imPu.toFixed(2)} pu`, keeps(v('p_motor_w'), v('p_inverter_w'))], warn.motor);
+      box(5, plantLn(p), wide, [`${short ? 'Prop.' : 'Propeller'} ${p + 1}`, `${v(`prop_rpm_${p + 1}`).toFixed(0)} rpm`, `β_T ${v('beta_t').toFixed(2)}`], null);
     }
-    const shipH = Math.min(h * 0.5, 4 * bh);
-    this.block(g, cx(6) - bw / 2, h / 2 - shipH / 2, bw, shipH, ['Ship', `${v('ship_speed_kn').toFixed(1)} kn`, mw(pS), `thrust ${(v('thrust_kn') / 1e3).toFixed(2)} MN`, `keeps ${pct(v('p_ship_w') / v('p_motor_w'))}`], null);
-    if (warn.brake) {
-      g.fillStyle = C.warnEdge; g.font = '600 12px system-ui, sans-serif'; g.textAlign = 'left'; g.textBaseline = 'top';
-      g.fillText(`BRAKE ON: ${mw(brake)} into the resistors`, 4, 2);
-    }
+    box(6, 2, Math.min(across * 0.5, 4 * bl), ['Ship', `${v('ship_speed_kn').toFixed(1)} kn`, `useful ${mw(pS)}`, `thrust ${(v('thrust_kn') / 1e3).toFixed(2)} MN`, keeps(v('p_ship_w'), v('p_motor_w'))], null);
   }
 
   drawStern(view) {
@@ -382,7 +437,7 @@ export class LiveViews {
     const lines = [[`h/R ${v('h_over_r').toFixed(2)}: ${state.text}`, state.loud], [`β_T ${v('beta_t').toFixed(2)} (thrust kept)`, false],
       [`hub ${hub.toFixed(2)} m below the surface`, false], [`wave at the stern ${signed(waveStern)} m`, false],
       [`heave ${signed(heave)} m, pitch ${signed(v('pitch_deg'), 1)}° bow down`, false]];
-    const fs = Math.max(11, Math.min(15, Math.round(w / 45)));
+    const fs = Math.max(11, Math.min(this.big ? 20 : 15, Math.round(w / 45)));
     g.font = `${fs}px system-ui, sans-serif`; g.textAlign = 'left'; g.textBaseline = 'top';
     const tw = Math.max(...lines.map(([t]) => g.measureText(t).width)) + 10;
     g.fillStyle = 'rgba(255, 255, 255, 0.88)'; g.fillRect(4, 4, tw, lines.length * (fs + 3) + 6);
@@ -447,7 +502,7 @@ export class LiveViews {
     const [ra, rb] = toPic(sternF, 0), [rc, rd] = toPic(sternF - len * Math.cos(rud), -len * Math.sin(rud));
     g.strokeStyle = C.rudder; g.lineWidth = 3; g.beginPath(); g.moveTo(ra, rb); g.lineTo(rc, rd); g.stroke();
     // Corner marks: north, the waves' direction, scale, and the figures.
-    const fs = Math.max(11, Math.min(15, Math.round(w / 40)));
+    const fs = Math.max(11, Math.min(this.big ? 20 : 15, Math.round(w / 40)));
     g.font = `${fs}px system-ui, sans-serif`;
     const label = (text, x, y, align = 'left') => {
       g.textAlign = align; g.textBaseline = 'top';
