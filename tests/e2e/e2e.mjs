@@ -163,6 +163,9 @@ await check('live views draw the trace at the cursor: hub depth, wave at the ste
   assert(!bad.length, bad.join('; '));
   const text = await page.textContent('#live-text');
   assert(/h\/R/.test(text) && /MW/.test(text), `text alternative: ${text}`);
+  const followed = await page.evaluate(() => window.__liveViews.followed);
+  assert(followed >= 1, 'the live views did not follow the run while it ran');
+  console.log(`     the live views followed the run through ${followed} chunk(s) before its end`);
 });
 await check('live views: a head-seas run played at 10x shows the disc out of the water when h/R < 1 and the turbine warning at overspeed; frame time and rate', async () => {
   await page.$eval('#live', (e) => e.scrollIntoView());
@@ -461,6 +464,28 @@ await check('a linked page marks the fields the link changed', async () => {
   await p.waitForFunction(() => document.querySelector('#f-ship-drag_coeff-field.linked'), null, { timeout: 5000 });
   assert((await p.$$eval('.field.linked', (e) => e.length)) === 1, 'more than one field marked');
   await p.close();
+});
+await check('a link with a place in the live views opens the run there, and Copy link keeps the place', async () => {
+  const p = await open(`${base}#v=1&preset=head-seas-ss6&at=10.5&speed=10`, wide);
+  await p.waitForFunction(() => window.__liveViews && window.__liveViews.cols && !window.__liveViews.streaming && Math.abs(window.__liveViews.t - 10.5) < 1e-6, null, { timeout: 60000 });
+  assert((await p.inputValue('#live-speed')) === '10', `speed ${await p.inputValue('#live-speed')}`);
+  await p.evaluate(() => window.__liveViews.seek(20));
+  await p.click('#share');
+  const url = await p.inputValue('#share-url');
+  assert(/&at=20&speed=10$/.test(url), url);
+  await p.close();
+});
+await check('live views respect prefers-reduced-motion: the power arrows hold still while playing', async () => {
+  const calm = await browser.newContext({ viewport: { width: 1366, height: 768 }, reducedMotion: 'reduce' });
+  const p = await open(`${base}#v=1&preset=startup&at=30&speed=10`, calm);
+  await p.waitForFunction(() => window.__liveViews && window.__liveViews.cols && !window.__liveViews.streaming && window.__liveViews.t === 30, null, { timeout: 60000 });
+  assert(/reduced motion/.test(await p.textContent('#live')), 'no word about reduced motion');
+  await p.click('#live-play');
+  await p.waitForTimeout(800);
+  const r = await p.evaluate(() => ({ t: window.__liveViews.t, dash: window.__liveViews.dashPhase }));
+  assert(r.t > 30 && r.dash === 0, `t ${r.t}, dash phase ${r.dash}`);
+  await p.close();
+  await calm.close();
 });
 await check('every study at 1920x1080 (screenshots)', async () => {
   const p = await open(base, wide);

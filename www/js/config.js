@@ -208,7 +208,7 @@ export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, ons
 export const IPS = { omegaRadS: 377, fromHz: 0.01, toHz: 1000, points: 300, poleMapMax: 2000, debounceMs: 60 };
 
 // Progress reports while running: at most one per this many milliseconds; steps per chunk.
-export const RUN_CHUNK_STEPS = 20000;
+export const RUN_CHUNK_STEPS = 4000; // small enough that the live views follow a run (about 20 ms a chunk)
 export const PROGRESS_EVERY_MS = 100;
 
 export const STORE_KEY = 'aes-sim/edits/v1';

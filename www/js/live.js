@@ -74,7 +74,7 @@ export class LiveViews {
     this.text = el('p', { id: 'live-text', className: 'live-text' });
     this.note = el('p', { className: 'hint' });
     root.replaceChildren(el('h2', { id: 'live-h', textContent: 'Watch it happen' }), bar,
-      el('div', { className: 'live-grid' }, this.train.figure, this.stern.figure, this.plan.figure), this.text, this.note);
+      this.train.figure, el('div', { className: 'live-side' }, this.stern.figure, this.plan.figure), this.text, this.note);
     this.play.addEventListener('click', () => (this.playing ? this.pause() : this.start()));
     this.speedSel.addEventListener('change', () => { this.speed = Number(this.speedSel.value); this.rate = null; });
     this.scrub.addEventListener('input', () => this.seek(Number(this.scrub.value), { fromScrubber: true }));
@@ -100,6 +100,7 @@ export class LiveViews {
     return this.queued(async () => {
       if (constants) {
         this.streaming = true;
+        this.followed = 0;
         await this.prepare(rows, constants, scenario, text);
         this.scrub.disabled = true; this.play.disabled = true;
       } else if (this.streaming && this.cols) {
@@ -108,6 +109,7 @@ export class LiveViews {
         for (const name of Object.keys(this.cols)) cols[name] = cat(this.cols[name], rows[name]);
         this.setColumns(cols);
       } else return;
+      this.followed++;
       this.t = this.t1; this.snapped = true;
       this.scrub.value = String(this.t);
       this.draw();
@@ -146,6 +148,20 @@ export class LiveViews {
     let m = 0.5;
     for (const x of cols.wave_stern_m) m = Math.max(m, Math.abs(x));
     this.waveScale = m;
+  }
+
+  // Where the views stand, for a link: {at, speed} (null when they show nothing).
+  view() { return this.cols && !this.root.hidden && !this.streaming ? { at: this.t, speed: this.speed } : null; }
+
+  // Opens the views at a link's place (after the run's show()); a speed not on the menu is the
+  // nearest that is.
+  place({ at, speed }) {
+    return this.queued(() => {
+      const near = LIVE.speeds.reduce((a, b) => (Math.abs(Math.log(b / speed)) < Math.abs(Math.log(a / speed)) ? b : a));
+      this.speed = near; this.speedSel.value = String(near);
+      this.seek(at);
+      this.root.scrollIntoView({ block: 'start' });
+    });
   }
 
   hide() { this.queued(() => { this.pause(); this.streaming = false; this.root.hidden = true; this.cols = null; }); }
@@ -195,7 +211,8 @@ export class LiveViews {
   seek(t, { fromScrubber = false } = {}) {
     if (!this.cols) return;
     const ts = this.cols.t_s;
-    this.t = ts[rowAt(ts, Math.min(this.t1, Math.max(this.t0, t)))];
+    // (a hair of tolerance: 10.5 from a link is the row recorded at 10.500000000000002)
+    this.t = ts[rowAt(ts, Math.min(this.t1, Math.max(this.t0, t)) * (1 + 1e-12) + 1e-9)];
     this.snapped = true;
     this.lastText = 0;
     if (!fromScrubber) this.scrub.value = String(this.t);

@@ -64,12 +64,13 @@ async function onReady(m) {
   signals = new Signals(m.signals);
   form = new ScenarioForm(m.presets, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => showCompareButtons() });
   const linked = await openLink(location.hash.slice(1));
-  if (linked && !linked.refused && linked.edited.length) {
+  if (linked && !linked.refused && (linked.edited.length || linked.view)) {
     form.select(linked.name, linked.scenario);
     form.markLinked(linked.edited);
     setPhase('idle');
-    status(`This link changed ${linked.edited.length} value(s) of the study (marked in the form).`);
-    run({ focus: false });
+    if (linked.edited.length) status(`This link changed ${linked.edited.length} value(s) of the study (marked in the form).`);
+    await run({ focus: false });
+    if (linked.view) live.place(linked.view);
     return;
   }
   const saved = linked && linked.refused ? null : form.saved();
@@ -329,7 +330,9 @@ $('reset').addEventListener('click', () => {
 });
 $('share').addEventListener('click', async () => {
   if (!form) return;
-  const url = location.origin + location.pathname + linkHash(form.name, form.preset(), form.scenario);
+  const r = getResult();
+  const view = r && r.columns && JSON.stringify(r.scenario) === JSON.stringify(form.scenario) ? live.view() : null;
+  const url = location.origin + location.pathname + linkHash(form.name, form.preset(), form.scenario, view);
   $('share-url').hidden = false;
   $('share-url').value = url;
   $('share-url').select();
