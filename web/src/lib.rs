@@ -44,6 +44,12 @@ pub fn page_constants(json: &str) -> Result<String, JsError> {
     serde_json::to_string(&aes_core::presentation::PageConstants::of(&sc)).map_err(|e| JsError::new(&e.to_string()))
 }
 
+/// The signal of a column name, or an error naming it (cut to 40 characters).
+fn signal(name: &str) -> Result<aes_core::signals::Signal, JsError> {
+    aes_core::signals::Signal::from_name(name)
+        .ok_or_else(|| JsError::new(&format!("no signal named '{}'", name.chars().take(40).collect::<String>())))
+}
+
 /// A run in progress, advanced in chunks so a worker can report progress and honour cancel.
 #[wasm_bindgen]
 pub struct Run {
@@ -102,8 +108,7 @@ impl Run {
 
     /// One trace column as a Float64Array (after the run has finished).
     pub fn column(&self, name: &str) -> Result<js_sys::Float64Array, JsError> {
-        let s = aes_core::signals::Signal::from_name(name)
-            .ok_or_else(|| JsError::new(&format!("no signal named '{}'", name.chars().take(40).collect::<String>())))?;
+        let s = signal(name)?;
         let col = self.columns.get(s.index()).ok_or_else(|| JsError::new("the run has not finished"))?;
         Ok(js_sys::Float64Array::from(col.as_slice()))
     }
@@ -122,8 +127,7 @@ impl Run {
     /// Rows `from..` of one trace column recorded so far (the page follows a run as it goes).
     #[wasm_bindgen(js_name = columnFrom)]
     pub fn column_from(&self, name: &str, from: usize) -> Result<js_sys::Float64Array, JsError> {
-        let s = aes_core::signals::Signal::from_name(name)
-            .ok_or_else(|| JsError::new(&format!("no signal named '{}'", name.chars().take(40).collect::<String>())))?;
+        let s = signal(name)?;
         let col = match &self.sim {
             Some(sim) => sim.trace().get(s),
             None => self.columns.get(s.index()).map(|c| c.as_slice()).unwrap_or_default(),

@@ -6,7 +6,7 @@
 // run's own wave components summed in Rust (Sea). No physics here.
 import init, { Sea, hullProfile } from '../pkg/aes_web.js';
 import { LIVE } from './config.js';
-import { $, el } from './dom.js';
+import { el } from './dom.js';
 
 // The page's own copy of the wasm, for pictures only (the worker runs the simulations).
 let wasm = null;
@@ -68,7 +68,7 @@ export class LiveViews {
       el('label', { htmlFor: 'live-speed', textContent: 'Speed (times real time)' }), this.speedSel,
       el('label', { htmlFor: 'live-time', textContent: 'Time' }), this.scrub, this.clock);
     const redraw = () => this.draw();
-    this.train = new View('Drive train (Fig. 2-1): power flows left to right', 'The drive train: four gas turbines, four generators, two DC buses, two inverters, two motors, two propellers and the ship, with the power each passes on', '--live-train-h', redraw);
+    this.train = new View('Drive train (Fig. 2-1): power flows from the turbines to the ship', 'The drive train: four gas turbines, four generators, two DC buses, two inverters, two motors, two propellers and the ship, with the power each passes on', '--live-train-h', redraw);
     this.stern = new View('The stern in waves, from the side (Figs. 5-13 to 5-15)', 'The stern from the side: the hull, the propeller disc at its hub depth and the wave surface', '--live-side-h', redraw);
     this.plan = new View('The ship in its seaway, from above', 'The ship from above on its wave field, with its track, heading and rudder', '--live-side-h', redraw);
     this.text = el('p', { id: 'live-text', className: 'live-text' });
@@ -227,8 +227,8 @@ export class LiveViews {
       if (!reducedMotion.matches) this.dashPhase += dt;
       // Playback rate: simulated seconds per wall second since the play started.
       if (!this.rate) this.rate = { wall0: now, t0: this.t - dt * this.speed, frames: 0 };
-      this.rate.frames++;
-      this.rate.wall = now; this.rate.t = this.t;
+      // (not the last frame, whose step the end of the trace cuts short)
+      if (this.t < this.t1) { this.rate.frames++; this.rate.wall = now; this.rate.t = this.t; }
     }
     this.last = now;
     this.snapped = false;
@@ -288,13 +288,13 @@ export class LiveViews {
   }
 
   // A block: rounded box with lines of text; warn: a word shown and the warning colours.
-  block(g, x, y, w, h, lines, warn) {
+  block(g, x, y, w, h, lines, warn, fsMax = 14) {
     g.fillStyle = warn ? C.warn : C.block;
     g.strokeStyle = warn ? C.warnEdge : C.blockEdge;
     g.lineWidth = warn ? 3 : 1.2;
     g.beginPath(); g.roundRect(x, y, w, h, 6); g.fill(); g.stroke();
     const all = warn ? [...lines, warn] : lines;
-    const fs = Math.max(10, Math.min(this.big ? 20 : 14, Math.floor((h - 6) / all.length) - 2, Math.floor(w / 7.5)));
+    const fs = Math.max(10, Math.min(fsMax, Math.floor((h - 6) / all.length) - 2, Math.floor(w / 7.5)));
     g.textAlign = 'center'; g.textBaseline = 'middle';
     all.forEach((s, j) => {
       g.font = `${j === 0 ? '600 ' : ''}${fs}px system-ui, sans-serif`;
@@ -341,7 +341,7 @@ export class LiveViews {
     const box = (st, ln, ext, lines, warn) => {
       const [cx, cy] = at(st, ln);
       const [bw, bh] = down ? [ext, bs] : [bs, ext];
-      return this.block(g, cx - bw / 2, cy - bh / 2, bw, bh, lines, warn);
+      return this.block(g, cx - bw / 2, cy - bh / 2, bw, bh, lines, warn, fsMax);
     };
     const link = (st, ln, p, rating) => {
       const [x0, y0] = at(st, ln), [x1, y1] = at(st + 1, ln);
@@ -349,6 +349,8 @@ export class LiveViews {
       else this.arrow(g, x0 + bs / 2, y0, x1 - bs / 2, y1, p, rating);
     };
     const short = (down ? lane : bs) < 100; // narrow blocks: short names
+    // One type size for every block: four lines in the smallest (a block with more shrinks alone).
+    const fsMax = Math.max(10, Math.min(big > 1 ? 20 : 14, Math.floor(((down ? bs : bl) - 6) / 4) - 2));
     const pT = v('p_turbine_w') / 4, pG = v('p_generator_w') / 4, pI = v('p_inverter_w') / 2, pM = v('p_motor_w') / 2, pS = v('p_ship_w');
     const setRating = k.motor_rated_power_w / 2, plantRating = k.motor_rated_power_w;
     const speedPu = v('turbine_speed_pu'), busPu = v('bus_voltage_pu'), imPu = v('im_power_pu'), brake = v('brake_power_w');
@@ -377,11 +379,11 @@ export class LiveViews {
     const wide = Math.min(2 * lane * 0.9, bl * 1.6);
     for (let p = 0; p < 2; p++) {
       box(2, plantLn(p), wide, [`DC bus ${p + 1}`, `${busPu.toFixed(3)} pu`, `${(v('bus_voltage_v') / 1e3).toFixed(2)} kV`, ...(warn.brake ? [`brake ${mw(brake / 2)}`] : [])], warn.bus || warn.brake);
-      box(3, plantLn(p), wide, [`${short ? 'Inv.' : 'Inverter'} ${p + 1}`, mw(pI), keeps(v('p_inverter_w'), v('p_generator_w')), `${v('motor_voltage_pu').toFixed(2)} pu V`], null);
+      box(3, plantLn(p), wide, [`${short ? 'Inv.' : 'Inverter'} ${p + 1}`, mw(pI), keeps(v('p_inverter_w'), v('p_generator_w')), ...(short ? [] : [`${v('motor_voltage_pu').toFixed(2)} pu V`])], null);
       box(4, plantLn(p), wide, [`Motor ${p + 1}`, mw(pM), `${imPu.toFixed(2)} pu`, keeps(v('p_motor_w'), v('p_inverter_w'))], warn.motor);
       box(5, plantLn(p), wide, [`${short ? 'Prop.' : 'Propeller'} ${p + 1}`, `${v(`prop_rpm_${p + 1}`).toFixed(0)} rpm`, `β_T ${v('beta_t').toFixed(2)}`], null);
     }
-    box(6, 2, Math.min(across * 0.5, 4 * bl), ['Ship', `${v('ship_speed_kn').toFixed(1)} kn`, `useful ${mw(pS)}`, `thrust ${(v('thrust_kn') / 1e3).toFixed(2)} MN`, keeps(v('p_ship_w'), v('p_motor_w'))], null);
+    box(6, 2, Math.min(across * 0.5, 4 * bl), ['Ship', `${v('ship_speed_kn').toFixed(1)} kn`, `useful ${mw(pS)}`, ...(down ? [] : [`thrust ${(v('thrust_kn') / 1e3).toFixed(2)} MN`]), keeps(v('p_ship_w'), v('p_motor_w'))], null);
   }
 
   drawStern(view) {
@@ -518,6 +520,14 @@ export class LiveViews {
     const rud = (v('rudder_deg') * Math.PI) / 180, sternF = hull.x_m[0] - hull.lcg_m, len = 3 * 4;
     const [ra, rb] = toPic(sternF, 0), [rc, rd] = toPic(sternF - len * Math.cos(rud), -len * Math.sin(rud));
     g.strokeStyle = C.rudder; g.lineWidth = 3; g.beginPath(); g.moveTo(ra, rb); g.lineTo(rc, rd); g.stroke();
+    // Course over ground: the heading turned by the drift angle (the trace's atan2(v, u)), a
+    // dashed line ahead of the bow (its direction only).
+    const course = psi + (v('drift_angle_deg') * Math.PI) / 180, bowF = hull.x_m[hull.x_m.length - 1] - hull.lcg_m;
+    const [ba, bb] = toPic(bowF, 0), run = 0.35 * hull.lpp_m * s;
+    const ea = ba + run * Math.sin(course), eb = bb - run * Math.cos(course);
+    g.strokeStyle = C.hullEdge; g.fillStyle = C.hullEdge; g.lineWidth = 2; g.setLineDash([5, 4]);
+    g.beginPath(); g.moveTo(ba, bb); g.lineTo(ea, eb); g.stroke(); g.setLineDash([]);
+    g.beginPath(); g.arc(ea, eb, 3.5, 0, 2 * Math.PI); g.fill();
     // Corner marks: north, the waves' direction, scale, and the figures.
     const fs = Math.max(11, Math.min(this.big ? 20 : 15, Math.round(w / 40)));
     g.font = `${fs}px system-ui, sans-serif`;
@@ -529,7 +539,7 @@ export class LiveViews {
     };
     label(`heading ${v('heading_deg').toFixed(0)}°, ${v('ship_speed_kn').toFixed(1)} kn`, 8, 6);
     label(`rudder ${Math.abs(v('rudder_deg')).toFixed(1)}°${v('rudder_deg') > 0.05 ? ' to port' : v('rudder_deg') < -0.05 ? ' to starboard' : ''} (drawn ×3)`, 8, 10 + fs);
-    label(`drift ${v('drift_angle_deg').toFixed(1)}°`, 8, 14 + 2 * fs);
+    label(`drift ${v('drift_angle_deg').toFixed(1)}° (dashed: course over ground)`, 8, 14 + 2 * fs);
     label('N ↑', w - 8, 6, 'right');
     const from_deg = this.from;
     if (from_deg != null) {
