@@ -466,6 +466,8 @@ export class LiveViews {
     const bar = 10 * s; g.beginPath(); g.moveTo(w - bar - 10, h - 8); g.lineTo(w - 10, h - 8); g.stroke();
     g.textAlign = 'right'; g.font = `${fs - 1}px system-ui, sans-serif`; g.fillText('10 m', w - 10, h - 11);
     g.fillText('bow →', w - 10, h - 12 - fs);
+    g.textAlign = 'left'; g.fillStyle = C.muted;
+    g.fillText(`${hull.name} stern, to scale`, 8, h - 8);
   }
 
   drawPlan(view) {
