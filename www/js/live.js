@@ -28,6 +28,8 @@ const pct = (x) => (Number.isFinite(x) ? `${(100 * x).toFixed(1)} %` : '–');
 // What a stage keeps of the power through it: out/in flowing forward, in/out flowing back (a
 // braking motor passes the shaft's power to the bus); none while the flow turns round.
 const keeps = (out, into) => (into > 0 && out >= 0 ? `keeps ${pct(out / into)}` : into < 0 && out < 0 ? `keeps ${pct(into / out)}` : 'flow turning');
+// The hub's place against the local surface (eq. 2.57 as printed can put it above).
+const hubText = (hub) => (hub >= 0 ? `hub ${hub.toFixed(2)} m below the surface` : `hub ${(-hub).toFixed(2)} m above the surface`);
 const signed = (x, d = 2) => `${x >= 0 ? '+' : '−'}${Math.abs(x).toFixed(d)}`;
 
 // A canvas that follows its box's width at a CSS height; draw() redraws after a resize.
@@ -276,13 +278,15 @@ export class LiveViews {
       `motors ${mw(v('p_motor_w') / 2)} each (${v('im_power_pu').toFixed(2)} pu)`, `propellers ${v('prop_rpm_1').toFixed(0)} and ${v('prop_rpm_2').toFixed(0)} rpm`,
       `ship ${v('ship_speed_kn').toFixed(1)} kn, heading ${v('heading_deg').toFixed(0)}°, rudder ${v('rudder_deg').toFixed(1)}°`];
     if (v('brake_power_w') > 0) parts.push(`brake resistors ${mw(v('brake_power_w'))}`);
-    if (this.inWaves) parts.push(`wave at the stern ${signed(v('wave_stern_m'))} m, hub ${v('hub_depth_m').toFixed(2)} m below the surface, h/R ${v('h_over_r').toFixed(2)} (${this.discState().text}), thrust kept ${pct(v('beta_t'))}`);
+    if (this.inWaves) parts.push(`wave at the stern ${signed(v('wave_stern_m'))} m, ${hubText(v('hub_depth_m'))}, h/R ${v('h_over_r').toFixed(2)} (${this.discState().text}), thrust kept ${pct(v('beta_t'))}`);
     return parts.join('; ') + '.';
   }
 
   discState() {
-    const hr = this.v('h_over_r'), bt = this.v('beta_t');
-    if (hr < 1) return { text: 'disc breaks the surface', loud: true };
+    // The levels of eq. 2.14 on h/R (pageConstants): disk at the surface, disk out of the water.
+    const hr = this.v('h_over_r'), bt = this.v('beta_t'), lv = this.k.h_over_r_levels.map((l) => l.value);
+    if (hr <= Math.min(...lv)) return { text: 'disc out of the water', loud: true };
+    if (hr < Math.max(...lv)) return { text: 'disc breaks the surface', loud: true };
     if (bt < 1) return { text: 'ventilating', loud: true };
     return { text: 'submerged', loud: false };
   }
@@ -454,7 +458,7 @@ export class LiveViews {
       disc_out_of_water: dz - rpx < surfPx, state: state.text, surface_at_hub_m: surf(hx) };
     // Labels: a box in the top left corner (never over the disc).
     const lines = [[`h/R ${v('h_over_r').toFixed(2)}: ${state.text}`, state.loud], [`β_T ${v('beta_t').toFixed(2)} (thrust kept)`, false],
-      [`hub ${hub.toFixed(2)} m below the surface`, false], [`wave at the stern ${signed(waveStern)} m`, false],
+      [hubText(hub), false], [`wave at the stern ${signed(waveStern)} m`, false],
       [`heave ${signed(heave)} m, pitch ${signed(v('pitch_deg'), 1)}° bow down`, false]];
     const fs = Math.max(11, Math.min(this.big ? 20 : 15, Math.round(w / 45)));
     g.font = `${fs}px system-ui, sans-serif`; g.textAlign = 'left'; g.textBaseline = 'top';
