@@ -118,10 +118,12 @@ export class LiveViews {
     });
   }
 
-  // Calls run one after another (a chunk may arrive while the wasm is still loading).
+  // Calls run one after another (a chunk may arrive while the wasm is still loading); a failed
+  // call is reported by its own promise and does not stop the ones after it.
   queued(fn) {
-    this.queue = (this.queue || Promise.resolve()).then(fn);
-    return this.queue;
+    const next = (this.queue || Promise.resolve()).catch(() => {}).then(fn);
+    this.queue = next;
+    return next;
   }
 
   // text: the scenario as JSON text (a replayed trial's seed needs all 64 bits).
