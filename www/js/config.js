@@ -221,10 +221,34 @@ export const IPS = { omegaRadS: 377, fromHz: 0.01, toHz: 1000, points: 300, pole
 export const DESIGN = { basePreset: 'acceleration', poleMapMax: 40, debounceMs: 120 };
 
 // Progress reports while running: at most one per this many milliseconds; steps per chunk.
-export const RUN_CHUNK_STEPS = 20000;
+export const RUN_CHUNK_STEPS = 4000; // small enough that the live views follow a run (about 20 ms a chunk)
 export const PROGRESS_EVERY_MS = 100;
 
 export const STORE_KEY = 'aes-sim/edits/v1';
 
 // The study shown first, and when a link cannot be used.
 export const DEFAULT_PRESET = 'startup';
+
+// Live views (drive train, stern, plan view) and their playback: presentation choices only; the
+// warning levels, radius, hull and sea come from the wasm (pageConstants, hullProfile, Sea).
+export const LIVE = {
+  speeds: [0.25, 0.5, 1, 2, 5, 10, 20, 50], // playback, times real time
+  defaultSpeed: 2,
+  textEveryMs: 250, // the text alternative follows the playback at most this often
+  // Arrows of the drive train: width at a link's rated power, and how fast the dashes move
+  // (pixels per second of wall time at rated power and 1x).
+  arrowMaxPx: 16, dashPxPerS: 60,
+  // Below this canvas width [px] the drive train runs top to bottom.
+  trainVerticalBelowPx: 560,
+  // Stern view window [m]: aft of the AP, forward of it, above and below the calm waterline.
+  stern: { aftM: 14, foreM: 38, upM: 8, downM: 10 },
+  // Plan view: half the span shown [m] as a multiple of Lpp, the wave picture's grid (cells
+  // across), and how much track is drawn behind the ship [s].
+  plan: { spanOfLpp: 0.75, grid: 36, trackS: 600 },
+  colors: {
+    block: '#ffffff', blockEdge: '#4a4a4a', warn: '#fde2e1', warnEdge: '#b03a2e', text: '#1b1b1b', muted: '#4a4a4a',
+    flow: '#0b5cad', back: '#a04000', hull: '#5d6d7e', hullEdge: '#1b1b1b', water: '#2e86c1', sky: '#f4f8fb',
+    disc: '#1b1b1b', discOut: '#b03a2e', track: '#ffffff', ship: '#f8f9f9', rudder: '#a04000', waveArrow: '#0e6251',
+    crest: [214, 234, 248], trough: [21, 67, 96],
+  },
+};
