@@ -10,11 +10,8 @@ import { Signals } from './units.js';
 import { PlotBox, drawRun, drawSeaExtras } from './plots.js';
 import { MonteCarlo, showMonteCarlo } from './montecarlo.js';
 import { StabilityTab } from './stability.js';
-<<<<<<< HEAD
 import { DesignTab } from './design.js';
-=======
 import { LiveViews } from './live.js';
->>>>>>> live
 
 const plots = new PlotBox($('plots'), { more: $('more-plots'), moreBox: $('more-plots-box'), sync: 'run' });
 const monteCarlo = new MonteCarlo();
