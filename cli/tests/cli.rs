@@ -334,3 +334,18 @@ fn design_on_our_plant_and_compare() {
     let (ok, out, _) = aes_sim(&["design", "compare"]);
     assert!(ok && out.starts_with("| study | controller |") && out.contains("| acceleration | LQG/LTR |"), "{out}");
 }
+
+/// `aes-sim validate --check`: a stale report is refused with the first differing line named;
+/// a bad trial count is refused before any work.
+#[test]
+fn validate_check_refuses_a_stale_report() {
+    let (ok, _, err) = aes_sim(&["validate", "--trials", "0"]);
+    assert!(!ok && err.contains("--trials = 0"), "{err}");
+    let dir = std::env::temp_dir().join(format!("aes-cli-validate-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("validation.md");
+    std::fs::write(&f, "# Validation report\n\nan old line\n").unwrap();
+    let (ok, _, err) = aes_sim(&["validate", "--trials", "2", "--check", f.to_str().unwrap()]);
+    assert!(!ok && err.contains("is stale") && err.contains("line 3"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
