@@ -489,10 +489,11 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
         for &(d, wt) in &dirs {
             let beta = psi - (mu0 + d);
             let r = table.interpolate(w, u, beta);
-            let stern = stern_wave(kw, k.prop_x_aft_m, beta);
+            let cos_beta = libm::cos(beta);
+            let stern = stern_wave(kw, k.prop_x_aft_m, cos_beta);
             let hp = k.stern_motion.hub_transfer(stern, r.heave, r.pitch, k.prop_x_aft_m);
             let sy = hp.norm_sqr() * s * wt * dw;
-            let we = (w - kw * u * libm::cos(beta)).abs();
+            let we = (w - kw * u * cos_beta).abs();
             m0 += sy;
             m2 += sy * we * we;
         }

@@ -543,7 +543,7 @@ impl Simulation {
             if self.sea.is_some() && self.step > 0 {
                 self.sea_step();
             }
-            rk4_step(&self.plant, &mut self.x, &self.ctl.held, self.dt, &mut self.out);
+            rk4_step(&self.plant, &mut self.x, &self.ctl.held, self.dt);
             if self.sea.is_some() && !self.x[HEADING].is_finite() {
                 return Err(SimError::Diverged {
                     time_s: self.t,
