@@ -205,12 +205,20 @@ enum Cmd {
         /// Override one parameter (repeatable).
         #[arg(long = "set", value_name = "PATH=VALUE")]
         sets: Vec<String>,
+        /// No progress on stderr (by default a bar on a terminal, a line every 10 s otherwise).
+        #[arg(long)]
+        quiet: bool,
     },
-    /// Merges Monte Carlo shards (`aes-sim mc ... --partial`) into the study's summary.
+    /// Merges Monte Carlo shards (`aes-sim mc ... --partial`) into the study's summary. Reads one
+    /// shard at a time: memory does not grow with their number.
     Merge {
         /// Partial files.
-        #[arg(required = true)]
+        #[arg(required_unless_present = "files_from")]
         files: Vec<String>,
+        /// Also merge the partial files listed in this file, one path a line (`-`: standard input;
+        /// for more shards than a command line holds).
+        #[arg(long = "files-from", value_name = "LIST")]
+        files_from: Option<String>,
         /// Also write the merged partial to this file.
         #[arg(long)]
         partial: Option<String>,
@@ -551,7 +559,7 @@ fn real_main() -> Result<(), Failure> {
             )?;
             emit_json(&v)?;
         }
-        Cmd::Mc { file, trials, seed, threads, trial_range, partial, sets } => {
+        Cmd::Mc { file, trials, seed, threads, trial_range, partial, sets, quiet } => {
             let mut sc = load(&file, &sets)?;
             if let Some(n) = trials {
                 sc.monte_carlo.trials = n;
@@ -597,23 +605,28 @@ fn real_main() -> Result<(), Failure> {
             let pool =
                 rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
             let t0 = Instant::now();
+            let progress = Progress::start(b - a, "aes-sim mc", quiet);
             let result = pool.install(|| {
                 use rayon::prelude::*;
-                (a..b).into_par_iter().map(|i| aes_core::montecarlo::run_trial(&sc, i)).try_reduce(
+                (a..b).into_par_iter().map(|i| progress.tick(aes_core::montecarlo::run_trial(&sc, i))).try_reduce(
                     || aes_core::montecarlo::Partial::empty(&sc),
                     |mut x, y| {
                         x.merge(&y)?;
                         Ok(x)
                     },
                 )
-            })?;
-            let _ = writeln!(
-                std::io::stderr(),
-                "aes-sim mc: {} trials in {:.2} s on {} threads",
-                b - a,
-                t0.elapsed().as_secs_f64(),
-                pool.current_num_threads()
-            );
+            });
+            progress.finish();
+            let result = result?;
+            if !quiet {
+                let _ = writeln!(
+                    std::io::stderr(),
+                    "aes-sim mc: {} trials in {:.2} s on {} threads",
+                    b - a,
+                    t0.elapsed().as_secs_f64(),
+                    pool.current_num_threads()
+                );
+            }
             // The summary first: it is printed even when the partial cannot be written.
             if trial_range.is_none() {
                 emit_json(&aes_core::montecarlo::study_summary(&result)?)?;
@@ -623,17 +636,31 @@ fn real_main() -> Result<(), Failure> {
                 std::fs::write(path, text).map_err(|e| format!("cannot write '{}': {e}", shorten(path)))?;
             }
         }
-        Cmd::Merge { files, partial } => {
+        Cmd::Merge { files, files_from, partial } => {
             if let Some(path) = &partial {
                 check_writable(path, "--partial")?;
             }
+            // The listed names are read line by line as they are merged (never all at once).
+            let listed: Box<dyn Iterator<Item = std::io::Result<String>>> = match files_from.as_deref() {
+                None => Box::new(std::iter::empty()),
+                Some("-") => Box::new(std::io::stdin().lines()),
+                Some(list) => {
+                    let f = std::fs::File::open(list)
+                        .map_err(|e| format!("--files-from '{}': cannot read: {e}", shorten(list)))?;
+                    Box::new(std::io::BufRead::lines(std::io::BufReader::new(f)))
+                }
+            };
             let mut acc: Option<aes_core::montecarlo::Partial> = None;
-            for f in &files {
-                let text = read_bounded(f, MAX_PARTIAL_BYTES, "a Monte Carlo partial")?;
-                let p = aes_core::montecarlo::Partial::from_json(&text).map_err(|e| format!("{}: {e}", shorten(f)))?;
+            for f in files.into_iter().map(Ok).chain(listed) {
+                let f = f.map_err(|e| format!("--files-from: {e}"))?;
+                if f.trim().is_empty() {
+                    continue;
+                }
+                let text = read_bounded(&f, MAX_PARTIAL_BYTES, "a Monte Carlo partial")?;
+                let p = aes_core::montecarlo::Partial::from_json(&text).map_err(|e| format!("{}: {e}", shorten(&f)))?;
                 match acc.as_mut() {
                     None => acc = Some(p),
-                    Some(a) => a.merge(&p).map_err(|e| format!("{}: {e}", shorten(f)))?,
+                    Some(a) => a.merge(&p).map_err(|e| format!("{}: {e}", shorten(&f)))?,
                 }
             }
             let acc = acc.ok_or("no partials given")?;
@@ -730,6 +757,72 @@ fn real_main() -> Result<(), Failure> {
         }
     }
     Ok(())
+}
+
+/// Progress of a long command on stderr: on a terminal a bar redrawn in place (done, rate, time
+/// left); otherwise (a scheduler's log) a plain line every 10 s; nothing when quiet.
+struct Progress {
+    done: std::sync::Arc<std::sync::atomic::AtomicU64>,
+    stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl Progress {
+    fn start(total: u64, label: &'static str, quiet: bool) -> Progress {
+        use std::io::IsTerminal;
+        use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+        use std::sync::Arc;
+        let (done, stop) = (Arc::new(AtomicU64::new(0)), Arc::new(AtomicBool::new(false)));
+        let thread = (!quiet).then(|| {
+            let (done, stop) = (done.clone(), stop.clone());
+            let tty = std::io::stderr().is_terminal();
+            std::thread::spawn(move || {
+                let t0 = Instant::now();
+                let every = if tty { 0.25 } else { 10.0 };
+                let mut last = 0.0;
+                let line = |n: u64, bar: bool| {
+                    let s = t0.elapsed().as_secs_f64();
+                    let rate = n as f64 / s.max(1e-9);
+                    let left = if n > 0 { format!("{:.0} s left", (total - n) as f64 / rate) } else { "".into() };
+                    let text = format!("{n}/{total} trials, {rate:.1}/s, {left}");
+                    if bar {
+                        let w = 30;
+                        let k = (w as u64 * n / total.max(1)) as usize;
+                        format!("\r{label} [{}{}] {text}\x1b[K", "#".repeat(k), ".".repeat(w - k))
+                    } else {
+                        format!("{label}: {text}\n")
+                    }
+                };
+                while !stop.load(Ordering::Relaxed) {
+                    // Woken early by finish(): a short run does not wait for the next tick.
+                    std::thread::park_timeout(std::time::Duration::from_millis(100));
+                    let s = t0.elapsed().as_secs_f64();
+                    if s - last >= every {
+                        last = s;
+                        let _ = write!(std::io::stderr(), "{}", line(done.load(Ordering::Relaxed), tty));
+                    }
+                }
+                if tty {
+                    let _ = writeln!(std::io::stderr(), "{}", line(done.load(Ordering::Relaxed), true));
+                }
+            })
+        });
+        Progress { done, stop, thread }
+    }
+
+    /// Counts one finished piece of work and passes its result on.
+    fn tick<T>(&self, r: T) -> T {
+        self.done.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        r
+    }
+
+    fn finish(mut self) {
+        self.stop.store(true, std::sync::atomic::Ordering::Relaxed);
+        if let Some(t) = self.thread.take() {
+            t.thread().unpark();
+            let _ = t.join();
+        }
+    }
 }
 
 /// Exit status: 0 on success and when standard output is closed by its reader (`| head`);
