@@ -177,6 +177,22 @@ impl InductionMotor {
         0.5 * (a + b)
     }
 
+    /// Whether slip `omega_s` [rad/s] lies below both upper limits of the slip controller at
+    /// shaft speed `omega_rm`: below the peak-torque slip (the torque still rises there) and
+    /// below the slip of power `p_max`. A quick test (two circuit evaluations) that lets the
+    /// caller skip the solvers; false whenever in doubt.
+    pub fn below_slip_limits(&self, omega_rm: f64, v_max: f64, omega_s: f64, p_max: f64) -> bool {
+        if !(omega_s > 0.0 && omega_rm > 0.0) {
+            return false;
+        }
+        let q = self.shaft_torque(omega_rm, omega_s, v_max);
+        // The torque curve has one maximum: if it is higher 0.1 % further on, the peak lies
+        // beyond (by far more than the peak solver's 1e-9). The margin on the power keeps the
+        // answer clear of the power solver's tolerance (1e-10).
+        let q_up = self.shaft_torque(omega_rm, omega_s * 1.001, v_max);
+        q_up > q && q * omega_rm < p_max * (1.0 - 1e-6)
+    }
+
     /// The slip speed in [0, `omega_s_peak`] at which the shaft power Q_m omega_rm equals `p_max`,
     /// or `omega_s_peak` if even the peak torque stays below it.
     pub fn power_limited_slip(&self, omega_rm: f64, v_max: f64, omega_s_peak: f64, p_max: f64) -> f64 {
@@ -454,6 +470,29 @@ mod tests {
             let ws2 = m.peak_torque_slip(w_rm, vmax, ws * 1.3);
             assert!((ws2 - ws).abs() < 1e-6 * ws, "{ws2} vs {ws}");
         }
+    }
+
+    /// Whenever the quick test says a slip lies below the controller's upper limits, the solvers
+    /// agree (a sweep over shaft speed, inverter limit and slip, including near the limits).
+    #[test]
+    fn quick_limit_test_agrees_with_the_solvers() {
+        let m = motor();
+        let mut said_below = 0;
+        for rpm in [30.0, 120.0, 250.0, 300.0, 320.0] {
+            for vmax in [1e9, 2400.0, 1800.0] {
+                let w_rm = rpm * 2.0 * PI / 60.0;
+                let peak = m.peak_torque_slip(w_rm, vmax, 0.0);
+                let limit = m.power_limited_slip(w_rm, vmax, peak, m.p_rated);
+                for i in 1..400 {
+                    let ws = i as f64 * 0.01 * peak;
+                    if m.below_slip_limits(w_rm, vmax, ws, m.p_rated) {
+                        said_below += 1;
+                        assert!(ws < limit && ws < peak, "{rpm} rpm, v_max {vmax}: {ws} vs {limit}, {peak}");
+                    }
+                }
+            }
+        }
+        assert!(said_below > 1000, "{said_below}");
     }
 
     #[test]

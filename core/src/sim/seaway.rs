@@ -273,23 +273,21 @@ impl Seaway {
         };
         self.since_sync = if step.is_some() { self.since_sync + 1 } else { 0 };
         self.at = Some((t, x, y));
-        for (i, c) in self.comps.iter().enumerate() {
+        let (dt, dx, dy) = step.unwrap_or((0.0, 0.0, 0.0));
+        let parts = self.comps.iter().zip(&self.h).zip(self.wx.iter().zip(&self.wy)).zip(self.phasor.iter_mut());
+        for (((c, h), (&wx, &wy)), phasor) in parts {
             let w = &c.wave;
             let rate = w.omega - w.k * (xd * c.cos_mu + yd * c.sin_mu);
-            let d = step.map(|(dt, dx, dy)| w.omega * dt - w.k * (dx * c.cos_mu + dy * c.sin_mu));
-            let (cs, sn) = match d {
-                Some(d) if d.abs() <= MAX_PHASE_STEP_RAD => {
-                    let (c0, s0) = self.phasor[i];
-                    let (cd, sd) = rotation(d);
-                    (c0 * cd - s0 * sd, s0 * cd + c0 * sd)
-                }
-                _ => {
-                    let theta = w.phase_at(c.cos_mu, c.sin_mu, x, y, t);
-                    (libm::cos(theta), libm::sin(theta))
-                }
+            let d = w.omega * dt - w.k * (dx * c.cos_mu + dy * c.sin_mu);
+            let (cs, sn) = if step.is_some() && d.abs() <= MAX_PHASE_STEP_RAD {
+                let (c0, s0) = *phasor;
+                let (cd, sd) = rotation(d);
+                (c0 * cd - s0 * sd, s0 * cd + c0 * sd)
+            } else {
+                let theta = w.phase_at(c.cos_mu, c.sin_mu, x, y, t);
+                (libm::cos(theta), libm::sin(theta))
             };
-            self.phasor[i] = (cs, sn);
-            let h = &self.h[i];
+            *phasor = (cs, sn);
             let a = w.amplitude;
             // Re{H e^{i theta}} and its time derivatives.
             let re = |z: C| z.re * cs - z.im * sn;
@@ -304,10 +302,10 @@ impl Seaway {
             s.wave_stern += a * re(h[4]);
             s.sway += a * re(h[5]);
             s.yaw += a * re(h[6]);
-            cx += self.wx[i] * cs;
-            sx += self.wx[i] * sn;
-            cy += self.wy[i] * cs;
-            sy += self.wy[i] * sn;
+            cx += wx * cs;
+            sx += wx * sn;
+            cy += wy * cs;
+            sy += wy * sn;
         }
         if self.second_order {
             s.fx = newman_force(self.sign_x, cx, sx);
