@@ -12,8 +12,9 @@
 export const REQUEST = {
   validate: 'validate', // {scenario} -> done {} | error with fields
   run: 'run', // {scenario} -> progress {fraction} ... done {summary, columns, csv, wall_ms, constants}
-  mc: 'mc', // {scenario, a, b} -> progress {done} ... done {partials}
+  mc: 'mc', // {scenario, a, b, raoTable?} -> progress {done} ... done {partials} (Uint8Arrays)
   mcSummary: 'mc-summary', // {scenario, partials} -> done {summary, constants}
+  raoTable: 'rao-table', // {scenario} -> done {values} (Float64Array: the RAO table, built once)
   rao: 'rao', // {speed_kn, heading_deg, omegas} -> done {result}
   fuel: 'fuel', // {scenario, omegas} -> done {rows}
   ips: 'ips', // {args} -> done {result}
