@@ -116,9 +116,11 @@ run_tests() {
   cargo clippy --workspace --all-targets --release -- -D warnings
   say "native tests (release)"
   cargo test --workspace --release 2>&1 | tee "$log"
+  say "validation report: every row within its tolerance, docs/validation.md up to date"
+  cargo build --release -p aes-cli
+  ./target/release/aes-sim validate --check docs/validation.md
   say "cluster recipes: GNU parallel and Slurm shards merge to the single run (docs/cluster.md)"
   ensure_parallel
-  cargo build --release -q -p aes-cli
   scripts/check-sharding.sh target/release/aes-sim 2>&1 | tee -a "$log"
   say "wasm-bindgen tests in Node"
   (cd web && wasm-pack test --node --release --mode no-install) 2>&1 | tee -a "$log"
@@ -165,6 +167,12 @@ case "${1:-serve}" in
     AES_FUZZ_CASES="${AES_FUZZ_CASES:-20000}" cargo test --release -p aes-tests --test fuzz
     cargo test --release -p aes-cli --test hardening
     ;;
+  validate)
+    setup
+    build_native
+    ./target/release/aes-sim validate --out docs/validation.md
+    git --no-pager diff --stat -- docs/validation.md || true
+    ;;
   golden)
     UPDATE_GOLDEN=1 cargo test --release -p aes-tests --test golden
     git --no-pager diff --stat -- tests/golden || true
@@ -175,7 +183,7 @@ case "${1:-serve}" in
     ./target/release/aes-sim bench startup
     ;;
   *)
-    echo "usage: ./build.sh [serve|build|test|bench|fuzz|golden]" >&2
+    echo "usage: ./build.sh [serve|build|test|bench|fuzz|golden|validate]" >&2
     exit 2
     ;;
 esac

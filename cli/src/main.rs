@@ -249,6 +249,20 @@ enum Cmd {
         #[arg(long = "set", value_name = "PATH=VALUE")]
         sets: Vec<String>,
     },
+    /// The validation report: every thesis number we compare with, beside ours, with the
+    /// difference, tolerance, verdict and reason (Markdown; docs/validation.md). Exit status 1 when
+    /// a row leaves its tolerance.
+    Validate {
+        /// Monte Carlo trials per study (docs/validation.md is made with the default).
+        #[arg(long, default_value_t = 200)]
+        trials: u64,
+        /// Write the report to this file instead of standard output.
+        #[arg(long)]
+        out: Option<String>,
+        /// Compare the report with this file and fail if it differs (a stale committed report).
+        #[arg(long)]
+        check: Option<String>,
+    },
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -286,6 +300,42 @@ struct IpsPoint {
     sets: Vec<String>,
 }
 
+/// The LQG/LTR tuning and operating point, as `controllers.lqg_ltr.*` (defaults there: mu 0.01,
+/// omega_p 1 rad/s, q 1000, turbine weight 1, 25 knots).
+#[derive(clap::Args)]
+struct TuningArgs {
+    /// Kalman filter weight mu (eq. 3.4).
+    #[arg(long)]
+    mu: Option<f64>,
+    /// Pinch frequency omega_p [rad/s].
+    #[arg(long)]
+    omega_p: Option<f64>,
+    /// Recovery gain q (eq. 3.6).
+    #[arg(long)]
+    q: Option<f64>,
+    /// Weight of the turbine-speed error beside the bus voltage's.
+    #[arg(long)]
+    turbine_weight: Option<f64>,
+    /// Ship speed of the operating point [kn].
+    #[arg(long)]
+    speed_kn: Option<f64>,
+}
+
+impl TuningArgs {
+    fn any(&self) -> bool {
+        [self.mu, self.omega_p, self.q, self.turbine_weight, self.speed_kn].iter().any(Option::is_some)
+    }
+
+    /// The defaults with the given values in place.
+    fn apply(&self, t: &mut aes_core::design::LqgLtrParams) {
+        t.mu = self.mu.unwrap_or(t.mu);
+        t.omega_p_rad_s = self.omega_p.unwrap_or(t.omega_p_rad_s);
+        t.q = self.q.unwrap_or(t.q);
+        t.turbine_speed_weight = self.turbine_weight.unwrap_or(t.turbine_speed_weight);
+        t.design_speed_kn = self.speed_kn.unwrap_or(t.design_speed_kn);
+    }
+}
+
 #[derive(Subcommand)]
 enum DesignCmd {
     /// LQG/LTR (eqs. 3.2-3.10) for a square plant given as JSON
@@ -298,20 +348,19 @@ enum DesignCmd {
         /// turbine speed and bus voltage out, per unit), with the tuning below.
         #[arg(long)]
         plant: Option<String>,
-        /// Ship speed of the operating point [kn] (with --plant aes).
-        #[arg(long, default_value_t = 20.0)]
-        speed_kn: f64,
-        /// Tuning (with --plant aes): Kalman weight mu, pinch frequency [rad/s], recovery gain q.
-        #[arg(long, default_value_t = DEFAULT_MU)]
-        mu: f64,
-        #[arg(long, default_value_t = DEFAULT_OMEGA_P)]
-        omega_p: f64,
-        #[arg(long, default_value_t = DEFAULT_Q)]
-        q: f64,
+        #[command(flatten)]
+        tuning: TuningArgs,
+    },
+    /// PI against LQG/LTR in the acceleration, AC braking and head seas SS6 studies: turbine
+    /// dip, bus-voltage excursion, settling, fuel (a Markdown table; --json for JSON).
+    Compare {
+        #[command(flatten)]
+        tuning: TuningArgs,
+        /// Print JSON instead of the table.
+        #[arg(long)]
+        json: bool,
     },
 }
-
-use aes_core::sim::linearize::{DEFAULT_MU, DEFAULT_OMEGA_P, DEFAULT_Q};
 
 /// Largest design input read [bytes] (a 60-state plant in JSON is well under 1 MB).
 const MAX_DESIGN_BYTES: u64 = 4 << 20;
@@ -487,21 +536,22 @@ fn real_main() -> Result<(), Failure> {
             emit_json(&result.summary)?;
             written?;
         }
-        Cmd::Design { command: DesignCmd::LqgLtr { file, plant, speed_kn, mu, omega_p, q } } => {
+        Cmd::Design { command: DesignCmd::LqgLtr { file, plant, tuning } } => {
             let input: aes_core::design::lqg_ltr::DesignInput = match (file, plant.as_deref()) {
+                (Some(_), None) if tuning.any() => {
+                    return Err("--mu, --omega-p, --q, --turbine-weight and --speed-kn go with --plant aes; a FILE \
+                                carries its own mu, omega_p and q"
+                        .into())
+                }
                 (Some(file), None) => {
                     let text = read_bounded(&file, MAX_DESIGN_BYTES, "a design input")?;
                     serde_json::from_str(&text).map_err(|e| format!("{file}: {e}"))?
                 }
                 (None, Some("aes")) => {
-                    if !(speed_kn.is_finite() && (5.0..=32.0).contains(&speed_kn)) {
-                        return Err(format!("--speed-kn = {speed_kn}: must be a number from 5 to 32").into());
-                    }
                     let mut sc = aes_core::presets::preset("acceleration").ok_or("no acceleration preset")?;
-                    sc.initial.speed_kn = speed_kn;
-                    sc.commands[0].speed_kn = Some(speed_kn);
-                    let m = aes_core::sim::linearize::drive_train(&sc).map_err(|e| e.to_string())?;
-                    aes_core::design::lqg_ltr::DesignInput::from_plant(&m.system, mu, omega_p, q)
+                    tuning.apply(&mut sc.controllers.lqg_ltr);
+                    let d = aes_core::sim::lqg::analyse(&sc)?;
+                    return emit_json(&d);
                 }
                 (None, Some(other)) => {
                     return Err(format!("--plant = {}: the only built-in plant is `aes`", shorten(other)).into())
@@ -511,6 +561,19 @@ fn real_main() -> Result<(), Failure> {
             };
             let d = aes_core::design::lqg_ltr::design(&input)?;
             emit_json(&d)?;
+        }
+        Cmd::Design { command: DesignCmd::Compare { tuning, json } } => {
+            let mut t = aes_core::design::LqgLtrParams::default();
+            tuning.apply(&mut t);
+            let mut v = aes_core::validate::Validator::new();
+            v.section("controllers", |v| v.section("lqg_ltr", |v| t.validate(v)));
+            v.finish().map_err(|e| e.to_string())?;
+            let rows = aes_core::controller_study::compare(&t)?;
+            if json {
+                emit_json(&rows)?;
+            } else {
+                emit(&aes_core::controller_study::markdown(&rows))?;
+            }
         }
         Cmd::Ips { command } => {
             let out = ips(command)?;
@@ -689,6 +752,43 @@ fn real_main() -> Result<(), Failure> {
             });
             aes_core::validate::check_finite(&rows)?;
             emit_json(&out)?;
+        }
+        Cmd::Validate { trials, out, check } => {
+            if !(1..=100_000).contains(&trials) {
+                return Err(format!("--trials = {trials}: must be a whole number from 1 to 100000").into());
+            }
+            let size = aes_core::validation::Size { trials };
+            let sections = aes_core::validation::sections(size)?;
+            let text = aes_core::validation::markdown(&sections, size);
+            let failed: Vec<String> = sections
+                .iter()
+                .flat_map(|s| &s.rows)
+                .filter(|r| r.verdict == aes_core::validation::Verdict::Fail)
+                .map(|r| format!("{}: ours {} against {} ({})", r.quantity, r.ours, r.thesis, r.source))
+                .collect();
+            if let Some(path) = check {
+                let old = read_bounded(&path, 8 << 20, "a validation report")?;
+                if let Some((i, (a, b))) = old.lines().zip(text.lines()).enumerate().find(|(_, (a, b))| a != b) {
+                    return Err(format!(
+                        "{path} is stale (run ./build.sh validate and commit it); line {}:\n  committed: {a}\n  now:       {b}",
+                        i + 1
+                    )
+                    .into());
+                }
+                if old.lines().count() != text.lines().count() {
+                    return Err(format!(
+                        "{path} is stale (run ./build.sh validate and commit it): the number of lines differs"
+                    )
+                    .into());
+                }
+            } else if let Some(path) = out {
+                std::fs::write(&path, &text).map_err(|e| format!("{path}: {e}"))?;
+            } else {
+                emit(&text)?;
+            }
+            if !failed.is_empty() {
+                return Err(format!("{} row(s) outside their tolerance:\n{}", failed.len(), failed.join("\n")).into());
+            }
         }
         Cmd::Bench { name, repeat, sets } if name == "seakeeping" => {
             let mut best = (f64::INFINITY, f64::INFINITY);

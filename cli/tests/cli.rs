@@ -292,4 +292,60 @@ fn design_lqg_ltr_round_trip() {
     std::fs::write(&bad, r#"{"a": [[-1]], "b": [[1]], "c": [[1]], "mu": 0.01, "omega_p": 0, "q": -5}"#).unwrap();
     let (ok, _, err) = aes_sim(&["design", "lqg-ltr", bad.to_str().unwrap()]);
     assert!(!ok && err.contains("q = -5"), "{err}");
+    // Modal reduction: G(s) = 1/(s+1) + 50/(s+100) with the fast mode dropped (its DC gain kept);
+    // the reduction report and the full-plant analysis come back.
+    let red = dir.join("reduce.json");
+    std::fs::write(
+        &red,
+        r#"{"a": [[-1, 0], [0, -100]], "b": [[1], [50]], "c": [[1, 1]], "mu": 0.01, "omega_p": 0, "q": 10,
+            "reduce": {"max_frequency_rad_s": 10}}"#,
+    )
+    .unwrap();
+    let (ok, out, err) = aes_sim(&["design", "lqg-ltr", red.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["reduction"]["states_kept"], 1);
+    // The compensator has the reduced order (1 + 1 integrator); the closed loop the full (2 + 2 + 1).
+    assert_eq!(v["a_k"].as_array().unwrap().len(), 2);
+    assert_eq!(v["closed_loop_poles"].as_array().unwrap().len(), 5);
+    assert_eq!(v["stable"], true);
+    assert_eq!(v["input_margins"].as_array().unwrap().len(), 1);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `aes-sim design lqg-ltr --plant aes` and `aes-sim design compare --json`: our own plant, its
+/// margins at both inputs, and the comparison of the PI and LQG/LTR controllers in three studies.
+#[test]
+fn design_on_our_plant_and_compare() {
+    let (ok, out, err) = aes_sim(&["design", "lqg-ltr", "--plant", "aes"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["stable"], true);
+    let margins = v["input_margins"].as_array().unwrap();
+    assert_eq!(margins.len(), 2);
+    assert!(margins.iter().all(|m| m["phase_margin_deg"].as_f64().unwrap() > 45.0), "{margins:?}");
+    let (ok, _, err) = aes_sim(&["design", "lqg-ltr", "--plant", "aes", "--speed-kn", "40"]);
+    assert!(!ok && err.contains("design_speed_kn = 40"), "{err}");
+    let (ok, out, err) = aes_sim(&["design", "compare", "--json"]);
+    assert!(ok, "{err}");
+    let rows: Vec<serde_json::Value> = serde_json::from_str(&out).unwrap();
+    assert_eq!(rows.len(), 6);
+    assert_eq!((rows[0]["controller"].as_str(), rows[1]["controller"].as_str()), (Some("pi"), Some("lqg_ltr")));
+    let (ok, out, _) = aes_sim(&["design", "compare"]);
+    assert!(ok && out.starts_with("| study | controller |") && out.contains("| acceleration | LQG/LTR |"), "{out}");
+}
+
+/// `aes-sim validate --check`: a stale report is refused with the first differing line named;
+/// a bad trial count is refused before any work.
+#[test]
+fn validate_check_refuses_a_stale_report() {
+    let (ok, _, err) = aes_sim(&["validate", "--trials", "0"]);
+    assert!(!ok && err.contains("--trials = 0"), "{err}");
+    let dir = std::env::temp_dir().join(format!("aes-cli-validate-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("validation.md");
+    std::fs::write(&f, "# Validation report\n\nan old line\n").unwrap();
+    let (ok, _, err) = aes_sim(&["validate", "--trials", "2", "--check", f.to_str().unwrap()]);
+    assert!(!ok && err.contains("is stale") && err.contains("line 3"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -5,6 +5,7 @@
 //! every platform.
 
 pub mod control;
+pub mod controller_study;
 pub mod dc_link;
 pub mod design;
 pub mod fft;
@@ -34,6 +35,7 @@ pub mod stats;
 pub mod surge;
 pub mod units;
 pub mod validate;
+pub mod validation;
 pub mod waves;
 
 pub use scenario::Scenario;

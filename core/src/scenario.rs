@@ -14,6 +14,7 @@ use std::fmt;
 // Each subsystem owns its parameters (field docs with the thesis source, defaults, ranges); the
 // scenario only composes them. Re-exported so that `scenario::X` names every part of the format.
 pub use crate::dc_link::{DcLinkParams, RectifierKind};
+pub use crate::design::{ControllerDesign, LqgLtrParams};
 pub use crate::generator::{FieldControlParams, GeneratorParams};
 pub use crate::maneuvering::{AbkowitzCoefficients, HullModelKind, HullParams};
 pub use crate::motor::{MotorParams, SlipControlParams};
@@ -118,6 +119,10 @@ pub struct ControllerParams {
     /// Sample period of the discrete controllers [s]. Must be a whole number of time steps.
     /// Not given in the thesis (which calls the governor "discrete"); 5 ms.
     pub sample_period_s: f64,
+    /// Which controller runs throttles and field voltages: "pi" (the governor and field PIs
+    /// below, as in the thesis' ch. 5) or "lqg_ltr" (ch. 3.1, tuned by `lqg_ltr`).
+    pub design: ControllerDesign,
+    pub lqg_ltr: LqgLtrParams,
     pub governor: GovernorParams,
     pub field: FieldControlParams,
     pub slip: SlipControlParams,
@@ -193,6 +198,8 @@ impl Default for ControllerParams {
     fn default() -> Self {
         ControllerParams {
             sample_period_s: 0.005,
+            design: ControllerDesign::Pi,
+            lqg_ltr: LqgLtrParams::default(),
             governor: GovernorParams::default(),
             field: FieldControlParams::default(),
             slip: SlipControlParams::default(),
@@ -236,6 +243,7 @@ pub const MAX_ENVELOPE_SIGNALS: usize = 20;
 impl ControllerParams {
     pub fn validate(&self, v: &mut Validator) {
         check_range!(v, self.sample_period_s, 1.0e-4, 1.0);
+        v.section("lqg_ltr", |v| self.lqg_ltr.validate(v));
         v.section("governor", |v| self.governor.validate(v));
         v.section("field", |v| self.field.validate(v));
         v.section("slip", |v| self.slip.validate(v));

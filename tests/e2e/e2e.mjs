@@ -14,6 +14,8 @@ mkdirSync(shots, { recursive: true });
 console.log(`screenshots in ${shots}`);
 let passed = 0, failed = 0;
 async function check(name, fn) {
+  // E2E_ONLY=regex runs only the matching checks (while working on one; CI runs all).
+  if (process.env.E2E_ONLY && !new RegExp(process.env.E2E_ONLY).test(name)) return;
   try { await fn(); passed++; console.log(`ok   ${name}`); } catch (e) { failed++; console.log(`FAIL ${name}: ${e.message}`); }
 }
 function assert(c, msg) { if (!c) throw new Error(msg); }
@@ -146,6 +148,82 @@ await check('head seas: with default settings the propeller ventilates (event ma
   assert(/loss onsets/.test(await page.textContent('#plots')), 'no event key');
   await page.screenshot({ path: `${shots}/head-seas.png` });
 });
+// Live views (issue 14): what they draw is the trace at the cursor, read through the page's test
+// hook window.__liveViews (its `drawn` record and its log of every frame while playing).
+await check('live views draw the trace at the cursor: hub depth, wave at the stern, block powers', async () => {
+  await page.waitForFunction(() => window.__liveViews && window.__liveViews.cols && !document.getElementById('live').hidden, null, { timeout: 20000 });
+  const bad = await page.evaluate(() => {
+    const L = window.__liveViews, c = L.cols, out = [];
+    for (const i of [50, 300, 555, c.t_s.length - 1]) {
+      L.seek(c.t_s[i]);
+      const d = L.drawn;
+      const want = { hub: c.hub_depth_m[i], wave: c.wave_stern_m[i], turbine: c.p_turbine_w[i] / 4 / 1e6, generator: c.p_generator_w[i] / 4 / 1e6, inverter: c.p_inverter_w[i] / 2 / 1e6, motor: c.p_motor_w[i] / 2 / 1e6, ship: c.p_ship_w[i] / 1e6 };
+      const got = { hub: d.stern.hub_depth_m, wave: d.stern.wave_stern_m, turbine: d.train.turbine_mw, generator: d.train.generator_mw, inverter: d.train.inverter_mw, motor: d.train.motor_mw, ship: d.train.ship_mw };
+      for (const k of Object.keys(want)) if (got[k] !== want[k]) out.push(`t = ${c.t_s[i]} s ${k}: drawn ${got[k]}, trace ${want[k]}`);
+      if (d.row !== i) out.push(`t = ${c.t_s[i]} s: drawn row ${d.row}`);
+    }
+    return out;
+  });
+  assert(!bad.length, bad.join('; '));
+  const text = await page.textContent('#live-text');
+  assert(/h\/R/.test(text) && /MW/.test(text), `text alternative: ${text}`);
+  const followed = await page.evaluate(() => window.__liveViews.followed);
+  assert(followed >= 1, 'the live views did not follow the run while it ran');
+  console.log(`     the live views followed the run through ${followed} chunk(s) before its end`);
+});
+await check('live views: a head-seas run played at 10x shows the disc out of the water when h/R < 1 and the turbine warning at overspeed; frame time and rate', async () => {
+  await page.$eval('#live', (e) => e.scrollIntoView());
+  await page.selectOption('#live-speed', '10');
+  await page.evaluate(() => window.__liveViews.seek(0));
+  const wall0 = Date.now();
+  await page.click('#live-play');
+  await page.waitForFunction(() => !window.__liveViews.playing, null, { timeout: 30000 });
+  const wall = (Date.now() - wall0) / 1000;
+  const r = await page.evaluate(() => {
+    const L = window.__liveViews, log = L.log, lv = L.k.warnings;
+    const out = log.filter((f) => f.h_over_r < 1), over = log.filter((f) => f.turbine_pu > lv.turbine_overspeed_pu);
+    return { frames: log.length, out: out.length, outDrawn: out.filter((f) => f.disc_out).length, inDrawnOut: log.filter((f) => f.h_over_r >= 1 && f.disc_out).length,
+      over: over.length, overWarn: over.filter((f) => f.turbine_warn === 'OVERSPEED' && f.turbine_edge === '#b03a2e').length,
+      falseWarn: log.filter((f) => f.turbine_pu <= lv.turbine_overspeed_pu && f.turbine_warn).length, stats: L.stats(), end: L.t, t1: L.t1 };
+  });
+  console.log(`     live views: ${r.frames} frames over ${r.end.toFixed(1)} s simulated in ${wall.toFixed(1)} s wall; median frame ${r.stats.medianFrameMs.toFixed(2)} ms (95 % ${r.stats.p95FrameMs.toFixed(2)} ms), ${r.stats.fps.toFixed(1)} frames/s, rate ${r.stats.rate.toFixed(2)}x (asked 10x); ${r.out} frames with h/R < 1, ${r.over} with overspeed`);
+  assert(r.end === r.t1, `stopped at ${r.end} s of ${r.t1}`);
+  assert(r.out > 0, 'no frame with h/R < 1 in the head-seas run');
+  assert(r.outDrawn === r.out, `${r.out - r.outDrawn} frames with h/R < 1 drawn with the disc under water`);
+  assert(r.inDrawnOut === 0, `${r.inDrawnOut} frames with h/R >= 1 drawn with the disc out of the water`);
+  assert(r.over > 0, 'no frame with turbine overspeed in the head-seas run');
+  assert(r.overWarn === r.over && r.falseWarn === 0, `turbine warning: ${r.overWarn} of ${r.over} overspeed frames, ${r.falseWarn} false`);
+  assert(r.stats.medianFrameMs < 16, `median frame ${r.stats.medianFrameMs} ms`);
+  assert(Math.abs(r.stats.rate - 10) < 0.5, `playback rate ${r.stats.rate}x`);
+  assert(r.stats.fps > 30, `${r.stats.fps} frames/s`);
+  // A frame with the disc out of the water, for the screenshot.
+  await page.evaluate(() => { const L = window.__liveViews, c = L.cols; const i = c.h_over_r.findIndex((v) => v < 1); L.seek(c.t_s[i]); });
+  await page.$eval('#live', (e) => e.scrollIntoView());
+  await page.screenshot({ path: `${shots}/live-emerged.png` });
+});
+await check('live views: the plots\' cursor follows the playback and a click on a plot moves it', async () => {
+  const off = await page.evaluate(() => {
+    const L = window.__liveViews;
+    L.seek(40);
+    return L.timePlots().map((u) => Math.abs(u.cursor.left - u.valToPos(40, 'x')));
+  });
+  assert(off.length >= 5 && off.every((d) => d < 1), `cursor offsets ${off}`);
+  const u = await page.$('#plots .plot .u-over');
+  const box = await u.boundingBox();
+  await page.mouse.click(box.x + box.width * 0.25, box.y + box.height / 2);
+  const t = await page.evaluate(() => window.__liveViews.t);
+  assert(Math.abs(t - 20) < 2, `a click a quarter into an 80 s plot moved the playback to ${t} s`);
+  // The keyboard: the play button and the time slider.
+  await page.focus('#live-time');
+  await page.keyboard.press('ArrowRight');
+  const t2 = await page.evaluate(() => window.__liveViews.t);
+  assert(t2 > t, `ArrowRight on the time slider: ${t} -> ${t2}`);
+  await page.focus('#live-play');
+  await page.keyboard.press('Enter');
+  assert(await page.evaluate(() => window.__liveViews.playing), 'Enter on Play did not play');
+  await page.keyboard.press('Enter');
+  assert(!(await page.evaluate(() => window.__liveViews.playing)), 'Enter on Pause did not pause');
+});
 await check('compare runs: "compare with eq. 2.57 as printed" draws both runs on one plot and a table of differences', async () => {
   await page.click('text=Compare with eq. 2.57 as printed');
   await page.waitForFunction(() => !document.getElementById('compare-box').hidden && /^Done/.test(document.getElementById('status').textContent), null, { timeout: 60000 });
@@ -170,6 +248,28 @@ await check('Monte Carlo runs over workers and shows the Table 5.8 comparison an
   assert(/Table 5.8/.test(text) && /Rice/.test(text), 'no Table 5.8');
   assert((await page.$$eval('#plots .uplot', (els) => els.length)) >= 3, 'too few Monte Carlo plots');
   await page.screenshot({ path: `${shots}/monte-carlo.png` });
+});
+await check('Monte Carlo: a trial replays as a single run in the live views, and its seed reproduces it', async () => {
+  const env = await page.evaluate(() => {
+    for (const c of document.querySelectorAll('#plots .chart')) {
+      const u = c.uplot, k = u && u.series.findIndex((x) => /^trial \d+$/.test(x.label || ''));
+      if (k > 0) return { label: u.series[k].label, title: c.closest('.plot').querySelector('h3').textContent, data: Array.from(u.data[k]) };
+    }
+    return null;
+  });
+  assert(env, 'no trial drawn in the envelopes');
+  const i = Number(env.label.split(' ')[1]);
+  assert((await page.inputValue('#mc-trial')) === String(i), 'the replay field does not start at the drawn trial');
+  await page.click('#mc-replay');
+  await page.waitForFunction(() => /^Done \(/.test(document.getElementById('status').textContent) || document.getElementById('status').className === 'error', null, { timeout: 60000 });
+  const st = await page.textContent('#status');
+  assert(st.includes(`Monte Carlo trial ${i} (sea seed `), st);
+  await page.waitForFunction(() => window.__liveViews.cols && !document.getElementById('live').hidden, null, { timeout: 20000 });
+  const sig = /h\/R/.test(env.title) ? 'h_over_r' : 'im_power_pu';
+  const diffs = await page.evaluate(([sig, data]) => { const c = window.__liveViews.cols[sig]; let n = 0; for (let j = 0; j < Math.min(data.length, c.length); j++) if (data[j] != null && data[j] !== c[j]) n++; return n; }, [sig, env.data]);
+  assert(diffs === 0, `${diffs} values of ${sig} differ between the Monte Carlo trial and its replay`);
+  await page.$eval('#live', (e) => e.scrollIntoView());
+  await page.screenshot({ path: `${shots}/monte-carlo-replay.png` });
 });
 await check('a running Monte Carlo study can be cancelled and the form survives', async () => {
   await setField(page, 'monte_carlo.trials', 400);
@@ -225,6 +325,37 @@ await check('stability tab shows poles and Bode plots, and follows the slider', 
   assert((await page.$$eval('#ips-plots canvas.track', (els) => els.length)) === 1, 'no pole map');
   assert((await page.$$eval('#ips-poles tbody tr', (r) => r.length)) === 6, 'expected 6 poles above the torque threshold');
   await page.screenshot({ path: `${shots}/stability.png` });
+});
+await check('controller design tab: LTR closes the gap to the Kalman target as q grows; margins; the acceleration beside the PI loops', async () => {
+  const p = await open(base);
+  await p.click('#tab-design');
+  await p.waitForFunction(() => document.getElementById('design-status').textContent.startsWith('Stable'), null, { timeout: 20000 });
+  assert((await p.$$eval('#design-plots canvas.track', (e) => e.length)) === 1, 'no pole map');
+  assert((await p.$$eval('#design-margins tbody tr', (r) => r.length)) === 2, 'margins of two inputs expected');
+  // The largest gap between the loop's and the target's singular values [dB] below 5 rad/s.
+  const gap = () => p.$eval('#design-plots .chart', (c) => {
+    const d = c.uplot.data, n = (d.length - 1) / 2;
+    let g = 0;
+    for (let i = 0; i < d[0].length && d[0][i] < 5; i++) for (let k = 1; k <= n; k++) g = Math.max(g, Math.abs(d[k][i] - d[k + n][i]));
+    return g;
+  });
+  const gapAt = async (log10q) => {
+    const before = await p.textContent('#design-q-out');
+    await p.fill('#design-q', String(log10q));
+    await p.dispatchEvent('#design-q', 'input');
+    await p.waitForFunction((b) => document.getElementById('design-q-out').textContent !== b, before, { timeout: 10000 });
+    await p.waitForFunction((q) => document.querySelector('#design-plots .chart')?.uplot && document.getElementById('design-status').textContent.startsWith('Stable'), log10q, { timeout: 20000 });
+    await p.waitForTimeout(300);
+    return gap();
+  };
+  const g1 = await gapAt(1), g2 = await gapAt(2), g3 = await gapAt(3);
+  console.log(`     loop-to-target gap below 5 rad/s: ${g1.toFixed(2)}, ${g2.toFixed(2)}, ${g3.toFixed(2)} dB at q = 10, 100, 1000`);
+  assert(g2 < g1 && g3 < g2, `the gap does not shrink: ${g1} ${g2} ${g3}`);
+  await p.click('#design-run');
+  await p.waitForFunction(() => !document.getElementById('compare-box').hidden && /^Done/.test(document.getElementById('status').textContent), null, { timeout: 60000 });
+  assert((await p.$eval('#f-controllers-design', (e) => e.value)) === 'lqg_ltr', 'the second run is not the LQG/LTR one');
+  await p.screenshot({ path: `${shots}/design-compare.png` });
+  await p.close();
 });
 await check('extreme values never freeze the stability tab or the simulator (clean errors, then recovery)', async () => {
   // Stability tab: a field voltage of 1e300 on the generator side gets a named error at once.
@@ -306,6 +437,9 @@ for (const [w, h] of SIZES) {
     await p.waitForTimeout(300);
     assertLayout(await layout(p), 'head seas');
     await p.screenshot({ path: `${shots}/size-${w}x${h}.png` });
+    await p.$eval('#live', (e) => e.scrollIntoView());
+    await p.waitForTimeout(100);
+    await p.screenshot({ path: `${shots}/live-${w}x${h}.png` });
     await p.click('#more-plots-box summary');
     await p.waitForFunction(() => document.querySelectorAll('#more-plots .uplot').length >= 4, null, { timeout: 30000 });
     await p.waitForTimeout(300);
@@ -322,6 +456,14 @@ for (const [w, h] of SIZES) {
     const v2 = await axeSerious(p);
     assert(!v2.length, `stability tab: ${v2.join(' | ')}`);
     await p.screenshot({ path: `${shots}/stability-${w}x${h}.png` });
+    await p.click('#tab-design');
+    await p.waitForFunction(() => document.querySelectorAll('#design-plots .uplot').length === 2, null, { timeout: 20000 });
+    await p.waitForTimeout(300);
+    assertLayout(await layout(p), 'design tab');
+    assert(!(await axesWithoutUnit(p)).length, 'design axes without a unit');
+    const v3 = await axeSerious(p);
+    assert(!v3.length, `design tab: ${v3.join(' | ')}`);
+    await p.screenshot({ path: `${shots}/design-${w}x${h}.png`, fullPage: w < 500 });
     await p.close();
   });
 }
@@ -361,10 +503,12 @@ await check('the tabs follow the ARIA pattern: arrow keys move between them', as
   const p = await open(base, wide);
   await p.focus('#tab-sim');
   await p.keyboard.press('ArrowRight');
-  assert((await p.getAttribute('#tab-ips', 'aria-selected')) === 'true', 'ArrowRight did not select the stability tab');
-  assert(await p.evaluate(() => document.activeElement.id === 'tab-ips'), 'focus did not follow');
-  await p.keyboard.press('ArrowLeft');
-  assert((await p.getAttribute('#tab-sim', 'aria-selected')) === 'true', 'ArrowLeft did not come back');
+  assert((await p.getAttribute('#tab-design', 'aria-selected')) === 'true', 'ArrowRight did not select the design tab');
+  assert(await p.evaluate(() => document.activeElement.id === 'tab-design'), 'focus did not follow');
+  await p.keyboard.press('End');
+  assert((await p.getAttribute('#tab-ips', 'aria-selected')) === 'true', 'End did not select the stability tab');
+  await p.keyboard.press('Home');
+  assert((await p.getAttribute('#tab-sim', 'aria-selected')) === 'true', 'Home did not come back');
   await p.close();
 });
 await check('the address follows the study; Back and Forward restore it', async () => {
@@ -384,6 +528,28 @@ await check('a linked page marks the fields the link changed', async () => {
   await p.waitForFunction(() => document.querySelector('#f-ship-drag_coeff-field.linked'), null, { timeout: 5000 });
   assert((await p.$$eval('.field.linked', (e) => e.length)) === 1, 'more than one field marked');
   await p.close();
+});
+await check('a link with a place in the live views opens the run there, and Copy link keeps the place', async () => {
+  const p = await open(`${base}#v=1&preset=head-seas-ss6&at=10.5&speed=10`, wide);
+  await p.waitForFunction(() => window.__liveViews && window.__liveViews.cols && !window.__liveViews.streaming && Math.abs(window.__liveViews.t - 10.5) < 1e-6, null, { timeout: 60000 });
+  assert((await p.inputValue('#live-speed')) === '10', `speed ${await p.inputValue('#live-speed')}`);
+  await p.evaluate(() => window.__liveViews.seek(20));
+  await p.click('#share');
+  const url = await p.inputValue('#share-url');
+  assert(/&at=20&speed=10$/.test(url), url);
+  await p.close();
+});
+await check('live views respect prefers-reduced-motion: the power arrows hold still while playing', async () => {
+  const calm = await browser.newContext({ viewport: { width: 1366, height: 768 }, reducedMotion: 'reduce' });
+  const p = await open(`${base}#v=1&preset=startup&at=30&speed=10`, calm);
+  await p.waitForFunction(() => window.__liveViews && window.__liveViews.cols && !window.__liveViews.streaming && window.__liveViews.t === 30, null, { timeout: 60000 });
+  assert(/reduced motion/.test(await p.textContent('#live')), 'no word about reduced motion');
+  await p.click('#live-play');
+  await p.waitForTimeout(800);
+  const r = await p.evaluate(() => ({ t: window.__liveViews.t, dash: window.__liveViews.dashPhase }));
+  assert(r.t > 30 && r.dash === 0, `t ${r.t}, dash phase ${r.dash}`);
+  await p.close();
+  await calm.close();
 });
 await check('every study at 1920x1080 (screenshots)', async () => {
   const p = await open(base, wide);

@@ -44,6 +44,12 @@ pub fn page_constants(json: &str) -> Result<String, JsError> {
     serde_json::to_string(&aes_core::presentation::PageConstants::of(&sc)).map_err(|e| JsError::new(&e.to_string()))
 }
 
+/// The signal of a column name, or an error naming it (cut to 40 characters).
+fn signal(name: &str) -> Result<aes_core::signals::Signal, JsError> {
+    aes_core::signals::Signal::from_name(name)
+        .ok_or_else(|| JsError::new(&format!("no signal named '{}'", name.chars().take(40).collect::<String>())))
+}
+
 /// A run in progress, advanced in chunks so a worker can report progress and honour cancel.
 #[wasm_bindgen]
 pub struct Run {
@@ -102,10 +108,31 @@ impl Run {
 
     /// One trace column as a Float64Array (after the run has finished).
     pub fn column(&self, name: &str) -> Result<js_sys::Float64Array, JsError> {
-        let s = aes_core::signals::Signal::from_name(name)
-            .ok_or_else(|| JsError::new(&format!("no signal named '{}'", name.chars().take(40).collect::<String>())))?;
+        let s = signal(name)?;
         let col = self.columns.get(s.index()).ok_or_else(|| JsError::new("the run has not finished"))?;
         Ok(js_sys::Float64Array::from(col.as_slice()))
+    }
+}
+
+#[wasm_bindgen]
+impl Run {
+    /// Rows recorded so far (during the run and after it).
+    pub fn rows(&self) -> usize {
+        match &self.sim {
+            Some(sim) => sim.trace().len(),
+            None => self.columns.first().map_or(0, |c| c.len()),
+        }
+    }
+
+    /// Rows `from..` of one trace column recorded so far (the page follows a run as it goes).
+    #[wasm_bindgen(js_name = columnFrom)]
+    pub fn column_from(&self, name: &str, from: usize) -> Result<js_sys::Float64Array, JsError> {
+        let s = signal(name)?;
+        let col = match &self.sim {
+            Some(sim) => sim.trace().get(s),
+            None => self.columns.get(s.index()).map(|c| c.as_slice()).unwrap_or_default(),
+        };
+        Ok(js_sys::Float64Array::from(col.get(from.min(col.len())..).unwrap_or_default()))
     }
 }
 
@@ -180,6 +207,17 @@ pub fn ips_analysis(
     .to_string())
 }
 
+/// The LQG/LTR design (thesis ch. 3.1) for a scenario's drive train and `controllers.lqg_ltr`
+/// tuning, with its singular values, closed-loop poles and input margins, as JSON (the format of
+/// `aes-sim design lqg-ltr --plant aes`).
+#[wasm_bindgen(js_name = designLqgLtr)]
+pub fn design_lqg_ltr(json: &str) -> Result<String, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    let d = aes_core::sim::lqg::analyse(&sc).map_err(|e| JsError::new(&e))?;
+    aes_core::validate::check_finite(&d).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&d).map_err(|e| JsError::new(&e.to_string()))
+}
+
 /// Monte Carlo trials `a..b` of a scenario (run one after another in this worker); returns the
 /// partial statistics in binary form (`Partial::to_bytes`: the exact moments packed as they are,
 /// no JSON for the bulk), to be merged with the other workers' by `mcSummary`.
@@ -191,6 +229,22 @@ pub fn mc_range(json: &str, a: u32, b: u32) -> Result<Vec<u8>, JsError> {
     }
     let p = aes_core::montecarlo::run_range(&sc, a as u64, b as u64).map_err(|e| JsError::new(&e))?;
     p.to_bytes().map_err(|e| JsError::new(&e))
+}
+
+/// The scenario of Monte Carlo trial `i` as JSON text: the study's scenario sailing the sea of
+/// seed `trial_seed(sim.seed, i)`, which reproduces the trial as a single run. Text, because the
+/// seed uses all 64 bits and a JavaScript number keeps 53.
+#[wasm_bindgen(js_name = trialScenario)]
+pub fn trial_scenario(json: &str, i: u32) -> Result<String, JsError> {
+    let mut sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    if i as u64 >= sc.monte_carlo.trials {
+        return Err(JsError::new(&format!(
+            "trial {i}: the study has trials 0 to {}",
+            sc.monte_carlo.trials.saturating_sub(1)
+        )));
+    }
+    sc.sim.seed = aes_core::stats::trial_seed(sc.sim.seed, i as u64);
+    Ok(sc.to_json())
 }
 
 /// Merges partials (the binary ones of `mcRange`) and returns the study's summary JSON; the
@@ -254,4 +308,47 @@ pub fn fuel_study(json: &str, omegas: Vec<f64>) -> Result<String, JsError> {
     }
     let rows = aes_core::fuel_study::run(&sc, &omegas).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The side profile and waterline of the hull a run in waves uses, as JSON (the live stern and
+/// plan views draw it; positions from the aft perpendicular, heights from the calm waterline).
+#[wasm_bindgen(js_name = hullProfile)]
+pub fn hull_profile(json: &str) -> Result<String, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    serde_json::to_string(&aes_core::presentation::HullProfile::of(&sc)).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// A run's sea surface for pictures: the same seeded wave components the run sails in
+/// (`sim::seaway::wave_components`), summed at points the page asks for.
+#[wasm_bindgen]
+pub struct Sea {
+    comps: Vec<aes_core::waves::WaveComponent>,
+    out: Vec<f64>,
+}
+
+#[wasm_bindgen]
+impl Sea {
+    /// The sea of a scenario (no components in calm water).
+    #[wasm_bindgen(constructor)]
+    pub fn new(json: &str) -> Result<Sea, JsError> {
+        let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+        Ok(Sea { comps: aes_core::sim::seaway::wave_components(&sc), out: Vec::new() })
+    }
+
+    /// Number of wave components.
+    #[wasm_bindgen(getter)]
+    pub fn components(&self) -> usize {
+        self.comps.len()
+    }
+
+    /// Surface elevation [m, up] at the points (xs[i] north, ys[i] east) [m] at time t [s]
+    /// (eq. 2.55's superposition; at most 20,000 points a call).
+    pub fn elevations(&mut self, t: f64, xs: &[f64], ys: &[f64]) -> Result<js_sys::Float64Array, JsError> {
+        if xs.len() != ys.len() || xs.len() > 20_000 {
+            return Err(JsError::new("elevations: xs and ys of equal length, at most 20000 points"));
+        }
+        self.out.resize(xs.len(), 0.0);
+        aes_core::waves::elevations(&self.comps, xs, ys, t, &mut self.out);
+        Ok(js_sys::Float64Array::from(self.out.as_slice()))
+    }
 }

@@ -185,3 +185,40 @@ fn extreme_inputs_end_with_named_errors() {
     let bad = js_sys::Uint8Array::from(&bad.to_bytes().unwrap()[..]);
     assert!(message(mc_summary(vec![bad]).unwrap_err()).contains("ranges.0 = [2, 0]"));
 }
+
+/// What the live views read: rows handed out while a run goes add up to the finished column; the
+/// sea picture sums the run's own components; a trial's scenario carries its exact seed.
+#[wasm_bindgen_test]
+fn live_view_exports() {
+    let mut sc: serde_json::Value = serde_json::from_str(&preset_json("head-seas-ss6").unwrap()).unwrap();
+    sc["sim"]["duration_s"] = serde_json::json!(6.0);
+    let json = sc.to_string();
+    let mut run = Run::new(&json).unwrap();
+    let mut streamed: Vec<f64> = Vec::new();
+    let mut progress = 0.0;
+    while progress < 1.0 {
+        progress = run.advance(400).unwrap();
+        streamed.extend(run.column_from("h_over_r", streamed.len()).unwrap().to_vec());
+    }
+    assert_eq!(streamed, run.column("h_over_r").unwrap().to_vec());
+    assert_eq!(run.rows(), streamed.len());
+
+    let parsed = aes_core::Scenario::from_json(&json).unwrap();
+    let comps = aes_core::sim::seaway::wave_components(&parsed);
+    let mut sea = Sea::new(&json).unwrap();
+    assert_eq!(sea.components(), comps.len());
+    let (xs, ys) = ([10.0, -62.0], [0.0, 5.0]);
+    let got = sea.elevations(3.5, &xs, &ys).unwrap().to_vec();
+    for i in 0..2 {
+        let want = aes_core::waves::elevation(&comps, xs[i], ys[i], 3.5);
+        // The same terms in the same order (measured: equal to the last bit).
+        assert!((got[i] - want).abs() <= 1e-12 * (1.0 + want.abs()), "{} vs {want}", got[i]);
+    }
+    let hull: serde_json::Value = serde_json::from_str(&hull_profile(&json).unwrap()).unwrap();
+    assert!(hull["x_m"].as_array().unwrap().len() > 20);
+
+    let trial: serde_json::Value = serde_json::from_str(&trial_scenario(&json, 2).unwrap()).unwrap();
+    let seed = sc["sim"]["seed"].as_u64().unwrap();
+    assert_eq!(trial["sim"]["seed"].as_u64(), Some(aes_core::stats::trial_seed(seed, 2)));
+    assert!(trial_scenario(&json, 1_000_000).is_err());
+}

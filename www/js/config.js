@@ -25,6 +25,10 @@ export const FIELDS = [
     ['plant.dc_link.brake_resistor_ohm', 'Brake resistor', 'Ω', '0 for none.'],
   ]],
   ['Controllers', [
+    ['controllers.design', 'Turbine and field control', '', 'Two PI loops per set (ch. 2, 5), or one LQG/LTR controller per set moving throttle and field together (ch. 3.1; tune it in the Controller design tab).', [['pi', 'PI loops: governor and field'], ['lqg_ltr', 'LQG/LTR (ch. 3.1)']]],
+    ['controllers.lqg_ltr.q', 'LQG/LTR recovery gain q', '-', 'Eq. 3.6: larger q recovers more of the Kalman target loop.'],
+    ['controllers.lqg_ltr.mu', 'LQG/LTR Kalman weight mu', '-', 'Eq. 3.4: smaller mu makes the target loop faster.'],
+    ['controllers.lqg_ltr.turbine_speed_weight', 'LQG/LTR turbine-speed weight', '-', 'How much the turbine-speed error counts beside the bus voltage error.'],
     ['controllers.governor.kp', 'Governor K_p,t', '1/pu', 'Throttle per per-unit speed error.'],
     ['controllers.governor.slew_rate_per_s', 'Throttle slew limit', '1/s', 'Fuel schedule limit.'],
     ['controllers.field.kp', 'Field K_p,v', 'V/V', 'Ch. 5.2.1 baseline.'],
@@ -62,7 +66,7 @@ export const ORDERS_LABEL = 'Orders as JSON: time [s], speed [kn], heading [deg]
 // or this one with some values changed. `about` replaces the preset's description in the page.
 export const CHAPTERS = [
   ['Ch. 5.1 Start-up', ['startup']],
-  ['Ch. 5.2.1 Acceleration', ['acceleration', 'acceleration-high-gains']],
+  ['Ch. 5.2.1 Acceleration', ['acceleration', 'acceleration-high-gains', 'acceleration-lqg-ltr']],
   ['Ch. 5.2.2 Braking', ['ac-braking', 'ac-braking-unbuffered']],
   ['Ch. 5.2.3 Turns in calm water', ['turn-45', 'turn-90', 'turn-360']],
   ['Ch. 5.2.4 Turns and fuel in waves', ['quarter-turn-ss3', 'quarter-turn-ss6', 'fuel-regular-seas']],
@@ -75,10 +79,13 @@ export const STUDIES = {
     watch: 'The power inventory: each stage passes on a little less than it gets, turbine to generator to motor to ship. The table of efficiencies under the summary gives the numbers of Tables 5.6 and 5.7.' },
   'acceleration': { title: 'Acceleration: step to full ahead', plots: ['bus', 'speed', 'rpm', 'motor'], params: ['controllers.field.kp', 'controllers.field.ki', 'controllers.speed.shaft_ramp_rpm_per_s'],
     watch: 'Turbine speed and bus voltage dip when the motors take the load (Fig. 5-4). Then compare with higher field gains: the voltage recovers faster.',
-    compare: [{ label: 'higher field gains', preset: 'acceleration-high-gains' }] },
+    compare: [{ label: 'higher field gains', preset: 'acceleration-high-gains' }, { label: 'the LQG/LTR controller (ch. 3.1)', preset: 'acceleration-lqg-ltr' }] },
   'acceleration-high-gains': { title: 'Acceleration with higher field gains', plots: ['bus', 'speed', 'rpm', 'motor'], params: ['controllers.field.kp', 'controllers.field.ki'],
     watch: 'The bus voltage now recovers faster than the turbine speed (Fig. 5-5).',
     compare: [{ label: 'the normal gains', preset: 'acceleration' }] },
+  'acceleration-lqg-ltr': { title: 'Acceleration with the LQG/LTR controller (ch. 3.1)', plots: ['bus', 'speed', 'rpm', 'motor'], params: ['controllers.lqg_ltr.q', 'controllers.lqg_ltr.mu', 'controllers.lqg_ltr.turbine_speed_weight'],
+    watch: 'One multivariable controller per set moves throttle and field together: the bus dips about 5 % instead of 24 %, and the turbines slow further, giving up their kinetic energy to hold it.',
+    compare: [{ label: 'the PI loops', preset: 'acceleration' }] },
   'ac-braking': { title: 'Crash stop with AC braking and a brake resistor', plots: ['motor', 'brake', 'bus', 'speed', 'rpm'], params: ['plant.dc_link.brake_resistor_ohm', 'plant.dc_link.rectifier', 'controllers.slip.allow_braking'],
     watch: 'Motor power turns negative: the water drives the propellers, the motors brake as generators and the resistor burns the energy (Fig. 5-7).',
     compare: [{ label: 'no brake resistor', preset: 'ac-braking-unbuffered' }] },
@@ -156,7 +163,9 @@ export const KEY_FIGURES = [
   ['peak motor power [pu]', (s) => s.signals.im_power_pu.max],
   ['lowest motor power [pu]', (s) => s.signals.im_power_pu.min],
   ['lowest bus voltage (dip) [pu]', (s) => s.signals.bus_voltage_pu.min],
+  ['lowest turbine speed (dip) [pu]', (s) => s.signals.turbine_speed_pu.min],
   ['highest turbine speed [pu]', (s) => s.signals.turbine_speed_pu.max],
+  ['peak fuel power [MW]', (s) => s.signals.fuel_power_w.max / 1e6],
   ['final ship speed [kn]', (s) => s.signals.ship_speed_kn.final],
   ['ship speed settles after [s]', (s) => s.signals.ship_speed_kn.settling_time_s],
   ['bus voltage settles after [s]', (s) => s.signals.bus_voltage_pu.settling_time_s],
@@ -207,11 +216,39 @@ export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, ons
 // The testbed's synchronous speed is an operating-point input like the sliders.
 export const IPS = { omegaRadS: 377, fromHz: 0.01, toHz: 1000, points: 300, poleMapMax: 2000, debounceMs: 60 };
 
+// The controller design tab (ch. 3.1): the plant is the acceleration study's; poles faster than
+// poleMapMax [1/s] are listed, not drawn (the compensator's fastest are near -216 /s).
+export const DESIGN = { basePreset: 'acceleration', poleMapMax: 40, debounceMs: 120 };
+
 // Progress reports while running: at most one per this many milliseconds; steps per chunk.
-export const RUN_CHUNK_STEPS = 20000;
+export const RUN_CHUNK_STEPS = 4000; // small enough that the live views follow a run (about 20 ms a chunk)
 export const PROGRESS_EVERY_MS = 100;
 
 export const STORE_KEY = 'aes-sim/edits/v1';
 
 // The study shown first, and when a link cannot be used.
 export const DEFAULT_PRESET = 'startup';
+
+// Live views (drive train, stern, plan view) and their playback: presentation choices only; the
+// warning levels, radius, hull and sea come from the wasm (pageConstants, hullProfile, Sea).
+export const LIVE = {
+  speeds: [0.25, 0.5, 1, 2, 5, 10, 20, 50], // playback, times real time
+  defaultSpeed: 2,
+  textEveryMs: 250, // the text alternative follows the playback at most this often
+  // Arrows of the drive train: width at a link's rated power, and how fast the dashes move
+  // (pixels per second of wall time at rated power and 1x).
+  arrowMaxPx: 16, dashPxPerS: 60,
+  // Below this canvas width [px] the drive train runs top to bottom.
+  trainVerticalBelowPx: 560,
+  // Stern view window [m]: aft of the AP, forward of it, above and below the calm waterline.
+  stern: { aftM: 14, foreM: 38, upM: 8, downM: 10 },
+  // Plan view: half the span shown [m] as a multiple of Lpp, the wave picture's grid (cells
+  // across), and how much track is drawn behind the ship [s].
+  plan: { spanOfLpp: 0.75, grid: 36, trackS: 600 },
+  colors: {
+    block: '#ffffff', blockEdge: '#4a4a4a', warn: '#fde2e1', warnEdge: '#b03a2e', text: '#1b1b1b', muted: '#4a4a4a',
+    flow: '#0b5cad', back: '#a04000', hull: '#5d6d7e', hullEdge: '#1b1b1b', water: '#2e86c1', sky: '#f4f8fb',
+    disc: '#1b1b1b', discOut: '#b03a2e', track: '#ffffff', ship: '#f8f9f9', rudder: '#a04000', waveArrow: '#0e6251',
+    crest: [214, 234, 248], trough: [21, 67, 96],
+  },
+};

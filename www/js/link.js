@@ -1,4 +1,5 @@
-// Share links: #v=1&preset=NAME&d=BASE64URL(JSON of what differs from the preset). Reading a link
+// Share links: #v=1&preset=NAME&d=BASE64URL(JSON of what differs from the preset), optionally
+// &at=SECONDS&speed=X: where the live views stand and how fast they play (a link opens the run there). Reading a link
 // refuses, with a reason a person can act on, anything too long, too deep, damaged, from a newer
 // page or naming an unknown study. Pure functions: no DOM, no worker (the caller validates).
 
@@ -55,12 +56,23 @@ export function b64urlDecode(s) {
   return new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(bin, (c) => c.charCodeAt(0)));
 }
 
-// The hash of a link to `scenario`, edited from preset `name` (whose scenario is `preset`).
-export function linkHash(name, preset, scenario) {
+// The hash of a link to `scenario`, edited from preset `name` (whose scenario is `preset`);
+// view: {at, speed} of the live views, or null.
+export function linkHash(name, preset, scenario, view = null) {
   const d = diff(preset, scenario);
   let hash = `#v=${LINK_VERSION}&preset=${encodeURIComponent(name)}`;
   if (d !== undefined) hash += `&d=${b64urlEncode(JSON.stringify(d))}`;
+  if (view) hash += `&at=${Number(view.at.toFixed(3))}&speed=${view.speed}`;
   return hash;
+}
+
+// The live views' place in a link: {at, speed} when both are sensible numbers, else null (a bad
+// value only loses the place, never the scenario).
+function readView(params) {
+  if (!params.has('at')) return null;
+  const at = Number(params.get('at')), speed = Number(params.get('speed') || 1);
+  if (!(Number.isFinite(at) && at >= 0 && at <= 1e7 && Number.isFinite(speed) && speed > 0 && speed <= 1000)) return null;
+  return { at, speed };
 }
 
 // Reads a hash (without '#'): null when there is none, {refused: reason} when it cannot be used,
@@ -86,5 +98,5 @@ export function readLink(hash, presets) {
     if (!isObject(parsed)) return refuse('its scenario part is not an object');
     scenario = merge(scenario, parsed);
   }
-  return { name, scenario };
+  return { name, scenario, view: readView(params) };
 }

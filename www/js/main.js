@@ -1,6 +1,6 @@
 // The page: wires the study picker and form, the worker, the plots, kept runs, share links and the
 // address bar, exports, presentation mode and the stability tab.
-import { DEFAULT_PRESET, SUMMARY_ROWS, STUDIES, DEFAULT_PLOTS, KEY_FIGURES, studyTitle } from './config.js';
+import { DESIGN, DEFAULT_PRESET, SUMMARY_ROWS, STUDIES, DEFAULT_PLOTS, KEY_FIGURES, studyTitle } from './config.js';
 import { $, el, row, download, fmt } from './dom.js';
 import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
 import { setPhase, isBusy, setResult, getResult, progress, status, notice, etaText, setFormValid } from './state.js';
@@ -10,15 +10,28 @@ import { Signals } from './units.js';
 import { PlotBox, drawRun, drawSeaExtras } from './plots.js';
 import { MonteCarlo, showMonteCarlo } from './montecarlo.js';
 import { StabilityTab } from './stability.js';
+import { DesignTab } from './design.js';
+import { LiveViews } from './live.js';
 
 const plots = new PlotBox($('plots'), { more: $('more-plots'), moreBox: $('more-plots-box'), sync: 'run' });
 const monteCarlo = new MonteCarlo();
+const live = new LiveViews($('live'), plots);
 // Set once the first worker is ready; `client` is replaced by a fresh worker after a cancel.
 let client = null;
 let form = null;
 let signals = null;
 let kept = null; // a kept run: {name, columns, summary}
 const stability = new StabilityTab(() => client, new PlotBox($('ips-plots')));
+// The design tab's "run next to the PI loops": the acceleration with the PI loops, kept, then
+// again with this LQG/LTR tuning, drawn over it.
+const design = new DesignTab(() => client, new PlotBox($('design-plots')), () => form.preset(DESIGN.basePreset), (tuning) => {
+  if (isBusy() || !form) return;
+  selectTab('tab-sim');
+  selectStudy(DESIGN.basePreset);
+  const set = { 'controllers.design': 'lqg_ltr' };
+  for (const [k, v] of Object.entries(tuning)) set[`controllers.lqg_ltr.${k}`] = v;
+  compareWith({ set });
+});
 
 function startWorker() {
   setPhase('loading');
@@ -62,12 +75,13 @@ async function onReady(m) {
   signals = new Signals(m.signals);
   form = new ScenarioForm(m.presets, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => showCompareButtons() });
   const linked = await openLink(location.hash.slice(1));
-  if (linked && !linked.refused && linked.edited.length) {
+  if (linked && !linked.refused && (linked.edited.length || linked.view)) {
     form.select(linked.name, linked.scenario);
     form.markLinked(linked.edited);
     setPhase('idle');
-    status(`This link changed ${linked.edited.length} value(s) of the study (marked in the form).`);
-    run({ focus: false });
+    if (linked.edited.length) status(`This link changed ${linked.edited.length} value(s) of the study (marked in the form).`);
+    await run({ focus: false });
+    if (linked.view) live.place(linked.view);
     return;
   }
   const saved = linked && linked.refused ? null : form.saved();
@@ -161,35 +175,43 @@ function runName(sc) {
 
 // A failed request keeps the form and the earlier results; refused fields are marked.
 function failed(e) {
+  live.hide(); // it may hold part of the run that failed
   if (e.cancelled) return;
   setPhase('idle');
   status(e.message, true);
   form.markErrors(e.fields || []);
 }
 
-async function run({ focus = true } = {}) {
+// trial: {i, text} replays Monte Carlo trial i from its scenario text (exact 64-bit seed).
+async function run({ focus = true, trial = null } = {}) {
   if (isBusy() || !form || form.invalid.size) return;
-  const sc = form.current();
+  const text = trial ? trial.text : JSON.stringify(form.current());
+  const sc = trial ? JSON.parse(trial.text) : form.current(); // (its seed only for display)
   setPhase('running');
   status('Running...');
   const started = performance.now();
   const c = client;
   let m;
   try {
-    m = await c.request(REQUEST.run, { scenario: JSON.stringify(sc) }, (p) => progress(p.fraction, etaText(started, p.fraction)));
+    m = await c.request(REQUEST.run, { scenario: text, live: true }, (p) => {
+      progress(p.fraction, etaText(started, p.fraction));
+      if (p.rows) live.follow(p.rows, p.constants, sc, text);
+    });
   } catch (e) { failed(e); return; }
   progress(1);
-  const name = runName(sc);
-  setResult({ summary: m.summary, csv: m.csv, scenario: sc, columns: m.columns, name });
+  const seed = trial ? (trial.text.match(/"seed":\s*(\d+)/) || [])[1] : null;
+  const name = trial ? `${studyTitle(form.name)}, Monte Carlo trial ${trial.i} (sea seed ${seed})` : runName(sc);
+  setResult({ summary: m.summary, csv: m.csv, scenario: sc, text, columns: m.columns, name });
   setPhase('idle');
   showSummary(m.summary, m.constants);
   showComparison({ summary: m.summary, name });
   const order = (STUDIES[form.name] && STUDIES[form.name].plots) || DEFAULT_PLOTS;
   const { markers } = drawRun(plots, m.columns, signals, m.constants, sc, { order, kept });
   if (sc.sea.kind !== 'calm') drawSeaExtras(plots, c, sc, m.columns, m.constants, (e) => status(e.message, true));
+  live.show(m.columns, m.constants, sc, text).catch((e) => status(`The live views failed: ${e.message}`, true));
   const t = m.summary.final_time_s, wall = m.wall_ms / 1000;
   const events = sc.sea.kind === 'calm' ? '' : ` Surface losses started ${markers.length} time(s).`;
-  status(`Done: ${t} s simulated in ${wall.toFixed(2)} s (${(t / wall).toFixed(0)} times real time).${events}`);
+  status(`Done${trial ? ` (${name})` : ''}: ${t} s simulated in ${wall.toFixed(2)} s (${(t / wall).toFixed(0)} times real time).${events}`);
   if (focus) $('results').focus();
 }
 
@@ -200,6 +222,7 @@ async function runMonteCarlo() {
   if (why) { status(why, true); return; }
   const n = Number(sc.monte_carlo.trials);
   setPhase('montecarlo');
+  live.hide();
   const started = performance.now();
   let out;
   try {
@@ -213,9 +236,20 @@ async function runMonteCarlo() {
   setPhase('idle');
   $('summary-box').hidden = true;
   $('compare-box').hidden = true;
-  showMonteCarlo(plots, out.summary, signals, out.constants);
+  showMonteCarlo(plots, out.summary, signals, out.constants, { onReplay: replayTrial });
   status(`Monte Carlo done: ${n} trials in ${((performance.now() - started) / 1000).toFixed(1)} s.`);
   $('results').focus();
+}
+
+// A Monte Carlo trial as a single run (plots and live views): its scenario comes from the wasm
+// with the trial's exact seed.
+async function replayTrial(i) {
+  if (isBusy() || !form) return;
+  let r;
+  try {
+    r = await client.request(REQUEST.trial, { scenario: JSON.stringify(form.current()), i });
+  } catch (e) { failed(e); return; }
+  await run({ trial: { i, text: r.scenario } });
 }
 
 function keep() {
@@ -259,7 +293,7 @@ function cancel() {
 }
 
 // Tabs (ARIA pattern): click, or arrow keys / Home / End on the tab list.
-const TABS = [['tab-sim', 'panel-sim'], ['tab-ips', 'panel-ips']];
+const TABS = [['tab-sim', 'panel-sim'], ['tab-design', 'panel-design'], ['tab-ips', 'panel-ips']];
 function selectTab(id, focus = false) {
   for (const [tab, panel] of TABS) {
     const on = tab === id;
@@ -269,6 +303,7 @@ function selectTab(id, focus = false) {
   }
   if (focus) $(id).focus();
   if (id === 'tab-ips') stability.update();
+  if (id === 'tab-design') design.update();
 }
 for (const [tab] of TABS) $(tab).addEventListener('click', () => selectTab(tab));
 $('tabs').addEventListener('keydown', (e) => {
@@ -307,7 +342,9 @@ $('reset').addEventListener('click', () => {
 });
 $('share').addEventListener('click', async () => {
   if (!form) return;
-  const url = location.origin + location.pathname + linkHash(form.name, form.preset(), form.scenario);
+  const r = getResult();
+  const view = r && r.columns && JSON.stringify(r.scenario) === JSON.stringify(form.scenario) ? live.view() : null;
+  const url = location.origin + location.pathname + linkHash(form.name, form.preset(), form.scenario, view);
   $('share-url').hidden = false;
   $('share-url').value = url;
   $('share-url').select();
@@ -315,11 +352,12 @@ $('share').addEventListener('click', async () => {
 });
 $('export-csv').addEventListener('click', () => {
   const r = getResult();
-  if (r && r.csv) download(`${r.scenario.name}-trace.csv`, `# scenario: ${JSON.stringify(r.scenario)}\n${r.csv}`, 'text/csv');
+  if (r && r.csv) download(`${r.scenario.name}-trace.csv`, `# scenario: ${r.text || JSON.stringify(r.scenario)}\n${r.csv}`, 'text/csv');
 });
 $('export-json').addEventListener('click', () => {
   const r = getResult();
-  if (r) download(`${r.scenario.name}-summary.json`, JSON.stringify({ scenario: r.scenario, summary: r.summary }, null, 1), 'application/json');
+  // The scenario as its own text: a replayed trial's 64-bit seed survives.
+  if (r) download(`${r.scenario.name}-summary.json`, `{"scenario": ${r.text || JSON.stringify(r.scenario)},\n"summary": ${JSON.stringify(r.summary, null, 1)}}`, 'application/json');
 });
 window.addEventListener('popstate', route);
 window.addEventListener('hashchange', route);

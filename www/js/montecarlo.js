@@ -70,7 +70,8 @@ function table(caption, rows, head) {
 }
 
 // The study's summary: tables, then envelopes, histograms, onset and periodogram plots.
-export function showMonteCarlo(box, s, signals, constants) {
+// onReplay(i): replay trial i as a single run in the live views.
+export function showMonteCarlo(box, s, signals, constants, { onReplay = null } = {}) {
   box.clear();
   const a = s.arrival_time_s, r = s.rice, e = s.excess_energy_mj;
   const rows = [['Trials', s.trials], ['Seed', s.seed]];
@@ -88,6 +89,21 @@ export function showMonteCarlo(box, s, signals, constants) {
       el('p', { className: 'about', textContent: MC.riceNote }));
   }
   if (e) info.append(el('p', { className: 'about', textContent: MC.excessNote }));
+  if (onReplay) {
+    // Any trial replays as a single run: its seed, trial_seed(seed, i), reproduces it.
+    const first = (s.traces || [])[0];
+    const input = el('input', { type: 'number', id: 'mc-trial', min: '0', max: String(s.trials - 1), step: '1', value: String(first ? first.trial : 0) });
+    const go = el('button', { type: 'button', id: 'mc-replay', textContent: 'Replay this trial in the live views' });
+    const replay = () => {
+      const i = Number(input.value);
+      if (Number.isInteger(i) && i >= 0 && i < s.trials) onReplay(i); else input.setAttribute('aria-invalid', 'true');
+    };
+    go.addEventListener('click', replay);
+    input.addEventListener('keydown', (ev) => { if (ev.key === 'Enter') replay(); });
+    input.addEventListener('input', () => input.removeAttribute('aria-invalid'));
+    info.append(el('div', { className: 'row buttons' }, el('label', { htmlFor: 'mc-trial', textContent: `Trial (0 to ${s.trials - 1})` }), input, go),
+      el('p', { className: 'hint', textContent: `The red line in the envelopes is trial ${first ? first.trial : 0}. A replayed trial runs alone with its own sea (the same seed), so its plots and live views are that trial's.` }));
+  }
   const time = `time [${signals.meta('t_s').unit}]`;
   for (const [sig, env] of Object.entries(s.envelopes)) {
     const series = [

@@ -11,13 +11,18 @@
 
 export const REQUEST = {
   validate: 'validate', // {scenario} -> done {} | error with fields
-  run: 'run', // {scenario} -> progress {fraction} ... done {summary, columns, csv, wall_ms, constants}
+  // {scenario, live?} -> progress {fraction, rows?, constants?} ... done {summary, columns, csv,
+  // wall_ms, constants}; with live, progress carries the rows recorded since the last report
+  // ({name: Float64Array}) and the first also the page constants.
+  run: 'run',
   mc: 'mc', // {scenario, a, b, raoTable?} -> progress {done} ... done {partials} (Uint8Arrays)
   mcSummary: 'mc-summary', // {scenario, partials} -> done {summary, constants}
   raoTable: 'rao-table', // {scenario} -> done {values} (Float64Array: the RAO table, built once)
+  trial: 'trial', // {scenario, i} -> done {scenario}: trial i's scenario as JSON text (exact seed)
   rao: 'rao', // {speed_kn, heading_deg, omegas} -> done {result}
   fuel: 'fuel', // {scenario, omegas} -> done {rows}
   ips: 'ips', // {args} -> done {result}
+  design: 'design', // {scenario} -> done {result} (LQG/LTR design and analysis, ch. 3.1)
 };
 
 export function messageOf(e) {

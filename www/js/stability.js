@@ -68,27 +68,29 @@ export class StabilityTab {
     }
   }
 
-  // The complex plane with the stable half shaded; poles faster than IPS.poleMapMax are listed
-  // but left off the picture so the slow ones stay readable.
-  poleMap(poles) {
-    const shown = poles.filter((p) => Math.hypot(p.re, p.im) < IPS.poleMapMax);
-    const off = poles.length - shown.length;
-    const title = `Pole map [1/s, rad/s]${off ? ` (${off} pole(s) faster than ${IPS.poleMapMax} /s off the picture)` : ''}`;
-    const aria = `Pole map: ${shown.map((p) => `${p.re.toPrecision(3)}${p.im >= 0 ? '+' : ''}${p.im.toPrecision(3)}j`).join(', ')}`;
-    this.box.canvas(title, aria, (cv) => {
-      const { g, w, h } = sizedCanvas(cv, 320);
-      const span = Math.max(1, ...shown.map((p) => Math.max(Math.abs(p.re), Math.abs(p.im)))) * 1.15;
-      const px = (x) => w * 0.85 + (x / span) * w * 0.8, py = (y) => h / 2 - (y / span) * h * 0.45;
-      g.fillStyle = '#eef6ee'; g.fillRect(0, 0, px(0), h);
-      g.strokeStyle = '#888'; g.beginPath(); g.moveTo(0, py(0)); g.lineTo(w, py(0)); g.moveTo(px(0), 0); g.lineTo(px(0), h); g.stroke();
-      g.strokeStyle = '#c0392b'; g.lineWidth = 2;
-      for (const p of shown) {
-        const X = px(p.re), Y = py(p.im);
-        g.beginPath(); g.moveTo(X - 5, Y - 5); g.lineTo(X + 5, Y + 5); g.moveTo(X + 5, Y - 5); g.lineTo(X - 5, Y + 5); g.stroke();
-      }
-      g.fillStyle = '#4a4a4a'; g.font = '11px system-ui';
-      g.fillText(`${(-span).toPrecision(3)} /s`, 4, py(0) - 4);
-      g.fillText(`${span.toPrecision(3)} rad/s`, px(0) + 4, 12);
-    });
-  }
+  poleMap(poles) { drawPoleMap(this.box, poles, IPS.poleMapMax); }
+}
+
+// The complex plane with the stable half shaded; poles faster than `max` [1/s] are listed
+// but left off the picture so the slow ones stay readable.
+export function drawPoleMap(box, poles, max) {
+  const shown = poles.filter((p) => Math.hypot(p.re, p.im) < max);
+  const off = poles.length - shown.length;
+  const title = `Pole map [1/s, rad/s]${off ? ` (${off} pole(s) faster than ${max} /s off the picture)` : ''}`;
+  const aria = `Pole map: ${shown.map((p) => `${p.re.toPrecision(3)}${p.im >= 0 ? '+' : ''}${p.im.toPrecision(3)}j`).join(', ')}`;
+  box.canvas(title, aria, (cv) => {
+    const { g, w, h } = sizedCanvas(cv, 320);
+    const span = Math.max(1, ...shown.map((p) => Math.max(Math.abs(p.re), Math.abs(p.im)))) * 1.15;
+    const px = (x) => w * 0.85 + (x / span) * w * 0.8, py = (y) => h / 2 - (y / span) * h * 0.45;
+    g.fillStyle = '#eef6ee'; g.fillRect(0, 0, px(0), h);
+    g.strokeStyle = '#888'; g.beginPath(); g.moveTo(0, py(0)); g.lineTo(w, py(0)); g.moveTo(px(0), 0); g.lineTo(px(0), h); g.stroke();
+    g.strokeStyle = '#c0392b'; g.lineWidth = 2;
+    for (const p of shown) {
+      const X = px(p.re), Y = py(p.im);
+      g.beginPath(); g.moveTo(X - 5, Y - 5); g.lineTo(X + 5, Y + 5); g.moveTo(X + 5, Y - 5); g.lineTo(X - 5, Y + 5); g.stroke();
+    }
+    g.fillStyle = '#4a4a4a'; g.font = '11px system-ui';
+    g.fillText(`${(-span).toPrecision(3)} /s`, 4, py(0) - 4);
+    g.fillText(`${span.toPrecision(3)} rad/s`, px(0) + 4, 12);
+  });
 }

@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, raoJson, fuelStudy, raoTableValues, raoTableLoad } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -28,12 +28,24 @@ const handlers = {
     const t0 = performance.now();
     const run = new Run(checked(m.scenario));
     try {
-      let done = 0, lastReport = 0;
+      let done = 0, lastReport = 0, sent = 0;
+      // With m.live, each report carries the rows recorded since the last one (and the first
+      // the page constants), so the page's live views follow the run as it goes.
+      const rows = () => {
+        const n = run.rows();
+        if (!m.live || n <= sent) return {};
+        const out = {};
+        for (const { name } of signals) out[name] = run.columnFrom(name, sent);
+        const first = sent === 0;
+        sent = n;
+        return first ? { rows: out, constants: constantsOf(m.scenario) } : { rows: out };
+      };
       while (done < 1) {
         done = run.advance(RUN_CHUNK_STEPS);
         const now = performance.now();
-        if (now - lastReport > PROGRESS_EVERY_MS || done >= 1) { progress({ fraction: done }); lastReport = now; }
+        if (now - lastReport > PROGRESS_EVERY_MS && done < 1) { progress({ fraction: done, ...rows() }); lastReport = now; }
       }
+      progress({ fraction: 1 });
       const columns = {};
       const transfer = [];
       for (const { name } of signals) {
@@ -71,10 +83,13 @@ const handlers = {
     return [{ values }, [values.buffer]];
   },
 
+  [REQUEST.trial]: (m) => ({ scenario: trialScenario(checked(m.scenario), m.i) }),
+
   [REQUEST.fuel]: (m) => ({ rows: JSON.parse(fuelStudy(checked(m.scenario), new Float64Array(m.omegas))) }),
 
   [REQUEST.rao]: (m) => ({ result: JSON.parse(raoJson(m.speed_kn, m.heading_deg, new Float64Array(m.omegas))) }),
 
+  [REQUEST.design]: (m) => ({ result: JSON.parse(designLqgLtr(checked(m.scenario))) }),
   [REQUEST.ips]: (m) => {
     const a = m.args;
     return { result: JSON.parse(ipsAnalysis(a.side, a.omega, a.vfd, a.load, a.torque, a.closed, a.from_hz, a.to_hz, a.points)) };

@@ -22,8 +22,9 @@ pub fn residual(a: &DMatrix<f64>, g: &DMatrix<f64>, q: &DMatrix<f64>, x: &DMatri
 const SIGN_ITERATIONS: usize = 100;
 /// Newton-Kleinman refinement steps at most.
 const NEWTON_STEPS: usize = 4;
-/// Largest order for the Kronecker-form Lyapunov solves of the refinement (n^2 unknowns).
-const NEWTON_MAX_ORDER: usize = 40;
+/// Largest order refined by Newton-Kleinman (each step one O(n^3) Lyapunov solve): the largest
+/// augmented design, 60 states and 10 integrators.
+const NEWTON_MAX_ORDER: usize = 70;
 
 /// The stabilizing solution X of A'X + XA - XGX + Q = 0, or an error saying why there is none
 /// (eigenvalues of the Hamiltonian on the imaginary axis: the pair is not stabilizable or
@@ -52,6 +53,7 @@ pub fn care(a: &DMatrix<f64>, g: &DMatrix<f64>, q: &DMatrix<f64>) -> Result<DMat
     z.view_mut((n, 0), (n, n)).copy_from(&(-q));
     z.view_mut((n, n), (n, n)).copy_from(&(-a.transpose()));
     let mut converged = false;
+    let mut last_change = f64::INFINITY;
     for _ in 0..SIGN_ITERATIONS {
         let lu = z.clone().lu();
         // Determinant scaling |det Z|^(-1/2n), from the LU factors' logarithms (no overflow).
@@ -70,10 +72,13 @@ pub fn care(a: &DMatrix<f64>, g: &DMatrix<f64>, q: &DMatrix<f64>) -> Result<DMat
         if !z.iter().all(|v| v.is_finite()) {
             return Err("Riccati: the sign iteration diverged".into());
         }
-        if change < 1e-13 {
+        // Converged; or stagnating at the accuracy the conditioning allows (no longer shrinking
+        // by half an iteration): the Newton-Kleinman steps below finish the job.
+        if change < 1e-13 || (change < 1e-8 && change > 0.5 * last_change) {
             converged = true;
             break;
         }
+        last_change = change;
     }
     if !converged {
         return Err(format!("Riccati: the sign function did not converge in {SIGN_ITERATIONS} iterations"));
@@ -121,25 +126,34 @@ pub fn care(a: &DMatrix<f64>, g: &DMatrix<f64>, q: &DMatrix<f64>) -> Result<DMat
     Ok(x)
 }
 
-/// Solves M' D + D M = C (Kronecker form; small orders only).
+/// Solves M' D + D M = C for real M by Bartels-Stewart on the complex Schur form M = U T U^H:
+/// T^H Y + Y T = U^H C U is solved element by element (T is upper triangular), then
+/// D = Re(U Y U^H). O(n^3); None when the Schur iteration fails or M and -M' share an eigenvalue.
 fn lyapunov(m: &DMatrix<f64>, c: &DMatrix<f64>) -> Option<DMatrix<f64>> {
+    use num_complex::Complex64 as Cx;
     let n = m.nrows();
-    let mut k = DMatrix::zeros(n * n, n * n);
-    // vec(M' D + D M) = (I kron M' + M' kron I) vec(D), column-major vec.
-    for j in 0..n {
-        for i in 0..n {
-            let row = i + j * n;
-            for l in 0..n {
-                // (M' D)_{ij} = sum_l M_{li} D_{lj}
-                k[(row, l + j * n)] += m[(l, i)];
-                // (D M)_{ij} = sum_l D_{il} M_{lj}
-                k[(row, i + l * n)] += m[(l, j)];
+    let mc = m.map(|v| Cx::new(v, 0.0));
+    let (u, t) = nalgebra::linalg::Schur::try_new(mc, f64::EPSILON, crate::numerics::MAX_SWEEPS)?.unpack();
+    let f = u.adjoint() * c.map(|v| Cx::new(v, 0.0)) * &u;
+    let mut y = DMatrix::<Cx>::zeros(n, n);
+    for i in 0..n {
+        for j in 0..n {
+            let mut acc = f[(i, j)];
+            for k in 0..i {
+                acc -= t[(k, i)].conj() * y[(k, j)];
             }
+            for k in 0..j {
+                acc -= y[(i, k)] * t[(k, j)];
+            }
+            let d = t[(i, i)].conj() + t[(j, j)];
+            if d.re == 0.0 && d.im == 0.0 {
+                return None;
+            }
+            y[(i, j)] = acc / d;
         }
     }
-    let rhs = nalgebra::DVector::from_iterator(n * n, c.iter().copied());
-    let v = k.lu().solve(&rhs)?;
-    Some(DMatrix::from_iterator(n, n, v.iter().copied()))
+    let d = (&u * y * u.adjoint()).map(|z| z.re);
+    d.iter().all(|v| v.is_finite()).then_some(d)
 }
 
 #[cfg(test)]
@@ -205,6 +219,33 @@ mod tests {
         assert!(res < 1e-9, "{res:e}");
         let poles = crate::numerics::eigenvalues(&(&a - &g * &x)).unwrap();
         assert!(poles.iter().all(|p| p.re < 0.0));
+    }
+
+    /// The Lyapunov solver against a closed form: M = diag(-1, -2), C = [[-2, -3], [-3, -4]] gives
+    /// D_ij = C_ij / (m_i + m_j) = [[1, 1], [1, 1]]; and on a 30-state non-normal M, the residual
+    /// below 1e-12 relative (measured 3e-15).
+    #[test]
+    fn lyapunov_closed_form_and_residual() {
+        let m = DMatrix::from_row_slice(2, 2, &[-1.0, 0.0, 0.0, -2.0]);
+        let c = DMatrix::from_row_slice(2, 2, &[-2.0, -3.0, -3.0, -4.0]);
+        let d = lyapunov(&m, &c).unwrap();
+        assert!((d - DMatrix::from_element(2, 2, 1.0)).amax() < 1e-14);
+        let n = 30;
+        let m = DMatrix::from_fn(n, n, |i, j| {
+            if i == j {
+                -1.0 - 0.1 * i as f64
+            } else if j == i + 1 {
+                2.0
+            } else if i == j + 3 {
+                -0.7
+            } else {
+                0.0
+            }
+        });
+        let c = DMatrix::from_fn(n, n, |i, j| 1.0 / (1.0 + (i + j) as f64));
+        let d = lyapunov(&m, &c).unwrap();
+        let r = m.transpose() * &d + &d * &m - &c;
+        assert!(r.norm() < 1e-12 * c.norm(), "{:e}", r.norm() / c.norm());
     }
 
     #[test]

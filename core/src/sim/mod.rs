@@ -3,6 +3,7 @@
 //! and honours cancel between chunks); `run` does it in one go.
 
 pub mod linearize;
+pub mod lqg;
 pub mod plant;
 mod record;
 pub mod seaway;
@@ -15,7 +16,7 @@ use crate::motor::SlipController;
 use crate::prime_mover::Governor;
 use crate::propeller_losses::{loss_factors, LossParams, Ventilation};
 use crate::rudder::Autopilot;
-use crate::scenario::{HullModelKind, Scenario};
+use crate::scenario::{ControllerDesign, HullModelKind, Scenario};
 use crate::signals::{Signal, N_SIGNALS};
 use crate::speed_control::SpeedController;
 use crate::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg};
@@ -110,6 +111,9 @@ pub struct RunResult {
 struct Controllers {
     governor: [Governor; N_SETS],
     field: [FieldController; N_SETS],
+    /// With `controllers.design = "lqg_ltr"`: the design and each set's compensator, which then
+    /// run throttles and field voltages instead of `governor` and `field`.
+    lqg: Option<(lqg::LqgDesign, Vec<lqg::LqgSet>)>,
     slip: [SlipController; N_SHAFTS],
     /// Last peak-torque slip of each motor (warm start of the inline solver) [rad/s].
     peak_slip: [f64; N_SHAFTS],
@@ -219,6 +223,12 @@ impl Simulation {
             ctl: Controllers {
                 governor: [Governor::new(&scenario.controllers.governor, 0.0); N_SETS],
                 field: [FieldController::new(&scenario.controllers.field, 0.0, plant.generator.v_f_max); N_SETS],
+                lqg: match scenario.controllers.design {
+                    ControllerDesign::Pi => None,
+                    ControllerDesign::LqgLtr => {
+                        Some((lqg::LqgDesign::new(scenario, plant.generator.v_f_max)?, Vec::new()))
+                    }
+                },
                 slip: [SlipController {
                     pi: DiscretePi::new(scenario.controllers.slip.kp, scenario.controllers.slip.ki, 0.0),
                     offset: scenario.controllers.slip.zero_slip_offset_rad_s,
@@ -279,6 +289,9 @@ impl Simulation {
                 FieldController::new(&sc.controllers.field, st.field_voltage, self.plant.generator.v_f_max);
             self.ctl.held.throttle[k] = st.throttle;
             self.ctl.held.field_voltage[k] = st.field_voltage;
+        }
+        if let Some((d, sets)) = &mut self.ctl.lqg {
+            *sets = vec![lqg::LqgSet::new(d, st.throttle, st.field_voltage); N_SETS];
         }
         for s in 0..N_SHAFTS {
             self.x[bus_voltage(s)] = st.bus_voltage;
@@ -341,11 +354,22 @@ impl Simulation {
         let c = &mut self.ctl;
         // Ship speed: calm-water map plus PI trim, then the ramp-limited shaft reference.
         let shaft_ref = c.speed.update(self.speed_cmd, speed_through_water(x), ts);
-        for k in 0..N_SETS {
-            let err = (p.turbine.rated_speed - x[omega_t(k)]) / p.turbine.rated_speed;
-            c.held.throttle[k] = c.governor[k].update(err, ts);
-            let s = k / SETS_PER_SHAFT;
-            c.held.field_voltage[k] = c.field[k].update(x[bus_voltage(s)], ts);
+        match &mut c.lqg {
+            Some((d, sets)) => {
+                for (k, set) in sets.iter_mut().enumerate() {
+                    let (th, v_f) = set.update(d, x[omega_t(k)], x[bus_voltage(k / SETS_PER_SHAFT)], ts);
+                    c.held.throttle[k] = th;
+                    c.held.field_voltage[k] = v_f;
+                }
+            }
+            None => {
+                for k in 0..N_SETS {
+                    let err = (p.turbine.rated_speed - x[omega_t(k)]) / p.turbine.rated_speed;
+                    c.held.throttle[k] = c.governor[k].update(err, ts);
+                    let s = k / SETS_PER_SHAFT;
+                    c.held.field_voltage[k] = c.field[k].update(x[bus_voltage(s)], ts);
+                }
+            }
         }
         for s in 0..N_SHAFTS {
             let w_rm = x[omega_rm(s)];

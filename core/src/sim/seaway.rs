@@ -28,6 +28,37 @@ use crate::waves::{newman_force, newman_sign, newman_weight, SeaSampling, WaveCo
 use num_complex::Complex64 as C;
 use std::f64::consts::PI;
 
+/// The wave components of a scenario's sea (eqs. 2.55, 2.58: the seeded sample of the spectrum,
+/// or the one regular wave); none in calm water. The seaway and the page's wave picture share it.
+pub fn wave_components(sc: &Scenario) -> Vec<WaveComponent> {
+    let sea = &sc.sea;
+    if sea.kind == SeaKind::Calm {
+        return Vec::new();
+    }
+    // Direction of travel: opposite to where the waves come from.
+    let mu = (sea.from_deg + 180.0).to_radians();
+    match sea.kind {
+        SeaKind::Regular => vec![WaveComponent {
+            amplitude: sea.amplitude_m,
+            omega: sea.omega_rad_s,
+            k: sea.omega_rad_s * sea.omega_rad_s / G,
+            direction: mu,
+            phase: 0.0,
+        }],
+        _ => {
+            let (h, wn) = sea.spectrum();
+            let mut s = SeaSampling::new(h, wn, mu);
+            s.components = sea.components as usize;
+            if sea.omega_min_rad_s > 0.0 && sea.omega_max_rad_s > 0.0 {
+                s.omega_min = sea.omega_min_rad_s;
+                s.omega_max = sea.omega_max_rad_s;
+            }
+            s.spreading = sea.spreading;
+            s.sample(sc.sim.seed)
+        }
+    }
+}
+
 /// One component with its RAO slice at its own frequency: [speed][heading] of
 /// (heave, pitch, roll, sway, yaw; F_add).
 struct Component {
@@ -136,32 +167,10 @@ fn rotation(d: f64) -> (f64, f64) {
 impl Seaway {
     /// The seaway of `sc` (None in calm water).
     pub fn new(sc: &Scenario) -> Result<Option<Seaway>, String> {
-        let sea = &sc.sea;
-        if sea.kind == SeaKind::Calm {
+        if sc.sea.kind == SeaKind::Calm {
             return Ok(None);
         }
-        // Direction of travel: opposite to where the waves come from.
-        let mu = (sea.from_deg + 180.0).to_radians();
-        let waves: Vec<WaveComponent> = match sea.kind {
-            SeaKind::Regular => vec![WaveComponent {
-                amplitude: sea.amplitude_m,
-                omega: sea.omega_rad_s,
-                k: sea.omega_rad_s * sea.omega_rad_s / G,
-                direction: mu,
-                phase: 0.0,
-            }],
-            _ => {
-                let (h, wn) = sea.spectrum();
-                let mut s = SeaSampling::new(h, wn, mu);
-                s.components = sea.components as usize;
-                if sea.omega_min_rad_s > 0.0 && sea.omega_max_rad_s > 0.0 {
-                    s.omega_min = sea.omega_min_rad_s;
-                    s.omega_max = sea.omega_max_rad_s;
-                }
-                s.spreading = sea.spreading;
-                s.sample(sc.sim.seed)
-            }
-        };
+        let waves = wave_components(sc);
         let k = &sc.seakeeping;
         let table = rao_table(&k.grid)?;
         let (speeds, headings) = (k.grid.speeds(), k.grid.headings());

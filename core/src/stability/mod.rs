@@ -323,48 +323,78 @@ pub struct Margins {
     pub gain_crossover_rad_s: Option<f64>,
 }
 
-/// Margins of `l` searched on a logarithmic grid from `w_lo` to `w_hi` [rad/s], crossings refined
-/// by bisection.
-pub fn margins(l: &dyn Fn(f64) -> Complex64, w_lo: f64, w_hi: f64) -> Margins {
-    let grid = log_space(w_lo, w_hi, 4000);
-    let refine = |a: f64, b: f64, g: &dyn Fn(f64) -> f64| {
+/// Where a loop's Nyquist curve L(j omega) crosses the unit circle or the real axis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Crossing {
+    /// |L| = 1 at `w` [rad/s].
+    Gain { w: f64, l: Complex64 },
+    /// Im L = 0 at `w` [rad/s] (a phase crossover when Re L < 0).
+    Phase { w: f64, l: Complex64 },
+}
+
+/// Every crossing of `l` between neighbouring points of `grid` [rad/s], in frequency order, each
+/// refined by `bisections` halvings (of the log frequency). An error from `l` stops the search.
+pub fn crossings(
+    l: &dyn Fn(f64) -> Result<Complex64, String>,
+    grid: &[f64],
+    bisections: usize,
+) -> Result<Vec<Crossing>, String> {
+    let refine = |a: f64, b: f64, g: &dyn Fn(Complex64) -> f64| -> Result<f64, String> {
         let (mut a, mut b) = (a, b);
-        let ga = g(a);
-        for _ in 0..100 {
-            let m = (a * b).sqrt();
-            if (g(m) > 0.0) == (ga > 0.0) {
+        let ga = g(l(a)?);
+        for _ in 0..bisections {
+            let m = libm::sqrt(a * b);
+            if (g(l(m)?) > 0.0) == (ga > 0.0) {
                 a = m;
             } else {
                 b = m;
             }
         }
-        (a * b).sqrt()
+        Ok(libm::sqrt(a * b))
     };
+    let mag = |z: Complex64| cabs(z) - 1.0;
+    let im = |z: Complex64| z.im;
+    let vals: Vec<Complex64> = grid.iter().map(|&w| l(w)).collect::<Result<_, _>>()?;
+    let mut out = Vec::new();
+    for k in 1..grid.len() {
+        let (a, b) = (grid[k - 1], grid[k]);
+        if (mag(vals[k - 1]) > 0.0) != (mag(vals[k]) > 0.0) {
+            let w = refine(a, b, &mag)?;
+            out.push(Crossing::Gain { w, l: l(w)? });
+        }
+        if (im(vals[k - 1]) > 0.0) != (im(vals[k]) > 0.0) {
+            let w = refine(a, b, &im)?;
+            out.push(Crossing::Phase { w, l: l(w)? });
+        }
+    }
+    Ok(out)
+}
+
+/// Margins of `l` searched on a logarithmic grid from `w_lo` to `w_hi` [rad/s], crossings refined
+/// by bisection: the lowest gain crossover and the lowest phase crossover.
+pub fn margins(l: &dyn Fn(f64) -> Complex64, w_lo: f64, w_hi: f64) -> Margins {
     let mut out = Margins {
         gain_margin_db: None,
         phase_crossover_rad_s: None,
         phase_margin_deg: None,
         gain_crossover_rad_s: None,
     };
-    let mag = |w: f64| cabs(l(w)) - 1.0;
-    let im = |w: f64| l(w).im;
-    for k in 1..grid.len() {
-        let (a, b) = (grid[k - 1], grid[k]);
-        if out.gain_crossover_rad_s.is_none() && (mag(a) > 0.0) != (mag(b) > 0.0) {
-            let w = refine(a, b, &mag);
-            let mut pm = carg(l(w)).to_degrees() + 180.0;
-            if pm > 180.0 {
-                pm -= 360.0;
+    let found = crossings(&|w| Ok(l(w)), &log_space(w_lo, w_hi, 4000), 100).unwrap_or_default();
+    for c in found {
+        match c {
+            Crossing::Gain { w, l } if out.gain_crossover_rad_s.is_none() => {
+                let mut pm = carg(l).to_degrees() + 180.0;
+                if pm > 180.0 {
+                    pm -= 360.0;
+                }
+                out.gain_crossover_rad_s = Some(w);
+                out.phase_margin_deg = Some(pm);
             }
-            out.gain_crossover_rad_s = Some(w);
-            out.phase_margin_deg = Some(pm);
-        }
-        if out.phase_crossover_rad_s.is_none() && (im(a) > 0.0) != (im(b) > 0.0) {
-            let w = refine(a, b, &im);
-            if l(w).re < 0.0 {
+            Crossing::Phase { w, l } if out.phase_crossover_rad_s.is_none() && l.re < 0.0 => {
                 out.phase_crossover_rad_s = Some(w);
-                out.gain_margin_db = Some(-20.0 * libm::log10(cabs(l(w))));
+                out.gain_margin_db = Some(-20.0 * libm::log10(cabs(l)));
             }
+            _ => {}
         }
     }
     out

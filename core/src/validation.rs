@@ -1,0 +1,606 @@
+//! The validation report (`aes-sim validate`, docs/validation.md): every thesis number we compare
+//! with, beside ours, with the difference, the tolerance we claim, the verdict and the reason for
+//! every difference. Generated, never hand-written: a change that moves a number shows in the
+//! report's diff, and `aes-sim validate --check` (run by `./build.sh test`) fails when a row leaves
+//! its tolerance or the committed report is stale.
+
+use crate::montecarlo::{run_range, study_summary};
+use crate::presets::preset;
+use crate::scenario::{Scenario, SternMotion};
+use crate::stability::{generator_side::GeneratorSideParams, motor_side::MotorSideParams};
+use crate::units::rad_s_to_rpm;
+use serde::Serialize;
+
+/// How far ours may be from the thesis' number.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub enum Tolerance {
+    /// |ours - thesis| <= x.
+    Abs(f64),
+    /// |ours - thesis| <= x |thesis|.
+    Rel(f64),
+}
+
+/// What a row says.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Verdict {
+    /// Within the tolerance.
+    Pass,
+    /// Outside the tolerance: the build fails.
+    Fail,
+    /// A difference whose cause is known and written in the reason (a parameter the thesis does
+    /// not print, a definition it leaves open, a thesis number that its own inputs do not give).
+    Explained,
+    /// A known difference whose cause is still being investigated (no tolerance is claimed; the
+    /// reason says what is known).
+    Open,
+}
+
+/// One compared number.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Row {
+    pub quantity: String,
+    /// Where the thesis prints it.
+    pub source: String,
+    pub thesis: f64,
+    pub ours: f64,
+    pub unit: &'static str,
+    /// None for an open difference.
+    pub tolerance: Option<Tolerance>,
+    pub verdict: Verdict,
+    /// Why ours differs, or what the agreement rests on.
+    pub reason: String,
+}
+
+/// A titled group of rows.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Section {
+    pub title: &'static str,
+    pub note: String,
+    pub rows: Vec<Row>,
+}
+
+fn row(quantity: &str, source: &str, thesis: f64, ours: f64, unit: &'static str, tol: Tolerance, reason: &str) -> Row {
+    let ok = match tol {
+        Tolerance::Abs(x) => (ours - thesis).abs() <= x,
+        Tolerance::Rel(x) => (ours - thesis).abs() <= x * thesis.abs(),
+    };
+    Row {
+        quantity: quantity.into(),
+        source: source.into(),
+        thesis,
+        ours,
+        unit,
+        tolerance: Some(tol),
+        verdict: if ok && ours.is_finite() { Verdict::Pass } else { Verdict::Fail },
+        reason: reason.into(),
+    }
+}
+
+fn open(quantity: &str, source: &str, thesis: f64, ours: f64, unit: &'static str, reason: &str) -> Row {
+    Row {
+        quantity: quantity.into(),
+        source: source.into(),
+        thesis,
+        ours,
+        unit,
+        tolerance: None,
+        verdict: Verdict::Open,
+        reason: reason.into(),
+    }
+}
+
+fn explained(quantity: &str, source: &str, thesis: f64, ours: f64, unit: &'static str, reason: &str) -> Row {
+    Row { verdict: Verdict::Explained, ..open(quantity, source, thesis, ours, unit, reason) }
+}
+
+/// How large a run of the report is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Size {
+    /// Monte Carlo trials of each study (the thesis: 189 for Table 5.8, 100 for the excess energy).
+    pub trials: u64,
+}
+
+impl Default for Size {
+    /// What CI runs: 200 trials (the report says so beside every Monte Carlo row).
+    fn default() -> Self {
+        Size { trials: 200 }
+    }
+}
+
+fn run(sc: &Scenario) -> Result<crate::RunResult, String> {
+    crate::run(sc).map_err(|e| format!("{}: {e}", sc.name))
+}
+
+fn startup_to(kn: f64) -> Scenario {
+    let mut s = crate::presets::startup();
+    s.commands[0].speed_kn = Some(kn);
+    s.sim.duration_s = 400.0;
+    s
+}
+
+/// Every section of the report.
+pub fn sections(size: Size) -> Result<Vec<Section>, String> {
+    Ok(vec![
+        table_2_4()?,
+        table_4_1()?,
+        table_4_2()?,
+        table_5_7()?,
+        chapter_5()?,
+        table_5_8(size)?,
+        excess_energy(size)?,
+        analytic(size)?,
+    ])
+}
+
+fn table_2_4() -> Result<Section, String> {
+    let printed = [(2, 0.997, 0.984), (3, 0.838, 2.952), (4, 0.714, 6.232), (5, 0.648, 10.824), (6, 0.507, 16.400)];
+    let mut rows = Vec::new();
+    for (ss, w, h_ft) in printed {
+        let (w_ours, h_ours) = crate::waves::sea_state(ss).ok_or("no sea state")?;
+        rows.push(row(
+            &format!("SS{ss} peak frequency"),
+            "Table 2.4",
+            w,
+            w_ours,
+            "rad/s",
+            Tolerance::Abs(0.0),
+            "copied",
+        ));
+        rows.push(row(
+            &format!("SS{ss} significant height"),
+            "Table 2.4",
+            h_ft,
+            h_ours / 0.3048,
+            "ft",
+            Tolerance::Rel(1e-12),
+            "copied (stored in metres)",
+        ));
+        // Eq. 2.58's zeroth moment is H^2/16 in closed form; the integral of our spectrum.
+        let (lo, hi, n) = (0.05 * w, 20.0 * w, 20_000);
+        let dw = (hi - lo) / n as f64;
+        let m0: f64 = (0..n).map(|i| crate::waves::bretschneider(lo + (i as f64 + 0.5) * dw, h_ours, w) * dw).sum();
+        rows.push(row(
+            &format!("SS{ss} spectral area m0 / (H^2/16)"),
+            "eq. 2.58 (closed form)",
+            1.0,
+            m0 / (h_ours * h_ours / 16.0),
+            "-",
+            Tolerance::Abs(1e-4),
+            "midpoint rule on 0.05 to 20 omega_n; the tails beyond hold under 1e-5",
+        ));
+    }
+    Ok(Section { title: "Table 2.4: Bretschneider sea states", note: String::new(), rows })
+}
+
+fn table_4_1() -> Result<Section, String> {
+    let p = GeneratorSideParams::default();
+    let s = p.steady_state(377.0, 28.5, 45.0)?;
+    let src = "Table 4.1, steady-state column";
+    let hf = "; the testbed's high-fidelity column differs from the thesis' tool by the same amount";
+    Ok(Section {
+        title: "Table 4.1: generator side steady state (omega = 377 rad/s, v_fd = 28.5 V, I = 45 A)",
+        note: "The testbed's parameters are not printed; they are reconstructed from the thesis' own numbers \
+               (shared/data/purdue_testbed_params.md), so |v_gs| and i_fd are not independent checks."
+            .into(),
+        rows: vec![
+            row("|v_gs|", src, 457.74, s.v_gs_mag, "V", Tolerance::Rel(2e-4), &format!("L_md chosen to give it{hf}")),
+            row("|i_gs|", src, 48.81, s.i_gs_mag, "A", Tolerance::Rel(2e-4), "rectifier model of eqs. 4.8-4.10"),
+            row("i_fd", src, 108.75, s.i_fd, "A", Tolerance::Rel(1e-12), "r_fd is v_fd / i_fd of this table"),
+            row("v~_dc", src, 743.17, s.v_dc_rect, "V", Tolerance::Rel(2e-4), "X_co = 0.323 ohm as printed"),
+            row("i_dc", src, 45.09, s.i_dc, "A", Tolerance::Rel(2e-4), "the load current sink plus the droop"),
+            row("cos phi", src, 0.982, s.cos_phi, "-", Tolerance::Abs(5e-4), "half a unit of the printed digit"),
+        ],
+    })
+}
+
+fn table_4_2() -> Result<Section, String> {
+    let s = MotorSideParams::default().steady_state(100.0)?;
+    let src = "Table 4.2, steady-state column";
+    let tol = Tolerance::Rel(1e-4);
+    Ok(Section {
+        title: "Table 4.2: motor side steady state (T* = 100 N m)",
+        note: "r_s and r_r reconstructed to reproduce this column (motor_side.rs); the high-fidelity column's \
+               431.06 V differs by 4.6 % from both, the square-wave harmonics the thesis names."
+            .into(),
+        rows: vec![
+            row("T_m0", src, 100.0, s.t_m0, "N m", tol, "the torque command"),
+            row("omega_r0", src, 377.0, s.omega_r0, "rad/s", tol, "eq. 4.31"),
+            row("omega_s0", src, 1.667, s.omega_s0, "rad/s", tol, "slip of the reconstructed rotor resistance"),
+            row("|i_s|", src, 47.80, s.i_s_mag, "A", tol, ""),
+            row("|i_r|", src, 32.38, s.i_r_mag, "A", tol, ""),
+            row("|v_s|", src, 411.91, s.v_s_mag, "V", tol, "r_s chosen to give it"),
+        ],
+    })
+}
+
+fn table_5_7() -> Result<Section, String> {
+    let thesis = [
+        (20.0, [0.909, 0.991, 0.993, 0.705]),
+        (25.0, [0.950, 0.992, 0.992, 0.703]),
+        (30.0, [0.971, 0.988, 0.991, 0.702]),
+    ];
+    let mut rows = Vec::new();
+    for (kn, want) in thesis {
+        let e = run(&startup_to(kn))?.summary.efficiency;
+        let got = [e.generator, e.power_electronics, e.motor, e.propeller];
+        let src = format!("Table 5.7, {kn} kn");
+        rows.push(row(
+            &format!("generator efficiency at {kn} kn"),
+            &src,
+            want[0],
+            got[0],
+            "-",
+            Tolerance::Abs(0.01),
+            "friction mu_2 chosen as the constant loss these three numbers imply (not independent)",
+        ));
+        rows.push(row(
+            &format!("power electronics efficiency at {kn} kn"),
+            &src,
+            want[1],
+            got[1],
+            "-",
+            Tolerance::Abs(0.03),
+            "notching (Table 5.4) and stator (Table 5.3) resistances lose about 2 % at these currents; the \
+             thesis does not say how it got under 1 %",
+        ));
+        rows.push(row(
+            &format!("motor efficiency at {kn} kn"),
+            &src,
+            want[2],
+            got[2],
+            "-",
+            Tolerance::Abs(0.01),
+            "copper losses of Table 2.1 and eta_m = 0.998",
+        ));
+        rows.push(row(
+            &format!("propeller efficiency at {kn} kn"),
+            &src,
+            want[3],
+            got[3],
+            "-",
+            Tolerance::Abs(0.05),
+            "Table 5.6's definition gives eta_0 eta_R / (1 - w) = 0.677 x 0.98 / 0.9 = 0.737 for the B-series at \
+             P/D = 1; the thesis' 0.703 needs eta_R = 0.935 or no wake factor",
+        ));
+    }
+    Ok(Section { title: "Table 5.7: efficiencies at steady speed (start-ups, 400 s)", note: String::new(), rows })
+}
+
+fn chapter_5() -> Result<Section, String> {
+    let sig = |r: &crate::RunResult, n: &str| r.summary.signals[n];
+    let mut rows = Vec::new();
+    let st = run(&startup_to(25.0))?;
+    rows.push(row(
+        "propeller speed at 25 kn",
+        "Fig. 5-1",
+        225.0,
+        sig(&st, "prop_rpm").final_,
+        "rpm",
+        Tolerance::Rel(0.11),
+        "the thrust balance 2 kT rho n^2 D^4 = R_sp(u) with Table 5.1's resistance fixes 201 rpm; 225 rpm \
+         would need 25 % more resistance than Table 5.1 gives",
+    ));
+    let acc = run(&preset("acceleration").ok_or("no preset")?)?;
+    rows.push(row(
+        "turbine speed loss in the acceleration",
+        "ch. 5.2.1 text (\"approximately 20 %\")",
+        0.20,
+        1.0 - sig(&acc, "turbine_speed_pu").min,
+        "pu",
+        Tolerance::Abs(0.05),
+        "\"approximately\": read to +-5 points",
+    ));
+    let (t, w) = (acc.trace.column("t_s").ok_or("no t_s")?, acc.trace.column("turbine_speed_pu").ok_or("no column")?);
+    let below: Vec<f64> = t.iter().zip(w).filter(|(_, &w)| w < 0.99).map(|(&t, _)| t).collect();
+    let away = below.last().copied().unwrap_or(0.0) - below.first().copied().unwrap_or(0.0);
+    rows.push(explained(
+        "time the turbine is away from rated (below 0.99 pu)",
+        "ch. 5.2.1 text (\"approximately 20 seconds\")",
+        20.0,
+        away,
+        "s",
+        "the thesis does not print its governor gains; ours (K_p,t = K_i,t = 10) give a critically damped loop \
+         near 2 rad/s, which recovers the speed faster than the thesis' Fig. 5-4",
+    ));
+    let sc_brk = preset("ac-braking").ok_or("no preset")?;
+    let brk = run(&sc_brk)?;
+    // When the brake resistors have taken 10 MJ per plant, and the ship's kinetic energy given up
+    // over the run (hull and surge added mass), per plant.
+    let (t, p) = (brk.trace.column("t_s").ok_or("no t_s")?, brk.trace.column("brake_power_w").ok_or("no column")?);
+    let (mut e, mut t10) = (0.0, f64::NAN);
+    for i in 1..t.len() {
+        e += 0.5 * (p[i] + p[i - 1]) * (t[i] - t[i - 1]) / 2.0;
+        if e >= 10e6 && t10.is_nan() {
+            t10 = t[i];
+        }
+    }
+    let order = sc_brk.commands.get(1).map_or(0.0, |c| c.t_s);
+    let u = sig(&brk, "ship_speed_kn");
+    let m = sc_brk.ship.mass_kg + sc_brk.ship.added_mass_kg;
+    let ke = |kn: f64| 0.5 * m * (kn * crate::units::KNOT_M_S) * (kn * crate::units::KNOT_M_S);
+    let dke = (ke(u.max) - ke(u.final_)) / 2.0 / 1e6;
+    rows.push(open(
+        "energy to dissipate per plant in AC braking",
+        "ch. 5.2.2 text (\"about 10 MJ\")",
+        10.0,
+        brk.summary.energy_j.brake / 2.0 / 1e6,
+        "MJ",
+        &format!(
+            "ours is the brake resistors' energy over the whole run ({:.0} to {:.1} kn in {:.0} s), which gives up \
+             {dke:.0} MJ of the ship's kinetic energy per plant (the hull's resistance takes the rest); ours passes \
+             10 MJ per plant {:.0} s after the order, so the thesis' figure fits a window of about that length, \
+             not the deceleration: under investigation",
+            u.max,
+            u.final_,
+            brk.summary.final_time_s - order,
+            t10 - order
+        ),
+    ));
+    // The power rise of a turn: ordered at the preset's 0.5 deg/s, and at the fastest the
+    // autopilot holds (the heading reference moves at r' = max_turn_rate_nondim).
+    let rise = |name: &str, fast: bool| -> Result<f64, String> {
+        let mut sc = preset(name).ok_or("no preset")?;
+        if fast {
+            sc.controllers.autopilot.turn_rate_deg_s = 10.0;
+        }
+        let r = run(&sc)?;
+        let p = sig(&r, "im_power_pu");
+        Ok(p.max / p.min - 1.0)
+    };
+    let (r45, r90) = (rise("turn-45", false)?, rise("turn-90", false)?);
+    let (f45, f90) = (rise("turn-45", true)?, rise("turn-90", true)?);
+    let src = "ch. 5.2.3 text, Fig. 5-10";
+    rows.push(row("motor power rise in a 45 deg turn", src, 0.06, r45, "-", Tolerance::Abs(0.02), ""));
+    rows.push(open(
+        "motor power rise in a 90 deg turn",
+        src,
+        0.15,
+        r90,
+        "-",
+        &format!(
+            "at the preset's 0.5 deg/s both turns reach the same steady turn, so both rise alike; ordered at the \
+             fastest turn the autopilot holds (r' = 0.25) they rise {:.1} % and {:.1} %, the thesis' pattern but \
+             not its size; faster turns (r' = 0.5) diverge, the Table 2.3 hull's sway-yaw instability: under \
+             investigation",
+            100.0 * f45,
+            100.0 * f90
+        ),
+    ));
+    let t360 = run(&preset("turn-360").ok_or("no preset")?)?;
+    let sc360 = preset("turn-360").ok_or("no preset")?;
+    // The tactical diameter: the turn starts heading north, so the circle's width is its extent east.
+    let y = sig(&t360, "y_m");
+    let diameter = y.max - y.min;
+    rows.push(open(
+        "radius of the 360 deg turn",
+        "ch. 5.3.2 text (\"approximately three ship lengths\")",
+        3.0,
+        diameter / 2.0 / sc360.ship.length_m,
+        "L",
+        "ours turns at the autopilot's rate limit (the Table 2.3 hull is unstable in tighter turns); the \
+         thesis ramps to full rudder: under investigation",
+    ));
+    let mut hs = preset("head-seas-ss6").ok_or("no preset")?;
+    hs.seakeeping.hub_depth_m = 6.0;
+    hs.seakeeping.stern_motion = SternMotion::ThesisEq257;
+    let hs = run(&hs)?;
+    let rpm = sig(&hs, "prop_rpm");
+    rows.push(row(
+        "propeller speed swing in SS6 head seas (h0 = 6 m, eq. 2.57 as printed)",
+        "ch. 5.3.1 text, Fig. 5-15",
+        50.0,
+        rpm.max - rpm.min,
+        "rpm",
+        Tolerance::Rel(0.25),
+        "one 80 s realisation against another: the swing depends on the seed",
+    ));
+    let pw = sig(&hs, "im_power_pu");
+    rows.push(open(
+        "motor power swing in SS6 head seas (h0 = 6 m, eq. 2.57 as printed)",
+        "ch. 5.3.1 text, Fig. 5-15",
+        0.25,
+        pw.max - pw.min,
+        "pu",
+        "with eq. 2.57 as printed the hub leaves the water (h/R below 0) and the load drops to nothing; the \
+         thesis saw only a small fraction of the disk emerge: under investigation",
+    ));
+    let _ = rad_s_to_rpm;
+    Ok(Section { title: "Chapter 5: quoted figures", note: String::new(), rows })
+}
+
+fn mc(sc: &Scenario, trials: u64) -> Result<crate::montecarlo::StudySummary, String> {
+    let mut sc = sc.clone();
+    sc.monte_carlo.trials = trials;
+    study_summary(&run_range(&sc, 0, trials)?)
+}
+
+fn table_5_8(size: Size) -> Result<Section, String> {
+    let sc = preset("mc-arrival").ok_or("no preset")?;
+    let s = mc(&sc, size.trials)?;
+    let a = &s.arrival_time_s;
+    let rice = s.rice.as_ref().ok_or("no Rice summary")?;
+    let src_a = "Table 5.8, analytic row";
+    let src_m = format!("Table 5.8, Monte Carlo row (189 trials; ours {})", size.trials);
+    let why = "Z = h0 - 1.1 R = 3.36 m with h0 = 6 m, R = 2.4 m (the thesis quotes 3.88 m, which its h0 and R do \
+               not give); with the level 1.1 standard deviations deep the first passage from a random start is not \
+               exponential at Rice's rate (README, What the studies give)";
+    let v = |x: Option<f64>| x.unwrap_or(f64::NAN);
+    let mut rows = vec![
+        explained("mean arrival time (Rice)", src_a, 22.64, rice.mean_arrival_s, "s", why),
+        explained("rate of surface effects (Rice)", src_a, 0.044, rice.rate_per_s, "1/s", why),
+        explained("level Z", "ch. 5.4.2 text", 3.88, rice.z_m, "m", why),
+    ];
+    for (name, thesis, ours) in [
+        ("mean", 23.67, v(a.mean)),
+        ("standard deviation", 22.11, v(a.std)),
+        ("skewness", 1.00, v(a.skewness)),
+        ("kurtosis", 3.13, v(a.kurtosis)),
+        ("median", 15.46, v(a.median)),
+    ] {
+        rows.push(explained(&format!("arrival time {name} (Monte Carlo)"), &src_m, thesis, ours, "s", why));
+    }
+    Ok(Section {
+        title: "Table 5.8: arrival time of the first surface effect (SS6 head seas, 25 kn, mc-arrival)",
+        note: format!("{} trials, {} with an event, censored at {} s.", size.trials, a.events, a.cap_s),
+        rows,
+    })
+}
+
+fn excess_energy(size: Size) -> Result<Section, String> {
+    let sc = preset("mc-excess-energy").ok_or("no preset")?;
+    let s = mc(&sc, size.trials)?;
+    let e = s.excess_energy_mj.as_ref().ok_or("no excess energy")?;
+    let mean = e.vs_calm_water.mean.unwrap_or(f64::NAN);
+    let std = e.vs_calm_water.std.unwrap_or(f64::NAN);
+    let h = &e.vs_calm_water.histogram;
+    let n = h.counts.iter().sum::<u64>() + h.below + h.above;
+    let se = std / (n.max(1) as f64).sqrt();
+    Ok(Section {
+        title: "Ch. 5.4.1: excess energy over the first surface effect (mc-excess-energy)",
+        note: format!(
+            "{} trials; ours against calm water, the definition that matches the thesis' in kind.",
+            size.trials
+        ),
+        rows: vec![
+            open(
+                "mean excess energy",
+                "ch. 5.4.1 text",
+                94.1,
+                mean,
+                "MJ",
+                &format!(
+                    "ours {mean:.0} +- {se:.0} (standard error); the thesis does not say over what window or \
+                     against what reference it counts: under investigation"
+                ),
+            ),
+            open("standard deviation of the excess energy", "ch. 5.4.1 text", 33.3, std, "MJ", "as above"),
+        ],
+    })
+}
+
+fn analytic(size: Size) -> Result<Section, String> {
+    let mut rows = Vec::new();
+    let st = run(&startup_to(25.0))?;
+    rows.push(row(
+        "energy books over the start-up: residual / turbine work",
+        "conservation (ch. 5.1)",
+        0.0,
+        st.summary.energy_j.relative_residual,
+        "-",
+        Tolerance::Abs(1e-9),
+        "RK4 with 1 ms steps closes the books to round-off",
+    ));
+    let (w, h) = crate::waves::sea_state(6).ok_or("no sea state")?;
+    let comps = crate::waves::SeaSampling::new(h, w, 0.0).sample(1);
+    rows.push(row(
+        "SS6, 200 components: sum a_i^2 / 2 over H^2/16",
+        "Parseval (eq. 2.58)",
+        1.0,
+        crate::waves::m0(&comps) / (h * h / 16.0),
+        "-",
+        Tolerance::Abs(0.02),
+        "the sampled band holds all but the tails of the spectrum",
+    ));
+    let mut sc = preset("mc-arrival").ok_or("no preset")?;
+    sc.seakeeping.stern_motion = SternMotion::Consistent;
+    sc.seakeeping.hub_depth_m = 4.0;
+    let s = mc(&sc, size.trials)?;
+    let rice = s.rice.as_ref().ok_or("no Rice summary")?;
+    let a = &s.arrival_time_s;
+    let sd = a.std_censored.unwrap_or(f64::NAN);
+    let se = sd / (size.trials as f64).sqrt();
+    rows.push(row(
+        "mean of min(T, 90 s), D = 4.8 m, h0 = 4 m (Monte Carlo against Rice)",
+        "eqs. 5.1-5.3 (where their assumption of rare crossings holds)",
+        rice.mean_censored_s,
+        a.mean_censored.unwrap_or(f64::NAN),
+        "s",
+        Tolerance::Abs(2.0 * se),
+        &format!("two Monte Carlo standard errors ({se:.2} s, {} trials); the 'thesis' column is Rice", size.trials),
+    ));
+    Ok(Section { title: "Analytic checks", note: String::new(), rows })
+}
+
+/// The report as Markdown.
+pub fn markdown(sections: &[Section], size: Size) -> String {
+    let mut s = String::from(
+        "# Validation report\n\n\
+         Generated by `aes-sim validate` (`./build.sh validate`); do not edit by hand. `./build.sh test` \
+         regenerates it and fails when a row leaves its tolerance or this file is stale.\n\n\
+         The thesis: Kyle Schmitt, *Modeling and Simulation of an All Electric Ship in Random Seas*, S.M. thesis, \
+         Massachusetts Institute of Technology, 2010 (supervisor: Michael S. Triantafyllou). Table, figure and \
+         equation numbers below are the thesis' own.\n\n\
+         Other sources of numbers: the Table 2.3 maneuvering coefficients (Stettler's kayak tests, via the thesis); \
+         the Wageningen B-series polynomials (Oosterveld and van Oossanen 1975); the B4-70 four-quadrant series \
+         (van Lammeren et al. 1969, as quoted by Smogeli 2006); the DTMB 5415 offsets (SIMMAN benchmark hull, sliced \
+         from the navaltoolbox-lib test mesh); the gas-turbine part-load curve (TransiEnt library, anchored to the \
+         thesis' 37 % and 28 %); the Purdue MVDC testbed parameters (our reconstruction from the thesis' own \
+         Tables 4.1 and 4.2, shared/data/purdue_testbed_params.md).\n\n",
+    );
+    let count = |v: Verdict| sections.iter().flat_map(|x| &x.rows).filter(|r| r.verdict == v).count();
+    s.push_str(&format!(
+        "Rows: {} pass (within the stated tolerance), {} fail, {} explained (a difference whose cause is known and \
+         written beside it), {} open (a known difference still being investigated; no tolerance claimed). Monte \
+         Carlo rows use {} trials.\n\n",
+        count(Verdict::Pass),
+        count(Verdict::Fail),
+        count(Verdict::Explained),
+        count(Verdict::Open),
+        size.trials
+    ));
+    let num = |x: f64| {
+        if !x.is_finite() {
+            "-".to_string()
+        } else if x == 0.0 || (x.abs() >= 1e-3 && x.abs() < 1e5) {
+            format!("{}", (x * 1e4).round() / 1e4)
+        } else {
+            format!("{x:.3e}")
+        }
+    };
+    for sec in sections {
+        s.push_str(&format!("## {}\n\n", sec.title));
+        if !sec.note.is_empty() {
+            s.push_str(&format!("{}\n\n", sec.note));
+        }
+        s.push_str("| quantity | thesis | where | ours | difference | tolerance | verdict | reason |\n");
+        s.push_str("|---|---|---|---|---|---|---|---|\n");
+        for r in &sec.rows {
+            let tol = match r.tolerance {
+                Some(Tolerance::Abs(x)) => format!("+- {}", num(x)),
+                Some(Tolerance::Rel(x)) => format!("+- {} %", num(100.0 * x)),
+                None => "-".into(),
+            };
+            let rel = if r.thesis != 0.0 && r.ours != r.thesis {
+                let pct = 100.0 * (r.ours - r.thesis) / r.thesis;
+                if pct.abs() >= 0.1 {
+                    format!(" ({pct:+.1} %)")
+                } else {
+                    format!(" ({pct:+.1e} %)")
+                }
+            } else {
+                String::new()
+            };
+            let cell = |x: &str| x.replace('|', "\\|");
+            s.push_str(&format!(
+                "| {} | {} {} | {} | {} | {}{} | {} | {} | {} |\n",
+                cell(&r.quantity),
+                num(r.thesis),
+                r.unit,
+                cell(&r.source),
+                num(r.ours),
+                num(r.ours - r.thesis),
+                rel,
+                tol,
+                match r.verdict {
+                    Verdict::Pass => "pass",
+                    Verdict::Fail => "**FAIL**",
+                    Verdict::Explained => "explained",
+                    Verdict::Open => "open",
+                },
+                cell(&r.reason)
+            ));
+        }
+        s.push('\n');
+    }
+    s
+}

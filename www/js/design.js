@@ -1,0 +1,94 @@
+// The controller design tab (thesis ch. 3.1): LQG/LTR on our own drive train. The tuning comes
+// from the controls; the worker designs and analyses (Rust, sim::lqg::analyse); the page draws the
+// loop singular values beside the Kalman target (LTR visible as q grows), command following,
+// the closed-loop pole map and the margins, and can run the acceleration with this controller
+// next to the PI loops.
+import { DESIGN } from './config.js';
+import { $, el } from './dom.js';
+import { REQUEST } from './protocol.js';
+import { drawPoleMap } from './stability.js';
+
+const db = (x) => 20 * Math.log10(Math.max(x, 1e-12));
+const CURVES = ['#0b5cad', '#c2410c'];
+const INPUTS = ['throttle', 'field voltage'];
+
+export class DesignTab {
+  // client(): the current worker client; box: a PlotBox; baseScenario(): the study scenario the
+  // plant comes from; onRun(tuning): run the acceleration with this tuning beside the PI loops.
+  constructor(client, box, baseScenario, onRun) {
+    this.client = client;
+    this.box = box;
+    this.baseScenario = baseScenario;
+    this.timer = null;
+    this.ok = false;
+    for (const id of ['design-mu', 'design-q', 'design-omega', 'design-speed', 'design-weight']) $(id).addEventListener('input', () => this.update());
+    $('design-run').addEventListener('click', () => { if (this.ok) onRun(this.tuning()); });
+  }
+
+  // controllers.lqg_ltr as the controls set it (mu and q on log sliders).
+  tuning() {
+    const round = (x) => Number(x.toPrecision(3));
+    return {
+      mu: round(10 ** Number($('design-mu').value)),
+      q: round(10 ** Number($('design-q').value)),
+      omega_p_rad_s: Number($('design-omega').value),
+      design_speed_kn: Number($('design-speed').value),
+      turbine_speed_weight: Number($('design-weight').value),
+    };
+  }
+
+  update() {
+    // The readouts (and what a screen reader says for the log sliders) follow at once; the design
+    // waits for the slider to rest.
+    const t = this.tuning();
+    $('design-mu-out').textContent = t.mu;
+    $('design-q-out').textContent = t.q;
+    $('design-omega-out').textContent = t.omega_p_rad_s;
+    $('design-speed-out').textContent = t.design_speed_kn;
+    $('design-mu').setAttribute('aria-valuetext', `mu = ${t.mu}`);
+    $('design-q').setAttribute('aria-valuetext', `q = ${t.q}`);
+    clearTimeout(this.timer);
+    this.timer = setTimeout(() => {
+      const sc = this.baseScenario();
+      sc.controllers.lqg_ltr = t;
+      this.client().request(REQUEST.design, { scenario: JSON.stringify(sc) }).then(({ result }) => {
+        this.ok = true;
+        $('design-run').disabled = !result.stable;
+        const pms = result.input_margins.map((m) => m.phase_margin_deg).filter((x) => x !== null && x !== undefined);
+        const worst = pms.length ? ` Smallest phase margin at a plant input: ${Math.min(...pms).toFixed(0)}°.` : '';
+        $('design-status').textContent = result.stable ? `Stable.${worst}` : 'UNSTABLE: a closed-loop pole in the right half plane.';
+        $('design-status').className = result.stable ? '' : 'error';
+        this.show(result);
+      }, (e) => {
+        if (e.cancelled) return;
+        this.ok = false;
+        $('design-run').disabled = true;
+        $('design-status').textContent = e.message;
+        $('design-status').className = 'error';
+      });
+    }, DESIGN.debounceMs);
+  }
+
+  show(r) {
+    const num = (x, d = 1) => (x === null || x === undefined ? '∞' : Number(x).toFixed(d));
+    $('design-margins').querySelector('tbody').replaceChildren(...r.input_margins.map((m) => el('tr', {},
+      el('th', { scope: 'row', textContent: INPUTS[m.input] || `input ${m.input + 1}` }),
+      el('td', { textContent: `+${num(m.gain_margin_db)} / ${m.gain_reduction_margin_db === null ? '−∞' : num(m.gain_reduction_margin_db)}` }),
+      el('td', { textContent: num(m.phase_margin_deg, 0) }),
+      el('td', { textContent: m.crossover_rad_s === null ? '–' : Number(m.crossover_rad_s).toPrecision(3) }))));
+    $('design-poles').querySelector('tbody').replaceChildren(...r.closed_loop_poles.map((p) => el('tr', {},
+      ...[p.re, p.im, p.damping].map((x) => el('td', { textContent: Number(x).toPrecision(4) })))));
+    this.box.clear();
+    const sv = r.singular_values;
+    const x = { data: sv.frequency_rad_s, label: 'frequency [rad/s]', distr: 3 };
+    const axis = [{ scale: 'y', label: 'singular value [dB]' }];
+    const zero = [{ value: 0, label: '0 dB', color: '#6b6b6b' }];
+    this.box.line('Loop G(s)(I/s)K(s) (solid) and the Kalman target it recovers (dashed)', x, [
+      ...sv.loop.map((c, k) => ({ data: c.map(db), label: `loop σ${k + 1}`, color: CURVES[k] })),
+      ...sv.kalman_target.map((c, k) => ({ data: c.map(db), label: `target σ${k + 1}`, color: CURVES[k], dash: [6, 4] })),
+    ], axis, { levels: zero });
+    this.box.line('Command following (I + L)⁻¹L', x,
+      sv.command_following.map((c, k) => ({ data: c.map(db), label: `σ${k + 1}`, color: CURVES[k] })), axis, { levels: zero });
+    drawPoleMap(this.box, r.closed_loop_poles, DESIGN.poleMapMax);
+  }
+}
