@@ -665,6 +665,13 @@ fn real_main() -> Result<(), Failure> {
                 }
                 Some(n) => n,
             };
+            // The seakeeping tables first (once, shared by every trial): a line on stderr if they
+            // take more than a second (a fine grid), so a long silence is explained.
+            if sc.sea.kind != aes_core::scenario::SeaKind::Calm {
+                let note = SlowNote::start("aes-sim mc: building the seakeeping (RAO) tables", quiet);
+                aes_core::seakeeping::cache::rao_table(&sc.seakeeping.grid)?;
+                note.finish();
+            }
             let pool =
                 rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
             let t0 = Instant::now();
@@ -860,6 +867,46 @@ fn real_main() -> Result<(), Failure> {
         }
     }
     Ok(())
+}
+
+/// A line on stderr when a step takes more than a second ("... (done in N s)" when it ends);
+/// nothing for a quick step or when quiet.
+struct SlowNote {
+    stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl SlowNote {
+    fn start(what: &'static str, quiet: bool) -> SlowNote {
+        use std::sync::atomic::{AtomicBool, Ordering};
+        let stop = std::sync::Arc::new(AtomicBool::new(false));
+        let thread = (!quiet).then(|| {
+            let stop = stop.clone();
+            std::thread::spawn(move || {
+                let t0 = Instant::now();
+                while !stop.load(Ordering::Relaxed) && t0.elapsed().as_secs_f64() < 1.0 {
+                    std::thread::park_timeout(std::time::Duration::from_millis(100));
+                }
+                if stop.load(Ordering::Relaxed) {
+                    return;
+                }
+                let _ = writeln!(std::io::stderr(), "{what} ...");
+                while !stop.load(Ordering::Relaxed) {
+                    std::thread::park_timeout(std::time::Duration::from_millis(100));
+                }
+                let _ = writeln!(std::io::stderr(), "{what}: done in {:.1} s", t0.elapsed().as_secs_f64());
+            })
+        });
+        SlowNote { stop, thread }
+    }
+
+    fn finish(mut self) {
+        self.stop.store(true, std::sync::atomic::Ordering::Relaxed);
+        if let Some(t) = self.thread.take() {
+            t.thread().unpark();
+            let _ = t.join();
+        }
+    }
 }
 
 /// Progress of a long command on stderr: on a terminal a bar redrawn in place (done, rate, time
