@@ -5,7 +5,8 @@
 #                         http://127.0.0.1:${PORT:-8080}
 #   ./build.sh build      set up and build only (native CLI and www/pkg)
 #   ./build.sh test       set up, then rustfmt check, clippy (warnings denied), every native test
-#                         (release mode), the wasm-bindgen tests in Node and the browser
+#                         (release mode), the cluster recipes (GNU parallel and Slurm shards
+#                         merge to the single run), the wasm-bindgen tests in Node and the browser
 #                         end-to-end test in headless Chromium (screenshots in target/)
 #   ./build.sh bench      simulated seconds per wall second of the start-up preset
 #   ./build.sh fuzz       the property tests of every entry point (tests/fuzz.rs) with many more
@@ -72,6 +73,17 @@ ensure_chromium() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq chromium > /dev/null
 }
 
+ensure_parallel() {
+  if command -v parallel >/dev/null; then
+    return
+  fi
+  say "installing Debian's GNU parallel for the sharding check"
+  local sudo=""
+  [ "$(id -u)" = 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq parallel > /dev/null
+}
+
 build_web() {
   say "building the wasm (release) into www/pkg"
   # no-install: wasm-pack uses the wasm-bindgen on PATH and never downloads anything.
@@ -107,6 +119,9 @@ run_tests() {
   say "validation report: every row within its tolerance, docs/validation.md up to date"
   cargo build --release -p aes-cli
   ./target/release/aes-sim validate --check docs/validation.md
+  say "cluster recipes: GNU parallel and Slurm shards merge to the single run (docs/cluster.md)"
+  ensure_parallel
+  scripts/check-sharding.sh target/release/aes-sim 2>&1 | tee -a "$log"
   say "wasm-bindgen tests in Node"
   (cd web && wasm-pack test --node --release --mode no-install) 2>&1 | tee -a "$log"
   say "browser end-to-end test (headless Chromium)"

@@ -42,6 +42,13 @@ fn summaries_do_not_depend_on_order_or_sharding() {
         }
     }
     assert_eq!(bs, whole);
+    // Through the browser's binary form: the same partial, field for field; damaged bytes are
+    // refused.
+    let bytes = shards.to_bytes().unwrap();
+    assert_eq!(Partial::from_bytes(&bytes).unwrap(), shards);
+    assert!(bytes.len() < text.len(), "{} bytes against {} of JSON", bytes.len(), text.len());
+    assert!(Partial::from_bytes(&bytes[..bytes.len() - 1]).is_err());
+    assert!(Partial::from_bytes(&text.as_bytes()[..100]).is_err());
     // Overlapping shards are refused.
     let mut twice = run_range(&sc, 0, 2).unwrap();
     assert!(twice.merge(&run_range(&sc, 1, 3).unwrap()).unwrap_err().contains("overlap"));

@@ -232,3 +232,19 @@ fn fuel_in_regular_seas() {
     assert!(head[4] > bow[4]);
     assert_eq!(rows.len(), 10);
 }
+
+/// The RAO table handed from one web worker to another (`RaoTable::values`, `from_values`)
+/// interpolates to the same bits as the table it came from; a wrong length is refused.
+#[test]
+fn rao_table_values_round_trip() {
+    use aes_core::seakeeping::tables::{RaoTable, SeakeepingGrid};
+    let grid = SeakeepingGrid::default();
+    let t = aes_core::seakeeping::cache::rao_table(&grid).unwrap();
+    let v = t.values();
+    let back = RaoTable::from_values(&grid, &v).unwrap();
+    assert_eq!(back.values(), v);
+    for &(w, u, b) in &[(0.4, 12.86, 3.1), (0.9, 5.0, 1.0), (1.7, 15.0, 4.0)] {
+        assert_eq!(format!("{:?}", back.interpolate(w, u, b)), format!("{:?}", t.interpolate(w, u, b)));
+    }
+    assert!(RaoTable::from_values(&grid, &v[1..]).is_err());
+}

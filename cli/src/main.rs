@@ -205,12 +205,20 @@ enum Cmd {
         /// Override one parameter (repeatable).
         #[arg(long = "set", value_name = "PATH=VALUE")]
         sets: Vec<String>,
+        /// No progress on stderr (by default a bar on a terminal, a line every 10 s otherwise).
+        #[arg(long)]
+        quiet: bool,
     },
-    /// Merges Monte Carlo shards (`aes-sim mc ... --partial`) into the study's summary.
+    /// Merges Monte Carlo shards (`aes-sim mc ... --partial`) into the study's summary. Reads one
+    /// shard at a time: memory does not grow with their number.
     Merge {
         /// Partial files.
-        #[arg(required = true)]
+        #[arg(required_unless_present = "files_from")]
         files: Vec<String>,
+        /// Also merge the partial files listed in this file, one path a line (`-`: standard input;
+        /// for more shards than a command line holds).
+        #[arg(long = "files-from", value_name = "LIST")]
+        files_from: Option<String>,
         /// Also write the merged partial to this file.
         #[arg(long)]
         partial: Option<String>,
@@ -614,7 +622,7 @@ fn real_main() -> Result<(), Failure> {
             )?;
             emit_json(&v)?;
         }
-        Cmd::Mc { file, trials, seed, threads, trial_range, partial, sets } => {
+        Cmd::Mc { file, trials, seed, threads, trial_range, partial, sets, quiet } => {
             let mut sc = load(&file, &sets)?;
             if let Some(n) = trials {
                 sc.monte_carlo.trials = n;
@@ -657,26 +665,38 @@ fn real_main() -> Result<(), Failure> {
                 }
                 Some(n) => n,
             };
+            // The seakeeping tables first (once, shared by every trial): a line on stderr if they
+            // take more than a second (a fine grid), so a long silence is explained.
+            if sc.sea.kind != aes_core::scenario::SeaKind::Calm {
+                let note = SlowNote::start("aes-sim mc: building the seakeeping (RAO) tables", quiet);
+                aes_core::seakeeping::cache::rao_table(&sc.seakeeping.grid)?;
+                note.finish();
+            }
             let pool =
                 rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
             let t0 = Instant::now();
+            let progress = Progress::start(b - a, "aes-sim mc", quiet);
             let result = pool.install(|| {
                 use rayon::prelude::*;
-                (a..b).into_par_iter().map(|i| aes_core::montecarlo::run_trial(&sc, i)).try_reduce(
+                (a..b).into_par_iter().map(|i| progress.tick(aes_core::montecarlo::run_trial(&sc, i))).try_reduce(
                     || aes_core::montecarlo::Partial::empty(&sc),
                     |mut x, y| {
                         x.merge(&y)?;
                         Ok(x)
                     },
                 )
-            })?;
-            let _ = writeln!(
-                std::io::stderr(),
-                "aes-sim mc: {} trials in {:.2} s on {} threads",
-                b - a,
-                t0.elapsed().as_secs_f64(),
-                pool.current_num_threads()
-            );
+            });
+            progress.finish();
+            let result = result?;
+            if !quiet {
+                let _ = writeln!(
+                    std::io::stderr(),
+                    "aes-sim mc: {} trials in {:.2} s on {} threads",
+                    b - a,
+                    t0.elapsed().as_secs_f64(),
+                    pool.current_num_threads()
+                );
+            }
             // The summary first: it is printed even when the partial cannot be written.
             if trial_range.is_none() {
                 emit_json(&aes_core::montecarlo::study_summary(&result)?)?;
@@ -686,17 +706,31 @@ fn real_main() -> Result<(), Failure> {
                 std::fs::write(path, text).map_err(|e| format!("cannot write '{}': {e}", shorten(path)))?;
             }
         }
-        Cmd::Merge { files, partial } => {
+        Cmd::Merge { files, files_from, partial } => {
             if let Some(path) = &partial {
                 check_writable(path, "--partial")?;
             }
+            // The listed names are read line by line as they are merged (never all at once).
+            let listed: Box<dyn Iterator<Item = std::io::Result<String>>> = match files_from.as_deref() {
+                None => Box::new(std::iter::empty()),
+                Some("-") => Box::new(std::io::stdin().lines()),
+                Some(list) => {
+                    let f = std::fs::File::open(list)
+                        .map_err(|e| format!("--files-from '{}': cannot read: {e}", shorten(list)))?;
+                    Box::new(std::io::BufRead::lines(std::io::BufReader::new(f)))
+                }
+            };
             let mut acc: Option<aes_core::montecarlo::Partial> = None;
-            for f in &files {
-                let text = read_bounded(f, MAX_PARTIAL_BYTES, "a Monte Carlo partial")?;
-                let p = aes_core::montecarlo::Partial::from_json(&text).map_err(|e| format!("{}: {e}", shorten(f)))?;
+            for f in files.into_iter().map(Ok).chain(listed) {
+                let f = f.map_err(|e| format!("--files-from: {e}"))?;
+                if f.trim().is_empty() {
+                    continue;
+                }
+                let text = read_bounded(&f, MAX_PARTIAL_BYTES, "a Monte Carlo partial")?;
+                let p = aes_core::montecarlo::Partial::from_json(&text).map_err(|e| format!("{}: {e}", shorten(&f)))?;
                 match acc.as_mut() {
                     None => acc = Some(p),
-                    Some(a) => a.merge(&p).map_err(|e| format!("{}: {e}", shorten(f)))?,
+                    Some(a) => a.merge(&p).map_err(|e| format!("{}: {e}", shorten(&f)))?,
                 }
             }
             let acc = acc.ok_or("no partials given")?;
@@ -801,8 +835,9 @@ fn real_main() -> Result<(), Failure> {
             let sim_s = sc.sim.duration_s;
             // The irreducible part in waves: the bare superposition of the wave components (one sum
             // per sample period, as the run does it).
-            let wave_sums_s = match aes_core::sim::seaway::Seaway::new(&sc)? {
-                Some(mut sea) => {
+            let mut wave_sums_s = None;
+            for _ in 0..repeat.max(1) {
+                if let Some(mut sea) = aes_core::sim::seaway::Seaway::new(&sc)? {
                     let n = (sim_s / sc.seakeeping.sample_period_s).round() as u64;
                     sea.refresh(12.86, 0.0);
                     let t0 = Instant::now();
@@ -812,12 +847,14 @@ fn real_main() -> Result<(), Failure> {
                         acc += sea.sample(t, 12.86 * t, 0.0, 12.86, 0.0).hub;
                     }
                     std::hint::black_box(acc);
-                    Some(t0.elapsed().as_secs_f64())
+                    let s = t0.elapsed().as_secs_f64();
+                    wave_sums_s = Some(wave_sums_s.map_or(s, |b: f64| b.min(s)));
                 }
-                None => None,
-            };
+            }
             let out = serde_json::json!({
                 "wave_sums_s": wave_sums_s,
+                // Issue 17's measure: the full model's time over the bare wave kernel's, same steps.
+                "full_over_wave_sums": wave_sums_s.map(|w| best / w),
                 "wave_components": if wave_sums_s.is_some() { Some(sc.sea.components) } else { None },
                 "preset": name,
                 "simulated_s": sim_s,
@@ -830,6 +867,112 @@ fn real_main() -> Result<(), Failure> {
         }
     }
     Ok(())
+}
+
+/// A line on stderr when a step takes more than a second ("... (done in N s)" when it ends);
+/// nothing for a quick step or when quiet.
+struct SlowNote {
+    stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl SlowNote {
+    fn start(what: &'static str, quiet: bool) -> SlowNote {
+        use std::sync::atomic::{AtomicBool, Ordering};
+        let stop = std::sync::Arc::new(AtomicBool::new(false));
+        let thread = (!quiet).then(|| {
+            let stop = stop.clone();
+            std::thread::spawn(move || {
+                let t0 = Instant::now();
+                while !stop.load(Ordering::Relaxed) && t0.elapsed().as_secs_f64() < 1.0 {
+                    std::thread::park_timeout(std::time::Duration::from_millis(100));
+                }
+                if stop.load(Ordering::Relaxed) {
+                    return;
+                }
+                let _ = writeln!(std::io::stderr(), "{what} ...");
+                while !stop.load(Ordering::Relaxed) {
+                    std::thread::park_timeout(std::time::Duration::from_millis(100));
+                }
+                let _ = writeln!(std::io::stderr(), "{what}: done in {:.1} s", t0.elapsed().as_secs_f64());
+            })
+        });
+        SlowNote { stop, thread }
+    }
+
+    fn finish(mut self) {
+        self.stop.store(true, std::sync::atomic::Ordering::Relaxed);
+        if let Some(t) = self.thread.take() {
+            t.thread().unpark();
+            let _ = t.join();
+        }
+    }
+}
+
+/// Progress of a long command on stderr: on a terminal a bar redrawn in place (done, rate, time
+/// left); otherwise (a scheduler's log) a plain line every 10 s; nothing when quiet.
+struct Progress {
+    done: std::sync::Arc<std::sync::atomic::AtomicU64>,
+    stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl Progress {
+    fn start(total: u64, label: &'static str, quiet: bool) -> Progress {
+        use std::io::IsTerminal;
+        use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+        use std::sync::Arc;
+        let (done, stop) = (Arc::new(AtomicU64::new(0)), Arc::new(AtomicBool::new(false)));
+        let thread = (!quiet).then(|| {
+            let (done, stop) = (done.clone(), stop.clone());
+            let tty = std::io::stderr().is_terminal();
+            std::thread::spawn(move || {
+                let t0 = Instant::now();
+                let every = if tty { 0.25 } else { 10.0 };
+                let mut last = 0.0;
+                let line = |n: u64, bar: bool| {
+                    let s = t0.elapsed().as_secs_f64();
+                    let rate = n as f64 / s.max(1e-9);
+                    let left = if n > 0 { format!("{:.0} s left", (total - n) as f64 / rate) } else { "".into() };
+                    let text = format!("{n}/{total} trials, {rate:.1}/s, {left}");
+                    if bar {
+                        let w = 30;
+                        let k = (w as u64 * n / total.max(1)) as usize;
+                        format!("\r{label} [{}{}] {text}\x1b[K", "#".repeat(k), ".".repeat(w - k))
+                    } else {
+                        format!("{label}: {text}\n")
+                    }
+                };
+                while !stop.load(Ordering::Relaxed) {
+                    // Woken early by finish(): a short run does not wait for the next tick.
+                    std::thread::park_timeout(std::time::Duration::from_millis(100));
+                    let s = t0.elapsed().as_secs_f64();
+                    if s - last >= every {
+                        last = s;
+                        let _ = write!(std::io::stderr(), "{}", line(done.load(Ordering::Relaxed), tty));
+                    }
+                }
+                if tty {
+                    let _ = writeln!(std::io::stderr(), "{}", line(done.load(Ordering::Relaxed), true));
+                }
+            })
+        });
+        Progress { done, stop, thread }
+    }
+
+    /// Counts one finished piece of work and passes its result on.
+    fn tick<T>(&self, r: T) -> T {
+        self.done.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        r
+    }
+
+    fn finish(mut self) {
+        self.stop.store(true, std::sync::atomic::Ordering::Relaxed);
+        if let Some(t) = self.thread.take() {
+            t.thread().unpark();
+            let _ = t.join();
+        }
+    }
 }
 
 /// Exit status: 0 on success and when standard output is closed by its reader (`| head`);

@@ -312,6 +312,95 @@ fn merge_rows(a: &mut Vec<ExactMoments>, b: &[ExactMoments], order: u8) -> Resul
     Ok(())
 }
 
+/// First bytes of a partial in binary form (`Partial::to_bytes`).
+const BINARY_MAGIC: &[u8; 8] = b"AESMCP01";
+/// Bytes of one packed `ExactMoments`: bits i32, order u8, n u64, four i128 sums, min and max
+/// f64, clamped u64 (little-endian).
+const PACKED_MOMENTS: usize = 4 + 1 + 8 + 4 * 16 + 8 + 8 + 8;
+
+/// The small part of a binary partial, as JSON: everything but the moment rows, and their counts.
+#[derive(Serialize, Deserialize)]
+struct BinaryHead {
+    partial: Partial,
+    /// Rows of each envelope, then of the onset, then of the periodogram.
+    rows: Vec<usize>,
+}
+
+impl Partial {
+    /// The partial in a compact binary form (the browser's workers pass partials so): the rows of
+    /// exact moments (envelopes, onset, periodogram: nearly all of a partial) packed with their
+    /// bits as they are, the rest as JSON. `from_bytes` gives back an equal partial.
+    pub fn to_bytes(&self) -> Result<Vec<u8>, String> {
+        let mut head = self.clone();
+        let mut rows: Vec<Vec<ExactMoments>> = head.envelopes.iter_mut().map(|e| std::mem::take(&mut e.rows)).collect();
+        rows.push(std::mem::take(&mut head.onset));
+        rows.push(std::mem::take(&mut head.periodogram));
+        let json = serde_json::to_vec(&BinaryHead { partial: head, rows: rows.iter().map(Vec::len).collect() })
+            .map_err(|e| e.to_string())?;
+        let n: usize = rows.iter().map(Vec::len).sum();
+        let mut out = Vec::with_capacity(BINARY_MAGIC.len() + 8 + json.len() + n * PACKED_MOMENTS);
+        out.extend_from_slice(BINARY_MAGIC);
+        out.extend_from_slice(&(json.len() as u64).to_le_bytes());
+        out.extend_from_slice(&json);
+        for m in rows.iter().flatten() {
+            out.extend_from_slice(&m.bits.to_le_bytes());
+            out.push(m.order);
+            out.extend_from_slice(&m.n.to_le_bytes());
+            for v in m.sums {
+                out.extend_from_slice(&v.to_le_bytes());
+            }
+            out.extend_from_slice(&m.min.to_le_bytes());
+            out.extend_from_slice(&m.max.to_le_bytes());
+            out.extend_from_slice(&m.clamped.to_le_bytes());
+        }
+        Ok(out)
+    }
+
+    /// Reads `to_bytes`' form back and checks it as `from_json` does.
+    pub fn from_bytes(b: &[u8]) -> Result<Partial, String> {
+        let bad = |what: &str| format!("not a binary Monte Carlo partial ({what})");
+        if b.len() < 16 || &b[..8] != BINARY_MAGIC {
+            return Err(bad("header"));
+        }
+        let len = u64::from_le_bytes(b[8..16].try_into().map_err(|_| bad("length"))?) as usize;
+        let json = b.get(16..16usize.saturating_add(len)).ok_or_else(|| bad("length"))?;
+        let head: BinaryHead =
+            serde_json::from_slice(json).map_err(|e| bad(&crate::validate::shorten_message(&e.to_string())))?;
+        let mut p = head.partial;
+        let total: usize = head.rows.iter().try_fold(0usize, |a, &r| a.checked_add(r)).ok_or_else(|| bad("rows"))?;
+        let body = &b[16 + len..];
+        if head.rows.len() != p.envelopes.len() + 2 || body.len() != total.saturating_mul(PACKED_MOMENTS) {
+            return Err(bad("rows"));
+        }
+        let mut chunks = body.chunks_exact(PACKED_MOMENTS).map(|c| {
+            let f8 = |i: usize| <[u8; 8]>::try_from(&c[i..i + 8]).unwrap_or([0; 8]);
+            let mut sums = [0i128; 4];
+            for (k, v) in sums.iter_mut().enumerate() {
+                let at = 13 + 16 * k;
+                *v = i128::from_le_bytes(<[u8; 16]>::try_from(&c[at..at + 16]).unwrap_or([0; 16]));
+            }
+            ExactMoments {
+                bits: i32::from_le_bytes(<[u8; 4]>::try_from(&c[0..4]).unwrap_or([0; 4])),
+                order: c[4],
+                n: u64::from_le_bytes(f8(5)),
+                sums,
+                min: f64::from_le_bytes(f8(77)),
+                max: f64::from_le_bytes(f8(85)),
+                clamped: u64::from_le_bytes(f8(93)),
+            }
+        });
+        let mut take = |n: usize| chunks.by_ref().take(n).collect::<Vec<_>>();
+        for (e, &n) in p.envelopes.iter_mut().zip(&head.rows) {
+            e.rows = take(n);
+        }
+        let k = p.envelopes.len();
+        p.onset = take(head.rows[k]);
+        p.periodogram = take(head.rows[k + 1]);
+        p.validate()?;
+        Ok(p)
+    }
+}
+
 /// Energy of one motor over a trace [J] (trapezoid over the recorded rows of `im_power_pu`).
 fn motor_energy(sc: &Scenario, pu: &[f64], dt: f64) -> f64 {
     let p = sc.plant.motor.rated_power_w;
@@ -489,10 +578,11 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
         for &(d, wt) in &dirs {
             let beta = psi - (mu0 + d);
             let r = table.interpolate(w, u, beta);
-            let stern = stern_wave(kw, k.prop_x_aft_m, beta);
+            let cos_beta = libm::cos(beta);
+            let stern = stern_wave(kw, k.prop_x_aft_m, cos_beta);
             let hp = k.stern_motion.hub_transfer(stern, r.heave, r.pitch, k.prop_x_aft_m);
             let sy = hp.norm_sqr() * s * wt * dw;
-            let we = (w - kw * u * libm::cos(beta)).abs();
+            let we = (w - kw * u * cos_beta).abs();
             m0 += sy;
             m2 += sy * we * we;
         }

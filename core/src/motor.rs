@@ -13,7 +13,6 @@
 use crate::check_range;
 use crate::control::DiscretePi;
 use crate::validate::Validator;
-use num_complex::Complex64;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -84,20 +83,26 @@ impl InductionMotor {
         if omega_e.abs() < 1e-9 || v <= 0.0 {
             return MotorPoint::default();
         }
-        let j = Complex64::new(0.0, 1.0);
-        let y_m = 1.0 / (j * (omega_e * self.l_m));
-        let y_r = omega_s / (omega_e * Complex64::new(self.r_r, omega_s * self.l_r));
-        let z_par = 1.0 / (y_m + y_r);
-        let z_in = Complex64::new(self.r_s, omega_e * self.l_s) + z_par;
-        let i_in = v / z_in;
-        let v_ag = i_in * z_par;
-        let p_airgap = 3.0 * v_ag.norm_sqr() * y_r.re;
-        let i_in_sq = i_in.norm_sqr();
+        // In real arithmetic (the time loop calls this eight times a step; complex divisions cost
+        // ten real ones): rotor admittance y_r = g (R_r - j omega_s L_r) with
+        // g = omega_s / (omega_e (R_r^2 + omega_s^2 L_r^2)), magnetising -j / (omega_e L_m),
+        // Y = y_m + y_r; with D = 1 + (R_s + j omega_e L_s) Y the air-gap voltage is v / D and the
+        // stator current v Y / D.
+        let x_r = omega_s * self.l_r;
+        let g = omega_s / (omega_e * (self.r_r * self.r_r + x_r * x_r));
+        let (y_re, y_im) = (g * self.r_r, -g * x_r - 1.0 / (omega_e * self.l_m));
+        let x_s = omega_e * self.l_s;
+        let (d_re, d_im) = (1.0 + self.r_s * y_re - x_s * y_im, self.r_s * y_im + x_s * y_re);
+        let inv_d2 = 1.0 / (d_re * d_re + d_im * d_im);
+        let v2_inv = v * v * inv_d2;
+        let p_airgap = 3.0 * v2_inv * y_re;
+        let i_in_sq = v2_inv * (y_re * y_re + y_im * y_im);
+        let i_in_re = v * (y_re * d_re + y_im * d_im) * inv_d2;
         let torque_em = self.pole_pairs * p_airgap / omega_e;
         // eta_m takes its loss out of whatever flows through the shaft, in either direction.
         let torque = if torque_em * omega_rm >= 0.0 { self.eta_m * torque_em } else { torque_em / self.eta_m };
         MotorPoint {
-            p_in: 3.0 * v * i_in.re,
+            p_in: 3.0 * v * i_in_re,
             p_airgap,
             p_stator_loss: 3.0 * self.r_s * i_in_sq,
             p_rotor_loss: p_airgap * omega_s / omega_e,
@@ -170,6 +175,22 @@ impl InductionMotor {
             }
         }
         0.5 * (a + b)
+    }
+
+    /// Whether slip `omega_s` [rad/s] lies below both upper limits of the slip controller at
+    /// shaft speed `omega_rm`: below the peak-torque slip (the torque still rises there) and
+    /// below the slip of power `p_max`. A quick test (two circuit evaluations) that lets the
+    /// caller skip the solvers; false whenever in doubt.
+    pub fn below_slip_limits(&self, omega_rm: f64, v_max: f64, omega_s: f64, p_max: f64) -> bool {
+        if !(omega_s > 0.0 && omega_rm > 0.0) {
+            return false;
+        }
+        let q = self.shaft_torque(omega_rm, omega_s, v_max);
+        // The torque curve has one maximum: if it is higher 0.1 % further on, the peak lies
+        // beyond (by far more than the peak solver's 1e-9). The margin on the power keeps the
+        // answer clear of the power solver's tolerance (1e-10).
+        let q_up = self.shaft_torque(omega_rm, omega_s * 1.001, v_max);
+        q_up > q && q * omega_rm < p_max * (1.0 - 1e-6)
     }
 
     /// The slip speed in [0, `omega_s_peak`] at which the shaft power Q_m omega_rm equals `p_max`,
@@ -359,6 +380,7 @@ impl SlipControlParams {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_complex::Complex64;
 
     fn motor() -> InductionMotor {
         InductionMotor::new(&MotorParams::default())
@@ -378,6 +400,25 @@ mod tests {
             assert!(r2.abs() < 1e-6 * op.p_airgap.abs().max(1.0), "{rpm} {ws}: {r2}");
         }
         assert_eq!(m.operate_vhz(0.0, 0.0, 1e9), MotorPoint::default());
+    }
+
+    /// The real-arithmetic circuit equals the complex one it replaced (the reference, written
+    /// as the circuit reads): measured 4e-16 relative, asserted 1e-13.
+    #[test]
+    fn real_circuit_matches_complex_reference() {
+        let m = motor();
+        let j = Complex64::new(0.0, 1.0);
+        for &(v, we, ws) in &[(2400.0, 377.0, 3.0), (1200.0, 180.0, -2.0), (2400.0, 300.0, 0.0), (100.0, 5.0, 6.0)] {
+            let y_m = 1.0 / (j * (we * m.l_m));
+            let y_r = ws / (we * Complex64::new(m.r_r, ws * m.l_r));
+            let z_par = 1.0 / (y_m + y_r);
+            let i_in = v / (Complex64::new(m.r_s, we * m.l_s) + z_par);
+            let p_airgap = 3.0 * (i_in * z_par).norm_sqr() * y_r.re;
+            let op = m.operate(v, we, ws, (we - ws) / m.pole_pairs);
+            let rel = |a: f64, b: f64| (a - b).abs() / b.abs().max(1.0);
+            assert!(rel(op.p_in, 3.0 * v * i_in.re) < 1e-13, "{v} {we} {ws}");
+            assert!(rel(op.p_airgap, p_airgap) < 1e-13 && rel(op.i_in, i_in.norm_sqr().sqrt()) < 1e-13);
+        }
     }
 
     /// At rated frequency the peak-torque slip and torque agree with the Thevenin formulas
@@ -429,6 +470,29 @@ mod tests {
             let ws2 = m.peak_torque_slip(w_rm, vmax, ws * 1.3);
             assert!((ws2 - ws).abs() < 1e-6 * ws, "{ws2} vs {ws}");
         }
+    }
+
+    /// Whenever the quick test says a slip lies below the controller's upper limits, the solvers
+    /// agree (a sweep over shaft speed, inverter limit and slip, including near the limits).
+    #[test]
+    fn quick_limit_test_agrees_with_the_solvers() {
+        let m = motor();
+        let mut said_below = 0;
+        for rpm in [30.0, 120.0, 250.0, 300.0, 320.0] {
+            for vmax in [1e9, 2400.0, 1800.0] {
+                let w_rm = rpm * 2.0 * PI / 60.0;
+                let peak = m.peak_torque_slip(w_rm, vmax, 0.0);
+                let limit = m.power_limited_slip(w_rm, vmax, peak, m.p_rated);
+                for i in 1..400 {
+                    let ws = i as f64 * 0.01 * peak;
+                    if m.below_slip_limits(w_rm, vmax, ws, m.p_rated) {
+                        said_below += 1;
+                        assert!(ws < limit && ws < peak, "{rpm} rpm, v_max {vmax}: {ws} vs {limit}, {peak}");
+                    }
+                }
+            }
+        }
+        assert!(said_below > 1000, "{said_below}");
     }
 
     #[test]

@@ -41,21 +41,32 @@ impl Default for RudderParams {
     }
 }
 
-/// Inflow at the stern (eqs. 2.26-2.27): speed V_a [m/s] and angle alpha_a [rad].
-pub fn stern_inflow(u: f64, v: f64, r: f64, x_p: f64) -> (f64, f64) {
-    let vs = v - x_p * r;
-    ((u * u + vs * vs).sqrt(), libm::atan2(vs, u.abs().max(1e-6)))
+/// Inflow at the stern (eqs. 2.26-2.27): speed V_a [m/s], angle alpha_a [rad] and the angle's
+/// sine and cosine (from the velocity components: no trigonometric call in the time loop).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Inflow {
+    pub speed: f64,
+    pub angle: f64,
+    pub sin: f64,
+    pub cos: f64,
 }
 
-/// Rudder forces in the body frame [N] (eqs. 2.28, 2.30) at inflow speed `va`, inflow angle
-/// `alpha` and rudder angle `delta` [rad]. Lift is signed by (alpha - delta), drag always opposes
-/// the inflow.
-pub fn rudder_force(p: &RudderParams, rho: f64, va: f64, alpha: f64, delta: f64) -> (f64, f64) {
-    let q = 0.5 * rho * p.area_m2 * va * va;
-    let aoa = alpha - delta;
+/// The stern's inflow for surge `u`, sway `v` [m/s] and yaw rate `r` [rad/s], `x_p` [m] aft.
+pub fn stern_inflow(u: f64, v: f64, r: f64, x_p: f64) -> Inflow {
+    let vs = v - x_p * r;
+    let ux = u.abs().max(1e-6);
+    let hyp = (ux * ux + vs * vs).sqrt();
+    Inflow { speed: (u * u + vs * vs).sqrt(), angle: libm::atan2(vs, ux), sin: vs / hyp, cos: ux / hyp }
+}
+
+/// Rudder forces in the body frame [N] (eqs. 2.28, 2.30) with the stern's inflow `a` and rudder
+/// angle `delta` [rad]. Lift is signed by (alpha - delta), drag always opposes the inflow.
+pub fn rudder_force(p: &RudderParams, rho: f64, a: &Inflow, delta: f64) -> (f64, f64) {
+    let q = 0.5 * rho * p.area_m2 * a.speed * a.speed;
+    let aoa = a.angle - delta;
     let lift = q * p.lift_slope * aoa;
     let drag = q * p.drag_slope * aoa.abs();
-    let (s, c) = (libm::sin(alpha), libm::cos(alpha));
+    let (s, c) = (a.sin, a.cos);
     (lift * s - drag * c, -lift * c - drag * s)
 }
 
@@ -169,14 +180,17 @@ mod tests {
     fn lift_and_drag() {
         let p = RudderParams::default();
         let d = 5f64.to_radians();
-        let (fx, fy) = rudder_force(&p, 1025.0, 10.0, 0.0, d);
+        let straight = stern_inflow(10.0, 0.0, 0.0, 75.0);
+        let (fx, fy) = rudder_force(&p, 1025.0, &straight, d);
         let q = 0.5 * 1025.0 * 20.0 * 100.0;
         assert!((fy - q * 3.31 * d).abs() < 1e-6 * fy);
         assert!((fx + q * 0.46 * d).abs() < 1e-6 * fx.abs());
         // Moment -x_p F_y < 0: bow to port.
         assert!(-p.x_p_m * fy < 0.0);
         // Rudder aligned with the inflow: no force.
-        let (fx, fy) = rudder_force(&p, 1025.0, 10.0, 0.1, 0.1);
+        let a = stern_inflow(10.0, -10.0 * libm::tan(0.1), 0.0, 75.0);
+        assert!((a.sin - libm::sin(a.angle)).abs() < 1e-15 && (a.cos - libm::cos(a.angle)).abs() < 1e-15);
+        let (fx, fy) = rudder_force(&p, 1025.0, &a, a.angle);
         assert!(fx.abs() < 1e-9 && fy.abs() < 1e-9);
     }
 
@@ -190,7 +204,7 @@ mod tests {
             a.update(1.0, 0.0, 1.0);
         }
         assert!((a.delta + 20f64.to_radians()).abs() < 1e-12);
-        let (va, al) = stern_inflow(10.0, 0.0, 0.01, 75.0);
-        assert!((va - (100.0f64 + 0.5625).sqrt()).abs() < 1e-12 && al < 0.0);
+        let a = stern_inflow(10.0, 0.0, 0.01, 75.0);
+        assert!((a.speed - (100.0f64 + 0.5625).sqrt()).abs() < 1e-12 && a.angle < 0.0);
     }
 }

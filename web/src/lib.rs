@@ -219,15 +219,16 @@ pub fn design_lqg_ltr(json: &str) -> Result<String, JsError> {
 }
 
 /// Monte Carlo trials `a..b` of a scenario (run one after another in this worker); returns the
-/// partial statistics as JSON, to be merged with the other workers' by `mcSummary`.
+/// partial statistics in binary form (`Partial::to_bytes`: the exact moments packed as they are,
+/// no JSON for the bulk), to be merged with the other workers' by `mcSummary`.
 #[wasm_bindgen(js_name = mcRange)]
-pub fn mc_range(json: &str, a: u32, b: u32) -> Result<String, JsError> {
+pub fn mc_range(json: &str, a: u32, b: u32) -> Result<Vec<u8>, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
     if a >= b || b as u64 > sc.monte_carlo.trials {
         return Err(JsError::new(&format!("trials {a}..{b}: need a < b <= monte_carlo.trials")));
     }
     let p = aes_core::montecarlo::run_range(&sc, a as u64, b as u64).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
+    p.to_bytes().map_err(|e| JsError::new(&e))
 }
 
 /// The scenario of Monte Carlo trial `i` as JSON text: the study's scenario sailing the sea of
@@ -246,13 +247,13 @@ pub fn trial_scenario(json: &str, i: u32) -> Result<String, JsError> {
     Ok(sc.to_json())
 }
 
-/// Merges partials (JSON strings from `mcRange`) and returns the study's summary JSON; the result
-/// does not depend on how the trials were split or in which order the partials come.
+/// Merges partials (the binary ones of `mcRange`) and returns the study's summary JSON; the
+/// result does not depend on how the trials were split or in which order the partials come.
 #[wasm_bindgen(js_name = mcSummary)]
-pub fn mc_summary(partials: Vec<String>) -> Result<String, JsError> {
+pub fn mc_summary(partials: Vec<js_sys::Uint8Array>) -> Result<String, JsError> {
     let mut acc: Option<aes_core::montecarlo::Partial> = None;
     for p in &partials {
-        let p = aes_core::montecarlo::Partial::from_json(p).map_err(|e| JsError::new(&e))?;
+        let p = aes_core::montecarlo::Partial::from_bytes(&p.to_vec()).map_err(|e| JsError::new(&e))?;
         match acc.as_mut() {
             None => acc = Some(p),
             Some(a) => a.merge(&p).map_err(|e| JsError::new(&e))?,
@@ -263,6 +264,23 @@ pub fn mc_summary(partials: Vec<String>) -> Result<String, JsError> {
     aes_core::validate::check_finite(&s).map_err(|e| JsError::new(&e))?;
     let v = aes_core::montecarlo::summary(&acc).map_err(|e| JsError::new(&e))?;
     Ok(v.to_string())
+}
+
+/// The RAO table of a scenario's seakeeping grid as flat numbers (built here once, or taken from
+/// this worker's cache): the page builds it in one worker and hands it to the Monte Carlo workers
+/// (`raoTableLoad`), so no worker builds it again.
+#[wasm_bindgen(js_name = raoTableValues)]
+pub fn rao_table_values(json: &str) -> Result<Vec<f64>, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    let t = aes_core::seakeeping::cache::rao_table(&sc.seakeeping.grid).map_err(|e| JsError::new(&e))?;
+    Ok(t.values())
+}
+
+/// Puts the table of `raoTableValues` (from another worker) into this worker's cache.
+#[wasm_bindgen(js_name = raoTableLoad)]
+pub fn rao_table_load(json: &str, values: &[f64]) -> Result<(), JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    aes_core::seakeeping::cache::insert_rao_table(&sc.seakeeping.grid, values).map_err(|e| JsError::new(&e))
 }
 
 /// Heave and pitch RAOs of the DTMB 5415 (`aes-sim rao`'s JSON) at `speed_kn` and `heading_deg`

@@ -31,10 +31,13 @@ export class MonteCarlo {
     let failed = null;
     this.workers = Array.from({ length: k }, () => new WorkerClient({ onFailure: (e) => { failed = failed || e; } }));
     onProgress(0, k);
+    // The RAO table is built once, by the page's worker (which keeps it for later runs), and
+    // handed to every study worker (copied by structured clone) while they load.
+    const { values: raoTable } = await client.request(REQUEST.raoTable, { scenario });
     const parts = await Promise.all(this.workers.map(async (w, i) => {
       const a = Math.floor((n * i) / k), b = Math.floor((n * (i + 1)) / k);
       await w.ready;
-      const { partials } = await w.request(REQUEST.mc, { scenario, a, b }, (m) => {
+      const { partials } = await w.request(REQUEST.mc, { scenario, a, b, raoTable }, (m) => {
         doneBy[i] = m.done;
         onProgress(doneBy.reduce((x, y) => x + y, 0), k);
       });

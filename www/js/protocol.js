@@ -15,8 +15,9 @@ export const REQUEST = {
   // wall_ms, constants}; with live, progress carries the rows recorded since the last report
   // ({name: Float64Array}) and the first also the page constants.
   run: 'run',
-  mc: 'mc', // {scenario, a, b} -> progress {done} ... done {partials}
+  mc: 'mc', // {scenario, a, b, raoTable?} -> progress {done} ... done {partials} (Uint8Arrays)
   mcSummary: 'mc-summary', // {scenario, partials} -> done {summary, constants}
+  raoTable: 'rao-table', // {scenario} -> done {values} (Float64Array: the RAO table, built once)
   trial: 'trial', // {scenario, i} -> done {scenario}: trial i's scenario as JSON text (exact seed)
   rao: 'rao', // {speed_kn, heading_deg, omegas} -> done {result}
   fuel: 'fuel', // {scenario, omegas} -> done {rows}

@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -61,8 +61,11 @@ const handlers = {
   // Monte Carlo trials a..b in about ten chunks: progress after each, and few partials to merge
   // (each carries whole envelopes). They stay separate partials: merging needs the exact integer
   // sums, which only the Rust side holds; the summary request merges them all.
+  // The RAO table comes from the page (built once, in its worker), not built again here; the
+  // partials are binary (Uint8Array) and travel as transferables.
   [REQUEST.mc]: (m, progress) => {
     checked(m.scenario);
+    if (m.raoTable) raoTableLoad(m.scenario, m.raoTable);
     const partials = [];
     const chunk = Math.max(1, Math.ceil((m.b - m.a) / 10));
     for (let i = m.a; i < m.b; i += chunk) {
@@ -70,10 +73,15 @@ const handlers = {
       partials.push(mcRange(m.scenario, i, j));
       progress({ done: j - m.a });
     }
-    return { partials };
+    return [{ partials }, partials.map((p) => p.buffer)];
   },
 
   [REQUEST.mcSummary]: (m) => ({ summary: JSON.parse(mcSummary(m.partials)), constants: constantsOf(m.scenario) }),
+
+  [REQUEST.raoTable]: (m) => {
+    const values = raoTableValues(checked(m.scenario));
+    return [{ values }, [values.buffer]];
+  },
 
   [REQUEST.trial]: (m) => ({ scenario: trialScenario(checked(m.scenario), m.i) }),
 

@@ -99,10 +99,10 @@ impl SternMotion {
 }
 
 /// The wave at a point `x_p` [m] aft of the centre of gravity per unit wave at the centre, for
-/// wave number `k` [1/m] and heading `beta` [rad] (STF: 180 deg head seas): its phase leads by
-/// k x_p cos(beta).
-pub fn stern_wave(k: f64, x_p: f64, beta: f64) -> C {
-    let ph = k * x_p * libm::cos(beta);
+/// wave number `k` [1/m] and heading beta given by its cosine `cos_beta` (STF: 180 deg head
+/// seas): its phase leads by k x_p cos(beta).
+pub fn stern_wave(k: f64, x_p: f64, cos_beta: f64) -> C {
+    let ph = k * x_p * cos_beta;
     C::new(libm::cos(ph), libm::sin(ph))
 }
 

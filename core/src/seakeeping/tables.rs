@@ -137,6 +137,53 @@ impl RaoTable {
         &self.data[(i * self.speeds.len() + j) * self.headings.len() + k]
     }
 
+    /// Numbers per grid point in `values`.
+    pub const VALUES_PER_POINT: usize = 18;
+
+    /// The table as flat numbers (every grid point's response, in the grid's order): what a web
+    /// worker that built it hands to the others, so the table is built once.
+    pub fn values(&self) -> Vec<f64> {
+        let mut v = Vec::with_capacity(self.data.len() * Self::VALUES_PER_POINT);
+        for r in &self.data {
+            v.extend_from_slice(&[r.omega0, r.omega_e, r.k]);
+            for c in [r.sway, r.heave, r.roll, r.pitch, r.yaw] {
+                v.extend_from_slice(&[c.re, c.im]);
+            }
+            v.extend_from_slice(&[r.f_add, r.added_resistance, r.drift_force, r.added_resistance_gb, r.b44_viscous]);
+        }
+        v
+    }
+
+    /// The table of `grid` from `values` (the same bits as the table they came from).
+    pub fn from_values(grid: &SeakeepingGrid, values: &[f64]) -> Result<RaoTable, String> {
+        grid.validate()?;
+        let (omegas, speeds, headings) = (grid.omegas(), grid.speeds(), grid.headings());
+        let n = omegas.len() * speeds.len() * headings.len();
+        if values.len() != n * Self::VALUES_PER_POINT || !values.iter().all(|v| v.is_finite()) {
+            return Err(format!("an RAO table of this grid has {} finite values", n * Self::VALUES_PER_POINT));
+        }
+        let c = |v: &[f64], i: usize| C::new(v[i], v[i + 1]);
+        let data = values
+            .chunks_exact(Self::VALUES_PER_POINT)
+            .map(|v| Response {
+                omega0: v[0],
+                omega_e: v[1],
+                k: v[2],
+                sway: c(v, 3),
+                heave: c(v, 5),
+                roll: c(v, 7),
+                pitch: c(v, 9),
+                yaw: c(v, 11),
+                f_add: v[13],
+                added_resistance: v[14],
+                drift_force: v[15],
+                added_resistance_gb: v[16],
+                b44_viscous: v[17],
+            })
+            .collect();
+        Ok(RaoTable { grid: *grid, omegas, speeds, headings, data })
+    }
+
     /// Trilinear interpolation (complex RAOs component-wise) at wave frequency `omega0` [rad/s],
     /// speed `u` [m/s] and heading `beta` [rad, any angle; 180 deg head seas]; values outside the
     /// grid are held at its edge.

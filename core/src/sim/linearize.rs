@@ -150,7 +150,7 @@ mod tests {
                     h.field_voltage[k] *= 1.0 + du;
                 }
             }
-            let (mut x, mut out, dt) = (m.x0, Outputs::default(), 1e-3);
+            let (mut x, dt) = (m.x0, 1e-3);
             let n = m.system.a.nrows();
             let mut z = nalgebra::DVector::zeros(n);
             let mut u = nalgebra::DVector::zeros(2);
@@ -159,7 +159,7 @@ mod tests {
             let w0: f64 = (0..N_SETS).map(|k| m.x0[omega_t(k)]).sum::<f64>() / N_SETS as f64;
             let v0: f64 = (0..N_SHAFTS).map(|s| m.x0[bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
             for _ in 0..1000 {
-                rk4_step(plant, &mut x, &h, dt, &mut out);
+                rk4_step(plant, &mut x, &h, dt);
                 // The linear model by RK4 as well.
                 let f = |z: &nalgebra::DVector<f64>| &m.system.a * z + &m.system.b * &u;
                 let k1 = f(&z);

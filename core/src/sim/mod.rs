@@ -374,9 +374,21 @@ impl Simulation {
         for s in 0..N_SHAFTS {
             let w_rm = x[omega_rm(s)];
             let v_max = p.dc_link.max_phase_voltage(x[bus_voltage(s)]);
-            let peak = p.motor.peak_torque_slip(w_rm, v_max, c.peak_slip[s]);
-            c.peak_slip[s] = peak;
-            let limit = p.motor.power_limited_slip(w_rm, v_max, peak, p.motor.p_rated);
+            let err = p.motor.pole_pairs * (shaft_ref - w_rm);
+            // The upper slip limit (power-limited slip below the peak-torque slip) takes two
+            // iterative solves; it changes nothing unless the PI's output or integrator would
+            // reach it. Both are below it when the torque there still rises with slip (below the
+            // peak) and gives less than rated power, which two circuit evaluations show.
+            let reach = c.slip[s].pi.unsaturated(err).max(c.slip[s].pi.integral + c.slip[s].pi.ki * err * ts);
+            // (With a zero-slip offset the output may jump to the offset: it must lie below too.)
+            let reach = reach.max(c.slip[s].offset);
+            let limit = if p.motor.below_slip_limits(w_rm, v_max, reach, p.motor.p_rated) {
+                f64::INFINITY
+            } else {
+                let peak = p.motor.peak_torque_slip(w_rm, v_max, c.peak_slip[s]);
+                c.peak_slip[s] = peak;
+                p.motor.power_limited_slip(w_rm, v_max, peak, p.motor.p_rated)
+            };
             let lower = if c.allow_braking {
                 let peak_b = p.motor.peak_braking_slip(w_rm, v_max, c.peak_brake_slip[s]);
                 c.peak_brake_slip[s] = peak_b;
@@ -384,7 +396,6 @@ impl Simulation {
             } else {
                 0.0
             };
-            let err = p.motor.pole_pairs * (shaft_ref - w_rm);
             c.held.slip[s] = c.slip[s].update(err, lower, limit, ts);
         }
         // Heading: the reference ramps to the target; the autopilot steers the rudder.
@@ -567,7 +578,7 @@ impl Simulation {
             if self.sea.is_some() && self.step > 0 {
                 self.sea_step();
             }
-            rk4_step(&self.plant, &mut self.x, &self.ctl.held, self.dt, &mut self.out);
+            rk4_step(&self.plant, &mut self.x, &self.ctl.held, self.dt);
             if self.sea.is_some() && !self.x[HEADING].is_finite() {
                 return Err(SimError::Diverged {
                     time_s: self.t,

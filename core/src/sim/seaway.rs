@@ -13,6 +13,12 @@
 //! second-order Taylor series of its own sum (the derivatives come with the sum at no extra
 //! transcendental cost). RAOs, the stern's phase offsets and the drift-force weights are looked up
 //! again every `rao_refresh_s` at the ship's speed and heading then.
+//!
+//! Phase recurrence: each component keeps its phasor e^{i theta} from the last sample and turns
+//! it by e^{i d theta} (a Taylor series, no trigonometric call) where d theta = omega dt -
+//! k (dx cos mu + dy sin mu) is the phase gained since; every `RESYNC_SAMPLES` samples the
+//! phasors are computed afresh with libm. The phasors then agree with libm's to 2e-13 (test
+//! `phase_recurrence_stays_within_1e_12`), without the two trigonometric calls per component.
 
 use crate::interp::bracket;
 use crate::scenario::{Scenario, SeaKind};
@@ -110,7 +116,52 @@ pub struct Seaway {
     wy: Vec<f64>,
     sign_x: f64,
     sign_y: f64,
+    /// Phasor (cos theta, sin theta) of every component at the last sample, the time and place
+    /// of that sample, and the samples since the last exact one.
+    phasor: Vec<(f64, f64)>,
+    at: Option<(f64, f64, f64)>,
+    since_sync: u32,
     pub last: SeaSample,
+}
+
+/// Samples between exact phasors (libm): rounding in the recurrence grows by about 1e-16 a sample.
+pub const RESYNC_SAMPLES: u32 = 200;
+/// Largest phase step the recurrence takes [rad]; the series below is exact to 5e-14 up to it
+/// (truncation d^16 / 16!). A larger step (a sample far from the last) takes libm.
+const MAX_PHASE_STEP_RAD: f64 = 1.0;
+
+/// (cos d, sin d) by their Taylor series to d^14 and d^15, in Horner form in d^2 (no
+/// trigonometric call; the same operations on every platform).
+#[inline]
+fn rotation(d: f64) -> (f64, f64) {
+    const C: [f64; 8] = [
+        1.0,
+        -1.0 / 2.0,
+        1.0 / 24.0,
+        -1.0 / 720.0,
+        1.0 / 40_320.0,
+        -1.0 / 3_628_800.0,
+        1.0 / 479_001_600.0,
+        -1.0 / 87_178_291_200.0,
+    ];
+    const S: [f64; 8] = [
+        1.0,
+        -1.0 / 6.0,
+        1.0 / 120.0,
+        -1.0 / 5040.0,
+        1.0 / 362_880.0,
+        -1.0 / 39_916_800.0,
+        1.0 / 6_227_020_800.0,
+        -1.0 / 1_307_674_368_000.0,
+    ];
+    let z = d * d;
+    let mut c = C[7];
+    let mut s = S[7];
+    for k in (0..7).rev() {
+        c = c * z + C[k];
+        s = s * z + S[k];
+    }
+    (c, s * d)
 }
 
 impl Seaway {
@@ -152,6 +203,9 @@ impl Seaway {
             wy: vec![0.0; n],
             sign_x: 1.0,
             sign_y: 1.0,
+            phasor: vec![(1.0, 0.0); n],
+            at: None,
+            since_sync: 0,
             last: SeaSample { hub: k.hub_depth_m, ..Default::default() },
         }))
     }
@@ -166,11 +220,16 @@ impl Seaway {
         let (j0, fj) = bracket(&self.speeds, u);
         let nh = self.headings.len();
         let (mut sx, mut sy) = (0.0, 0.0);
+        // cos and sin of beta = psi - mu by the difference formulas: two libm calls per refresh
+        // instead of three per component.
+        let (sp, cp) = (libm::sin(psi), libm::cos(psi));
         for (i, c) in self.comps.iter().enumerate() {
             // beta = psi - mu (STF: 180 deg head seas), folded into [0, pi]; beyond pi the waves
             // come from port and roll and the side force change sign.
             let beta = (psi - c.wave.direction).rem_euclid(2.0 * PI);
             let (bf, side) = if beta > PI { (2.0 * PI - beta, -1.0) } else { (beta, 1.0) };
+            let cos_beta = cp * c.cos_mu + sp * c.sin_mu;
+            let sin_beta = sp * c.cos_mu - cp * c.sin_mu;
             let (k0, fk) = bracket(&self.headings, bf);
             let mut acc = [C::new(0.0, 0.0); 5];
             let mut fadd = 0.0;
@@ -190,15 +249,15 @@ impl Seaway {
                 }
             }
             let (h3, h5, h4) = (acc[0], acc[1], acc[2] * side);
-            let stern = stern_wave(c.wave.k, self.x_p, beta);
+            let stern = stern_wave(c.wave.k, self.x_p, cos_beta);
             let hub = self.stern_motion.hub_transfer(stern, h3, h5, self.x_p);
             // STF's sway is to port and its yaw bow to port: both flip for starboard-positive axes.
             self.h[i] = [hub, h3, h5, h4, stern, -acc[3] * side, -acc[4] * side];
             // Mean force components per amplitude squared, ship axes (x forward, y starboard):
             // STF's y is to port.
             let a2 = c.wave.amplitude * c.wave.amplitude;
-            self.wx[i] = libm::cos(beta) * fadd;
-            self.wy[i] = -libm::sin(beta) * fadd;
+            self.wx[i] = cos_beta * fadd;
+            self.wy[i] = -sin_beta * fadd;
             sx += a2 * self.wx[i];
             sy += a2 * self.wy[i];
         }
@@ -216,12 +275,28 @@ impl Seaway {
     pub fn sample(&mut self, t: f64, x: f64, y: f64, xd: f64, yd: f64) -> SeaSample {
         let mut s = SeaSample { t, hub: self.hub0, ..Default::default() };
         let (mut cx, mut sx, mut cy, mut sy) = (0.0, 0.0, 0.0, 0.0);
-        for (i, c) in self.comps.iter().enumerate() {
+        // Since the last sample (None: compute every phasor afresh).
+        let step = match self.at {
+            Some((t0, x0, y0)) if self.since_sync < RESYNC_SAMPLES => Some((t - t0, x - x0, y - y0)),
+            _ => None,
+        };
+        self.since_sync = if step.is_some() { self.since_sync + 1 } else { 0 };
+        self.at = Some((t, x, y));
+        let (dt, dx, dy) = step.unwrap_or((0.0, 0.0, 0.0));
+        let parts = self.comps.iter().zip(&self.h).zip(self.wx.iter().zip(&self.wy)).zip(self.phasor.iter_mut());
+        for (((c, h), (&wx, &wy)), phasor) in parts {
             let w = &c.wave;
-            let theta = w.phase_at(c.cos_mu, c.sin_mu, x, y, t);
             let rate = w.omega - w.k * (xd * c.cos_mu + yd * c.sin_mu);
-            let (sn, cs) = (libm::sin(theta), libm::cos(theta));
-            let h = &self.h[i];
+            let d = w.omega * dt - w.k * (dx * c.cos_mu + dy * c.sin_mu);
+            let (cs, sn) = if step.is_some() && d.abs() <= MAX_PHASE_STEP_RAD {
+                let (c0, s0) = *phasor;
+                let (cd, sd) = rotation(d);
+                (c0 * cd - s0 * sd, s0 * cd + c0 * sd)
+            } else {
+                let theta = w.phase_at(c.cos_mu, c.sin_mu, x, y, t);
+                (libm::cos(theta), libm::sin(theta))
+            };
+            *phasor = (cs, sn);
             let a = w.amplitude;
             // Re{H e^{i theta}} and its time derivatives.
             let re = |z: C| z.re * cs - z.im * sn;
@@ -236,10 +311,10 @@ impl Seaway {
             s.wave_stern += a * re(h[4]);
             s.sway += a * re(h[5]);
             s.yaw += a * re(h[6]);
-            cx += self.wx[i] * cs;
-            sx += self.wx[i] * sn;
-            cy += self.wy[i] * cs;
-            sy += self.wy[i] * sn;
+            cx += wx * cs;
+            sx += wx * sn;
+            cy += wy * cs;
+            sy += wy * sn;
         }
         if self.second_order {
             s.fx = newman_force(self.sign_x, cx, sx);
@@ -255,5 +330,59 @@ impl Seaway {
         let fx: f64 = self.wx.iter().map(|w| w * w).sum::<f64>() * self.sign_x;
         let fy: f64 = self.wy.iter().map(|w| w * w).sum::<f64>() * self.sign_y;
         (fx, fy)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenario::SeaKind;
+
+    /// The phasors carried by the recurrence agree with libm's sin and cos of the phase along an
+    /// 80 s run at 25 knots in SS6 (1600 samples, 200 components): measured 1.6e-13 at most (the
+    /// direct phase, hundreds of radians, is itself rounded at about that level), asserted 1e-12
+    /// (the bound is 1e-9); the hub depth's sum: measured 3.4e-14 m, asserted 1e-11 m.
+    #[test]
+    fn phase_recurrence_stays_within_1e_12() {
+        let mut sc = Scenario::default();
+        sc.sea.kind = SeaKind::Random;
+        sc.sea.sea_state = 6;
+        sc.sim.seed = 3;
+        let mut sea = Seaway::new(&sc).unwrap().unwrap();
+        let (u, psi) = (12.86, 0.1);
+        sea.refresh(u, psi);
+        let (xd, yd) = (u * libm::cos(psi), u * libm::sin(psi));
+        let (mut worst, mut worst_hub) = (0.0f64, 0.0f64);
+        for n in 0..1600 {
+            let t = n as f64 * 0.05;
+            // A wobbling track, so the steps differ from sample to sample.
+            let (x, y) = (xd * t + 3.0 * libm::sin(0.3 * t), yd * t);
+            let s = sea.sample(t, x, y, xd, yd);
+            let mut hub = sea.hub0;
+            for (i, c) in sea.comps.iter().enumerate() {
+                let th = c.wave.phase_at(c.cos_mu, c.sin_mu, x, y, t);
+                let (cs, sn) = (libm::cos(th), libm::sin(th));
+                worst = worst.max((sea.phasor[i].0 - cs).abs()).max((sea.phasor[i].1 - sn).abs());
+                hub += c.wave.amplitude * (sea.h[i][0].re * cs - sea.h[i][0].im * sn);
+            }
+            worst_hub = worst_hub.max((s.hub - hub).abs());
+        }
+        assert!(worst < 1e-12, "phasor error {worst:e}");
+        assert!(worst_hub < 1e-11, "hub depth error {worst_hub:e} m");
+        // A sample far from the last (here back in time by 10 s) takes libm.
+        let s = sea.sample(70.0, 900.0, 90.0, xd, yd);
+        assert!(s.hub.is_finite());
+        let c = &sea.comps[7];
+        let th = c.wave.phase_at(c.cos_mu, c.sin_mu, 900.0, 90.0, 70.0);
+        assert!((sea.phasor[7].0 - libm::cos(th)).abs() < 1e-12);
+    }
+
+    #[test]
+    fn rotation_series_matches_libm() {
+        for i in -100..=100 {
+            let d = i as f64 * 0.01 * MAX_PHASE_STEP_RAD;
+            let (c, s) = rotation(d);
+            assert!((c - libm::cos(d)).abs() < 5e-14 && (s - libm::sin(d)).abs() < 5e-14, "{d}");
+        }
     }
 }
