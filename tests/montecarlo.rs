@@ -98,3 +98,30 @@ fn arrival_times_agree_with_rice() {
     assert!((mc - pred).abs() < 2.0 * se, "Monte Carlo {mc} +- {se} against Rice {pred}");
     assert_eq!(a["events"].as_u64().unwrap() + a["censored"].as_u64().unwrap(), 200);
 }
+
+/// A histogram bar can be traced back to its trials: counting each trial's bins (the page's
+/// "replay a trial from this bar") gives exactly the study's histograms, bin for bin.
+#[test]
+fn trial_bins_add_up_to_the_histograms() {
+    use aes_core::montecarlo::{study_summary, trial_bins};
+    let mut sc = preset("mc-excess-energy").unwrap();
+    sc.sim.duration_s = 30.0;
+    sc.monte_carlo.trials = 6;
+    sc.monte_carlo.histogram_time_s = 10.0;
+    sc.monte_carlo.periodogram_segment_s = 5.0;
+    let s = study_summary(&run_range(&sc, 0, 6).unwrap()).unwrap();
+    let count = |pick: &dyn Fn(&aes_core::montecarlo::TrialBins) -> Option<usize>, n: usize| {
+        let mut c = vec![0u64; n];
+        for i in 0..6 {
+            if let Some(b) = pick(&trial_bins(&sc, i).unwrap()) {
+                c[b] += 1;
+            }
+        }
+        c
+    };
+    let e = s.excess_energy_mj.as_ref().unwrap();
+    assert_eq!(count(&|b| b.excess, e.histogram.counts.len()), e.histogram.counts);
+    assert_eq!(count(&|b| b.arrival, s.arrival_time_s.histogram.counts.len()), s.arrival_time_s.histogram.counts);
+    assert_eq!(count(&|b| b.at_time, s.histogram_at_t.histogram.counts.len()), s.histogram_at_t.histogram.counts);
+    assert!(e.histogram.counts.iter().sum::<u64>() > 0, "no trial met a surface effect");
+}

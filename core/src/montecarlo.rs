@@ -407,6 +407,30 @@ fn motor_energy(sc: &Scenario, pu: &[f64], dt: f64) -> f64 {
     pu.windows(2).map(|w| 0.5 * (w[0] + w[1]) * p * dt).sum()
 }
 
+/// Which bin of each of the study's histograms one trial's value falls in (None: outside the
+/// histogram's range, or no value, e.g. no surface event). The page replays a trial from a
+/// histogram bar by running trials in order until one lands in that bar: the summary keeps no
+/// per-trial values (its memory does not grow with the trials), and a trial's seed reproduces it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct TrialBins {
+    pub at_time: Option<usize>,
+    pub excess: Option<usize>,
+    pub excess_vs_calm: Option<usize>,
+    pub arrival: Option<usize>,
+}
+
+/// The bins of trial `i` (see [`TrialBins`]).
+pub fn trial_bins(sc: &Scenario, i: u64) -> Result<TrialBins, String> {
+    let p = run_trial(sc, i)?;
+    let bin = |h: &Histogram| h.counts.iter().position(|&c| c > 0);
+    Ok(TrialBins {
+        at_time: bin(&p.at_time_hist),
+        excess: bin(&p.excess_hist),
+        excess_vs_calm: bin(&p.excess_vs_calm_hist),
+        arrival: bin(&p.arrival_hist),
+    })
+}
+
 /// Runs trial `i` of the study `sc` and returns its statistics as a one-trial partial.
 pub fn run_trial(sc: &Scenario, i: u64) -> Result<Partial, String> {
     let m = &sc.monte_carlo;

@@ -271,6 +271,44 @@ await check('Monte Carlo: a trial replays as a single run in the live views, and
   await page.$eval('#live', (e) => e.scrollIntoView());
   await page.screenshot({ path: `${shots}/monte-carlo-replay.png` });
 });
+await check('Monte Carlo: a click on a histogram bar replays a trial whose value lies in that bar', async () => {
+  await page.click('#mc-run');
+  await page.waitForFunction(() => /^Monte Carlo done/.test(document.getElementById('status').textContent) || document.getElementById('status').className === 'error', null, { timeout: 120000 });
+  // The arrival-time histogram: its first non-empty bar, and where it lies.
+  const bar = await page.evaluate(() => {
+    for (const c of document.querySelectorAll('#plots .chart')) {
+      if (!/Arrival time/.test(c.closest('.plot').querySelector('h3').textContent)) continue;
+      const u = c.uplot, x = u.data[0], n = u.data[1], i = n.findIndex((k) => k > 0), w = x[1] - x[0];
+      const left = u.valToPos(x[i], 'x'), top = u.valToPos(n[i] / 2, 'y');
+      c.scrollIntoView();
+      return { i, lo: x[i] - w / 2, hi: x[i] + w / 2, left, top };
+    }
+    return null;
+  });
+  assert(bar && bar.i >= 0, 'no arrival histogram with a bar');
+  // A real mouse click on the bar (the plot's overlay takes the pointer).
+  const box = await page.evaluate(() => {
+    for (const c of document.querySelectorAll('#plots .chart')) {
+      if (!/Arrival time/.test(c.closest('.plot').querySelector('h3').textContent)) continue;
+      const r = c.uplot.over.getBoundingClientRect();
+      return { x: r.left, y: r.top };
+    }
+    return null;
+  });
+  const clicked = box !== null;
+  if (clicked) {
+    // 3 px into the bar: the first bar's centre can sit on the plot's very edge.
+    await page.mouse.move(box.x + bar.left + 3, box.y + bar.top);
+    await page.mouse.click(box.x + bar.left + 3, box.y + bar.top);
+  }
+  assert(clicked, 'could not click the arrival histogram');
+  await page.waitForFunction(() => /^Done \(/.test(document.getElementById('status').textContent) || document.getElementById('status').className === 'error', null, { timeout: 60000 });
+  const st = await page.textContent('#status');
+  assert(/Monte Carlo trial \d+ \(sea seed /.test(st), st);
+  // The replayed run's first surface effect (beta_T leaves 1) lies in the clicked bar.
+  const first = await page.evaluate(() => { const c = window.__liveViews.cols; const i = c.beta_t.findIndex((b) => b < 1); return i < 0 ? null : c.t_s[i]; });
+  assert(first !== null && first >= bar.lo - 0.11 && first < bar.hi + 0.11, `first surface effect at ${first} s, the bar is ${bar.lo} to ${bar.hi} s`);
+});
 await check('a running Monte Carlo study can be cancelled and the form survives', async () => {
   await setField(page, 'monte_carlo.trials', 400);
   await page.click('#mc-run');

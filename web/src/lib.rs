@@ -218,6 +218,19 @@ pub fn design_lqg_ltr(json: &str) -> Result<String, JsError> {
     serde_json::to_string(&d).map_err(|e| JsError::new(&e.to_string()))
 }
 
+/// The histogram bins trial `i` of a Monte Carlo study falls in (`at_time`, `excess`,
+/// `excess_vs_calm`, `arrival`: a bin index or null), as JSON: the page finds a trial to replay
+/// from a histogram bar with it.
+#[wasm_bindgen(js_name = trialBins)]
+pub fn trial_bins(json: &str, i: u32) -> Result<String, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    if i as u64 >= sc.monte_carlo.trials {
+        return Err(JsError::new(&format!("trial {i}: the study has {} trials", sc.monte_carlo.trials)));
+    }
+    let b = aes_core::montecarlo::trial_bins(&sc, i as u64).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&b).map_err(|e| JsError::new(&e.to_string()))
+}
+
 /// Monte Carlo trials `a..b` of a scenario (run one after another in this worker); returns the
 /// partial statistics in binary form (`Partial::to_bytes`: the exact moments packed as they are,
 /// no JSON for the bulk), to be merged with the other workers' by `mcSummary`.

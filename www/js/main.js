@@ -236,13 +236,26 @@ async function runMonteCarlo() {
   setPhase('idle');
   $('summary-box').hidden = true;
   $('compare-box').hidden = true;
-  showMonteCarlo(plots, out.summary, signals, out.constants, { onReplay: replayTrial });
+  showMonteCarlo(plots, out.summary, signals, out.constants, { onReplay: replayTrial, onPickBar: replayFromBar });
   status(`Monte Carlo done: ${n} trials in ${((performance.now() - started) / 1000).toFixed(1)} s.`);
   $('results').focus();
 }
 
 // A Monte Carlo trial as a single run (plots and live views): its scenario comes from the wasm
 // with the trial's exact seed.
+// A histogram bar picked: find its first trial (trials run in order in the worker), replay it.
+async function replayFromBar(hist, bin) {
+  if (isBusy() || !form) return;
+  status('Finding a trial in that bar (trials run in order until one lands in it)...');
+  let r;
+  try {
+    r = await client.request(REQUEST.findTrial, { scenario: JSON.stringify(form.current()), hist, bin }, (p) => status(`Finding a trial in that bar: ${p.tried} tried...`));
+  } catch (e) { failed(e); return; }
+  if (r.trial === null) { status('No trial of this study lands in that bar.', true); return; }
+  if ($('mc-trial')) $('mc-trial').value = String(r.trial);
+  await replayTrial(r.trial);
+}
+
 async function replayTrial(i) {
   if (isBusy() || !form) return;
   let r;

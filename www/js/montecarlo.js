@@ -70,8 +70,9 @@ function table(caption, rows, head) {
 }
 
 // The study's summary: tables, then envelopes, histograms, onset and periodogram plots.
-// onReplay(i): replay trial i as a single run in the live views.
-export function showMonteCarlo(box, s, signals, constants, { onReplay = null } = {}) {
+// onReplay(i): replay trial i as a single run in the live views; onPickBar(hist, bin): replay a
+// trial from a histogram bar.
+export function showMonteCarlo(box, s, signals, constants, { onReplay = null, onPickBar = null } = {}) {
   box.clear();
   const a = s.arrival_time_s, r = s.rice, e = s.excess_energy_mj;
   const rows = [['Trials', s.trials], ['Seed', s.seed]];
@@ -125,12 +126,13 @@ export function showMonteCarlo(box, s, signals, constants, { onReplay = null } =
       { time: true, key: fewer >= 0 ? [`From t = ${fmt(env.t_s[fewer], 3)} s fewer trials are running (dotted, right axis): the envelope after that is drawn from those left.`] : null });
   }
   const ht = s.histogram_at_t;
-  if (ht.n > 0) box.histogram(`${signals.labelWithUnit(ht.signal, constants)} at t = ${ht.t_s} s (Fig. 5-21), skewness ${fmt(ht.skewness, 3)}`, ht.histogram, signals.labelWithUnit(ht.signal, constants));
-  if (e) box.histogram(`Excess energy per trial vs the submerged counterpart [MJ] (Fig. 5-22): ${fmt(e.mean)} ± ${fmt(e.std)}`, e.histogram, 'excess energy [MJ]');
+  const pick = (hist) => (onPickBar ? (bin) => onPickBar(hist, bin) : null);
+  if (ht.n > 0) box.histogram(`${signals.labelWithUnit(ht.signal, constants)} at t = ${ht.t_s} s (Fig. 5-21), skewness ${fmt(ht.skewness, 3)}`, ht.histogram, signals.labelWithUnit(ht.signal, constants), null, undefined, pick('at_time'));
+  if (e) box.histogram(`Excess energy per trial vs the submerged counterpart [MJ] (Fig. 5-22): ${fmt(e.mean)} ± ${fmt(e.std)}`, e.histogram, 'excess energy [MJ]', null, undefined, pick('excess'));
   if (a.events > 0) {
     const h = a.histogram, w = (h.hi - h.lo) / h.counts.length, total = s.trials;
     const overlay = r ? { label: `exponential, Rice rate ${fmt(r.rate_per_s, 3)}/s`, values: h.counts.map((_, i) => total * (Math.exp(-r.rate_per_s * (h.lo + i * w)) - Math.exp(-r.rate_per_s * (h.lo + (i + 1) * w)))) } : null;
-    box.histogram('Arrival time of the first surface effect [s] (Fig. 5-24)', h, time, overlay);
+    box.histogram('Arrival time of the first surface effect [s] (Fig. 5-24)', h, time, overlay, undefined, pick('arrival'));
   }
   if (s.onset && s.onset.t_s.length > 1) {
     const o = s.onset;

@@ -163,12 +163,22 @@ export class PlotBox {
   }
 
   // A histogram {lo, hi, counts} as bars, with an optional overlay {label, values}.
-  histogram(title, h, xLabel, overlay, generation) {
+  // onPick(bin): a click on a non-empty bar (the bar under the cursor).
+  histogram(title, h, xLabel, overlay, generation, onPick = null) {
     const w = (h.hi - h.lo) / h.counts.length;
     const centres = h.counts.map((_, i) => h.lo + (i + 0.5) * w);
     const series = [{ data: h.counts, label: 'trials', color: '#1f618d', paths: uPlot.paths.bars({ size: [0.9, 100] }), fill: '#aed6f1', points: { show: false } }];
     if (overlay) series.push({ data: overlay.values, label: overlay.label, color: '#b03a2e', points: { show: false } });
-    this.line(title, { data: centres, label: xLabel }, series, [{ scale: 'y', label: 'trials per bin [count]' }], { generation });
+    const key = onPick ? ['Click a bar to replay one of its trials in the live views.'] : null;
+    const u = this.line(title, { data: centres, label: xLabel }, series, [{ scale: 'y', label: 'trials per bin [count]' }], { generation, key });
+    if (u && onPick) {
+      u.over.style.cursor = 'pointer';
+      u.over.addEventListener('click', () => {
+        const i = u.cursor.idx;
+        if (i !== null && i !== undefined && h.counts[i] > 0) onPick(i);
+      });
+    }
+    return u;
   }
 
   // A panel with a canvas picture; draw(canvas) runs once it is laid out and again on a resize.

@@ -19,6 +19,9 @@ export const REQUEST = {
   mcSummary: 'mc-summary', // {scenario, partials} -> done {summary, constants}
   raoTable: 'rao-table', // {scenario} -> done {values} (Float64Array: the RAO table, built once)
   trial: 'trial', // {scenario, i} -> done {scenario}: trial i's scenario as JSON text (exact seed)
+  // {scenario, hist, bin} -> progress {tried} ... done {trial}: the first trial whose value falls in
+  // bin `bin` of histogram `hist` (at_time, excess, excess_vs_calm, arrival), or null if none does.
+  findTrial: 'find-trial',
   rao: 'rao', // {speed_kn, heading_deg, omegas} -> done {result}
   fuel: 'fuel', // {scenario, omegas} -> done {rows}
   ips: 'ips', // {args} -> done {result}

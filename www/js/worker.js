@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -84,6 +84,18 @@ const handlers = {
   },
 
   [REQUEST.trial]: (m) => ({ scenario: trialScenario(checked(m.scenario), m.i) }),
+
+  // Trials run in order until one lands in the bar (a trial's seed reproduces it; the summary keeps
+  // no per-trial values). Bounded by the study's trials.
+  [REQUEST.findTrial]: (m, progress) => {
+    const n = Number(JSON.parse(checked(m.scenario)).monte_carlo.trials);
+    let last = performance.now();
+    for (let i = 0; i < n; i++) {
+      if (JSON.parse(trialBins(m.scenario, i))[m.hist] === m.bin) return { trial: i };
+      if (performance.now() - last > PROGRESS_EVERY_MS) { progress({ tried: i + 1 }); last = performance.now(); }
+    }
+    return { trial: null };
+  },
 
   [REQUEST.fuel]: (m) => ({ rows: JSON.parse(fuelStudy(checked(m.scenario), new Float64Array(m.omegas))) }),
 
