@@ -669,7 +669,7 @@ fn real_main() -> Result<(), Failure> {
             // take more than a second (a fine grid), so a long silence is explained.
             if sc.sea.kind != aes_core::scenario::SeaKind::Calm {
                 let note = SlowNote::start("aes-sim mc: building the seakeeping (RAO) tables", quiet);
-                aes_core::seakeeping::cache::rao_table(&sc.seakeeping.grid)?;
+                aes_core::seakeeping::cache::rao_table_as(&sc.seakeeping.grid, &sc.as_printed)?;
                 note.finish();
             }
             let pool =

@@ -4,6 +4,7 @@
 //! Everything is SI inside; no I/O, no threads; the same scenario gives the same numbers on
 //! every platform.
 
+pub mod as_printed;
 pub mod control;
 pub mod controller_study;
 pub mod dc_link;

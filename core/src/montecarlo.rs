@@ -568,7 +568,7 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
         return Ok(None);
     }
     let k = &sc.seakeeping;
-    let table = crate::seakeeping::cache::rao_table(&k.grid)?;
+    let table = crate::seakeeping::cache::rao_table_as(&k.grid, &sc.as_printed)?;
     let (h, wn) = sc.sea.spectrum();
     let (w_lo, w_hi) = if sc.sea.omega_min_rad_s > 0.0 && sc.sea.omega_max_rad_s > 0.0 {
         (sc.sea.omega_min_rad_s, sc.sea.omega_max_rad_s)

@@ -10,6 +10,7 @@
 //! "electromechanical resistor" the same section describes), so the torque used here is
 //! Q_e = 3 |I_r|^2 R_r / (s omega_e / p) = p P_airgap / omega_e.
 
+use crate::as_printed::AsPrintedParams;
 use crate::check_range;
 use crate::control::DiscretePi;
 use crate::validate::Validator;
@@ -34,6 +35,9 @@ pub struct InductionMotor {
     pub p_rated: f64,
     /// eta_m of eq. 2.5 [-].
     pub eta_m: f64,
+    /// Eq. 2.5 as printed: the torque is the rotor copper loss over the shaft speed
+    /// (`as_printed.eq_2_5_copper_loss`).
+    pub copper_loss_torque: bool,
 }
 
 /// The motor's operating point.
@@ -68,7 +72,20 @@ impl InductionMotor {
             omega_rated: 2.0 * PI * p.rated_frequency_hz,
             p_rated: p.rated_power_w,
             eta_m: p.efficiency,
+            copper_loss_torque: false,
         }
+    }
+
+    /// The motor with the switches of `as_printed`: Table 2.1's P read as poles
+    /// (`motor_p_is_poles`: half as many pole pairs) and eq. 2.5's torque as printed
+    /// (`eq_2_5_copper_loss`).
+    pub fn new_as(p: &MotorParams, printed: &AsPrintedParams) -> InductionMotor {
+        let mut m = InductionMotor::new(p);
+        if printed.motor_p_is_poles {
+            m.pole_pairs = p.pole_pairs as f64 / 2.0;
+        }
+        m.copper_loss_torque = printed.eq_2_5_copper_loss;
+        m
     }
 
     /// Volts-per-hertz law v_m = (omega_e / omega_rated) v_rated, limited by what the inverter can
@@ -98,7 +115,13 @@ impl InductionMotor {
         let p_airgap = 3.0 * v2_inv * y_re;
         let i_in_sq = v2_inv * (y_re * y_re + y_im * y_im);
         let i_in_re = v * (y_re * d_re + y_im * d_im) * inv_d2;
-        let torque_em = self.pole_pairs * p_airgap / omega_e;
+        let torque_em = if self.copper_loss_torque {
+            // Eq. 2.5 as printed: 3 |I_r|^2 R_r / omega_rm, the shaft speed kept at 1 rad/s or more.
+            let w = if omega_rm.abs() < 1.0 { 1f64.copysign(omega_rm) } else { omega_rm };
+            p_airgap * omega_s / omega_e / w
+        } else {
+            self.pole_pairs * p_airgap / omega_e
+        };
         // eta_m takes its loss out of whatever flows through the shaft, in either direction.
         let torque = if torque_em * omega_rm >= 0.0 { self.eta_m * torque_em } else { torque_em / self.eta_m };
         MotorPoint {

@@ -131,7 +131,7 @@ impl PageConstants {
                 Level { value: DISK_OUT_H_OVER_R, label: "disk out of the water".into() },
             ],
             motor_rated_power_w: sc.plant.motor.rated_power_w,
-            bus_voltage_ref_v: sc.controllers.field.bus_voltage_ref_v,
+            bus_voltage_ref_v: sc.bus_voltage_ref_v(),
             turbine_rated_speed_rpm: sc.plant.turbine.rated_speed_rpm,
             ship_length_m: sc.ship.length_m,
             seakeeping_lpp_m: crate::seakeeping::cache::dtmb5415().lpp,

@@ -18,6 +18,7 @@ pub const PRESET_NAMES: &[&str] = &[
     "fuel-regular-seas",
     "head-seas-ss6",
     "turn-360-ss6",
+    "as-printed",
     "mc-excess-energy",
     "mc-arrival",
 ];
@@ -39,6 +40,7 @@ pub fn preset(name: &str) -> Option<Scenario> {
         "fuel-regular-seas" => fuel_regular_seas(),
         "head-seas-ss6" => head_seas_ss6(),
         "turn-360-ss6" => turn_360_ss6(),
+        "as-printed" => as_printed(),
         "mc-excess-energy" => mc_excess_energy(),
         "mc-arrival" => mc_arrival(),
         _ => return None,
@@ -230,6 +232,36 @@ fn head_seas_thesis_depth() -> Scenario {
     s.sim.duration_s = 80.0;
     s.sim.seed = 1;
     sea_step(&mut s);
+    s
+}
+
+/// The thesis' equations as printed (`core/src/as_printed.rs`): head seas SS6 at 25 knots with the
+/// hub at the thesis' h0 = 6 m, every switch of `as_printed` on that lets the run start at 25 kn
+/// and eq. 2.57's sign as printed. The two motor switches are off: with either the motor cannot
+/// carry the propeller's 944 kN m at 25 kn (peak torque 654 kN m with P read as poles, 61 kN m
+/// with eq. 2.5's copper-loss torque) and the set-up refuses the run.
+pub fn as_printed() -> Scenario {
+    let mut s = head_seas_thesis_depth();
+    s.name = "as-printed".into();
+    s.description = "The thesis' equations as printed, in its ch. 5.3 run (25 knots into head seas of sea state 6, \
+        hub at h0 = 6 m): the Doppler shift counted twice (eqs. 2.55, 2.59), Appendix A's eqs. 5 and 17, eq. 2.47's \
+        conjugate, E_a line to line (the bus at 9.7 kV) and eq. 2.57's sign. What you see: Appendix A's typo in A35 \
+        makes the destroyer heave by 16 to 18 m, so the propellers leave the water again and again (h/R down to -8), \
+        the motor power falls to nothing each time, the shaft speed swings between 215 and 241 rpm, and the mean \
+        second-order force pushes the ship forward. The thesis says that only a small fraction of the propeller \
+        emerges in this run and that its heave and pitch agree with other programs, so its code did not use \
+        Appendix A as printed; eq. 2.57's sign alone (seakeeping.stern_motion) gives its ch. 5.3 \
+        picture: ventilation and swings of tens of rpm (219 to 263 rpm). The motor switches (P as poles, eq. 2.5) \
+        are off: with either the motor cannot carry the propeller at 25 knots."
+        .into();
+    s.as_printed = crate::as_printed::AsPrintedParams {
+        doppler_twice: true,
+        appendix_a_typos: true,
+        eq_2_47_conjugate: true,
+        ea_line_to_line: true,
+        ..Default::default()
+    };
+    s.seakeeping.stern_motion = crate::scenario::SternMotion::ThesisEq257;
     s
 }
 

@@ -13,6 +13,7 @@ use std::fmt;
 
 // Each subsystem owns its parameters (field docs with the thesis source, defaults, ranges); the
 // scenario only composes them. Re-exported so that `scenario::X` names every part of the format.
+pub use crate::as_printed::AsPrintedParams;
 pub use crate::dc_link::{DcLinkParams, RectifierKind};
 pub use crate::design::{ControllerDesign, LqgLtrParams};
 pub use crate::generator::{FieldControlParams, GeneratorParams};
@@ -52,6 +53,9 @@ pub struct Scenario {
     /// What a Monte Carlo study of this scenario collects (`aes-sim mc`, the page's Monte Carlo
     /// tab); a single run ignores it.
     pub monte_carlo: MonteCarloParams,
+    /// The thesis' equations as printed where we chose a corrected form (all off by default;
+    /// `core/src/as_printed.rs`).
+    pub as_printed: AsPrintedParams,
 }
 
 /// A Monte Carlo study (thesis ch. 5.4): trial i runs the scenario with the sea of seed
@@ -190,6 +194,7 @@ impl Default for Scenario {
             sea: SeaParams::default(),
             seakeeping: SeakeepingParams::default(),
             monte_carlo: MonteCarloParams::default(),
+            as_printed: AsPrintedParams::default(),
         }
     }
 }
@@ -353,6 +358,7 @@ impl Scenario {
         // Validated in calm water too: the fuel power uses the turbine efficiency in every run.
         v.section("seakeeping", |v| self.seakeeping.validate(v, self.sim.dt_s));
         v.section("sim", |v| self.sim.validate(v));
+        v.section("as_printed", |v| self.as_printed.validate(v));
         self.validate_work(&mut v);
         let dt = self.sim.dt_s;
         if dt.is_finite() && dt > 0.0 {
@@ -367,6 +373,22 @@ impl Scenario {
             }
         }
         v.finish()
+    }
+
+    /// The bus voltage set point the field control holds [V]: `controllers.field.bus_voltage_ref_v`,
+    /// read as sqrt(3) times itself with `as_printed.ea_line_to_line` (eq. 2.8's E_a taken as the
+    /// line-to-line emf puts the bus at sqrt(3) times the phase reading's voltage).
+    pub fn bus_voltage_ref_v(&self) -> f64 {
+        if self.as_printed.ea_line_to_line {
+            self.controllers.field.bus_voltage_ref_v * self.as_printed.emf_reading()
+        } else {
+            self.controllers.field.bus_voltage_ref_v
+        }
+    }
+
+    /// The field control's parameters with the set point of `bus_voltage_ref_v`.
+    pub fn field_control(&self) -> FieldControlParams {
+        FieldControlParams { bus_voltage_ref_v: self.bus_voltage_ref_v(), ..self.controllers.field.clone() }
     }
 
     /// The work a run asks for: time steps times the state variables advanced per step (plus, in

@@ -285,7 +285,8 @@ pub fn mc_summary(partials: Vec<js_sys::Uint8Array>) -> Result<String, JsError> 
 #[wasm_bindgen(js_name = raoTableValues)]
 pub fn rao_table_values(json: &str) -> Result<Vec<f64>, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    let t = aes_core::seakeeping::cache::rao_table(&sc.seakeeping.grid).map_err(|e| JsError::new(&e))?;
+    let t =
+        aes_core::seakeeping::cache::rao_table_as(&sc.seakeeping.grid, &sc.as_printed).map_err(|e| JsError::new(&e))?;
     Ok(t.values())
 }
 
@@ -293,7 +294,8 @@ pub fn rao_table_values(json: &str) -> Result<Vec<f64>, JsError> {
 #[wasm_bindgen(js_name = raoTableLoad)]
 pub fn rao_table_load(json: &str, values: &[f64]) -> Result<(), JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    aes_core::seakeeping::cache::insert_rao_table(&sc.seakeeping.grid, values).map_err(|e| JsError::new(&e))
+    aes_core::seakeeping::cache::insert_rao_table_as(&sc.seakeeping.grid, &sc.as_printed, values)
+        .map_err(|e| JsError::new(&e))
 }
 
 /// Heave and pitch RAOs of the DTMB 5415 (`aes-sim rao`'s JSON) at `speed_kn` and `heading_deg`

@@ -70,7 +70,7 @@ export const CHAPTERS = [
   ['Ch. 5.2.2 Braking', ['ac-braking', 'ac-braking-unbuffered']],
   ['Ch. 5.2.3 Turns in calm water', ['turn-45', 'turn-90', 'turn-360']],
   ['Ch. 5.2.4 Turns and fuel in waves', ['quarter-turn-ss3', 'quarter-turn-ss6', 'fuel-regular-seas']],
-  ['Ch. 5.3 Head seas and a turn in waves', ['head-seas-ss6', 'turn-360-ss6']],
+  ['Ch. 5.3 Head seas and a turn in waves', ['head-seas-ss6', 'turn-360-ss6', 'as-printed']],
   ['Ch. 5.4 Monte Carlo', ['mc-excess-energy', 'mc-arrival']],
 ];
 
@@ -113,6 +113,10 @@ export const STUDIES = {
     watch: 'h/R against the shaded ventilation band: each time it dips below 1.1 the propeller draws air (orange markers), thrust and torque drop (beta), the propeller races and the motor power falls. Below 1 the disk breaks the surface. Each event is a sudden load rejection for the plant: the turbines overspeed by up to a third and the bus voltage follows them, then both ring for tens of seconds (bus plot), far beyond the 1-2 % they move in these seas when the propellers stay down.',
     compare: [{ label: 'eq. 2.57 as printed', set: { 'seakeeping.stern_motion': 'thesis_eq_2_57' } }, { label: 'fully loaded (h0 = 6 m)', set: { 'seakeeping.hub_depth_m': 6 } }],
     note: 'The sign of eq. 2.57: as printed, the stern\'s own motion is added to the wave instead of taken from it, so the hub depth swings by wave plus motion and surface effects come several times as often; with the consistent sign the stern rides the long waves of SS6 and a fully loaded ship (h0 = 6 m) keeps its propellers down.' },
+  'as-printed': { title: 'The thesis as printed: head seas SS6', plots: ['heave', 'hr', 'motor', 'rpm', 'bus'], params: ['seakeeping.stern_motion', 'seakeeping.hub_depth_m', 'sim.seed'],
+    watch: 'Heave first: with Appendix A\'s eq. 5 as printed the destroyer heaves by 16 to 18 m in SS6, and the propellers leave the water (h/R far below the band) again and again; the motor power drops to nothing each time. Compare with the corrected equations, and with eq. 2.57\'s sign alone, which gives the thesis\' ch. 5.3 picture of ventilation and swings of tens of rpm. The bus sits at 9.7 kV (E_a line to line).',
+    compare: [{ label: 'corrected, same depth', set: { 'as_printed.doppler_twice': false, 'as_printed.appendix_a_typos': false, 'as_printed.eq_2_47_conjugate': false, 'as_printed.ea_line_to_line': false, 'seakeeping.stern_motion': 'consistent' } }, { label: 'eq. 2.57 as printed only', set: { 'as_printed.doppler_twice': false, 'as_printed.appendix_a_typos': false, 'as_printed.eq_2_47_conjugate': false, 'as_printed.ea_line_to_line': false } }],
+    note: 'Every inconsistency of the thesis we settled is a switch in the scenario\'s as_printed section (JSON editor); this preset turns on all that let the run start at 25 knots, plus seakeeping.stern_motion. The two motor switches (Table 2.1\'s P read as poles, eq. 2.5\'s copper-loss torque) are off: with either the motor cannot carry the propeller at 25 knots. docs/validation.md, section "As printed", says what each switch moves.' },
   'turn-360-ss6': { title: 'A full turn in sea state 6', plots: ['track', 'heave', 'pitch', 'hr', 'motor'], params: ['sea.sea_state', 'sea.from_deg', 'sim.seed'],
     watch: 'Heave and pitch are strong in head seas and weak in following seas (Figs. 5-16 to 5-19). The arrow on the track shows where the waves come from.',
     compare: [{ label: 'calm water', preset: 'turn-360' }] },

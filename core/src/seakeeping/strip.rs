@@ -20,6 +20,7 @@ use super::complex::cexp;
 use super::conformal::{best_section_map, SectionMap};
 use super::radiation::{default_multipoles, solve, Contour, Radiation2d};
 use super::roll_damping::{components, RollHull};
+use crate::as_printed::AsPrintedParams;
 use crate::hull_sections::HullOffsets;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
@@ -365,6 +366,20 @@ pub fn response(
     beta: f64,
     roll_wave_amplitude: f64,
 ) -> Response {
+    response_as(ship, table, omega0, u, beta, roll_wave_amplitude, &AsPrintedParams::default())
+}
+
+/// `response` with the thesis' equations as printed where `printed` says so: Appendix A's eqs. 5
+/// and 17 (`appendix_a_typos`) and eq. 2.47's conjugate (`eq_2_47_conjugate`).
+pub fn response_as(
+    ship: &Ship,
+    table: &RadiationTable,
+    omega0: f64,
+    u: f64,
+    beta: f64,
+    roll_wave_amplitude: f64,
+    printed: &AsPrintedParams,
+) -> Response {
     let (rho, g) = (ship.rho, ship.g);
     let k = omega0 * omega0 / g;
     let (sb, cb) = (libm::sin(beta), libm::cos(beta));
@@ -391,6 +406,16 @@ pub fn response(
     let b33 = b33_0 + u * sa.a33;
     let a35 = -int(&|i| xi(i) * secs[i].a33) - u / w2 * b33_0 + u / w2 * xa * sa.b33 - uw * uw * sa.a33;
     let b35 = -int(&|i| xi(i) * secs[i].b33) + u * a33_0 - u * xa * sa.a33 - uw * uw * sa.b33;
+    // Appendix A as printed: eq. 5 with -(U^2/omega^2) B33^0, eq. 17 with +U A53^0 (A53^0 =
+    // -int xi a33, the zero-speed A53 of eq. 8).
+    let (a35, b35) = if printed.appendix_a_typos {
+        (
+            -int(&|i| xi(i) * secs[i].a33) - u * u / w2 * b33_0 + u / w2 * xa * sa.b33 - uw * uw * sa.a33,
+            -int(&|i| xi(i) * secs[i].b33) + u * (-int(&|i| xi(i) * secs[i].a33)) - u * xa * sa.a33 - uw * uw * sa.b33,
+        )
+    } else {
+        (a35, b35)
+    };
     let a53 = -int(&|i| xi(i) * secs[i].a33) + u / w2 * b33_0 + u / w2 * xa * sa.b33;
     let b53 = -int(&|i| xi(i) * secs[i].b33) - u * a33_0 - u * xa * sa.a33;
     let a55 =
@@ -497,7 +522,9 @@ pub fn response(
     // Gerritsma-Beukelman).
     let mut s = 0.0;
     for j in 0..5 {
-        s += (C::new(0.0, 0.5 * k) * raos[j] * (fk[j].conj() + fdh[j].conj())).re;
+        // As printed (eq. 2.47): the conjugate on F^I only.
+        let fd_j = if printed.eq_2_47_conjugate { fdh[j] } else { fdh[j].conj() };
+        s += (C::new(0.0, 0.5 * k) * raos[j] * (fk[j].conj() + fd_j)).re;
     }
     let f7 = 0.5 * k * omega0 * omega0 / we
         * int(&|i| {
@@ -726,5 +753,48 @@ mod tests {
             // Measured at most 5.6e-4 (heave) and 2.0e-4 (pitch / k).
             assert!(cabs(a.heave - b.heave) < 2e-3 && cabs((a.pitch - b.pitch) / a.k.max(b.k)) < 2e-3, "{w}");
         }
+    }
+
+    /// `as_printed.appendix_a_typos`: Appendix A's eqs. 5 and 17 as printed change A35 and B35
+    /// only at speed (both printed terms vanish at rest: the RAOs there are bit for bit the same).
+    /// At Fn 0.28 in head seas the printed -(U^2/omega^2) B33^0 is U = 10.5 m/s times STF's term
+    /// and swamps the heave-pitch coupling: the largest heave RAO over 0.3-1.2 rad/s goes from
+    /// 0.990 (corrected) to 6.02 (printed); asserted: more than four times.
+    #[test]
+    fn appendix_a_typos_move_heave_at_speed() {
+        let (ship, t) = hull();
+        let p = AsPrintedParams { appendix_a_typos: true, ..AsPrintedParams::default() };
+        for w in [0.4, 0.6, 0.8] {
+            let (a, b) = (response(ship, t, w, 0.0, PI, 1.0), response_as(ship, t, w, 0.0, PI, 1.0, &p));
+            assert_eq!(a.heave, b.heave);
+            assert_eq!(a.pitch, b.pitch);
+        }
+        let (mut hc, mut hp) = (0.0f64, 0.0f64);
+        for i in 0..=30 {
+            let w = 0.3 + 0.03 * i as f64;
+            hc = hc.max(cabs(response(ship, t, w, fn028(), PI, 1.0).heave));
+            hp = hp.max(cabs(response_as(ship, t, w, fn028(), PI, 1.0, &p).heave));
+        }
+        println!("peak heave RAO at Fn 0.28, head seas: corrected {hc:.3}, Appendix A as printed {hp:.3}");
+        assert!(hp > 4.0 * hc && hc < 1.2, "{hp} vs {hc}");
+    }
+
+    /// `as_printed.eq_2_47_conjugate`: eq. 2.47 as printed does not vanish in long head waves: at
+    /// lambda/L = 4.8 and Fn 0.28 the added resistance coefficient sigma_aw = R / (rho g B^2 / L) is
+    /// 0.113 corrected and 0.994 as printed (the README's 0.1 and 1.0; asserted: under 0.2, and
+    /// 0.8 to 1.2); the RAOs are the same.
+    #[test]
+    fn eq_2_47_as_printed_keeps_long_wave_resistance() {
+        let (ship, t) = hull();
+        let norm = 1025.0 * 9.81 * ship.beam * ship.beam / ship.lpp;
+        let p = AsPrintedParams { eq_2_47_conjugate: true, ..AsPrintedParams::default() };
+        let (c, q) = (response(ship, t, 0.3, fn028(), PI, 2.5), response_as(ship, t, 0.3, fn028(), PI, 2.5, &p));
+        println!(
+            "sigma_aw at lambda/L 4.8: corrected {:.3}, as printed {:.3}",
+            c.added_resistance / norm,
+            q.added_resistance / norm
+        );
+        assert_eq!(c.heave, q.heave);
+        assert!((0.8..1.2).contains(&(q.added_resistance / norm)) && c.added_resistance.abs() / norm < 0.2);
     }
 }

@@ -4,7 +4,8 @@
 
 use super::conformal::{bulb, section_map, Form, SectionMap};
 use super::radiation::{default_multipoles, solve, Contour};
-use super::strip::{default_omega_grid, response, RadiationTable, Response, Ship};
+use super::strip::{default_omega_grid, response, response_as, RadiationTable, Response, Ship};
+use crate::as_printed::AsPrintedParams;
 use crate::interp::bracket;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
@@ -115,18 +116,32 @@ impl RaoTable {
     /// Computes the table for `ship`: the sectional coefficients on the encounter-frequency grid,
     /// then strip theory at every grid point.
     pub fn compute(ship: &Ship, grid: &SeakeepingGrid) -> Result<RaoTable, String> {
+        Self::compute_as(ship, grid, &AsPrintedParams::default())
+    }
+
+    /// `compute` with the strip-theory switches of `printed` (Appendix A, eq. 2.47).
+    pub fn compute_as(ship: &Ship, grid: &SeakeepingGrid, printed: &AsPrintedParams) -> Result<RaoTable, String> {
         grid.validate()?;
         let rad = ship.radiation_table(&default_omega_grid());
-        Ok(Self::from_radiation(ship, &rad, grid))
+        Ok(Self::from_radiation_as(ship, &rad, grid, printed))
     }
 
     pub fn from_radiation(ship: &Ship, rad: &RadiationTable, grid: &SeakeepingGrid) -> RaoTable {
+        Self::from_radiation_as(ship, rad, grid, &AsPrintedParams::default())
+    }
+
+    pub fn from_radiation_as(
+        ship: &Ship,
+        rad: &RadiationTable,
+        grid: &SeakeepingGrid,
+        printed: &AsPrintedParams,
+    ) -> RaoTable {
         let (omegas, speeds, headings) = (grid.omegas(), grid.speeds(), grid.headings());
         let mut data = Vec::with_capacity(omegas.len() * speeds.len() * headings.len());
         for &w in &omegas {
             for &u in &speeds {
                 for &b in &headings {
-                    data.push(response(ship, rad, w, u, b, grid.roll_wave_amplitude_m));
+                    data.push(response_as(ship, rad, w, u, b, grid.roll_wave_amplitude_m, printed));
                 }
             }
         }

@@ -110,7 +110,7 @@ pub fn drive_train(sc: &Scenario) -> Result<DriveTrainModel, SimError> {
     }
     // Outputs: mean turbine speed and mean bus voltage, per unit of their set points.
     let w_ref = plant.turbine.rated_speed;
-    let v_ref = sc.controllers.field.bus_voltage_ref_v;
+    let v_ref = sc.bus_voltage_ref_v();
     let mut c = DMatrix::zeros(2, n);
     c[(0, 0)] = scale[0] / w_ref;
     c[(1, 2)] = scale[2] / v_ref;

@@ -222,7 +222,7 @@ impl Simulation {
             x: [0.0; NX],
             ctl: Controllers {
                 governor: [Governor::new(&scenario.controllers.governor, 0.0); N_SETS],
-                field: [FieldController::new(&scenario.controllers.field, 0.0, plant.generator.v_f_max); N_SETS],
+                field: [FieldController::new(&scenario.field_control(), 0.0, plant.generator.v_f_max); N_SETS],
                 lqg: match scenario.controllers.design {
                     ControllerDesign::Pi => None,
                     ControllerDesign::LqgLtr => {
@@ -286,7 +286,7 @@ impl Simulation {
             self.x[field_current(k)] = st.field_current;
             self.ctl.governor[k] = Governor::new(&sc.controllers.governor, st.throttle);
             self.ctl.field[k] =
-                FieldController::new(&sc.controllers.field, st.field_voltage, self.plant.generator.v_f_max);
+                FieldController::new(&sc.field_control(), st.field_voltage, self.plant.generator.v_f_max);
             self.ctl.held.throttle[k] = st.throttle;
             self.ctl.held.field_voltage[k] = st.field_voltage;
         }
@@ -440,7 +440,7 @@ impl Simulation {
                 return bad(format!("generator {} field", k + 1), format!("field current {i_f:.3e} A"));
             }
         }
-        let v_ref = self.scenario.controllers.field.bus_voltage_ref_v;
+        let v_ref = self.scenario.bus_voltage_ref_v();
         for s in 0..N_SHAFTS {
             let v = self.x[bus_voltage(s)];
             let (lo, hi) = limits::BUS_VOLTAGE_PU;
@@ -502,7 +502,7 @@ impl Simulation {
             out: o,
             ctl: &self.ctl,
             speed_cmd: self.speed_cmd,
-            v_ref: self.scenario.controllers.field.bus_voltage_ref_v,
+            v_ref: self.scenario.bus_voltage_ref_v(),
             sea,
             h_over_r: self.h_over_r,
             p_turbine: (0..N_SETS).map(|k| o.turbine_torque[k] * x[omega_t(k)]).sum(),

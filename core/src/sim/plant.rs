@@ -212,7 +212,12 @@ pub struct Plant {
 impl Plant {
     pub fn new(sc: &Scenario) -> Result<Plant, String> {
         let turbine = GasTurbine::new(&sc.plant.turbine);
-        let generator = SyncGenerator::new(&sc.plant.generator, turbine.rated_speed);
+        let mut generator = SyncGenerator::new(&sc.plant.generator, turbine.rated_speed);
+        if sc.as_printed.ea_line_to_line {
+            // E_a line-to-line (as printed): the rated 4160 V is eq. 2.8's E_a, which takes sqrt(3)
+            // times the field current, and the field ceiling scales with it.
+            generator.v_f_max *= sc.as_printed.emf_reading();
+        }
         let g = &sc.plant.generator;
         let dc_link = DcLink::new(&sc.plant.dc_link, g.stator_resistance_ohm, g.stator_inductance_h);
         let surge = Surge::new(&sc.ship);
@@ -235,12 +240,12 @@ impl Plant {
             Hull::Surge => surge.mass_total,
             Hull::Maneuvering { abkowitz, .. } => abkowitz.m11,
         };
-        let v_ref = sc.controllers.field.bus_voltage_ref_v;
+        let v_ref = sc.bus_voltage_ref_v();
         Ok(Plant {
             turbine,
             generator,
             dc_link,
-            motor: InductionMotor::new(&sc.plant.motor),
+            motor: InductionMotor::new_as(&sc.plant.motor, &sc.as_printed),
             open_water: OpenWater::from_params(&sc.propeller)?,
             four_quadrant: match sc.propeller.model {
                 PropellerModelKind::BSeries => None,

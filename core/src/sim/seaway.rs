@@ -22,7 +22,7 @@
 
 use crate::interp::bracket;
 use crate::scenario::{Scenario, SeaKind};
-use crate::seakeeping::cache::rao_table;
+use crate::seakeeping::cache::rao_table_as;
 use crate::seakeeping::params::{stern_wave, SternMotion};
 use crate::waves::{newman_force, newman_sign, newman_weight, SeaSampling, WaveComponent, G};
 use num_complex::Complex64 as C;
@@ -108,6 +108,13 @@ pub struct Seaway {
     second_order: bool,
     /// How the stern motion enters the hub depth (eq. 2.57).
     stern_motion: SternMotion,
+    /// Eqs. 2.55/2.59 as printed (`as_printed.doppler_twice`): per component, the encounter
+    /// frequency's excess over the wave frequency at the last look-up, omega - omega0 [rad/s], and
+    /// the phase it has added since the start [rad]; the time of the last sample [s].
+    doppler_twice: bool,
+    extra_rate: Vec<f64>,
+    extra_phase: Vec<f64>,
+    extra_t: Option<f64>,
     /// Per component, refreshed: hub transfer, heave, pitch, roll, stern factor, sway, yaw (the
     /// lateral modes signed for the side the waves come from and turned to starboard-positive
     /// axes); Newman weights for x and y with their signs.
@@ -172,7 +179,7 @@ impl Seaway {
         }
         let waves = wave_components(sc);
         let k = &sc.seakeeping;
-        let table = rao_table(&k.grid)?;
+        let table = rao_table_as(&k.grid, &sc.as_printed)?;
         let (speeds, headings) = (k.grid.speeds(), k.grid.headings());
         let comps = waves
             .into_iter()
@@ -198,6 +205,10 @@ impl Seaway {
             x_p: k.prop_x_aft_m,
             second_order: k.second_order_forces,
             stern_motion: k.stern_motion,
+            doppler_twice: sc.as_printed.doppler_twice,
+            extra_rate: vec![0.0; n],
+            extra_phase: vec![0.0; n],
+            extra_t: None,
             h: vec![[C::new(0.0, 0.0); 7]; n],
             wx: vec![0.0; n],
             wy: vec![0.0; n],
@@ -249,6 +260,11 @@ impl Seaway {
                 }
             }
             let (h3, h5, h4) = (acc[0], acc[1], acc[2] * side);
+            if self.doppler_twice {
+                // Eq. 2.52's encounter frequency |omega0 - k U cos beta| (beta = 180 deg in head
+                // seas, where cos_beta = -1), which eqs. 2.55/2.59 put in front of t.
+                self.extra_rate[i] = (c.wave.omega - c.wave.k * u * cos_beta).abs() - c.wave.omega;
+            }
             let stern = stern_wave(c.wave.k, self.x_p, cos_beta);
             let hub = self.stern_motion.hub_transfer(stern, h3, h5, self.x_p);
             // STF's sway is to port and its yaw bow to port: both flip for starboard-positive axes.
@@ -283,17 +299,28 @@ impl Seaway {
         self.since_sync = if step.is_some() { self.since_sync + 1 } else { 0 };
         self.at = Some((t, x, y));
         let (dt, dx, dy) = step.unwrap_or((0.0, 0.0, 0.0));
+        let dt_extra = t - self.extra_t.unwrap_or(t);
+        self.extra_t = Some(t);
         let parts = self.comps.iter().zip(&self.h).zip(self.wx.iter().zip(&self.wy)).zip(self.phasor.iter_mut());
-        for (((c, h), (&wx, &wy)), phasor) in parts {
+        for (i, (((c, h), (&wx, &wy)), phasor)) in parts.enumerate() {
             let w = &c.wave;
-            let rate = w.omega - w.k * (xd * c.cos_mu + yd * c.sin_mu);
-            let d = w.omega * dt - w.k * (dx * c.cos_mu + dy * c.sin_mu);
+            let mut rate = w.omega - w.k * (xd * c.cos_mu + yd * c.sin_mu);
+            let mut d = w.omega * dt - w.k * (dx * c.cos_mu + dy * c.sin_mu);
+            if self.doppler_twice {
+                let de = self.extra_rate[i] * dt_extra;
+                self.extra_phase[i] += de;
+                rate += self.extra_rate[i];
+                d += de;
+            }
             let (cs, sn) = if step.is_some() && d.abs() <= MAX_PHASE_STEP_RAD {
                 let (c0, s0) = *phasor;
                 let (cd, sd) = rotation(d);
                 (c0 * cd - s0 * sd, s0 * cd + c0 * sd)
             } else {
-                let theta = w.phase_at(c.cos_mu, c.sin_mu, x, y, t);
+                let mut theta = w.phase_at(c.cos_mu, c.sin_mu, x, y, t);
+                if self.doppler_twice {
+                    theta += self.extra_phase[i];
+                }
                 (libm::cos(theta), libm::sin(theta))
             };
             *phasor = (cs, sn);
@@ -384,5 +411,39 @@ mod tests {
             let (c, s) = rotation(d);
             assert!((c - libm::cos(d)).abs() < 5e-14 && (s - libm::sin(d)).abs() < 5e-14, "{d}");
         }
+    }
+
+    /// `as_printed.doppler_twice`: in a regular head sea of 0.6 rad/s at 25 kn the wave at the
+    /// stern passes at the encounter frequency omega0 + k U = 1.072 rad/s (corrected) and, with the
+    /// Doppler shift counted twice (eqs. 2.55/2.59 as printed), at omega0 + 2 k U = 1.545 rad/s.
+    /// Measured from the upward zero crossings over 300 s: 1.072 and 1.544 rad/s (asserted within
+    /// 1 %).
+    #[test]
+    fn doppler_twice_moves_the_encounter_frequency() {
+        let mut sc = Scenario::default();
+        sc.sea.kind = SeaKind::Regular;
+        sc.sea.omega_rad_s = 0.6;
+        let u = 25.0 * crate::units::KNOT_M_S;
+        let k = 0.36 / crate::waves::G;
+        let mut got = Vec::new();
+        for printed in [false, true] {
+            sc.as_printed.doppler_twice = printed;
+            let mut sea = Seaway::new(&sc).unwrap().unwrap();
+            sea.refresh(u, 0.0);
+            let (mut last, mut ups) = (0.0, Vec::new());
+            for n in 0..6000 {
+                let t = n as f64 * 0.05;
+                let w = sea.sample(t, u * t, 0.0, u, 0.0).wave_stern;
+                if n > 0 && last < 0.0 && w >= 0.0 {
+                    ups.push(t);
+                }
+                last = w;
+            }
+            let period = (ups[ups.len() - 1] - ups[0]) / (ups.len() - 1) as f64;
+            got.push(2.0 * PI / period);
+        }
+        println!("encounter frequency: corrected {:.4}, as printed {:.4} rad/s", got[0], got[1]);
+        assert!((got[0] / (0.6 + k * u) - 1.0).abs() < 0.01, "{got:?}");
+        assert!((got[1] / (0.6 + 2.0 * k * u) - 1.0).abs() < 0.01, "{got:?}");
     }
 }

@@ -32,7 +32,7 @@ pub struct SteadyState {
 /// the set point on idle fuel, shafts stopped, the bus floating at the bridge voltage.
 pub fn calm_water(p: &Plant, sc: &Scenario) -> Result<SteadyState, SimError> {
     let w_t = p.turbine.rated_speed;
-    let v_ref = sc.controllers.field.bus_voltage_ref_v;
+    let v_ref = sc.bus_voltage_ref_v();
     let u0 = kn_to_m_s(sc.initial.speed_kn);
     // Shaft speed at which the propellers balance the resistance at u0 (with the run's beta_T).
     let (w_rm0, p_inv_shaft, slip0, peak) = if u0 > 0.0 {
