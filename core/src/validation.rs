@@ -519,6 +519,7 @@ fn analytic(size: Size) -> Result<Section, String> {
         Tolerance::Abs(2.0 * se),
         &format!("two Monte Carlo standard errors ({se:.2} s, {} trials); the 'thesis' column is Rice", size.trials),
     ));
+    rows.extend(seakeeping_limits());
     Ok(Section { title: "Analytic checks", note: String::new(), rows })
 }
 
@@ -718,6 +719,108 @@ fn as_printed() -> Result<Section, String> {
             .into(),
         rows,
     })
+}
+
+/// Closed-form limits of the radiation solver (the semicircle) and of the strip theory (long
+/// waves on the DTMB 5415), with the tolerances of their unit tests.
+fn seakeeping_limits() -> Vec<Row> {
+    use crate::seakeeping::conformal::section_map;
+    use crate::seakeeping::radiation::coefficients;
+    use crate::seakeeping::strip::{default_omega_grid, response, Ship};
+    let (rho, g) = (1025.0, 9.81);
+    let norm = rho * core::f64::consts::PI / 2.0;
+    let mut rows = Vec::new();
+    if let Some(circle) = section_map(1.0, 1.0, core::f64::consts::PI / 4.0) {
+        let at = |ka: f64| coefficients(&circle, libm::sqrt(ka * g), rho, g);
+        let hi = at(40.0);
+        let lo = at(1e-4);
+        let w = libm::sqrt(1e-4 * g);
+        let src = "Ursell (1949): semicircle of radius a";
+        rows.push(row(
+            "semicircle heave added mass at Ka = 40 / (rho pi a^2 / 2)",
+            src,
+            1.0,
+            hi.a33 / norm,
+            "-",
+            Tolerance::Abs(0.02),
+            "the infinite-frequency limit, approached as 1/Ka",
+        ));
+        rows.push(row(
+            "semicircle sway added mass at Ka = 1e-4 / (rho pi a^2 / 2)",
+            src,
+            1.0,
+            lo.a22 / norm,
+            "-",
+            Tolerance::Abs(1e-3),
+            "the zero-frequency limit",
+        ));
+        rows.push(row(
+            "semicircle heave damping at Ka = 1e-4 / (4 rho omega a^2)",
+            src,
+            1.0,
+            lo.b33 / (4.0 * rho * w),
+            "-",
+            Tolerance::Abs(5e-3),
+            "the section radiates the flux it displaces",
+        ));
+        let ks: Vec<f64> = (1..=40).map(|i| 0.05 * i as f64).collect();
+        let amin = ks.iter().map(|&k| at(k).a33 / norm).fold(f64::INFINITY, f64::min);
+        rows.push(row(
+            "semicircle heave added mass minimum (Ka 0.05 to 2)",
+            "Ursell (1949), Vugts (1968)",
+            0.6,
+            amin,
+            "-",
+            Tolerance::Abs(0.05),
+            "read off the published curves",
+        ));
+    }
+    let ship = Ship::dtmb5415();
+    let table = ship.radiation_table(&default_omega_grid());
+    let fn028 = 0.28 * libm::sqrt(g * 142.0);
+    for (u, name) in [(0.0, "at rest"), (fn028, "Fn 0.28")] {
+        let r = response(&ship, &table, 0.12, u, core::f64::consts::PI, 1.0);
+        let src = "long waves (lambda/L = 27): the hull follows the surface";
+        rows.push(row(
+            &format!("DTMB 5415 heave RAO, head seas, {name}"),
+            src,
+            1.0,
+            crate::seakeeping::complex::cabs(r.heave),
+            "m/m",
+            Tolerance::Abs(3e-3),
+            "",
+        ));
+        rows.push(row(
+            &format!("DTMB 5415 pitch RAO / k, head seas, {name}"),
+            src,
+            1.0,
+            crate::seakeeping::complex::cabs(r.pitch) / r.k,
+            "-",
+            Tolerance::Abs(0.02),
+            "the hull's length against the wave",
+        ));
+    }
+    let r = response(&ship, &table, 0.12, 0.0, core::f64::consts::PI / 2.0, 1.0);
+    let src = "long waves, beam seas, at rest: the hull moves with the water";
+    rows.push(row(
+        "DTMB 5415 sway RAO",
+        src,
+        1.0,
+        crate::seakeeping::complex::cabs(r.sway),
+        "m/m",
+        Tolerance::Abs(0.01),
+        "at the waterline above G",
+    ));
+    rows.push(row(
+        "DTMB 5415 heave RAO",
+        src,
+        1.0,
+        crate::seakeeping::complex::cabs(r.heave),
+        "m/m",
+        Tolerance::Abs(1e-3),
+        "",
+    ));
+    rows
 }
 
 /// The report as Markdown.
