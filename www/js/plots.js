@@ -92,6 +92,9 @@ export class PlotBox {
       }
       const dpr = devicePixelRatio || 1;
       ctx.font = `${Math.round(11 * dpr)}px system-ui, sans-serif`;
+      // Labels whose lines lie closer than a label's height (a wide y range) would overprint:
+      // the lines are all drawn, the crowded labels left to the key under the plot.
+      const labelled = [];
       for (const l of levels) {
         const y = u.valToPos(l.value, sc, true);
         ctx.strokeStyle = l.color; ctx.lineWidth = 1.5 * dpr; ctx.setLineDash([6 * dpr, 4 * dpr]);
@@ -102,6 +105,8 @@ export class PlotBox {
         ctx.textAlign = 'left'; ctx.textBaseline = 'bottom';
         const text = `${l.label} (${l.value})`;
         const tw = ctx.measureText(text).width, th = 13 * dpr;
+        if (labelled.some((y0) => Math.abs(y0 - y) < th + 2 * dpr)) continue;
+        labelled.push(y);
         ctx.fillStyle = 'rgba(255, 255, 255, 0.8)';
         ctx.fillRect(left + 2 * dpr, y - 3 * dpr - th, tw + 4 * dpr, th);
         ctx.fillStyle = l.color;
