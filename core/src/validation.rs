@@ -27,6 +27,10 @@ pub enum Verdict {
     Pass,
     /// Outside the tolerance: the build fails.
     Fail,
+    /// Within the tolerance, but not an independent check: the number was copied from the thesis
+    /// or a parameter was chosen to give it (the reason says which). Still fails the build when
+    /// it leaves its tolerance.
+    Calibrated,
     /// A difference whose cause is known and written in the reason (a parameter the thesis does
     /// not print, a definition it leaves open, a thesis number that its own inputs do not give).
     Explained,
@@ -89,6 +93,20 @@ fn open(quantity: &str, source: &str, thesis: f64, ours: f64, unit: &'static str
     }
 }
 
+/// A row checked like [`row`] whose agreement is by construction (see [`Verdict::Calibrated`]).
+fn calibrated(
+    quantity: &str,
+    source: &str,
+    thesis: f64,
+    ours: f64,
+    unit: &'static str,
+    tol: Tolerance,
+    reason: &str,
+) -> Row {
+    let r = row(quantity, source, thesis, ours, unit, tol, reason);
+    Row { verdict: if r.verdict == Verdict::Pass { Verdict::Calibrated } else { r.verdict }, ..r }
+}
+
 fn explained(quantity: &str, source: &str, thesis: f64, ours: f64, unit: &'static str, reason: &str) -> Row {
     Row { verdict: Verdict::Explained, ..open(quantity, source, thesis, ours, unit, reason) }
 }
@@ -138,7 +156,7 @@ fn table_2_4() -> Result<Section, String> {
     let mut rows = Vec::new();
     for (ss, w, h_ft) in printed {
         let (w_ours, h_ours) = crate::waves::sea_state(ss).ok_or("no sea state")?;
-        rows.push(row(
+        rows.push(calibrated(
             &format!("SS{ss} peak frequency"),
             "Table 2.4",
             w,
@@ -147,7 +165,7 @@ fn table_2_4() -> Result<Section, String> {
             Tolerance::Abs(0.0),
             "copied",
         ));
-        rows.push(row(
+        rows.push(calibrated(
             &format!("SS{ss} significant height"),
             "Table 2.4",
             h_ft,
@@ -184,9 +202,17 @@ fn table_4_1() -> Result<Section, String> {
                (shared/data/purdue_testbed_params.md), so |v_gs| and i_fd are not independent checks."
             .into(),
         rows: vec![
-            row("|v_gs|", src, 457.74, s.v_gs_mag, "V", Tolerance::Rel(2e-4), &format!("L_md chosen to give it{hf}")),
+            calibrated(
+                "|v_gs|",
+                src,
+                457.74,
+                s.v_gs_mag,
+                "V",
+                Tolerance::Rel(2e-4),
+                &format!("L_md chosen to give it{hf}"),
+            ),
             row("|i_gs|", src, 48.81, s.i_gs_mag, "A", Tolerance::Rel(2e-4), "rectifier model of eqs. 4.8-4.10"),
-            row("i_fd", src, 108.75, s.i_fd, "A", Tolerance::Rel(1e-12), "r_fd is v_fd / i_fd of this table"),
+            calibrated("i_fd", src, 108.75, s.i_fd, "A", Tolerance::Rel(1e-12), "r_fd is v_fd / i_fd of this table"),
             row("v~_dc", src, 743.17, s.v_dc_rect, "V", Tolerance::Rel(2e-4), "X_co = 0.323 ohm as printed"),
             row("i_dc", src, 45.09, s.i_dc, "A", Tolerance::Rel(2e-4), "the load current sink plus the droop"),
             row("cos phi", src, 0.982, s.cos_phi, "-", Tolerance::Abs(5e-4), "half a unit of the printed digit"),
@@ -204,12 +230,12 @@ fn table_4_2() -> Result<Section, String> {
                431.06 V differs by 4.6 % from both, the square-wave harmonics the thesis names."
             .into(),
         rows: vec![
-            row("T_m0", src, 100.0, s.t_m0, "N m", tol, "the torque command"),
+            calibrated("T_m0", src, 100.0, s.t_m0, "N m", tol, "the torque command"),
             row("omega_r0", src, 377.0, s.omega_r0, "rad/s", tol, "eq. 4.31"),
-            row("omega_s0", src, 1.667, s.omega_s0, "rad/s", tol, "slip of the reconstructed rotor resistance"),
+            calibrated("omega_s0", src, 1.667, s.omega_s0, "rad/s", tol, "r_r chosen to give this slip"),
             row("|i_s|", src, 47.80, s.i_s_mag, "A", tol, ""),
             row("|i_r|", src, 32.38, s.i_r_mag, "A", tol, ""),
-            row("|v_s|", src, 411.91, s.v_s_mag, "V", tol, "r_s chosen to give it"),
+            calibrated("|v_s|", src, 411.91, s.v_s_mag, "V", tol, "r_s chosen to give it"),
         ],
     })
 }
@@ -225,7 +251,7 @@ fn table_5_7() -> Result<Section, String> {
         let e = run(&startup_to(kn))?.summary.efficiency;
         let got = [e.generator, e.power_electronics, e.motor, e.propeller];
         let src = format!("Table 5.7, {kn} kn");
-        rows.push(row(
+        rows.push(calibrated(
             &format!("generator efficiency at {kn} kn"),
             &src,
             want[0],
@@ -234,15 +260,15 @@ fn table_5_7() -> Result<Section, String> {
             Tolerance::Abs(0.01),
             "friction mu_2 chosen as the constant loss these three numbers imply (not independent)",
         ));
-        rows.push(row(
+        rows.push(explained(
             &format!("power electronics efficiency at {kn} kn"),
             &src,
             want[1],
             got[1],
             "-",
-            Tolerance::Abs(0.03),
-            "notching (Table 5.4) and stator (Table 5.3) resistances lose about 2 % at these currents; the \
-             thesis does not say how it got under 1 %",
+            "the notching (Table 5.4) and stator (Table 5.3) resistances lose 1-3 % at the currents of a 5.6 kV \
+             bus; with E_a read line to line (as_printed.ea_line_to_line) the bus is 9.7 kV, the currents and \
+             losses smaller, and the efficiency 0.994 at 25 kn, as the thesis prints",
         ));
         rows.push(row(
             &format!("motor efficiency at {kn} kn"),
@@ -253,13 +279,12 @@ fn table_5_7() -> Result<Section, String> {
             Tolerance::Abs(0.01),
             "copper losses of Table 2.1 and eta_m = 0.998",
         ));
-        rows.push(row(
+        rows.push(explained(
             &format!("propeller efficiency at {kn} kn"),
             &src,
             want[3],
             got[3],
             "-",
-            Tolerance::Abs(0.05),
             "Table 5.6's definition gives eta_0 eta_R / (1 - w) = 0.677 x 0.98 / 0.9 = 0.737 for the B-series at \
              P/D = 1; the thesis' 0.703 needs eta_R = 0.935 or no wake factor",
         ));
@@ -271,13 +296,12 @@ fn chapter_5() -> Result<Section, String> {
     let sig = |r: &crate::RunResult, n: &str| r.summary.signals[n];
     let mut rows = Vec::new();
     let st = run(&startup_to(25.0))?;
-    rows.push(row(
+    rows.push(explained(
         "propeller speed at 25 kn",
         "Fig. 5-1",
         225.0,
         sig(&st, "prop_rpm").final_,
         "rpm",
-        Tolerance::Rel(0.11),
         "the thrust balance 2 kT rho n^2 D^4 = R_sp(u) with Table 5.1's resistance fixes 201 rpm; 225 rpm \
          would need 25 % more resistance than Table 5.1 gives",
     ));
@@ -422,23 +446,25 @@ fn table_5_8(size: Size) -> Result<Section, String> {
     let rice = s.rice.as_ref().ok_or("no Rice summary")?;
     let src_a = "Table 5.8, analytic row";
     let src_m = format!("Table 5.8, Monte Carlo row (189 trials; ours {})", size.trials);
-    let why = "Z = h0 - 1.1 R = 3.36 m with h0 = 6 m, R = 2.4 m (the thesis quotes 3.88 m, which its h0 and R do \
-               not give); with the level 1.1 standard deviations deep the first passage from a random start is not \
-               exponential at Rice's rate (README, What the studies give)";
+    let why = "our level is where ventilation starts, h/R = 1.1: Z = h0 - 1.1 R = 3.36 m with h0 = 6 m, R = 2.4 m; \
+               the thesis takes h/R = 1.3 (ch. 5.4.2), which gives 2.88 m, and quotes 3.88 m, which neither gives. \
+               A lower Z alone explains a factor of about 1.2 in Rice's rate, not the 2 we see, and with the level \
+               1.1 standard deviations deep the first passage from a random start is not exponential at Rice's \
+               rate (README, What the studies give): under investigation";
     let v = |x: Option<f64>| x.unwrap_or(f64::NAN);
     let mut rows = vec![
-        explained("mean arrival time (Rice)", src_a, 22.64, rice.mean_arrival_s, "s", why),
-        explained("rate of surface effects (Rice)", src_a, 0.044, rice.rate_per_s, "1/s", why),
-        explained("level Z", "ch. 5.4.2 text", 3.88, rice.z_m, "m", why),
+        open("mean arrival time (Rice)", src_a, 22.64, rice.mean_arrival_s, "s", why),
+        open("rate of surface effects (Rice)", src_a, 0.044, rice.rate_per_s, "1/s", why),
+        open("level Z", "ch. 5.4.2 text", 3.88, rice.z_m, "m", why),
     ];
-    for (name, thesis, ours) in [
-        ("mean", 23.67, v(a.mean)),
-        ("standard deviation", 22.11, v(a.std)),
-        ("skewness", 1.00, v(a.skewness)),
-        ("kurtosis", 3.13, v(a.kurtosis)),
-        ("median", 15.46, v(a.median)),
+    for (name, thesis, ours, unit) in [
+        ("mean", 23.67, v(a.mean), "s"),
+        ("standard deviation", 22.11, v(a.std), "s"),
+        ("skewness", 1.00, v(a.skewness), "-"),
+        ("kurtosis", 3.13, v(a.kurtosis), "-"),
+        ("median", 15.46, v(a.median), "s"),
     ] {
-        rows.push(explained(&format!("arrival time {name} (Monte Carlo)"), &src_m, thesis, ours, "s", why));
+        rows.push(open(&format!("arrival time {name} (Monte Carlo)"), &src_m, thesis, ours, unit, why));
     }
     Ok(Section {
         title: "Table 5.8: arrival time of the first surface effect (SS6 head seas, 25 kn, mc-arrival)",
@@ -572,7 +598,9 @@ fn as_printed() -> Result<Section, String> {
                the hub depth come faster and the second-order force's slow part changes with them";
     let sw = "as_printed.doppler_twice";
     add(
-        "encounter frequency of a 0.6 rad/s head wave at 25 kn".into(),
+        "encounter frequency of a 0.6 rad/s head wave at 25 kn (from the formulas; the seaway's phase rate is \
+         tested against them in sim/seaway.rs)"
+            .into(),
         sw,
         0.6 + 2.0 * k * u,
         0.6 + k * u,
@@ -691,7 +719,8 @@ fn as_printed() -> Result<Section, String> {
     let q = startup("eq_2_5_copper_loss")?;
     let why =
         "the rotor copper loss over the shaft speed is s/(1-s) of the torque: the motor starves the shaft and the \
-               ship stops accelerating at half its speed";
+               ship stops accelerating at half its speed; the energy books no longer close (the air-gap power's \
+               (1 - s) part is counted nowhere: residual -9 % of the turbine work)";
     let sw = "as_printed.eq_2_5_copper_loss";
     add(format!("ship speed, {su}"), sw, sig(&q, "ship_speed_kn").final_, sig(&s0, "ship_speed_kn").final_, "kn", why);
     add(format!("shaft speed, {su}"), sw, sig(&q, "prop_rpm").final_, sig(&s0, "prop_rpm").final_, "rpm", why);
@@ -841,10 +870,12 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
     );
     let count = |v: Verdict| sections.iter().flat_map(|x| &x.rows).filter(|r| r.verdict == v).count();
     s.push_str(&format!(
-        "Rows: {} pass (within the stated tolerance), {} fail, {} explained (a difference whose cause is known and \
-         written beside it), {} open (a known difference still being investigated; no tolerance claimed). Monte \
-         Carlo rows use {} trials.\n\n",
+        "Rows: {} pass (an independent check within the stated tolerance), {} calibrated (within the tolerance, but \
+         copied from the thesis or a parameter chosen to give it), {} fail, {} explained (a difference whose cause \
+         is known and written beside it), {} open (a known difference still being investigated; no tolerance \
+         claimed). Monte Carlo rows use {} trials.\n\n",
         count(Verdict::Pass),
+        count(Verdict::Calibrated),
         count(Verdict::Fail),
         count(Verdict::Explained),
         count(Verdict::Open),
@@ -873,7 +904,7 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
                 None => "-".into(),
             };
             let rel = if r.thesis != 0.0 && r.ours != r.thesis {
-                let pct = 100.0 * (r.ours - r.thesis) / r.thesis;
+                let pct = 100.0 * (r.ours - r.thesis) / r.thesis.abs();
                 if pct.abs() >= 0.1 {
                     format!(" ({pct:+.1} %)")
                 } else {
@@ -896,6 +927,7 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
                 match r.verdict {
                     Verdict::Pass => "pass",
                     Verdict::Fail => "**FAIL**",
+                    Verdict::Calibrated => "calibrated",
                     Verdict::Explained => "explained",
                     Verdict::Open => "open",
                 },
