@@ -132,7 +132,7 @@ export class LiveViews {
     this.k = constants;
     this.from = scenario.sea.kind === 'calm' ? null : scenario.sea.from_deg;
     const w = constants.warnings;
-    this.note.textContent = `Both plants draw the trace's figures (it records sums and means over machines; the shafts' speeds are each shaft's own). Block outlines turn red with a word when a limit is reached: turbine overspeed above ${w.turbine_overspeed_pu} pu, bus voltage outside ${w.bus_voltage_low_pu} to ${w.bus_voltage_high_pu} pu, motor at its ${w.motor_power_limit_pu} pu rating, brake resistor on. Arrow width follows the power; dashes move with it${reducedMotion.matches ? ' (held still: your system asks for reduced motion)' : ''}.`;
+    this.note.textContent = `Both plants draw the trace's figures (it records sums and means over machines; the shafts' speeds are each shaft's own). Block outlines turn red with a word when a limit is reached: turbine overspeed above ${w.turbine_overspeed_pu} pu, bus voltage outside ${w.bus_voltage_low_pu} to ${w.bus_voltage_high_pu} pu, motor at its ${w.motor_power_limit_pu} pu rating, brake resistor on. What a block keeps is its stage's share in Table 5.7's chain: an inverter's is the whole power electronics (rectifier, stator resistance, notching, inverter). Arrow width follows the power; dashes move with it${reducedMotion.matches ? ' (held still: your system asks for reduced motion)' : ''}.`;
     await loadWasm();
     if (this.sea) this.sea.free();
     this.sea = new Sea(text);
