@@ -159,8 +159,8 @@ mod tests {
     /// `motor_p_is_poles`: six pole pairs double the motor's synchronous speed; volts per hertz at
     /// the propeller's 200 rpm then give a third of the rated voltage and the motor runs at its
     /// peak-torque slip (6.5 rad/s) with large rotor losses: motor efficiency measured 0.9876 ->
-    /// 0.9211 (asserted: down by more than 0.03), and it cannot start at 25 kn (the set-up refuses:
-    /// peak torque 654 kN m against the propeller's 944 kN m).
+    /// 0.9211 (asserted: down by more than 0.03), and it cannot start at 25 kn (the set-up refuses,
+    /// naming the switch: peak torque 654 kN m against the propeller's 944 kN m).
     #[test]
     fn motor_p_as_poles_halves_the_pole_pairs() {
         let (e0, ..) = startup("none");
@@ -169,7 +169,9 @@ mod tests {
         assert!(e1[2] < e0[2] - 0.03);
         let mut sc = crate::presets::head_seas_ss6();
         sc.as_printed.motor_p_is_poles = true;
-        assert!(crate::run(&sc).is_err());
+        // The refusal names the switch before the motor's ratings.
+        let e = crate::run(&sc).unwrap_err().to_string();
+        assert!(e.contains("as_printed.motor_p_is_poles is on"), "{e}");
     }
 
     /// `eq_2_5_copper_loss`: the printed torque, rotor copper loss over shaft speed, is s/(1-s)

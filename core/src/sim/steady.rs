@@ -46,10 +46,20 @@ pub fn calm_water(p: &Plant, sc: &Scenario) -> Result<SteadyState, SimError> {
             // The volts-per-hertz law sets the flux from the rated voltage and frequency, so those
             // (and the circuit) limit the torque; the inverter caps the voltage.
             let m = &sc.plant.motor;
+            // A motor switch of the as_printed section is the likelier cause: name it first.
+            let ap = &sc.as_printed;
+            let switch = match (ap.motor_p_is_poles, ap.eq_2_5_copper_loss) {
+                (true, true) => "as_printed.motor_p_is_poles and as_printed.eq_2_5_copper_loss are on (the motor as \
+                                 printed); "
+                    .to_string(),
+                (true, false) => "as_printed.motor_p_is_poles is on (6 pole pairs, as printed); ".to_string(),
+                (false, true) => "as_printed.eq_2_5_copper_loss is on (eq. 2.5's torque, as printed); ".to_string(),
+                (false, false) => String::new(),
+            };
             return Err(SimError::Setup(format!(
-                "plant.motor.rated_voltage_ll_v = {} (at {} Hz): the motor cannot carry the propeller torque \
-                 {:.0} kN m at {:.0} rpm that initial.speed_kn = {} needs; with this volts-per-hertz ratio and \
-                 circuit its peak torque is {:.0} kN m at the inverter's {:.0} V (raise the rated voltage, \
+                "{switch}plant.motor.rated_voltage_ll_v = {} (at {} Hz): the motor cannot carry the propeller \
+                 torque {:.0} kN m at {:.0} rpm that initial.speed_kn = {} needs; with this volts-per-hertz ratio \
+                 and circuit its peak torque is {:.0} kN m at the inverter's {:.0} V (raise the rated voltage, \
                  check the circuit of plant.motor and plant.dc_link.inverter_voltage_ratio, or start slower)",
                 m.rated_voltage_ll_v,
                 m.rated_frequency_hz,
