@@ -296,14 +296,8 @@ pub fn singular_values(m: &DMatrix<C>) -> Vec<f64> {
 
 fn poles(a: &DMatrix<f64>) -> Result<Vec<Pole>, String> {
     let ev = crate::numerics::eigenvalues(a).ok_or("the closed-loop eigenvalues did not converge")?;
-    let mut p: Vec<Pole> = ev
-        .iter()
-        .map(|l| {
-            let w = libm::hypot(l.re, l.im);
-            Pole { re: l.re, im: l.im, damping: if w > 0.0 { -l.re / w } else { 1.0 }, natural_frequency_rad_s: w }
-        })
-        .collect();
-    p.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));
+    let mut p: Vec<Pole> = ev.iter().map(|&l| Pole::of(l)).collect();
+    crate::stability::sort_poles(&mut p);
     Ok(p)
 }
 

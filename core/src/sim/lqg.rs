@@ -130,12 +130,14 @@ pub struct LqgSet {
     u: [f64; 2],
     /// Actuator positions the deviations are measured from: throttle, field voltage [V].
     base: [f64; 2],
+    /// The next observer state, built here and swapped in (no allocation in the sample).
+    next: Vec<f64>,
 }
 
 impl LqgSet {
     /// At rest at the run's initial steady state (throttle, field voltage [V]).
     pub fn new(d: &LqgDesign, throttle0: f64, v_f0: f64) -> LqgSet {
-        LqgSet { x: vec![0.0; d.n], u: [0.0; 2], base: [throttle0, v_f0] }
+        LqgSet { x: vec![0.0; d.n], u: [0.0; 2], base: [throttle0, v_f0], next: vec![0.0; d.n] }
     }
 
     /// One sample of period `ts` [s] with turbine speed `omega_t` [rad/s] and bus voltage
@@ -166,8 +168,7 @@ impl LqgSet {
             e[1] = 0.0;
         }
         let du_applied = [(applied[0] - self.u[0]) / ts, (applied[1] - self.u[1]) / ts];
-        let mut next = vec![0.0; n];
-        for (i, x_i) in next.iter_mut().enumerate() {
+        for (i, x_i) in self.next.iter_mut().enumerate() {
             let mut acc = 0.0;
             for j in 0..n {
                 acc += d.phi[i * n + j] * self.x[j];
@@ -177,7 +178,7 @@ impl LqgSet {
             }
             *x_i = acc;
         }
-        self.x = next;
+        std::mem::swap(&mut self.x, &mut self.next);
         self.u = applied;
         (throttle, v_f)
     }

@@ -32,6 +32,19 @@ pub struct Pole {
     pub natural_frequency_rad_s: f64,
 }
 
+impl Pole {
+    /// The pole of eigenvalue `l`: damping -re/|l| (1 at the origin), natural frequency |l|.
+    pub fn of(l: Complex64) -> Pole {
+        let w = cabs(l);
+        Pole { re: l.re, im: l.im, damping: if w > 0.0 { -l.re / w } else { 1.0 }, natural_frequency_rad_s: w }
+    }
+}
+
+/// Sorts poles by real part, then imaginary part (least stable last).
+pub fn sort_poles(poles: &mut [Pole]) {
+    poles.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));
+}
+
 /// One point of a frequency response.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct BodePoint {
@@ -65,17 +78,11 @@ impl LinearSystem {
         let schur = nalgebra::linalg::Schur::try_new(self.a.clone(), f64::EPSILON, MAX_SCHUR_ITERATIONS)
             .ok_or_else(|| format!("the eigenvalues of the {n}x{n} linear model did not converge"))?;
         let ev = schur.complex_eigenvalues();
-        let mut poles: Vec<Pole> = ev
-            .iter()
-            .map(|l| {
-                let w = cabs(*l);
-                Pole { re: l.re, im: l.im, damping: if w > 0.0 { -l.re / w } else { 1.0 }, natural_frequency_rad_s: w }
-            })
-            .collect();
+        let mut poles: Vec<Pole> = ev.iter().map(|&l| Pole::of(l)).collect();
         if poles.iter().any(|p| !(p.re.is_finite() && p.im.is_finite() && p.natural_frequency_rad_s.is_finite())) {
             return Err(format!("the eigenvalues of the {n}x{n} linear model are not finite"));
         }
-        poles.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));
+        sort_poles(&mut poles);
         Ok(poles)
     }
 
