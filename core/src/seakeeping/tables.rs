@@ -13,7 +13,7 @@ use serde_json::Value;
 use std::f64::consts::PI;
 
 /// The table grid (part of the scenario). Headings cover 0..180 deg; waves from port use the
-/// mirror image (sway, roll, yaw and the drift force change sign).
+/// mirror image (sway, roll, yaw, the drift force and the drift moment change sign).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct SeakeepingGrid {
@@ -99,6 +99,9 @@ pub struct Rao {
     /// Mean forces per wave amplitude squared, ship axes [N/m^2]: x (forward) and y (port).
     pub fx: f64,
     pub fy: f64,
+    /// Mean yaw moment about the centre of gravity per wave amplitude squared, positive bow to
+    /// port (M_add of eqs. 2.19 and 2.24; `Response::drift_moment`) [N m/m^2].
+    pub mz: f64,
 }
 
 /// RAOs on the grid.
@@ -153,10 +156,13 @@ impl RaoTable {
     }
 
     /// Numbers per grid point in `values`.
-    pub const VALUES_PER_POINT: usize = 18;
+    pub const VALUES_PER_POINT: usize = 19;
 
     /// The table as flat numbers (every grid point's response, in the grid's order): what a web
-    /// worker that built it hands to the others, so the table is built once.
+    /// worker that built it hands to the others, so the table is built once. Per point, in order:
+    /// 0 omega0, 1 omega_e, 2 k; 3-12 the RAOs sway, heave, roll, pitch, yaw as (re, im) pairs;
+    /// 13 f_add, 14 added_resistance, 15 drift_force, 16 added_resistance_gb, 17 b44_viscous,
+    /// 18 drift_moment.
     pub fn values(&self) -> Vec<f64> {
         let mut v = Vec::with_capacity(self.data.len() * Self::VALUES_PER_POINT);
         for r in &self.data {
@@ -165,6 +171,7 @@ impl RaoTable {
                 v.extend_from_slice(&[c.re, c.im]);
             }
             v.extend_from_slice(&[r.f_add, r.added_resistance, r.drift_force, r.added_resistance_gb, r.b44_viscous]);
+            v.push(r.drift_moment);
         }
         v
     }
@@ -194,6 +201,7 @@ impl RaoTable {
                 drift_force: v[15],
                 added_resistance_gb: v[16],
                 b44_viscous: v[17],
+                drift_moment: v[18],
             })
             .collect();
         Ok(RaoTable { grid: *grid, omegas, speeds, headings, data })
@@ -213,7 +221,7 @@ impl RaoTable {
         // tried and is less accurate on the default grid: the heave RAO's sharp drop past the
         // resonance dominates the error, not the turning phase).
         let mut acc = [C::new(0.0, 0.0); 5];
-        let (mut fx, mut fy, mut we) = (0.0, 0.0, 0.0);
+        let (mut fx, mut fy, mut mz, mut we) = (0.0, 0.0, 0.0, 0.0);
         for (di, wi) in [(0, 1.0 - fi), (1, fi)] {
             for (dj, wj) in [(0, 1.0 - fj), (1, fj)] {
                 for (dk, wk) in [(0, 1.0 - fk), (1, fk)] {
@@ -232,6 +240,8 @@ impl RaoTable {
                     let hb = self.headings[(k0 + dk).min(self.headings.len() - 1)];
                     fx += w * libm::cos(hb) * r.f_add;
                     fy += w * libm::sin(hb) * r.f_add;
+                    // The moment is interpolated as stored (it carries its own sin(beta) and lever).
+                    mz += w * r.drift_moment;
                     we += w * r.omega_e;
                 }
             }
@@ -246,6 +256,7 @@ impl RaoTable {
             yaw: acc[4] * s,
             fx,
             fy: fy * s,
+            mz: mz * s,
         }
     }
 }
@@ -470,6 +481,43 @@ mod tests {
             );
             assert!(worst < tol);
         }
+    }
+
+    /// The drift moment in the table: at grid nodes `mz` is the direct `drift_moment` (to 1e-9),
+    /// waves from port give the opposite moment, between heading nodes it is the linear blend of
+    /// the nodes' moments, and `values` / `from_values` carry it bit for bit (a small grid:
+    /// 4 frequencies x 2 speeds x 5 headings).
+    #[test]
+    fn drift_moment_in_the_table() {
+        let ship = Ship::dtmb5415();
+        let grid = SeakeepingGrid {
+            n_omega: 4,
+            omega_min: 0.4,
+            omega_max: 1.0,
+            n_speed: 2,
+            n_heading: 5,
+            ..Default::default()
+        };
+        let rad = ship.radiation_table(&default_omega_grid());
+        let tab = RaoTable::from_radiation(&ship, &rad, &grid);
+        let (w, u) = (grid.omegas()[2], grid.speeds()[1]);
+        let hs = grid.headings();
+        for &b in &hs {
+            let d = response(&ship, &rad, w, u, b, grid.roll_wave_amplitude_m);
+            let r = tab.interpolate(w, u, b);
+            assert!((r.mz - d.drift_moment).abs() <= 1e-9 * d.drift_moment.abs().max(1.0), "beta {b}");
+            let m = tab.interpolate(w, u, 2.0 * PI - b);
+            assert!((m.mz + r.mz).abs() <= 1e-9 * r.mz.abs().max(1.0));
+        }
+        let (d3, d4) = (response(&ship, &rad, w, u, hs[3], 2.5), response(&ship, &rad, w, u, hs[4], 2.5));
+        let mid = tab.interpolate(w, u, 0.5 * (hs[3] + hs[4]));
+        assert!((mid.mz - 0.5 * (d3.drift_moment + d4.drift_moment)).abs() <= 1e-9 * d3.drift_moment.abs());
+        assert!(tab.interpolate(w, u, hs[3]).mz.abs() > 1e3 && tab.interpolate(w, u, PI).mz.abs() < 1e-6);
+        let v = tab.values();
+        assert_eq!(v.len(), 4 * 2 * 5 * RaoTable::VALUES_PER_POINT);
+        let back = RaoTable::from_values(&grid, &v).unwrap();
+        assert_eq!(back.values(), v);
+        assert_eq!(back.interpolate(w, u, 2.0).mz, tab.interpolate(w, u, 2.0).mz);
     }
 
     #[test]
