@@ -65,7 +65,7 @@ fn summaries_do_not_depend_on_order_or_sharding() {
 fn arrival_times_agree_with_rice() {
     let mut sc = preset("mc-arrival").unwrap();
     sc.seakeeping.stern_motion = SternMotion::Consistent;
-    sc.seakeeping.hub_depth_m = 4.0;
+    sc.set_hub_depth_m(4.0);
     sc.monte_carlo.trials = 200;
     sc.monte_carlo.envelope_signals = vec!["h_over_r".into()];
     let p = run_range(&sc, 0, 200).unwrap();

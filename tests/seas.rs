@@ -26,7 +26,7 @@ fn std(v: &[f64]) -> f64 {
 fn head_seas(seed: u64, stern: SternMotion, duration: f64) -> Scenario {
     let mut s = preset("head-seas-ss6").unwrap();
     // The thesis' depth (the preset's default is a light loading with a shallower hub).
-    s.seakeeping.hub_depth_m = 6.0;
+    s.set_hub_depth_m(6.0);
     s.sim.seed = seed;
     s.seakeeping.stern_motion = stern;
     s.sim.duration_s = duration;
@@ -239,7 +239,7 @@ fn fuel_in_regular_seas() {
 fn rao_table_values_round_trip() {
     use aes_core::seakeeping::tables::{RaoTable, SeakeepingGrid};
     let grid = SeakeepingGrid::default();
-    let t = aes_core::seakeeping::cache::rao_table(&grid).unwrap();
+    let t = aes_core::Scenario::default().rao_table().unwrap();
     let v = t.values();
     let back = RaoTable::from_values(&grid, &v).unwrap();
     assert_eq!(back.values(), v);

@@ -108,7 +108,7 @@ fn propeller_speeds_of_fig_5_1() {
     // Analytic thrust balance (see aes_core::propeller::OpenWater::equilibrium_advance_ratio).
     let sc = startup();
     let ow = aes_core::propeller::OpenWater::from_params(&sc.propeller).unwrap();
-    let surge = aes_core::surge::Surge::new(&sc.ship);
+    let surge = aes_core::surge::Surge::new(&sc.ship, sc.ship_hull().unwrap().mass_kg);
     let j = ow.equilibrium_advance_ratio(surge.c_r, 2.0, 4.5, 1025.0, 0.1);
     let rpm_balance = 60.0 * aes_core::units::kn_to_m_s(25.0) * 0.9 / (j * 4.5);
     println!("25 kn: {rpm25:.1} rpm (balance {rpm_balance:.1}, thesis 225)");

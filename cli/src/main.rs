@@ -1,8 +1,7 @@
 //! `aes-sim`: the command line of the All Electric Ship simulator.
 
-use aes_core::hull_sections::HullOffsets;
 use aes_core::presets::{preset, PRESET_NAMES};
-use aes_core::seakeeping::strip::{default_omega_grid, BilgeKeels, MassProperties, Ship};
+use aes_core::seakeeping::strip::{default_omega_grid, Ship};
 use aes_core::seakeeping::tables::{rao_json, section_json, FormChoice, RaoTable, SeakeepingGrid};
 use aes_core::{Scenario, Simulation};
 use clap::{Parser, Subcommand};
@@ -154,22 +153,31 @@ enum Cmd {
     /// Response amplitude operators and mean second-order forces of a hull by strip theory
     /// (thesis ch. 2.5.2-2.5.3); JSON on standard output.
     Rao {
-        /// Hull offsets CSV (long format of dtmb5415_offsets.csv); default: the embedded DTMB 5415.
+        /// The hull: an embedded one by name (dtmb5415, wigley) or an offsets CSV file (the long
+        /// format of dtmb5415_offsets.csv). Default: the hull of --scenario, else the DTMB 5415.
         #[arg(long)]
         hull: Option<String>,
-        /// Waterline above the baseline [m] (default 6.15, the 5415's design draft).
-        #[arg(long, default_value_t = 6.15)]
-        draft: f64,
-        /// Centre of gravity above the baseline [m].
-        #[arg(long, default_value_t = 7.555)]
-        kg: f64,
-        /// Radii of gyration [m]: roll, pitch, yaw (defaults: 0.37 B, 0.25 L, 0.25 L of the 5415).
-        #[arg(long, default_value_t = 0.37 * 19.06)]
-        kxx: f64,
-        #[arg(long, default_value_t = 0.25 * 142.0)]
-        kyy: f64,
-        #[arg(long, default_value_t = 0.25 * 142.0)]
-        kzz: f64,
+        /// Take the hull and its loading from this scenario's `ship.hull` (file, `-` or
+        /// `preset:NAME`): the RAOs its runs use.
+        #[arg(long)]
+        scenario: Option<String>,
+        /// Waterline above the baseline [m] (default: the hull's design draft).
+        #[arg(long)]
+        draft: Option<f64>,
+        /// Displaced mass [kg], instead of --draft: the draft is solved for it.
+        #[arg(long)]
+        mass: Option<f64>,
+        /// Centre of gravity above the baseline [m] (needed for an offsets file).
+        #[arg(long)]
+        kg: Option<f64>,
+        /// Radii of gyration [m]: roll, pitch, yaw (defaults: the hull's; for an offsets file
+        /// 0.37 B, 0.25 Lpp, 0.25 Lpp).
+        #[arg(long)]
+        kxx: Option<f64>,
+        #[arg(long)]
+        kyy: Option<f64>,
+        #[arg(long)]
+        kzz: Option<f64>,
         /// Ship speed [kn].
         #[arg(long = "speed-kn")]
         speed_kn: f64,
@@ -589,32 +597,47 @@ fn real_main() -> Result<(), Failure> {
             let v = section_json(beam, draft, area_coeff, form, &omega, 1025.0, 9.81)?;
             emit_json(&v)?;
         }
-        Cmd::Rao { hull, draft, kg, kxx, kyy, kzz, speed_kn, heading_deg, omega, roll_wave_amplitude } => {
-            let offsets = match &hull {
-                Some(path) => {
-                    let text =
-                        read_bounded(path, aes_core::hull_sections::MAX_HULL_BYTES as u64, "a hull offsets file")?;
-                    HullOffsets::parse(&text).map_err(|e| format!("{}: {e}", shorten(path)))?
-                }
-                None => HullOffsets::dtmb5415(),
+        Cmd::Rao { hull, scenario, draft, mass, kg, kxx, kyy, kzz, speed_kn, heading_deg, omega, roll_wave_amplitude } => {
+            if !(roll_wave_amplitude.is_finite() && (0.01..=20.0).contains(&roll_wave_amplitude)) {
+                return Err(format!("--roll-wave-amplitude = {roll_wave_amplitude} is outside [0.01, 20]").into());
+            }
+            let mut ship = match &scenario {
+                Some(path) => load(path, &[])?.ship,
+                None => aes_core::scenario::ShipParams::default(),
             };
-            for (name, v, lo, hi) in [
-                ("draft", draft, 0.01, 100.0),
-                ("kg", kg, -50.0, 100.0),
-                ("kxx", kxx, 0.01, 100.0),
-                ("kyy", kyy, 0.01, 500.0),
-                ("kzz", kzz, 0.01, 500.0),
-                ("roll-wave-amplitude", roll_wave_amplitude, 0.01, 20.0),
-            ] {
-                if !(v.is_finite() && (lo..=hi).contains(&v)) {
-                    return Err(format!("--{name} = {v} is outside [{lo}, {hi}]").into());
+            let spec = &mut ship.hull;
+            if let Some(h) = &hull {
+                if aes_core::ship_hull::HULL_NAMES.contains(&h.as_str()) && h != "custom" {
+                    *spec = aes_core::ship_hull::HullSpec { name: h.clone(), ..Default::default() };
+                } else {
+                    let text = read_bounded(h, aes_core::hull_sections::MAX_HULL_BYTES as u64, "a hull offsets file")?;
+                    *spec = aes_core::ship_hull::HullSpec {
+                        name: "custom".into(),
+                        offsets_csv: text,
+                        ..Default::default()
+                    };
                 }
             }
-            let mass = MassProperties { kg_m: kg, kxx_m: kxx, kyy_m: kyy, kzz_m: kzz };
-            let keels = if hull.is_none() { Some(BilgeKeels { length_m: 0.25 * 142.0, breadth_m: 0.6 }) } else { None };
-            let ship = Ship::new(&offsets, draft, mass, keels, 1025.0, 9.81)?;
+            if draft.is_some() || mass.is_some() {
+                spec.draft_m = draft;
+                spec.mass_kg = mass;
+            }
+            for (field, v) in [(&mut spec.kg_m, kg), (&mut spec.kxx_m, kxx), (&mut spec.kyy_m, kyy), (&mut spec.kzz_m, kzz)] {
+                if v.is_some() {
+                    *field = v;
+                }
+            }
+            // The hull section's own checks, with the flags' names for its fields.
+            let mut v = aes_core::validate::Validator::new();
+            v.section("hull", |v| ship.hull.validate(v, ship.water_density_kg_m3));
+            v.finish().map_err(|e| {
+                let e = e.to_string();
+                format!("{e}\n(--draft, --mass, --kg, --kxx, --kyy, --kzz set hull.draft_m, mass_kg, kg_m, kxx_m, kyy_m, kzz_m)")
+            })?;
+            let resolved = ship.hull.resolve(ship.water_density_kg_m3).map_err(|(f, e)| format!("hull.{f}: {e}"))?;
+            let strips = resolved.strip_ship()?;
             let v = rao_json(
-                &ship,
+                &strips,
                 speed_kn * aes_core::units::KNOT_M_S,
                 heading_deg.to_radians(),
                 &omega,
@@ -669,7 +692,7 @@ fn real_main() -> Result<(), Failure> {
             // take more than a second (a fine grid), so a long silence is explained.
             if sc.sea.kind != aes_core::scenario::SeaKind::Calm {
                 let note = SlowNote::start("aes-sim mc: building the seakeeping (RAO) tables", quiet);
-                aes_core::seakeeping::cache::rao_table_as(&sc.seakeeping.grid, &sc.as_printed)?;
+                sc.rao_table()?;
                 note.finish();
             }
             let pool =
@@ -844,7 +867,7 @@ fn real_main() -> Result<(), Failure> {
                     let mut acc = 0.0;
                     for i in 0..n {
                         let t = i as f64 * sc.seakeeping.sample_period_s;
-                        acc += sea.sample(t, 12.86 * t, 0.0, 12.86, 0.0).hub;
+                        acc += sea.sample(t, 12.86 * t, 0.0, 12.86, 0.0).hub[0];
                     }
                     std::hint::black_box(acc);
                     let s = t0.elapsed().as_secs_f64();

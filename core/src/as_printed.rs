@@ -59,6 +59,13 @@ pub struct AsPrintedParams {
     /// (poles): `plant.motor.pole_pairs` counts poles, so the motor has half as many pole pairs,
     /// a 600 rpm machine at 60 Hz.
     pub motor_p_is_poles: bool,
+    /// Tables 5.1 and 5.5 give the ship L = 180 m, x_p = 75 m and m = 7e6 kg, while its hull, the
+    /// DTMB 5415 (the DDG-51's public form), has Lpp = 142 m, the rudder 67 m aft of the centre
+    /// of gravity and 8.64e6 kg at its 6.15 m draft. Corrected: the hull's numbers everywhere
+    /// (`ship_hull`). As printed: the maneuvering prime system takes L = 180 m, the rudder's lever
+    /// 75 m and the surge model's mass 7e6 kg (the seakeeping hull and the propellers' place stay
+    /// the hull's: 75 m aft of the centre of gravity is behind a 142 m hull's stern).
+    pub table_5_ship: bool,
 }
 
 impl AsPrintedParams {
@@ -71,6 +78,7 @@ impl AsPrintedParams {
             ea_line_to_line: true,
             eq_2_5_copper_loss: true,
             motor_p_is_poles: true,
+            table_5_ship: true,
         }
     }
 
@@ -84,13 +92,14 @@ impl AsPrintedParams {
     }
 
     /// The switches' names, in the order of the struct (for reports).
-    pub const NAMES: [&'static str; 6] = [
+    pub const NAMES: [&'static str; 7] = [
         "doppler_twice",
         "appendix_a_typos",
         "eq_2_47_conjugate",
         "ea_line_to_line",
         "eq_2_5_copper_loss",
         "motor_p_is_poles",
+        "table_5_ship",
     ];
 
     /// This section with one switch, by name, set to `on`; None for an unknown name.
@@ -102,6 +111,7 @@ impl AsPrintedParams {
             "ea_line_to_line" => &mut self.ea_line_to_line,
             "eq_2_5_copper_loss" => &mut self.eq_2_5_copper_loss,
             "motor_p_is_poles" => &mut self.motor_p_is_poles,
+            "table_5_ship" => &mut self.table_5_ship,
             _ => return None,
         };
         *f = on;
@@ -167,8 +177,11 @@ mod tests {
         let (e1, rpm1, kn1, _) = startup("motor_p_is_poles");
         println!("motor efficiency {:.4} -> {:.4}, {rpm1:.1} rpm, {kn1:.2} kn", e0[2], e1[2]);
         assert!(e1[2] < e0[2] - 0.03);
+        // In the thesis' ship (Tables 5.1/5.5: L = 180 m, whose Table 2.3 resistance is the
+        // larger), the 25 kn propeller torque is beyond the P-as-poles motor's peak.
         let mut sc = crate::presets::head_seas_ss6();
         sc.as_printed.motor_p_is_poles = true;
+        sc.as_printed.table_5_ship = true;
         // The refusal names the switch before the motor's ratings.
         let e = crate::run(&sc).unwrap_err().to_string();
         assert!(e.contains("as_printed.motor_p_is_poles is on"), "{e}");

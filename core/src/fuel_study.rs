@@ -25,7 +25,7 @@ pub fn run(sc: &crate::Scenario, omegas: &[f64]) -> Result<Vec<FuelPoint>, Strin
     let curve = part_load_curve();
     let speed_kn = sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(25.0);
     let u = crate::units::kn_to_m_s(speed_kn);
-    let table = crate::seakeeping::cache::rao_table_as(&sc.seakeeping.grid, &sc.as_printed)?;
+    let table = sc.rao_table()?;
     let mut calm = sc.clone();
     calm.sea.kind = crate::scenario::SeaKind::Calm;
     calm.initial.speed_kn = speed_kn;

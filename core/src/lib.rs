@@ -28,6 +28,7 @@ pub mod regression;
 pub mod rudder;
 pub mod scenario;
 pub mod seakeeping;
+pub mod ship_hull;
 pub mod signals;
 pub mod sim;
 pub mod speed_control;

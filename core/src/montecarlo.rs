@@ -18,7 +18,7 @@
 //!   encounter frequency, and the up-crossing rate of eq. 5.3.
 
 use crate::scenario::{Scenario, SeaKind};
-use crate::seakeeping::params::stern_wave;
+use crate::seakeeping::params::HubPlace;
 use crate::signals::Signal;
 use crate::sim::Simulation;
 use crate::stats::{rice_upcrossing_rate, trial_seed, welch, ExactMoments, Histogram};
@@ -568,7 +568,11 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
         return Ok(None);
     }
     let k = &sc.seakeeping;
-    let table = crate::seakeeping::cache::rao_table_as(&k.grid, &sc.as_printed)?;
+    let hull = sc.ship_hull()?;
+    let table = sc.rao_table()?;
+    // The port shaft's hub; in head and following seas the starboard one moves alike, in oblique
+    // seas the first event on either shaft comes no later than this one's.
+    let at = HubPlace { x_aft: hull.prop_x_aft_m, y: hull.shaft_y_m[0] };
     let (h, wn) = sc.sea.spectrum();
     let (w_lo, w_hi) = if sc.sea.omega_min_rad_s > 0.0 && sc.sea.omega_max_rad_s > 0.0 {
         (sc.sea.omega_min_rad_s, sc.sea.omega_max_rad_s)
@@ -602,9 +606,9 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
         for &(d, wt) in &dirs {
             let beta = psi - (mu0 + d);
             let r = table.interpolate(w, u, beta);
-            let cos_beta = libm::cos(beta);
-            let stern = stern_wave(kw, k.prop_x_aft_m, cos_beta);
-            let hp = k.stern_motion.hub_transfer(stern, r.heave, r.pitch, k.prop_x_aft_m);
+            let (cos_beta, sin_beta) = (libm::cos(beta), libm::sin(beta));
+            let wave = k.stern_motion.hub_wave(kw, at, cos_beta, sin_beta);
+            let hp = k.stern_motion.hub_transfer(wave, r.heave, r.roll, r.pitch, at);
             let sy = hp.norm_sqr() * s * wt * dw;
             let we = (w - kw * u * cos_beta).abs();
             m0 += sy;
@@ -612,7 +616,7 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
         }
     }
     let radius = 0.5 * sc.propeller.diameter_m;
-    let z = k.hub_depth_m - k.ventilation_on_h_over_r * radius;
+    let z = hull.hub_depth_m - k.ventilation_on_h_over_r * radius;
     let rate = rice_upcrossing_rate(m0, m2, z);
     let cap = sc.sim.duration_s;
     Ok(Some(RiceSummary {

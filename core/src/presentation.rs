@@ -31,14 +31,16 @@ pub struct PageConstants {
     pub motor_rated_power_w: f64,
     pub bus_voltage_ref_v: f64,
     pub turbine_rated_speed_rpm: f64,
-    /// Ship length of the maneuvering model [m].
+    /// Ship length of the maneuvering model [m] (the hull's Lpp, or Table 5.5's 180 m with
+    /// `as_printed.table_5_ship`).
     pub ship_length_m: f64,
-    /// Length between perpendiculars of the seakeeping hull [m] (RAO plots against lambda/L).
+    /// Length between perpendiculars of the hull [m] (RAO plots against lambda/L).
     pub seakeeping_lpp_m: f64,
     /// Gravity [m/s^2] of the wave dispersion relation.
     pub gravity_m_s2: f64,
-    /// Calm-water hub depth h0 [m].
+    /// Calm-water hub depth h0 [m] and the shafts' offsets to port [m].
     pub hub_depth_m: f64,
+    pub shaft_y_m: [f64; crate::ship_hull::N_SHAFTS],
     /// Propeller radius R [m] (the disc drawn at the hub depth).
     pub propeller_radius_m: f64,
     /// Propeller hub aft of the centre of gravity [m] (eq. 2.56).
@@ -67,7 +69,7 @@ pub struct WarningLevels {
 /// forward from the aft perpendicular [m], heights up from the calm waterline [m].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct HullProfile {
-    pub name: &'static str,
+    pub name: String,
     /// Station positions [m from the AP].
     pub x_m: Vec<f64>,
     /// Lowest point of each station (keel or bottom) and its highest (deck edge) [m, up].
@@ -82,21 +84,25 @@ pub struct HullProfile {
 }
 
 impl HullProfile {
-    /// The hull runs in waves use (the DTMB 5415, until scenarios carry their own hull).
-    pub fn of(_sc: &Scenario) -> HullProfile {
-        let ship = crate::seakeeping::cache::dtmb5415();
-        let offsets = crate::hull_sections::HullOffsets::dtmb5415();
-        let t = ship.draft;
+    /// The scenario's hull (`ship.hull`).
+    pub fn of(sc: &Scenario) -> Result<HullProfile, String> {
+        let hull = sc.ship_hull()?;
+        let offsets = &hull.offsets;
+        let t = hull.draft_m;
         let wl = offsets.sections(t).unwrap_or_default();
         let mut p = HullProfile {
-            name: "DTMB 5415",
+            name: match hull.name.as_str() {
+                "dtmb5415" => "DTMB 5415".into(),
+                "wigley" => "Wigley".into(),
+                _ => "custom hull".into(),
+            },
             x_m: Vec::new(),
             keel_z_m: Vec::new(),
             deck_z_m: Vec::new(),
             waterline_half_breadth_m: Vec::new(),
-            lcg_m: ship.lcg,
+            lcg_m: hull.lcg_m,
             draft_m: t,
-            lpp_m: ship.lpp,
+            lpp_m: hull.lpp_m,
         };
         for (i, s) in offsets.stations.iter().enumerate() {
             // The hull closes at the last row without breadth below the first with breadth (the
@@ -109,14 +115,96 @@ impl HullProfile {
             p.deck_z_m.push(hi - t);
             p.waterline_half_breadth_m.push(wl.get(i).map_or(0.0, |sec| 0.5 * sec.beam));
         }
-        p
+        Ok(p)
+    }
+}
+
+/// The hull panel of the page: the body plan, the appendages and the hydrostatics of the
+/// scenario's hull at its loading (positions from the AP and the baseline, metres).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HullSheet {
+    pub profile: HullProfile,
+    /// Every station's offsets: x from the AP, (z above the baseline, half-breadth) rows.
+    pub stations: Vec<StationOffsets>,
+    /// Waterline above the baseline [m], beam at it [m], displaced volume [m^3] and mass [kg].
+    pub draft_m: f64,
+    pub beam_m: f64,
+    pub volume_m3: f64,
+    pub mass_kg: f64,
+    /// Centre of buoyancy forward of the AP [m] and above the baseline [m]; transverse and
+    /// longitudinal metacentric radii [m]; centre of gravity above the baseline [m]; metacentric
+    /// heights [m]; waterplane area [m^2].
+    pub lcb_m: f64,
+    pub kb_m: f64,
+    pub bm_t_m: f64,
+    pub bm_l_m: f64,
+    pub kg_m: f64,
+    pub gm_t_m: f64,
+    pub gm_l_m: f64,
+    pub awp_m2: f64,
+    /// Radii of gyration [m] and bilge keels (length, breadth [m]; none: null).
+    pub k_m: [f64; 3],
+    pub bilge_keels_m: Option<[f64; 2]>,
+    /// Propeller hubs: x from the AP, shafts' offsets to port, height above the baseline,
+    /// calm-water depth h0 [m]; the propeller's diameter [m]; the rudder's x from the AP [m].
+    pub propeller_x_m: f64,
+    pub shaft_y_m: [f64; crate::ship_hull::N_SHAFTS],
+    pub hub_above_base_m: f64,
+    pub hub_depth_m: f64,
+    pub propeller_diameter_m: f64,
+    pub rudder_x_m: f64,
+}
+
+/// One station of the body plan.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StationOffsets {
+    pub x_m: f64,
+    pub z_m: Vec<f64>,
+    pub half_breadth_m: Vec<f64>,
+}
+
+impl HullSheet {
+    pub fn of(sc: &Scenario) -> Result<HullSheet, String> {
+        let h = sc.ship_hull()?;
+        let hs = &h.hydrostatics;
+        let mp = &h.mass_props;
+        Ok(HullSheet {
+            profile: HullProfile::of(sc)?,
+            stations: h
+                .offsets
+                .stations
+                .iter()
+                .map(|s| StationOffsets { x_m: s.x, z_m: s.z.clone(), half_breadth_m: s.half_breadth.clone() })
+                .collect(),
+            draft_m: h.draft_m,
+            beam_m: h.beam_m,
+            volume_m3: hs.volume,
+            mass_kg: h.mass_kg,
+            lcb_m: hs.lcb,
+            kb_m: hs.kb,
+            bm_t_m: hs.bmt,
+            bm_l_m: hs.bml,
+            kg_m: mp.kg_m,
+            gm_t_m: hs.kb + hs.bmt - mp.kg_m,
+            gm_l_m: hs.kb + hs.bml - mp.kg_m,
+            awp_m2: hs.awp,
+            k_m: [mp.kxx_m, mp.kyy_m, mp.kzz_m],
+            bilge_keels_m: h.bilge_keels.map(|b| [b.length_m, b.breadth_m]),
+            propeller_x_m: h.lcg_m - h.prop_x_aft_m,
+            shaft_y_m: h.shaft_y_m,
+            hub_above_base_m: h.draft_m - h.hub_depth_m,
+            hub_depth_m: h.hub_depth_m,
+            propeller_diameter_m: sc.propeller.diameter_m,
+            rudder_x_m: h.lcg_m - h.rudder_x_aft_m,
+        })
     }
 }
 
 impl PageConstants {
-    pub fn of(sc: &Scenario) -> PageConstants {
+    pub fn of(sc: &Scenario) -> Result<PageConstants, String> {
         let k = &sc.seakeeping;
-        PageConstants {
+        let hull = sc.ship_hull()?;
+        Ok(PageConstants {
             h_over_r_bands: vec![Band {
                 from: k.ventilation_on_h_over_r,
                 to: k.ventilation_off_h_over_r,
@@ -133,19 +221,20 @@ impl PageConstants {
             motor_rated_power_w: sc.plant.motor.rated_power_w,
             bus_voltage_ref_v: sc.bus_voltage_ref_v(),
             turbine_rated_speed_rpm: sc.plant.turbine.rated_speed_rpm,
-            ship_length_m: sc.ship.length_m,
-            seakeeping_lpp_m: crate::seakeeping::cache::dtmb5415().lpp,
+            ship_length_m: hull.rigid_body(&sc.as_printed).length_m,
+            seakeeping_lpp_m: hull.lpp_m,
             gravity_m_s2: crate::waves::G,
-            hub_depth_m: k.hub_depth_m,
+            hub_depth_m: hull.hub_depth_m,
+            shaft_y_m: hull.shaft_y_m,
             propeller_radius_m: 0.5 * sc.propeller.diameter_m,
-            prop_x_aft_m: k.prop_x_aft_m,
+            prop_x_aft_m: hull.prop_x_aft_m,
             warnings: WarningLevels {
                 turbine_overspeed_pu: 1.1,
                 bus_voltage_low_pu: 0.9,
                 bus_voltage_high_pu: sc.plant.dc_link.brake_on_pu,
                 motor_power_limit_pu: 1.0,
             },
-        }
+        })
     }
 }
 
@@ -155,7 +244,7 @@ mod tests {
 
     #[test]
     fn the_hull_profile_spans_the_ship_and_the_waterline_is_between_keel_and_deck() {
-        let p = HullProfile::of(&Scenario::default());
+        let p = HullProfile::of(&Scenario::default()).unwrap();
         assert!(p.x_m.len() > 20, "{} stations", p.x_m.len());
         assert!(p.x_m[0] < 1.0 && *p.x_m.last().unwrap() > 140.0);
         for i in 0..p.x_m.len() {

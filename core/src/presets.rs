@@ -219,7 +219,7 @@ pub fn head_seas_ss6() -> Scenario {
          (h0 = 6 m, the thesis' depth) they stay down; with the hub depth of eq. 2.57 as printed \
          (seakeeping.stern_motion) they ventilate at either depth, far more often."
         .into();
-    s.seakeeping.hub_depth_m = 3.5;
+    s.set_hub_depth_m(3.5);
     s
 }
 
@@ -245,7 +245,7 @@ pub fn as_printed() -> Scenario {
     s.name = "as-printed".into();
     s.description = "The thesis' equations as printed, in its ch. 5.3 run (25 knots into head seas of sea state 6, \
         hub at h0 = 6 m): the Doppler shift counted twice (eqs. 2.55, 2.59), Appendix A's eqs. 5 and 17, eq. 2.47's \
-        conjugate, E_a line to line (the bus at 9.7 kV) and eq. 2.57's sign. What you see: Appendix A's typo in A35 \
+        conjugate, E_a line to line (the bus at 9.7 kV), Tables 5.1/5.5's ship (L 180 m, x_p 75 m, 7000 t) and eq. 2.57's sign. What you see: Appendix A's typo in A35 \
         makes the destroyer heave by 16 to 18 m, so the propellers leave the water again and again (h/R down to -8), \
         the motor power falls to nothing each time, the shaft speed swings between 215 and 241 rpm, and the mean \
         second-order force pushes the ship forward. The thesis says that only a small fraction of the propeller \
@@ -259,6 +259,7 @@ pub fn as_printed() -> Scenario {
         appendix_a_typos: true,
         eq_2_47_conjugate: true,
         ea_line_to_line: true,
+        table_5_ship: true,
         ..Default::default()
     };
     s.seakeeping.stern_motion = crate::scenario::SternMotion::ThesisEq257;
@@ -290,7 +291,7 @@ pub fn mc_excess_energy() -> Scenario {
         effects, and how their power spreads over trials. Run it with `aes-sim mc` or the Monte Carlo tab."
         .into();
     s.propeller.diameter_m = 4.8;
-    s.seakeeping.hub_depth_m = 4.0;
+    s.set_hub_depth_m(4.0);
     s.monte_carlo.trials = 100;
     s.monte_carlo.excess_energy = true;
     s
@@ -309,7 +310,7 @@ pub fn mc_arrival() -> Scenario {
         the thesis did; with the corrected sign such events are a million times rarer."
         .into();
     s.propeller.diameter_m = 4.8;
-    s.seakeeping.hub_depth_m = 6.0;
+    s.set_hub_depth_m(6.0);
     s.seakeeping.stern_motion = crate::scenario::SternMotion::ThesisEq257;
     s.sim.duration_s = 90.0;
     s.monte_carlo.trials = 200;

@@ -10,14 +10,12 @@ use crate::control::DiscretePi;
 use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 
-/// Rudder geometry and limits (Table 5.5).
+/// Rudder size and limits (Table 5.5). Its place, x_p, is the hull's (`ship.hull.rudder_x_m`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct RudderParams {
     /// Rudder area A_r [m^2]. Table 5.5: 20.
     pub area_m2: f64,
-    /// Distance from the centre of gravity aft to the rudder and propellers x_p [m]. Table 5.5: 75.
-    pub x_p_m: f64,
     /// Lift slope dC_L/dalpha [1/rad]. Table 5.5: 3.31 (No. 1 rudder of [42]).
     pub lift_slope: f64,
     /// Drag slope dC_D/dalpha [1/rad]. Table 5.5: 0.46.
@@ -32,7 +30,6 @@ impl Default for RudderParams {
     fn default() -> Self {
         RudderParams {
             area_m2: 20.0,
-            x_p_m: 75.0,
             lift_slope: 3.31,
             drag_slope: 0.46,
             max_angle_deg: 20.0,
@@ -151,7 +148,6 @@ impl Autopilot {
 impl RudderParams {
     pub fn validate(&self, v: &mut Validator) {
         check_range!(v, self.area_m2, 0.0, 500.0);
-        check_range!(v, self.x_p_m, 0.0, 500.0);
         check_range!(v, self.lift_slope, 0.0, 10.0);
         check_range!(v, self.drag_slope, 0.0, 5.0);
         check_range!(v, self.max_angle_deg, 1.0, 45.0);
@@ -186,7 +182,7 @@ mod tests {
         assert!((fy - q * 3.31 * d).abs() < 1e-6 * fy);
         assert!((fx + q * 0.46 * d).abs() < 1e-6 * fx.abs());
         // Moment -x_p F_y < 0: bow to port.
-        assert!(-p.x_p_m * fy < 0.0);
+        assert!(-75.0 * fy < 0.0);
         // Rudder aligned with the inflow: no force.
         let a = stern_inflow(10.0, -10.0 * libm::tan(0.1), 0.0, 75.0);
         assert!((a.sin - libm::sin(a.angle)).abs() < 1e-15 && (a.cos - libm::cos(a.angle)).abs() < 1e-15);

@@ -375,6 +375,24 @@ impl Scenario {
         v.finish()
     }
 
+    /// The ship's hull, resolved (`ship.hull`); the error names the field.
+    pub fn ship_hull(&self) -> Result<crate::ship_hull::ShipHull, String> {
+        self.ship.hull.resolve(self.ship.water_density_kg_m3).map_err(|(f, e)| format!("ship.hull.{f}: {e}"))
+    }
+
+    /// Puts the propeller hubs at calm-water depth `h0` [m] below this loading's waterline
+    /// (`ship.hull.hub_above_base_m` = draft - h0; ch. 5.3 and 5.4 vary h0).
+    pub fn set_hub_depth_m(&mut self, h0: f64) {
+        if let Ok(h) = self.ship_hull() {
+            self.ship.hull.hub_above_base_m = Some(h.draft_m - h0);
+        }
+    }
+
+    /// The RAO table of this scenario's hull, grid and strip-theory switches (built once, shared).
+    pub fn rao_table(&self) -> Result<std::sync::Arc<crate::seakeeping::tables::RaoTable>, String> {
+        crate::seakeeping::cache::rao_table(&self.ship_hull()?, &self.seakeeping.grid, &self.as_printed)
+    }
+
     /// The bus voltage set point the field control holds [V]: `controllers.field.bus_voltage_ref_v`,
     /// read as sqrt(3) times itself with `as_printed.ea_line_to_line` (eq. 2.8's E_a taken as the
     /// line-to-line emf puts the bus at sqrt(3) times the phase reading's voltage).
@@ -673,15 +691,15 @@ mod tests {
     #[test]
     fn out_of_range_names_field_value_and_range() {
         let mut s = Scenario::default();
-        s.ship.mass_kg = -5.0;
+        s.ship.wetted_area_m2 = -5.0;
         s.sim.dt_s = f64::NAN;
         let e = s.validate().unwrap_err();
         let paths: Vec<_> = e.0.iter().map(|f| f.path.as_str()).collect();
-        assert!(paths.contains(&"ship.mass_kg"));
+        assert!(paths.contains(&"ship.wetted_area_m2"));
         assert!(paths.contains(&"sim.dt_s"));
-        let m = e.0.iter().find(|f| f.path == "ship.mass_kg").unwrap();
+        let m = e.0.iter().find(|f| f.path == "ship.wetted_area_m2").unwrap();
         assert_eq!(m.value, "-5");
-        assert!(m.message.contains("10000") && m.message.contains("1000000000"), "{}", m.message);
+        assert!(m.message.contains("from 1 to 100000"), "{}", m.message);
     }
 
     #[test]
@@ -693,7 +711,7 @@ mod tests {
         assert_eq!(t.sim.duration_s, 12.5);
         assert!(s.with_override("sim.nope", "1").unwrap_err().0[0].path == "sim.nope");
         assert!(s.with_override("commands.7.speed_kn", "1").is_err());
-        assert!(s.with_override("ship.mass_kg", "abc").is_err());
+        assert!(s.with_override("ship.wetted_area_m2", "abc").is_err());
     }
 
     #[test]
@@ -716,8 +734,8 @@ mod tests {
         assert!(e.0.iter().any(|f| f.path == "sim.duration_s" && f.message.contains("2e9")), "{e}");
         let e = Scenario::from_json(r#"{"sim":{"duration_s":20000,"record_interval_s":0.01}}"#).unwrap_err();
         assert!(e.0.iter().any(|f| f.path == "sim.record_interval_s" && f.message.contains("1e7 values")), "{e}");
-        let e = Scenario::from_json(r#"{"ship":{"mass_kg":9e6,"mass_kg":9.1e6}}"#).unwrap_err();
-        assert!(e.to_string().contains("duplicate key ship.mass_kg"), "{e}");
+        let e = Scenario::from_json(r#"{"ship":{"wetted_area_m2":5e3,"wetted_area_m2":5.1e3}}"#).unwrap_err();
+        assert!(e.to_string().contains("duplicate key ship.wetted_area_m2"), "{e}");
         let e = Scenario::from_json(&format!("{{\"commands\":{}", "[".repeat(100))).unwrap_err();
         assert!(e.to_string().contains("nesting deeper than 32 levels at commands.0.0."), "{e}");
         // Parsing with the checks gives serde_json's own value.

@@ -85,11 +85,16 @@ macro_rules! for_each_signal {
             PMotorW, "p_motor_w", "W", "motor power", "Shaft power of the two motors (Table 5.6).", |r| r.p_motor;
             PShipW, "p_ship_w", "W", "ship power", "Resistance times speed, the useful power (Table 5.6).",
                 |r| r.p_ship();
-            WaveSternM, "wave_stern_m", "m", "wave at the stern", "Wave elevation at the propeller (eq. 2.56).",
+            WaveSternM, "wave_stern_m", "m", "wave at the stern", "Wave elevation at the port propeller (eq. 2.56).",
                 |r| r.sea.wave_stern;
-            HubDepthM, "hub_depth_m", "m", "hub depth", "Depth of the propeller hub below the local surface (eq. 2.57).",
-                |r| r.sea.hub;
-            HOverR, "h_over_r", "-", "h/R", "Hub depth over propeller radius (ch. 2.3).", |r| r.h_over_r;
+            HubDepthM, "hub_depth_m", "m", "hub depth", "Depth of the port propeller's hub below the local surface (eq. 2.57).",
+                |r| r.sea.hub[0];
+            HOverR, "h_over_r", "-", "h/R", "Hub depth over propeller radius, port shaft (ch. 2.3).", |r| r.h_over_r[0];
+            HubDepthStbdM, "hub_depth_stbd_m", "m", "hub depth, starboard",
+                "Depth of the starboard propeller's hub below the local surface (eq. 2.57 off the centreline).",
+                |r| r.sea.hub[1];
+            HOverRStbd, "h_over_r_stbd", "-", "h/R starboard", "Hub depth over propeller radius, starboard shaft (ch. 2.3).",
+                |r| r.h_over_r[1];
             HeaveM, "heave_m", "m", "heave", "Heave, up.", |r| r.sea.heave;
             PitchDeg, "pitch_deg", "deg", "pitch", "Pitch, bow down.", |r| r.rad_to_deg(r.sea.pitch);
             RollDeg, "roll_deg", "deg", "roll", "Roll, starboard down.", |r| r.rad_to_deg(r.sea.roll);
@@ -99,6 +104,8 @@ macro_rules! for_each_signal {
                 "Slowly varying second-order force backwards (eq. 2.60).", |r| r.added_resistance();
             DriftForceN, "drift_force_n", "N", "drift force",
                 "Slowly varying second-order force to starboard (eq. 2.60).", |r| r.drift_force();
+            DriftMomentNm, "drift_moment_nm", "N m", "drift moment",
+                "Slowly varying second-order yaw moment, bow to starboard (M_add of eq. 2.24).", |r| r.ctl.held.sea.wave_mz;
             FuelPowerW, "fuel_power_w", "W", "fuel power", "Fuel power of the four turbines (part-load curve).",
                 |r| r.fuel;
         }

@@ -342,7 +342,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     }
     let order = sc_brk.commands.get(1).map_or(0.0, |c| c.t_s);
     let u = sig(&brk, "ship_speed_kn");
-    let m = sc_brk.ship.mass_kg + sc_brk.ship.added_mass_kg;
+    let m = crate::sim::plant::Plant::new(&sc_brk)?.surge_mass;
     let ke = |kn: f64| 0.5 * m * (kn * crate::units::KNOT_M_S) * (kn * crate::units::KNOT_M_S);
     let dke = (ke(u.max) - ke(u.final_)) / 2.0 / 1e6;
     rows.push(open(
@@ -401,13 +401,13 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         "radius of the 360 deg turn",
         "ch. 5.3.2 text (\"approximately three ship lengths\")",
         3.0,
-        diameter / 2.0 / sc360.ship.length_m,
+        diameter / 2.0 / sc360.ship_hull()?.rigid_body(&sc360.as_printed).length_m,
         "L",
         "ours turns at the autopilot's rate limit (the Table 2.3 hull is unstable in tighter turns); the \
          thesis ramps to full rudder: under investigation",
     ));
     let mut hs = preset("head-seas-ss6").ok_or("no preset")?;
-    hs.seakeeping.hub_depth_m = 6.0;
+    hs.set_hub_depth_m(6.0);
     hs.seakeeping.stern_motion = SternMotion::ThesisEq257;
     let hs = run(&hs)?;
     let rpm = sig(&hs, "prop_rpm");
@@ -530,7 +530,7 @@ fn analytic(size: Size, st: &crate::RunResult) -> Result<Section, String> {
     ));
     let mut sc = preset("mc-arrival").ok_or("no preset")?;
     sc.seakeeping.stern_motion = SternMotion::Consistent;
-    sc.seakeeping.hub_depth_m = 4.0;
+    sc.set_hub_depth_m(4.0);
     let s = mc(&sc, size.trials)?;
     let rice = s.rice.as_ref().ok_or("no Rice summary")?;
     let a = &s.arrival_time_s;
@@ -566,7 +566,7 @@ fn as_printed() -> Result<Section, String> {
     // The ch. 5.3 run at the thesis' depth, corrected and with one switch as printed.
     let head_seas = |ap: AsPrintedParams, stern: SternMotion| -> Result<crate::RunResult, String> {
         let mut sc = preset("head-seas-ss6").ok_or("no preset")?;
-        sc.seakeeping.hub_depth_m = 6.0;
+        sc.set_hub_depth_m(6.0);
         sc.as_printed = ap;
         sc.seakeeping.stern_motion = stern;
         run(&sc)

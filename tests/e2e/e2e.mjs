@@ -86,7 +86,7 @@ for (const [name, hash, want] of [
   ['a link from a newer version', '#v=99&preset=startup', 'newer version'],
   ['a truncated link', '#v=1&preset=startup&d=eyJzaGlwIjp7Im1h', 'not valid JSON'],
   ['a hostile deeply nested link', '#v=1&preset=startup&d=' + Buffer.from('['.repeat(500)).toString('base64url'), 'nested too deeply'],
-  ['a link with out-of-range values', '#v=1&preset=startup&d=' + Buffer.from(JSON.stringify({ ship: { mass_kg: 1e300 } })).toString('base64url'), 'ship.mass_kg'],
+  ['a link with out-of-range values', '#v=1&preset=startup&d=' + Buffer.from(JSON.stringify({ ship: { wetted_area_m2: 1e300 } })).toString('base64url'), 'ship.wetted_area_m2'],
   ['a huge link', '#v=1&preset=startup&d=' + 'A'.repeat(20000), 'characters long'],
   ['a link with script text', '#v=1&preset=' + encodeURIComponent('<script>alert(1)</script>'), 'unknown study'],
 ]) {
@@ -119,14 +119,14 @@ await check('edits survive a reload', async () => {
 });
 await check('a bad value is marked at its field (aria-invalid) and Run waits for it', async () => {
   await setField(page, 'sim.duration_s', 60);
-  await setField(page, 'ship.mass_kg', -5);
-  await page.waitForFunction(() => document.getElementById('f-ship-mass_kg').getAttribute('aria-invalid') === 'true', null, { timeout: 10000 });
-  const err = await page.textContent('#f-ship-mass_kg-err');
+  await setField(page, 'ship.wetted_area_m2', -5);
+  await page.waitForFunction(() => document.getElementById('f-ship-wetted_area_m2').getAttribute('aria-invalid') === 'true', null, { timeout: 10000 });
+  const err = await page.textContent('#f-ship-wetted_area_m2-err');
   assert(err.includes('from'), `field error: ${err}`);
   assert(await page.$eval('#run', (b) => b.disabled), 'Run is enabled while a field is invalid');
-  const desc = await page.getAttribute('#f-ship-mass_kg', 'aria-describedby');
-  assert(desc.includes('f-ship-mass_kg-err'), `aria-describedby: ${desc}`);
-  await setField(page, 'ship.mass_kg', 7e6);
+  const desc = await page.getAttribute('#f-ship-wetted_area_m2', 'aria-describedby');
+  assert(desc.includes('f-ship-wetted_area_m2-err'), `aria-describedby: ${desc}`);
+  await setField(page, 'ship.wetted_area_m2', 5200);
   await page.waitForFunction(() => !document.getElementById('run').disabled, null, { timeout: 10000 });
 });
 await check('maneuvering study draws the track', async () => {

@@ -41,7 +41,8 @@ pub fn signal_meta() -> String {
 #[wasm_bindgen(js_name = pageConstants)]
 pub fn page_constants(json: &str) -> Result<String, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    serde_json::to_string(&aes_core::presentation::PageConstants::of(&sc)).map_err(|e| JsError::new(&e.to_string()))
+    let c = aes_core::presentation::PageConstants::of(&sc).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&c).map_err(|e| JsError::new(&e.to_string()))
 }
 
 /// The signal of a column name, or an error naming it (cut to 40 characters).
@@ -285,8 +286,7 @@ pub fn mc_summary(partials: Vec<js_sys::Uint8Array>) -> Result<String, JsError> 
 #[wasm_bindgen(js_name = raoTableValues)]
 pub fn rao_table_values(json: &str) -> Result<Vec<f64>, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    let t =
-        aes_core::seakeeping::cache::rao_table_as(&sc.seakeeping.grid, &sc.as_printed).map_err(|e| JsError::new(&e))?;
+    let t = sc.rao_table().map_err(|e| JsError::new(&e))?;
     Ok(t.values())
 }
 
@@ -294,17 +294,25 @@ pub fn rao_table_values(json: &str) -> Result<Vec<f64>, JsError> {
 #[wasm_bindgen(js_name = raoTableLoad)]
 pub fn rao_table_load(json: &str, values: &[f64]) -> Result<(), JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    aes_core::seakeeping::cache::insert_rao_table_as(&sc.seakeeping.grid, &sc.as_printed, values)
+    let hull = sc.ship_hull().map_err(|e| JsError::new(&e))?;
+    aes_core::seakeeping::cache::insert_rao_table(&hull, &sc.seakeeping.grid, &sc.as_printed, values)
         .map_err(|e| JsError::new(&e))
 }
 
-/// Heave and pitch RAOs of the DTMB 5415 (`aes-sim rao`'s JSON) at `speed_kn` and `heading_deg`
-/// over `omegas` [rad/s].
+/// RAOs of a scenario's hull (`aes-sim rao`'s JSON) at `speed_kn` and `heading_deg` over
+/// `omegas` [rad/s].
 #[wasm_bindgen(js_name = raoJson)]
-pub fn rao_json(speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -> Result<String, JsError> {
-    let ship = aes_core::seakeeping::cache::dtmb5415();
+pub fn rao_json(json: &str, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -> Result<String, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    if omegas.is_empty() || omegas.len() > 400 || omegas.iter().any(|w| !(w.is_finite() && (0.05..=10.0).contains(w))) {
+        return Err(JsError::new("RAOs: 1 to 400 frequencies from 0.05 to 10 rad/s"));
+    }
+    if !(speed_kn.is_finite() && (0.0..=40.0).contains(&speed_kn) && heading_deg.is_finite()) {
+        return Err(JsError::new("RAOs: speed 0 to 40 kn and a finite heading"));
+    }
+    let ship = sc.ship_hull().and_then(|h| h.strip_ship()).map_err(|e| JsError::new(&e))?;
     let v = aes_core::seakeeping::tables::rao_json(
-        ship,
+        &ship,
         speed_kn * aes_core::units::KNOT_M_S,
         heading_deg.to_radians(),
         &omegas,
@@ -330,7 +338,23 @@ pub fn fuel_study(json: &str, omegas: Vec<f64>) -> Result<String, JsError> {
 #[wasm_bindgen(js_name = hullProfile)]
 pub fn hull_profile(json: &str) -> Result<String, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    serde_json::to_string(&aes_core::presentation::HullProfile::of(&sc)).map_err(|e| JsError::new(&e.to_string()))
+    let p = aes_core::presentation::HullProfile::of(&sc).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The hull panel of a scenario's hull as JSON: body plan (every station's offsets), profile,
+/// appendages and hydrostatics at its loading (`presentation::HullSheet`).
+#[wasm_bindgen(js_name = hullSheet)]
+pub fn hull_sheet(json: &str) -> Result<String, JsError> {
+    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    let p = aes_core::presentation::HullSheet::of(&sc).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The embedded hulls' names, then "custom" (offsets of one's own).
+#[wasm_bindgen(js_name = hullNames)]
+pub fn hull_names() -> Vec<String> {
+    aes_core::ship_hull::HULL_NAMES.iter().map(|s| s.to_string()).collect()
 }
 
 /// A run's sea surface for pictures: the same seeded wave components the run sails in

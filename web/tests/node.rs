@@ -17,11 +17,11 @@ fn presets_are_listed_and_valid() {
 
 #[wasm_bindgen_test]
 fn bad_scenario_names_the_field() {
-    let errs = validate_scenario(r#"{"ship": {"mass_kg": -1}}"#).unwrap();
+    let errs = validate_scenario(r#"{"ship": {"wetted_area_m2": -1}}"#).unwrap();
     let arr = js_sys::Array::from(&errs);
     assert_eq!(arr.length(), 1);
     let path = js_sys::Reflect::get(&arr.get(0), &"path".into()).unwrap();
-    assert_eq!(path.as_string().unwrap(), "ship.mass_kg");
+    assert_eq!(path.as_string().unwrap(), "ship.wetted_area_m2");
 }
 
 /// A 60 s start-up in wasm, in chunks, gives the same summary as in one go, and moves the ship.
@@ -173,9 +173,9 @@ fn extreme_inputs_end_with_named_errors() {
     assert!(message(Run::new(big).err().unwrap()).contains("sim.record_interval_s"));
     let long = r#"{"sim": {"duration_s": 1000000, "dt_s": 0.001}}"#;
     assert!(message(Run::new(long).err().unwrap()).contains("sim.duration_s"));
-    let errs = js_sys::Array::from(&validate_scenario(r#"{"ship": {"mass_kg": 7e6, "mass_kg": 8e6}}"#).unwrap());
+    let errs = js_sys::Array::from(&validate_scenario(r#"{"ship": {"wetted_area_m2": 7e3, "wetted_area_m2": 8e3}}"#).unwrap());
     let msg = js_sys::Reflect::get(&errs.get(0), &"message".into()).unwrap().as_string().unwrap();
-    assert!(msg.contains("duplicate key ship.mass_kg"), "{msg}");
+    assert!(msg.contains("duplicate key ship.wetted_area_m2"), "{msg}");
     // A partial with a reversed range is refused by mcSummary.
     let mut sc: serde_json::Value = serde_json::from_str(&preset_json("mc-arrival").unwrap()).unwrap();
     sc["sim"]["duration_s"] = serde_json::json!(2.0);

@@ -6,7 +6,6 @@
 // [path, label, unit, help, choices?]. The form adds the preset's value to each help line.
 export const FIELDS = [
   ['Ship and hull', [
-    ['ship.mass_kg', 'Displaced mass', 'kg', 'Table 5.1.'],
     ['ship.wetted_area_m2', 'Wetted area', 'm²', 'Table 5.1.'],
     ['ship.drag_coeff', 'Drag coefficient C_r', '-', 'Eq. 2.15, Table 5.1.'],
     ['ship.wake_fraction', 'Wake fraction w', '-', 'Eq. 2.12, Table 5.1.'],

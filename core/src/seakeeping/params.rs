@@ -7,18 +7,13 @@ use crate::validate::Validator;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
 
-/// Ship motions in waves and propeller surface losses (ch. 2.3, 2.5.4). The seakeeping hull is the
-/// DTMB 5415 at 6.15 m draft (`aes-sim rao` takes other hulls).
+/// Ship motions in waves and propeller surface losses (ch. 2.3, 2.5.4). The hull, its loading and
+/// the propellers' place are the ship's (`ship.hull`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct SeakeepingParams {
     /// The RAO table's grid.
     pub grid: crate::seakeeping::tables::SeakeepingGrid,
-    /// Calm-water depth of the propeller hub below the surface, h0 [m] (ch. 5.3: 6.0).
-    pub hub_depth_m: f64,
-    /// Propellers' distance aft of the centre of gravity [m]: the 5415's LCG is 70.3 m forward of
-    /// the aft perpendicular and a destroyer's propellers sit about 0.06 L forward of it, so 62 m.
-    pub prop_x_aft_m: f64,
     /// Ventilation starts below this h/R and ends above `ventilation_off_h_over_r` (ch. 2.3; see
     /// `propeller_losses` for why 1.1 starts and 1.3 ends the loop).
     pub ventilation_on_h_over_r: f64,
@@ -51,8 +46,6 @@ impl Default for SeakeepingParams {
         let losses = LossParams::default();
         SeakeepingParams {
             grid: Default::default(),
-            hub_depth_m: 6.0,
-            prop_x_aft_m: 62.0,
             ventilation_on_h_over_r: losses.ventilation_on,
             ventilation_off_h_over_r: losses.ventilation_off,
             ventilation_loss: losses.ventilation_loss,
@@ -82,28 +75,44 @@ pub enum SternMotion {
     ThesisEq257,
 }
 
-impl SternMotion {
-    /// Eq. 2.57 in the frequency domain: the hub depth's transfer function per unit wave
-    /// amplitude, from the wave at the stern `stern`, heave `heave` [m/m] and pitch `pitch`
-    /// [rad/m] (STF: bow down) with the propeller `x_p` [m] aft of the centre of gravity. The
-    /// simulator's seaway and the Rice prediction of the Monte Carlo studies both use this one.
-    pub fn hub_transfer(self, stern: C, heave: C, pitch: C, x_p: f64) -> C {
-        match self {
-            // The stern rises by eta3 + x_p eta5, so the hub's depth is h0 + eta_s - eta3 - x_p eta5
-            // (a hull following long waves keeps its depth).
-            SternMotion::Consistent => stern - heave - pitch * x_p,
-            // Eq. 2.57 as printed: + x_p eta5.
-            SternMotion::ThesisEq257 => stern - heave + pitch * x_p,
-        }
-    }
+/// Where a propeller hub is: `x_aft` [m] aft of the centre of gravity, `y` [m] to port of the
+/// centreline (STF axes).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HubPlace {
+    pub x_aft: f64,
+    pub y: f64,
 }
 
-/// The wave at a point `x_p` [m] aft of the centre of gravity per unit wave at the centre, for
-/// wave number `k` [1/m] and heading beta given by its cosine `cos_beta` (STF: 180 deg head
-/// seas): its phase leads by k x_p cos(beta).
-pub fn stern_wave(k: f64, x_p: f64, cos_beta: f64) -> C {
-    let ph = k * x_p * cos_beta;
-    C::new(libm::cos(ph), libm::sin(ph))
+impl SternMotion {
+    /// Eq. 2.57 in the frequency domain, generalised to a hub off the centreline: the hub depth's
+    /// transfer function per unit wave amplitude, from the wave at the hub `wave` (`hub_wave`),
+    /// heave `heave` [m/m], roll `roll` (STF: port side up) and pitch `pitch` [rad/m] (STF: bow
+    /// down). The simulator's seaway and the Rice prediction of the Monte Carlo studies both use
+    /// this one.
+    pub fn hub_transfer(self, wave: C, heave: C, roll: C, pitch: C, at: HubPlace) -> C {
+        match self {
+            // The hub rises by eta3 + y eta4 + x_p eta5 (small rotations about G), so its depth is
+            // h0 + eta_s - eta3 - y eta4 - x_p eta5: a hull following long waves keeps its depth,
+            // and in oblique seas the two shafts of a twin-screw ship differ by 2 y eta4 and by
+            // the wave's phase across the beam.
+            SternMotion::Consistent => wave - heave - roll * at.y - pitch * at.x_aft,
+            // Eq. 2.57 as printed, on the centreline: + x_p eta5 and no roll.
+            SternMotion::ThesisEq257 => wave - heave + pitch * at.x_aft,
+        }
+    }
+
+    /// The wave at the hub per unit wave at the centre of gravity, for wave number `k` [1/m] and
+    /// heading beta given by its cosine and sine (STF: 180 deg head seas, 90 deg waves from
+    /// starboard): the phase leads by k (x_p cos beta - y sin beta). Eq. 2.57 as printed takes the
+    /// wave on the centreline.
+    pub fn hub_wave(self, k: f64, at: HubPlace, cos_beta: f64, sin_beta: f64) -> C {
+        let y = match self {
+            SternMotion::Consistent => at.y,
+            SternMotion::ThesisEq257 => 0.0,
+        };
+        let ph = k * (at.x_aft * cos_beta - y * sin_beta);
+        C::new(libm::cos(ph), libm::sin(ph))
+    }
 }
 
 impl SeakeepingParams {
@@ -127,8 +136,6 @@ impl SeakeepingParams {
             let field = path.strip_prefix("seakeeping.").unwrap_or(path);
             v.fail(field, value, msg);
         }
-        check_range!(v, self.hub_depth_m, 0.0, 50.0);
-        check_range!(v, self.prop_x_aft_m, 0.0, 300.0);
         check_range!(v, self.ventilation_on_h_over_r, -1.0, 5.0);
         check_range!(v, self.ventilation_off_h_over_r, self.ventilation_on_h_over_r, 5.0);
         check_range!(v, self.ventilation_loss, 0.0, 1.0);

@@ -181,8 +181,10 @@ pub struct Simulation {
     refresh_every: u64,
     vent: [Ventilation; N_SHAFTS],
     losses: LossParams,
-    /// Hub depth over the propeller radius now [-].
-    h_over_r: f64,
+    /// Calm-water hub depth [m] (the hull's) and each shaft's hub depth over the propeller
+    /// radius now [-].
+    hub0: f64,
+    h_over_r: [f64; N_SHAFTS],
     fuel_curve: Vec<(f64, f64)>,
     fuel_extrapolated: bool,
     /// Time of the first surface effect (beta_T < 1 on either shaft) [s].
@@ -200,6 +202,7 @@ impl Simulation {
     pub fn with_extra_resistance(scenario: &Scenario, extra: f64) -> Result<Simulation, SimError> {
         scenario.validate().map_err(|e| SimError::Setup(e.to_string()))?;
         let mut plant = Plant::new(scenario).map_err(SimError::Setup)?;
+        let hub0 = scenario.ship_hull().map_err(SimError::Setup)?.hub_depth_m;
         plant.extra_resistance = extra;
         let sim_cfg = &scenario.sim;
         let dt = sim_cfg.dt_s;
@@ -263,7 +266,8 @@ impl Simulation {
             refresh_every: (scenario.seakeeping.rao_refresh_s / dt).round().max(1.0) as u64,
             vent: [Ventilation::default(); N_SHAFTS],
             losses: scenario.seakeeping.loss_params(),
-            h_over_r: 2.0 * scenario.seakeeping.hub_depth_m / scenario.propeller.diameter_m,
+            hub0,
+            h_over_r: [2.0 * hub0 / scenario.propeller.diameter_m; N_SHAFTS],
             fuel_curve: crate::fuel::part_load_curve(),
             fuel_extrapolated: false,
             first_event: None,
@@ -341,7 +345,7 @@ impl Simulation {
 
     /// Fastest turn the autopilot orders at the present speed [rad/s].
     fn max_turn_rate(&self) -> f64 {
-        let l = self.scenario.ship.length_m;
+        let l = self.plant.hull_length;
         self.scenario.controllers.autopilot.max_turn_rate_nondim * speed_through_water(&self.x).max(1.0) / l
     }
 
@@ -481,7 +485,7 @@ impl Simulation {
                 l.hub = l.hub_at(self.t);
                 l
             }
-            None => seaway::SeaSample { hub: self.scenario.seakeeping.hub_depth_m, ..Default::default() },
+            None => seaway::SeaSample::calm(self.hub0),
         };
         let mut fuel = 0.0;
         let eta = self.scenario.seakeeping.turbine_rated_efficiency;
@@ -549,14 +553,16 @@ impl Simulation {
             let s = sea.sample(self.t, x[X_POS], x[Y_POS], xd, yd);
             self.ctl.held.sea.wave_fx = s.fx;
             self.ctl.held.sea.wave_fy = s.fy;
+            self.ctl.held.sea.wave_mz = s.mz;
         }
         let hub = sea.last.hub_at(self.t + 0.5 * self.dt);
-        let h_r = hub / (0.5 * self.plant.prop_diameter);
-        self.h_over_r = h_r;
+        let radius = 0.5 * self.plant.prop_diameter;
+        self.h_over_r = hub.map(|h| h / radius);
         if !self.scenario.seakeeping.surface_losses {
             return;
         }
         for s in 0..N_SHAFTS {
+            let h_r = self.h_over_r[s];
             let n_hz = x[omega_rm(s)] / (2.0 * PI);
             let tv = self.vent[s].step(&self.losses, h_r, n_hz, self.dt);
             let (bt, bq) = loss_factors(&self.losses, h_r, tv);

@@ -124,12 +124,14 @@ pub struct SeaInputs {
     /// Slowly varying second-order wave force, ship axes: forward and to starboard [N] (eq. 2.60).
     pub wave_fx: f64,
     pub wave_fy: f64,
+    /// Slowly varying second-order yaw moment, bow to starboard [N m] (M_add, eq. 2.24).
+    pub wave_mz: f64,
 }
 
 impl Default for SeaInputs {
     /// Calm water: no losses, no force.
     fn default() -> Self {
-        SeaInputs { beta_t: [1.0; N_SHAFTS], beta_q: [1.0; N_SHAFTS], wave_fx: 0.0, wave_fy: 0.0 }
+        SeaInputs { beta_t: [1.0; N_SHAFTS], beta_q: [1.0; N_SHAFTS], wave_fx: 0.0, wave_fy: 0.0, wave_mz: 0.0 }
     }
 }
 
@@ -175,7 +177,8 @@ pub enum Hull {
     /// Eqs. 2.15-2.16.
     Surge,
     /// Eqs. 2.17-2.30, handing over to the surge model in surge between `lo` and `hi` [m/s].
-    Maneuvering { abkowitz: Box<Abkowitz>, rudder: RudderParams, lo: f64, hi: f64 },
+    /// The rudder stands `x_p` [m] aft of the centre of gravity (the hull's, `ship.hull`).
+    Maneuvering { abkowitz: Box<Abkowitz>, rudder: RudderParams, x_p: f64, lo: f64, hi: f64 },
 }
 
 /// Model constants of the whole drive train.
@@ -192,6 +195,8 @@ pub struct Plant {
     pub hull: Hull,
     /// Surge mass used by the equations of motion [kg].
     pub surge_mass: f64,
+    /// The ship's length L of the maneuvering prime system [m].
+    pub hull_length: f64,
     /// Reversible rectifiers (power may flow back into the generators).
     pub reversible: bool,
     /// Brake resistor [ohm] (0: none) and the bus voltages where its chopper starts and saturates [V].
@@ -220,7 +225,9 @@ impl Plant {
         }
         let g = &sc.plant.generator;
         let dc_link = DcLink::new(&sc.plant.dc_link, g.stator_resistance_ohm, g.stator_inductance_h);
-        let surge = Surge::new(&sc.ship);
+        // The hull's length, mass and rudder lever (or Tables 5.1/5.5's, as_printed.table_5_ship).
+        let body = sc.ship_hull()?.rigid_body(&sc.as_printed);
+        let surge = Surge::new(&sc.ship, body.mass_kg);
         let hull = match sc.hull.model {
             HullModelKind::Surge => Hull::Surge,
             HullModelKind::Maneuvering => Hull::Maneuvering {
@@ -228,10 +235,11 @@ impl Plant {
                     &sc.hull.abkowitz,
                     sc.hull.symmetric_hull,
                     kn_to_m_s(sc.hull.linearization_speed_kn),
-                    sc.ship.length_m,
+                    body.length_m,
                     sc.ship.water_density_kg_m3,
                 )),
                 rudder: sc.rudder.clone(),
+                x_p: body.rudder_x_aft_m,
                 lo: kn_to_m_s(sc.hull.handover_low_kn),
                 hi: kn_to_m_s(sc.hull.handover_high_kn),
             },
@@ -254,6 +262,7 @@ impl Plant {
             surge,
             hull,
             surge_mass,
+            hull_length: body.length_m,
             reversible: sc.plant.dc_link.rectifier == RectifierKind::Reversible,
             brake_resistor: sc.plant.dc_link.brake_resistor_ohm,
             brake_on_v: sc.plant.dc_link.brake_on_pu * v_ref,
@@ -356,7 +365,8 @@ impl Plant {
         // Inflow at the stern (eqs. 2.26-2.27); the surge model goes straight.
         let inflow = match &self.hull {
             Hull::Surge => Inflow { speed: u, angle: 0.0, sin: 0.0, cos: 1.0 },
-            Hull::Maneuvering { rudder, .. } => stern_inflow(u, v, r, rudder.x_p_m),
+            // One x_p for the rudder and the propellers' inflow, as eqs. 2.26-2.27.
+            Hull::Maneuvering { x_p, .. } => stern_inflow(u, v, r, *x_p),
         };
         let va = inflow.speed;
         let mut thrust = 0.0;
@@ -422,7 +432,7 @@ impl Plant {
                 dx[YAW_RATE] = 0.0;
                 self.surge.resistance(u) - h.sea.wave_fx + self.extra_resistance
             }
-            Hull::Maneuvering { abkowitz, rudder, lo, hi } => {
+            Hull::Maneuvering { abkowitz, rudder, x_p, lo, hi } => {
                 let f = abkowitz.forces(u, v, r); // eqs. 2.22-2.24, hull terms
                 let (fx_r, fy_r) = rudder_force(rudder, self.rho, &inflow, h.rudder); // eqs. 2.28-2.30
                                                                                       // Surge hands over smoothly from the surge model (low speed) to Abkowitz (near u0).
@@ -432,7 +442,7 @@ impl Plant {
                 // resistance is booked with the ship's resistance in the energy accounts.
                 let x_hull = x_hull - self.extra_resistance;
                 dx[SURGE] = (thrust + x_hull + fx_r + h.sea.wave_fx) / self.surge_mass; // eq. 2.20, first row
-                let (vd, rd) = abkowitz.sway_yaw_acceleration(f.y + fy_r + h.sea.wave_fy, f.n - rudder.x_p_m * fy_r);
+                let (vd, rd) = abkowitz.sway_yaw_acceleration(f.y + fy_r + h.sea.wave_fy, f.n - x_p * fy_r + h.sea.wave_mz); // eq. 2.24: - x_p F_y + M_add
                 dx[SWAY] = vd;
                 dx[YAW_RATE] = rd;
                 -(x_hull + fx_r + h.sea.wave_fx)

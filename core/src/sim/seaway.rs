@@ -22,8 +22,8 @@
 
 use crate::interp::bracket;
 use crate::scenario::{Scenario, SeaKind};
-use crate::seakeeping::cache::rao_table_as;
-use crate::seakeeping::params::{stern_wave, SternMotion};
+use crate::seakeeping::params::{HubPlace, SternMotion};
+use crate::ship_hull::N_SHAFTS;
 use crate::waves::{newman_force, newman_sign, newman_weight, SeaSampling, WaveComponent, G};
 use num_complex::Complex64 as C;
 use std::f64::consts::PI;
@@ -60,23 +60,24 @@ pub fn wave_components(sc: &Scenario) -> Vec<WaveComponent> {
 }
 
 /// One component with its RAO slice at its own frequency: [speed][heading] of
-/// (heave, pitch, roll, sway, yaw; F_add).
+/// (heave, pitch, roll, sway, yaw; F_add; M_add in STF axes, waves from starboard).
 struct Component {
     wave: WaveComponent,
     cos_mu: f64,
     sin_mu: f64,
-    slice: Vec<([C; 5], f64)>,
+    slice: Vec<([C; 5], f64, f64)>,
 }
 
 /// What one sample gives.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct SeaSample {
     pub t: f64,
-    /// Hub depth below the surface [m] and its first two time derivatives.
-    pub hub: f64,
-    pub hub_rate: f64,
-    pub hub_accel: f64,
-    /// Wave elevation at the stern [m].
+    /// Each shaft's hub depth below the surface [m] and its first two time derivatives (port,
+    /// starboard).
+    pub hub: [f64; N_SHAFTS],
+    pub hub_rate: [f64; N_SHAFTS],
+    pub hub_accel: [f64; N_SHAFTS],
+    /// Wave elevation at the port propeller [m].
     pub wave_stern: f64,
     /// Heave [m, up], pitch [rad, bow down], roll [rad, starboard down], sway [m, to starboard],
     /// yaw [rad, bow to starboard]: the first-order motions about the maneuvering track.
@@ -85,16 +86,23 @@ pub struct SeaSample {
     pub roll: f64,
     pub sway: f64,
     pub yaw: f64,
-    /// Slowly varying second-order force in ship axes [N]: forward and to starboard.
+    /// Slowly varying second-order force in ship axes [N]: forward and to starboard; and yaw
+    /// moment [N m], bow to starboard (M_add of eqs. 2.19, 2.24).
     pub fx: f64,
     pub fy: f64,
+    pub mz: f64,
 }
 
 impl SeaSample {
-    /// Hub depth at time `t` by the Taylor series about the sample.
-    pub fn hub_at(&self, t: f64) -> f64 {
+    /// A calm sea with the hubs at depth `h0` [m].
+    pub fn calm(h0: f64) -> SeaSample {
+        SeaSample { hub: [h0; N_SHAFTS], ..Default::default() }
+    }
+
+    /// Hub depths at time `t` by the Taylor series about the sample.
+    pub fn hub_at(&self, t: f64) -> [f64; N_SHAFTS] {
         let d = t - self.t;
-        self.hub + d * (self.hub_rate + 0.5 * d * self.hub_accel)
+        std::array::from_fn(|s| self.hub[s] + d * (self.hub_rate[s] + 0.5 * d * self.hub_accel[s]))
     }
 }
 
@@ -104,7 +112,7 @@ pub struct Seaway {
     speeds: Vec<f64>,
     headings: Vec<f64>,
     hub0: f64,
-    x_p: f64,
+    hubs: [HubPlace; N_SHAFTS],
     second_order: bool,
     /// How the stern motion enters the hub depth (eq. 2.57).
     stern_motion: SternMotion,
@@ -115,14 +123,17 @@ pub struct Seaway {
     extra_rate: Vec<f64>,
     extra_phase: Vec<f64>,
     extra_t: Option<f64>,
-    /// Per component, refreshed: hub transfer, heave, pitch, roll, stern factor, sway, yaw (the
-    /// lateral modes signed for the side the waves come from and turned to starboard-positive
-    /// axes); Newman weights for x and y with their signs.
-    h: Vec<[C; 7]>,
+    /// Per component, refreshed: the port hub's transfer, heave, pitch, roll, the wave at the
+    /// port hub, sway, yaw (the lateral modes signed for the side the waves come from and turned
+    /// to starboard-positive axes), the starboard hub's transfer; Newman weights for x and y
+    /// with their signs.
+    h: Vec<[C; 8]>,
     wx: Vec<f64>,
     wy: Vec<f64>,
+    wz: Vec<f64>,
     sign_x: f64,
     sign_y: f64,
+    sign_z: f64,
     /// Phasor (cos theta, sin theta) of every component at the last sample, the time and place
     /// of that sample, and the samples since the last exact one.
     phasor: Vec<(f64, f64)>,
@@ -179,7 +190,8 @@ impl Seaway {
         }
         let waves = wave_components(sc);
         let k = &sc.seakeeping;
-        let table = rao_table_as(&k.grid, &sc.as_printed)?;
+        let hull = sc.ship_hull()?;
+        let table = sc.rao_table()?;
         let (speeds, headings) = (k.grid.speeds(), k.grid.headings());
         let comps = waves
             .into_iter()
@@ -190,7 +202,7 @@ impl Seaway {
                         let r = table.interpolate(w.omega, u, b);
                         // F_add along the waves' travel = fx cos b + fy sin b of the table.
                         let fadd = r.fx * libm::cos(b) + r.fy * libm::sin(b);
-                        slice.push(([r.heave, r.pitch, r.roll, r.sway, r.yaw], fadd));
+                        slice.push(([r.heave, r.pitch, r.roll, r.sway, r.yaw], fadd, r.mz));
                     }
                 }
                 Component { cos_mu: libm::cos(w.direction), sin_mu: libm::sin(w.direction), wave: w, slice }
@@ -201,23 +213,25 @@ impl Seaway {
             comps,
             speeds,
             headings,
-            hub0: k.hub_depth_m,
-            x_p: k.prop_x_aft_m,
+            hub0: hull.hub_depth_m,
+            hubs: std::array::from_fn(|s| HubPlace { x_aft: hull.prop_x_aft_m, y: hull.shaft_y_m[s] }),
             second_order: k.second_order_forces,
             stern_motion: k.stern_motion,
             doppler_twice: sc.as_printed.doppler_twice,
             extra_rate: vec![0.0; n],
             extra_phase: vec![0.0; n],
             extra_t: None,
-            h: vec![[C::new(0.0, 0.0); 7]; n],
+            h: vec![[C::new(0.0, 0.0); 8]; n],
             wx: vec![0.0; n],
             wy: vec![0.0; n],
+            wz: vec![0.0; n],
             sign_x: 1.0,
             sign_y: 1.0,
+            sign_z: 1.0,
             phasor: vec![(1.0, 0.0); n],
             at: None,
             since_sync: 0,
-            last: SeaSample { hub: k.hub_depth_m, ..Default::default() },
+            last: SeaSample::calm(hull.hub_depth_m),
         }))
     }
 
@@ -230,7 +244,7 @@ impl Seaway {
     pub fn refresh(&mut self, u: f64, psi: f64) {
         let (j0, fj) = bracket(&self.speeds, u);
         let nh = self.headings.len();
-        let (mut sx, mut sy) = (0.0, 0.0);
+        let (mut sx, mut sy, mut sz) = (0.0, 0.0, 0.0);
         // cos and sin of beta = psi - mu by the difference formulas: two libm calls per refresh
         // instead of three per component.
         let (sp, cp) = (libm::sin(psi), libm::cos(psi));
@@ -243,7 +257,7 @@ impl Seaway {
             let sin_beta = sp * c.cos_mu - cp * c.sin_mu;
             let (k0, fk) = bracket(&self.headings, bf);
             let mut acc = [C::new(0.0, 0.0); 5];
-            let mut fadd = 0.0;
+            let (mut fadd, mut madd) = (0.0, 0.0);
             for (dj, wj) in [(0, 1.0 - fj), (1, fj)] {
                 for (dk, wk) in [(0, 1.0 - fk), (1, fk)] {
                     let w = wj * wk;
@@ -252,11 +266,12 @@ impl Seaway {
                     }
                     let j = (j0 + dj).min(self.speeds.len() - 1);
                     let k = (k0 + dk).min(nh - 1);
-                    let (h, f) = &c.slice[j * nh + k];
+                    let (h, f, m) = &c.slice[j * nh + k];
                     for (a, v) in acc.iter_mut().zip(h) {
                         *a += v * w;
                     }
                     fadd += w * f;
+                    madd += w * m;
                 }
             }
             let (h3, h5, h4) = (acc[0], acc[1], acc[2] * side);
@@ -265,32 +280,42 @@ impl Seaway {
                 // seas, where cos_beta = -1), which eqs. 2.55/2.59 put in front of t.
                 self.extra_rate[i] = (c.wave.omega - c.wave.k * u * cos_beta).abs() - c.wave.omega;
             }
-            let stern = stern_wave(c.wave.k, self.x_p, cos_beta);
-            let hub = self.stern_motion.hub_transfer(stern, h3, h5, self.x_p);
+            let m = self.stern_motion;
+            let hub = |p: HubPlace| {
+                let wave = m.hub_wave(c.wave.k, p, cos_beta, sin_beta);
+                (m.hub_transfer(wave, h3, h4, h5, p), wave)
+            };
+            let ((port, wave), (stbd, _)) = (hub(self.hubs[0]), hub(self.hubs[1]));
             // STF's sway is to port and its yaw bow to port: both flip for starboard-positive axes.
-            self.h[i] = [hub, h3, h5, h4, stern, -acc[3] * side, -acc[4] * side];
+            self.h[i] = [port, h3, h5, h4, wave, -acc[3] * side, -acc[4] * side, stbd];
             // Mean force components per amplitude squared, ship axes (x forward, y starboard):
             // STF's y is to port.
             let a2 = c.wave.amplitude * c.wave.amplitude;
             self.wx[i] = cos_beta * fadd;
             self.wy[i] = -sin_beta * fadd;
+            // STF's moment is bow to port for waves from starboard: mirrored for waves from port,
+            // and turned to the bow-to-starboard sense of the maneuvering equations.
+            self.wz[i] = -side * madd;
             sx += a2 * self.wx[i];
             sy += a2 * self.wy[i];
+            sz += a2 * self.wz[i];
         }
         // Newman: one sign per direction for the whole set (the components' own signs agree for a
         // sea from one side; where they do not, the weaker side is dropped).
         self.sign_x = newman_sign(sx);
         self.sign_y = newman_sign(sy);
+        self.sign_z = newman_sign(sz);
         for (i, c) in self.comps.iter().enumerate() {
             self.wx[i] = newman_weight(c.wave.amplitude, self.wx[i], self.sign_x);
             self.wy[i] = newman_weight(c.wave.amplitude, self.wy[i], self.sign_y);
+            self.wz[i] = newman_weight(c.wave.amplitude, self.wz[i], self.sign_z);
         }
     }
 
     /// Sums the components at time `t` [s] with the ship at (x, y) [m] moving at (xd, yd) [m/s].
     pub fn sample(&mut self, t: f64, x: f64, y: f64, xd: f64, yd: f64) -> SeaSample {
-        let mut s = SeaSample { t, hub: self.hub0, ..Default::default() };
-        let (mut cx, mut sx, mut cy, mut sy) = (0.0, 0.0, 0.0, 0.0);
+        let mut s = SeaSample { t, ..SeaSample::calm(self.hub0) };
+        let (mut cx, mut sx, mut cy, mut sy, mut cz, mut sz) = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
         // Since the last sample (None: compute every phasor afresh).
         let step = match self.at {
             Some((t0, x0, y0)) if self.since_sync < RESYNC_SAMPLES => Some((t - t0, x - x0, y - y0)),
@@ -301,8 +326,9 @@ impl Seaway {
         let (dt, dx, dy) = step.unwrap_or((0.0, 0.0, 0.0));
         let dt_extra = t - self.extra_t.unwrap_or(t);
         self.extra_t = Some(t);
-        let parts = self.comps.iter().zip(&self.h).zip(self.wx.iter().zip(&self.wy)).zip(self.phasor.iter_mut());
-        for (i, (((c, h), (&wx, &wy)), phasor)) in parts.enumerate() {
+        let weights = self.wx.iter().zip(&self.wy).zip(&self.wz);
+        let parts = self.comps.iter().zip(&self.h).zip(weights).zip(self.phasor.iter_mut());
+        for (i, (((c, h), ((&wx, &wy), &wz)), phasor)) in parts.enumerate() {
             let w = &c.wave;
             let mut rate = w.omega - w.k * (xd * c.cos_mu + yd * c.sin_mu);
             let mut d = w.omega * dt - w.k * (dx * c.cos_mu + dy * c.sin_mu);
@@ -328,10 +354,12 @@ impl Seaway {
             // Re{H e^{i theta}} and its time derivatives.
             let re = |z: C| z.re * cs - z.im * sn;
             let im = |z: C| z.re * sn + z.im * cs;
-            let hub = re(h[0]);
-            s.hub += a * hub;
-            s.hub_rate -= a * rate * im(h[0]);
-            s.hub_accel -= a * rate * rate * hub;
+            for (sh, hh) in [(0, h[0]), (1, h[7])] {
+                let hub = re(hh);
+                s.hub[sh] += a * hub;
+                s.hub_rate[sh] -= a * rate * im(hh);
+                s.hub_accel[sh] -= a * rate * rate * hub;
+            }
             s.heave += a * re(h[1]);
             s.pitch += a * re(h[2]);
             s.roll += a * re(h[3]);
@@ -342,10 +370,13 @@ impl Seaway {
             sx += wx * sn;
             cy += wy * cs;
             sy += wy * sn;
+            cz += wz * cs;
+            sz += wz * sn;
         }
         if self.second_order {
             s.fx = newman_force(self.sign_x, cx, sx);
             s.fy = newman_force(self.sign_y, cy, sy);
+            s.mz = newman_force(self.sign_z, cz, sz);
         }
         self.last = s;
         s
@@ -357,6 +388,12 @@ impl Seaway {
         let fx: f64 = self.wx.iter().map(|w| w * w).sum::<f64>() * self.sign_x;
         let fy: f64 = self.wy.iter().map(|w| w * w).sum::<f64>() * self.sign_y;
         (fx, fy)
+    }
+
+    /// Mean second-order yaw moment sum a_i^2 M_i, bow to starboard [N m] (the time average of
+    /// `mz`).
+    pub fn mean_moment(&self) -> f64 {
+        self.wz.iter().map(|w| w * w).sum::<f64>() * self.sign_z
     }
 }
 
@@ -392,13 +429,13 @@ mod tests {
                 worst = worst.max((sea.phasor[i].0 - cs).abs()).max((sea.phasor[i].1 - sn).abs());
                 hub += c.wave.amplitude * (sea.h[i][0].re * cs - sea.h[i][0].im * sn);
             }
-            worst_hub = worst_hub.max((s.hub - hub).abs());
+            worst_hub = worst_hub.max((s.hub[0] - hub).abs());
         }
         assert!(worst < 1e-12, "phasor error {worst:e}");
         assert!(worst_hub < 1e-11, "hub depth error {worst_hub:e} m");
         // A sample far from the last (here back in time by 10 s) takes libm.
         let s = sea.sample(70.0, 900.0, 90.0, xd, yd);
-        assert!(s.hub.is_finite());
+        assert!(s.hub.iter().all(|h| h.is_finite()));
         let c = &sea.comps[7];
         let th = c.wave.phase_at(c.cos_mu, c.sin_mu, 900.0, 90.0, 70.0);
         assert!((sea.phasor[7].0 - libm::cos(th)).abs() < 1e-12);

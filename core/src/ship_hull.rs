@@ -1,0 +1,384 @@
+//! The ship's hull: one definition that every study uses (thesis ch. 2 intro: the seakeeping
+//! model "allows for the input of an arbitrary hull shape"). The scenario's `ship.hull` names an
+//! embedded hull or carries offsets, with the loading (draft or mass, KG, radii of gyration) and
+//! the appendages (bilge keels, propeller hubs, rudder). From it come the one length Lpp of the
+//! maneuvering prime system, the displaced mass of the surge and maneuvering models, the
+//! propellers' and rudder's levers, and the strip-theory hull of the RAO tables.
+//!
+//! Positions are from the aft perpendicular (x forward), the centreline (y to port, STF) and the
+//! baseline (z up), as in the offsets. A field left out (null) takes the embedded hull's own
+//! value, or for offsets of one's own the rule in its doc comment.
+//!
+//! Thesis Tables 5.1 and 5.5 give L = 180 m, x_p = 75 m and m = 7e6 kg; the DTMB 5415, the
+//! DDG-51's public hull form and our seakeeping hull, has Lpp = 142 m and displaces 8.64e6 kg at
+//! its 6.15 m design draft. The default is the 5415 throughout: Table 2.3's (X_udot - m)' scaled
+//! by L = 142 m gives m - X_udot = 9.5e6 kg, the 5415's mass plus 10 % added mass, while L = 180 m
+//! gives 19.3e6 kg, 2.75 times Table 5.1's mass. `as_printed.table_5_ship` runs the thesis'
+//! numbers instead (core/src/as_printed.rs).
+
+use crate::as_printed::AsPrintedParams;
+use crate::hull_sections::{HullOffsets, Hydrostatics};
+use crate::seakeeping::strip::{BilgeKeels, MassProperties, Ship};
+use crate::validate::{num, Validator};
+use serde::{Deserialize, Serialize};
+
+/// Shafts of the ship (port, starboard).
+pub const N_SHAFTS: usize = 2;
+
+/// The embedded hulls' names (`ship.hull.name`), then "custom" for offsets of one's own.
+pub const HULL_NAMES: [&str; 3] = ["dtmb5415", "wigley", "custom"];
+
+/// The `ship.hull` section of the scenario.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct HullSpec {
+    /// "dtmb5415" (the default), "wigley", or "custom" with `offsets_csv`.
+    pub name: String,
+    /// Offsets of a custom hull in the long format `station_index,x_m,z_m,half_breadth_m` (what
+    /// `aes-sim rao --hull` reads), x forward from the aft perpendicular, z above the baseline.
+    #[serde(skip_serializing_if = "String::is_empty")]
+    pub offsets_csv: String,
+    /// Draft: the calm waterline's height above the baseline, even keel [m]. Give this or
+    /// `mass_kg`; neither takes the embedded hull's design draft (5415: 6.15 m, Wigley: 6.25 m).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub draft_m: Option<f64>,
+    /// Displaced mass [kg]: the draft is solved so that rho V equals it (e.g. 7e6, Table 5.1).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mass_kg: Option<f64>,
+    /// Centre of gravity above the baseline [m]. Needed for custom offsets.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kg_m: Option<f64>,
+    /// Radii of gyration about the centre of gravity: roll, pitch, yaw [m]. Custom offsets:
+    /// 0.37 B, 0.25 Lpp, 0.25 Lpp (the 5415's ratios, typical of slender ships).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kxx_m: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kyy_m: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kzz_m: Option<f64>,
+    /// Bilge keels on both sides (length 0: none). Custom offsets and the Wigley: none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bilge_keels: Option<BilgeKeels>,
+    /// Propeller hubs' distance forward of the aft perpendicular [m]. Custom: 0.058 Lpp (the 5415's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub propeller_x_m: Option<f64>,
+    /// Lateral offsets of the port and starboard shafts, to port [m] (port positive, starboard
+    /// negative). Custom: +-0.26 B (the 5415's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shaft_y_m: Option<[f64; N_SHAFTS]>,
+    /// Propeller hubs' height above the baseline [m]; the calm-water hub depth h0 is the draft
+    /// minus it (ch. 5.3 and 5.4 vary h0). Custom: 0.024 T (the 5415's 0.15 m at 6.15 m).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub hub_above_base_m: Option<f64>,
+    /// Rudder's distance forward of the aft perpendicular [m] (its lever in eq. 2.19). Custom:
+    /// 0.022 Lpp (the 5415's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rudder_x_m: Option<f64>,
+}
+
+impl Default for HullSpec {
+    fn default() -> Self {
+        HullSpec {
+            name: "dtmb5415".into(),
+            offsets_csv: String::new(),
+            draft_m: None,
+            mass_kg: None,
+            kg_m: None,
+            kxx_m: None,
+            kyy_m: None,
+            kzz_m: None,
+            bilge_keels: None,
+            propeller_x_m: None,
+            shaft_y_m: None,
+            hub_above_base_m: None,
+            rudder_x_m: None,
+        }
+    }
+}
+
+/// An embedded hull's own loading and appendages.
+struct Embedded {
+    offsets: fn() -> HullOffsets,
+    draft_m: f64,
+    kg_m: f64,
+    /// Radii of gyration [m].
+    k_m: [f64; 3],
+    bilge_keels: Option<BilgeKeels>,
+    propeller_x_m: f64,
+    shaft_y_m: [f64; N_SHAFTS],
+    hub_above_base_m: f64,
+    rudder_x_m: f64,
+}
+
+/// The DTMB 5415 at its design draft with the SIMMAN 2014 mass properties (KG 7.555 m,
+/// kxx = 0.37 B, kyy = kzz = 0.25 Lpp) and our appendages: bilge keels of 0.25 Lpp by 0.6 m over
+/// the middle body (b/B = 0.031, destroyer practice); propellers 8.3 m (0.058 Lpp) forward of
+/// the AP, 62 m aft of the centre of gravity, on shafts 5.0 m (0.26 B) either side, their hubs
+/// 0.15 m above the baseline (h0 = 6.0 m, ch. 5.3); rudders one propeller diameter behind, 3.1 m
+/// forward of the AP.
+fn dtmb5415() -> Embedded {
+    Embedded {
+        offsets: HullOffsets::dtmb5415,
+        draft_m: 6.15,
+        kg_m: 7.555,
+        k_m: [0.37 * 19.06, 0.25 * 142.0, 0.25 * 142.0],
+        bilge_keels: Some(BilgeKeels { length_m: 0.25 * 142.0, breadth_m: 0.6 }),
+        propeller_x_m: 8.3,
+        shaft_y_m: [5.0, -5.0],
+        hub_above_base_m: 0.15,
+        rudder_x_m: 3.1,
+    }
+}
+
+fn embedded(name: &str) -> Option<Embedded> {
+    match name {
+        "dtmb5415" => Some(dtmb5415()),
+        _ => None,
+    }
+}
+
+/// The hull of a run: geometry, loading and appendages resolved, SI throughout.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShipHull {
+    /// Name of the embedded hull or "custom".
+    pub name: String,
+    pub offsets: HullOffsets,
+    /// Waterline above the baseline [m] and the hydrostatics there.
+    pub draft_m: f64,
+    pub hydrostatics: Hydrostatics,
+    /// Length between perpendiculars: the offsets' span [m]. The one length of every model.
+    pub lpp_m: f64,
+    /// Largest waterline breadth [m].
+    pub beam_m: f64,
+    /// Displaced mass rho V [kg].
+    pub mass_kg: f64,
+    pub mass_props: MassProperties,
+    pub bilge_keels: Option<BilgeKeels>,
+    /// Centre of gravity (= centre of buoyancy) forward of the AP [m].
+    pub lcg_m: f64,
+    /// Propellers aft of the centre of gravity [m], shafts' offsets to port [m], calm-water hub
+    /// depth below the waterline [m].
+    pub prop_x_aft_m: f64,
+    pub shaft_y_m: [f64; N_SHAFTS],
+    pub hub_depth_m: f64,
+    /// Rudder aft of the centre of gravity [m] (x_p of eqs. 2.19, 2.26-2.27).
+    pub rudder_x_aft_m: f64,
+    pub rho: f64,
+}
+
+/// Bisection steps for the draft of a given mass (the interval halves 60 times: far below a
+/// micrometre on any ship).
+const DRAFT_BISECTIONS: u32 = 60;
+
+impl HullSpec {
+    /// The offsets this section names (parsed for custom hulls; errors name the line).
+    pub fn offsets(&self) -> Result<HullOffsets, (String, String)> {
+        match (embedded(&self.name), self.name.as_str()) {
+            (Some(e), _) => {
+                if !self.offsets_csv.is_empty() {
+                    return Err((
+                        "offsets_csv".into(),
+                        format!("offsets are for name = \"custom\"; \"{}\" is an embedded hull", self.name),
+                    ));
+                }
+                Ok((e.offsets)())
+            }
+            (None, "custom") => {
+                if self.offsets_csv.trim().is_empty() {
+                    return Err(("offsets_csv".into(), "a custom hull needs its offsets (long CSV format)".into()));
+                }
+                HullOffsets::parse(&self.offsets_csv).map_err(|e| ("offsets_csv".into(), e))
+            }
+            _ => Err(("name".into(), format!("must be one of {}", HULL_NAMES.join(", ")))),
+        }
+    }
+
+    /// Resolves the section with water density `rho` [kg/m^3]. Errors are (field, message).
+    pub fn resolve(&self, rho: f64) -> Result<ShipHull, (String, String)> {
+        let offsets = self.offsets()?;
+        let emb = embedded(&self.name);
+        let xs = offsets.stations.iter().map(|s| s.x);
+        let (x_min, x_max) =
+            xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
+        let lpp = x_max - x_min;
+        let top = offsets.stations.iter().map(|s| *s.z.last().unwrap_or(&0.0)).fold(f64::INFINITY, f64::min);
+        let bottom = offsets.stations.iter().map(|s| s.z[0]).fold(f64::INFINITY, f64::min);
+        let draft = match (self.draft_m, self.mass_kg, &emb) {
+            (Some(_), Some(_), _) => {
+                return Err(("mass_kg".into(), "give the draft or the mass, not both".into()));
+            }
+            (Some(t), None, _) => {
+                if !(t > bottom && t <= top) {
+                    return Err((
+                        "draft_m".into(),
+                        format!("must be above the lowest offset ({bottom} m) and within every station's data (up to {top} m)"),
+                    ));
+                }
+                t
+            }
+            (None, Some(m), _) => draft_for_mass(&offsets, m, rho, bottom, top)?,
+            (None, None, Some(e)) => e.draft_m,
+            (None, None, None) => {
+                return Err(("draft_m".into(), "a custom hull needs its draft_m or mass_kg".into()));
+            }
+        };
+        let hs = offsets.hydrostatics(draft).map_err(|e| ("draft_m".to_string(), e))?;
+        if !(hs.volume > 0.0) {
+            return Err(("draft_m".into(), format!("the hull displaces nothing at {draft} m")));
+        }
+        let secs = offsets.sections(draft).map_err(|e| ("draft_m".to_string(), e))?;
+        let beam = secs.iter().map(|s| s.beam).fold(0.0, f64::max);
+        let pick = |own: Option<f64>, e: Option<f64>, custom: f64| own.or(e).unwrap_or(custom);
+        let kg = match (self.kg_m, &emb) {
+            (Some(k), _) => k,
+            (None, Some(e)) => e.kg_m,
+            (None, None) => return Err(("kg_m".into(), "a custom hull needs its centre of gravity above the baseline".into())),
+        };
+        let ek = emb.as_ref().map(|e| e.k_m);
+        let mass_props = MassProperties {
+            kg_m: kg,
+            kxx_m: pick(self.kxx_m, ek.map(|k| k[0]), 0.37 * beam),
+            kyy_m: pick(self.kyy_m, ek.map(|k| k[1]), 0.25 * lpp),
+            kzz_m: pick(self.kzz_m, ek.map(|k| k[2]), 0.25 * lpp),
+        };
+        let bilge_keels = match self.bilge_keels {
+            Some(b) if b.length_m == 0.0 || b.breadth_m == 0.0 => None,
+            Some(b) => Some(b),
+            None => emb.as_ref().and_then(|e| e.bilge_keels),
+        };
+        let prop_x = pick(self.propeller_x_m, emb.as_ref().map(|e| e.propeller_x_m), x_min + 0.058 * lpp);
+        let shaft_y = self.shaft_y_m.or(emb.as_ref().map(|e| e.shaft_y_m)).unwrap_or([0.26 * beam, -0.26 * beam]);
+        let hub_z = pick(self.hub_above_base_m, emb.as_ref().map(|e| e.hub_above_base_m), 0.024 * draft);
+        let rudder_x = pick(self.rudder_x_m, emb.as_ref().map(|e| e.rudder_x_m), x_min + 0.022 * lpp);
+        let hull = ShipHull {
+            name: self.name.clone(),
+            draft_m: draft,
+            lpp_m: lpp,
+            beam_m: beam,
+            mass_kg: rho * hs.volume,
+            mass_props,
+            bilge_keels,
+            lcg_m: hs.lcb,
+            prop_x_aft_m: hs.lcb - prop_x,
+            shaft_y_m: shaft_y,
+            hub_depth_m: draft - hub_z,
+            rudder_x_aft_m: hs.lcb - rudder_x,
+            hydrostatics: hs,
+            offsets,
+            rho,
+        };
+        Ok(hull)
+    }
+
+    /// Checks the section (with water density `rho`): the hull must resolve, float upright and
+    /// carry its appendages within reach of the hull.
+    pub fn validate(&self, v: &mut Validator, rho: f64) {
+        let h = match self.resolve(rho) {
+            Ok(h) => h,
+            Err((field, msg)) => {
+                let value = match field.as_str() {
+                    "name" => self.name.clone(),
+                    "offsets_csv" => format!("({} bytes)", self.offsets_csv.len()),
+                    "draft_m" => self.draft_m.map(num).unwrap_or_else(|| "null".into()),
+                    "mass_kg" => self.mass_kg.map(num).unwrap_or_else(|| "null".into()),
+                    "kg_m" => "null".into(),
+                    _ => String::new(),
+                };
+                v.fail(&field, value, msg);
+                return;
+            }
+        };
+        let (l, b, t) = (h.lpp_m, h.beam_m, h.draft_m);
+        let mp = &h.mass_props;
+        v.range("kg_m", mp.kg_m, -t, 3.0 * t.max(b));
+        v.range("kxx_m", mp.kxx_m, 0.01 * b, 2.0 * b);
+        v.range("kyy_m", mp.kyy_m, 0.01 * l, l);
+        v.range("kzz_m", mp.kzz_m, 0.01 * l, l);
+        if let Some(bk) = self.bilge_keels {
+            v.range("bilge_keels.length_m", bk.length_m, 0.0, l);
+            v.range("bilge_keels.breadth_m", bk.breadth_m, 0.0, 0.2 * b);
+        }
+        let x0 = h.offsets.stations.first().map(|s| s.x).unwrap_or(0.0);
+        v.range("propeller_x_m", h.lcg_m - h.prop_x_aft_m, x0 - 0.1 * l, x0 + 0.5 * l);
+        v.range("rudder_x_m", h.lcg_m - h.rudder_x_aft_m, x0 - 0.1 * l, x0 + 0.5 * l);
+        for (i, y) in h.shaft_y_m.iter().enumerate() {
+            v.range(&format!("shaft_y_m.{i}"), *y, -b, b);
+        }
+        v.range("hub_above_base_m", t - h.hub_depth_m, -t, t);
+        if v.is_ok() {
+            if let Err(e) = h.strip_ship() {
+                v.fail("offsets_csv", format!("{} stations", h.offsets.stations.len()), e);
+            }
+        }
+    }
+}
+
+/// The draft at which `offsets` displace `mass` [kg] in water of density `rho`, by bisection
+/// between the lowest offset and the lowest station top.
+fn draft_for_mass(offsets: &HullOffsets, mass: f64, rho: f64, bottom: f64, top: f64) -> Result<f64, (String, String)> {
+    let vol = |t: f64| offsets.hydrostatics(t).map(|h| h.volume).unwrap_or(0.0);
+    let v_max = vol(top);
+    if !(mass.is_finite() && mass > 0.0 && mass <= rho * v_max) {
+        return Err((
+            "mass_kg".into(),
+            format!("must be from 0 to {} kg, what the hull displaces at the top of its offsets ({top} m)", num(rho * v_max)),
+        ));
+    }
+    let (mut lo, mut hi) = (bottom, top);
+    for _ in 0..DRAFT_BISECTIONS {
+        let mid = 0.5 * (lo + hi);
+        if rho * vol(mid) < mass {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(0.5 * (lo + hi))
+}
+
+/// The length, mass and rudder lever the maneuvering and surge models use.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RigidBody {
+    /// L of the prime system (ch. 2.4) [m].
+    pub length_m: f64,
+    /// Displaced mass m [kg].
+    pub mass_kg: f64,
+    /// Rudder aft of the centre of gravity, x_p of eqs. 2.19, 2.26-2.27 [m].
+    pub rudder_x_aft_m: f64,
+}
+
+/// Tables 5.1 and 5.5: L = 180 m, m = 7e6 kg, x_p = 75 m (`as_printed.table_5_ship`).
+pub const TABLE_5_SHIP: RigidBody = RigidBody { length_m: 180.0, mass_kg: 7.0e6, rudder_x_aft_m: 75.0 };
+
+impl ShipHull {
+    /// The hull's length, mass and rudder lever, or with `printed.table_5_ship` the thesis'.
+    pub fn rigid_body(&self, printed: &AsPrintedParams) -> RigidBody {
+        if printed.table_5_ship {
+            TABLE_5_SHIP
+        } else {
+            RigidBody { length_m: self.lpp_m, mass_kg: self.mass_kg, rudder_x_aft_m: self.rudder_x_aft_m }
+        }
+    }
+
+    /// The strip-theory hull (thesis ch. 2.5.1-2.5.2). Errors name the stations the radiation
+    /// solver cannot represent.
+    pub fn strip_ship(&self) -> Result<Ship, String> {
+        Ship::new(&self.offsets, self.draft_m, self.mass_props, self.bilge_keels, self.rho, crate::waves::G)
+    }
+
+    /// What makes the RAO table: every input of `strip_ship`, as text (the cache's key).
+    pub fn table_key(&self) -> String {
+        let bk = self.bilge_keels.map(|b| (b.length_m.to_bits(), b.breadth_m.to_bits()));
+        let mp = &self.mass_props;
+        let geometry = if self.name == "custom" { format!("{:?}", self.offsets) } else { self.name.clone() };
+        format!(
+            "{geometry}|{:x}|{:x}|{:x}|{:x}|{:x}|{bk:?}|{:x}",
+            self.draft_m.to_bits(),
+            mp.kg_m.to_bits(),
+            mp.kxx_m.to_bits(),
+            mp.kyy_m.to_bits(),
+            mp.kzz_m.to_bits(),
+            self.rho.to_bits()
+        )
+    }
+}
