@@ -849,6 +849,70 @@ fn seakeeping_limits() -> Vec<Row> {
         Tolerance::Abs(1e-3),
         "",
     ));
+    rows.extend(wigley_rows());
+    rows
+}
+
+/// The Wigley hull (L 100 m, B 10 m, T 6.25 m, generated in code): hydrostatics against the closed
+/// forms, heave and pitch in long head waves, and the Fn 0.3 heave resonance. No published RAO is
+/// compared yet: core/data/wigley_journee1992_head_seas.csv awaits Journee's (1992) points.
+fn wigley_rows() -> Vec<Row> {
+    use crate::hull_sections::HullOffsets;
+    use crate::seakeeping::strip::{default_omega_grid, natural_periods, Ship};
+    use crate::seakeeping::wigley_check::heave_pitch;
+    let (l, b, t) = (100.0, 10.0, 6.25);
+    let mut rows = Vec::new();
+    let Ok(h) = HullOffsets::wigley().hydrostatics(t) else { return rows };
+    let src = "closed form of y = (B/2)(1 - xi^2)(1 - (d/T)^2)";
+    let why = "trapezoid over 19 cosine-spaced stations";
+    for (name, exact, ours, unit, tol) in [
+        ("volume, (4/9) L B T", 4.0 / 9.0 * l * b * t, h.volume, "m^3", 6e-3),
+        ("waterplane area, (2/3) L B", 2.0 / 3.0 * l * b, h.awp, "m^2", 6e-3),
+        ("KB, 5T/8", 5.0 * t / 8.0, h.kb, "m", 5e-4),
+        ("BM_T, 3 B^2 / (35 T)", 3.0 * b * b / (35.0 * t), h.bmt, "m", 1e-3),
+    ] {
+        rows.push(row(&format!("Wigley hull {name}"), src, exact, ours, unit, Tolerance::Rel(tol), why));
+    }
+    let ship = Ship::wigley();
+    let table = ship.radiation_table(&default_omega_grid());
+    for froude in [0.2, 0.3] {
+        let (hv, p) = heave_pitch(&ship, &table, froude, 20.0);
+        let src = "long waves (lambda/L = 20): the hull follows the surface";
+        rows.push(row(
+            &format!("Wigley heave RAO, head seas, Fn {froude}"),
+            src,
+            1.0,
+            hv,
+            "m/m",
+            Tolerance::Abs(0.005),
+            "",
+        ));
+        rows.push(row(
+            &format!("Wigley pitch RAO / k, head seas, Fn {froude}"),
+            src,
+            1.0,
+            p,
+            "-",
+            Tolerance::Abs(0.01),
+            "",
+        ));
+    }
+    let (t3, _) = natural_periods(&ship, &table);
+    let u = 0.3 * libm::sqrt(ship.g * l);
+    let peak = (0..=200)
+        .map(|i| 0.5 + 0.01 * i as f64)
+        .max_by(|&a, &c| heave_pitch(&ship, &table, 0.3, a).0.total_cmp(&heave_pitch(&ship, &table, 0.3, c).0))
+        .unwrap_or(1.0);
+    let k = 2.0 * core::f64::consts::PI / (peak * l);
+    rows.push(row(
+        "Wigley heave peak encounter frequency, head seas, Fn 0.3",
+        "heave natural frequency from the computed added mass",
+        2.0 * core::f64::consts::PI / t3,
+        libm::sqrt(ship.g * k) + k * u,
+        "rad/s",
+        Tolerance::Rel(0.05),
+        "resonance; the peak heave is 1.82 m/m at lambda/L 1.09 (strip theory, lightly damped)",
+    ));
     rows
 }
 
@@ -866,7 +930,9 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
          (van Lammeren et al. 1969, as quoted by Smogeli 2006); the DTMB 5415 offsets (SIMMAN benchmark hull, sliced \
          from the navaltoolbox-lib test mesh); the gas-turbine part-load curve (TransiEnt library, anchored to the \
          thesis' 37 % and 28 %); the Purdue MVDC testbed parameters (our reconstruction from the thesis' own \
-         Tables 4.1 and 4.2, shared/data/purdue_testbed_params.md).\n\n",
+         Tables 4.1 and 4.2, shared/data/purdue_testbed_params.md); the Wigley hull (Wigley 1934's parabolic \
+         form at L/B 10, B/T 1.6, the Wigley I of Journee 1992, Delft report 909, generated in code at L = 100 m; \
+         checked against its closed-form hydrostatics, Journee's measured RAOs not yet compared).\n\n",
     );
     let count = |v: Verdict| sections.iter().flat_map(|x| &x.rows).filter(|r| r.verdict == v).count();
     s.push_str(&format!(

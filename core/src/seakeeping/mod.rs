@@ -10,3 +10,4 @@ pub mod radiation;
 pub mod roll_damping;
 pub mod strip;
 pub mod tables;
+pub mod wigley_check;

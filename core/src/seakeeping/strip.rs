@@ -179,6 +179,17 @@ impl Ship {
         .expect("the embedded DTMB 5415 hull is valid")
     }
 
+    /// The Wigley hull of [`HullOffsets::wigley`] (L 100 m, B 10 m, T 6.25 m) at its draft, without
+    /// bilge keels. Mass properties are our choice (Journee 1992's values could not be found):
+    /// kyy = kzz = 0.25 L (the usual assumption for Wigley seakeeping tests and computations),
+    /// kxx = 0.35 B, KG = 4.5 m = 0.72 T, which gives GM_T 0.78 m (the hull's KM_T is
+    /// 5T/8 + 3B^2/(35T) = 5.28 m). KG moves heave and pitch in head seas only through the small
+    /// z_G terms of I5 and C55.
+    pub fn wigley() -> Ship {
+        let mass = MassProperties { kg_m: 4.5, kxx_m: 0.35 * 10.0, kyy_m: 0.25 * 100.0, kzz_m: 0.25 * 100.0 };
+        Ship::new(&HullOffsets::wigley(), 6.25, mass, None, 1025.0, 9.81).expect("the embedded Wigley hull is valid")
+    }
+
     /// Sectional radiation coefficients of every strip on the encounter-frequency grid `omegas`
     /// [rad/s, increasing].
     pub fn radiation_table(&self, omegas: &[f64]) -> RadiationTable {
