@@ -597,7 +597,20 @@ fn real_main() -> Result<(), Failure> {
             let v = section_json(beam, draft, area_coeff, form, &omega, 1025.0, 9.81)?;
             emit_json(&v)?;
         }
-        Cmd::Rao { hull, scenario, draft, mass, kg, kxx, kyy, kzz, speed_kn, heading_deg, omega, roll_wave_amplitude } => {
+        Cmd::Rao {
+            hull,
+            scenario,
+            draft,
+            mass,
+            kg,
+            kxx,
+            kyy,
+            kzz,
+            speed_kn,
+            heading_deg,
+            omega,
+            roll_wave_amplitude,
+        } => {
             if !(roll_wave_amplitude.is_finite() && (0.01..=20.0).contains(&roll_wave_amplitude)) {
                 return Err(format!("--roll-wave-amplitude = {roll_wave_amplitude} is outside [0.01, 20]").into());
             }
@@ -622,7 +635,9 @@ fn real_main() -> Result<(), Failure> {
                 spec.draft_m = draft;
                 spec.mass_kg = mass;
             }
-            for (field, v) in [(&mut spec.kg_m, kg), (&mut spec.kxx_m, kxx), (&mut spec.kyy_m, kyy), (&mut spec.kzz_m, kzz)] {
+            for (field, v) in
+                [(&mut spec.kg_m, kg), (&mut spec.kxx_m, kxx), (&mut spec.kyy_m, kyy), (&mut spec.kzz_m, kzz)]
+            {
                 if v.is_some() {
                     *field = v;
                 }

@@ -28,13 +28,7 @@ pub struct RudderParams {
 
 impl Default for RudderParams {
     fn default() -> Self {
-        RudderParams {
-            area_m2: 20.0,
-            lift_slope: 3.31,
-            drag_slope: 0.46,
-            max_angle_deg: 20.0,
-            swing_rate_rad_s: 0.1,
-        }
+        RudderParams { area_m2: 20.0, lift_slope: 3.31, drag_slope: 0.46, max_angle_deg: 20.0, swing_rate_rad_s: 0.1 }
     }
 }
 

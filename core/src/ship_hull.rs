@@ -130,9 +130,31 @@ fn dtmb5415() -> Embedded {
     }
 }
 
+/// The Wigley hull (y = B/2 (1 - (2x/L)^2)(1 - (z/T)^2), Journee 1992's Wigley I, L/B = 10,
+/// B/T = 1.6) at L 100 m, B 10 m, T 6.25 m (`HullOffsets::wigley`), without bilge keels. Mass
+/// properties are our choice (Journee 1992's values could not be found here): kyy = kzz = 0.25 L
+/// (the usual assumption for Wigley seakeeping tests), kxx = 0.35 B, KG = 4.5 m = 0.72 T, which
+/// gives GM_T 0.78 m (the hull's KM_T is 5T/8 + 3B^2/(35T) = 5.28 m). A test hull has no
+/// appendages of its own: the 5415's rules place them (propellers 0.058 L forward of the AP on
+/// shafts +-0.26 B, hubs 0.15 m above the base, the rudder 0.022 L forward of the AP).
+fn wigley() -> Embedded {
+    Embedded {
+        offsets: HullOffsets::wigley,
+        draft_m: 6.25,
+        kg_m: 4.5,
+        k_m: [0.35 * 10.0, 0.25 * 100.0, 0.25 * 100.0],
+        bilge_keels: None,
+        propeller_x_m: 5.8,
+        shaft_y_m: [2.6, -2.6],
+        hub_above_base_m: 0.15,
+        rudder_x_m: 2.2,
+    }
+}
+
 fn embedded(name: &str) -> Option<Embedded> {
     match name {
         "dtmb5415" => Some(dtmb5415()),
+        "wigley" => Some(wigley()),
         _ => None,
     }
 }
@@ -198,8 +220,7 @@ impl HullSpec {
         let offsets = self.offsets()?;
         let emb = embedded(&self.name);
         let xs = offsets.stations.iter().map(|s| s.x);
-        let (x_min, x_max) =
-            xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
+        let (x_min, x_max) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
         let lpp = x_max - x_min;
         let top = offsets.stations.iter().map(|s| *s.z.last().unwrap_or(&0.0)).fold(f64::INFINITY, f64::min);
         let bottom = offsets.stations.iter().map(|s| s.z[0]).fold(f64::INFINITY, f64::min);
@@ -232,7 +253,9 @@ impl HullSpec {
         let kg = match (self.kg_m, &emb) {
             (Some(k), _) => k,
             (None, Some(e)) => e.kg_m,
-            (None, None) => return Err(("kg_m".into(), "a custom hull needs its centre of gravity above the baseline".into())),
+            (None, None) => {
+                return Err(("kg_m".into(), "a custom hull needs its centre of gravity above the baseline".into()))
+            }
         };
         let ek = emb.as_ref().map(|e| e.k_m);
         let mass_props = MassProperties {
@@ -321,7 +344,10 @@ fn draft_for_mass(offsets: &HullOffsets, mass: f64, rho: f64, bottom: f64, top: 
     if !(mass.is_finite() && mass > 0.0 && mass <= rho * v_max) {
         return Err((
             "mass_kg".into(),
-            format!("must be from 0 to {} kg, what the hull displaces at the top of its offsets ({top} m)", num(rho * v_max)),
+            format!(
+                "must be from 0 to {} kg, what the hull displaces at the top of its offsets ({top} m)",
+                num(rho * v_max)
+            ),
         ));
     }
     let (mut lo, mut hi) = (bottom, top);

@@ -173,7 +173,8 @@ fn extreme_inputs_end_with_named_errors() {
     assert!(message(Run::new(big).err().unwrap()).contains("sim.record_interval_s"));
     let long = r#"{"sim": {"duration_s": 1000000, "dt_s": 0.001}}"#;
     assert!(message(Run::new(long).err().unwrap()).contains("sim.duration_s"));
-    let errs = js_sys::Array::from(&validate_scenario(r#"{"ship": {"wetted_area_m2": 7e3, "wetted_area_m2": 8e3}}"#).unwrap());
+    let errs =
+        js_sys::Array::from(&validate_scenario(r#"{"ship": {"wetted_area_m2": 7e3, "wetted_area_m2": 8e3}}"#).unwrap());
     let msg = js_sys::Reflect::get(&errs.get(0), &"message".into()).unwrap().as_string().unwrap();
     assert!(msg.contains("duplicate key ship.wetted_area_m2"), "{msg}");
     // A partial with a reversed range is refused by mcSummary.

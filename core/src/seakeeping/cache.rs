@@ -49,7 +49,12 @@ pub fn rao_table(hull: &ShipHull, grid: &SeakeepingGrid, printed: &AsPrintedPara
 
 /// Puts a table built elsewhere (`RaoTable::values` of another web worker's table) into the
 /// cache, so this process does not build it again.
-pub fn insert_rao_table(hull: &ShipHull, grid: &SeakeepingGrid, printed: &AsPrintedParams, values: &[f64]) -> Result<(), String> {
+pub fn insert_rao_table(
+    hull: &ShipHull,
+    grid: &SeakeepingGrid,
+    printed: &AsPrintedParams,
+    values: &[f64],
+) -> Result<(), String> {
     let t = Arc::new(RaoTable::from_values(grid, values)?);
     keep(key(hull, grid, printed), t);
     Ok(())

@@ -162,32 +162,26 @@ impl Ship {
         })
     }
 
-    /// The default hull: DTMB 5415 at its design draft 6.15 m with the published mass
-    /// properties (KG 7.555 m, kxx = 0.37 B, kyy = kzz = 0.25 Lpp; SIMMAN 2014) and bilge keels of
-    /// 0.25 Lpp by 0.6 m (our choice: the 5415 models carry bilge keels over the middle of the
-    /// hull; 0.6 m, b/B = 0.031, is typical of destroyer practice).
-    pub fn dtmb5415() -> Ship {
-        let mass = MassProperties { kg_m: 7.555, kxx_m: 0.37 * 19.06, kyy_m: 0.25 * 142.0, kzz_m: 0.25 * 142.0 };
-        Ship::new(
-            &HullOffsets::dtmb5415(),
-            6.15,
-            mass,
-            Some(BilgeKeels { length_m: 0.25 * 142.0, breadth_m: 0.6 }),
-            1025.0,
-            9.81,
-        )
-        .expect("the embedded DTMB 5415 hull is valid")
+    /// An embedded hull (`ship_hull`: "dtmb5415", "wigley") at its own design loading in water
+    /// of 1025 kg/m^3.
+    pub fn embedded(name: &str) -> Ship {
+        crate::ship_hull::HullSpec { name: name.into(), ..Default::default() }
+            .resolve(1025.0)
+            .map_err(|(f, e)| format!("{f}: {e}"))
+            .and_then(|h| h.strip_ship())
+            .expect("the embedded hulls are valid")
     }
 
-    /// The Wigley hull of [`HullOffsets::wigley`] (L 100 m, B 10 m, T 6.25 m) at its draft, without
-    /// bilge keels. Mass properties are our choice (Journee 1992's values could not be found):
-    /// kyy = kzz = 0.25 L (the usual assumption for Wigley seakeeping tests and computations),
-    /// kxx = 0.35 B, KG = 4.5 m = 0.72 T, which gives GM_T 0.78 m (the hull's KM_T is
-    /// 5T/8 + 3B^2/(35T) = 5.28 m). KG moves heave and pitch in head seas only through the small
-    /// z_G terms of I5 and C55.
+    /// The DTMB 5415 at its design draft 6.15 m with the SIMMAN 2014 mass properties and bilge
+    /// keels (`ship_hull`).
+    pub fn dtmb5415() -> Ship {
+        Ship::embedded("dtmb5415")
+    }
+
+    /// The Wigley hull of [`HullOffsets::wigley`] (L 100 m, B 10 m, T 6.25 m) at its draft
+    /// (`ship_hull`).
     pub fn wigley() -> Ship {
-        let mass = MassProperties { kg_m: 4.5, kxx_m: 0.35 * 10.0, kyy_m: 0.25 * 100.0, kzz_m: 0.25 * 100.0 };
-        Ship::new(&HullOffsets::wigley(), 6.25, mass, None, 1025.0, 9.81).expect("the embedded Wigley hull is valid")
+        Ship::embedded("wigley")
     }
 
     /// Sectional radiation coefficients of every strip on the encounter-frequency grid `omegas`

@@ -442,7 +442,8 @@ impl Plant {
                 // resistance is booked with the ship's resistance in the energy accounts.
                 let x_hull = x_hull - self.extra_resistance;
                 dx[SURGE] = (thrust + x_hull + fx_r + h.sea.wave_fx) / self.surge_mass; // eq. 2.20, first row
-                let (vd, rd) = abkowitz.sway_yaw_acceleration(f.y + fy_r + h.sea.wave_fy, f.n - x_p * fy_r + h.sea.wave_mz); // eq. 2.24: - x_p F_y + M_add
+                let (vd, rd) =
+                    abkowitz.sway_yaw_acceleration(f.y + fy_r + h.sea.wave_fy, f.n - x_p * fy_r + h.sea.wave_mz); // eq. 2.24: - x_p F_y + M_add
                 dx[SWAY] = vd;
                 dx[YAW_RATE] = rd;
                 -(x_hull + fx_r + h.sea.wave_fx)
