@@ -21,6 +21,8 @@ pub const PRESET_NAMES: &[&str] = &[
     "as-printed",
     "mc-excess-energy",
     "mc-arrival",
+    "wigley-head-seas",
+    "mc-wigley",
 ];
 
 /// The preset of that name.
@@ -43,6 +45,8 @@ pub fn preset(name: &str) -> Option<Scenario> {
         "as-printed" => as_printed(),
         "mc-excess-energy" => mc_excess_energy(),
         "mc-arrival" => mc_arrival(),
+        "wigley-head-seas" => wigley_head_seas(),
+        "mc-wigley" => mc_wigley(),
         _ => return None,
     })
 }
@@ -316,6 +320,40 @@ pub fn mc_arrival() -> Scenario {
     s.monte_carlo.trials = 200;
     s.monte_carlo.stop_at_first_event = true;
     s.monte_carlo.envelope_signals = vec!["im_power_pu".into(), "h_over_r".into()];
+    s
+}
+
+/// Any hull end to end (issue 15): the same plant on the Wigley hull (L 100 m, B 10 m, T 6.25 m,
+/// `ship_hull`) at 20 knots (Fn 0.33) in head seas of sea state 5: its heave and pitch resonance
+/// lies near this encounter frequency, where strip theory gives its largest motions.
+pub fn wigley_head_seas() -> Scenario {
+    let mut s = at_speed_maneuvering(
+        "wigley-head-seas",
+        "The Wigley hull, the classic seakeeping test hull (L 100 m, parabolic sections), with this plant at \
+         20 knots (Froude number 0.33) into head seas of sea state 5: the encounter frequency of the energetic \
+         waves is near its heave and pitch resonance, so it pitches and heaves more than the destroyer would, \
+         and the propellers, 6.1 m deep, come near the surface.",
+    );
+    s.ship.hull.name = "wigley".into();
+    s.commands[0].speed_kn = Some(20.0);
+    s.initial.speed_kn = 20.0;
+    s.sea.kind = SeaKind::Random;
+    s.sea.sea_state = 5;
+    s.sim.duration_s = 60.0;
+    s.sim.seed = 1;
+    sea_step(&mut s);
+    s
+}
+
+/// Monte Carlo on the Wigley hull: 50 trials of `wigley_head_seas` (envelopes of motor power, h/R
+/// and shaft speed, the histogram of motor power at 40 s).
+pub fn mc_wigley() -> Scenario {
+    let mut s = wigley_head_seas();
+    s.name = "mc-wigley".into();
+    s.description = "Monte Carlo on the Wigley hull: 50 trials of 60 s at 20 knots in head seas of sea state 5. \
+        How the motor power, the hub depth and the shaft speed spread over random seas on a hull of one's own."
+        .into();
+    s.monte_carlo.trials = 50;
     s
 }
 

@@ -484,6 +484,21 @@ impl Scenario {
 
     /// Like [`Scenario::from_json`], from an already parsed JSON value.
     pub fn from_value(value: serde_json::Value) -> Result<Scenario, ScenarioError> {
+        // Fields that moved into `ship.hull` (issue 15): say where, not just "unknown field".
+        let moved: Vec<FieldError> = MOVED_FIELDS
+            .iter()
+            .filter_map(|(section, field, to)| {
+                let v = value.get(section)?.get(field)?;
+                Some(FieldError {
+                    path: format!("{section}.{field}"),
+                    value: crate::validate::shorten(&v.to_string()),
+                    message: format!("this field is gone: {to}"),
+                })
+            })
+            .collect();
+        if !moved.is_empty() {
+            return Err(ScenarioError(moved));
+        }
         let sc: Scenario = serde_path_to_error::deserialize(value).map_err(|e| {
             let path = e.path().to_string();
             ScenarioError(vec![FieldError {
@@ -538,6 +553,16 @@ impl Scenario {
         Scenario::from_value(root)
     }
 }
+
+/// Fields of earlier scenario files that the hull now owns: (section, field, where it went).
+const MOVED_FIELDS: [(&str, &str, &str); 6] = [
+    ("ship", "mass_kg", "the mass is the hull's displacement (ship.hull.draft_m, or ship.hull.mass_kg to set it)"),
+    ("ship", "added_mass_kg", "give ship.added_mass_fraction (of the hull's displacement)"),
+    ("ship", "length_m", "the length is the hull's Lpp (ship.hull; as_printed.table_5_ship for the thesis' 180 m)"),
+    ("seakeeping", "hub_depth_m", "the hubs' place is the hull's: ship.hull.hub_above_base_m (h0 = draft - it)"),
+    ("seakeeping", "prop_x_aft_m", "the propellers' place is the hull's: ship.hull.propeller_x_m (from the AP)"),
+    ("rudder", "x_p_m", "the rudder's place is the hull's: ship.hull.rudder_x_m (from the AP)"),
+];
 
 fn one_error(path: &str, value: &str, msg: &dyn fmt::Display) -> ScenarioError {
     use crate::validate::{shorten, shorten_message};

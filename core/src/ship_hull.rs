@@ -408,3 +408,111 @@ impl ShipHull {
         )
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::hull_sections::DTMB5415_OFFSETS;
+    use crate::scenario::Scenario;
+
+    fn resolve(spec: &HullSpec) -> Result<ShipHull, (String, String)> {
+        spec.resolve(1025.0)
+    }
+
+    /// The default hull is the 5415 at 6.15 m: Lpp 142 m, 8.6e6 kg (published 8424 m^3, this
+    /// mesh 8386.5 m^3 to 0.5 %), the propellers 62 m aft of G (8.3 m forward of the AP) and
+    /// 6.0 m deep, the rudder 67 m aft of G.
+    #[test]
+    fn the_default_hull_is_the_5415_at_its_design_draft() {
+        let h = resolve(&HullSpec::default()).unwrap();
+        assert_eq!(h.lpp_m, 142.0);
+        assert!((h.hydrostatics.volume - 8386.5).abs() < 0.005 * 8386.5, "{}", h.hydrostatics.volume);
+        assert!((h.mass_kg / 8.6e6 - 1.0).abs() < 0.005, "{}", h.mass_kg);
+        assert!((h.prop_x_aft_m - 62.0).abs() < 0.1, "{}", h.prop_x_aft_m);
+        assert!((h.hub_depth_m - 6.0).abs() < 1e-12 && (h.rudder_x_aft_m - 67.2).abs() < 0.1);
+        // Table 2.3's (X_udot - m)' at this length: m - X_udot = 9.5e6 kg, the mass plus 10 %.
+        let m11 = 646.9e-5 * 0.5 * 1025.0 * 142f64.powi(3);
+        assert!((m11 / h.mass_kg - 1.1).abs() < 0.02, "{}", m11 / h.mass_kg);
+    }
+
+    /// A custom hull with the 5415's own offsets and loading gives the embedded hull's RAOs bit
+    /// for bit; the scenario's RAO table at a grid point is strip theory's response there, the
+    /// numbers `aes-sim rao --hull` prints (it builds the same `ShipHull::strip_ship`).
+    #[test]
+    fn a_custom_hull_and_the_rao_command_give_the_runs_raos() {
+        let custom = HullSpec {
+            name: "custom".into(),
+            offsets_csv: DTMB5415_OFFSETS.into(),
+            draft_m: Some(6.15),
+            kg_m: Some(7.555),
+            kxx_m: Some(0.37 * 19.06),
+            kyy_m: Some(0.25 * 142.0),
+            kzz_m: Some(0.25 * 142.0),
+            bilge_keels: Some(BilgeKeels { length_m: 0.25 * 142.0, breadth_m: 0.6 }),
+            ..Default::default()
+        };
+        let (a, b) = (resolve(&custom).unwrap().strip_ship().unwrap(), Ship::dtmb5415());
+        let rad = a.radiation_table(&crate::seakeeping::strip::default_omega_grid());
+        let rad_b = b.radiation_table(&crate::seakeeping::strip::default_omega_grid());
+        let mut sc = Scenario::default();
+        sc.ship.hull = custom;
+        let table = sc.rao_table().unwrap();
+        let grid = sc.seakeeping.grid;
+        let (w, u, beta) = (grid.omegas()[17], grid.speeds()[4], grid.headings()[9]);
+        let ra = crate::seakeeping::strip::response(&a, &rad, w, u, beta, grid.roll_wave_amplitude_m);
+        let rb = crate::seakeeping::strip::response(&b, &rad_b, w, u, beta, grid.roll_wave_amplitude_m);
+        assert_eq!(format!("{ra:?}"), format!("{rb:?}"));
+        let t = table.interpolate(w, u, beta);
+        for (x, y) in [(t.heave, ra.heave), (t.pitch, ra.pitch), (t.roll, ra.roll)] {
+            assert!((x - y).norm() <= 1e-12 * y.norm().max(1e-9), "{x} {y}");
+        }
+    }
+
+    /// A mass instead of a draft: the 5415 floats at Table 5.1's 7e6 kg with rho V = m to 1e-9.
+    #[test]
+    fn the_draft_of_a_given_mass() {
+        let h = resolve(&HullSpec { mass_kg: Some(7.0e6), ..Default::default() }).unwrap();
+        assert!((h.mass_kg / 7.0e6 - 1.0).abs() < 1e-9, "{}", h.mass_kg);
+        assert!(h.draft_m > 5.0 && h.draft_m < 6.15, "{}", h.draft_m);
+    }
+
+    /// Bad hulls name the field, the value and what is allowed; nothing panics.
+    #[test]
+    fn bad_hulls_name_the_field() {
+        let check = |spec: HullSpec| {
+            let mut v = Validator::new();
+            v.section("ship.hull", |v| spec.validate(v, 1025.0));
+            v.finish().unwrap_err().to_string()
+        };
+        let e = check(HullSpec { name: "titanic".into(), ..Default::default() });
+        assert!(e.contains("ship.hull.name = titanic") && e.contains("dtmb5415, wigley, custom"), "{e}");
+        let e = check(HullSpec { name: "custom".into(), ..Default::default() });
+        assert!(e.contains("ship.hull.offsets_csv") && e.contains("needs its offsets"), "{e}");
+        let bad = DTMB5415_OFFSETS.replacen("0,0.0000,-2.750,0.000", "0,0.0000,-2.750,abc", 1);
+        let e = check(HullSpec { name: "custom".into(), offsets_csv: bad, ..Default::default() });
+        assert!(e.contains("ship.hull.offsets_csv") && e.contains("'abc' is not a number") && e.contains("line "), "{e}");
+        let e = check(HullSpec { name: "custom".into(), offsets_csv: DTMB5415_OFFSETS.into(), draft_m: Some(6.15), ..Default::default() });
+        assert!(e.contains("ship.hull.kg_m"), "{e}");
+        let e = check(HullSpec { draft_m: Some(40.0), ..Default::default() });
+        assert!(e.contains("ship.hull.draft_m = 40") && e.contains("up to 9.225"), "{e}");
+        let e = check(HullSpec { draft_m: Some(6.15), mass_kg: Some(7e6), ..Default::default() });
+        assert!(e.contains("ship.hull.mass_kg") && e.contains("not both"), "{e}");
+        let e = check(HullSpec { mass_kg: Some(1e12), ..Default::default() });
+        assert!(e.contains("ship.hull.mass_kg") && e.contains("must be from 0 to"), "{e}");
+        // KG above the metacentre: the strip-theory hull refuses it and says why.
+        let e = check(HullSpec { kg_m: Some(12.0), ..Default::default() });
+        assert!(e.contains("GM_T") && e.contains("unstable"), "{e}");
+        let e = check(HullSpec { shaft_y_m: Some([30.0, -5.0]), ..Default::default() });
+        assert!(e.contains("ship.hull.shaft_y_m.0 = 30"), "{e}");
+    }
+
+    /// `as_printed.table_5_ship` gives Tables 5.1/5.5's L, m and x_p; off, the hull's.
+    #[test]
+    fn the_rigid_body_of_the_hull_or_of_table_5() {
+        let h = resolve(&HullSpec::default()).unwrap();
+        let on = AsPrintedParams { table_5_ship: true, ..Default::default() };
+        assert_eq!(h.rigid_body(&on), TABLE_5_SHIP);
+        let off = h.rigid_body(&AsPrintedParams::default());
+        assert_eq!((off.length_m, off.mass_kg, off.rudder_x_aft_m), (142.0, h.mass_kg, h.rudder_x_aft_m));
+    }
+}
