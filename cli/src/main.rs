@@ -788,8 +788,10 @@ fn real_main() -> Result<(), Failure> {
                     )
                     .into());
                 }
+                check_figures(&path, &sections)?;
             } else if let Some(path) = out {
                 std::fs::write(&path, &text).map_err(|e| format!("{path}: {e}"))?;
+                write_figures(&path, &sections)?;
             } else {
                 emit(&text)?;
             }
@@ -977,6 +979,62 @@ impl Progress {
 
 /// Exit status: 0 on success and when standard output is closed by its reader (`| head`);
 /// 1 with a message on stderr for every error; 2 for a command line clap refuses.
+/// The directory of a validation report's figures: docs/validation.md -> docs/validation/.
+fn figure_dir(report: &str) -> std::path::PathBuf {
+    std::path::Path::new(report).parent().unwrap_or(std::path::Path::new("")).join(aes_core::validation::FIGURE_DIR)
+}
+
+/// Writes the report's figures beside it, and removes figures it no longer makes.
+fn write_figures(report: &str, sections: &[aes_core::validation::Section]) -> Result<(), String> {
+    let dir = figure_dir(report);
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let made: Vec<String> = sections.iter().flat_map(|s| &s.figures).map(|f| format!("{}.svg", f.name)).collect();
+    for f in sections.iter().flat_map(|s| &s.figures) {
+        let p = dir.join(format!("{}.svg", f.name));
+        std::fs::write(&p, &f.svg).map_err(|e| format!("{}: {e}", p.display()))?;
+    }
+    for name in stray_figures(&dir, &made)? {
+        let p = dir.join(&name);
+        std::fs::remove_file(&p).map_err(|e| format!("{}: {e}", p.display()))?;
+    }
+    Ok(())
+}
+
+/// SVG files in `dir` the report does not make.
+fn stray_figures(dir: &std::path::Path, made: &[String]) -> Result<Vec<String>, String> {
+    let mut out = Vec::new();
+    for e in std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))? {
+        let name = e.map_err(|e| e.to_string())?.file_name().to_string_lossy().into_owned();
+        if name.ends_with(".svg") && !made.contains(&name) {
+            out.push(name);
+        }
+    }
+    out.sort();
+    Ok(out)
+}
+
+/// Fails when a committed figure differs from the one the report makes now, is missing, or is
+/// one the report no longer makes.
+fn check_figures(report: &str, sections: &[aes_core::validation::Section]) -> Result<(), String> {
+    let dir = figure_dir(report);
+    let mut made = Vec::new();
+    for f in sections.iter().flat_map(|s| &s.figures) {
+        let p = dir.join(format!("{}.svg", f.name));
+        let shown = p.display().to_string();
+        let old = read_bounded(&shown, 8 << 20, "a validation figure")
+            .map_err(|e| format!("{e} (run ./build.sh validate and commit the figures)"))?;
+        if old != f.svg {
+            return Err(format!("{shown} is stale (run ./build.sh validate and commit it)"));
+        }
+        made.push(format!("{}.svg", f.name));
+    }
+    let stray = stray_figures(&dir, &made)?;
+    if !stray.is_empty() {
+        return Err(format!("{}: figures the report no longer makes: {}", dir.display(), stray.join(", ")));
+    }
+    Ok(())
+}
+
 fn main() -> ExitCode {
     match real_main() {
         Ok(()) | Err(Failure::PipeClosed) => ExitCode::SUCCESS,
