@@ -287,7 +287,7 @@ fn checked_range((a, b): (f64, f64), title: &str) -> Result<(f64, f64), String> 
     }
 }
 
-/// The finite data's extent; (0, 1) for none, widened around a constant.
+/// The finite data's extent with a 4 % margin; (0, 1) for none, widened around a constant.
 fn data_range(v: impl Iterator<Item = f64>) -> (f64, f64) {
     let (lo, hi) =
         v.filter(|x| x.is_finite()).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
@@ -297,7 +297,9 @@ fn data_range(v: impl Iterator<Item = f64>) -> (f64, f64) {
         let d = 0.5 * lo.abs().max(1.0);
         (lo - d, hi + d)
     } else {
-        (lo, hi)
+        // A margin, so that a level at the data's edge is not hidden by the frame.
+        let m = 0.04 * (hi - lo);
+        (lo - m, hi + m)
     }
 }
 
