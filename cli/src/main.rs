@@ -245,7 +245,8 @@ enum Cmd {
         sets: Vec<String>,
     },
     /// Measure simulated seconds per wall-clock second on a preset (default: startup), or
-    /// `seakeeping`: the time to build the default RAO tables of the DTMB 5415.
+    /// `seakeeping`: the time to build the default RAO tables of the DTMB 5415 (and, with
+    /// --hull, of that hull beside it, in the same run).
     Bench {
         /// Preset to time.
         #[arg(default_value = "startup")]
@@ -253,6 +254,10 @@ enum Cmd {
         /// Repetitions (the best is reported).
         #[arg(long, default_value_t = 3)]
         repeat: u32,
+        /// `bench seakeeping`: an embedded hull's name or an offsets CSV to time beside the 5415
+        /// (its loading: --set ship.hull.draft_m=..., ship.hull.kg_m=...).
+        #[arg(long)]
+        hull: Option<String>,
         /// Override one parameter (repeatable).
         #[arg(long = "set", value_name = "PATH=VALUE")]
         sets: Vec<String>,
@@ -826,8 +831,10 @@ fn real_main() -> Result<(), Failure> {
                     )
                     .into());
                 }
+                check_figures(&path, &sections)?;
             } else if let Some(path) = out {
                 std::fs::write(&path, &text).map_err(|e| format!("{path}: {e}"))?;
+                write_figures(&path, &sections)?;
             } else {
                 emit(&text)?;
             }
@@ -835,30 +842,64 @@ fn real_main() -> Result<(), Failure> {
                 return Err(format!("{} row(s) outside their tolerance:\n{}", failed.len(), failed.join("\n")).into());
             }
         }
-        Cmd::Bench { name, repeat, sets } if name == "seakeeping" => {
-            let mut best = (f64::INFINITY, f64::INFINITY);
+        Cmd::Bench { name, repeat, hull, sets } if name == "seakeeping" => {
             let grid = SeakeepingGrid::default();
-            for _ in 0..repeat.max(1) {
+            // The other hull's resolved definition (the scenario's `ship.hull` with --hull and --set).
+            let other = match &hull {
+                None => None,
+                Some(h) => {
+                    let mut sc = aes_core::Scenario::default();
+                    sc.ship.hull = if aes_core::ship_hull::HULL_NAMES.contains(&h.as_str()) && h != "custom" {
+                        aes_core::ship_hull::HullSpec { name: h.clone(), ..Default::default() }
+                    } else {
+                        let text =
+                            read_bounded(h, aes_core::hull_sections::MAX_HULL_BYTES as u64, "a hull offsets file")?;
+                        aes_core::ship_hull::HullSpec { name: "custom".into(), offsets_csv: text, ..Default::default() }
+                    };
+                    for s in &sets {
+                        let (p, v) = s.split_once('=').ok_or_else(|| format!("--set '{}': expected PATH=VALUE", shorten(s)))?;
+                        sc = sc.with_override(p.trim(), v.trim()).map_err(|e| e.to_string())?;
+                    }
+                    Some(sc.ship_hull()?.strip_ship()?)
+                }
+            };
+            let five = Ship::dtmb5415();
+            // Best of `repeat`, the two hulls alternating so that both see the same machine.
+            let time = |ship: &Ship| {
                 let t0 = Instant::now();
-                let ship = Ship::dtmb5415();
                 let rad = ship.radiation_table(&default_omega_grid());
                 let t1 = Instant::now();
-                let tab = RaoTable::from_radiation(&ship, &rad, &grid);
-                let t2 = Instant::now();
-                std::hint::black_box(tab);
-                best.0 = best.0.min((t1 - t0).as_secs_f64());
-                best.1 = best.1.min((t2 - t1).as_secs_f64());
+                std::hint::black_box(RaoTable::from_radiation(ship, &rad, &grid));
+                ((t1 - t0).as_secs_f64(), t1.elapsed().as_secs_f64())
+            };
+            let (mut best, mut best_other) = ((f64::INFINITY, f64::INFINITY), (f64::INFINITY, f64::INFINITY));
+            for _ in 0..repeat.max(1) {
+                let t = time(&five);
+                best = (best.0.min(t.0), best.1.min(t.1));
+                if let Some(o) = &other {
+                    let t = time(o);
+                    best_other = (best_other.0.min(t.0), best_other.1.min(t.1));
+                }
             }
-            let _ = sets;
-            let out = serde_json::json!({
-                "workload": "DTMB 5415: sectional coefficients of 29 strips at 48 encounter frequencies, then RAOs and drift on the 40 x 6 x 13 grid",
+            let mut out = serde_json::json!({
+                "workload": format!("DTMB 5415: sectional coefficients of {} strips at 48 encounter frequencies, then RAOs and drift on the 40 x 6 x 13 grid", five.strips.len()),
                 "sections_s": best.0,
                 "rao_grid_s": best.1,
                 "total_s": best.0 + best.1,
             });
+            if let Some(o) = &other {
+                out["hull"] = serde_json::json!({
+                    "strips": o.strips.len(),
+                    "sections_s": best_other.0,
+                    "rao_grid_s": best_other.1,
+                    "total_s": best_other.0 + best_other.1,
+                    // Issue 15's measure: this hull's table build over the 5415's, same run.
+                    "over_dtmb5415": (best_other.0 + best_other.1) / (best.0 + best.1),
+                });
+            }
             emit_json(&out)?;
         }
-        Cmd::Bench { name, repeat, sets } => {
+        Cmd::Bench { name, repeat, sets, .. } => {
             let sc = load(&format!("preset:{name}"), &sets)?;
             let mut best = f64::INFINITY;
             let mut steps = 0;
@@ -1015,6 +1056,62 @@ impl Progress {
 
 /// Exit status: 0 on success and when standard output is closed by its reader (`| head`);
 /// 1 with a message on stderr for every error; 2 for a command line clap refuses.
+/// The directory of a validation report's figures: docs/validation.md -> docs/validation/.
+fn figure_dir(report: &str) -> std::path::PathBuf {
+    std::path::Path::new(report).parent().unwrap_or(std::path::Path::new("")).join(aes_core::validation::FIGURE_DIR)
+}
+
+/// Writes the report's figures beside it, and removes figures it no longer makes.
+fn write_figures(report: &str, sections: &[aes_core::validation::Section]) -> Result<(), String> {
+    let dir = figure_dir(report);
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let made: Vec<String> = sections.iter().flat_map(|s| &s.figures).map(|f| format!("{}.svg", f.name)).collect();
+    for f in sections.iter().flat_map(|s| &s.figures) {
+        let p = dir.join(format!("{}.svg", f.name));
+        std::fs::write(&p, &f.svg).map_err(|e| format!("{}: {e}", p.display()))?;
+    }
+    for name in stray_figures(&dir, &made)? {
+        let p = dir.join(&name);
+        std::fs::remove_file(&p).map_err(|e| format!("{}: {e}", p.display()))?;
+    }
+    Ok(())
+}
+
+/// SVG files in `dir` the report does not make.
+fn stray_figures(dir: &std::path::Path, made: &[String]) -> Result<Vec<String>, String> {
+    let mut out = Vec::new();
+    for e in std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))? {
+        let name = e.map_err(|e| e.to_string())?.file_name().to_string_lossy().into_owned();
+        if name.ends_with(".svg") && !made.contains(&name) {
+            out.push(name);
+        }
+    }
+    out.sort();
+    Ok(out)
+}
+
+/// Fails when a committed figure differs from the one the report makes now, is missing, or is
+/// one the report no longer makes.
+fn check_figures(report: &str, sections: &[aes_core::validation::Section]) -> Result<(), String> {
+    let dir = figure_dir(report);
+    let mut made = Vec::new();
+    for f in sections.iter().flat_map(|s| &s.figures) {
+        let p = dir.join(format!("{}.svg", f.name));
+        let shown = p.display().to_string();
+        let old = read_bounded(&shown, 8 << 20, "a validation figure")
+            .map_err(|e| format!("{e} (run ./build.sh validate and commit the figures)"))?;
+        if old != f.svg {
+            return Err(format!("{shown} is stale (run ./build.sh validate and commit it)"));
+        }
+        made.push(format!("{}.svg", f.name));
+    }
+    let stray = stray_figures(&dir, &made)?;
+    if !stray.is_empty() {
+        return Err(format!("{}: figures the report no longer makes: {}", dir.display(), stray.join(", ")));
+    }
+    Ok(())
+}
+
 fn main() -> ExitCode {
     match real_main() {
         Ok(()) | Err(Failure::PipeClosed) => ExitCode::SUCCESS,

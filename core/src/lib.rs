@@ -35,6 +35,7 @@ pub mod speed_control;
 pub mod stability;
 pub mod stats;
 pub mod surge;
+pub mod svg_plot;
 pub mod units;
 pub mod validate;
 pub mod validation;
