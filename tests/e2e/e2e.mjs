@@ -678,7 +678,7 @@ await check('hull: a broken offsets file is refused with its line number, and th
   await p.setInputFiles('#f-ship-hull-offsets_csv', file('broken.csv', brokenCsv));
   await p.waitForFunction(() => document.getElementById('f-ship-hull-offsets_csv-err').textContent, null, { timeout: 10000 });
   const err = await p.textContent('#f-ship-hull-offsets_csv-err');
-  assert(/line 4/.test(err) && /oops/.test(err), `error: ${err}`);
+  assert(/^broken\.csv: line 4/.test(err) && /oops/.test(err), `error: ${err}`);
   assert((await p.getAttribute('#f-ship-hull-offsets_csv', 'aria-invalid')) === 'true', 'file field not marked');
   await p.waitForTimeout(300);
   assert((await p.evaluate(() => JSON.stringify(window.__hullPanel.sheet))) === before, 'the hull changed');
@@ -689,7 +689,13 @@ await check('hull: a broken offsets file is refused with its line number, and th
 await check('hull: a custom hull too large for a link is offered as a scenario file, which loads back', async () => {
   const p = hullPage;
   const big = readFileSync(fileURLToPath(new URL('../../core/data/dtmb5415_offsets.csv', import.meta.url)), 'utf8');
-  await p.setInputFiles('#f-ship-hull-offsets_csv', file('dtmb5415-copy.csv', big));
+  // Dropped on the page (a synthetic drop with the file in its DataTransfer).
+  await p.evaluate((text) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([text], 'dtmb5415-copy.csv', { type: 'text/csv' }));
+    document.getElementById('results').dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  }, big);
+  await p.waitForFunction(() => /dtmb5415-copy/.test(document.getElementById('hull').selectedOptions[0].text), null, { timeout: 10000 });
   await setField(p, 'ship.hull.draft_m', 6.15);
   await setField(p, 'ship.hull.kg_m', 7.555);
   await hullDrawn(p, 'dtmb5415-copy.csv');

@@ -394,7 +394,7 @@ export class HullPicker {
 
   // Validates; a refused hull file (name or offsets) leaves the scenario as it was; refusals of the
   // loading fields (a custom hull without draft or KG) are shown at those fields, the hull kept.
-  async accept(sc, said, { name, file } = {}) {
+  async accept(sc, said, { name, file, source } = {}) {
     let fields = [];
     try { await this.validate(sc); } catch (e) {
       if (e.cancelled) return false;
@@ -402,13 +402,14 @@ export class HullPicker {
     }
     const fatal = fields.filter((f) => f.path === FILE_FIELD || f.path === 'ship.hull.name' || f.path === '(file)' || f.path === '(scenario)');
     if (fatal.length) {
-      this.fileError(fatal.map((f) => (f.path === FILE_FIELD ? f.message : fieldLine(f))).join('; '));
+      this.fileError(`${file || source || 'the hull'}: ${fatal.map((f) => (f.path === FILE_FIELD ? f.message : fieldLine(f))).join('; ')}`);
       this.sync(this.form.scenario);
       this.say('The file was not used: the hull stays as it was (the reason is under the file field).', true);
       $(FILE_INPUT).focus();
       return false;
     }
     if (file) this.custom = { spec: clone(sc.ship.hull), file };
+    else if (source && sc.ship.hull && sc.ship.hull.name === 'custom') this.custom = { spec: clone(sc.ship.hull), file: `from ${source}` };
     this.sync(sc);
     this.commit(sc, { name });
     this.form.markErrors(fields);
@@ -449,6 +450,6 @@ export class HullPicker {
     try { sc = JSON.parse(text); } catch (e) { this.fileError(`${fileName}: not valid JSON (${e.message})`); return; }
     if (!sc || typeof sc !== 'object' || !sc.ship) { this.fileError(`${fileName}: neither hull offsets (CSV) nor a scenario (JSON with a ship)`); return; }
     const name = typeof sc.name === 'string' && this.form.has(sc.name) ? sc.name : this.form.name;
-    await this.accept(sc, `Scenario ${fileName} loaded.`, { name });
+    await this.accept(sc, `Scenario ${fileName} loaded.`, { name, source: fileName });
   }
 }

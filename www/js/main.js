@@ -26,11 +26,10 @@ let hullPicker = null;
 // The hull panel; its sheet also gives the loading fields their placeholders (the hull's own
 // values) and the hub height its h0.
 const hullPanel = new HullPanel($('hull-box'), () => client, {
-  onSheet: (h) => form && form.showHullValues({
-    'ship.hull.draft_m': `${num(h.draft_m)} (now)`, 'ship.hull.mass_kg': `${num(h.mass_kg)} (now)`, 'ship.hull.kg_m': `${num(h.kg_m)} (now)`,
-    'ship.hull.kxx_m': `${num(h.k_m[0])} (now)`, 'ship.hull.kyy_m': `${num(h.k_m[1])} (now)`, 'ship.hull.kzz_m': `${num(h.k_m[2])} (now)`,
-    'ship.hull.hub_above_base_m': `${num(h.hub_above_base_m)} (now)`,
-  }, { 'ship.hull.hub_above_base_m': ` Now h0 = ${num(h.draft_m)} - ${num(h.hub_above_base_m)} = ${num(h.hub_depth_m)} m.` }),
+  // Placeholders as numbers one could type (no thousands separators).
+  onSheet: (h) => form && form.showHullValues(Object.fromEntries([
+    ['draft_m', h.draft_m], ['mass_kg', h.mass_kg], ['kg_m', h.kg_m], ['kxx_m', h.k_m[0]], ['kyy_m', h.k_m[1]], ['kzz_m', h.k_m[2]], ['hub_above_base_m', h.hub_above_base_m],
+  ].map(([k, v]) => [`ship.hull.${k}`, `${Math.abs(v) >= 1000 ? String(Math.round(v)) : num(v)} (now)`])), { 'ship.hull.hub_above_base_m': ` Now h0 = ${num(h.draft_m)} - ${num(h.hub_above_base_m)} = ${num(h.hub_depth_m)} m.` }),
 });
 // The picker and the panel follow the scenario in the form.
 function refreshHull() {
