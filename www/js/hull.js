@@ -283,9 +283,10 @@ export class HullPanel {
     try {
       ({ sheet } = await this.client().request(REQUEST.hullSheet, { scenario: JSON.stringify(scenario) }));
     } catch (e) {
-      if (key !== this.key || e.cancelled) return null;
-      this.key = null;
-      this.note.textContent = `The hull's fields are not complete or not valid (${e.fields && e.fields.length ? e.fields.slice(0, 2).map(fieldLine).join('; ') : e.message}); ${this.sheet ? 'showing the last valid hull' : 'nothing to draw yet'}.`;
+      if (key !== this.key) return null;
+      this.key = null; // asked again next time (a cancel ends the worker with the request)
+      if (e.cancelled) return null;
+      this.note.textContent = `The hull cannot be drawn (${e.fields && e.fields.length ? e.fields.slice(0, 2).map(fieldLine).join('; ') : e.message}); ${this.sheet ? 'showing the last valid hull' : 'nothing to draw yet'}.`;
       this.note.classList.add('error');
       return null;
     }
