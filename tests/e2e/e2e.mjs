@@ -37,7 +37,8 @@ async function open(url, ctx = context) {
 }
 async function setField(page, path, value) {
   const sel = '#f-' + path.replace(/\./g, '-');
-  await page.$eval('#all-fields', (d) => { d.open = true; }); // a field the study does not show on top
+  // A field the study does not show on top: open the folds it is in.
+  await page.$eval(sel, (e) => { for (let d = e.closest('details'); d; d = d.parentElement.closest('details')) d.open = true; });
   if ((await page.$eval(sel, (e) => e.tagName)) === 'SELECT') await page.selectOption(sel, String(value));
   else await page.fill(sel, String(value));
   await page.dispatchEvent(sel, 'change');
@@ -589,6 +590,152 @@ await check('live views respect prefers-reduced-motion: the power arrows hold st
   await p.close();
   await calm.close();
 });
+// The hull (issue 15): picker, body plan, profile, hydrostatics, custom offsets through the Rust
+// parser, links, and the panel at the three sizes. A context of its own (its own stored edits).
+const hullCtx = await browser.newContext({ viewport: { width: 1366, height: 768 }, bypassCSP: true, acceptDownloads: true });
+const hullRow = (p, start) => p.$$eval('#hull-table tbody tr', (rows, s) => {
+  const r = rows.find((x) => x.cells[0].textContent.startsWith(s));
+  return r ? Number(r.cells[1].textContent.replace(/,/g, '')) : NaN;
+}, start);
+const hullDrawn = (p, name) => p.waitForFunction((n) => window.__hullPanel && window.__hullPanel.drawn && window.__hullPanel.drawn.name.includes(n), name, { timeout: 20000 });
+// Pixels of a canvas that are not white (a drawing, not an empty box).
+const inked = (p, sel) => p.$eval(sel, (c) => {
+  const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+  let n = 0;
+  for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 200 || d[i + 1] < 200 || d[i + 2] < 200)) n++;
+  return n;
+});
+// The Wigley formula sampled at a fifth of the embedded scale (L 20 m, B 2 m, T 1.25 m), vertical
+// sides up to 2 m: a small custom hull in the long format, stations 1..9 (no empty end stations).
+const L = 20, B = 2, T = 1.25;
+const wigleyCsv = ['# Wigley hull sampled by the e2e test', 'station_index,x_m,z_m,half_breadth_m'];
+for (let i = 1; i <= 9; i++) {
+  const x = (i * L) / 10, xi = (2 * x) / L - 1;
+  for (let j = 0; j <= 8; j++) {
+    const z = (j * 2) / 8, d = Math.max(0, T - z) / T;
+    wigleyCsv.push(`${i},${x},${z},${((B / 2) * (1 - xi * xi) * (1 - d * d)).toFixed(4)}`);
+  }
+}
+const brokenCsv = 'station_index,x_m,z_m,half_breadth_m\n1,2,0,0\n1,2,1,0.5\n1,2,oops,0.7\n';
+const file = (name, text) => ({ name, mimeType: 'text/csv', buffer: Buffer.from(text) });
+const hullPage = await open(base + '#v=1&preset=head-seas-ss6', hullCtx);
+await check('hull: picking the Wigley draws its body plan and profile and gives its hydrostatics (volume = (4/9) L B T x 0.9945)', async () => {
+  const p = hullPage;
+  await hullDrawn(p, 'DTMB 5415');
+  assert((await p.$$eval('#hull option', (o) => o.map((x) => x.value))).join() === 'dtmb5415,wigley,custom', 'hull choices');
+  await p.selectOption('#hull', 'wigley');
+  await hullDrawn(p, 'Wigley');
+  const [l, b, t, v] = [await hullRow(p, 'Length'), await hullRow(p, 'Beam'), await hullRow(p, 'Draft'), await hullRow(p, 'Displaced volume')];
+  const want = (4 / 9) * l * b * t * 0.9945;
+  assert(Math.abs(v - want) / want < 0.01, `volume ${v} m^3, want about ${want.toFixed(0)} (L ${l}, B ${b}, T ${t})`);
+  assert(Math.abs(v - 2763) < 30, `volume ${v} m^3 at T = ${t} m`);
+  const d = await p.evaluate(() => window.__hullPanel.drawn);
+  assert(d.bodyPlan.aft >= 5 && d.bodyPlan.fore >= 5, `body plan sections: ${JSON.stringify(d.bodyPlan)}`);
+  for (const c of ['#hull-bodyplan', '#hull-profile']) {
+    assert((await inked(p, c)) > 2000, `${c} is (nearly) empty`);
+    assert((await p.getAttribute(c, 'role')) === 'img' && /Wigley/.test(await p.getAttribute(c, 'aria-label')), `${c}: role or label`);
+  }
+  const units = await p.$$eval('#hull-table tbody tr', (rows) => rows.filter((r) => !r.cells[2].textContent && !/none/.test(r.cells[1].textContent)).map((r) => r.cells[0].textContent));
+  assert(!units.length, `rows without a unit: ${units}`);
+  // The hub height is the study's knob; h0 follows the hull's draft.
+  const h0 = await p.textContent('#f-ship-hull-hub_above_base_m-derived');
+  assert(/h0 = 6\.25 - 2\.65 = 3\.60 m/.test(h0), `h0 line: ${h0}`);
+});
+await check('hull: a share link with the Wigley round-trips (by name)', async () => {
+  const p = hullPage;
+  await p.click('#share');
+  const url = await p.inputValue('#share-url');
+  const d = JSON.parse(Buffer.from(new URL(url).hash.match(/&d=([^&]+)/)[1], 'base64url').toString());
+  assert(d.ship.hull.name === 'wigley' && !d.ship.hull.offsets_csv && url.length < 300, `link: ${url}`);
+  const other = await open(url, hullCtx);
+  await hullDrawn(other, 'Wigley');
+  assert((await other.inputValue('#hull')) === 'wigley', 'hull not restored');
+  await other.waitForFunction(() => /^Done/.test(document.getElementById('status').textContent), null, { timeout: 90000 });
+  await other.click('#more-plots-box summary');
+  await other.waitForFunction(() => [...document.querySelectorAll('#more-plots h3')].filter((h) => /RAOs/.test(h.textContent)).length >= 2, null, { timeout: 60000 });
+  const titles = await other.$$eval('#more-plots h3', (hs) => hs.map((h) => h.textContent).filter((t) => /RAOs/.test(t)));
+  assert(titles.every((t) => t.startsWith('Wigley RAOs')), `RAO plots: ${titles.join(' | ')}`);
+  await other.close();
+});
+await check('hull: a custom offsets file loads through the Rust parser; it asks for draft and KG, then draws', async () => {
+  const p = hullPage;
+  await p.setInputFiles('#f-ship-hull-offsets_csv', file('small-wigley.csv', wigleyCsv.join('\n')));
+  await p.waitForFunction(() => document.getElementById('f-ship-hull-draft_m').getAttribute('aria-invalid') === 'true', null, { timeout: 10000 });
+  assert((await p.inputValue('#hull')) === 'custom', 'the hull select does not show the custom hull');
+  assert(/draft/.test(await p.textContent('#f-ship-hull-draft_m-err')), 'no error at the draft');
+  await setField(p, 'ship.hull.draft_m', T);
+  await setField(p, 'ship.hull.kg_m', 1.0);
+  await setField(p, 'ship.hull.hub_above_base_m', 0.2);
+  await hullDrawn(p, 'small-wigley.csv');
+  const [l, v] = [await hullRow(p, 'Length'), await hullRow(p, 'Displaced volume')];
+  assert(Math.abs(l - 16) < 1e-6, `Lpp ${l} (stations from 2 to 18 m)`);
+  assert(v > 15 && v < 25, `volume ${v} m^3`);
+  assert(!(await p.$eval('#run', (b) => b.disabled)), 'Run is disabled with a complete custom hull');
+});
+await check('hull: a broken offsets file is refused with its line number, and the hull stays', async () => {
+  const p = hullPage;
+  const before = await p.evaluate(() => JSON.stringify(window.__hullPanel.sheet));
+  await p.setInputFiles('#f-ship-hull-offsets_csv', file('broken.csv', brokenCsv));
+  await p.waitForFunction(() => document.getElementById('f-ship-hull-offsets_csv-err').textContent, null, { timeout: 10000 });
+  const err = await p.textContent('#f-ship-hull-offsets_csv-err');
+  assert(/^broken\.csv: line 4/.test(err) && /oops/.test(err), `error: ${err}`);
+  assert((await p.getAttribute('#f-ship-hull-offsets_csv', 'aria-invalid')) === 'true', 'file field not marked');
+  await p.waitForTimeout(300);
+  assert((await p.evaluate(() => JSON.stringify(window.__hullPanel.sheet))) === before, 'the hull changed');
+  assert((await p.inputValue('#f-ship-hull-draft_m')) === String(T), 'the loading was lost');
+  await p.$eval('#hull-pick', (e) => e.scrollIntoView());
+  await p.screenshot({ path: `${shots}/hull-file-error.png` });
+});
+await check('hull: a custom hull too large for a link is offered as a scenario file, which loads back', async () => {
+  const p = hullPage;
+  const big = readFileSync(fileURLToPath(new URL('../../core/data/dtmb5415_offsets.csv', import.meta.url)), 'utf8');
+  // Dropped on the page (a synthetic drop with the file in its DataTransfer).
+  await p.evaluate((text) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([text], 'dtmb5415-copy.csv', { type: 'text/csv' }));
+    document.getElementById('results').dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  }, big);
+  await p.waitForFunction(() => /dtmb5415-copy/.test(document.getElementById('hull').selectedOptions[0].text), null, { timeout: 10000 });
+  await setField(p, 'ship.hull.draft_m', 6.15);
+  await setField(p, 'ship.hull.kg_m', 7.555);
+  await hullDrawn(p, 'dtmb5415-copy.csv');
+  await p.click('#share');
+  assert(!(await p.$eval('#share-too-long', (e) => e.hidden)), 'no "too large" message');
+  assert(await p.$eval('#share-url', (e) => e.hidden), 'a link was offered anyway');
+  assert(/characters/.test(await p.textContent('#share-too-long-text')), 'message');
+  const [dl] = await Promise.all([p.waitForEvent('download'), p.click('#share-file')]);
+  const text = readFileSync(await dl.path(), 'utf8');
+  const sc = JSON.parse(text);
+  assert(sc.ship.hull.name === 'custom' && sc.ship.hull.offsets_csv.length > 20000, 'the file lacks the hull');
+  await p.selectOption('#hull', 'dtmb5415');
+  await hullDrawn(p, 'DTMB 5415');
+  await p.setInputFiles('#f-ship-hull-offsets_csv', { name: 'scenario.json', mimeType: 'application/json', buffer: Buffer.from(text) });
+  await p.waitForFunction(() => document.getElementById('hull').value === 'custom', null, { timeout: 10000 });
+  await hullDrawn(p, 'custom hull');
+  assert(Math.abs((await hullRow(p, 'Draft')) - 6.15) < 1e-9, 'draft of the loaded scenario');
+});
+for (const [w, h] of SIZES) {
+  await check(`hull panel at ${w}x${h}: no overflow or overlap, axes in metres, no serious axe violation (screenshot)`, async () => {
+    const p = await open(base + '#v=1&preset=head-seas-ss6', hullCtx);
+    await p.setViewportSize({ width: w, height: h });
+    await p.selectOption('#hull', 'wigley');
+    await hullDrawn(p, 'Wigley');
+    await p.waitForTimeout(300);
+    assertLayout(await layout(p), 'hull panel');
+    const d = await p.evaluate(() => window.__hullPanel.drawn);
+    assert(d.bodyPlan.scale_px_per_m > 0 && d.profile.propeller.radius_px > 2, JSON.stringify(d));
+    const v = await axeSerious(p);
+    assert(!v.length, `hull panel: ${v.join(' | ')}`);
+    await p.$eval('#hull-box', (e) => e.scrollIntoView());
+    await p.screenshot({ path: `${shots}/hull-${w}x${h}.png` });
+    await p.selectOption('#hull', 'dtmb5415');
+    await hullDrawn(p, 'DTMB 5415');
+    await p.waitForTimeout(200);
+    await p.$eval('#hull-box', (e) => e.scrollIntoView());
+    await p.screenshot({ path: `${shots}/hull-5415-${w}x${h}.png`, fullPage: w < 500 });
+    await p.close();
+  });
+}
 await check('every study at 1920x1080 (screenshots)', async () => {
   const p = await open(base, wide);
   await p.setViewportSize({ width: 1920, height: 1080 });

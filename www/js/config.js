@@ -3,9 +3,21 @@
 // labels of recorded signals come from signalMeta. Nothing here is a physics value.
 
 // Parameters shown in the form, grouped as a naval engineer thinks of them.
-// [path, label, unit, help, choices?]. The form adds the preset's value to each help line.
+// [path, label, unit, help, choices?, {optional?, derived?}]; a group may go elsewhere than the full
+// form ({into: element id}). Optional fields may be empty (the hull's own value, shown as the
+// placeholder); `derived` adds a line the page fills (h0 under the hub height). The form adds the
+// preset's value to each help line.
 export const FIELDS = [
-  ['Ship and hull', [
+  ['Hull loading and propeller hub', [
+    ['ship.hull.draft_m', 'Draft T', 'm', 'Calm waterline above the baseline, even keel. Give the draft or the mass; empty: the hull\'s own.', null, { optional: true }],
+    ['ship.hull.mass_kg', 'Displaced mass', 'kg', 'Instead of the draft: the draft is solved so that the hull displaces this mass.', null, { optional: true }],
+    ['ship.hull.kg_m', 'Centre of gravity KG', 'm', 'Above the baseline; a custom hull needs it.', null, { optional: true }],
+    ['ship.hull.kxx_m', 'Roll radius of gyration k_xx', 'm', 'Empty: the hull\'s own (custom: 0.37 B).', null, { optional: true }],
+    ['ship.hull.kyy_m', 'Pitch radius of gyration k_yy', 'm', 'Empty: the hull\'s own (custom: 0.25 Lpp).', null, { optional: true }],
+    ['ship.hull.kzz_m', 'Yaw radius of gyration k_zz', 'm', 'Empty: the hull\'s own (custom: 0.25 Lpp).', null, { optional: true }],
+    ['ship.hull.hub_above_base_m', 'Propeller hub above the baseline', 'm', 'The calm-water hub depth is h0 = draft - hub height (ch. 5.3 and 5.4 vary h0).', null, { optional: true, derived: 'h0' }],
+  ], { into: 'hull-loading' }],
+  ['Ship: resistance and maneuvering', [
     ['ship.wetted_area_m2', 'Wetted area', 'm²', 'Table 5.1.'],
     ['ship.drag_coeff', 'Drag coefficient C_r', '-', 'Eq. 2.15, Table 5.1.'],
     ['ship.wake_fraction', 'Wake fraction w', '-', 'Eq. 2.12, Table 5.1.'],
@@ -43,7 +55,6 @@ export const FIELDS = [
     ['sea.components', 'Wave components N_s', '-', 'Ch. 2.5.4.'],
     ['sea.amplitude_m', 'Regular wave amplitude', 'm', '1 ft = 0.3048 m.'],
     ['sea.omega_rad_s', 'Regular wave frequency', 'rad/s', 'Wave length 2 pi g / omega^2.'],
-    ['seakeeping.hub_depth_m', 'Calm-water hub depth h0', 'm', 'Ch. 5.3 and ch. 5.4.1 use different depths.'],
     ['seakeeping.stern_motion', 'Hub depth formula', '', 'Consistent: the stern rises with long waves, so the hub depth swings less than the wave. As printed, eq. 2.57 adds the stern motion with the opposite sign: the depth swings by wave plus motion, and surface effects come far more often (the thesis figures).', [['consistent', 'consistent (stern follows long waves)'], ['thesis_eq_2_57', 'as printed in eq. 2.57']]],
     ['monte_carlo.trials', 'Monte Carlo trials', '-', 'For the Monte Carlo button (ch. 5.4).'],
   ]],
@@ -108,21 +119,21 @@ export const STUDIES = {
   'fuel-regular-seas': { title: 'Fuel in one regular head wave', plots: ['fuel', 'speed', 'motor', 'heave', 'pitch'], params: ['sea.amplitude_m', 'sea.omega_rad_s'],
     watch: 'One regular head wave of 1 ft: fuel power against calm water. After the run the page sweeps wave frequencies and heights (Fig. 5-12, below the run\'s plots).',
     compare: [{ label: 'calm water', set: { 'sea.kind': 'calm' } }] },
-  'head-seas-ss6': { title: 'Head seas, sea state 6: ventilation', plots: ['hr', 'beta', 'motor', 'rpm', 'bus'], params: ['seakeeping.hub_depth_m', 'seakeeping.stern_motion', 'sea.sea_state', 'sim.seed'],
+  'head-seas-ss6': { title: 'Head seas, sea state 6: ventilation', plots: ['hr', 'beta', 'motor', 'rpm', 'bus'], params: ['ship.hull.hub_above_base_m', 'seakeeping.stern_motion', 'sea.sea_state', 'sim.seed'],
     watch: 'h/R against the shaded ventilation band: each time it dips below 1.1 the propeller draws air (orange markers), thrust and torque drop (beta), the propeller races and the motor power falls. Below 1 the disk breaks the surface. Each event is a sudden load rejection for the plant: the turbines overspeed by up to a third and the bus voltage follows them, then both ring for tens of seconds (bus plot), far beyond the 1-2 % they move in these seas when the propellers stay down.',
-    compare: [{ label: 'eq. 2.57 as printed', set: { 'seakeeping.stern_motion': 'thesis_eq_2_57' } }, { label: 'fully loaded (h0 = 6 m)', set: { 'seakeeping.hub_depth_m': 6 } }],
+    compare: [{ label: 'eq. 2.57 as printed', set: { 'seakeeping.stern_motion': 'thesis_eq_2_57' } }, { label: 'fully loaded (hub 0.15 m up: h0 = 6 m)', set: { 'ship.hull.hub_above_base_m': 0.15 } }],
     note: 'The sign of eq. 2.57: as printed, the stern\'s own motion is added to the wave instead of taken from it, so the hub depth swings by wave plus motion and surface effects come several times as often; with the consistent sign the stern rides the long waves of SS6 and a fully loaded ship (h0 = 6 m) keeps its propellers down.' },
-  'as-printed': { title: 'The thesis as printed: head seas SS6', plots: ['heave', 'hr', 'motor', 'rpm', 'bus'], params: ['seakeeping.stern_motion', 'seakeeping.hub_depth_m', 'sim.seed'],
+  'as-printed': { title: 'The thesis as printed: head seas SS6', plots: ['heave', 'hr', 'motor', 'rpm', 'bus'], params: ['seakeeping.stern_motion', 'ship.hull.hub_above_base_m', 'sim.seed'],
     watch: 'Heave first: with Appendix A\'s eq. 5 as printed the destroyer heaves by 16 to 18 m in SS6, and the propellers leave the water (h/R far below the band) again and again; the motor power drops to nothing each time. Compare with the corrected equations, and with eq. 2.57\'s sign alone, which gives the thesis\' ch. 5.3 picture of ventilation and swings of tens of rpm. The bus sits at 9.7 kV (E_a line to line).',
     compare: [{ label: 'corrected, same depth', set: { 'as_printed.doppler_twice': false, 'as_printed.appendix_a_typos': false, 'as_printed.eq_2_47_conjugate': false, 'as_printed.ea_line_to_line': false, 'seakeeping.stern_motion': 'consistent' } }, { label: 'eq. 2.57 as printed only', set: { 'as_printed.doppler_twice': false, 'as_printed.appendix_a_typos': false, 'as_printed.eq_2_47_conjugate': false, 'as_printed.ea_line_to_line': false } }],
     note: 'Every inconsistency of the thesis we settled is a switch in the scenario\'s as_printed section (JSON editor); this preset turns on all that let the run start at 25 knots, plus seakeeping.stern_motion. The two motor switches (Table 2.1\'s P read as poles, eq. 2.5\'s copper-loss torque) are off: with either the motor cannot carry the propeller at 25 knots. docs/validation.md, section "As printed", says what each switch moves.' },
   'turn-360-ss6': { title: 'A full turn in sea state 6', plots: ['track', 'heave', 'pitch', 'hr', 'motor'], params: ['sea.sea_state', 'sea.from_deg', 'sim.seed'],
     watch: 'Heave and pitch are strong in head seas and weak in following seas (Figs. 5-16 to 5-19). The arrow on the track shows where the waves come from.',
     compare: [{ label: 'calm water', preset: 'turn-360' }] },
-  'mc-excess-energy': { title: 'Monte Carlo: excess energy', plots: ['motor', 'hr', 'speed'], params: ['monte_carlo.trials', 'seakeeping.hub_depth_m', 'seakeeping.stern_motion'],
+  'mc-excess-energy': { title: 'Monte Carlo: excess energy', plots: ['motor', 'hr', 'speed'], params: ['monte_carlo.trials', 'ship.hull.hub_above_base_m', 'seakeeping.stern_motion'],
     about: 'Monte Carlo over 100 random seas of 80 s at 25 knots in head seas SS6, with a 4.8 m propeller only 4 m deep (thesis ch. 5.4.1, Figs. 5-20 to 5-23): how much extra energy the motors draw because of surface effects, and how their power spreads over the trials.',
     watch: 'Press Monte Carlo (Run shows one trial): the envelope of motor power, the excess energy per trial and its histogram (Figs. 5-20 to 5-23).' },
-  'mc-arrival': { title: 'Monte Carlo: when the first surface effect arrives', plots: ['hr', 'motor', 'beta'], params: ['monte_carlo.trials', 'seakeeping.hub_depth_m', 'seakeeping.stern_motion'],
+  'mc-arrival': { title: 'Monte Carlo: when the first surface effect arrives', plots: ['hr', 'motor', 'beta'], params: ['monte_carlo.trials', 'ship.hull.hub_above_base_m', 'seakeeping.stern_motion'],
     watch: 'Press Monte Carlo (Run shows one trial): the arrival times of the first surface effect against Rice\'s prediction (Table 5.8, Fig. 5-24).' },
 };
 // What the page calls a study it has no entry for (a new preset): its name.
@@ -254,4 +265,16 @@ export const LIVE = {
     disc: '#1b1b1b', discOut: '#b03a2e', track: '#ffffff', ship: '#f8f9f9', rudder: '#a04000', waveArrow: '#0e6251',
     crest: [214, 234, 248], trough: [21, 67, 96],
   },
+};
+
+// The hull panel and picker (issue 15): display names of the embedded hulls (the list itself comes
+// from hullNames()), the longest share link the page writes (a custom hull's offsets past it go
+// into a scenario file instead), and the drawing's colours (>= 3:1 on white).
+export const HULL = {
+  titles: { dtmb5415: 'DTMB 5415 (destroyer, 142 m)', wigley: 'Wigley (test hull)', custom: 'custom offsets' },
+  maxLinkChars: 8000,
+  // Body plan and profile: the drawing keeps 1:1 scale unless its height would be under this many
+  // pixels; then heights are stretched by a whole factor, said on the axis.
+  minDrawPx: 150,
+  colors: { hull: '#1f3a5f', fill: 'rgba(93, 109, 126, 0.18)', water: '#0b5cad', waterFill: 'rgba(46, 134, 193, 0.12)', prop: '#b03a2e', rudder: '#a04000', axis: '#4a4a4a', grid: '#d5d8dc', text: '#1b1b1b' },
 };

@@ -12,6 +12,13 @@ export function setPath(obj, path, value) {
   for (const k of keys.slice(0, -1)) o = o[k];
   o[keys[keys.length - 1]] = value;
 }
+export function deletePath(obj, path) {
+  const keys = path.split('.');
+  const o = getPath(obj, keys.slice(0, -1).join('.'));
+  if (o && typeof o === 'object') delete o[keys[keys.length - 1]];
+}
+// A value as the form shows it: numbers to 12 significant digits (6.15 - 3.5 shows as 2.65).
+const show = (v) => (typeof v === 'number' ? String(Number(v.toPrecision(12))) : String(v));
 const fieldId = (path) => 'f-' + path.replace(/\./g, '-');
 
 // Dotted paths of the leaves of a link's difference object.
@@ -50,9 +57,9 @@ export class ScenarioForm {
   build() {
     const form = $('form');
     form.replaceChildren();
-    for (const [group, fields] of FIELDS) {
+    for (const [group, fields, where = {}] of FIELDS) {
       const fs = el('fieldset', {}, el('legend', { textContent: group }));
-      for (const [path, label, unit, help, choices] of fields) {
+      for (const [path, label, unit, help, choices, opts = {}] of fields) {
         const id = fieldId(path);
         let input;
         if (choices) {
@@ -62,17 +69,19 @@ export class ScenarioForm {
         }
         input.id = id;
         input.dataset.path = path;
+        if (opts.optional) input.dataset.optional = 'true';
         input.setAttribute('aria-describedby', `${id}-help ${id}-err`);
         input.addEventListener('change', () => this.onFieldChange(input));
         input.addEventListener('input', () => { if (input.tagName === 'INPUT') this.checkNumber(input); });
-        const h = el('div', { className: 'help', id: id + '-help' }, el('span', { textContent: help }), el('span', { className: 'preset-value' }));
+        const h = el('div', { className: 'help', id: id + '-help' }, el('span', { textContent: help }), el('span', { className: 'preset-value' }),
+          ...(opts.derived ? [el('output', { className: 'derived', id: `${id}-derived`, htmlFor: id })] : []));
         const div = el('div', { className: 'field', id: id + '-field' },
           el('label', { htmlFor: id, textContent: unit && unit !== '-' ? `${label} [${unit}]` : label }),
           input, h, el('div', { className: 'ferr', id: id + '-err' }));
         fs.append(div);
         this.home.set(div, fs);
       }
-      form.append(fs);
+      if (where.into) $(where.into).replaceChildren(fs); else form.append(fs);
     }
     const ta = el('textarea', { id: 'f-commands', rows: 6, attrs: { 'aria-label': ORDERS_LABEL, 'aria-describedby': 'f-commands-err' } });
     ta.addEventListener('change', () => {
@@ -104,20 +113,29 @@ export class ScenarioForm {
     const preset = this.preset();
     for (const input of $('controls').querySelectorAll('[data-path]')) {
       const v = getPath(this.scenario, input.dataset.path);
-      input.value = v === undefined ? '' : String(v);
+      input.value = v == null ? '' : show(v);
       const p = getPath(preset, input.dataset.path);
       const opt = input.tagName === 'SELECT' ? [...input.options].find((o) => o.value === String(p)) : null;
-      $(input.id + '-help').querySelector('.preset-value').textContent = p === undefined ? '' : ` Study value: ${opt ? opt.text : p}.`;
+      $(input.id + '-help').querySelector('.preset-value').textContent = p == null ? '' : ` Study value: ${opt ? opt.text : show(p)}.`;
     }
     $('f-commands').value = JSON.stringify(this.scenario.commands, null, 1);
   }
 
   input(path) { return $(fieldId(path)); }
 
+  // The hull's own values (from hullSheet) as placeholders of the empty optional fields, and the
+  // derived line of a field (e.g. h0 under the hub height). values: {path: text}.
+  showHullValues(placeholders, derived) {
+    for (const [path, text] of Object.entries(placeholders)) { const i = this.input(path); if (i) i.placeholder = text; }
+    for (const [path, text] of Object.entries(derived)) { const o = $(fieldId(path) + '-derived'); if (o) o.textContent = text; }
+  }
+
   // A number field that does not hold a number is marked at once (Run waits for it).
+  // An optional field may be empty (the hull's own value).
   checkNumber(input) {
     const v = Number(input.value);
-    const bad = input.value.trim() === '' || !Number.isFinite(v);
+    const empty = input.value.trim() === '';
+    const bad = empty ? !input.dataset.optional : !Number.isFinite(v);
     this.setError(input.dataset.path, bad ? 'must be a number' : '');
     return !bad;
   }
@@ -129,9 +147,13 @@ export class ScenarioForm {
       v = v === 'true' ? true : v === 'false' ? false : v;
     } else {
       if (!this.checkNumber(input)) return;
-      v = Number(v);
+      v = v.trim() === '' ? undefined : Number(v);
     }
-    setPath(this.scenario, path, v);
+    // An emptied optional field: null where the study sets a value (a link carries the change),
+    // else no key at all.
+    if (v === undefined && getPath(this.preset(), path) != null) setPath(this.scenario, path, null);
+    else if (v === undefined) deletePath(this.scenario, path);
+    else setPath(this.scenario, path, v);
     this.setError(path, '');
     this.save();
     this.onEdit();

@@ -1,6 +1,6 @@
 // The page: wires the study picker and form, the worker, the plots, kept runs, share links and the
 // address bar, exports, presentation mode and the stability tab.
-import { DESIGN, DEFAULT_PRESET, SUMMARY_ROWS, STUDIES, DEFAULT_PLOTS, KEY_FIGURES, studyTitle } from './config.js';
+import { DESIGN, DEFAULT_PRESET, SUMMARY_ROWS, STUDIES, DEFAULT_PLOTS, KEY_FIGURES, HULL, studyTitle } from './config.js';
 import { $, el, row, download, fmt } from './dom.js';
 import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
 import { setPhase, isBusy, setResult, getResult, progress, status, notice, etaText, setFormValid } from './state.js';
@@ -12,6 +12,7 @@ import { MonteCarlo, showMonteCarlo } from './montecarlo.js';
 import { StabilityTab } from './stability.js';
 import { DesignTab } from './design.js';
 import { LiveViews } from './live.js';
+import { HullPanel, HullPicker, num } from './hull.js';
 
 const plots = new PlotBox($('plots'), { more: $('more-plots'), moreBox: $('more-plots-box'), sync: 'run' });
 const monteCarlo = new MonteCarlo();
@@ -21,6 +22,22 @@ let client = null;
 let form = null;
 let signals = null;
 let kept = null; // a kept run: {name, columns, summary}
+let hullPicker = null;
+// The hull panel; its sheet also gives the loading fields their placeholders (the hull's own
+// values) and the hub height its h0.
+const hullPanel = new HullPanel($('hull-box'), () => client, {
+  // Placeholders as numbers one could type (no thousands separators).
+  onSheet: (h) => form && form.showHullValues(Object.fromEntries([
+    ['draft_m', h.draft_m], ['mass_kg', h.mass_kg], ['kg_m', h.kg_m], ['kxx_m', h.k_m[0]], ['kyy_m', h.k_m[1]], ['kzz_m', h.k_m[2]], ['hub_above_base_m', h.hub_above_base_m],
+  ].map(([k, v]) => [`ship.hull.${k}`, `${Math.abs(v) >= 1000 ? String(Math.round(v)) : num(v)} (now)`])), { 'ship.hull.hub_above_base_m': ` Now h0 = ${num(h.draft_m)} - ${num(h.hub_above_base_m)} = ${num(h.hub_depth_m)} m.` }),
+});
+// The picker and the panel follow the scenario in the form.
+function refreshHull() {
+  if (!form || !form.scenario) return;
+  const sc = form.current();
+  if (hullPicker) hullPicker.sync(sc);
+  hullPanel.update(sc, hullPicker ? hullPicker.fileOf(sc) : null);
+}
 const stability = new StabilityTab(() => client, new PlotBox($('ips-plots')));
 // The design tab's "run next to the PI loops": the acceleration with the PI loops, kept, then
 // again with this LQG/LTR tuning, drawn over it.
@@ -73,7 +90,16 @@ async function openLink(hash) {
 async function onReady(m) {
   if (form) { setPhase('idle'); return; } // a fresh worker after a cancel: the page stays as it is
   signals = new Signals(m.signals);
-  form = new ScenarioForm(m.presets, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => showCompareButtons() });
+  form = new ScenarioForm(m.presets, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => { showCompareButtons(); refreshHull(); } });
+  hullPicker = new HullPicker(m.hulls || [], {
+    form, validate, say: status, busy: isBusy,
+    // An accepted hull or scenario file: into the form (a scenario file may name its study).
+    commit: (sc, { name } = {}) => {
+      if (name && name !== form.name) { form.select(name, sc); follow(name, true); } else { form.scenario = sc; form.fill(); }
+      form.save();
+      onEdit();
+    },
+  });
   const linked = await openLink(location.hash.slice(1));
   if (linked && !linked.refused && (linked.edited.length || linked.view)) {
     form.select(linked.name, linked.scenario);
@@ -108,7 +134,7 @@ async function onEdit() {
   const mine = ++validating;
   try {
     await validate(form.current());
-    if (mine === validating) form.markErrors([]);
+    if (mine === validating) { form.markErrors([]); refreshHull(); }
   } catch (e) {
     if (mine === validating && !e.cancelled) form.markErrors(e.fields || []);
   }
@@ -169,7 +195,8 @@ function showComparison(now) {
 function runName(sc) {
   const d = diff(form.preset(form.name), sc);
   const paths = d === undefined ? [] : leafPaths(d);
-  const what = paths.slice(0, 2).map((p) => `${p.split('.').pop()} = ${JSON.stringify(p.split('.').reduce((o, k) => o[k], sc))}`).join(', ');
+  const value = (p) => { const v = p.split('.').reduce((o, k) => o[k], sc); return typeof v === 'string' && v.length > 40 ? `(${v.split('\n').length} lines)` : JSON.stringify(v); };
+  const what = paths.slice(0, 2).map((p) => `${p.split('.').pop()} = ${value(p)}`).join(', ');
   return `${studyTitle(form.name)}${what ? `, ${what}${paths.length > 2 ? ', ...' : ''}` : ''}`;
 }
 
@@ -358,10 +385,24 @@ $('share').addEventListener('click', async () => {
   const r = getResult();
   const view = r && r.columns && JSON.stringify(r.scenario) === JSON.stringify(form.scenario) ? live.view() : null;
   const url = location.origin + location.pathname + linkHash(form.name, form.preset(), form.scenario, view);
+  // A custom hull's offsets can make the link longer than browsers, chat programs and mail keep:
+  // then the page offers the scenario as a file instead of a link that would break.
+  const tooLong = url.length > HULL.maxLinkChars;
+  $('share-too-long').hidden = !tooLong;
+  if (tooLong) {
+    $('share-url').hidden = true;
+    $('share-too-long-text').textContent = `This scenario's link would be ${url.length.toLocaleString('en-US')} characters long (the custom hull's offsets are in it), more than the ${HULL.maxLinkChars.toLocaleString('en-US')} a link can safely carry. Download the scenario instead: it holds the hull, and opens here with "Load hull offsets or a scenario" (or with aes-sim).`;
+    status('No link: this scenario is too large for one. Download it as a file (below the buttons).');
+    $('share-file').focus();
+    return;
+  }
   $('share-url').hidden = false;
   $('share-url').value = url;
   $('share-url').select();
   try { await navigator.clipboard.writeText(url); status('Link copied: it opens this scenario and runs it.'); } catch (_) { status('Link below: copy it by hand.'); }
+});
+$('share-file').addEventListener('click', () => {
+  if (form) download(`${form.scenario.name || 'scenario'}-scenario.json`, JSON.stringify(form.current(), null, 1), 'application/json');
 });
 $('export-csv').addEventListener('click', () => {
   const r = getResult();

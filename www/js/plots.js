@@ -2,7 +2,7 @@
 // changes (ResizeObserver); the plots of a run (units from signalMeta, levels and bases from
 // pageConstants), a kept run drawn muted under the new one, and the extra plots after a run in waves.
 import uPlot from '../vendor/uPlot.esm.js';
-import { PLOTS, DEFAULT_PLOTS, LEVEL_COLORS, BAND_FILL, BAND_EDGE, SURFACE_FILL, EVENT_COLOR, KEPT_STYLE, TRACK_MARK_S, TRACK_MIN_SPAN_M, RAO, FUEL_OMEGAS, FUEL_COLORS } from './config.js';
+import { PLOTS, DEFAULT_PLOTS, LEVEL_COLORS, BAND_FILL, BAND_EDGE, SURFACE_FILL, EVENT_COLOR, KEPT_STYLE, TRACK_MARK_S, TRACK_MIN_SPAN_M, RAO, FUEL_OMEGAS, FUEL_COLORS, HULL } from './config.js';
 import { el, fmt, downloadUrl } from './dom.js';
 import { quantity, withPrefix } from './units.js';
 import { REQUEST } from './protocol.js';
@@ -353,14 +353,16 @@ function drawTrack(cv, cols, unit, scenario, kept) {
 // also the fuel study of Fig. 5-12.
 export function drawSeaExtras(box, client, scenario, cols, constants, onError) {
   const generation = box.generation;
+  const hull = scenario.ship.hull || {};
+  const hullTitle = hull.name === 'custom' ? 'Custom hull' : (HULL.titles[hull.name] || hull.name || 'Hull').replace(/ \(.*\)$/, '');
   const g = constants.gravity_m_s2, lpp = constants.seakeeping_lpp_m;
   const kn = Number(cols.speed_cmd_kn[cols.speed_cmd_kn.length - 1].toPrecision(3));
   const lam = Array.from({ length: RAO.points }, (_, i) => RAO.lambdaFrom + i * RAO.lambdaStep);
   const omegas = lam.map((l) => Math.sqrt((2 * Math.PI * g) / (l * lpp)));
   for (const [heading, name] of RAO.headings) {
-    client.request(REQUEST.rao, { speed_kn: kn, heading_deg: heading, omegas }).then(({ result: r }) => {
+    client.request(REQUEST.rao, { scenario: JSON.stringify(scenario), speed_kn: kn, heading_deg: heading, omegas }).then(({ result: r }) => {
       const pk = r.pitch.amp.map((p, i) => p / ((omegas[i] * omegas[i]) / g));
-      box.line(`DTMB 5415 RAOs at ${kn} kn, ${name} seas (strip theory, ch. 2.5.2) [m/m; -; rad/m]`,
+      box.line(`${hullTitle} RAOs at ${kn} kn, ${name} seas (strip theory, ch. 2.5.2) [m/m; -; rad/m]`,
         { data: lam, label: `wave length / Lpp [-] (Lpp = ${quantity(lpp, 'm')})` },
         [{ data: r.heave.amp, label: 'heave per wave amplitude [m/m]', color: '#117a65' }, { data: pk, label: 'pitch / wave slope [-]', color: '#a04000', dash: [6, 3] }, { data: r.roll.amp, label: 'roll per wave amplitude [rad/m]', color: '#5b2c6f', dash: [2, 3] }],
         [{ scale: 'y', label: 'response per wave [m/m; -; rad/m]' }], { generation, more: true });

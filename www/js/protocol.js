@@ -1,6 +1,6 @@
 // The worker protocol, shared by the page and the worker.
 //
-// Worker -> page, once after loading: {type: 'ready', presets: {name: json}, signals: [meta]}
+// Worker -> page, once after loading: {type: 'ready', presets: {name: json}, signals: [meta], hulls: [names]}
 //   (signals: signalMeta() of the wasm, in trace column order), or, if loading fails,
 //   {type: 'error', id: null, error}.
 // Page -> worker: one message per request, {type, id, ...arguments}; the request types are
@@ -22,7 +22,8 @@ export const REQUEST = {
   // {scenario, hist, bin} -> progress {tried} ... done {trial}: the first trial whose value falls in
   // bin `bin` of histogram `hist` (at_time, excess, excess_vs_calm, arrival), or null if none does.
   findTrial: 'find-trial',
-  rao: 'rao', // {speed_kn, heading_deg, omegas} -> done {result}
+  rao: 'rao', // {scenario, speed_kn, heading_deg, omegas} -> done {result}: RAOs of the scenario's hull
+  hullSheet: 'hull-sheet', // {scenario} -> done {sheet}: body plan, profile, hydrostatics (presentation::HullSheet)
   fuel: 'fuel', // {scenario, omegas} -> done {rows}
   ips: 'ips', // {args} -> done {result}
   design: 'design', // {scenario} -> done {result} (LQG/LTR design and analysis, ch. 3.1)
@@ -44,7 +45,7 @@ export function errorOf(e, fields) {
 }
 
 export const reply = {
-  ready: (presets, signals) => ({ type: 'ready', presets, signals }),
+  ready: (presets, signals, hulls) => ({ type: 'ready', presets, signals, hulls }),
   progress: (id, data) => ({ type: 'progress', id, ...data }),
   done: (id, data) => ({ type: 'done', id, ...data }),
   error: (id, error) => ({ type: 'error', id, error }),

@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -99,7 +99,9 @@ const handlers = {
 
   [REQUEST.fuel]: (m) => ({ rows: JSON.parse(fuelStudy(checked(m.scenario), new Float64Array(m.omegas))) }),
 
-  [REQUEST.rao]: (m) => ({ result: JSON.parse(raoJson(m.speed_kn, m.heading_deg, new Float64Array(m.omegas))) }),
+  [REQUEST.rao]: (m) => ({ result: JSON.parse(raoJson(checked(m.scenario), m.speed_kn, m.heading_deg, new Float64Array(m.omegas))) }),
+
+  [REQUEST.hullSheet]: (m) => ({ sheet: JSON.parse(hullSheet(checked(m.scenario))) }),
 
   [REQUEST.design]: (m) => ({ result: JSON.parse(designLqgLtr(checked(m.scenario))) }),
   [REQUEST.ips]: (m) => {
@@ -129,6 +131,6 @@ loaded = init().then(() => {
   signals = JSON.parse(signalMeta());
   const presets = {};
   for (const n of presetNames()) presets[n] = presetJson(n);
-  postMessage(reply.ready(presets, signals));
+  postMessage(reply.ready(presets, signals, hullNames()));
 });
 loaded.catch((e) => postMessage(reply.error(null, errorOf(e))));
