@@ -60,12 +60,15 @@ fn summaries_do_not_depend_on_order_or_sharding() {
 /// Poisson arrivals at Rice's rate is (1 - e^{-90 rate}) / rate. The case: a 4.8 m propeller at
 /// h0 = 4 m with the consistent hub depth, where the level is two standard deviations of the hub's
 /// motion deep (Rice's assumption of rare, independent crossings); agreement within two Monte Carlo
-/// standard errors.
+/// standard errors. Both hubs on the centreline: then they move alike and the first event on
+/// either is Rice's single process; at the 5415's +-5 m the two are partly independent in a
+/// spread sea and the first of them comes sooner (measured 12.4 s against Rice's 20.4 s for one).
 #[test]
 fn arrival_times_agree_with_rice() {
     let mut sc = preset("mc-arrival").unwrap();
     sc.seakeeping.stern_motion = SternMotion::Consistent;
     sc.set_hub_depth_m(4.0);
+    sc.ship.hull.shaft_y_m = Some([0.0, 0.0]);
     sc.monte_carlo.trials = 200;
     sc.monte_carlo.envelope_signals = vec!["h_over_r".into()];
     let p = run_range(&sc, 0, 200).unwrap();

@@ -857,7 +857,8 @@ fn real_main() -> Result<(), Failure> {
                         aes_core::ship_hull::HullSpec { name: "custom".into(), offsets_csv: text, ..Default::default() }
                     };
                     for s in &sets {
-                        let (p, v) = s.split_once('=').ok_or_else(|| format!("--set '{}': expected PATH=VALUE", shorten(s)))?;
+                        let (p, v) =
+                            s.split_once('=').ok_or_else(|| format!("--set '{}': expected PATH=VALUE", shorten(s)))?;
                         sc = sc.with_override(p.trim(), v.trim()).map_err(|e| e.to_string())?;
                     }
                     Some(sc.ship_hull()?.strip_ship()?)

@@ -170,7 +170,11 @@ fn class4_no_nan_reaches_an_output() {
         b"",
         "turbine_rated_efficiency = 0",
     );
-    refused(&["run", "preset:startup", "--set", "seakeeping.hub_depth_m=1e308"], b"", "seakeeping.hub_depth_m = 1e308");
+    refused(
+        &["run", "preset:startup", "--set", "ship.hull.hub_above_base_m=1e308"],
+        b"",
+        "ship.hull.hub_above_base_m = 1e308",
+    );
     refused(&["ips", "steady", "--side", "motor", "--set", "kq0=5e-324"], b"", "kq0 = 5e-324");
     refused(&["ips", "steady", "--side", "motor", "--torque=1e300"], b"", "torque command T* = 1e300");
     refused(
@@ -246,8 +250,8 @@ fn class5_merge_refuses_impossible_partials() {
         ("interval", Box::new(|v| v["record_interval_s"] = serde_json::json!(1e-300)), "record_interval_s = 1e-300"),
         (
             "scenario",
-            Box::new(|v| v["scenario"]["seakeeping"]["hub_depth_m"] = serde_json::json!(1e308)),
-            "its scenario is not valid: seakeeping.hub_depth_m",
+            Box::new(|v| v["scenario"]["ship"]["hull"]["hub_above_base_m"] = serde_json::json!(1e308)),
+            "its scenario is not valid: ship.hull.hub_above_base_m",
         ),
     ];
     for (name, change, want) in cases {

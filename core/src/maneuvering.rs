@@ -146,6 +146,9 @@ pub struct HullForces {
     pub x: f64,
     pub y: f64,
     pub n: f64,
+    /// The straight-running part of `x`: q (X_0 + X_u du + X_uu du^2 + X_uuu du^3) [N], the
+    /// kayak's resistance curve (the rest of `x` comes from sway and yaw).
+    pub x_straight: f64,
 }
 
 impl Abkowitz {
@@ -172,10 +175,8 @@ impl Abkowitz {
         let du = ((u - self.u0) / big_u).max(DU_MIN);
         let (du2, du3) = (du * du, du * du * du);
         let (v2, r2) = (vp * vp, rp * rp);
-        let x = c.x0
-            + c.xu * du
-            + c.xuu * du2
-            + c.xuuu * du3
+        let x_straight = c.x0 + c.xu * du + c.xuu * du2 + c.xuuu * du3;
+        let x = x_straight
             + c.xvv * v2
             + c.xrr * r2
             + c.xvvu * v2 * du
@@ -206,7 +207,7 @@ impl Abkowitz {
             y += c.y0 + c.y0u * du + c.y0uu * du2;
             n += c.n0 + c.n0u * du + c.n0uu * du2;
         }
-        HullForces { x: q * x, y: q * y, n: q * self.length * n }
+        HullForces { x: q * x, y: q * y, n: q * self.length * n, x_straight: q * x_straight }
     }
 
     /// Sway and yaw accelerations from the sway force and yaw moment (eq. 2.20).
@@ -235,10 +236,13 @@ pub struct HullParams {
     /// Drop the straight-running side force and yaw moment (Y_0, N_0 and their Delta-u terms), as a
     /// port-starboard symmetric hull must (see maneuvering.rs). Default true.
     pub symmetric_hull: bool,
-    /// Below this speed surge follows the surge model alone [knots]. Our choice: 17. The Abkowitz
-    /// surge polynomial, fitted at 11 and 22 knots, turns propulsive near 11 knots.
+    /// With `as_printed.table_5_ship` (eq. 2.22's straight-line polynomial), below this speed surge
+    /// follows the surge model alone [knots]. Our choice: 17. The Abkowitz surge polynomial, fitted
+    /// at 11 and 22 knots, turns propulsive near 11 knots. Otherwise the straight-line resistance is
+    /// eq. 2.15's at every speed and these two are not used.
     pub handover_low_kn: f64,
-    /// Above this speed surge follows the Abkowitz model alone [knots]. Our choice: 21.
+    /// With `as_printed.table_5_ship`, above this speed surge follows the Abkowitz model alone
+    /// [knots]. Our choice: 21.
     pub handover_high_kn: f64,
 }
 

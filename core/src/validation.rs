@@ -365,7 +365,12 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     let acc = run(&preset("acceleration").ok_or("no preset")?)?;
     let mut acc_t5 = preset("acceleration").ok_or("no preset")?;
     acc_t5.as_printed.table_5_ship = true;
-    let dip_t5 = 1.0 - sig(&run(&acc_t5)?, "turbine_speed_pu").min;
+    let acc_t5 = run(&acc_t5)?;
+    let dip_t5 = 1.0 - sig(&acc_t5, "turbine_speed_pu").min;
+    let start_power =
+        |r: &crate::RunResult| r.trace.column("im_power_pu").and_then(|c| c.first().copied()).unwrap_or(f64::NAN);
+    let (p25, p25_t5) = (start_power(&acc), start_power(&acc_t5));
+    let step = sig(&acc, "im_power_pu").max - p25;
     rows.push(explained(
         "turbine speed loss in the acceleration",
         "ch. 5.2.1 text (\"approximately 20 %\")",
@@ -373,10 +378,10 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         1.0 - sig(&acc, "turbine_speed_pu").min,
         "pu",
         &format!(
-            "the maneuvering model's surge mass is Table 2.3's m - X_udot scaled by L^3: 9.5e6 kg with the hull's \
-             Lpp of 142 m, 19.3e6 kg with Table 5.5's 180 m. The lighter ship takes its speed sooner, so the motors \
-             draw full power while the turbines are still slow and they dip further; with the thesis' ship \
-             (as_printed.table_5_ship) the dip is {dip_t5:.3} pu"
+            "on the hull's own ship the maneuvering model's straight-line resistance is eq. 2.15's (Table 5.1): the \
+             motors run at {p25:.2} pu at 25 kn, and the step to full ahead is {step:.2} pu. With the thesis' ship \
+             (as_printed.table_5_ship: L = 180 m, Table 2.3's own resistance curve, 1.6 times Table 5.1's at 25 kn) \
+             they start at {p25_t5:.2} pu and the dip is {dip_t5:.3} pu"
         ),
     ));
     let (t, w) = (acc.trace.column("t_s").ok_or("no t_s")?, acc.trace.column("turbine_speed_pu").ok_or("no column")?);
@@ -744,6 +749,8 @@ fn analytic(size: Size, st: &crate::RunResult) -> Result<Section, String> {
     let mut sc = preset("mc-arrival").ok_or("no preset")?;
     sc.seakeeping.stern_motion = SternMotion::Consistent;
     sc.set_hub_depth_m(4.0);
+    // Both hubs on the centreline: one process, Rice's (tests/montecarlo.rs).
+    sc.ship.hull.shaft_y_m = Some([0.0, 0.0]);
     let s = mc(&sc, size.trials)?;
     let rice = s.rice.as_ref().ok_or("no Rice summary")?;
     let a = &s.arrival_time_s;
@@ -833,7 +840,7 @@ fn second_order_and_fuel(base: &crate::RunResult) -> Result<Section, String> {
     let mut rows = Vec::new();
     // Share of the calm-water resistance R_sp (eq. 2.15) at the run's mean speed.
     let share = |r: &crate::RunResult, sc: &Scenario| {
-        let surge = crate::surge::Surge::new(&sc.ship);
+        let surge = crate::surge::Surge::new(&sc.ship, sc.ship_hull().map_or(0.0, |h| h.mass_kg));
         let u = crate::units::kn_to_m_s(sig(r, "ship_speed_kn").mean);
         (sig(r, "added_resistance_n").mean / surge.resistance(u), surge.resistance(u))
     };
@@ -1134,7 +1141,7 @@ fn as_printed(base: &crate::RunResult) -> Result<Section, String> {
         add("maneuvering surge mass m - X_udot".into(), sw, a5.m11 / 1e3, a0.m11 / 1e3, "t", why);
         let u25 = crate::units::kn_to_m_s(25.0);
         add(
-            "maneuvering model's straight-line resistance at 25 kn".into(),
+            "Table 2.3's straight-line resistance at 25 kn (eq. 2.15, which the hull's ship takes: 1469 kN)".into(),
             sw,
             -a5.forces(u25, 0.0, 0.0).x / 1e3,
             -a0.forces(u25, 0.0, 0.0).x / 1e3,

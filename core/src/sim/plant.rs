@@ -178,7 +178,10 @@ pub enum Hull {
     Surge,
     /// Eqs. 2.17-2.30, handing over to the surge model in surge between `lo` and `hi` [m/s].
     /// The rudder stands `x_p` [m] aft of the centre of gravity (the hull's, `ship.hull`).
-    Maneuvering { abkowitz: Box<Abkowitz>, rudder: RudderParams, x_p: f64, lo: f64, hi: f64 },
+    /// Straight-line resistance: eq. 2.15's at every speed, with Table 2.3's sway and yaw terms
+    /// on top; with `eq_2_22_straight` (the thesis' ship, `as_printed.table_5_ship`) eq. 2.22's
+    /// own polynomial X_0 + X_u du + ..., handed over from eq. 2.15 between `lo` and `hi` [m/s].
+    Maneuvering { abkowitz: Box<Abkowitz>, rudder: RudderParams, x_p: f64, eq_2_22_straight: bool, lo: f64, hi: f64 },
 }
 
 /// Model constants of the whole drive train.
@@ -240,6 +243,7 @@ impl Plant {
                 )),
                 rudder: sc.rudder.clone(),
                 x_p: body.rudder_x_aft_m,
+                eq_2_22_straight: sc.as_printed.table_5_ship,
                 lo: kn_to_m_s(sc.hull.handover_low_kn),
                 hi: kn_to_m_s(sc.hull.handover_high_kn),
             },
@@ -305,10 +309,11 @@ impl Plant {
         self.extra_resistance
             + match &self.hull {
                 Hull::Surge => self.surge.resistance(u),
-                Hull::Maneuvering { abkowitz, lo, hi, .. } => {
+                Hull::Maneuvering { abkowitz, eq_2_22_straight: true, lo, hi, .. } => {
                     let w = handover_weight(u, *lo, *hi);
                     (1.0 - w) * self.surge.resistance(u) - w * abkowitz.forces(u, 0.0, 0.0).x
                 }
+                Hull::Maneuvering { .. } => self.surge.resistance(u),
             }
     }
 
@@ -432,12 +437,19 @@ impl Plant {
                 dx[YAW_RATE] = 0.0;
                 self.surge.resistance(u) - h.sea.wave_fx + self.extra_resistance
             }
-            Hull::Maneuvering { abkowitz, rudder, x_p, lo, hi } => {
+            Hull::Maneuvering { abkowitz, rudder, x_p, eq_2_22_straight, lo, hi } => {
                 let f = abkowitz.forces(u, v, r); // eqs. 2.22-2.24, hull terms
                 let (fx_r, fy_r) = rudder_force(rudder, self.rho, &inflow, h.rudder); // eqs. 2.28-2.30
-                                                                                      // Surge hands over smoothly from the surge model (low speed) to Abkowitz (near u0).
-                let w = handover_weight(u, *lo, *hi);
-                let x_hull = (1.0 - w) * -self.surge.resistance(u) + w * f.x;
+                let x_hull = if *eq_2_22_straight {
+                    // Surge hands over smoothly from the surge model (low speed) to Abkowitz (near u0).
+                    let w = handover_weight(u, *lo, *hi);
+                    (1.0 - w) * -self.surge.resistance(u) + w * f.x
+                } else {
+                    // One resistance (eq. 2.15, Table 5.1) at every speed; the kayak's straight-line
+                    // polynomial gives way to it (at 142 m it is 1.50 MN at 25 kn against eq. 2.15's
+                    // 1.47 MN, but dips below it at 17-21 kn).
+                    -self.surge.resistance(u) + (f.x - f.x_straight)
+                };
                 // Second-order wave forces enter as F_x,add, F_y,add of eqs. 2.22-2.23; the added
                 // resistance is booked with the ship's resistance in the energy accounts.
                 let x_hull = x_hull - self.extra_resistance;
