@@ -413,8 +413,8 @@ impl ShipHull {
 mod tests {
     use super::*;
     use crate::hull_sections::DTMB5415_OFFSETS;
-    use crate::seakeeping::complex::cabs;
     use crate::scenario::Scenario;
+    use crate::seakeeping::complex::cabs;
 
     fn resolve(spec: &HullSpec) -> Result<ShipHull, (String, String)> {
         spec.resolve(1025.0)

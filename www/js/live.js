@@ -415,7 +415,9 @@ export class LiveViews {
     }
     const eta = this.sea.elevations(this.t, north, east);
     const waveStern = v('wave_stern_m'), hub = v('hub_depth_m'), R = k.propeller_radius_m;
-    const kernelAtHub = this.sea.elevations(this.t, Float64Array.of(x0 - k.prop_x_aft_m * Math.cos(psi)), Float64Array.of(y0 - k.prop_x_aft_m * Math.sin(psi)))[0];
+    // The port hub (the trace's wave_stern_m): x_p aft of G and y to port (port is heading - 90 deg).
+    const yPort = (k.shaft_y_m || [0])[0];
+    const kernelAtHub = this.sea.elevations(this.t, Float64Array.of(x0 - k.prop_x_aft_m * Math.cos(psi) + yPort * Math.sin(psi)), Float64Array.of(y0 - k.prop_x_aft_m * Math.sin(psi) - yPort * Math.cos(psi)))[0];
     // The kernel's profile shifted so that it passes through the trace's value at the hub.
     const shift = waveStern - kernelAtHub;
     const surf = (x) => { const j = Math.max(0, Math.min(n - 1, Math.floor(((x - xs[0]) / (xs[n] - xs[0])) * n))); const f = (x - xs[j]) / (xs[j + 1] - xs[j]); return eta[j] + f * (eta[j + 1] - eta[j]) + shift; };
