@@ -28,14 +28,17 @@ cargo build --release -q -p aes-cli
 
 old="$tgt/release/aes-sim"
 new="target/release/aes-sim"
-args=(bench head-seas-ss6 --repeat 3 --set "seakeeping.hub_depth_m=$h0")
+# The hub's depth: `seakeeping.hub_depth_m` at the baseline; the hull's hub height above the base
+# (the 5415's draft 6.15 m minus h0) since the hull became one definition (issue 15).
+args_old=(bench head-seas-ss6 --repeat 3 --set "seakeeping.hub_depth_m=$h0")
+args_new=(bench head-seas-ss6 --repeat 3 --set "ship.hull.hub_above_base_m=$(python3 -c "print(6.15 - $h0)")")
 
 # wall_s is the best of the repetitions of one call; the ratio of the medians over the rounds.
 field() { python3 -c "import json,sys; d=json.load(sys.stdin); print(d['$1'] if d['$1'] is not None else 'nan')"; }
 olds=() news=()
 for r in $(seq 1 "$rounds"); do
-  o="$("$old" "${args[@]}")"
-  n="$("$new" "${args[@]}")"
+  o="$("$old" "${args_old[@]}")"
+  n="$("$new" "${args_new[@]}")"
   ow="$(field wall_s <<<"$o")"; nw="$(field wall_s <<<"$n")"
   ok="$(field wave_sums_s <<<"$o")"; nk="$(field wave_sums_s <<<"$n")"
   olds+=("$ow") news+=("$nw")
