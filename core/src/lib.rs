@@ -24,6 +24,7 @@ pub mod presets;
 pub mod prime_mover;
 pub mod propeller;
 pub mod propeller_losses;
+pub mod rao_cache;
 pub mod regression;
 pub mod rudder;
 pub mod scenario;

@@ -390,7 +390,7 @@ impl Scenario {
 
     /// The RAO table of this scenario's hull, grid and strip-theory switches (built once, shared).
     pub fn rao_table(&self) -> Result<std::sync::Arc<crate::seakeeping::tables::RaoTable>, String> {
-        crate::seakeeping::cache::rao_table(&self.ship_hull()?, &self.seakeeping.grid, &self.as_printed)
+        crate::rao_cache::rao_table(&self.ship_hull()?, &self.seakeeping.grid, &self.as_printed)
     }
 
     /// The bus voltage set point the field control holds [V]: `controllers.field.bus_voltage_ref_v`,

@@ -295,7 +295,7 @@ pub fn rao_table_values(json: &str) -> Result<Vec<f64>, JsError> {
 pub fn rao_table_load(json: &str, values: &[f64]) -> Result<(), JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
     let hull = sc.ship_hull().map_err(|e| JsError::new(&e))?;
-    aes_core::seakeeping::cache::insert_rao_table(&hull, &sc.seakeeping.grid, &sc.as_printed, values)
+    aes_core::rao_cache::insert_rao_table(&hull, &sc.seakeeping.grid, &sc.as_printed, values)
         .map_err(|e| JsError::new(&e))
 }
 

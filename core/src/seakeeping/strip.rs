@@ -162,28 +162,6 @@ impl Ship {
         })
     }
 
-    /// An embedded hull (`ship_hull`: "dtmb5415", "wigley") at its own design loading in water
-    /// of 1025 kg/m^3.
-    pub fn embedded(name: &str) -> Ship {
-        crate::ship_hull::HullSpec { name: name.into(), ..Default::default() }
-            .resolve(1025.0)
-            .map_err(|(f, e)| format!("{f}: {e}"))
-            .and_then(|h| h.strip_ship())
-            .expect("the embedded hulls are valid")
-    }
-
-    /// The DTMB 5415 at its design draft 6.15 m with the SIMMAN 2014 mass properties and bilge
-    /// keels (`ship_hull`).
-    pub fn dtmb5415() -> Ship {
-        Ship::embedded("dtmb5415")
-    }
-
-    /// The Wigley hull of [`HullOffsets::wigley`] (L 100 m, B 10 m, T 6.25 m) at its draft
-    /// (`ship_hull`).
-    pub fn wigley() -> Ship {
-        Ship::embedded("wigley")
-    }
-
     /// Sectional radiation coefficients of every strip on the encounter-frequency grid `omegas`
     /// [rad/s, increasing].
     pub fn radiation_table(&self, omegas: &[f64]) -> RadiationTable {

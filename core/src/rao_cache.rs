@@ -1,9 +1,8 @@
 //! RAO tables, built once per hull, grid and strip-theory switches and shared by every study
 //! (runs in waves, Monte Carlo trials, the fuel study, repeated runs in the browser).
 
-use super::strip::Ship;
-use super::tables::{RaoTable, SeakeepingGrid};
 use crate::as_printed::AsPrintedParams;
+use crate::seakeeping::tables::{RaoTable, SeakeepingGrid};
 use crate::ship_hull::ShipHull;
 use std::sync::{Arc, Mutex, OnceLock};
 
@@ -58,11 +57,4 @@ pub fn insert_rao_table(
     let t = Arc::new(RaoTable::from_values(grid, values)?);
     keep(key(hull, grid, printed), t);
     Ok(())
-}
-
-/// The DTMB 5415 at its design condition (built once): the hull of the comparisons with
-/// published 5415 results.
-pub fn dtmb5415() -> &'static Ship {
-    static SHIP: OnceLock<Ship> = OnceLock::new();
-    SHIP.get_or_init(Ship::dtmb5415)
 }
