@@ -469,6 +469,23 @@ mod tests {
         spec.resolve(1025.0)
     }
 
+    /// The memo gives what resolving afresh gives, and a changed spec or density is resolved anew
+    /// (never a remembered hull of another spec).
+    #[test]
+    fn memoised_resolve_is_the_fresh_one() {
+        let spec = HullSpec::default();
+        let fresh = spec.resolve_uncached(1025.0).unwrap();
+        assert_eq!(resolve(&spec).unwrap(), fresh);
+        assert_eq!(resolve(&spec).unwrap(), fresh);
+        let mut deeper = spec.clone();
+        deeper.hub_above_base_m = Some(1.0);
+        assert_eq!(resolve(&deeper).unwrap(), deeper.resolve_uncached(1025.0).unwrap());
+        assert_ne!(resolve(&deeper).unwrap().hub_depth_m, fresh.hub_depth_m);
+        assert_eq!(spec.resolve(1000.0).unwrap(), spec.resolve_uncached(1000.0).unwrap());
+        assert_ne!(spec.resolve(1000.0).unwrap().mass_kg, fresh.mass_kg);
+        assert_eq!(fresh.strip_ship_check(), Ok(()));
+    }
+
     /// The default hull is the 5415 at 6.15 m: Lpp 142 m, 8.6e6 kg (published 8424 m^3, this
     /// mesh 8386.5 m^3 to 0.5 %), the propellers 62 m aft of G (8.3 m forward of the AP) and
     /// 6.0 m deep, the rudder 67 m aft of G.
