@@ -21,9 +21,13 @@ use crate::hull_sections::{HullOffsets, Hydrostatics};
 use crate::seakeeping::strip::{BilgeKeels, MassProperties, Ship};
 use crate::validate::{num, Validator};
 use serde::{Deserialize, Serialize};
+use std::sync::{Mutex, OnceLock};
 
 /// Shafts of the ship (port, starboard).
 pub const N_SHAFTS: usize = 2;
+
+/// Resolved hulls (and strip-ship checks) remembered, the oldest dropped first.
+const MEMO_SIZE: usize = 8;
 
 /// The embedded hulls' names (`ship.hull.name`), then "custom" for offsets of one's own.
 pub const HULL_NAMES: [&str; 3] = ["dtmb5415", "wigley", "custom"];
@@ -216,7 +220,30 @@ impl HullSpec {
     }
 
     /// Resolves the section with water density `rho` [kg/m^3]. Errors are (field, message).
+    ///
+    /// Memoised: a run resolves its hull several times (validation, plant, seaway, RAO table)
+    /// and a Monte Carlo study once per trial; resolving is deterministic, so a remembered hull
+    /// is the same to the bit.
     pub fn resolve(&self, rho: f64) -> Result<ShipHull, (String, String)> {
+        type Memo = Mutex<Vec<((HullSpec, u64), ShipHull)>>;
+        static RESOLVED: OnceLock<Memo> = OnceLock::new();
+        let memo = RESOLVED.get_or_init(|| Mutex::new(Vec::new()));
+        if let Ok(m) = memo.lock() {
+            if let Some((_, h)) = m.iter().find(|((spec, r), _)| *r == rho.to_bits() && spec == self) {
+                return Ok(h.clone());
+            }
+        }
+        let h = self.resolve_uncached(rho)?;
+        if let Ok(mut m) = memo.lock() {
+            if m.len() >= MEMO_SIZE {
+                drop(m.remove(0));
+            }
+            m.push(((self.clone(), rho.to_bits()), h.clone()));
+        }
+        Ok(h)
+    }
+
+    fn resolve_uncached(&self, rho: f64) -> Result<ShipHull, (String, String)> {
         let offsets = self.offsets()?;
         let emb = embedded(&self.name);
         let xs = offsets.stations.iter().map(|s| s.x);
@@ -329,7 +356,7 @@ impl HullSpec {
         }
         v.range("hub_above_base_m", t - h.hub_depth_m, -t, t);
         if v.is_ok() {
-            if let Err(e) = h.strip_ship() {
+            if let Err(e) = h.strip_ship_check() {
                 v.fail("offsets_csv", format!("{} stations", h.offsets.stations.len()), e);
             }
         }
@@ -392,6 +419,28 @@ impl ShipHull {
         Ship::new(&self.offsets, self.draft_m, self.mass_props, self.bilge_keels, self.rho, crate::waves::G)
     }
 
+    /// Whether `strip_ship` builds, memoised by `table_key` (validation asks once per run, and
+    /// building the strips maps every section).
+    fn strip_ship_check(&self) -> Result<(), String> {
+        type Memo = Mutex<Vec<(String, Result<(), String>)>>;
+        static CHECKED: OnceLock<Memo> = OnceLock::new();
+        let memo = CHECKED.get_or_init(|| Mutex::new(Vec::new()));
+        let key = self.table_key();
+        if let Ok(m) = memo.lock() {
+            if let Some((_, r)) = m.iter().find(|(k, _)| *k == key) {
+                return r.clone();
+            }
+        }
+        let r = self.strip_ship().map(|_| ());
+        if let Ok(mut m) = memo.lock() {
+            if m.len() >= MEMO_SIZE {
+                drop(m.remove(0));
+            }
+            m.push((key, r.clone()));
+        }
+        r
+    }
+
     /// What makes the RAO table: every input of `strip_ship`, as text (the cache's key).
     pub fn table_key(&self) -> String {
         let bk = self.bilge_keels.map(|b| (b.length_m.to_bits(), b.breadth_m.to_bits()));
@@ -443,6 +492,23 @@ mod tests {
 
     fn resolve(spec: &HullSpec) -> Result<ShipHull, (String, String)> {
         spec.resolve(1025.0)
+    }
+
+    /// The memo gives what resolving afresh gives, and a changed spec or density is resolved anew
+    /// (never a remembered hull of another spec).
+    #[test]
+    fn memoised_resolve_is_the_fresh_one() {
+        let spec = HullSpec::default();
+        let fresh = spec.resolve_uncached(1025.0).unwrap();
+        assert_eq!(resolve(&spec).unwrap(), fresh);
+        assert_eq!(resolve(&spec).unwrap(), fresh);
+        let mut deeper = spec.clone();
+        deeper.hub_above_base_m = Some(1.0);
+        assert_eq!(resolve(&deeper).unwrap(), deeper.resolve_uncached(1025.0).unwrap());
+        assert_ne!(resolve(&deeper).unwrap().hub_depth_m, fresh.hub_depth_m);
+        assert_eq!(spec.resolve(1000.0).unwrap(), spec.resolve_uncached(1000.0).unwrap());
+        assert_ne!(spec.resolve(1000.0).unwrap().mass_kg, fresh.mass_kg);
+        assert_eq!(fresh.strip_ship_check(), Ok(()));
     }
 
     /// The default hull is the 5415 at 6.15 m: Lpp 142 m, 8.6e6 kg (published 8424 m^3, this

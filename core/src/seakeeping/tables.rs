@@ -111,8 +111,15 @@ pub struct RaoTable {
     omegas: Vec<f64>,
     speeds: Vec<f64>,
     headings: Vec<f64>,
+    /// (cos, sin) of every heading (libm, once: `interpolate` weighs the added-resistance force
+    /// by them at each corner).
+    heading_cs: Vec<(f64, f64)>,
     /// [omega][speed][heading]
     data: Vec<Response>,
+}
+
+fn cos_sin(headings: &[f64]) -> Vec<(f64, f64)> {
+    headings.iter().map(|&b| (libm::cos(b), libm::sin(b))).collect()
 }
 
 impl RaoTable {
@@ -148,7 +155,7 @@ impl RaoTable {
                 }
             }
         }
-        RaoTable { grid: *grid, omegas, speeds, headings, data }
+        RaoTable { grid: *grid, omegas, speeds, heading_cs: cos_sin(&headings), headings, data }
     }
 
     fn idx(&self, i: usize, j: usize, k: usize) -> &Response {
@@ -204,7 +211,7 @@ impl RaoTable {
                 drift_moment: v[18],
             })
             .collect();
-        Ok(RaoTable { grid: *grid, omegas, speeds, headings, data })
+        Ok(RaoTable { grid: *grid, omegas, speeds, heading_cs: cos_sin(&headings), headings, data })
     }
 
     /// Trilinear interpolation (complex RAOs component-wise) at wave frequency `omega0` [rad/s],
@@ -237,9 +244,9 @@ impl RaoTable {
                     for (a, v) in acc.iter_mut().zip([r.sway, r.heave, r.roll, r.pitch, r.yaw]) {
                         *a += v * w;
                     }
-                    let hb = self.headings[(k0 + dk).min(self.headings.len() - 1)];
-                    fx += w * libm::cos(hb) * r.f_add;
-                    fy += w * libm::sin(hb) * r.f_add;
+                    let (cos_hb, sin_hb) = self.heading_cs[(k0 + dk).min(self.headings.len() - 1)];
+                    fx += w * cos_hb * r.f_add;
+                    fy += w * sin_hb * r.f_add;
                     // The moment is interpolated as stored (it carries its own sin(beta) and lever).
                     mz += w * r.drift_moment;
                     we += w * r.omega_e;

@@ -193,15 +193,16 @@ impl Seaway {
         let hull = sc.ship_hull()?;
         let table = sc.rao_table()?;
         let (speeds, headings) = (k.grid.speeds(), k.grid.headings());
+        let heading_cs: Vec<(f64, f64)> = headings.iter().map(|&b| (libm::cos(b), libm::sin(b))).collect();
         let comps = waves
             .into_iter()
             .map(|w| {
                 let mut slice = Vec::with_capacity(speeds.len() * headings.len());
                 for &u in &speeds {
-                    for &b in &headings {
+                    for (&b, &(cos_b, sin_b)) in headings.iter().zip(&heading_cs) {
                         let r = table.interpolate(w.omega, u, b);
                         // F_add along the waves' travel = fx cos b + fy sin b of the table.
-                        let fadd = r.fx * libm::cos(b) + r.fy * libm::sin(b);
+                        let fadd = r.fx * cos_b + r.fy * sin_b;
                         slice.push(([r.heave, r.pitch, r.roll, r.sway, r.yaw], fadd, r.mz));
                     }
                 }
