@@ -848,20 +848,31 @@ fn real_main() -> Result<(), Failure> {
             let other = match &hull {
                 None => None,
                 Some(h) => {
-                    let mut sc = aes_core::Scenario::default();
-                    sc.ship.hull = if aes_core::ship_hull::HULL_NAMES.contains(&h.as_str()) && h != "custom" {
+                    let spec = if aes_core::ship_hull::HULL_NAMES.contains(&h.as_str()) && h != "custom" {
                         aes_core::ship_hull::HullSpec { name: h.clone(), ..Default::default() }
                     } else {
                         let text =
                             read_bounded(h, aes_core::hull_sections::MAX_HULL_BYTES as u64, "a hull offsets file")?;
                         aes_core::ship_hull::HullSpec { name: "custom".into(), offsets_csv: text, ..Default::default() }
                     };
+                    // Every --set ship.hull.FIELD=VALUE at once (a custom hull is whole only with all).
+                    let mut v = serde_json::to_value(&spec).map_err(|e| e.to_string())?;
                     for s in &sets {
-                        let (p, v) =
+                        let (p, val) =
                             s.split_once('=').ok_or_else(|| format!("--set '{}': expected PATH=VALUE", shorten(s)))?;
-                        sc = sc.with_override(p.trim(), v.trim()).map_err(|e| e.to_string())?;
+                        let field = p.trim().strip_prefix("ship.hull.").ok_or_else(|| {
+                            format!("--set '{}': bench seakeeping takes ship.hull.FIELD=VALUE only", shorten(s))
+                        })?;
+                        v[field] = serde_json::from_str(val.trim())
+                            .unwrap_or_else(|_| serde_json::Value::String(val.trim().to_string()));
                     }
-                    Some(sc.ship_hull()?.strip_ship()?)
+                    let spec: aes_core::ship_hull::HullSpec =
+                        serde_json::from_value(v).map_err(|e| format!("ship.hull: {}", shorten(&e.to_string())))?;
+                    let mut check = aes_core::validate::Validator::new();
+                    check.section("ship.hull", |c| spec.validate(c, 1025.0));
+                    check.finish().map_err(|e| e.to_string())?;
+                    let hull = spec.resolve(1025.0).map_err(|(f, e)| format!("ship.hull.{f}: {e}"))?;
+                    Some(hull.strip_ship()?)
                 }
             };
             let five = Ship::dtmb5415();
