@@ -153,6 +153,8 @@ pub struct HullSheet {
     pub hub_depth_m: f64,
     pub propeller_diameter_m: f64,
     pub rudder_x_m: f64,
+    /// Stations strip theory takes only approximately (x from the AP [m], why).
+    pub approximated_stations: Vec<(f64, String)>,
 }
 
 /// One station of the body plan.
@@ -196,6 +198,7 @@ impl HullSheet {
             hub_depth_m: h.hub_depth_m,
             propeller_diameter_m: sc.propeller.diameter_m,
             rudder_x_m: h.lcg_m - h.rudder_x_aft_m,
+            approximated_stations: h.strip_ship()?.approximated,
         })
     }
 }

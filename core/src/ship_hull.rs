@@ -616,3 +616,41 @@ mod tests {
         assert_eq!((off.length_m, off.mass_kg, off.rudder_x_aft_m), (142.0, h.mass_kg, h.rudder_x_aft_m));
     }
 }
+
+#[cfg(test)]
+mod approximated_tests {
+    use super::*;
+
+    /// Sections no Lewis or bulb form takes are kept as the nearest Lewis form and named with the
+    /// reason (the hull panel and `HullSheet` list them): a deep spike (B/T 0.12, sigma 0.5) and a
+    /// wide flat V (B/T 16) are; boxes are not (the bulb form takes them); the embedded hulls need
+    /// no approximation at any station.
+    #[test]
+    fn stations_the_maps_cannot_take_are_named() {
+        let hull = |rows: &[(f64, f64)], t: f64| {
+            let mut csv = String::from("station_index,x_m,z_m,half_breadth_m\n");
+            for i in 0..11 {
+                for (z, hb) in rows {
+                    csv.push_str(&format!("{i},{},{z},{hb}\n", 10.0 * i as f64));
+                }
+            }
+            let spec = HullSpec {
+                name: "custom".into(),
+                offsets_csv: csv,
+                draft_m: Some(t),
+                kg_m: Some(0.1 * t),
+                ..Default::default()
+            };
+            spec.resolve(1025.0).unwrap().strip_ship().unwrap().approximated
+        };
+        let spike = hull(&[(0.0, 0.0), (8.0, 0.5), (12.0, 0.75)], 8.0);
+        assert_eq!(spike.len(), 11);
+        assert!(spike[3].0 == 30.0 && spike[3].1.contains("area coefficient 0.500 at B/T = 0.12"), "{spike:?}");
+        assert_eq!(hull(&[(0.0, 0.0), (1.0, 8.0), (2.0, 16.0)], 1.0).len(), 11);
+        assert!(hull(&[(0.0, 0.0), (0.001, 8.0), (4.0, 8.0)], 2.0).is_empty());
+        assert!(hull(&[(0.0, 0.0), (0.001, 1.0), (12.0, 1.0)], 8.0).is_empty());
+        for name in ["dtmb5415", "wigley"] {
+            assert!(Ship::embedded(name).approximated.is_empty(), "{name}");
+        }
+    }
+}

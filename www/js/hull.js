@@ -305,7 +305,10 @@ export class HullPanel {
     const name = hullTitle(sheet, this.file);
     this.heading.textContent = `The hull: ${name}`;
     this.note.textContent = `Lpp ${num(sheet.profile.lpp_m)} m, beam ${num(sheet.beam_m)} m, draft ${num(sheet.draft_m)} m, displacement ${num(sheet.mass_kg / 1000)} t. `
-      + 'Drawn to scale from the offsets; the strip theory of the RAOs and runs in waves uses these sections.';
+      + 'Drawn to scale from the offsets; the strip theory of the RAOs and runs in waves uses these sections.'
+      + ((sheet.approximated_stations || []).length
+        ? ` Taken approximately: ${sheet.approximated_stations.map(([x, why]) => `x = ${num(x)} m (${why})`).join('; ')}.`
+        : '');
     const bp = drawBodyPlan(this.bodyCanvas, sheet);
     const pr = drawProfile(this.profileCanvas, sheet);
     this.bodyCanvas.setAttribute('aria-label', `Body plan of the ${name}: ${bp.aft} sections of the aft half on the left, ${bp.fore} of the forward half on the right, `

@@ -78,6 +78,10 @@ pub struct Ship {
     pub gm_l: f64,
     pub awp: f64,
     pub mass_props: MassProperties,
+    /// Stations the section maps cannot represent exactly, kept as the nearest Lewis form (x from
+    /// the AP [m], why); and stations without beam or draft at this waterline, which carry no
+    /// sectional force.
+    pub approximated: Vec<(f64, String)>,
     pub roll: RollHull,
     pub rho: f64,
     pub g: f64,
@@ -98,6 +102,7 @@ impl Ship {
         let secs = offsets.sections(t)?;
         let lcg = hs.lcb;
         let mut strips = Vec::new();
+        let mut approximated = Vec::new();
         for (s, st) in secs.iter().zip(&offsets.stations) {
             if s.beam <= 1e-3 || s.draft <= 1e-3 || s.area <= 1e-6 {
                 continue;
@@ -106,6 +111,15 @@ impl Ship {
             let profile: Vec<(f64, f64)> =
                 st.z.iter().zip(&st.half_breadth).filter(|(z, _)| **z < t).map(|(z, hb)| (t - z, *hb)).collect();
             let Some(map) = best_section_map(0.5 * s.beam, s.draft, sigma, &profile) else { continue };
+            if map.clamped {
+                approximated.push((
+                    s.x,
+                    format!(
+                        "area coefficient {sigma:.3} at B/T = {:.2} is beyond the Lewis and bulb forms: nearest Lewis form",
+                        s.beam / s.draft
+                    ),
+                ));
+            }
             let contour = Contour::new(&map);
             strips.push(Strip { xi: s.x - lcg, weight: 0.0, beam: s.beam, draft: s.draft, area: s.area, map, contour });
         }
@@ -157,6 +171,7 @@ impl Ship {
             gm_l,
             awp: hs.awp,
             mass_props: mass,
+            approximated,
             rho,
             g,
         })
