@@ -167,7 +167,7 @@ export const PLOTS = [
   { id: 'motor', title: 'Motor power', events: true, series: [{ signal: 'im_power_pu', color: '#6c3483' }] },
   { id: 'inventory', title: 'Power inventory', prefix: 'M', series: [{ signal: 'p_turbine_w', color: '#1e7b3c' }, { signal: 'p_generator_w', color: '#b9770e', dash: [10, 3] }, { signal: 'p_inverter_w', color: '#0b5cad', dash: [3, 3] }, { signal: 'p_motor_w', color: '#6c3483', dash: [10, 3, 2, 3] }, { signal: 'p_ship_w', color: '#1b1b1b' }] },
   { id: 'rudder', title: 'Heading and rudder', series: [{ signal: 'heading_deg', color: '#0b5cad' }, { signal: 'heading_ref_deg', ...REF }, { signal: 'rudder_deg', color: '#a04000', axis: 'right' }] },
-  { id: 'hr', title: 'Hub depth over propeller radius', sea: true, hOverR: true, events: true, series: [{ signal: 'h_over_r', label: 'h/R port', color: '#0b5cad' }, { signal: 'h_over_r_stbd', label: 'h/R starboard', color: '#1b1b1b', dash: [6, 3] }] },
+  { id: 'hr', title: 'Hub depth over propeller radius', yLabel: 'h/R [-]', sea: true, hOverR: true, events: true, series: [{ signal: 'h_over_r', label: 'h/R port', color: '#0b5cad' }, { signal: 'h_over_r_stbd', label: 'h/R starboard', color: '#1b1b1b', dash: [6, 3] }] },
   { id: 'beta', title: 'Thrust and torque kept under surface losses', sea: true, events: true, series: [{ signal: 'beta_t', color: '#b03a2e' }, { signal: 'beta_q', color: '#6c3483', dash: [6, 3] }] },
   { id: 'wave', title: 'Wave at the stern and hub depth', sea: true, series: [{ signal: 'wave_stern_m', color: '#0b5cad' }, { signal: 'hub_depth_m', color: '#1b1b1b', dash: [6, 3] }] },
   { id: 'heave', title: 'Heave', sea: true, series: [{ signal: 'heave_m', label: 'heave (up)', color: '#117a65' }] },

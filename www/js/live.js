@@ -392,12 +392,29 @@ export class LiveViews {
     box(6, 2, Math.min(across * 0.5, 4 * bl), ['Ship', `${v('ship_speed_kn').toFixed(1)} kn`, `useful ${mw(pS)}`, ...(down ? [] : [`thrust ${(v('thrust_kn') / 1e3).toFixed(2)} MN`]), keeps(v('p_ship_w'), v('p_motor_w'))], null);
   }
 
+  // Largest vertical excursion of the stern over the run [m]: |heave| + x_p |pitch|.
+  sternReach() {
+    const c = this.cols;
+    if (!c || !c.heave_m || !c.pitch_deg) return 0;
+    if (this.reachOf === c) return this.reach;
+    const xp = (this.k && this.k.prop_x_aft_m) || 0;
+    let r = 0;
+    for (let i = 0; i < c.heave_m.length; i++) r = Math.max(r, Math.abs(c.heave_m[i]) + xp * Math.abs((c.pitch_deg[i] * Math.PI) / 180));
+    this.reachOf = c;
+    this.reach = Number.isFinite(r) ? r : 0;
+    return this.reach;
+  }
+
   drawStern(view) {
     const { g, w, h } = view;
     const v = (n) => this.v(n), hull = this.hull, W = LIVE.stern, k = this.k;
     g.clearRect(0, 0, w, h);
-    const s = Math.min(w / (W.aftM + W.foreM), h / (W.upM + W.downM));
-    const ox = (w - (W.aftM + W.foreM) * s) / 2, oy = (h - (W.upM + W.downM) * s) / 2 + W.upM * s;
+    // The frame grows to hold the run's largest heave and pitch at the stern (the thesis' Appendix
+    // A as printed heaves the ship by 16-18 m), so nothing leaves the picture.
+    const reach = this.sternReach();
+    const up = Math.max(W.upM, reach + 1), down = Math.max(W.downM, reach + 3);
+    const s = Math.min(w / (W.aftM + W.foreM), h / (up + down));
+    const ox = (w - (W.aftM + W.foreM) * s) / 2, oy = (h - (up + down) * s) / 2 + up * s;
     const X = (x) => ox + (x + W.aftM) * s, Z = (z) => oy - z * s; // hull x from the AP, z up
     const heave = v('heave_m'), pitch = (v('pitch_deg') * Math.PI) / 180, lcg = hull.lcg_m;
     const hx = lcg - k.prop_x_aft_m; // the hub, from the AP

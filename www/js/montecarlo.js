@@ -119,7 +119,7 @@ export function showMonteCarlo(box, s, signals, constants, { onReplay = null, on
     const fewer = n.findIndex((k) => k < s.trials);
     const axes = [{ scale: 'y', label: signals.axisLabel(sig, constants) }];
     if (fewer >= 0) {
-      series.push({ data: n, label: 'trials still running', color: '#1b1b1b', dash: [2, 3], width: 1, scale: 'n' });
+      series.push({ data: n, label: 'trials still running', color: '#7d3c98', dash: [10, 3, 2, 3], width: 1.5, scale: 'n' });
       axes.push({ scale: 'n', label: 'trials still running [-]' });
     }
     box.line(`${signals.labelWithUnit(sig, constants)}: envelope over ${s.trials} trials (Fig. 5-20)`, { data: env.t_s, label: time }, series, axes,

@@ -252,7 +252,9 @@ function runPlot(box, spec, cols, signals, constants, kept, more, markers) {
     const unitText = one ? `pu of ${[...g.bases][0]}` : g.unit;
     const names = g.series.map((s) => s.label).join(', ');
     // "heading [deg]" / "rudder [deg]" when two axes share a unit; "h/R [-]" when dimensionless.
-    const label = groups.size > 1 || g.unit === '-' ? `${names.length > 40 ? names.slice(0, 38) + '…' : names} [${unitText}]` : `[${unitText}]`;
+    // A plot may name its one axis itself (`yLabel`, e.g. h/R of both shafts).
+    const label = spec.yLabel && groups.size === 1 ? spec.yLabel
+      : groups.size > 1 || g.unit === '-' ? `${names.length > 40 ? names.slice(0, 38) + '…' : names} [${unitText}]` : `[${unitText}]`;
     axes.push({ scale: 'y:' + key, unit: unitText, label });
     for (const { base, ...s } of g.series) series.push(base && !one ? { ...s, label: `${s.label} (pu of ${base})` } : s);
   }
