@@ -21,8 +21,9 @@ use crate::signals::{Signal, N_SIGNALS};
 use crate::speed_control::SpeedController;
 use crate::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg};
 use plant::{
-    bus_voltage, field_current, omega_rm, omega_t, rk4_step, Held, Outputs, Plant, State, ENERGY0, HEADING, NX,
-    N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE, Y_POS,
+    bus_voltage, field_current, omega_rm, omega_t, rk4_drive_step, rk4_hull_step, rk4_step, Energy, Held, Outputs,
+    Plant, State, ENERGY0, HEADING, NX, N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE,
+    Y_POS,
 };
 use std::f64::consts::PI;
 use std::fmt;
@@ -189,6 +190,21 @@ pub struct Simulation {
     fuel_extrapolated: bool,
     /// Time of the first surface effect (beta_T < 1 on either shaft) [s].
     first_event: Option<f64>,
+    /// Multi-rate stepping (`sim.hull_substeps` > 1).
+    multi: MultiRate,
+}
+
+/// The multi-rate step's bookkeeping: the hull steps once per `substeps` drive-train steps.
+#[derive(Debug, Clone, Copy)]
+struct MultiRate {
+    substeps: u64,
+    /// First drive-train step of the present hull step.
+    start: u64,
+    /// The thrust account before the hull step [J] (its slot integrates the thrust [N s] over
+    /// the drive-train steps).
+    thrust_work: f64,
+    /// The propellers' inflow over the hull step [m/s].
+    va: f64,
 }
 
 impl Simulation {
@@ -271,6 +287,7 @@ impl Simulation {
             fuel_curve: crate::fuel::part_load_curve(),
             fuel_extrapolated: false,
             first_event: None,
+            multi: MultiRate { substeps: sim_cfg.hull_substeps.max(1) as u64, start: 0, thrust_work: 0.0, va: 0.0 },
         };
         sim.initialise()?;
         sim.sea_step();
@@ -574,6 +591,30 @@ impl Simulation {
         }
     }
 
+    /// One drive-train step of the multi-rate scheme, and the hull's step when it ends one: the
+    /// drive train steps with the hull held and the propellers' inflow fixed; the hull then
+    /// steps over all of them under their mean thrust (the thrust's impulse integrated in the
+    /// thrust account's slot), and the thrust's work is booked at the hull's speed, so the
+    /// energy accounts close as with one step.
+    fn multi_rate_step(&mut self) {
+        let thrust_slot = ENERGY0 + Energy::Thrust as usize;
+        let m = &mut self.multi;
+        if self.step % m.substeps == 0 {
+            m.start = self.step;
+            m.thrust_work = self.x[thrust_slot];
+            self.x[thrust_slot] = 0.0;
+            m.va = self.plant.inflow(self.x[SURGE], self.x[SWAY], self.x[YAW_RATE]).speed;
+        }
+        rk4_drive_step(&self.plant, &mut self.x, &self.ctl.held, m.va, self.dt);
+        let done = self.step + 1;
+        if done % m.substeps == 0 || done == self.total_steps {
+            let span = (done - m.start) as f64 * self.dt;
+            let thrust = self.x[thrust_slot] / span;
+            self.x[thrust_slot] = m.thrust_work;
+            rk4_hull_step(&self.plant, &mut self.x, &self.ctl.held, thrust, span);
+        }
+    }
+
     /// Advances by at most `max_steps` time steps (stopping at the end of the run).
     pub fn advance(&mut self, max_steps: u64) -> Result<(), SimError> {
         let end = (self.step + max_steps).min(self.total_steps);
@@ -584,7 +625,11 @@ impl Simulation {
             if self.sea.is_some() && self.step > 0 {
                 self.sea_step();
             }
-            rk4_step(&self.plant, &mut self.x, &self.ctl.held, self.dt);
+            if self.multi.substeps == 1 {
+                rk4_step(&self.plant, &mut self.x, &self.ctl.held, self.dt);
+            } else {
+                self.multi_rate_step();
+            }
             if self.sea.is_some() && !self.x[HEADING].is_finite() {
                 return Err(SimError::Diverged {
                     time_s: self.t,
