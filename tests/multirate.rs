@@ -82,7 +82,7 @@ fn head_seas_multi_rate_matches_single_rate() {
     assert!((d.residual_multi - d.residual_single).abs() < 1e-6, "{} vs {}", d.residual_multi, d.residual_single);
 }
 
-/// Calm-water acceleration (surge model, 1 ms steps) with hull steps of 5 and 10 ms: measured rpm
+/// Calm-water acceleration (maneuvering model, 1 ms steps) with hull steps of 5 and 10 ms: measured rpm
 /// 2.7e-3 and 5.4e-3 at most, mean motor power 1.2e-6 and 2.4e-6, ship speed 8.8e-5 and 1.8e-4
 /// kn; the energy residual unchanged (-2.47e-11).
 #[test]
