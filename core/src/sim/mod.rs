@@ -205,6 +205,27 @@ struct MultiRate {
     thrust_work: f64,
     /// The propellers' inflow over the hull step [m/s].
     va: f64,
+    /// The hull's mean rate over its last step (surge, sway, yaw rate, x, y, heading), which
+    /// carries the hull forward for the controllers and the seaway between its steps.
+    rate: [f64; HULL_STATES],
+}
+
+/// The hull's states, from [`SURGE`] to [`HEADING`].
+const HULL_STATES: usize = HEADING + 1 - SURGE;
+
+impl MultiRate {
+    /// The state with the hull carried forward from its last step to drive-train step `step`
+    /// (the state itself at a hull step, or with one rate).
+    fn carried(&self, x: &State, step: u64, dt: f64) -> State {
+        let mut y = *x;
+        if self.substeps > 1 && step % self.substeps != 0 {
+            let tau = (step - self.start) as f64 * dt;
+            for (i, r) in self.rate.iter().enumerate() {
+                y[SURGE + i] += r * tau;
+            }
+        }
+        y
+    }
 }
 
 impl Simulation {
@@ -287,7 +308,13 @@ impl Simulation {
             fuel_curve: crate::fuel::part_load_curve(),
             fuel_extrapolated: false,
             first_event: None,
-            multi: MultiRate { substeps: sim_cfg.hull_substeps.max(1) as u64, start: 0, thrust_work: 0.0, va: 0.0 },
+            multi: MultiRate {
+                substeps: sim_cfg.hull_substeps.max(1) as u64,
+                start: 0,
+                thrust_work: 0.0,
+                va: 0.0,
+                rate: [0.0; HULL_STATES],
+            },
         };
         sim.initialise()?;
         sim.sea_step();
@@ -362,15 +389,21 @@ impl Simulation {
 
     /// Fastest turn the autopilot orders at the present speed [rad/s].
     fn max_turn_rate(&self) -> f64 {
+        self.max_turn_rate_at(&self.x)
+    }
+
+    /// The same at state `x`.
+    fn max_turn_rate_at(&self, x: &State) -> f64 {
         let l = self.plant.hull_length;
-        self.scenario.controllers.autopilot.max_turn_rate_nondim * speed_through_water(&self.x).max(1.0) / l
+        self.scenario.controllers.autopilot.max_turn_rate_nondim * speed_through_water(x).max(1.0) / l
     }
 
     /// One sample of every discrete controller.
     fn control(&mut self) {
         let ts = self.ts;
-        let max_turn_rate = self.max_turn_rate();
-        let x = &self.x;
+        let carried = self.multi.carried(&self.x, self.step, self.dt);
+        let x = &carried;
+        let max_turn_rate = self.max_turn_rate_at(x);
         let p = &self.plant;
         let c = &mut self.ctl;
         // Ship speed: calm-water map plus PI trim, then the ramp-limited shaft reference.
@@ -558,8 +591,9 @@ impl Simulation {
     /// The seaway's part of a step: RAO refresh and wave sums when due, then the hub depth at
     /// the middle of the step and the propellers' surface losses held over it.
     fn sea_step(&mut self) {
+        let carried = self.multi.carried(&self.x, self.step, self.dt);
         let Some(sea) = self.sea.as_mut() else { return };
-        let x = &self.x;
+        let x = &carried;
         if self.step % self.refresh_every == 0 {
             sea.refresh(speed_through_water(x), x[HEADING]);
         }
@@ -611,7 +645,11 @@ impl Simulation {
             let span = (done - m.start) as f64 * self.dt;
             let thrust = self.x[thrust_slot] / span;
             self.x[thrust_slot] = m.thrust_work;
+            let before = self.x;
             rk4_hull_step(&self.plant, &mut self.x, &self.ctl.held, thrust, span);
+            for (i, r) in m.rate.iter_mut().enumerate() {
+                *r = (self.x[SURGE + i] - before[SURGE + i]) / span;
+            }
         }
     }
 
@@ -654,7 +692,9 @@ impl Simulation {
         &self.trace
     }
 
-    /// The state vector now (for tests and analysis).
+    /// The state vector now (for tests and analysis). With `sim.hull_substeps` > 1 between hull
+    /// steps the hull's states are those of its last step and the thrust account's slot holds
+    /// the thrust's impulse since then [N s].
     pub fn state(&self) -> &State {
         &self.x
     }
