@@ -175,6 +175,16 @@ pub struct SimSettings {
     pub record_interval_s: f64,
     /// Seed of every random number in the run (the calm-water drive train uses none).
     pub seed: u64,
+    /// Multi-rate stepping: the hull (surge, sway, yaw, position, heading) takes one RK4 step of
+    /// this many `dt_s` under the drive train's mean thrust over them, while the drive train
+    /// takes its `dt_s` steps with the hull held. 1 (the default): one RK4 step of the whole
+    /// plant every `dt_s`. `record_interval_s` must be a whole number of hull steps.
+    #[serde(skip_serializing_if = "is_one")]
+    pub hull_substeps: u32,
+}
+
+fn is_one(n: &u32) -> bool {
+    *n == 1
 }
 
 impl Default for Scenario {
@@ -222,7 +232,7 @@ impl Default for InitialConditions {
 
 impl Default for SimSettings {
     fn default() -> Self {
-        SimSettings { duration_s: 300.0, dt_s: 0.001, record_interval_s: 0.1, seed: 0 }
+        SimSettings { duration_s: 300.0, dt_s: 0.001, record_interval_s: 0.1, seed: 0, hull_substeps: 1 }
     }
 }
 
@@ -298,6 +308,18 @@ impl SimSettings {
                 "record_interval_s",
                 self.record_interval_s,
                 format!("must be a whole number (1 or more) of sim.dt_s = {}", self.dt_s),
+            );
+        }
+        if !(1..=100).contains(&self.hull_substeps) {
+            v.fail("hull_substeps", self.hull_substeps as f64, "must be 1 to 100".to_string());
+        } else if !whole_multiple(self.record_interval_s, self.hull_substeps as f64 * self.dt_s) {
+            v.fail(
+                "record_interval_s",
+                self.record_interval_s,
+                format!(
+                    "must be a whole number of hull steps, sim.hull_substeps x sim.dt_s = {} x {}",
+                    self.hull_substeps, self.dt_s
+                ),
             );
         }
         let steps = self.duration_s / self.dt_s;

@@ -21,8 +21,9 @@ use crate::signals::{Signal, N_SIGNALS};
 use crate::speed_control::SpeedController;
 use crate::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg};
 use plant::{
-    bus_voltage, field_current, omega_rm, omega_t, rk4_step, Held, Outputs, Plant, State, ENERGY0, HEADING, NX,
-    N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE, Y_POS,
+    bus_voltage, field_current, omega_rm, omega_t, rk4_drive_step, rk4_hull_step, rk4_step, Energy, Held, Outputs,
+    Plant, State, ENERGY0, HEADING, NX, N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE,
+    Y_POS,
 };
 use std::f64::consts::PI;
 use std::fmt;
@@ -189,6 +190,42 @@ pub struct Simulation {
     fuel_extrapolated: bool,
     /// Time of the first surface effect (beta_T < 1 on either shaft) [s].
     first_event: Option<f64>,
+    /// Multi-rate stepping (`sim.hull_substeps` > 1).
+    multi: MultiRate,
+}
+
+/// The multi-rate step's bookkeeping: the hull steps once per `substeps` drive-train steps.
+#[derive(Debug, Clone, Copy)]
+struct MultiRate {
+    substeps: u64,
+    /// First drive-train step of the present hull step.
+    start: u64,
+    /// The thrust account before the hull step [J] (its slot integrates the thrust [N s] over
+    /// the drive-train steps).
+    thrust_work: f64,
+    /// The propellers' inflow over the hull step [m/s].
+    va: f64,
+    /// The hull's mean rate over its last step (surge, sway, yaw rate, x, y, heading), which
+    /// carries the hull forward for the controllers and the seaway between its steps.
+    rate: [f64; HULL_STATES],
+}
+
+/// The hull's states, from [`SURGE`] to [`HEADING`].
+const HULL_STATES: usize = HEADING + 1 - SURGE;
+
+impl MultiRate {
+    /// The state with the hull carried forward from its last step to drive-train step `step`
+    /// (the state itself at a hull step, or with one rate).
+    fn carried(&self, x: &State, step: u64, dt: f64) -> State {
+        let mut y = *x;
+        if self.substeps > 1 && step % self.substeps != 0 {
+            let tau = (step - self.start) as f64 * dt;
+            for (i, r) in self.rate.iter().enumerate() {
+                y[SURGE + i] += r * tau;
+            }
+        }
+        y
+    }
 }
 
 impl Simulation {
@@ -271,6 +308,13 @@ impl Simulation {
             fuel_curve: crate::fuel::part_load_curve(),
             fuel_extrapolated: false,
             first_event: None,
+            multi: MultiRate {
+                substeps: sim_cfg.hull_substeps.max(1) as u64,
+                start: 0,
+                thrust_work: 0.0,
+                va: 0.0,
+                rate: [0.0; HULL_STATES],
+            },
         };
         sim.initialise()?;
         sim.sea_step();
@@ -345,15 +389,21 @@ impl Simulation {
 
     /// Fastest turn the autopilot orders at the present speed [rad/s].
     fn max_turn_rate(&self) -> f64 {
+        self.max_turn_rate_at(&self.x)
+    }
+
+    /// The same at state `x`.
+    fn max_turn_rate_at(&self, x: &State) -> f64 {
         let l = self.plant.hull_length;
-        self.scenario.controllers.autopilot.max_turn_rate_nondim * speed_through_water(&self.x).max(1.0) / l
+        self.scenario.controllers.autopilot.max_turn_rate_nondim * speed_through_water(x).max(1.0) / l
     }
 
     /// One sample of every discrete controller.
     fn control(&mut self) {
         let ts = self.ts;
-        let max_turn_rate = self.max_turn_rate();
-        let x = &self.x;
+        let carried = self.multi.carried(&self.x, self.step, self.dt);
+        let x = &carried;
+        let max_turn_rate = self.max_turn_rate_at(x);
         let p = &self.plant;
         let c = &mut self.ctl;
         // Ship speed: calm-water map plus PI trim, then the ramp-limited shaft reference.
@@ -541,8 +591,9 @@ impl Simulation {
     /// The seaway's part of a step: RAO refresh and wave sums when due, then the hub depth at
     /// the middle of the step and the propellers' surface losses held over it.
     fn sea_step(&mut self) {
+        let carried = self.multi.carried(&self.x, self.step, self.dt);
         let Some(sea) = self.sea.as_mut() else { return };
-        let x = &self.x;
+        let x = &carried;
         if self.step % self.refresh_every == 0 {
             sea.refresh(speed_through_water(x), x[HEADING]);
         }
@@ -574,6 +625,34 @@ impl Simulation {
         }
     }
 
+    /// One drive-train step of the multi-rate scheme, and the hull's step when it ends one: the
+    /// drive train steps with the hull held and the propellers' inflow fixed; the hull then
+    /// steps over all of them under their mean thrust (the thrust's impulse integrated in the
+    /// thrust account's slot), and the thrust's work is booked at the hull's speed, so the
+    /// energy accounts close as with one step.
+    fn multi_rate_step(&mut self) {
+        let thrust_slot = ENERGY0 + Energy::Thrust as usize;
+        let m = &mut self.multi;
+        if self.step % m.substeps == 0 {
+            m.start = self.step;
+            m.thrust_work = self.x[thrust_slot];
+            self.x[thrust_slot] = 0.0;
+            m.va = self.plant.inflow(self.x[SURGE], self.x[SWAY], self.x[YAW_RATE]).speed;
+        }
+        rk4_drive_step(&self.plant, &mut self.x, &self.ctl.held, m.va, self.dt);
+        let done = self.step + 1;
+        if done % m.substeps == 0 || done == self.total_steps {
+            let span = (done - m.start) as f64 * self.dt;
+            let thrust = self.x[thrust_slot] / span;
+            self.x[thrust_slot] = m.thrust_work;
+            let before = self.x;
+            rk4_hull_step(&self.plant, &mut self.x, &self.ctl.held, thrust, span);
+            for (i, r) in m.rate.iter_mut().enumerate() {
+                *r = (self.x[SURGE + i] - before[SURGE + i]) / span;
+            }
+        }
+    }
+
     /// Advances by at most `max_steps` time steps (stopping at the end of the run).
     pub fn advance(&mut self, max_steps: u64) -> Result<(), SimError> {
         let end = (self.step + max_steps).min(self.total_steps);
@@ -584,7 +663,11 @@ impl Simulation {
             if self.sea.is_some() && self.step > 0 {
                 self.sea_step();
             }
-            rk4_step(&self.plant, &mut self.x, &self.ctl.held, self.dt);
+            if self.multi.substeps == 1 {
+                rk4_step(&self.plant, &mut self.x, &self.ctl.held, self.dt);
+            } else {
+                self.multi_rate_step();
+            }
             if self.sea.is_some() && !self.x[HEADING].is_finite() {
                 return Err(SimError::Diverged {
                     time_s: self.t,
@@ -609,7 +692,9 @@ impl Simulation {
         &self.trace
     }
 
-    /// The state vector now (for tests and analysis).
+    /// The state vector now (for tests and analysis). With `sim.hull_substeps` > 1 between hull
+    /// steps the hull's states are those of its last step and the thrust account's slot holds
+    /// the thrust's impulse since then [N s].
     pub fn state(&self) -> &State {
         &self.x
     }

@@ -367,13 +367,45 @@ impl Plant {
     ) {
         let mut e = [0.0; N_ENERGY];
         let (u, v, r) = (x[SURGE], x[SWAY], x[YAW_RATE]);
-        // Inflow at the stern (eqs. 2.26-2.27); the surge model goes straight.
-        let inflow = match &self.hull {
+        let inflow = self.inflow(u, v, r);
+        let va = inflow.speed;
+        let thrust = self.drive::<OUT>(x, h, va, u, out, dx, &mut e);
+        let resistance = self.hull_part(x, h, &inflow, thrust, heading, dx, &mut e);
+        dx[ENERGY0..].copy_from_slice(&e);
+        if OUT {
+            out.thrust = thrust;
+            out.resistance = resistance;
+            out.inflow_speed = va;
+        }
+    }
+
+    /// Inflow at the stern (eqs. 2.26-2.27); the surge model goes straight.
+    #[inline(always)]
+    pub fn inflow(&self, u: f64, v: f64, r: f64) -> Inflow {
+        match &self.hull {
             Hull::Surge => Inflow { speed: u, angle: 0.0, sin: 0.0, cos: 1.0 },
             // One x_p for the rudder and the propellers' inflow, as eqs. 2.26-2.27.
             Hull::Maneuvering { x_p, .. } => stern_inflow(u, v, r, *x_p),
-        };
-        let va = inflow.speed;
+        }
+    }
+
+    /// The drive train's derivatives (turbines, fields, buses, shafts) with the propellers'
+    /// inflow `va` [m/s]; books every drive-train energy, the thrust's as thrust times `u_book`
+    /// (the ship speed; 1 gives the thrust itself, the multi-rate step's impulse). Returns the
+    /// total thrust [N].
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn drive<const OUT: bool>(
+        &self,
+        x: &State,
+        h: &Held,
+        va: f64,
+        u_book: f64,
+        out: &mut Outputs,
+        dx: &mut State,
+        e: &mut [f64; N_ENERGY],
+    ) -> f64 {
+        let u = u_book;
         let mut thrust = 0.0;
         for s in 0..N_SHAFTS {
             let v_c = x[bus_voltage(s)];
@@ -430,6 +462,24 @@ impl Plant {
                 out.propeller[s] = pl;
             }
         }
+        thrust
+    }
+
+    /// The hull's derivatives (surge, sway, yaw, position, heading) under the total thrust
+    /// `thrust` [N]; books the work against the resistance. Returns the resistance in surge [N].
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn hull_part(
+        &self,
+        x: &State,
+        h: &Held,
+        inflow: &Inflow,
+        thrust: f64,
+        heading: Option<(f64, f64, f64)>,
+        dx: &mut State,
+        e: &mut [f64; N_ENERGY],
+    ) -> f64 {
+        let (u, v, r) = (x[SURGE], x[SWAY], x[YAW_RATE]);
         let resistance = match &self.hull {
             Hull::Surge => {
                 dx[SURGE] = self.surge.acceleration(thrust + h.sea.wave_fx - self.extra_resistance, u); // eq. 2.16
@@ -439,7 +489,7 @@ impl Plant {
             }
             Hull::Maneuvering { abkowitz, rudder, x_p, eq_2_22_straight, lo, hi } => {
                 let f = abkowitz.forces(u, v, r); // eqs. 2.22-2.24, hull terms
-                let (fx_r, fy_r) = rudder_force(rudder, self.rho, &inflow, h.rudder); // eqs. 2.28-2.30
+                let (fx_r, fy_r) = rudder_force(rudder, self.rho, inflow, h.rudder); // eqs. 2.28-2.30
                 let x_hull = if *eq_2_22_straight {
                     // Surge hands over smoothly from the surge model (low speed) to Abkowitz (near u0).
                     let w = handover_weight(u, *lo, *hi);
@@ -466,12 +516,31 @@ impl Plant {
         dx[Y_POS] = u * sp + v * cp;
         dx[HEADING] = r;
         e[Energy::Ship as usize] = resistance * u;
+        resistance
+    }
+
+    /// The multi-rate step's fast part: the drive train's derivatives with the hull held (its
+    /// derivatives 0) and the propellers' inflow `va` [m/s] fixed over the slow step; the thrust
+    /// slot integrates the thrust itself [N] (its impulse over the step), the ship's is 0.
+    pub fn drive_derivatives(&self, x: &State, h: &Held, va: f64, dx: &mut State) {
+        let mut e = [0.0; N_ENERGY];
+        let mut out = Outputs::default();
+        self.drive::<false>(x, h, va, 1.0, &mut out, dx, &mut e);
+        dx[SURGE..=HEADING].fill(0.0);
         dx[ENERGY0..].copy_from_slice(&e);
-        if OUT {
-            out.thrust = thrust;
-            out.resistance = resistance;
-            out.inflow_speed = va;
-        }
+    }
+
+    /// The multi-rate step's slow part: the hull's derivatives under the mean thrust `thrust`
+    /// [N] with the drive train held (its derivatives 0); books the thrust's work at the hull's
+    /// speed and the work against the resistance.
+    pub fn hull_derivatives(&self, x: &State, h: &Held, thrust: f64, heading: (f64, f64, f64), dx: &mut State) {
+        let mut e = [0.0; N_ENERGY];
+        let (u, v, r) = (x[SURGE], x[SWAY], x[YAW_RATE]);
+        let inflow = self.inflow(u, v, r);
+        dx[..SURGE].fill(0.0);
+        e[Energy::Thrust as usize] = thrust * u;
+        self.hull_part(x, h, &inflow, thrust, Some(heading), dx, &mut e);
+        dx[ENERGY0..].copy_from_slice(&e);
     }
 
     /// Kinetic and electric energy stored in the state [J]: turbine rotors, bus capacitors,
@@ -504,6 +573,20 @@ pub fn rk4_step(plant: &Plant, x: &mut State, h: &Held, dt: f64) {
     let psi0 = x[HEADING];
     let heading = (psi0, libm::sin(psi0), libm::cos(psi0));
     crate::numerics::rk4(x, 0.0, dt, |_, y, dx| plant.derivatives(y, h, heading, dx));
+}
+
+/// The multi-rate step's fast part: one RK4 step of `dt` [s] of the drive train with the hull
+/// held and the propellers' inflow `va` [m/s] fixed (see [`Plant::drive_derivatives`]).
+pub fn rk4_drive_step(plant: &Plant, x: &mut State, h: &Held, va: f64, dt: f64) {
+    crate::numerics::rk4(x, 0.0, dt, |_, y, dx| plant.drive_derivatives(y, h, va, dx));
+}
+
+/// The multi-rate step's slow part: one RK4 step of `dt` [s] of the hull under the mean thrust
+/// `thrust` [N] with the drive train held (see [`Plant::hull_derivatives`]).
+pub fn rk4_hull_step(plant: &Plant, x: &mut State, h: &Held, thrust: f64, dt: f64) {
+    let psi0 = x[HEADING];
+    let heading = (psi0, libm::sin(psi0), libm::cos(psi0));
+    crate::numerics::rk4(x, 0.0, dt, |_, y, dx| plant.hull_derivatives(y, h, thrust, heading, dx));
 }
 
 /// sin and cos of `psi` [rad]; with `near` = (psi0, sin psi0, cos psi0) and |psi - psi0| below
