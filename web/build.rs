@@ -12,8 +12,12 @@ fn main() {
     h.sim.duration_s = 10.0;
     h.seakeeping.stern_motion = aes_core::scenario::SternMotion::ThesisEq257;
     let seas = aes_core::run(&h).map(|r| r.summary.to_json_value().to_string()).unwrap_or_default();
+    // The same with the multi-rate hull step (sim.hull_substeps = 4: 10 ms).
+    h.sim.hull_substeps = 4;
+    let multirate = aes_core::run(&h).map(|r| r.summary.to_json_value().to_string()).unwrap_or_default();
     let out = std::env::var("OUT_DIR").unwrap_or_else(|_| ".".into());
     let _ = std::fs::write(format!("{out}/native_head_seas_10s.json"), seas);
+    let _ = std::fs::write(format!("{out}/native_head_seas_10s_multirate.json"), multirate);
     let _ = std::fs::write(format!("{out}/native_startup_60s.json"), summary);
     let _ = std::fs::write(format!("{out}/native_turn90_40s.json"), turn);
     let golden = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/golden");
