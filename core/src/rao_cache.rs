@@ -8,7 +8,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 
 /// A table is keyed by its hull (`ShipHull::table_key`), its grid and the strip-theory switches
 /// of `as_printed`.
-type Key = (String, SeakeepingGrid, AsPrintedParams);
+type Key = (Arc<str>, SeakeepingGrid, AsPrintedParams);
 type Cache = Mutex<Vec<(Key, Arc<RaoTable>)>>;
 /// The tables made so far (at most `MAX_TABLES`, the oldest dropped first).
 static CACHE: OnceLock<Cache> = OnceLock::new();

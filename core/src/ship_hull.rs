@@ -21,7 +21,7 @@ use crate::hull_sections::{HullOffsets, Hydrostatics};
 use crate::seakeeping::strip::{BilgeKeels, MassProperties, Ship};
 use crate::validate::{num, Validator};
 use serde::{Deserialize, Serialize};
-use std::sync::{Mutex, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// Shafts of the ship (port, starboard).
 pub const N_SHAFTS: usize = 2;
@@ -190,6 +190,9 @@ pub struct ShipHull {
     /// Rudder aft of the centre of gravity [m] (x_p of eqs. 2.19, 2.26-2.27).
     pub rudder_x_aft_m: f64,
     pub rho: f64,
+    /// Every input of `strip_ship` as text, made once (the RAO cache's key; a custom hull's
+    /// offsets make it long, and clones share it).
+    table_key: Arc<str>,
 }
 
 /// Bisection steps for the draft of a given mass (the interval halves 60 times: far below a
@@ -316,8 +319,9 @@ impl HullSpec {
             hydrostatics: hs,
             offsets,
             rho,
+            table_key: Arc::from(""),
         };
-        Ok(hull)
+        Ok(ShipHull { table_key: hull.key_text().into(), ..hull })
     }
 
     /// Checks the section (with water density `rho`): the hull must resolve, float upright and
@@ -422,7 +426,7 @@ impl ShipHull {
     /// Whether `strip_ship` builds, memoised by `table_key` (validation asks once per run, and
     /// building the strips maps every section).
     fn strip_ship_check(&self) -> Result<(), String> {
-        type Memo = Mutex<Vec<(String, Result<(), String>)>>;
+        type Memo = Mutex<Vec<(Arc<str>, Result<(), String>)>>;
         static CHECKED: OnceLock<Memo> = OnceLock::new();
         let memo = CHECKED.get_or_init(|| Mutex::new(Vec::new()));
         let key = self.table_key();
@@ -442,7 +446,11 @@ impl ShipHull {
     }
 
     /// What makes the RAO table: every input of `strip_ship`, as text (the cache's key).
-    pub fn table_key(&self) -> String {
+    pub fn table_key(&self) -> Arc<str> {
+        self.table_key.clone()
+    }
+
+    fn key_text(&self) -> String {
         let bk = self.bilge_keels.map(|b| (b.length_m.to_bits(), b.breadth_m.to_bits()));
         let mp = &self.mass_props;
         let geometry = if self.name == "custom" { format!("{:?}", self.offsets) } else { self.name.clone() };

@@ -9,7 +9,6 @@ use crate::presets::preset;
 use crate::scenario::{Scenario, SternMotion};
 use crate::stability::{generator_side::GeneratorSideParams, motor_side::MotorSideParams};
 use crate::svg_plot::{check_well_formed, svg, Panel, Plot, Series};
-use crate::units::rad_s_to_rpm;
 use serde::Serialize;
 
 /// How far ours may be from the thesis' number.
@@ -596,7 +595,6 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         "with eq. 2.57 as printed the hub leaves the water (h/R below 0) and the load drops to nothing; the \
          thesis saw only a small fraction of the disk emerge: under investigation",
     ));
-    let _ = rad_s_to_rpm;
     let figures = vec![startup_figure(st)?, acceleration_figure(&acc, away)?, braking_figure(&brk, order, t10)?];
     Ok(Section { title: "Chapter 5: quoted figures", note: String::new(), rows, figures })
 }
