@@ -123,7 +123,7 @@ export function showMonteCarlo(box, s, signals, constants, { onReplay = null, on
       axes.push({ scale: 'n', label: 'trials still running [-]' });
     }
     box.line(`${signals.labelWithUnit(sig, constants)}: envelope over ${s.trials} trials (Fig. 5-20)`, { data: env.t_s, label: time }, series, axes,
-      { time: true, key: fewer >= 0 ? [`From t = ${fmt(env.t_s[fewer], 3)} s fewer trials are running (dotted, right axis): the envelope after that is drawn from those left.`] : null });
+      { time: true, key: fewer >= 0 ? [`From t = ${fmt(env.t_s[fewer], 3)} s fewer trials are running (purple dash-dot line, right axis): the envelope after that is drawn from those left.`] : null });
   }
   const ht = s.histogram_at_t;
   const pick = (hist) => (onPickBar ? (bin) => onPickBar(hist, bin) : null);
