@@ -106,12 +106,17 @@ impl SternMotion {
     /// starboard): the phase leads by k (x_p cos beta - y sin beta). Eq. 2.57 as printed takes the
     /// wave on the centreline.
     pub fn hub_wave(self, k: f64, at: HubPlace, cos_beta: f64, sin_beta: f64) -> C {
+        let ph = self.hub_phase(k, at, cos_beta, sin_beta);
+        C::new(libm::cos(ph), libm::sin(ph))
+    }
+
+    /// The phase of `hub_wave` [rad].
+    pub fn hub_phase(self, k: f64, at: HubPlace, cos_beta: f64, sin_beta: f64) -> f64 {
         let y = match self {
             SternMotion::Consistent => at.y,
             SternMotion::ThesisEq257 => 0.0,
         };
-        let ph = k * (at.x_aft * cos_beta - y * sin_beta);
-        C::new(libm::cos(ph), libm::sin(ph))
+        k * (at.x_aft * cos_beta - y * sin_beta)
     }
 }
 

@@ -23,6 +23,7 @@
 use crate::interp::bracket;
 use crate::scenario::{Scenario, SeaKind};
 use crate::seakeeping::params::{HubPlace, SternMotion};
+use crate::seakeeping::tables::RaoTable;
 use crate::ship_hull::N_SHAFTS;
 use crate::waves::{newman_force, newman_sign, newman_weight, SeaSampling, WaveComponent, G};
 use num_complex::Complex64 as C;
@@ -57,15 +58,6 @@ pub fn wave_components(sc: &Scenario) -> Vec<WaveComponent> {
             s.sample(sc.sim.seed)
         }
     }
-}
-
-/// One component with its RAO slice at its own frequency: [speed][heading] of
-/// (heave, pitch, roll, sway, yaw; F_add; M_add in STF axes, waves from starboard).
-struct Component {
-    wave: WaveComponent,
-    cos_mu: f64,
-    sin_mu: f64,
-    slice: Vec<([C; 5], f64, f64)>,
 }
 
 /// What one sample gives.
@@ -106,11 +98,40 @@ impl SeaSample {
     }
 }
 
-/// The seaway acting on the ship.
+/// Lanes of the sums: lane l adds components l, l + LANES, l + 2 LANES, ... and the lanes are
+/// added last, in a fixed order. The lanes are independent, so the compiler may run them side
+/// by side (SIMD), and every platform (native or wasm, with or without SIMD) adds in the same
+/// order and gets the same bits.
+const LANES: usize = 4;
+
+/// The transfer functions summed per component (per unit amplitude times the amplitude): the
+/// port hub's depth, heave, pitch, roll, the wave at the port hub, sway, yaw, the starboard
+/// hub's depth.
+const N_TRANSFER: usize = 8;
+const PORT_HUB: usize = 0;
+const STBD_HUB: usize = 7;
+
+/// The seaway acting on the ship. The components are kept as a structure of arrays, padded with
+/// silent components (amplitude 0) to a whole number of lanes.
 pub struct Seaway {
-    comps: Vec<Component>,
+    waves: Vec<WaveComponent>,
+    /// Per component: omega [rad/s], k cos mu, k sin mu [1/m], cos mu, sin mu (padded).
+    omega: Vec<f64>,
+    kc: Vec<f64>,
+    ks: Vec<f64>,
+    cos_mu: Vec<f64>,
+    sin_mu: Vec<f64>,
+    /// The RAO table, its grid and the grid headings' cosines and sines; per component the
+    /// table's values at its own frequency on the [speed][heading] grid, looked up the first
+    /// time a refresh needs them: (heave, pitch, roll, sway, yaw; F_add; M_add), STF axes, waves
+    /// from starboard: `slice[(i * speeds + j) * headings + k]` is the index in `values` of
+    /// component i's at speed j and heading k, or `NOT_LOOKED_UP`.
+    table: std::sync::Arc<RaoTable>,
     speeds: Vec<f64>,
     headings: Vec<f64>,
+    heading_cs: Vec<(f64, f64)>,
+    slice: Vec<u32>,
+    values: Vec<Corner>,
     hub0: f64,
     hubs: [HubPlace; N_SHAFTS],
     second_order: bool,
@@ -123,26 +144,35 @@ pub struct Seaway {
     extra_rate: Vec<f64>,
     extra_phase: Vec<f64>,
     extra_t: Option<f64>,
-    /// Per component, refreshed: the port hub's transfer, heave, pitch, roll, the wave at the
-    /// port hub, sway, yaw (the lateral modes signed for the side the waves come from and turned
-    /// to starboard-positive axes), the starboard hub's transfer; Newman weights for x and y
-    /// with their signs.
-    h: Vec<[C; 8]>,
+    /// Refreshed per component: the transfers times the amplitude (see [`N_TRANSFER`]; the lateral
+    /// modes signed for the side the waves come from and turned to starboard-positive axes), real
+    /// and imaginary parts; Newman weights for x, y and the yaw moment with their signs.
+    h_re: [Vec<f64>; N_TRANSFER],
+    h_im: [Vec<f64>; N_TRANSFER],
     wx: Vec<f64>,
     wy: Vec<f64>,
     wz: Vec<f64>,
     sign_x: f64,
     sign_y: f64,
     sign_z: f64,
+    /// The wave's phase at each hub relative to G at the last refresh [rad] and its phasor
+    /// (cos, sin), turned by the small change at the next refresh; refreshes since the last
+    /// exact one.
+    hub_phase: Vec<[(f64, f64, f64); N_SHAFTS]>,
+    refreshes_since_sync: u32,
     /// Phasor (cos theta, sin theta) of every component at the last sample, the time and place
-    /// of that sample, and the samples since the last exact one.
-    phasor: Vec<(f64, f64)>,
+    /// of that sample, and the samples since the last exact one; the components' encounter
+    /// frequencies at the present sample (scratch) [rad/s].
+    cs: Vec<f64>,
+    sn: Vec<f64>,
+    rate: Vec<f64>,
     at: Option<(f64, f64, f64)>,
     since_sync: u32,
     pub last: SeaSample,
 }
 
-/// Samples between exact phasors (libm): rounding in the recurrence grows by about 1e-16 a sample.
+/// Samples (and refreshes) between exact phasors (libm): rounding in the recurrence grows by
+/// about 1e-16 a step.
 pub const RESYNC_SAMPLES: u32 = 200;
 /// Largest phase step the recurrence takes [rad]; the series below is exact to 5e-14 up to it
 /// (truncation d^16 / 16!). A larger step (a sample far from the last) takes libm.
@@ -182,6 +212,21 @@ fn rotation(d: f64) -> (f64, f64) {
     (c, s * d)
 }
 
+/// The table's values at one grid point (speed, heading) for one component, and none.
+type Corner = ([C; 5], f64, f64);
+const NOT_LOOKED_UP: u32 = u32::MAX;
+
+/// [`rotation`] of LANES angles at once (the same operations lane by lane).
+#[inline]
+fn rotations(d: &[f64; LANES]) -> ([f64; LANES], [f64; LANES]) {
+    let mut c = [0.0; LANES];
+    let mut s = [0.0; LANES];
+    for l in 0..LANES {
+        (c[l], s[l]) = rotation(d[l]);
+    }
+    (c, s)
+}
+
 impl Seaway {
     /// The seaway of `sc` (None in calm water).
     pub fn new(sc: &Scenario) -> Result<Option<Seaway>, String> {
@@ -194,26 +239,30 @@ impl Seaway {
         let table = sc.rao_table()?;
         let (speeds, headings) = (k.grid.speeds(), k.grid.headings());
         let heading_cs: Vec<(f64, f64)> = headings.iter().map(|&b| (libm::cos(b), libm::sin(b))).collect();
-        let comps = waves
-            .into_iter()
-            .map(|w| {
-                let mut slice = Vec::with_capacity(speeds.len() * headings.len());
-                for &u in &speeds {
-                    for (&b, &(cos_b, sin_b)) in headings.iter().zip(&heading_cs) {
-                        let r = table.interpolate(w.omega, u, b);
-                        // F_add along the waves' travel = fx cos b + fy sin b of the table.
-                        let fadd = r.fx * cos_b + r.fy * sin_b;
-                        slice.push(([r.heave, r.pitch, r.roll, r.sway, r.yaw], fadd, r.mz));
-                    }
-                }
-                Component { cos_mu: libm::cos(w.direction), sin_mu: libm::sin(w.direction), wave: w, slice }
-            })
-            .collect::<Vec<_>>();
-        let n = comps.len();
+        let n = waves.len();
+        let np = n.div_ceil(LANES) * LANES;
+        let grid_points = speeds.len() * headings.len();
+        let padded = |f: &dyn Fn(&WaveComponent) -> f64| -> Vec<f64> {
+            let mut v: Vec<f64> = waves.iter().map(f).collect();
+            v.resize(np, 0.0);
+            v
+        };
+        let cos_mu = padded(&|w| libm::cos(w.direction));
+        let sin_mu = padded(&|w| libm::sin(w.direction));
+        let kc = padded(&|w| w.k * libm::cos(w.direction));
+        let ks = padded(&|w| w.k * libm::sin(w.direction));
         Ok(Some(Seaway {
-            comps,
+            omega: padded(&|w| w.omega),
+            kc,
+            ks,
+            cos_mu,
+            sin_mu,
+            table,
             speeds,
             headings,
+            heading_cs,
+            slice: vec![NOT_LOOKED_UP; n * grid_points],
+            values: Vec::new(),
             hub0: hull.hub_depth_m,
             hubs: std::array::from_fn(|s| HubPlace { x_aft: hull.prop_x_aft_m, y: hull.shaft_y_m[s] }),
             second_order: k.second_order_forces,
@@ -222,76 +271,117 @@ impl Seaway {
             extra_rate: vec![0.0; n],
             extra_phase: vec![0.0; n],
             extra_t: None,
-            h: vec![[C::new(0.0, 0.0); 8]; n],
-            wx: vec![0.0; n],
-            wy: vec![0.0; n],
-            wz: vec![0.0; n],
+            h_re: std::array::from_fn(|_| vec![0.0; np]),
+            h_im: std::array::from_fn(|_| vec![0.0; np]),
+            wx: vec![0.0; np],
+            wy: vec![0.0; np],
+            wz: vec![0.0; np],
             sign_x: 1.0,
             sign_y: 1.0,
             sign_z: 1.0,
-            phasor: vec![(1.0, 0.0); n],
+            hub_phase: vec![[(0.0, 1.0, 0.0); N_SHAFTS]; n],
+            refreshes_since_sync: RESYNC_SAMPLES,
+            cs: vec![1.0; np],
+            sn: vec![0.0; np],
+            rate: vec![0.0; np],
             at: None,
             since_sync: 0,
             last: SeaSample::calm(hull.hub_depth_m),
+            waves,
         }))
     }
 
     /// The wave components (for analysis and tests).
     pub fn components(&self) -> Vec<WaveComponent> {
-        self.comps.iter().map(|c| c.wave).collect()
+        self.waves.clone()
     }
 
     /// Looks the RAOs up again at speed `u` [m/s] and heading `psi` [rad].
     pub fn refresh(&mut self, u: f64, psi: f64) {
         let (j0, fj) = bracket(&self.speeds, u);
-        let nh = self.headings.len();
+        let (ns, nh) = (self.speeds.len(), self.headings.len());
         let (mut sx, mut sy, mut sz) = (0.0, 0.0, 0.0);
         // cos and sin of beta = psi - mu by the difference formulas: two libm calls per refresh
         // instead of three per component.
         let (sp, cp) = (libm::sin(psi), libm::cos(psi));
-        for (i, c) in self.comps.iter().enumerate() {
+        // The hubs' wave phasors turn by the small change of their phase since the last refresh
+        // (no trigonometric call); every RESYNC_SAMPLES refreshes they are computed afresh.
+        let exact = self.refreshes_since_sync >= RESYNC_SAMPLES;
+        self.refreshes_since_sync = if exact { 0 } else { self.refreshes_since_sync + 1 };
+        for i in 0..self.waves.len() {
+            let w = self.waves[i];
             // beta = psi - mu (STF: 180 deg head seas), folded into [0, pi]; beyond pi the waves
             // come from port and roll and the side force change sign.
-            let beta = (psi - c.wave.direction).rem_euclid(2.0 * PI);
+            let beta = (psi - w.direction).rem_euclid(2.0 * PI);
             let (bf, side) = if beta > PI { (2.0 * PI - beta, -1.0) } else { (beta, 1.0) };
-            let cos_beta = cp * c.cos_mu + sp * c.sin_mu;
-            let sin_beta = sp * c.cos_mu - cp * c.sin_mu;
+            let cos_beta = cp * self.cos_mu[i] + sp * self.sin_mu[i];
+            let sin_beta = sp * self.cos_mu[i] - cp * self.sin_mu[i];
             let (k0, fk) = bracket(&self.headings, bf);
+            // The table's values at the four grid points around (u, beta), each looked up the
+            // first time it is needed.
+            let mut corners = [0u32; 4];
+            for (q, c) in corners.iter_mut().enumerate() {
+                let j = (j0 + q / 2).min(ns - 1);
+                let k = (k0 + q % 2).min(nh - 1);
+                let at = (i * ns + j) * nh + k;
+                if self.slice[at] == NOT_LOOKED_UP {
+                    let r = self.table.interpolate(w.omega, self.speeds[j], self.headings[k]);
+                    // F_add along the waves' travel = fx cos b + fy sin b of the table.
+                    let (cos_b, sin_b) = self.heading_cs[k];
+                    self.slice[at] = self.values.len() as u32;
+                    self.values.push(([r.heave, r.pitch, r.roll, r.sway, r.yaw], r.fx * cos_b + r.fy * sin_b, r.mz));
+                }
+                *c = self.slice[at];
+            }
             let mut acc = [C::new(0.0, 0.0); 5];
             let (mut fadd, mut madd) = (0.0, 0.0);
             for (dj, wj) in [(0, 1.0 - fj), (1, fj)] {
                 for (dk, wk) in [(0, 1.0 - fk), (1, fk)] {
-                    let w = wj * wk;
-                    if w == 0.0 {
+                    let wt = wj * wk;
+                    if wt == 0.0 {
                         continue;
                     }
-                    let j = (j0 + dj).min(self.speeds.len() - 1);
-                    let k = (k0 + dk).min(nh - 1);
-                    let (h, f, m) = &c.slice[j * nh + k];
+                    let (h, f, m) = &self.values[corners[2 * dj + dk] as usize];
                     for (a, v) in acc.iter_mut().zip(h) {
-                        *a += v * w;
+                        *a += v * wt;
                     }
-                    fadd += w * f;
-                    madd += w * m;
+                    fadd += wt * f;
+                    madd += wt * m;
                 }
             }
             let (h3, h5, h4) = (acc[0], acc[1], acc[2] * side);
             if self.doppler_twice {
                 // Eq. 2.52's encounter frequency |omega0 - k U cos beta| (beta = 180 deg in head
                 // seas, where cos_beta = -1), which eqs. 2.55/2.59 put in front of t.
-                self.extra_rate[i] = (c.wave.omega - c.wave.k * u * cos_beta).abs() - c.wave.omega;
+                self.extra_rate[i] = (w.omega - w.k * u * cos_beta).abs() - w.omega;
             }
             let m = self.stern_motion;
-            let hub = |p: HubPlace| {
-                let wave = m.hub_wave(c.wave.k, p, cos_beta, sin_beta);
-                (m.hub_transfer(wave, h3, h4, h5, p), wave)
-            };
-            let ((port, wave), (stbd, _)) = (hub(self.hubs[0]), hub(self.hubs[1]));
+            let mut hub = [C::new(0.0, 0.0); N_SHAFTS];
+            let mut wave = [C::new(0.0, 0.0); N_SHAFTS];
+            for s in 0..N_SHAFTS {
+                let ph = m.hub_phase(w.k, self.hubs[s], cos_beta, sin_beta);
+                let (ph0, c0, s0) = self.hub_phase[i][s];
+                let d = ph - ph0;
+                let (c, sn) = if !exact && d.abs() <= MAX_PHASE_STEP_RAD {
+                    let (cd, sd) = rotation(d);
+                    (c0 * cd - s0 * sd, s0 * cd + c0 * sd)
+                } else {
+                    (libm::cos(ph), libm::sin(ph))
+                };
+                self.hub_phase[i][s] = (ph, c, sn);
+                wave[s] = C::new(c, sn);
+                hub[s] = m.hub_transfer(wave[s], h3, h4, h5, self.hubs[s]);
+            }
             // STF's sway is to port and its yaw bow to port: both flip for starboard-positive axes.
-            self.h[i] = [port, h3, h5, h4, wave, -acc[3] * side, -acc[4] * side, stbd];
+            let h = [hub[0], h3, h5, h4, wave[0], -acc[3] * side, -acc[4] * side, hub[1]];
+            let a = w.amplitude;
+            for (j, hj) in h.iter().enumerate() {
+                self.h_re[j][i] = a * hj.re;
+                self.h_im[j][i] = a * hj.im;
+            }
             // Mean force components per amplitude squared, ship axes (x forward, y starboard):
             // STF's y is to port.
-            let a2 = c.wave.amplitude * c.wave.amplitude;
+            let a2 = a * a;
             self.wx[i] = cos_beta * fadd;
             self.wy[i] = -sin_beta * fadd;
             // STF's moment is bow to port for waves from starboard: mirrored for waves from port,
@@ -306,17 +396,17 @@ impl Seaway {
         self.sign_x = newman_sign(sx);
         self.sign_y = newman_sign(sy);
         self.sign_z = newman_sign(sz);
-        for (i, c) in self.comps.iter().enumerate() {
-            self.wx[i] = newman_weight(c.wave.amplitude, self.wx[i], self.sign_x);
-            self.wy[i] = newman_weight(c.wave.amplitude, self.wy[i], self.sign_y);
-            self.wz[i] = newman_weight(c.wave.amplitude, self.wz[i], self.sign_z);
+        for (i, w) in self.waves.iter().enumerate() {
+            self.wx[i] = newman_weight(w.amplitude, self.wx[i], self.sign_x);
+            self.wy[i] = newman_weight(w.amplitude, self.wy[i], self.sign_y);
+            self.wz[i] = newman_weight(w.amplitude, self.wz[i], self.sign_z);
         }
     }
 
     /// Sums the components at time `t` [s] with the ship at (x, y) [m] moving at (xd, yd) [m/s].
+    // The lane loops index several arrays by the lane: written as indices so that they vectorise.
+    #[allow(clippy::needless_range_loop)]
     pub fn sample(&mut self, t: f64, x: f64, y: f64, xd: f64, yd: f64) -> SeaSample {
-        let mut s = SeaSample { t, ..SeaSample::calm(self.hub0) };
-        let (mut cx, mut sx, mut cy, mut sy, mut cz, mut sz) = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
         // Since the last sample (None: compute every phasor afresh).
         let step = match self.at {
             Some((t0, x0, y0)) if self.since_sync < RESYNC_SAMPLES => Some((t - t0, x - x0, y - y0)),
@@ -327,57 +417,97 @@ impl Seaway {
         let (dt, dx, dy) = step.unwrap_or((0.0, 0.0, 0.0));
         let dt_extra = t - self.extra_t.unwrap_or(t);
         self.extra_t = Some(t);
-        let weights = self.wx.iter().zip(&self.wy).zip(&self.wz);
-        let parts = self.comps.iter().zip(&self.h).zip(weights).zip(self.phasor.iter_mut());
-        for (i, (((c, h), ((&wx, &wy), &wz)), phasor)) in parts.enumerate() {
-            let w = &c.wave;
-            let mut rate = w.omega - w.k * (xd * c.cos_mu + yd * c.sin_mu);
-            let mut d = w.omega * dt - w.k * (dx * c.cos_mu + dy * c.sin_mu);
-            if self.doppler_twice {
-                let de = self.extra_rate[i] * dt_extra;
-                self.extra_phase[i] += de;
-                rate += self.extra_rate[i];
-                d += de;
-            }
-            let (cs, sn) = if step.is_some() && d.abs() <= MAX_PHASE_STEP_RAD {
-                let (c0, s0) = *phasor;
-                let (cd, sd) = rotation(d);
-                (c0 * cd - s0 * sd, s0 * cd + c0 * sd)
-            } else {
-                let mut theta = w.phase_at(c.cos_mu, c.sin_mu, x, y, t);
-                if self.doppler_twice {
-                    theta += self.extra_phase[i];
+        // Each component's phasor and encounter frequency, LANES at a time: the rotation by the
+        // series for all of them, then libm for a component whose step is too long for it.
+        let n = self.waves.len();
+        let np = self.cs.len();
+        let twice = self.doppler_twice;
+        for c in (0..np).step_by(LANES) {
+            let lane = |v: &[f64]| -> [f64; LANES] { std::array::from_fn(|l| v[c + l]) };
+            let (om, kc, ks) = (lane(&self.omega), lane(&self.kc), lane(&self.ks));
+            let mut rate: [f64; LANES] = std::array::from_fn(|l| om[l] - (xd * kc[l] + yd * ks[l]));
+            let mut d: [f64; LANES] = std::array::from_fn(|l| om[l] * dt - (dx * kc[l] + dy * ks[l]));
+            if twice {
+                for l in 0..LANES.min(n - c) {
+                    let i = c + l;
+                    let de = self.extra_rate[i] * dt_extra;
+                    self.extra_phase[i] += de;
+                    rate[l] += self.extra_rate[i];
+                    d[l] += de;
                 }
-                (libm::cos(theta), libm::sin(theta))
-            };
-            *phasor = (cs, sn);
-            let a = w.amplitude;
-            // Re{H e^{i theta}} and its time derivatives.
-            let re = |z: C| z.re * cs - z.im * sn;
-            let im = |z: C| z.re * sn + z.im * cs;
-            for (sh, hh) in [(0, h[0]), (1, h[7])] {
-                let hub = re(hh);
-                s.hub[sh] += a * hub;
-                s.hub_rate[sh] -= a * rate * im(hh);
-                s.hub_accel[sh] -= a * rate * rate * hub;
             }
-            s.heave += a * re(h[1]);
-            s.pitch += a * re(h[2]);
-            s.roll += a * re(h[3]);
-            s.wave_stern += a * re(h[4]);
-            s.sway += a * re(h[5]);
-            s.yaw += a * re(h[6]);
-            cx += wx * cs;
-            sx += wx * sn;
-            cy += wy * cs;
-            sy += wy * sn;
-            cz += wz * cs;
-            sz += wz * sn;
+            let (cd, sd) = rotations(&d);
+            let (c0, s0) = (lane(&self.cs), lane(&self.sn));
+            for l in 0..LANES {
+                self.cs[c + l] = c0[l] * cd[l] - s0[l] * sd[l];
+                self.sn[c + l] = s0[l] * cd[l] + c0[l] * sd[l];
+                self.rate[c + l] = rate[l];
+            }
+            for l in 0..LANES.min(n - c) {
+                if step.is_none() || d[l].abs() > MAX_PHASE_STEP_RAD {
+                    let i = c + l;
+                    let mut theta = self.waves[i].phase_at(self.cos_mu[i], self.sin_mu[i], x, y, t);
+                    if twice {
+                        theta += self.extra_phase[i];
+                    }
+                    self.cs[i] = libm::cos(theta);
+                    self.sn[i] = libm::sin(theta);
+                }
+            }
         }
+        // The sums, lane by lane: Re{a H e^{i theta}} of each transfer, the hubs' time derivatives
+        // and Newman's single sums.
+        let (cs, sn, rate) = (&self.cs[..np], &self.sn[..np], &self.rate[..np]);
+        let h_re: [&[f64]; N_TRANSFER] = std::array::from_fn(|j| &self.h_re[j][..np]);
+        let h_im: [&[f64]; N_TRANSFER] = std::array::from_fn(|j| &self.h_im[j][..np]);
+        let mut re = [[0.0; LANES]; N_TRANSFER];
+        let mut hub_rate = [[0.0; LANES]; N_SHAFTS];
+        let mut hub_accel = [[0.0; LANES]; N_SHAFTS];
+        let mut newman = [[0.0; LANES]; 6];
+        for c in (0..np).step_by(LANES) {
+            let lane = |v: &[f64]| -> [f64; LANES] { std::array::from_fn(|l| v[c + l]) };
+            let (ci, si, r) = (lane(cs), lane(sn), lane(rate));
+            for j in 0..N_TRANSFER {
+                let (hr, hi) = (lane(h_re[j]), lane(h_im[j]));
+                for l in 0..LANES {
+                    re[j][l] += hr[l] * ci[l] - hi[l] * si[l];
+                }
+            }
+            for (s, j) in [PORT_HUB, STBD_HUB].into_iter().enumerate() {
+                let (hr, hi) = (lane(h_re[j]), lane(h_im[j]));
+                for l in 0..LANES {
+                    hub_rate[s][l] -= r[l] * (hr[l] * si[l] + hi[l] * ci[l]);
+                    hub_accel[s][l] -= r[l] * r[l] * (hr[l] * ci[l] - hi[l] * si[l]);
+                }
+            }
+            for (q, w) in [&self.wx, &self.wy, &self.wz].into_iter().enumerate() {
+                let w = lane(w);
+                for l in 0..LANES {
+                    newman[2 * q][l] += w[l] * ci[l];
+                    newman[2 * q + 1][l] += w[l] * si[l];
+                }
+            }
+        }
+        let total = |v: &[f64; LANES]| (v[0] + v[1]) + (v[2] + v[3]);
+        let re: [f64; N_TRANSFER] = std::array::from_fn(|j| total(&re[j]));
+        let nm: [f64; 6] = std::array::from_fn(|j| total(&newman[j]));
+        let mut s = SeaSample {
+            t,
+            hub: [self.hub0 + re[PORT_HUB], self.hub0 + re[STBD_HUB]],
+            hub_rate: std::array::from_fn(|s| total(&hub_rate[s])),
+            hub_accel: std::array::from_fn(|s| total(&hub_accel[s])),
+            heave: re[1],
+            pitch: re[2],
+            roll: re[3],
+            wave_stern: re[4],
+            sway: re[5],
+            yaw: re[6],
+            ..SeaSample::default()
+        };
         if self.second_order {
-            s.fx = newman_force(self.sign_x, cx, sx);
-            s.fy = newman_force(self.sign_y, cy, sy);
-            s.mz = newman_force(self.sign_z, cz, sz);
+            s.fx = newman_force(self.sign_x, nm[0], nm[1]);
+            s.fy = newman_force(self.sign_y, nm[2], nm[3]);
+            s.mz = newman_force(self.sign_z, nm[4], nm[5]);
         }
         self.last = s;
         s
@@ -424,11 +554,11 @@ mod tests {
             let (x, y) = (xd * t + 3.0 * libm::sin(0.3 * t), yd * t);
             let s = sea.sample(t, x, y, xd, yd);
             let mut hub = sea.hub0;
-            for (i, c) in sea.comps.iter().enumerate() {
-                let th = c.wave.phase_at(c.cos_mu, c.sin_mu, x, y, t);
+            for (i, c) in sea.waves.iter().enumerate() {
+                let th = c.phase_at(sea.cos_mu[i], sea.sin_mu[i], x, y, t);
                 let (cs, sn) = (libm::cos(th), libm::sin(th));
-                worst = worst.max((sea.phasor[i].0 - cs).abs()).max((sea.phasor[i].1 - sn).abs());
-                hub += c.wave.amplitude * (sea.h[i][0].re * cs - sea.h[i][0].im * sn);
+                worst = worst.max((sea.cs[i] - cs).abs()).max((sea.sn[i] - sn).abs());
+                hub += sea.h_re[PORT_HUB][i] * cs - sea.h_im[PORT_HUB][i] * sn;
             }
             worst_hub = worst_hub.max((s.hub[0] - hub).abs());
         }
@@ -437,9 +567,8 @@ mod tests {
         // A sample far from the last (here back in time by 10 s) takes libm.
         let s = sea.sample(70.0, 900.0, 90.0, xd, yd);
         assert!(s.hub.iter().all(|h| h.is_finite()));
-        let c = &sea.comps[7];
-        let th = c.wave.phase_at(c.cos_mu, c.sin_mu, 900.0, 90.0, 70.0);
-        assert!((sea.phasor[7].0 - libm::cos(th)).abs() < 1e-12);
+        let th = sea.waves[7].phase_at(sea.cos_mu[7], sea.sin_mu[7], 900.0, 90.0, 70.0);
+        assert!((sea.cs[7] - libm::cos(th)).abs() < 1e-12);
     }
 
     #[test]
