@@ -19,6 +19,13 @@
 //! k (dx cos mu + dy sin mu) is the phase gained since; every `RESYNC_SAMPLES` samples the
 //! phasors are computed afresh with libm. The phasors then agree with libm's to 2e-13 (test
 //! `phase_recurrence_stays_within_1e_12`), without the two trigonometric calls per component.
+//! The wave at each hub, a phasor of the heading, turns the same way from one RAO look-up to the
+//! next.
+//!
+//! Layout (issue 17): the components are a structure of arrays summed in LANES interleaved partial
+//! sums added in a fixed order, so the compiler can run the lanes side by side and native and wasm
+//! runs still add in the same order; the RAO table's values at each component's frequency are
+//! looked up per grid point (speed, heading) the first time a refresh needs them.
 
 use crate::interp::bracket;
 use crate::scenario::{Scenario, SeaKind};
