@@ -91,26 +91,11 @@ export class PlotBox {
         }
       }
       const dpr = devicePixelRatio || 1;
-      ctx.font = `${Math.round(11 * dpr)}px system-ui, sans-serif`;
-      // Labels whose lines lie closer than a label's height (a wide y range) would overprint:
-      // the lines are all drawn, the crowded labels left to the key under the plot.
-      const labelled = [];
       for (const l of levels) {
         const y = u.valToPos(l.value, sc, true);
         ctx.strokeStyle = l.color; ctx.lineWidth = 1.5 * dpr; ctx.setLineDash([6 * dpr, 4 * dpr]);
         ctx.beginPath(); ctx.moveTo(left, y); ctx.lineTo(left + width, y); ctx.stroke();
         ctx.setLineDash([]);
-        // uPlot leaves its axis text alignment on the context: set ours, and put the label on a
-        // light backdrop so it stays readable over the band and the trace.
-        ctx.textAlign = 'left'; ctx.textBaseline = 'bottom';
-        const text = `${l.label} (${l.value})`;
-        const tw = ctx.measureText(text).width, th = 13 * dpr;
-        if (labelled.some((y0) => Math.abs(y0 - y) < th + 2 * dpr)) continue;
-        labelled.push(y);
-        ctx.fillStyle = 'rgba(255, 255, 255, 0.8)';
-        ctx.fillRect(left + 2 * dpr, y - 3 * dpr - th, tw + 4 * dpr, th);
-        ctx.fillStyle = l.color;
-        ctx.fillText(text, left + 4 * dpr, y - 3 * dpr);
       }
       ctx.strokeStyle = EVENT_COLOR; ctx.lineWidth = 1.5 * dpr;
       for (const t of markers) {
@@ -118,6 +103,34 @@ export class PlotBox {
         ctx.beginPath(); ctx.moveTo(X, top); ctx.lineTo(X, top + height); ctx.stroke();
         ctx.fillStyle = EVENT_COLOR;
         ctx.beginPath(); ctx.moveTo(X - 5 * dpr, top); ctx.lineTo(X + 5 * dpr, top); ctx.lineTo(X, top + 8 * dpr); ctx.fill();
+      }
+      ctx.restore();
+    };
+    // The levels' labels go on top of the traces (drawn after them), each on a light backdrop,
+    // so a trace passing over a label never hides it.
+    const levelLabels = (u) => {
+      if (!levels.length) return;
+      const { ctx } = u;
+      const { left, top, width, height } = u.bbox;
+      const dpr = devicePixelRatio || 1;
+      ctx.save();
+      ctx.beginPath(); ctx.rect(left, top, width, height); ctx.clip();
+      ctx.font = `${Math.round(11 * dpr)}px system-ui, sans-serif`;
+      // uPlot leaves its axis text alignment on the context: set ours.
+      ctx.textAlign = 'left'; ctx.textBaseline = 'bottom';
+      // Labels whose lines lie closer than a label's height (a wide y range) would overprint:
+      // the lines are all drawn, the crowded labels left to the key under the plot.
+      const labelled = [];
+      for (const l of levels) {
+        const y = u.valToPos(l.value, axes[0].scale, true);
+        const text = `${l.label} (${l.value})`;
+        const tw = ctx.measureText(text).width, th = 13 * dpr;
+        if (labelled.some((y0) => Math.abs(y0 - y) < th + 2 * dpr)) continue;
+        labelled.push(y);
+        ctx.fillStyle = 'rgba(255, 255, 255, 0.85)';
+        ctx.fillRect(left + 2 * dpr, y - 3 * dpr - th, tw + 4 * dpr, th);
+        ctx.fillStyle = l.color;
+        ctx.fillText(text, left + 4 * dpr, y - 3 * dpr);
       }
       ctx.restore();
     };
@@ -129,7 +142,7 @@ export class PlotBox {
       series: [{ label: x.label }, ...series.map(({ data, color, ...rest }) => ({ stroke: color, width: 1.8, scale: axes[0].scale, spanGaps: true, ...rest }))],
       legend: { live: false },
       cursor: time && this.sync ? { sync: { key: this.sync, setSeries: false } } : {},
-      hooks: { drawClear: [overlay], ...(time && this.sync ? { setScale: [(u, key) => this.linkZoom(u, key)] } : {}) },
+      hooks: { drawClear: [overlay], draw: [levelLabels], ...(time && this.sync ? { setScale: [(u, key) => this.linkZoom(u, key)] } : {}) },
     };
     const u = new uPlot(opts, [x.data, ...series.map((s) => s.data)], chart);
     u.linked = time;
