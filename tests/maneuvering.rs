@@ -202,6 +202,28 @@ fn full_turn() {
     assert!(r.summary.warnings.is_empty(), "{:?}", r.summary.warnings);
 }
 
+/// Ch. 5.3.2: the radius of the full turn is the heading ramp's, R = U / (ramp rate) = L / r', not
+/// the hull's: the autopilot holds the Table 2.3 hull on the ramp even where its spiral curve has
+/// no steady turn (r' above 0.11). Measured: 3.05 L at r' = 1/3 (the thesis' three lengths) and
+/// 2.00 L at r' = 1/2. Tested: R r' / L within 5 % of 1 at both, the turn completed.
+#[test]
+fn radius_follows_the_ramp() {
+    let base = preset("turn-360").unwrap();
+    let len = base.ship_hull().unwrap().rigid_body(&base.as_printed).length_m;
+    let u = kn_to_m_s(base.initial.speed_kn);
+    for rp in [1.0 / 3.0, 0.5] {
+        let mut s = base.clone();
+        s.controllers.autopilot.max_turn_rate_nondim = 1.0;
+        s.commands[1].heading_rate_deg_s = Some((rp * u / len).to_degrees());
+        let r = run(&s);
+        let y = r.summary.signals["y_m"];
+        let radius = (y.max - y.min) / 2.0 / len;
+        println!("r' = {rp:.3}: radius {radius:.3} L");
+        assert!((radius * rp - 1.0).abs() < 0.05, "r' = {rp}: {radius} L");
+        assert!((final_value(&r, "heading_deg") - 360.0).abs() < 6.0);
+    }
+}
+
 /// Orders outside what the model trusts are run with a warning, not refused.
 #[test]
 fn questionable_orders_warn() {
