@@ -17,6 +17,7 @@
 //! - X_vvu, X_rru are the terms eq. 2.22 prints as X_vvv v^2 du and X_rrr r^2 du.
 
 use crate::check_range;
+use crate::rudder::{rudder_force, stern_inflow, RudderParams};
 use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 
@@ -216,6 +217,81 @@ impl Abkowitz {
     }
 }
 
+/// The hull with its rudder (eqs. 2.23-2.24 with the rudder of eqs. 2.26-2.30 standing `x_p` [m]
+/// aft of G, water density `rho` [kg/m^3]): the hydrodynamic side force [N] and yaw moment [N m]
+/// at (u, v, r) with the rudder at `delta` [rad].
+fn side_force_and_moment(
+    a: &Abkowitz,
+    rudder: &RudderParams,
+    rho: f64,
+    x_p: f64,
+    uvr: (f64, f64, f64),
+    delta: f64,
+) -> (f64, f64) {
+    let (u, v, r) = uvr;
+    let f = a.forces(u, v, r);
+    let (_, fy_r) = rudder_force(rudder, rho, &stern_inflow(u, v, r, x_p), delta);
+    (f.y + fy_r, f.n - x_p * fy_r) // eq. 2.24: - x_p F_y
+}
+
+/// A steady turn of the hull with its rudder at surge `u` [m/s] and yaw rate `r` [rad/s]: the sway
+/// speed v [m/s] and rudder angle delta [rad] that make f_2 = f_3 = 0 (eqs. 2.23-2.24 with v_dot
+/// = r_dot = 0; the mass terms are in (Y_r - m u)), the point of the spiral-test curve delta(r).
+/// The rudder's side force F_y must cancel the hull's, so N_hull + x_p Y_hull = 0 fixes v (the
+/// root nearest v = 0, searched to |v| = U/2); then delta follows from F_y(delta) = -Y_hull
+/// (searched within 60 deg). None when either has no root.
+pub fn steady_turn(a: &Abkowitz, rudder: &RudderParams, rho: f64, x_p: f64, u: f64, r: f64) -> Option<(f64, f64)> {
+    let g = |v: f64| {
+        let f = a.forces(u, v, r);
+        f.n + x_p * f.y
+    };
+    let step = 1e-3 * u;
+    let v = if g(0.0) == 0.0 {
+        0.0
+    } else {
+        (1..=500)
+            .flat_map(|k| [-1.0, 1.0].map(|dir| (dir * (k - 1) as f64 * step, dir * k as f64 * step)))
+            .find(|&(v0, v1)| (g(v0) > 0.0) != (g(v1) > 0.0))
+            .map(|(v0, v1)| crate::numerics::bisect(g, v0, v1, 80))?
+    };
+    let lim = 60f64.to_radians();
+    let h = |d: f64| side_force_and_moment(a, rudder, rho, x_p, (u, v, r), d).0;
+    if (h(-lim) > 0.0) == (h(lim) > 0.0) {
+        return None;
+    }
+    Some((v, crate::numerics::bisect(h, -lim, lim, 80)))
+}
+
+/// The linear sway-yaw derivatives (Y_v, Y_r - m u, N_v, N_r) in prime units at surge `u` [m/s]
+/// (forces over (1/2) rho L^2 u^2, moments over (1/2) rho L^3 u^2, v' = v/u, r' = r L/u), from
+/// central differences of eqs. 2.23-2.24 about straight running: of the hull alone, or with the
+/// rudder (`Some((rudder, x_p))`, at delta = 0), whose lift adds to all four.
+pub fn linear_derivatives(a: &Abkowitz, rudder: Option<(&RudderParams, f64)>, rho: f64, u: f64) -> [f64; 4] {
+    let l = a.length;
+    let q = 0.5 * rho * l * l * u * u;
+    let yn = |v: f64, r: f64| match rudder {
+        Some((rp, x_p)) => side_force_and_moment(a, rp, rho, x_p, (u, v, r), 0.0),
+        None => {
+            let f = a.forces(u, v, r);
+            (f.y, f.n)
+        }
+    };
+    let (dv, dr) = (1e-4 * u, 1e-4 * u / l);
+    let d = |a: (f64, f64), b: (f64, f64), h: f64| ((a.0 - b.0) / (2.0 * h), (a.1 - b.1) / (2.0 * h));
+    let (yv, nv) = d(yn(dv, 0.0), yn(-dv, 0.0), dv);
+    let (yr, nr) = d(yn(0.0, dr), yn(0.0, -dr), dr);
+    // To prime units: Y_v' = Y_v u / q, Y_r' = Y_r u / (q L), N_v' = N_v u / (q L), N_r' = N_r u / (q L^2).
+    [yv * u / q, yr * u / (q * l), nv * u / (q * l), nr * u / (q * l * l)]
+}
+
+/// Abkowitz's straight-line stability index C = Y_v N_r - N_v (Y_r - m u) of
+/// [`linear_derivatives`]. Positive: the straight course is stable (the determinant of eq. 2.20's
+/// linearisation, whose mass matrix has a positive determinant).
+pub fn stability_index(a: &Abkowitz, rudder: Option<(&RudderParams, f64)>, rho: f64, u: f64) -> f64 {
+    let [yv, yr, nv, nr] = linear_derivatives(a, rudder, rho, u);
+    yv * nr - nv * yr
+}
+
 /// Smooth weight of the maneuvering model in surge, 0 below `lo` and 1 above `hi` [m/s]
 /// (a cubic smoothstep, so the surge force and its slope are continuous across the hand-over).
 pub fn handover_weight(u: f64, lo: f64, hi: f64) -> f64 {
@@ -331,6 +407,51 @@ mod tests {
         assert!((a.x - b.x).abs() < 1e-9 * a.x.abs());
         assert!((a.y + b.y).abs() < 1e-9 * a.y.abs().max(1.0));
         assert!((a.n + b.n).abs() < 1e-9 * a.n.abs().max(1.0));
+    }
+
+    /// Abkowitz's index of Table 2.3 at u0 (du' = 0), from the model's forces by differences,
+    /// equals Y_v N_r - N_v (Y_r - m u) of the table: -9.04e-6 (course-unstable). With the rudder
+    /// of Table 5.5 at 67.2 m aft of G on L = 142 m its lift adds Y_v' = -A_r C_L / L^2 = -3.28e-3,
+    /// Y_r' = -N_v' = -Y_v' x_p / L and N_r' = Y_v' (x_p / L)^2: the index turns +9.82e-6 (stable).
+    #[test]
+    fn stability_index_with_and_without_rudder() {
+        let (l, x_p) = (142.0, 67.2);
+        let u0 = kn_to_m_s(22.0);
+        let a = Abkowitz::new(&AbkowitzCoefficients::default(), true, u0, l, 1025.0);
+        let c = AbkowitzCoefficients::default();
+        let table = (c.yv * c.nr - c.nv * c.yr_minus_mu) * 1e-10;
+        let hull = stability_index(&a, None, 1025.0, u0);
+        assert!((hull / table - 1.0).abs() < 1e-6, "{hull} vs {table}");
+        assert!((table + 9.04e-6).abs() < 0.01e-6);
+        let rp = RudderParams::default();
+        let yd = -rp.area_m2 * rp.lift_slope / (l * l);
+        let k = x_p / l;
+        let (yv, yr) = (c.yv * 1e-5 + yd, c.yr_minus_mu * 1e-5 - yd * k);
+        let (nv, nr) = (c.nv * 1e-5 - yd * k, c.nr * 1e-5 + yd * k * k);
+        let want = yv * nr - nv * yr;
+        let with = stability_index(&a, Some((&rp, x_p)), 1025.0, u0);
+        // Within 1e-4: the rudder's drag, C_D |alpha| sin(alpha), is odd in alpha and adds
+        // C_D h to a central difference of step h (measured 2.2e-5).
+        assert!((with / want - 1.0).abs() < 1e-4, "{with} vs {want}");
+        assert!((with - 9.82e-6).abs() < 0.01e-6, "{with}");
+    }
+
+    /// The spiral-test curve of Table 2.3 with the rudder (L = 142 m, x_p = 67.2 m, 25 kn): the
+    /// rudder a steady starboard turn needs grows to 3-4 deg (to port is positive) near r' = 0.12,
+    /// then falls back and turns to counter-rudder by r' = 0.3: turns tighter than r' = 0.12 are
+    /// unstable, and a rudder held beyond about 4 deg has no steady turn to settle in.
+    #[test]
+    fn spiral_curve_has_a_loop() {
+        let (l, x_p, u) = (142.0, 67.2, kn_to_m_s(25.0));
+        let a = Abkowitz::new(&AbkowitzCoefficients::default(), true, kn_to_m_s(22.0), l, 1025.0);
+        let rp = RudderParams::default();
+        let delta = |rp_: f64| steady_turn(&a, &rp, 1025.0, x_p, u, rp_ * u / l).unwrap().1.to_degrees();
+        let curve: Vec<f64> = (1..=60).map(|i| delta(0.01 * i as f64)).collect();
+        let (imin, dmin) = curve.iter().enumerate().fold((0, 0.0), |b, (i, &d)| if d < b.1 { (i, d) } else { b });
+        assert!(dmin < -3.0 && dmin > -4.5, "{dmin}");
+        assert!((0.08..=0.16).contains(&(0.01 * (imin + 1) as f64)), "{imin}");
+        assert!(delta(0.3) > 0.0 && delta(1.0 / 3.0) > 0.0, "{}", delta(0.3));
+        assert!(delta(0.0).abs() < 1e-12);
     }
 
     /// Masses of eq. 2.21: the sway-yaw block times its inverse is the identity.

@@ -78,9 +78,12 @@ pub struct AutopilotParams {
     pub turn_rate_deg_s: f64,
     /// Fastest turn the autopilot will order, as a non-dimensional yaw rate r' = r L / U [-]. Our
     /// choice: 0.25 (1 deg/s at 25 knots). With the Table 2.3 coefficients the hull's turning
-    /// motion grows unstable above r' = 0.1 (0.2 /s at r' = 0.2, 0.4 /s at r' = 0.33) and a rudder
-    /// swinging at 0.1 rad/s cannot hold it much beyond r' = 0.25. Faster orders are slowed to this
-    /// and a warning says so.
+    /// motion grows unstable above r' = 0.1 (0.2 /s at r' = 0.2, 0.4 /s at r' = 0.33; its spiral
+    /// curve loops at 3.6 deg of rudder, `maneuvering::steady_turn`). On the hull's ship (L = 142
+    /// m) the default gains still hold ramps up to r' = 0.6 (measured: radius 1.56 L, the rudder
+    /// touching 20 deg on the way in) and diverge at 0.7; on Tables 5.1/5.5's ship (L = 180 m) the
+    /// ramp at r' = 1/3 diverges 31 s after the order. Faster orders are slowed to this limit and a
+    /// warning says so.
     pub max_turn_rate_nondim: f64,
     /// Yaw acceleration gain [rad of rudder per rad/s^2]. Not given; 1000: starts taking the rudder off
     /// while the turn is still gathering pace, which this directionally marginal hull needs (its

@@ -502,16 +502,26 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         let y = sig(r, "y_m");
         (y.max - y.min) / 2.0 / len
     };
-    // The order that gives the thesis' three lengths: the reference turning at r' = 1/3.
-    let mut sc3 = sc360.clone();
-    sc3.controllers.autopilot.max_turn_rate_nondim = 0.5;
+    // The radius is the order's: a heading ramp at r' (R = U / psi_ref_dot = L / r') for r' = 1/3
+    // (the thesis' three lengths), 1/2 and 0.6 (where the rudder reaches its limit on the way in).
+    let ramp = |rp: f64| -> Result<crate::RunResult, String> {
+        let mut sc = sc360.clone();
+        sc.controllers.autopilot.max_turn_rate_nondim = 1.0;
+        if let Some(c) = sc.commands.get_mut(1) {
+            c.heading_rate_deg_s = Some((rp * u25 / len).to_degrees());
+        }
+        run(&sc)
+    };
+    let peak = |r: &crate::RunResult, name: &str| {
+        let s = sig(r, name);
+        s.max.abs().max(s.min.abs())
+    };
     let rate3 = (u25 / (3.0 * len)).to_degrees();
-    if let Some(c) = sc3.commands.get_mut(1) {
-        c.heading_rate_deg_s = Some(rate3);
-    }
-    let t3 = run(&sc3)?;
-    let (p3, rud3, rpm3) = (sig(&t3, "im_power_pu"), sig(&t3, "rudder_deg"), sig(&t3, "prop_rpm"));
-    let rud3 = rud3.max.abs().max(rud3.min.abs());
+    let t3 = ramp(1.0 / 3.0)?;
+    let (p3, rpm3) = (sig(&t3, "im_power_pu"), sig(&t3, "prop_rpm"));
+    let rud3 = peak(&t3, "rudder_deg");
+    let (t5, t6) = (ramp(0.5)?, ramp(0.6)?);
+    let r_pre = sc360.commands.get(1).and_then(|c| c.heading_rate_deg_s).unwrap_or(0.0).to_radians() * len / u25;
     // The rudder held at a fixed angle (a saturating autopilot chasing a far heading): the
     // classic turning-circle test.
     let t_order = sc360.commands.get(1).map_or(0.0, |c| c.t_s);
@@ -535,39 +545,126 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         }
     };
     let (fix2, fix5) = (fixed(2.0), fixed(5.0));
-    // Abkowitz's straight-line stability index C = Y_v N_r - N_v (Y_r - m u) of the Table 2.3
-    // coefficients (prime units, 1e-10), at du' = 0 and at 25 kn with its Delta-u terms.
-    let c = &sc360.hull.abkowitz;
-    let index = |du: f64| {
-        let yv = c.yv + c.yvu * du + c.yvuu * du * du;
-        let yr = c.yr_minus_mu + c.yru * du + c.yruu * du * du;
-        let nv = c.nv + c.nvu * du + c.nvuu * du * du;
-        let nr = c.nr + c.nru * du + c.nruu * du * du;
-        yv * nr - nv * yr
+    // Abkowitz's straight-line stability index C = Y_v N_r - N_v (Y_r - m u) at 25 kn, of the
+    // hull alone and with the rudder's lift (eqs. 2.23-2.24, 2.26-2.30), and the steady turns of
+    // the hull with its rudder (the spiral-test curve).
+    let body = sc360.ship_hull()?.rigid_body(&sc360.as_printed);
+    let abk = crate::maneuvering::Abkowitz::new(
+        &sc360.hull.abkowitz,
+        sc360.hull.symmetric_hull,
+        crate::units::kn_to_m_s(sc360.hull.linearization_speed_kn),
+        body.length_m,
+        sc360.ship.water_density_kg_m3,
+    );
+    let (rho, x_p) = (sc360.ship.water_density_kg_m3, body.rudder_x_aft_m);
+    let c_hull = crate::maneuvering::stability_index(&abk, None, rho, u25);
+    let c_rud = crate::maneuvering::stability_index(&abk, Some((&sc360.rudder, x_p)), rho, u25);
+    // Eqs. 2.26-2.27 as printed, v + x_p r with x_p positive aft (as eq. 2.19's moment takes it):
+    // the rudder's lift derivative Y_d = -A_r C_L / L^2 then adds Y_d to Y_v, +Y_d x_p/L to Y_r,
+    // -Y_d x_p/L to N_v and -Y_d (x_p/L)^2 to N_r (the yaw damping's sign turned).
+    let c_printed = {
+        let [yv, yr, nv, nr] = crate::maneuvering::linear_derivatives(&abk, None, rho, u25);
+        let yd = -sc360.rudder.area_m2 * sc360.rudder.lift_slope / (len * len);
+        let k = x_p / len;
+        (yv + yd) * (nr - yd * k * k) - (nv - yd * k) * (yr + yd * k)
     };
-    let du25 = (sc360.initial.speed_kn - sc360.hull.linearization_speed_kn) / sc360.initial.speed_kn;
-    rows.push(open(
+    let steady = |rp: f64| crate::maneuvering::steady_turn(&abk, &sc360.rudder, rho, x_p, u25, rp * u25 / len);
+    let (mut loop_deg, mut loop_r) = (0.0f64, 0.0);
+    for i in 1..=60 {
+        let rp = 0.01 * f64::from(i);
+        if let Some((_, d)) = steady(rp) {
+            if -d.to_degrees() > loop_deg {
+                (loop_deg, loop_r) = (-d.to_degrees(), rp);
+            }
+        }
+    }
+    let (v3, d3) = steady(1.0 / 3.0).ok_or("no steady turn at r' = 1/3")?;
+    let c = &sc360.hull.abkowitz;
+    let (vp, rp3, du) = (v3 / u25, 1.0 / 3.0, (u25 - crate::units::kn_to_m_s(sc360.hull.linearization_speed_kn)) / u25);
+    let n_vrr = c.nvrr * vp * rp3 * rp3;
+    let n_r = c.nr * rp3 + c.nru * rp3 * du + c.nrrr * rp3 * rp3 * rp3;
+    rows.push(explained(
         "radius of the 360 deg turn",
         "ch. 5.3.2 text (\"approximately three ship lengths\")",
         3.0,
         radius(&t360),
         "L",
         &format!(
-            "the radius follows the order: the preset's heading ramp of 1 deg/s gives this; a ramp at r' = 1/3 \
-             ({rate3:.2} deg/s) gives {:.2} L with the rudder at {rud3:.1} deg, {:.0} rpm and a power rise of \
-             {:.1} %, where the thesis needed 255 rpm and 160 % power (transients 200 %). The thesis' order, a ramp \
-             to full rudder, has no steady turn on the Table 2.3 hull: with the rudder held at 2 deg it {fix2}, at \
-             5 deg it {fix5}. That instability is in the coefficients, not in L or the prime system: Abkowitz's \
-             index C = Y_v N_r - N_v (Y_r - m u) is {:.2e} at du' = 0 and {:.2e} with the Delta-u terms at 25 kn \
-             (du' = {du25:.2}), both negative (course-unstable), and its sign does not depend on L; the Delta-u terms \
-             do not change it. Why the thesis' kayak-coefficient ship turned steadily at full \
-             rudder is open",
+            "the radius is the order's, not the hull's: ch. 5.3.2 orders a heading ramp and the autopilot holds \
+             the ship on it, so R = U / (ramp rate) = L / r'. The preset's 1 deg/s (r' = {r_pre:.3}) gives this; \
+             ramps at r' = 1/3 ({rate3:.2} deg/s), 1/2 and 0.6 give {:.2} L, {:.2} L and {:.2} L. The thesis' \
+             three lengths are the ramp at r' = 1/3, which it does not print: it says only that the slope was set \
+             so that the rudder reaches its limit. With our autopilot (its gains are not printed either) the \
+             rudder peaks at {rud3:.1} deg on the way into the r' = 1/3 turn, {:.1} deg at r' = 1/2 and {:.1} deg \
+             at r' = 0.6. The turn is held, not steady at full rudder: Table 2.3's hull with its rudder is stable \
+             going straight (Abkowitz's index C = Y_v N_r - N_v (Y_r - m u) at 25 kn is {c_hull:.2e} for the hull \
+             alone, course-unstable, and {c_rud:.2e} with the rudder's lift, stable), but its spiral curve has a \
+             loop: a steady turn needs at most {loop_deg:.1} deg of rudder (at r' = {loop_r:.2}); tighter turns \
+             need less and from r' = 0.3 counter-rudder ({:+.1} deg at r' = 1/3), so with the rudder held at 2 \
+             deg it {fix2} and at 5 deg it {fix5}. At r' = 1/3 the term N_vrr v' r'^2 ({:+.2e}, with Table 2.3's \
+             N_vrr = -0.148) outweighs the yaw damping N_r r' + N_ru r' du' + N_rrr r'^3 ({:+.2e}): the hull \
+             pushes itself into the turn and the autopilot holds it back. Read with eqs. 2.26-2.27's v + x_p r \
+             (x_p positive aft, as eq. 2.19's moment takes it) the rudder's lift adds to the yaw instead of damping \
+             it and the index falls to {c_printed:.2e}, a hundred times closer to unstable: that reading makes \
+             tight turns harder to hold, not easier",
             radius(&t3),
-            rpm3.max,
-            100.0 * (p3.max / p3.min - 1.0),
-            index(0.0) * 1e-10,
-            index(du25) * 1e-10,
+            radius(&t5),
+            radius(&t6),
+            peak(&t5, "rudder_deg"),
+            peak(&t6, "rudder_deg"),
+            d3.to_degrees(),
+            n_vrr * 1e-5,
+            n_r * 1e-5,
         ),
+    ));
+    // The shaft speed and power of the turn (ch. 5.3.2, Figs. 5-18, 5-19: in SS6).
+    let ss6 = run(&preset("turn-360-ss6").ok_or("no preset")?)?;
+    let turn_mean = |r: &crate::RunResult, name: &str| -> Result<f64, String> {
+        let (t, y) = (points(r, "heading_deg", 1.0)?, points(r, name, 1.0)?);
+        let sel: Vec<f64> =
+            t.iter().zip(&y).filter(|((ti, h), _)| *ti > t_order && *h < 360.0).map(|(_, &(_, v))| v).collect();
+        Ok(sel.iter().sum::<f64>() / sel.len().max(1) as f64)
+    };
+    let mut straight5 = sc360.clone();
+    straight5.as_printed.table_5_ship = true;
+    straight5.commands.truncate(1);
+    straight5.sim.duration_s = 1.0;
+    let straight5 = run(&straight5)?;
+    let (rpm0, p0) = (sig(&t360, "prop_rpm").min, sig(&t360, "im_power_pu").min);
+    let (rpm5, p5) = (sig(&straight5, "prop_rpm").final_, sig(&straight5, "im_power_pu").final_);
+    let why_power = format!(
+        "in calm water our turns cost little: ordered at r' = 1/3 (3.05 L) the shaft rises from {rpm0:.0} to \
+         {:.0} rpm and the power {:.1} %; at r' = 0.6 (the rudder at its limit) {:.0} rpm and {:.1} %; in SS6 \
+         (this row) the waves add their resistance. Nothing limits the drive: at 25 kn the motors run at \
+         {p0:.3} of their rating, the speed loop may trim the shaft by 40 % and up to 320 rpm. The thesis' pair \
+         needs about 60 % more thrust at 25 kn; its 255 over 225 rpm and 160 % fit the straight-line resistance of \
+         Table 2.3 scaled by its L = 180 m (1.64 times eq. 2.15's, which its start-up of ch. 5.1 uses): going \
+         straight at 25 kn on that ship (as_printed.table_5_ship) our shaft turns {rpm5:.0} rpm, {:.3} times the \
+         {rpm0:.0} rpm of eq. 2.15's resistance (the thesis' ratio: 1.133), at {:.2} times its power. That \
+         unit would make the turn's power a change of model, not of the turn; the thesis does not say which \
+         power it took as its unit, so this stays open",
+        rpm3.max,
+        100.0 * (p3.max / p3.min - 1.0),
+        sig(&t6, "prop_rpm").max,
+        100.0 * (sig(&t6, "im_power_pu").max / sig(&t6, "im_power_pu").min - 1.0),
+        rpm5 / rpm0,
+        p5 / p0,
+    );
+    rows.push(open(
+        "shaft speed holding 25 kn in the 360 deg turn (SS6, mean over the turn)",
+        "ch. 5.3.2 text, Fig. 5-18 (\"approximately 255 rpm\")",
+        255.0,
+        turn_mean(&ss6, "prop_rpm")?,
+        "rpm",
+        &why_power,
+    ));
+    rows.push(open(
+        "motor power in the 360 deg turn (SS6, mean over the turn, per unit of the 25 kn straight-line power)",
+        "ch. 5.3.2 text, Fig. 5-19 (\"about 160 %\")",
+        1.6,
+        turn_mean(&ss6, "im_power_pu")? / p0,
+        "-",
+        &why_power,
     ));
     // The thesis' own ship (Tables 5.1/5.5) with eq. 2.57 as printed: the model of its Fig. 5-15.
     let mut hs = preset("head-seas-ss6").ok_or("no preset")?;
