@@ -156,8 +156,9 @@ pub fn ac_braking(ideal: bool) -> Scenario {
 /// Ch. 5.2.3: heading changes at 25 knots (Figs. 5-9, 5-10, 5-16 in calm water).
 pub fn turn(name: &str, heading_deg: f64, rate_deg_s: Option<f64>) -> Scenario {
     let what = if heading_deg >= 360.0 {
-        "A full turn at 25 knots (thesis Fig. 5-16 in calm water), ordered as a heading ramp at the fastest rate the \
-         autopilot holds for this hull"
+        "A full turn at 25 knots (thesis Fig. 5-16 in calm water), ordered as a heading ramp of 1 degree per second \
+         (r' = 0.19 on this hull): the autopilot holds the ship on the ramp, so the radius is L / r', about 5 ship \
+         lengths; the thesis' 3 lengths need a ramp of r' = 1/3"
             .to_string()
     } else {
         format!("A {heading_deg:.0} degree heading change at 25 knots (thesis ch. 5.2.3, Figs. 5-9 and 5-10)")
