@@ -113,6 +113,7 @@ const STBD_HUB: usize = 7;
 
 /// The seaway acting on the ship. The components are kept as a structure of arrays, padded with
 /// silent components (amplitude 0) to a whole number of lanes.
+#[derive(Clone)]
 pub struct Seaway {
     waves: Vec<WaveComponent>,
     /// Per component: omega [rad/s], k cos mu, k sin mu [1/m], cos mu, sin mu (padded).
@@ -451,7 +452,8 @@ impl Seaway {
                 let mut cw: [f64; LANES] = std::array::from_fn(|l| c0[l] * cd[l] - s0[l] * sd[l]);
                 let mut sw: [f64; LANES] = std::array::from_fn(|l| s0[l] * cd[l] + c0[l] * sd[l]);
                 for l in 0..LANES.min(n - c) {
-                    if exact || !(d[l].abs() <= MAX_PHASE_STEP_RAD) {
+                    let turned = !exact && d[l].abs() <= MAX_PHASE_STEP_RAD;
+                    if !turned {
                         (cw[l], sw[l]) = (libm::cos(ph[l]), libm::sin(ph[l]));
                     }
                 }
