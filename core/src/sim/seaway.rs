@@ -503,11 +503,13 @@ impl Seaway {
         self.sign_x = newman_sign(sx);
         self.sign_y = newman_sign(sy);
         self.sign_z = newman_sign(sz);
-        for i in 0..n {
-            let a = self.amplitude[i];
-            self.wx[i] = newman_weight(a, self.wx[i], self.sign_x);
-            self.wy[i] = newman_weight(a, self.wy[i], self.sign_y);
-            self.wz[i] = newman_weight(a, self.wz[i], self.sign_z);
+        // By lanes (the padding's weights stay 0: amplitude 0).
+        for (w, sign) in [(&mut self.wx, self.sign_x), (&mut self.wy, self.sign_y), (&mut self.wz, self.sign_z)] {
+            for (w, a) in w.chunks_exact_mut(LANES).zip(self.amplitude.chunks_exact(LANES)) {
+                for l in 0..LANES {
+                    w[l] = newman_weight(a[l], w[l], sign);
+                }
+            }
         }
     }
 
