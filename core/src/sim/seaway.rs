@@ -254,6 +254,14 @@ fn wrap_two_pi(x: f64) -> f64 {
     }
 }
 
+/// The LANES values of `v` from index `c`.
+#[inline(always)]
+fn lanes(v: &[f64], c: usize) -> [f64; LANES] {
+    let mut a = [0.0; LANES];
+    a.copy_from_slice(&v[c..c + LANES]);
+    a
+}
+
 /// [`rotation`] of LANES angles at once (the same operations lane by lane).
 #[inline]
 fn rotations(d: &[f64; LANES]) -> ([f64; LANES], [f64; LANES]) {
@@ -532,36 +540,40 @@ impl Seaway {
         let n = self.waves.len();
         let np = self.cs.len();
         let twice = self.doppler_twice;
+        // Local slices: writing one of them cannot change another (the compiler may keep the
+        // lanes in vector registers instead of reloading after every store).
+        let (omega, kc_all, ks_all) = (&self.omega[..np], &self.kc[..np], &self.ks[..np]);
+        let (cs, sn, rates) = (&mut self.cs[..np], &mut self.sn[..np], &mut self.rate[..np]);
+        let (extra_rate, extra_phase) = (&self.extra_rate[..n], &mut self.extra_phase[..n]);
         for c in (0..np).step_by(LANES) {
-            let lane = |v: &[f64]| -> [f64; LANES] { std::array::from_fn(|l| v[c + l]) };
-            let (om, kc, ks) = (lane(&self.omega), lane(&self.kc), lane(&self.ks));
+            let (om, kc, ks) = (lanes(omega, c), lanes(kc_all, c), lanes(ks_all, c));
             let mut rate: [f64; LANES] = std::array::from_fn(|l| om[l] - (xd * kc[l] + yd * ks[l]));
             let mut d: [f64; LANES] = std::array::from_fn(|l| om[l] * dt - (dx * kc[l] + dy * ks[l]));
             if twice {
                 for l in 0..LANES.min(n - c) {
                     let i = c + l;
-                    let de = self.extra_rate[i] * dt_extra;
-                    self.extra_phase[i] += de;
-                    rate[l] += self.extra_rate[i];
+                    let de = extra_rate[i] * dt_extra;
+                    extra_phase[i] += de;
+                    rate[l] += extra_rate[i];
                     d[l] += de;
                 }
             }
             let (cd, sd) = rotations(&d);
-            let (c0, s0) = (lane(&self.cs), lane(&self.sn));
-            for l in 0..LANES {
-                self.cs[c + l] = c0[l] * cd[l] - s0[l] * sd[l];
-                self.sn[c + l] = s0[l] * cd[l] + c0[l] * sd[l];
-                self.rate[c + l] = rate[l];
-            }
+            let (c0, s0) = (lanes(cs, c), lanes(sn, c));
+            let c1: [f64; LANES] = std::array::from_fn(|l| c0[l] * cd[l] - s0[l] * sd[l]);
+            let s1: [f64; LANES] = std::array::from_fn(|l| s0[l] * cd[l] + c0[l] * sd[l]);
+            cs[c..c + LANES].copy_from_slice(&c1);
+            sn[c..c + LANES].copy_from_slice(&s1);
+            rates[c..c + LANES].copy_from_slice(&rate);
             for l in 0..LANES.min(n - c) {
                 if step.is_none() || d[l].abs() > MAX_PHASE_STEP_RAD {
                     let i = c + l;
                     let mut theta = self.waves[i].phase_at(self.cos_mu[i], self.sin_mu[i], x, y, t);
                     if twice {
-                        theta += self.extra_phase[i];
+                        theta += extra_phase[i];
                     }
-                    self.cs[i] = libm::cos(theta);
-                    self.sn[i] = libm::sin(theta);
+                    cs[i] = libm::cos(theta);
+                    sn[i] = libm::sin(theta);
                 }
             }
         }
