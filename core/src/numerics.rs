@@ -7,10 +7,17 @@ pub fn bisect(f: impl Fn(f64) -> f64, lo: f64, hi: f64, iterations: u32) -> f64 
     let positive_at_lo = f(a) > 0.0;
     for _ in 0..iterations {
         let m = 0.5 * (a + b);
+        // The midpoint of adjacent (or equal) ends is one of them, bit for bit: after this
+        // halving every further one leaves (a, b) as it is, so stopping then changes no bit of
+        // the answer.
+        let last = m.to_bits() == a.to_bits() || m.to_bits() == b.to_bits();
         if (f(m) > 0.0) == positive_at_lo {
             a = m;
         } else {
             b = m;
+        }
+        if last {
+            break;
         }
     }
     0.5 * (a + b)
@@ -120,6 +127,38 @@ pub fn gauss_legendre(n: usize, a: f64, b: f64) -> (Vec<f64>, Vec<f64>) {
 
 #[cfg(test)]
 mod tests {
+
+    /// Stopping once the ends are adjacent gives the same bits as all the halvings (a sign
+    /// change, none, a root at an end, a step).
+    #[test]
+    fn bisect_stops_early_with_the_same_answer() {
+        fn every_halving(f: impl Fn(f64) -> f64, lo: f64, hi: f64, iterations: u32) -> f64 {
+            let (mut a, mut b) = (lo, hi);
+            let positive_at_lo = f(a) > 0.0;
+            for _ in 0..iterations {
+                let m = 0.5 * (a + b);
+                if (f(m) > 0.0) == positive_at_lo {
+                    a = m;
+                } else {
+                    b = m;
+                }
+            }
+            0.5 * (a + b)
+        }
+        let fs: [&dyn Fn(f64) -> f64; 5] =
+            [&|x| x * x - 2.0, &|x| 3.0 - x, &|x| x * x + 1.0, &|x| x, &|x| if x < 0.7 { -1.0 } else { 1.0 }];
+        for f in fs {
+            for (lo, hi) in [(0.0, 2.0), (-1.0, 10.0), (0.0, 1000.0), (1e-3, 3.0)] {
+                for n in [5, 60, 100, 200] {
+                    assert_eq!(
+                        super::bisect(f, lo, hi, n).to_bits(),
+                        every_halving(f, lo, hi, n).to_bits(),
+                        "{lo} {hi} {n}"
+                    );
+                }
+            }
+        }
+    }
     #[test]
     fn gauss_legendre_integrates_polynomials_exactly() {
         for n in [1, 2, 5, 16, 33] {

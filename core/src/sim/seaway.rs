@@ -145,6 +145,8 @@ pub struct Seaway {
     cell_j: Vec<u32>,
     cell_k: Vec<u32>,
     cell_values: Vec<[f64; LANES]>,
+    /// Whether every value copied into `cell_values` so far is finite.
+    all_finite: bool,
     hub0: f64,
     hubs: [HubPlace; N_SHAFTS],
     second_order: bool,
@@ -304,6 +306,7 @@ impl Seaway {
             cell_j: vec![NOT_LOOKED_UP; n],
             cell_k: vec![0; n],
             cell_values: vec![[0.0; LANES]; np / LANES * CELL],
+            all_finite: true,
             omega: padded(&|w| w.omega),
             kc,
             ks,
@@ -367,6 +370,7 @@ impl Seaway {
                 self.values.push(([r.heave, r.pitch, r.roll, r.sway, r.yaw], r.fx * cos_b + r.fy * sin_b, r.mz));
             }
             let v = corner_values(&self.values[self.slice[at] as usize]);
+            self.all_finite &= v.iter().all(|x| x.is_finite());
             let block = (i / LANES) * CELL + q * N_CORNER;
             for (x, cell) in v.iter().zip(&mut self.cell_values[block..block + N_CORNER]) {
                 cell[i % LANES] = *x;
@@ -397,6 +401,7 @@ impl Seaway {
         let m = self.stern_motion;
         let hubs = self.hubs;
         let wj = [1.0 - fj, fj];
+        let all_finite = self.all_finite;
         for c in (0..np).step_by(LANES) {
             let lane = |v: &[f64]| -> [f64; LANES] { std::array::from_fn(|l| v[c + l]) };
             let (cm, sm) = (lane(&self.cos_mu), lane(&self.sin_mu));
@@ -427,16 +432,20 @@ impl Seaway {
             let wt: [[f64; LANES]; 4] =
                 std::array::from_fn(|q| std::array::from_fn(|l| wj[q / 2] * [1.0 - fk[l], fk[l]][q % 2]));
             let block = &self.cell_values[(c / LANES) * CELL..(c / LANES + 1) * CELL];
-            let mut acc = [[0.0; LANES]; N_CORNER];
-            for q in 0..4 {
-                for v in 0..N_CORNER {
+            // Value by value, the four corners in order (one sum in registers at a time).
+            let acc: [[f64; LANES]; N_CORNER] = std::array::from_fn(|v| {
+                let mut a = [0.0; LANES];
+                for q in 0..4 {
                     let x = &block[q * N_CORNER + v];
                     for l in 0..LANES {
                         let t = x[l] * wt[q][l];
-                        acc[v][l] += if wt[q][l] == 0.0 { 0.0 } else { t };
+                        // With finite values a weight of 0 adds +-0: the select only matters
+                        // for an infinite or NaN value.
+                        a[l] += if all_finite || wt[q][l] != 0.0 { t } else { 0.0 };
                     }
                 }
-            }
+                a
+            });
             let cplx = |v: usize, l: usize| C::new(acc[v][l], acc[v + 1][l]);
             if self.doppler_twice {
                 for l in 0..LANES.min(n - c) {
