@@ -111,26 +111,14 @@ const N_TRANSFER: usize = 8;
 const PORT_HUB: usize = 0;
 const STBD_HUB: usize = 7;
 
-/// The seaway acting on the ship. The components are kept as a structure of arrays, padded with
-/// silent components (amplitude 0) to a whole number of lanes.
+/// The RAO table, its grid and the grid headings' cosines and sines; per component the table's
+/// values at its own frequency on the [speed][heading] grid, looked up the first time a refresh
+/// needs them: (heave, pitch, roll, sway, yaw; F_add; M_add), STF axes, waves from starboard:
+/// `slice[(i * speeds + j) * headings + k]` is the index in `values` of component i's at speed j
+/// and heading k, or `NOT_LOOKED_UP`. Apart from the seaway's other fields, so that a refresh
+/// may fill it while it writes those.
 #[derive(Clone)]
-pub struct Seaway {
-    waves: Vec<WaveComponent>,
-    /// Per component: omega [rad/s], k cos mu, k sin mu [1/m], cos mu, sin mu (padded).
-    omega: Vec<f64>,
-    kc: Vec<f64>,
-    ks: Vec<f64>,
-    cos_mu: Vec<f64>,
-    sin_mu: Vec<f64>,
-    /// Per component: direction of travel mu [rad], wave number [1/m], amplitude [m] (padded).
-    direction: Vec<f64>,
-    wave_k: Vec<f64>,
-    amplitude: Vec<f64>,
-    /// The RAO table, its grid and the grid headings' cosines and sines; per component the
-    /// table's values at its own frequency on the [speed][heading] grid, looked up the first
-    /// time a refresh needs them: (heave, pitch, roll, sway, yaw; F_add; M_add), STF axes, waves
-    /// from starboard: `slice[(i * speeds + j) * headings + k]` is the index in `values` of
-    /// component i's at speed j and heading k, or `NOT_LOOKED_UP`.
+struct RaoCells {
     table: std::sync::Arc<RaoTable>,
     speeds: Vec<f64>,
     headings: Vec<f64>,
@@ -147,6 +135,54 @@ pub struct Seaway {
     cell_values: Vec<[f64; LANES]>,
     /// Whether every value copied into `cell_values` so far is finite.
     all_finite: bool,
+}
+
+impl RaoCells {
+    /// Copies the values of component `i` (frequency `omega`) at the corners of cell (speed j0,
+    /// heading k0) into `cell_values`, looking each corner up in the table the first time it is
+    /// needed.
+    fn load(&mut self, i: usize, omega: f64, j0: usize, k0: usize) {
+        let (ns, nh) = (self.speeds.len(), self.headings.len());
+        for q in 0..4 {
+            let j = (j0 + q / 2).min(ns - 1);
+            let k = (k0 + q % 2).min(nh - 1);
+            let at = (i * ns + j) * nh + k;
+            if self.slice[at] == NOT_LOOKED_UP {
+                let r = self.table.interpolate(omega, self.speeds[j], self.headings[k]);
+                // F_add along the waves' travel = fx cos b + fy sin b of the table.
+                let (cos_b, sin_b) = self.heading_cs[k];
+                self.slice[at] = self.values.len() as u32;
+                self.values.push(([r.heave, r.pitch, r.roll, r.sway, r.yaw], r.fx * cos_b + r.fy * sin_b, r.mz));
+            }
+            let v = corner_values(&self.values[self.slice[at] as usize]);
+            self.all_finite &= v.iter().all(|x| x.is_finite());
+            let block = (i / LANES) * CELL + q * N_CORNER;
+            for (x, cell) in v.iter().zip(&mut self.cell_values[block..block + N_CORNER]) {
+                cell[i % LANES] = *x;
+            }
+        }
+        self.cell_j[i] = j0 as u32;
+        self.cell_k[i] = k0 as u32;
+    }
+}
+
+/// The seaway acting on the ship. The components are kept as a structure of arrays, padded with
+/// silent components (amplitude 0) to a whole number of lanes.
+#[derive(Clone)]
+pub struct Seaway {
+    waves: Vec<WaveComponent>,
+    /// Per component: omega [rad/s], k cos mu, k sin mu [1/m], cos mu, sin mu (padded).
+    omega: Vec<f64>,
+    kc: Vec<f64>,
+    ks: Vec<f64>,
+    cos_mu: Vec<f64>,
+    sin_mu: Vec<f64>,
+    /// Per component: direction of travel mu [rad], wave number [1/m], amplitude [m] (padded).
+    direction: Vec<f64>,
+    wave_k: Vec<f64>,
+    amplitude: Vec<f64>,
+    /// The RAO table's values per component and grid cell.
+    rao: RaoCells,
     hub0: f64,
     hubs: [HubPlace; N_SHAFTS],
     second_order: bool,
@@ -303,21 +339,23 @@ impl Seaway {
             direction: padded(&|w| w.direction),
             wave_k: padded(&|w| w.k),
             amplitude: padded(&|w| w.amplitude),
-            cell_j: vec![NOT_LOOKED_UP; n],
-            cell_k: vec![0; n],
-            cell_values: vec![[0.0; LANES]; np / LANES * CELL],
-            all_finite: true,
             omega: padded(&|w| w.omega),
             kc,
             ks,
             cos_mu,
             sin_mu,
-            table,
-            speeds,
-            headings,
-            heading_cs,
-            slice: vec![NOT_LOOKED_UP; n * grid_points],
-            values: Vec::new(),
+            rao: RaoCells {
+                table,
+                speeds,
+                headings,
+                heading_cs,
+                slice: vec![NOT_LOOKED_UP; n * grid_points],
+                values: Vec::new(),
+                cell_j: vec![NOT_LOOKED_UP; n],
+                cell_k: vec![0; n],
+                cell_values: vec![[0.0; LANES]; np / LANES * CELL],
+                all_finite: true,
+            },
             hub0: hull.hub_depth_m,
             hubs: std::array::from_fn(|s| HubPlace { x_aft: hull.prop_x_aft_m, y: hull.shaft_y_m[s] }),
             second_order: k.second_order_forces,
@@ -353,33 +391,6 @@ impl Seaway {
         self.waves.clone()
     }
 
-    /// Copies component `i`'s values at the corners of cell (speed j0, heading k0) into
-    /// `cell_values`, looking each corner up in the table the first time it is needed.
-    fn load_cell(&mut self, i: usize, j0: usize, k0: usize) {
-        let (ns, nh) = (self.speeds.len(), self.headings.len());
-        let omega = self.waves[i].omega;
-        for q in 0..4 {
-            let j = (j0 + q / 2).min(ns - 1);
-            let k = (k0 + q % 2).min(nh - 1);
-            let at = (i * ns + j) * nh + k;
-            if self.slice[at] == NOT_LOOKED_UP {
-                let r = self.table.interpolate(omega, self.speeds[j], self.headings[k]);
-                // F_add along the waves' travel = fx cos b + fy sin b of the table.
-                let (cos_b, sin_b) = self.heading_cs[k];
-                self.slice[at] = self.values.len() as u32;
-                self.values.push(([r.heave, r.pitch, r.roll, r.sway, r.yaw], r.fx * cos_b + r.fy * sin_b, r.mz));
-            }
-            let v = corner_values(&self.values[self.slice[at] as usize]);
-            self.all_finite &= v.iter().all(|x| x.is_finite());
-            let block = (i / LANES) * CELL + q * N_CORNER;
-            for (x, cell) in v.iter().zip(&mut self.cell_values[block..block + N_CORNER]) {
-                cell[i % LANES] = *x;
-            }
-        }
-        self.cell_j[i] = j0 as u32;
-        self.cell_k[i] = k0 as u32;
-    }
-
     /// Looks the RAOs up again at speed `u` [m/s] and heading `psi` [rad].
     ///
     /// LANES components at a time (structure of arrays, as `sample`): each component's arithmetic
@@ -388,7 +399,7 @@ impl Seaway {
     // The lane loops index several arrays by the lane: written as indices so that they vectorise.
     #[allow(clippy::needless_range_loop)]
     pub fn refresh(&mut self, u: f64, psi: f64) {
-        let (j0, fj) = bracket(&self.speeds, u);
+        let (j0, fj) = bracket(&self.rao.speeds, u);
         // cos and sin of beta = psi - mu by the difference formulas: two libm calls per refresh
         // instead of three per component.
         let (sp, cp) = (libm::sin(psi), libm::cos(psi));
@@ -401,10 +412,22 @@ impl Seaway {
         let m = self.stern_motion;
         let hubs = self.hubs;
         let wj = [1.0 - fj, fj];
-        let all_finite = self.all_finite;
+        // Local slices: a store into one cannot change another, so the compiler may keep the
+        // lanes in registers.
+        let rao = &mut self.rao;
+        let (waves, direction) = (&self.waves[..n], &self.direction[..n]);
+        let (cos_mu, sin_mu, wave_k, amplitude) =
+            (&self.cos_mu[..np], &self.sin_mu[..np], &self.wave_k[..np], &self.amplitude[..np]);
+        let hub_ph = self.hub_ph.each_mut().map(|v| &mut v[..np]);
+        let hub_c = self.hub_c.each_mut().map(|v| &mut v[..np]);
+        let hub_s = self.hub_s.each_mut().map(|v| &mut v[..np]);
+        let h_re = self.h_re.each_mut().map(|v| &mut v[..np]);
+        let h_im = self.h_im.each_mut().map(|v| &mut v[..np]);
+        let (wx, wy, wz) = (&mut self.wx[..np], &mut self.wy[..np], &mut self.wz[..np]);
+        let (extra_rate, twice) = (&mut self.extra_rate[..n], self.doppler_twice);
         for c in (0..np).step_by(LANES) {
-            let lane = |v: &[f64]| -> [f64; LANES] { std::array::from_fn(|l| v[c + l]) };
-            let (cm, sm) = (lane(&self.cos_mu), lane(&self.sin_mu));
+            let lane = |v: &[f64]| lanes(v, c);
+            let (cm, sm) = (lane(cos_mu), lane(sin_mu));
             let cos_beta: [f64; LANES] = std::array::from_fn(|l| cp * cm[l] + sp * sm[l]);
             let sin_beta: [f64; LANES] = std::array::from_fn(|l| sp * cm[l] - cp * sm[l]);
             // beta = psi - mu (STF: 180 deg head seas), folded into [0, pi]; beyond pi the waves
@@ -414,24 +437,25 @@ impl Seaway {
             let mut fk = [0.0; LANES];
             for l in 0..LANES.min(n - c) {
                 let i = c + l;
-                let beta = wrap_two_pi(psi - self.direction[i]);
+                let beta = wrap_two_pi(psi - direction[i]);
                 let bf = if beta > PI {
                     side[l] = -1.0;
                     2.0 * PI - beta
                 } else {
                     beta
                 };
-                let (k0, f) = bracket_from(&self.headings, bf, self.cell_k[i] as usize);
+                let (k0, f) = bracket_from(&rao.headings, bf, rao.cell_k[i] as usize);
                 fk[l] = f;
-                if self.cell_j[i] != j0 as u32 || self.cell_k[i] != k0 as u32 {
-                    self.load_cell(i, j0, k0);
+                if rao.cell_j[i] != j0 as u32 || rao.cell_k[i] != k0 as u32 {
+                    rao.load(i, waves[i].omega, j0, k0);
                 }
             }
             // Bilinear weights of the four corners; a corner of weight 0 adds nothing (exactly as
             // skipping it: the sums start at +0 and never become -0).
             let wt: [[f64; LANES]; 4] =
                 std::array::from_fn(|q| std::array::from_fn(|l| wj[q / 2] * [1.0 - fk[l], fk[l]][q % 2]));
-            let block = &self.cell_values[(c / LANES) * CELL..(c / LANES + 1) * CELL];
+            let all_finite = rao.all_finite;
+            let block = &rao.cell_values[(c / LANES) * CELL..(c / LANES + 1) * CELL];
             // Value by value, the four corners in order (one sum in registers at a time).
             let acc: [[f64; LANES]; N_CORNER] = std::array::from_fn(|v| {
                 let mut a = [0.0; LANES];
@@ -447,15 +471,15 @@ impl Seaway {
                 a
             });
             let cplx = |v: usize, l: usize| C::new(acc[v][l], acc[v + 1][l]);
-            if self.doppler_twice {
+            if twice {
                 for l in 0..LANES.min(n - c) {
                     // Eq. 2.52's encounter frequency |omega0 - k U cos beta| (beta = 180 deg in
                     // head seas, where cos_beta = -1), which eqs. 2.55/2.59 put in front of t.
-                    let w = &self.waves[c + l];
-                    self.extra_rate[c + l] = (w.omega - w.k * u * cos_beta[l]).abs() - w.omega;
+                    let w = &waves[c + l];
+                    extra_rate[c + l] = (w.omega - w.k * u * cos_beta[l]).abs() - w.omega;
                 }
             }
-            let (k, a) = (lane(&self.wave_k), lane(&self.amplitude));
+            let (k, a) = (lane(wave_k), lane(amplitude));
             let h3: [C; LANES] = std::array::from_fn(|l| cplx(0, l));
             let h5: [C; LANES] = std::array::from_fn(|l| cplx(2, l));
             let h4: [C; LANES] = std::array::from_fn(|l| cplx(4, l) * side[l]);
@@ -463,7 +487,7 @@ impl Seaway {
             let mut wave0 = [C::new(0.0, 0.0); LANES];
             for s in 0..N_SHAFTS {
                 let ph: [f64; LANES] = std::array::from_fn(|l| m.hub_phase(k[l], hubs[s], cos_beta[l], sin_beta[l]));
-                let (ph0, c0, s0) = (lane(&self.hub_ph[s]), lane(&self.hub_c[s]), lane(&self.hub_s[s]));
+                let (ph0, c0, s0) = (lane(hub_ph[s]), lane(hub_c[s]), lane(hub_s[s]));
                 let d: [f64; LANES] = std::array::from_fn(|l| ph[l] - ph0[l]);
                 let (cd, sd) = rotations(&d);
                 let mut cw: [f64; LANES] = std::array::from_fn(|l| c0[l] * cd[l] - s0[l] * sd[l]);
@@ -474,10 +498,10 @@ impl Seaway {
                         (cw[l], sw[l]) = (libm::cos(ph[l]), libm::sin(ph[l]));
                     }
                 }
+                hub_ph[s][c..c + LANES].copy_from_slice(&ph);
+                hub_c[s][c..c + LANES].copy_from_slice(&cw);
+                hub_s[s][c..c + LANES].copy_from_slice(&sw);
                 for l in 0..LANES {
-                    self.hub_ph[s][c + l] = ph[l];
-                    self.hub_c[s][c + l] = cw[l];
-                    self.hub_s[s][c + l] = sw[l];
                     let wave = C::new(cw[l], sw[l]);
                     if s == 0 {
                         wave0[l] = wave;
@@ -491,16 +515,16 @@ impl Seaway {
                 let h =
                     [hub[0][l], h3[l], h5[l], h4[l], wave0[l], -cplx(6, l) * side[l], -cplx(8, l) * side[l], hub[1][l]];
                 for (j, hj) in h.iter().enumerate() {
-                    self.h_re[j][c + l] = a[l] * hj.re;
-                    self.h_im[j][c + l] = a[l] * hj.im;
+                    h_re[j][c + l] = a[l] * hj.re;
+                    h_im[j][c + l] = a[l] * hj.im;
                 }
                 // Mean force components per amplitude squared, ship axes (x forward, y starboard):
                 // STF's y is to port. STF's moment is bow to port for waves from starboard:
                 // mirrored for waves from port, and turned to the bow-to-starboard sense of the
                 // maneuvering equations.
-                self.wx[c + l] = cos_beta[l] * acc[10][l];
-                self.wy[c + l] = -sin_beta[l] * acc[10][l];
-                self.wz[c + l] = -side[l] * acc[11][l];
+                wx[c + l] = cos_beta[l] * acc[10][l];
+                wy[c + l] = -sin_beta[l] * acc[10][l];
+                wz[c + l] = -side[l] * acc[11][l];
             }
         }
         // The padding stays silent.
