@@ -221,13 +221,18 @@ impl MultiRate {
     /// (the state itself at a hull step, or with one rate).
     fn carried(&self, x: &State, step: u64, dt: f64) -> State {
         let mut y = *x;
-        if self.substeps > 1 && step % self.substeps != 0 {
+        if self.between_hull_steps(step) {
             let tau = (step - self.start) as f64 * dt;
             for (i, r) in self.rate.iter().enumerate() {
                 y[SURGE + i] += r * tau;
             }
         }
         y
+    }
+
+    /// Whether drive-train step `step` falls between hull steps (where `carried` moves the hull).
+    fn between_hull_steps(&self, step: u64) -> bool {
+        self.substeps > 1 && step % self.substeps != 0
     }
 }
 
@@ -416,8 +421,14 @@ impl Simulation {
     /// One sample of every discrete controller.
     fn control(&mut self) {
         let ts = self.ts;
-        let carried = self.multi.carried(&self.x, self.step, self.dt);
-        let x = &carried;
+        // The state itself unless the hull is carried forward (no copy in the common case).
+        let carried;
+        let x = if self.multi.between_hull_steps(self.step) {
+            carried = self.multi.carried(&self.x, self.step, self.dt);
+            &carried
+        } else {
+            &self.x
+        };
         let max_turn_rate = self.max_turn_rate_at(x);
         let p = &self.plant;
         let c = &mut self.ctl;
@@ -606,9 +617,14 @@ impl Simulation {
     /// The seaway's part of a step: RAO refresh and wave sums when due, then the hub depth at
     /// the middle of the step and the propellers' surface losses held over it.
     fn sea_step(&mut self) {
-        let carried = self.multi.carried(&self.x, self.step, self.dt);
+        let carried;
+        let x = if self.multi.between_hull_steps(self.step) {
+            carried = self.multi.carried(&self.x, self.step, self.dt);
+            &carried
+        } else {
+            &self.x
+        };
         let Some(sea) = self.sea.as_mut() else { return };
-        let x = &carried;
         if self.step % self.refresh_every == 0 {
             sea.refresh(speed_through_water(x), x[HEADING]);
         }
