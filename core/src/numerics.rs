@@ -43,29 +43,34 @@ pub fn powi(x: f64, n: u32) -> f64 {
 
 /// One classical fourth-order Runge-Kutta step of dx/dt = f(t, x) from `t` over `dt` [s], the
 /// integrator of the simulator and the stability tool. `f(t, y, dx)` writes the derivative into
-/// `dx`. With a fixed-size array state nothing is allocated.
+/// every entry of `dx`. With a fixed-size array state nothing is allocated.
 pub fn rk4<S>(x: &mut S, t: f64, dt: f64, mut f: impl FnMut(f64, &S, &mut S))
 where
     S: Clone + AsRef<[f64]> + AsMut<[f64]>,
 {
     let n = x.as_ref().len();
-    let (mut k1, mut k2, mut k3, mut k4, mut y) = (x.clone(), x.clone(), x.clone(), x.clone(), x.clone());
-    f(t, x, &mut k1);
+    // One buffer for the stages' slopes and the weighted sum k1 + 2 k2 + 2 k3 (+ k4) formed as
+    // they come, added in that order: the same bits as keeping all four.
+    let (mut k, mut y) = (x.clone(), x.clone());
+    f(t, x, &mut k);
+    let mut sum = k.clone();
     for i in 0..n {
-        y.as_mut()[i] = x.as_ref()[i] + 0.5 * dt * k1.as_ref()[i];
+        y.as_mut()[i] = x.as_ref()[i] + 0.5 * dt * k.as_ref()[i];
     }
-    f(t + 0.5 * dt, &y, &mut k2);
+    f(t + 0.5 * dt, &y, &mut k);
     for i in 0..n {
-        y.as_mut()[i] = x.as_ref()[i] + 0.5 * dt * k2.as_ref()[i];
+        sum.as_mut()[i] += 2.0 * k.as_ref()[i];
+        y.as_mut()[i] = x.as_ref()[i] + 0.5 * dt * k.as_ref()[i];
     }
-    f(t + 0.5 * dt, &y, &mut k3);
+    f(t + 0.5 * dt, &y, &mut k);
     for i in 0..n {
-        y.as_mut()[i] = x.as_ref()[i] + dt * k3.as_ref()[i];
+        sum.as_mut()[i] += 2.0 * k.as_ref()[i];
+        y.as_mut()[i] = x.as_ref()[i] + dt * k.as_ref()[i];
     }
-    f(t + dt, &y, &mut k4);
-    let (k1, k2, k3, k4) = (k1.as_ref(), k2.as_ref(), k3.as_ref(), k4.as_ref());
+    f(t + dt, &y, &mut k);
+    let (sum, k) = (sum.as_ref(), k.as_ref());
     for (i, xi) in x.as_mut().iter_mut().enumerate() {
-        *xi += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        *xi += dt / 6.0 * (sum[i] + k[i]);
     }
 }
 
