@@ -813,11 +813,6 @@ impl Prototype {
         sim.trace = Trace::with_capacity((sim.total_steps / sim.rec_every + 2) as usize);
         Ok(sim.start())
     }
-
-    /// The scenario it was built from.
-    pub fn scenario(&self) -> &Scenario {
-        &self.sim.scenario
-    }
 }
 
 /// Runs a scenario to its end.
