@@ -715,13 +715,15 @@ fn real_main() -> Result<(), Failure> {
                 sc.rao_table()?;
                 note.finish();
             }
+            // What the trials share is built once, not per trial.
+            let trials = aes_core::montecarlo::Trials::new(&sc);
             let pool =
                 rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
             let t0 = Instant::now();
             let progress = Progress::start(b - a, "aes-sim mc", quiet);
             let result = pool.install(|| {
                 use rayon::prelude::*;
-                (a..b).into_par_iter().map(|i| progress.tick(aes_core::montecarlo::run_trial(&sc, i))).try_reduce(
+                (a..b).into_par_iter().map(|i| progress.tick(trials.run(i))).try_reduce(
                     || aes_core::montecarlo::Partial::empty(&sc),
                     |mut x, y| {
                         x.merge(&y)?;

@@ -16,6 +16,27 @@ pub fn bracket(grid: &[f64], x: f64) -> (usize, f64) {
     (j, (x - grid[j]) / (grid[j + 1] - grid[j]))
 }
 
+/// [`bracket`]'s answer found by walking from segment `guess` (the last one found): the same
+/// `(j, f)` in a step or two when `x` moves little between calls (the seaway's headings).
+pub fn bracket_from(grid: &[f64], x: f64, guess: usize) -> (usize, f64) {
+    let n = grid.len();
+    if n < 2 || x <= grid[0] {
+        return (0, 0.0);
+    }
+    if x >= grid[n - 1] {
+        return (n - 2, 1.0);
+    }
+    // grid[0] < x < grid[n - 1]: the last j with grid[j] <= x, as `bracket`'s partition point.
+    let mut j = guess.min(n - 2);
+    while grid[j] > x {
+        j -= 1;
+    }
+    while grid[j + 1] <= x {
+        j += 1;
+    }
+    (j, (x - grid[j]) / (grid[j + 1] - grid[j]))
+}
+
 /// `y0 + f (y1 - y0)`.
 pub fn lerp(y0: f64, y1: f64, f: f64) -> f64 {
     y0 + f * (y1 - y0)
@@ -50,6 +71,11 @@ mod tests {
         }
         assert_eq!(bracket(&g, -1.0), (0, 0.0));
         assert_eq!(bracket(&g, 9.0), (2, 1.0));
+        for x in (0..=90).map(|i| -0.5 + 0.09 * i as f64).chain(g) {
+            for guess in 0..5 {
+                assert_eq!(bracket_from(&g, x, guess), bracket(&g, x), "{x} from {guess}");
+            }
+        }
         let t = [0.0, 2.0, 4.0];
         assert_eq!(uniform(&t, 0.5, 0.25), 1.0);
         assert_eq!(uniform(&t, 0.5, 5.0), 4.0);

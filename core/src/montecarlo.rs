@@ -20,7 +20,7 @@
 use crate::scenario::{Scenario, SeaKind};
 use crate::seakeeping::params::HubPlace;
 use crate::signals::Signal;
-use crate::sim::Simulation;
+use crate::sim::{Prototype, SimError};
 use crate::stats::{rice_upcrossing_rate, trial_seed, welch, ExactMoments, Histogram};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -433,11 +433,45 @@ pub fn trial_bins(sc: &Scenario, i: u64) -> Result<TrialBins, String> {
 
 /// Runs trial `i` of the study `sc` and returns its statistics as a one-trial partial.
 pub fn run_trial(sc: &Scenario, i: u64) -> Result<Partial, String> {
+    Trials::new(sc).run(i)
+}
+
+/// A study's trials: what they share is built once (the run up to its start without the sea, see
+/// [`Prototype`], and with `excess_energy` its submerged counterpart's), each trial adding its own
+/// sea. A trial gives the same bits as built from scratch.
+pub struct Trials {
+    sc: Scenario,
+    run: Result<Prototype, SimError>,
+    submerged: Option<Result<Prototype, SimError>>,
+}
+
+impl Trials {
+    pub fn new(sc: &Scenario) -> Trials {
+        let submerged = sc.monte_carlo.excess_energy.then(|| {
+            let mut sub = sc.clone();
+            sub.seakeeping.surface_losses = false;
+            Prototype::new(&sub)
+        });
+        Trials { sc: sc.clone(), run: Prototype::new(sc), submerged }
+    }
+
+    /// Runs trial `i` and returns its statistics as a one-trial partial.
+    pub fn run(&self, i: u64) -> Result<Partial, String> {
+        run_trial_from(&self.sc, i, &self.run, self.submerged.as_ref())
+    }
+}
+
+fn run_trial_from(
+    sc: &Scenario,
+    i: u64,
+    proto: &Result<Prototype, SimError>,
+    submerged: Option<&Result<Prototype, SimError>>,
+) -> Result<Partial, String> {
     let m = &sc.monte_carlo;
     let mut s = sc.clone();
     s.sim.seed = trial_seed(sc.sim.seed, i);
     let fail = |e: crate::SimError| format!("trial {i} (sea seed {}): {e}", s.sim.seed);
-    let mut sim = Simulation::new(&s).map_err(fail)?;
+    let mut sim = proto.as_ref().map_err(|e| fail(e.clone()))?.with_seed(s.sim.seed).map_err(fail)?;
     let chunk = sim.record_every().max(1) * 10;
     while !sim.done() {
         sim.advance(chunk).map_err(fail)?;
@@ -474,10 +508,11 @@ pub fn run_trial(sc: &Scenario, i: u64) -> Result<Partial, String> {
         p.at_time_hist.push(v);
     }
     let power = result.trace.get(Signal::ImPowerPu);
-    if m.excess_energy {
-        let mut sub = s.clone();
-        sub.seakeeping.surface_losses = false;
-        let r = crate::run(&sub).map_err(|e| format!("trial {i} (submerged counterpart): {e}"))?;
+    if let Some(sub) = submerged {
+        let counterpart = |e: SimError| format!("trial {i} (submerged counterpart): {e}");
+        let mut sim = sub.as_ref().map_err(|e| counterpart(e.clone()))?.with_seed(s.sim.seed).map_err(counterpart)?;
+        sim.advance(u64::MAX).map_err(counterpart)?;
+        let r = sim.finish();
         let n = power.len().min(r.trace.len());
         let base = r.trace.get(Signal::ImPowerPu);
         let e = (motor_energy(&s, &power[..n], dt) - motor_energy(&s, &base[..n], dt)) / 1e6;
@@ -549,8 +584,9 @@ pub fn run_trial(sc: &Scenario, i: u64) -> Result<Partial, String> {
 /// threads and merges, with the same result).
 pub fn run_range(sc: &Scenario, a: u64, b: u64) -> Result<Partial, String> {
     let mut acc = Partial::empty(sc);
+    let trials = Trials::new(sc);
     for i in a..b {
-        acc.merge(&run_trial(sc, i)?)?;
+        acc.merge(&trials.run(i)?)?;
     }
     Ok(acc)
 }

@@ -96,9 +96,17 @@ impl Ventilation {
 /// beta_T = beta_TA beta_TV and beta_Q = beta_T^m (eq. 2.13 and ch. 2.3).
 pub fn loss_factors(p: &LossParams, h_over_r: f64, beta_tv: f64) -> (f64, f64) {
     let bt = beta_out_of_water(h_over_r) * beta_tv;
+    (bt, torque_factor(p, bt))
+}
+
+/// beta_Q = beta_T^m (eq. 2.13).
+pub fn torque_factor(p: &LossParams, beta_t: f64) -> f64 {
     // Most steps have no loss: 1^m = 1 exactly, without the pow call.
-    let bq = if bt == 1.0 { 1.0 } else { libm::pow(bt, p.torque_exponent) };
-    (bt, bq)
+    if beta_t == 1.0 {
+        1.0
+    } else {
+        libm::pow(beta_t, p.torque_exponent)
+    }
 }
 
 #[cfg(test)]

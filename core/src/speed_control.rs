@@ -68,6 +68,9 @@ pub struct SpeedController {
     pub shaft_ref: f64,
     /// Calm-water map: equilibrium shaft speed [rad/s] at ship speeds 0, MAP_STEP_M_S, ...
     map: Vec<f64>,
+    /// The last ordered speed's bits and its mapped shaft speed (the order holds for many
+    /// samples).
+    last_map: Option<(u64, f64)>,
 }
 
 impl SpeedController {
@@ -84,6 +87,7 @@ impl SpeedController {
             max_shaft_speed: rpm_to_rad_s(p.max_shaft_rpm),
             shaft_ref: 0.0,
             map: (0..n_map).map(|i| equilibrium(i as f64 * MAP_STEP_M_S)).collect(),
+            last_map: None,
         }
     }
 
@@ -101,7 +105,14 @@ impl SpeedController {
     /// One sample with ordered speed `u_cmd` and speed through the water `u` [m/s]; returns the
     /// shaft speed reference [rad/s].
     pub fn update(&mut self, u_cmd: f64, u: f64, ts: f64) -> f64 {
-        let map = self.map_speed(u_cmd);
+        let map = match self.last_map {
+            Some((bits, m)) if bits == u_cmd.to_bits() => m,
+            _ => {
+                let m = self.map_speed(u_cmd);
+                self.last_map = Some((u_cmd.to_bits(), m));
+                m
+            }
+        };
         let err_u = u_cmd - u;
         let trim_max = self.trim_limit * map;
         let unsat = self.pi.unsaturated(err_u);

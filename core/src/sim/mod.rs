@@ -14,7 +14,7 @@ use crate::control::DiscretePi;
 use crate::generator::FieldController;
 use crate::motor::SlipController;
 use crate::prime_mover::Governor;
-use crate::propeller_losses::{loss_factors, LossParams, Ventilation};
+use crate::propeller_losses::{beta_out_of_water, torque_factor, LossParams, Ventilation};
 use crate::rudder::Autopilot;
 use crate::scenario::{ControllerDesign, HullModelKind, Scenario};
 use crate::signals::{Signal, N_SIGNALS};
@@ -155,6 +155,7 @@ pub mod limits {
 }
 
 /// A run in progress.
+#[derive(Clone)]
 pub struct Simulation {
     scenario: Scenario,
     plant: Plant,
@@ -182,6 +183,8 @@ pub struct Simulation {
     refresh_every: u64,
     vent: [Ventilation; N_SHAFTS],
     losses: LossParams,
+    /// Each propeller's last (beta_T, beta_Q).
+    last_beta: [(f64, f64); N_SHAFTS],
     /// Calm-water hub depth [m] (the hull's) and each shaft's hub depth over the propeller
     /// radius now [-].
     hub0: f64,
@@ -218,13 +221,18 @@ impl MultiRate {
     /// (the state itself at a hull step, or with one rate).
     fn carried(&self, x: &State, step: u64, dt: f64) -> State {
         let mut y = *x;
-        if self.substeps > 1 && step % self.substeps != 0 {
+        if self.between_hull_steps(step) {
             let tau = (step - self.start) as f64 * dt;
             for (i, r) in self.rate.iter().enumerate() {
                 y[SURGE + i] += r * tau;
             }
         }
         y
+    }
+
+    /// Whether drive-train step `step` falls between hull steps (where `carried` moves the hull).
+    fn between_hull_steps(&self, step: u64) -> bool {
+        self.substeps > 1 && step % self.substeps != 0
     }
 }
 
@@ -237,6 +245,11 @@ impl Simulation {
     /// The same with a constant added resistance [N] in the hull (the fuel study's steady states
     /// in regular seas: the mean second-order force).
     pub fn with_extra_resistance(scenario: &Scenario, extra: f64) -> Result<Simulation, SimError> {
+        Ok(Self::prepare(scenario, extra)?.start())
+    }
+
+    /// The model, its seaway and its initial state, before the first sample of the sea.
+    fn prepare(scenario: &Scenario, extra: f64) -> Result<Simulation, SimError> {
         scenario.validate().map_err(|e| SimError::Setup(e.to_string()))?;
         let mut plant = Plant::new(scenario).map_err(SimError::Setup)?;
         let hub0 = scenario.ship_hull().map_err(SimError::Setup)?.hub_depth_m;
@@ -303,6 +316,7 @@ impl Simulation {
             refresh_every: (scenario.seakeeping.rao_refresh_s / dt).round().max(1.0) as u64,
             vent: [Ventilation::default(); N_SHAFTS],
             losses: scenario.seakeeping.loss_params(),
+            last_beta: [(1.0, 1.0); N_SHAFTS],
             hub0,
             h_over_r: [2.0 * hub0 / scenario.propeller.diameter_m; N_SHAFTS],
             fuel_curve: crate::fuel::part_load_curve(),
@@ -317,12 +331,18 @@ impl Simulation {
             },
         };
         sim.initialise()?;
-        sim.sea_step();
-        sim.stored0 = sim.plant.stored_energy(&sim.x);
-        sim.apply_commands();
-        sim.refresh_outputs();
-        sim.record();
         Ok(sim)
+    }
+
+    /// The first step's part of `new` that the sea takes part in: the first sample, the stored
+    /// energy, the commands of t = 0 and the first recorded row.
+    fn start(mut self) -> Simulation {
+        self.sea_step();
+        self.stored0 = self.plant.stored_energy(&self.x);
+        self.apply_commands();
+        self.refresh_outputs();
+        self.record();
+        self
     }
 
     /// Initial state: idle (u0 = 0) or the calm-water steady state at the initial speed.
@@ -401,8 +421,14 @@ impl Simulation {
     /// One sample of every discrete controller.
     fn control(&mut self) {
         let ts = self.ts;
-        let carried = self.multi.carried(&self.x, self.step, self.dt);
-        let x = &carried;
+        // The state itself unless the hull is carried forward (no copy in the common case).
+        let carried;
+        let x = if self.multi.between_hull_steps(self.step) {
+            carried = self.multi.carried(&self.x, self.step, self.dt);
+            &carried
+        } else {
+            &self.x
+        };
         let max_turn_rate = self.max_turn_rate_at(x);
         let p = &self.plant;
         let c = &mut self.ctl;
@@ -591,9 +617,14 @@ impl Simulation {
     /// The seaway's part of a step: RAO refresh and wave sums when due, then the hub depth at
     /// the middle of the step and the propellers' surface losses held over it.
     fn sea_step(&mut self) {
-        let carried = self.multi.carried(&self.x, self.step, self.dt);
+        let carried;
+        let x = if self.multi.between_hull_steps(self.step) {
+            carried = self.multi.carried(&self.x, self.step, self.dt);
+            &carried
+        } else {
+            &self.x
+        };
         let Some(sea) = self.sea.as_mut() else { return };
-        let x = &carried;
         if self.step % self.refresh_every == 0 {
             sea.refresh(speed_through_water(x), x[HEADING]);
         }
@@ -616,7 +647,11 @@ impl Simulation {
             let h_r = self.h_over_r[s];
             let n_hz = x[omega_rm(s)] / (2.0 * PI);
             let tv = self.vent[s].step(&self.losses, h_r, n_hz, self.dt);
-            let (bt, bq) = loss_factors(&self.losses, h_r, tv);
+            // Eq. 2.13's beta_T = beta_TA beta_TV, beta_Q = beta_T^m; beta_T holds for many steps
+            // while a propeller is ventilated (0.3): then beta_Q is the last one, without pow.
+            let bt = beta_out_of_water(h_r) * tv;
+            let bq = if bt == self.last_beta[s].0 { self.last_beta[s].1 } else { torque_factor(&self.losses, bt) };
+            self.last_beta[s] = (bt, bq);
             self.ctl.held.sea.beta_t[s] = bt;
             self.ctl.held.sea.beta_q[s] = bq;
             if bt < 1.0 && self.first_event.is_none() {
@@ -747,6 +782,36 @@ impl Simulation {
             std::mem::take(&mut self.warnings),
         );
         RunResult { trace: self.trace, summary }
+    }
+}
+
+/// A scenario's run built up to its start without its sea (the plant, the calm-water speed map,
+/// the steady state, the controllers): runs of the same scenario in the seas of other seeds (a
+/// Monte Carlo study's trials) start from a copy of it instead of building all of it again.
+#[derive(Clone)]
+pub struct Prototype {
+    sim: Simulation,
+}
+
+impl Prototype {
+    /// The run of `scenario` (with any seed) up to its start; the errors `Simulation::new` gives.
+    pub fn new(scenario: &Scenario) -> Result<Prototype, SimError> {
+        // Built with its own sea, so that a scenario whose seaway cannot be made fails here as in
+        // `new`; nothing before the first sample depends on the sea, and the trials bring theirs.
+        let mut sim = Simulation::prepare(scenario, 0.0)?;
+        sim.sea = None;
+        Ok(Prototype { sim })
+    }
+
+    /// The run in the sea of `seed`: the same, bit for bit, as `Simulation::new` of the scenario
+    /// with that seed.
+    pub fn with_seed(&self, seed: u64) -> Result<Simulation, SimError> {
+        let mut sim = self.sim.clone();
+        sim.scenario.sim.seed = seed;
+        sim.sea = seaway::Seaway::new(&sim.scenario).map_err(SimError::Setup)?;
+        // A clone keeps the rows' length, not their room.
+        sim.trace = Trace::with_capacity((sim.total_steps / sim.rec_every + 2) as usize);
+        Ok(sim.start())
     }
 }
 

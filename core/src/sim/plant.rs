@@ -344,35 +344,35 @@ impl Plant {
 
     /// The algebraic outputs and the state derivative `dx` at state `x` with held controls `h`.
     pub fn evaluate(&self, x: &State, h: &Held, out: &mut Outputs, dx: &mut State) {
-        self.evaluate_impl::<true>(x, h, None, out, dx);
+        self.evaluate_impl(x, h, None, Some(out), dx);
     }
 
     /// The state derivative alone (the integrator's stages: the outputs are wanted only where
     /// they are recorded), with the heading's sine and cosine at a nearby heading given as
     /// (psi0, sin psi0, cos psi0): the stage's heading differs from it by a small angle.
     pub fn derivatives(&self, x: &State, h: &Held, heading: (f64, f64, f64), dx: &mut State) {
-        let mut out = Outputs::default();
-        self.evaluate_impl::<false>(x, h, Some(heading), &mut out, dx);
+        self.evaluate_impl(x, h, Some(heading), None, dx);
     }
 
-    /// Both, in one body: `OUT` says whether the outputs are written.
+    /// Both, in one body: the outputs are written where `out` is given (an `Outputs` made only to
+    /// be thrown away costs its initialisation every stage).
     #[inline(always)]
-    fn evaluate_impl<const OUT: bool>(
+    fn evaluate_impl(
         &self,
         x: &State,
         h: &Held,
         heading: Option<(f64, f64, f64)>,
-        out: &mut Outputs,
+        mut out: Option<&mut Outputs>,
         dx: &mut State,
     ) {
         let mut e = [0.0; N_ENERGY];
         let (u, v, r) = (x[SURGE], x[SWAY], x[YAW_RATE]);
         let inflow = self.inflow(u, v, r);
         let va = inflow.speed;
-        let thrust = self.drive::<OUT>(x, h, va, u, out, dx, &mut e);
+        let thrust = self.drive(x, h, va, u, out.as_deref_mut(), dx, &mut e);
         let resistance = self.hull_part(x, h, &inflow, thrust, heading, dx, &mut e);
         dx[ENERGY0..].copy_from_slice(&e);
-        if OUT {
+        if let Some(out) = out {
             out.thrust = thrust;
             out.resistance = resistance;
             out.inflow_speed = va;
@@ -395,13 +395,13 @@ impl Plant {
     /// total thrust [N].
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn drive<const OUT: bool>(
+    fn drive(
         &self,
         x: &State,
         h: &Held,
         va: f64,
         u_book: f64,
-        out: &mut Outputs,
+        mut out: Option<&mut Outputs>,
         dx: &mut State,
         e: &mut [f64; N_ENERGY],
     ) -> f64 {
@@ -427,7 +427,7 @@ impl Plant {
                 e[Energy::Generator as usize] += flow.p_generator;
                 e[Energy::StatorLoss as usize] += flow.p_stator_loss;
                 e[Energy::NotchingLoss as usize] += flow.p_notching_loss;
-                if OUT {
+                if let Some(out) = out.as_deref_mut() {
                     out.turbine_torque[k] = q_t;
                     out.friction_torque[k] = q_fric;
                     out.generator_torque[k] = q_g;
@@ -454,7 +454,7 @@ impl Plant {
             e[Energy::Thrust as usize] += pl.thrust_n * u;
             e[Energy::Brake as usize] += p_brake;
             e[Energy::Regenerated as usize] += (-mp.p_in).max(0.0);
-            if OUT {
+            if let Some(out) = out.as_deref_mut() {
                 out.brake_power[s] = p_brake;
                 out.motor_v_max[s] = v_max;
                 out.motor_voltage[s] = v_m;
@@ -524,8 +524,7 @@ impl Plant {
     /// slot integrates the thrust itself [N] (its impulse over the step), the ship's is 0.
     pub fn drive_derivatives(&self, x: &State, h: &Held, va: f64, dx: &mut State) {
         let mut e = [0.0; N_ENERGY];
-        let mut out = Outputs::default();
-        self.drive::<false>(x, h, va, 1.0, &mut out, dx, &mut e);
+        self.drive(x, h, va, 1.0, None, dx, &mut e);
         dx[SURGE..=HEADING].fill(0.0);
         dx[ENERGY0..].copy_from_slice(&e);
     }

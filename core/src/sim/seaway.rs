@@ -27,7 +27,7 @@
 //! runs still add in the same order; the RAO table's values at each component's frequency are
 //! looked up per grid point (speed, heading) the first time a refresh needs them.
 
-use crate::interp::bracket;
+use crate::interp::{bracket, bracket_from};
 use crate::scenario::{Scenario, SeaKind};
 use crate::seakeeping::params::{HubPlace, SternMotion};
 use crate::seakeeping::tables::RaoTable;
@@ -118,8 +118,64 @@ const N_TRANSFER: usize = 8;
 const PORT_HUB: usize = 0;
 const STBD_HUB: usize = 7;
 
+/// The RAO table, its grid and the grid headings' cosines and sines; per component the table's
+/// values at its own frequency on the [speed][heading] grid, looked up the first time a refresh
+/// needs them: (heave, pitch, roll, sway, yaw; F_add; M_add), STF axes, waves from starboard:
+/// `slice[(i * speeds + j) * headings + k]` is the index in `values` of component i's at speed j
+/// and heading k, or `NOT_LOOKED_UP`. Apart from the seaway's other fields, so that a refresh
+/// may fill it while it writes those.
+#[derive(Clone)]
+struct RaoCells {
+    table: std::sync::Arc<RaoTable>,
+    speeds: Vec<f64>,
+    headings: Vec<f64>,
+    heading_cs: Vec<(f64, f64)>,
+    slice: Vec<u32>,
+    values: Vec<Corner>,
+    /// Per component the grid cell (speed j, heading k) of its last refresh (j = `NOT_LOOKED_UP`
+    /// before the first) and the values at the cell's four corners by lanes:
+    /// `cell_values[(i / LANES) * CELL + q * N_CORNER + v][i % LANES]` is value v (see
+    /// [`corner_values`]) of corner q (speed j + q / 2, heading k + q % 2). A refresh reads
+    /// them in memory order; they are copied from `values` only when a component changes cell.
+    cell_j: Vec<u32>,
+    cell_k: Vec<u32>,
+    cell_values: Vec<[f64; LANES]>,
+    /// Whether every value copied into `cell_values` so far is finite.
+    all_finite: bool,
+}
+
+impl RaoCells {
+    /// Copies the values of component `i` (frequency `omega`) at the corners of cell (speed j0,
+    /// heading k0) into `cell_values`, looking each corner up in the table the first time it is
+    /// needed.
+    fn load(&mut self, i: usize, omega: f64, j0: usize, k0: usize) {
+        let (ns, nh) = (self.speeds.len(), self.headings.len());
+        for q in 0..4 {
+            let j = (j0 + q / 2).min(ns - 1);
+            let k = (k0 + q % 2).min(nh - 1);
+            let at = (i * ns + j) * nh + k;
+            if self.slice[at] == NOT_LOOKED_UP {
+                let r = self.table.interpolate(omega, self.speeds[j], self.headings[k]);
+                // F_add along the waves' travel = fx cos b + fy sin b of the table.
+                let (cos_b, sin_b) = self.heading_cs[k];
+                self.slice[at] = self.values.len() as u32;
+                self.values.push(([r.heave, r.pitch, r.roll, r.sway, r.yaw], r.fx * cos_b + r.fy * sin_b, r.mz));
+            }
+            let v = corner_values(&self.values[self.slice[at] as usize]);
+            self.all_finite &= v.iter().all(|x| x.is_finite());
+            let block = (i / LANES) * CELL + q * N_CORNER;
+            for (x, cell) in v.iter().zip(&mut self.cell_values[block..block + N_CORNER]) {
+                cell[i % LANES] = *x;
+            }
+        }
+        self.cell_j[i] = j0 as u32;
+        self.cell_k[i] = k0 as u32;
+    }
+}
+
 /// The seaway acting on the ship. The components are kept as a structure of arrays, padded with
 /// silent components (amplitude 0) to a whole number of lanes.
+#[derive(Clone)]
 pub struct Seaway {
     waves: Vec<WaveComponent>,
     /// Per component: omega [rad/s], k cos mu, k sin mu [1/m], cos mu, sin mu (padded).
@@ -128,17 +184,12 @@ pub struct Seaway {
     ks: Vec<f64>,
     cos_mu: Vec<f64>,
     sin_mu: Vec<f64>,
-    /// The RAO table, its grid and the grid headings' cosines and sines; per component the
-    /// table's values at its own frequency on the [speed][heading] grid, looked up the first
-    /// time a refresh needs them: (heave, pitch, roll, sway, yaw; F_add; M_add), STF axes, waves
-    /// from starboard: `slice[(i * speeds + j) * headings + k]` is the index in `values` of
-    /// component i's at speed j and heading k, or `NOT_LOOKED_UP`.
-    table: std::sync::Arc<RaoTable>,
-    speeds: Vec<f64>,
-    headings: Vec<f64>,
-    heading_cs: Vec<(f64, f64)>,
-    slice: Vec<u32>,
-    values: Vec<Corner>,
+    /// Per component: direction of travel mu [rad], wave number [1/m], amplitude [m] (padded).
+    direction: Vec<f64>,
+    wave_k: Vec<f64>,
+    amplitude: Vec<f64>,
+    /// The RAO table's values per component and grid cell.
+    rao: RaoCells,
     hub0: f64,
     hubs: [HubPlace; N_SHAFTS],
     second_order: bool,
@@ -163,9 +214,11 @@ pub struct Seaway {
     sign_y: f64,
     sign_z: f64,
     /// The wave's phase at each hub relative to G at the last refresh [rad] and its phasor
-    /// (cos, sin), turned by the small change at the next refresh; refreshes since the last
-    /// exact one.
-    hub_phase: Vec<[(f64, f64, f64); N_SHAFTS]>,
+    /// (cos, sin), per shaft and component, turned by the small change at the next refresh;
+    /// refreshes since the last exact one.
+    hub_ph: [Vec<f64>; N_SHAFTS],
+    hub_c: [Vec<f64>; N_SHAFTS],
+    hub_s: [Vec<f64>; N_SHAFTS],
     refreshes_since_sync: u32,
     /// Phasor (cos theta, sin theta) of every component at the last sample, the time and place
     /// of that sample, and the samples since the last exact one; the components' encounter
@@ -223,6 +276,37 @@ fn rotation(d: f64) -> (f64, f64) {
 type Corner = ([C; 5], f64, f64);
 const NOT_LOOKED_UP: u32 = u32::MAX;
 
+/// Values per corner of a grid cell: heave, pitch, roll, sway, yaw (real and imaginary parts),
+/// F_add, M_add; and per cell (four corners).
+const N_CORNER: usize = 12;
+const CELL: usize = 4 * N_CORNER;
+
+/// A corner's values in the order of [`N_CORNER`].
+fn corner_values((h, f, m): &Corner) -> [f64; N_CORNER] {
+    [h[0].re, h[0].im, h[1].re, h[1].im, h[2].re, h[2].im, h[3].re, h[3].im, h[4].re, h[4].im, *f, *m]
+}
+
+/// `x.rem_euclid(2 pi)` to the bit, without the call to fmod for |x| < 2 pi (the heading minus a
+/// wave's direction): there x % 2 pi = x exactly.
+#[inline]
+fn wrap_two_pi(x: f64) -> f64 {
+    if (0.0..2.0 * PI).contains(&x) {
+        x
+    } else if x < 0.0 && x > -2.0 * PI {
+        x + 2.0 * PI
+    } else {
+        x.rem_euclid(2.0 * PI)
+    }
+}
+
+/// The LANES values of `v` from index `c`.
+#[inline(always)]
+fn lanes(v: &[f64], c: usize) -> [f64; LANES] {
+    let mut a = [0.0; LANES];
+    a.copy_from_slice(&v[c..c + LANES]);
+    a
+}
+
 /// [`rotation`] of LANES angles at once (the same operations lane by lane).
 #[inline]
 fn rotations(d: &[f64; LANES]) -> ([f64; LANES], [f64; LANES]) {
@@ -259,17 +343,26 @@ impl Seaway {
         let kc = padded(&|w| w.k * libm::cos(w.direction));
         let ks = padded(&|w| w.k * libm::sin(w.direction));
         Ok(Some(Seaway {
+            direction: padded(&|w| w.direction),
+            wave_k: padded(&|w| w.k),
+            amplitude: padded(&|w| w.amplitude),
             omega: padded(&|w| w.omega),
             kc,
             ks,
             cos_mu,
             sin_mu,
-            table,
-            speeds,
-            headings,
-            heading_cs,
-            slice: vec![NOT_LOOKED_UP; n * grid_points],
-            values: Vec::new(),
+            rao: RaoCells {
+                table,
+                speeds,
+                headings,
+                heading_cs,
+                slice: vec![NOT_LOOKED_UP; n * grid_points],
+                values: Vec::new(),
+                cell_j: vec![NOT_LOOKED_UP; n],
+                cell_k: vec![0; n],
+                cell_values: vec![[0.0; LANES]; np / LANES * CELL],
+                all_finite: true,
+            },
             hub0: hull.hub_depth_m,
             hubs: std::array::from_fn(|s| HubPlace { x_aft: hull.prop_x_aft_m, y: hull.shaft_y_m[s] }),
             second_order: k.second_order_forces,
@@ -286,7 +379,9 @@ impl Seaway {
             sign_x: 1.0,
             sign_y: 1.0,
             sign_z: 1.0,
-            hub_phase: vec![[(0.0, 1.0, 0.0); N_SHAFTS]; n],
+            hub_ph: std::array::from_fn(|_| vec![0.0; np]),
+            hub_c: std::array::from_fn(|_| vec![1.0; np]),
+            hub_s: std::array::from_fn(|_| vec![0.0; np]),
             refreshes_since_sync: RESYNC_SAMPLES,
             cs: vec![1.0; np],
             sn: vec![0.0; np],
@@ -304,10 +399,14 @@ impl Seaway {
     }
 
     /// Looks the RAOs up again at speed `u` [m/s] and heading `psi` [rad].
+    ///
+    /// LANES components at a time (structure of arrays, as `sample`): each component's arithmetic
+    /// is the same, operation for operation, as one at a time, so the bits do not depend on the
+    /// lanes; the only sums across components (Newman's signs) run in component order.
+    // The lane loops index several arrays by the lane: written as indices so that they vectorise.
+    #[allow(clippy::needless_range_loop)]
     pub fn refresh(&mut self, u: f64, psi: f64) {
-        let (j0, fj) = bracket(&self.speeds, u);
-        let (ns, nh) = (self.speeds.len(), self.headings.len());
-        let (mut sx, mut sy, mut sz) = (0.0, 0.0, 0.0);
+        let (j0, fj) = bracket(&self.rao.speeds, u);
         // cos and sin of beta = psi - mu by the difference formulas: two libm calls per refresh
         // instead of three per component.
         let (sp, cp) = (libm::sin(psi), libm::cos(psi));
@@ -315,98 +414,150 @@ impl Seaway {
         // (no trigonometric call); every RESYNC_SAMPLES refreshes they are computed afresh.
         let exact = self.refreshes_since_sync >= RESYNC_SAMPLES;
         self.refreshes_since_sync = if exact { 0 } else { self.refreshes_since_sync + 1 };
-        for i in 0..self.waves.len() {
-            let w = self.waves[i];
+        let n = self.waves.len();
+        let np = self.omega.len();
+        let m = self.stern_motion;
+        let hubs = self.hubs;
+        let wj = [1.0 - fj, fj];
+        // Local slices: a store into one cannot change another, so the compiler may keep the
+        // lanes in registers.
+        let rao = &mut self.rao;
+        let (waves, direction) = (&self.waves[..n], &self.direction[..n]);
+        let (cos_mu, sin_mu, wave_k, amplitude) =
+            (&self.cos_mu[..np], &self.sin_mu[..np], &self.wave_k[..np], &self.amplitude[..np]);
+        let hub_ph = self.hub_ph.each_mut().map(|v| &mut v[..np]);
+        let hub_c = self.hub_c.each_mut().map(|v| &mut v[..np]);
+        let hub_s = self.hub_s.each_mut().map(|v| &mut v[..np]);
+        let h_re = self.h_re.each_mut().map(|v| &mut v[..np]);
+        let h_im = self.h_im.each_mut().map(|v| &mut v[..np]);
+        let (wx, wy, wz) = (&mut self.wx[..np], &mut self.wy[..np], &mut self.wz[..np]);
+        let (extra_rate, twice) = (&mut self.extra_rate[..n], self.doppler_twice);
+        for c in (0..np).step_by(LANES) {
+            let lane = |v: &[f64]| lanes(v, c);
+            let (cm, sm) = (lane(cos_mu), lane(sin_mu));
+            let cos_beta: [f64; LANES] = std::array::from_fn(|l| cp * cm[l] + sp * sm[l]);
+            let sin_beta: [f64; LANES] = std::array::from_fn(|l| sp * cm[l] - cp * sm[l]);
             // beta = psi - mu (STF: 180 deg head seas), folded into [0, pi]; beyond pi the waves
-            // come from port and roll and the side force change sign.
-            let beta = (psi - w.direction).rem_euclid(2.0 * PI);
-            let (bf, side) = if beta > PI { (2.0 * PI - beta, -1.0) } else { (beta, 1.0) };
-            let cos_beta = cp * self.cos_mu[i] + sp * self.sin_mu[i];
-            let sin_beta = sp * self.cos_mu[i] - cp * self.sin_mu[i];
-            let (k0, fk) = bracket(&self.headings, bf);
-            // The table's values at the four grid points around (u, beta), each looked up the
-            // first time it is needed.
-            let mut corners = [0u32; 4];
-            for (q, c) in corners.iter_mut().enumerate() {
-                let j = (j0 + q / 2).min(ns - 1);
-                let k = (k0 + q % 2).min(nh - 1);
-                let at = (i * ns + j) * nh + k;
-                if self.slice[at] == NOT_LOOKED_UP {
-                    let r = self.table.interpolate(w.omega, self.speeds[j], self.headings[k]);
-                    // F_add along the waves' travel = fx cos b + fy sin b of the table.
-                    let (cos_b, sin_b) = self.heading_cs[k];
-                    self.slice[at] = self.values.len() as u32;
-                    self.values.push(([r.heave, r.pitch, r.roll, r.sway, r.yaw], r.fx * cos_b + r.fy * sin_b, r.mz));
-                }
-                *c = self.slice[at];
-            }
-            let mut acc = [C::new(0.0, 0.0); 5];
-            let (mut fadd, mut madd) = (0.0, 0.0);
-            for (dj, wj) in [(0, 1.0 - fj), (1, fj)] {
-                for (dk, wk) in [(0, 1.0 - fk), (1, fk)] {
-                    let wt = wj * wk;
-                    if wt == 0.0 {
-                        continue;
-                    }
-                    let (h, f, m) = &self.values[corners[2 * dj + dk] as usize];
-                    for (a, v) in acc.iter_mut().zip(h) {
-                        *a += v * wt;
-                    }
-                    fadd += wt * f;
-                    madd += wt * m;
-                }
-            }
-            let (h3, h5, h4) = (acc[0], acc[1], acc[2] * side);
-            if self.doppler_twice {
-                // Eq. 2.52's encounter frequency |omega0 - k U cos beta| (beta = 180 deg in head
-                // seas, where cos_beta = -1), which eqs. 2.55/2.59 put in front of t.
-                self.extra_rate[i] = (w.omega - w.k * u * cos_beta).abs() - w.omega;
-            }
-            let m = self.stern_motion;
-            let mut hub = [C::new(0.0, 0.0); N_SHAFTS];
-            let mut wave = [C::new(0.0, 0.0); N_SHAFTS];
-            for s in 0..N_SHAFTS {
-                let ph = m.hub_phase(w.k, self.hubs[s], cos_beta, sin_beta);
-                let (ph0, c0, s0) = self.hub_phase[i][s];
-                let d = ph - ph0;
-                let (c, sn) = if !exact && d.abs() <= MAX_PHASE_STEP_RAD {
-                    let (cd, sd) = rotation(d);
-                    (c0 * cd - s0 * sd, s0 * cd + c0 * sd)
+            // come from port and roll and the side force change sign. The heading's cell is
+            // searched from the last one (waves keep theirs for many refreshes).
+            let mut side = [1.0; LANES];
+            let mut fk = [0.0; LANES];
+            for l in 0..LANES.min(n - c) {
+                let i = c + l;
+                let beta = wrap_two_pi(psi - direction[i]);
+                let bf = if beta > PI {
+                    side[l] = -1.0;
+                    2.0 * PI - beta
                 } else {
-                    (libm::cos(ph), libm::sin(ph))
+                    beta
                 };
-                self.hub_phase[i][s] = (ph, c, sn);
-                wave[s] = C::new(c, sn);
-                hub[s] = m.hub_transfer(wave[s], h3, h4, h5, self.hubs[s]);
+                let (k0, f) = bracket_from(&rao.headings, bf, rao.cell_k[i] as usize);
+                fk[l] = f;
+                if rao.cell_j[i] != j0 as u32 || rao.cell_k[i] != k0 as u32 {
+                    rao.load(i, waves[i].omega, j0, k0);
+                }
             }
-            // STF's sway is to port and its yaw bow to port: both flip for starboard-positive axes.
-            let h = [hub[0], h3, h5, h4, wave[0], -acc[3] * side, -acc[4] * side, hub[1]];
-            let a = w.amplitude;
-            for (j, hj) in h.iter().enumerate() {
-                self.h_re[j][i] = a * hj.re;
-                self.h_im[j][i] = a * hj.im;
+            // Bilinear weights of the four corners; a corner of weight 0 adds nothing (exactly as
+            // skipping it: the sums start at +0 and never become -0).
+            let wt: [[f64; LANES]; 4] =
+                std::array::from_fn(|q| std::array::from_fn(|l| wj[q / 2] * [1.0 - fk[l], fk[l]][q % 2]));
+            let all_finite = rao.all_finite;
+            let block = &rao.cell_values[(c / LANES) * CELL..(c / LANES + 1) * CELL];
+            // Value by value, the four corners in order (one sum in registers at a time).
+            let acc: [[f64; LANES]; N_CORNER] = std::array::from_fn(|v| {
+                let mut a = [0.0; LANES];
+                for q in 0..4 {
+                    let x = &block[q * N_CORNER + v];
+                    for l in 0..LANES {
+                        let t = x[l] * wt[q][l];
+                        // With finite values a weight of 0 adds +-0: the select only matters
+                        // for an infinite or NaN value.
+                        a[l] += if all_finite || wt[q][l] != 0.0 { t } else { 0.0 };
+                    }
+                }
+                a
+            });
+            let cplx = |v: usize, l: usize| C::new(acc[v][l], acc[v + 1][l]);
+            if twice {
+                for l in 0..LANES.min(n - c) {
+                    // Eq. 2.52's encounter frequency |omega0 - k U cos beta| (beta = 180 deg in
+                    // head seas, where cos_beta = -1), which eqs. 2.55/2.59 put in front of t.
+                    let w = &waves[c + l];
+                    extra_rate[c + l] = (w.omega - w.k * u * cos_beta[l]).abs() - w.omega;
+                }
             }
-            // Mean force components per amplitude squared, ship axes (x forward, y starboard):
-            // STF's y is to port.
-            let a2 = a * a;
-            self.wx[i] = cos_beta * fadd;
-            self.wy[i] = -sin_beta * fadd;
-            // STF's moment is bow to port for waves from starboard: mirrored for waves from port,
-            // and turned to the bow-to-starboard sense of the maneuvering equations.
-            self.wz[i] = -side * madd;
+            let (k, a) = (lane(wave_k), lane(amplitude));
+            let h3: [C; LANES] = std::array::from_fn(|l| cplx(0, l));
+            let h5: [C; LANES] = std::array::from_fn(|l| cplx(2, l));
+            let h4: [C; LANES] = std::array::from_fn(|l| cplx(4, l) * side[l]);
+            let mut hub = [[C::new(0.0, 0.0); LANES]; N_SHAFTS];
+            let mut wave0 = [C::new(0.0, 0.0); LANES];
+            for s in 0..N_SHAFTS {
+                let ph: [f64; LANES] = std::array::from_fn(|l| m.hub_phase(k[l], hubs[s], cos_beta[l], sin_beta[l]));
+                let (ph0, c0, s0) = (lane(hub_ph[s]), lane(hub_c[s]), lane(hub_s[s]));
+                let d: [f64; LANES] = std::array::from_fn(|l| ph[l] - ph0[l]);
+                let (cd, sd) = rotations(&d);
+                let mut cw: [f64; LANES] = std::array::from_fn(|l| c0[l] * cd[l] - s0[l] * sd[l]);
+                let mut sw: [f64; LANES] = std::array::from_fn(|l| s0[l] * cd[l] + c0[l] * sd[l]);
+                for l in 0..LANES.min(n - c) {
+                    let turned = !exact && d[l].abs() <= MAX_PHASE_STEP_RAD;
+                    if !turned {
+                        (cw[l], sw[l]) = (libm::cos(ph[l]), libm::sin(ph[l]));
+                    }
+                }
+                hub_ph[s][c..c + LANES].copy_from_slice(&ph);
+                hub_c[s][c..c + LANES].copy_from_slice(&cw);
+                hub_s[s][c..c + LANES].copy_from_slice(&sw);
+                for l in 0..LANES {
+                    let wave = C::new(cw[l], sw[l]);
+                    if s == 0 {
+                        wave0[l] = wave;
+                    }
+                    hub[s][l] = m.hub_transfer(wave, h3[l], h4[l], h5[l], hubs[s]);
+                }
+            }
+            for l in 0..LANES {
+                // STF's sway is to port and its yaw bow to port: both flip for starboard-positive
+                // axes.
+                let h =
+                    [hub[0][l], h3[l], h5[l], h4[l], wave0[l], -cplx(6, l) * side[l], -cplx(8, l) * side[l], hub[1][l]];
+                for (j, hj) in h.iter().enumerate() {
+                    h_re[j][c + l] = a[l] * hj.re;
+                    h_im[j][c + l] = a[l] * hj.im;
+                }
+                // Mean force components per amplitude squared, ship axes (x forward, y starboard):
+                // STF's y is to port. STF's moment is bow to port for waves from starboard:
+                // mirrored for waves from port, and turned to the bow-to-starboard sense of the
+                // maneuvering equations.
+                wx[c + l] = cos_beta[l] * acc[10][l];
+                wy[c + l] = -sin_beta[l] * acc[10][l];
+                wz[c + l] = -side[l] * acc[11][l];
+            }
+        }
+        // The padding stays silent.
+        for v in self.h_re.iter_mut().chain(self.h_im.iter_mut()).chain([&mut self.wx, &mut self.wy, &mut self.wz]) {
+            v[n..].fill(0.0);
+        }
+        // Newman: one sign per direction for the whole set (the components' own signs agree for a
+        // sea from one side; where they do not, the weaker side is dropped). The sums in
+        // component order.
+        let (mut sx, mut sy, mut sz) = (0.0, 0.0, 0.0);
+        for i in 0..n {
+            let a2 = self.amplitude[i] * self.amplitude[i];
             sx += a2 * self.wx[i];
             sy += a2 * self.wy[i];
             sz += a2 * self.wz[i];
         }
-        // Newman: one sign per direction for the whole set (the components' own signs agree for a
-        // sea from one side; where they do not, the weaker side is dropped).
         self.sign_x = newman_sign(sx);
         self.sign_y = newman_sign(sy);
         self.sign_z = newman_sign(sz);
-        for (i, w) in self.waves.iter().enumerate() {
-            self.wx[i] = newman_weight(w.amplitude, self.wx[i], self.sign_x);
-            self.wy[i] = newman_weight(w.amplitude, self.wy[i], self.sign_y);
-            self.wz[i] = newman_weight(w.amplitude, self.wz[i], self.sign_z);
+        // By lanes (the padding's weights stay 0: amplitude 0).
+        for (w, sign) in [(&mut self.wx, self.sign_x), (&mut self.wy, self.sign_y), (&mut self.wz, self.sign_z)] {
+            for (w, a) in w.chunks_exact_mut(LANES).zip(self.amplitude.chunks_exact(LANES)) {
+                for l in 0..LANES {
+                    w[l] = newman_weight(a[l], w[l], sign);
+                }
+            }
         }
     }
 
@@ -429,36 +580,40 @@ impl Seaway {
         let n = self.waves.len();
         let np = self.cs.len();
         let twice = self.doppler_twice;
+        // Local slices: writing one of them cannot change another (the compiler may keep the
+        // lanes in vector registers instead of reloading after every store).
+        let (omega, kc_all, ks_all) = (&self.omega[..np], &self.kc[..np], &self.ks[..np]);
+        let (cs, sn, rates) = (&mut self.cs[..np], &mut self.sn[..np], &mut self.rate[..np]);
+        let (extra_rate, extra_phase) = (&self.extra_rate[..n], &mut self.extra_phase[..n]);
         for c in (0..np).step_by(LANES) {
-            let lane = |v: &[f64]| -> [f64; LANES] { std::array::from_fn(|l| v[c + l]) };
-            let (om, kc, ks) = (lane(&self.omega), lane(&self.kc), lane(&self.ks));
+            let (om, kc, ks) = (lanes(omega, c), lanes(kc_all, c), lanes(ks_all, c));
             let mut rate: [f64; LANES] = std::array::from_fn(|l| om[l] - (xd * kc[l] + yd * ks[l]));
             let mut d: [f64; LANES] = std::array::from_fn(|l| om[l] * dt - (dx * kc[l] + dy * ks[l]));
             if twice {
                 for l in 0..LANES.min(n - c) {
                     let i = c + l;
-                    let de = self.extra_rate[i] * dt_extra;
-                    self.extra_phase[i] += de;
-                    rate[l] += self.extra_rate[i];
+                    let de = extra_rate[i] * dt_extra;
+                    extra_phase[i] += de;
+                    rate[l] += extra_rate[i];
                     d[l] += de;
                 }
             }
             let (cd, sd) = rotations(&d);
-            let (c0, s0) = (lane(&self.cs), lane(&self.sn));
-            for l in 0..LANES {
-                self.cs[c + l] = c0[l] * cd[l] - s0[l] * sd[l];
-                self.sn[c + l] = s0[l] * cd[l] + c0[l] * sd[l];
-                self.rate[c + l] = rate[l];
-            }
+            let (c0, s0) = (lanes(cs, c), lanes(sn, c));
+            let c1: [f64; LANES] = std::array::from_fn(|l| c0[l] * cd[l] - s0[l] * sd[l]);
+            let s1: [f64; LANES] = std::array::from_fn(|l| s0[l] * cd[l] + c0[l] * sd[l]);
+            cs[c..c + LANES].copy_from_slice(&c1);
+            sn[c..c + LANES].copy_from_slice(&s1);
+            rates[c..c + LANES].copy_from_slice(&rate);
             for l in 0..LANES.min(n - c) {
                 if step.is_none() || d[l].abs() > MAX_PHASE_STEP_RAD {
                     let i = c + l;
                     let mut theta = self.waves[i].phase_at(self.cos_mu[i], self.sin_mu[i], x, y, t);
                     if twice {
-                        theta += self.extra_phase[i];
+                        theta += extra_phase[i];
                     }
-                    self.cs[i] = libm::cos(theta);
-                    self.sn[i] = libm::sin(theta);
+                    cs[i] = libm::cos(theta);
+                    sn[i] = libm::sin(theta);
                 }
             }
         }
