@@ -602,7 +602,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
              loop: a steady turn needs at most {loop_deg:.1} deg of rudder (at r' = {loop_r:.2}); tighter turns \
              need less and from r' = 0.3 counter-rudder ({:+.1} deg at r' = 1/3), so with the rudder held at 2 \
              deg it {fix2} and at 5 deg it {fix5}. At r' = 1/3 the term N_vrr v' r'^2 ({:+.2e}, with Table 2.3's \
-             N_vrr = -0.148) outweighs the yaw damping N_r r' + N_ru r' du' + N_rrr r'^3 ({:+.2e}): the hull \
+             N_vrr = {:.3}) outweighs the yaw damping N_r r' + N_ru r' du' + N_rrr r'^3 ({:+.2e}): the hull \
              pushes itself into the turn and the autopilot holds it back. Read with eqs. 2.26-2.27's v + x_p r \
              (x_p positive aft, as eq. 2.19's moment takes it) the rudder's lift adds to the yaw instead of damping \
              it and the index falls to {c_printed:.2e}, a hundred times closer to unstable: that reading makes \
@@ -614,6 +614,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
             peak(&t6, "rudder_deg"),
             d3.to_degrees(),
             n_vrr * 1e-5,
+            sc360.hull.abkowitz.nvrr * 1e-5,
             n_r * 1e-5,
         ),
     ));
@@ -633,20 +634,23 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     let (rpm0, p0) = (sig(&t360, "prop_rpm").min, sig(&t360, "im_power_pu").min);
     let (rpm5, p5) = (sig(&straight5, "prop_rpm").final_, sig(&straight5, "im_power_pu").final_);
     let why_power = format!(
-        "in calm water our turns cost little: ordered at r' = 1/3 (3.05 L) the shaft rises from {rpm0:.0} to \
+        "in calm water our turns cost little: ordered at r' = 1/3 ({:.2} L) the shaft rises from {rpm0:.0} to \
          {:.0} rpm and the power {:.1} %; at r' = 0.6 (the rudder at its limit) {:.0} rpm and {:.1} %; in SS6 \
          (this row) the waves add their resistance. Nothing limits the drive: at 25 kn the motors run at \
-         {p0:.3} of their rating, the speed loop may trim the shaft by 40 % and up to 320 rpm. The thesis' pair \
+         {p0:.3} of their rating, the speed loop may trim the shaft by {:.0} % and up to {:.0} rpm. The thesis' pair \
          needs about 60 % more thrust at 25 kn; its 255 over 225 rpm and 160 % fit the straight-line resistance of \
          Table 2.3 scaled by its L = 180 m (1.64 times eq. 2.15's, which its start-up of ch. 5.1 uses): going \
          straight at 25 kn on that ship (as_printed.table_5_ship) our shaft turns {rpm5:.0} rpm, {:.3} times the \
          {rpm0:.0} rpm of eq. 2.15's resistance (the thesis' ratio: 1.133), at {:.2} times its power. That \
          unit would make the turn's power a change of model, not of the turn; the thesis does not say which \
          power it took as its unit, so this stays open",
+        radius(&t3),
         rpm3.max,
         100.0 * (p3.max / p3.min - 1.0),
         sig(&t6, "prop_rpm").max,
         100.0 * (sig(&t6, "im_power_pu").max / sig(&t6, "im_power_pu").min - 1.0),
+        100.0 * sc360.controllers.speed.trim_limit,
+        sc360.controllers.speed.max_shaft_rpm,
         rpm5 / rpm0,
         p5 / p0,
     );

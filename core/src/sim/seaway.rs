@@ -606,7 +606,8 @@ impl Seaway {
             sn[c..c + LANES].copy_from_slice(&s1);
             rates[c..c + LANES].copy_from_slice(&rate);
             for l in 0..LANES.min(n - c) {
-                if step.is_none() || d[l].abs() > MAX_PHASE_STEP_RAD {
+                // (Written so that a NaN step also takes libm: the next finite sample recovers.)
+                if step.is_none() || d[l].is_nan() || d[l].abs() > MAX_PHASE_STEP_RAD {
                     let i = c + l;
                     let mut theta = self.waves[i].phase_at(self.cos_mu[i], self.sin_mu[i], x, y, t);
                     if twice {
@@ -617,6 +618,10 @@ impl Seaway {
                 }
             }
         }
+        // The padding stays silent whatever the inputs were (0 x NaN would not be 0).
+        self.cs[n..np].fill(1.0);
+        self.sn[n..np].fill(0.0);
+        self.rate[n..np].fill(0.0);
         // The sums, lane by lane: Re{a H e^{i theta}} of each transfer, the hubs' time derivatives
         // and Newman's single sums.
         let (cs, sn, rate) = (&self.cs[..np], &self.sn[..np], &self.rate[..np]);
@@ -650,6 +655,7 @@ impl Seaway {
                 }
             }
         }
+        const _: () = assert!(LANES == 4, "the lanes' fixed order of addition below is written for four");
         let total = |v: &[f64; LANES]| (v[0] + v[1]) + (v[2] + v[3]);
         let re: [f64; N_TRANSFER] = std::array::from_fn(|j| total(&re[j]));
         let nm: [f64; 6] = std::array::from_fn(|j| total(&newman[j]));
@@ -731,6 +737,24 @@ mod tests {
         assert!(s.hub.iter().all(|h| h.is_finite()));
         let th = sea.waves[7].phase_at(sea.cos_mu[7], sea.sin_mu[7], 900.0, 90.0, 70.0);
         assert!((sea.cs[7] - libm::cos(th)).abs() < 1e-12);
+    }
+
+    /// One sample at a NaN position gives NaN sums, and the next finite sample is finite again
+    /// (the padding lanes and the recurrence do not keep the NaN). 7 components: one padding lane.
+    #[test]
+    fn a_nan_sample_is_forgotten() {
+        let mut sc = Scenario::default();
+        sc.sea.kind = SeaKind::Random;
+        sc.sea.sea_state = 6;
+        sc.sea.components = 7;
+        let mut sea = Seaway::new(&sc).unwrap().unwrap();
+        sea.refresh(12.86, 0.0);
+        for n in 0..20 {
+            let t = n as f64 * 0.05;
+            let x = if n == 10 { f64::NAN } else { 12.86 * t };
+            let s = sea.sample(t, x, 0.0, 12.86, 0.0);
+            assert_eq!(s.hub[0].is_finite(), n != 10, "sample {n}: {}", s.hub[0]);
+        }
     }
 
     #[test]
