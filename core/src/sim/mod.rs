@@ -25,6 +25,7 @@ use plant::{
     Plant, State, ENERGY0, HEADING, NX, N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE,
     Y_POS,
 };
+use std::borrow::Cow;
 use std::f64::consts::PI;
 use std::fmt;
 
@@ -217,20 +218,22 @@ struct MultiRate {
 const HULL_STATES: usize = HEADING + 1 - SURGE;
 
 impl MultiRate {
-    /// The state with the hull carried forward from its last step to drive-train step `step`
-    /// (the state itself at a hull step, or with one rate).
-    fn carried(&self, x: &State, step: u64, dt: f64) -> State {
-        let mut y = *x;
-        if self.between_hull_steps(step) {
-            let tau = (step - self.start) as f64 * dt;
-            for (i, r) in self.rate.iter().enumerate() {
-                y[SURGE + i] += r * tau;
-            }
+    /// The state at drive-train step `step` as the controllers and the seaway read it: the state
+    /// itself at a hull step or with one rate (borrowed: no copy), else with the hull carried
+    /// forward from its last step by that step's rate.
+    fn state_now<'a>(&self, x: &'a State, step: u64, dt: f64) -> Cow<'a, State> {
+        if !self.between_hull_steps(step) {
+            return Cow::Borrowed(x);
         }
-        y
+        let mut y = *x;
+        let tau = (step - self.start) as f64 * dt;
+        for (i, r) in self.rate.iter().enumerate() {
+            y[SURGE + i] += r * tau;
+        }
+        Cow::Owned(y)
     }
 
-    /// Whether drive-train step `step` falls between hull steps (where `carried` moves the hull).
+    /// Whether drive-train step `step` falls between hull steps (where `state_now` moves the hull).
     fn between_hull_steps(&self, step: u64) -> bool {
         self.substeps > 1 && step % self.substeps != 0
     }
@@ -421,14 +424,8 @@ impl Simulation {
     /// One sample of every discrete controller.
     fn control(&mut self) {
         let ts = self.ts;
-        // The state itself unless the hull is carried forward (no copy in the common case).
-        let carried;
-        let x = if self.multi.between_hull_steps(self.step) {
-            carried = self.multi.carried(&self.x, self.step, self.dt);
-            &carried
-        } else {
-            &self.x
-        };
+        let now = self.multi.state_now(&self.x, self.step, self.dt);
+        let x: &State = &now;
         let max_turn_rate = self.max_turn_rate_at(x);
         let p = &self.plant;
         let c = &mut self.ctl;
@@ -617,13 +614,8 @@ impl Simulation {
     /// The seaway's part of a step: RAO refresh and wave sums when due, then the hub depth at
     /// the middle of the step and the propellers' surface losses held over it.
     fn sea_step(&mut self) {
-        let carried;
-        let x = if self.multi.between_hull_steps(self.step) {
-            carried = self.multi.carried(&self.x, self.step, self.dt);
-            &carried
-        } else {
-            &self.x
-        };
+        let now = self.multi.state_now(&self.x, self.step, self.dt);
+        let x: &State = &now;
         let Some(sea) = self.sea.as_mut() else { return };
         if self.step % self.refresh_every == 0 {
             sea.refresh(speed_through_water(x), x[HEADING]);
