@@ -704,17 +704,23 @@ mod tests {
     use super::*;
     use crate::scenario::SeaKind;
 
+    /// The default scenario in a random sea of state 6 with `components` components.
+    fn random_ss6(seed: u64, components: u32) -> Scenario {
+        let mut sc = Scenario::default();
+        sc.sea.kind = SeaKind::Random;
+        sc.sea.sea_state = 6;
+        sc.sea.components = components;
+        sc.sim.seed = seed;
+        sc
+    }
+
     /// The phasors carried by the recurrence agree with libm's sin and cos of the phase along an
     /// 80 s run at 25 knots in SS6 (1600 samples, 200 components): measured 1.6e-13 at most (the
     /// direct phase, hundreds of radians, is itself rounded at about that level), asserted 1e-12
     /// (the bound is 1e-9); the hub depth's sum: measured 3.4e-14 m, asserted 1e-11 m.
     #[test]
     fn phase_recurrence_stays_within_1e_12() {
-        let mut sc = Scenario::default();
-        sc.sea.kind = SeaKind::Random;
-        sc.sea.sea_state = 6;
-        sc.sim.seed = 3;
-        let mut sea = Seaway::new(&sc).unwrap().unwrap();
+        let mut sea = Seaway::new(&random_ss6(3, 200)).unwrap().unwrap();
         let (u, psi) = (12.86, 0.1);
         sea.refresh(u, psi);
         let (xd, yd) = (u * libm::cos(psi), u * libm::sin(psi));
@@ -747,10 +753,7 @@ mod tests {
     /// libm at the same speed and heading: measured 3.3e-15 of the amplitude, asserted 2e-14.
     #[test]
     fn refreshed_hub_phasors_match_a_fresh_look_up() {
-        let mut sc = Scenario::default();
-        sc.sea.kind = SeaKind::Random;
-        sc.sea.sea_state = 6;
-        sc.sim.seed = 5;
+        let sc = random_ss6(5, 200);
         let mut carried = Seaway::new(&sc).unwrap().unwrap();
         let (mut u, mut psi) = (12.86, 0.0);
         for _ in 0..199 {
@@ -776,11 +779,7 @@ mod tests {
     /// (the padding lanes and the recurrence do not keep the NaN). 7 components: one padding lane.
     #[test]
     fn a_nan_sample_is_forgotten() {
-        let mut sc = Scenario::default();
-        sc.sea.kind = SeaKind::Random;
-        sc.sea.sea_state = 6;
-        sc.sea.components = 7;
-        let mut sea = Seaway::new(&sc).unwrap().unwrap();
+        let mut sea = Seaway::new(&random_ss6(0, 7)).unwrap().unwrap();
         sea.refresh(12.86, 0.0);
         for n in 0..20 {
             let t = n as f64 * 0.05;
