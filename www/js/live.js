@@ -392,16 +392,23 @@ export class LiveViews {
     box(6, 2, Math.min(across * 0.5, 4 * bl), ['Ship', `${v('ship_speed_kn').toFixed(1)} kn`, `useful ${mw(pS)}`, ...(down ? [] : [`thrust ${(v('thrust_kn') / 1e3).toFixed(2)} MN`]), keeps(v('p_ship_w'), v('p_motor_w'))], null);
   }
 
-  // Largest vertical excursion of the stern over the run [m]: |heave| + x_p |pitch|.
+  // Largest vertical excursion of the stern over the run [m]: |heave| + x_p |pitch| (and, in
+  // `deepest`, the disc's lowest point below the calm waterline [m]).
   sternReach() {
     const c = this.cols;
-    if (!c || !c.heave_m || !c.pitch_deg) return 0;
+    if (!c || !c.heave_m || !c.pitch_deg) { this.deepest = 0; return 0; }
     if (this.reachOf === c) return this.reach;
     const xp = (this.k && this.k.prop_x_aft_m) || 0;
-    let r = 0;
+    let r = 0, deep = 0;
     for (let i = 0; i < c.heave_m.length; i++) r = Math.max(r, Math.abs(c.heave_m[i]) + xp * Math.abs((c.pitch_deg[i] * Math.PI) / 180));
+    // The disc's lowest point below the calm waterline: the hub drawn at its depth below the
+    // wave at the stern (a deep hub in a trough goes further down than the stern's own motion).
+    if (c.hub_depth_m && c.wave_stern_m) {
+      for (let i = 0; i < c.hub_depth_m.length; i++) deep = Math.max(deep, c.hub_depth_m[i] - c.wave_stern_m[i]);
+    }
     this.reachOf = c;
     this.reach = Number.isFinite(r) ? r : 0;
+    this.deepest = Number.isFinite(deep) ? deep + ((this.k && this.k.propeller_radius_m) || 0) : 0;
     return this.reach;
   }
 
@@ -412,10 +419,13 @@ export class LiveViews {
     // The frame grows to hold the run's largest heave and pitch at the stern (the thesis' Appendix
     // A as printed heaves the ship by 16-18 m), so nothing leaves the picture.
     const reach = this.sternReach();
-    const up = Math.max(W.upM, reach + 1), down = Math.max(W.downM, reach + 3);
+    const up = Math.max(W.upM, reach + 1), down = Math.max(W.downM, reach + 3, (this.deepest || 0) + 1);
     const s = Math.min(w / (W.aftM + W.foreM), h / (up + down));
     const ox = (w - (W.aftM + W.foreM) * s) / 2, oy = (h - (up + down) * s) / 2 + up * s;
     const X = (x) => ox + (x + W.aftM) * s, Z = (z) => oy - z * s; // hull x from the AP, z up
+    // The hull x at the picture's edges: when a deep disc shrinks the scale, the water and the
+    // hull still reach across the whole picture.
+    const xLo = -ox / s - W.aftM, xHi = (w - ox) / s - W.aftM;
     const heave = v('heave_m'), pitch = (v('pitch_deg') * Math.PI) / 180, lcg = hull.lcg_m;
     const hx = lcg - k.prop_x_aft_m; // the hub, from the AP
     // Ship-fixed point -> picture: heave up, pitch bow down about the centre of gravity (small
@@ -427,7 +437,7 @@ export class LiveViews {
     const n = 64, xs = new Float64Array(n + 1), north = new Float64Array(n + 1), east = new Float64Array(n + 1);
     const psi = (v('heading_deg') * Math.PI) / 180, x0 = v('x_m'), y0 = v('y_m');
     for (let j = 0; j <= n; j++) {
-      xs[j] = -W.aftM - 2 + ((W.aftM + W.foreM + 4) * j) / n;
+      xs[j] = xLo - 2 + ((xHi - xLo + 4) * j) / n;
       north[j] = x0 + (xs[j] - lcg) * Math.cos(psi); east[j] = y0 + (xs[j] - lcg) * Math.sin(psi);
     }
     const eta = this.sea.elevations(this.t, north, east);
@@ -444,7 +454,7 @@ export class LiveViews {
     water.lineTo(X(xs[n]), h); water.closePath();
     // Hull profile, stern part.
     const hp = new Path2D();
-    const idx = hull.x_m.map((x, j) => j).filter((j) => hull.x_m[j] <= W.foreM + 10);
+    const idx = hull.x_m.map((x, j) => j).filter((j) => hull.x_m[j] <= Math.max(W.foreM, xHi) + 10);
     idx.forEach((j, m) => { const [px, pz] = ship(hull.x_m[j], hull.deck_z_m[j]); if (m) hp.lineTo(px, pz); else hp.moveTo(px, pz); });
     for (const j of [...idx].reverse()) { const [px, pz] = ship(hull.x_m[j], hull.keel_z_m[j]); hp.lineTo(px, pz); }
     hp.closePath();
