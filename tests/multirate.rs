@@ -4,6 +4,7 @@
 //! the energy accounts close as tightly.
 
 use aes_core::presets::preset;
+use aes_core::scenario::Integrator;
 use aes_core::RunResult;
 use aes_tests::run;
 
@@ -40,6 +41,7 @@ fn compare(name: &str, hull_step_s: f64) -> Diff {
     if name == "head-seas-ss6" {
         // W1 as defined in issue 17: 2.5 ms steps (the preset ships with 5 ms: `wave_presets_step_of_5_ms_matches_1_ms`).
         single.sim.dt_s = 0.0025;
+        single.sim.integrator = Integrator::Rk4;
     }
     let mut multi = single.clone();
     multi.sim.hull_substeps = (hull_step_s / single.sim.dt_s).round() as u32;
@@ -129,26 +131,31 @@ fn startup_multi_rate_closes_energy() {
     }
 }
 
-/// The runs in waves step at 5 ms (`presets::sea_step`). Against 1 ms steps, head seas SS6 (W1)
-/// and the as-printed SS6 run (hub depth of eq. 2.57 as printed: the propeller ventilates and
-/// emerges, the hardest case for a fixed step) are compared at 2.5 ms and 5 ms and at 5 ms with
-/// the hull at 10 ms (2 substeps). Measured: see the printed lines; asserted as below.
+/// The runs in waves step at 5 ms by the midpoint rule (`presets::sea_step`). Against 1 ms RK4
+/// steps, head seas SS6 (W1) and the as-printed SS6 run (hub depth of eq. 2.57 as printed: the
+/// propeller ventilates and emerges, the hardest case for a fixed step) are compared by RK4 at
+/// 2.5 and 5 ms, by the midpoint rule at 5 ms (as shipped) and at 5 ms with the hull at 10 ms (2
+/// substeps). Measured: see the printed lines; the shipped step asserted as below.
 #[test]
 fn wave_presets_step_of_5_ms_matches_1_ms() {
+    use Integrator::{Midpoint, Rk4};
     for name in ["head-seas-ss6", "as-printed"] {
         let shipped = preset(name).unwrap();
+        assert_eq!((shipped.sim.dt_s, shipped.sim.integrator), (0.005, Midpoint));
         let mut reference = shipped.clone();
         reference.sim.dt_s = 0.001;
+        reference.sim.integrator = Rk4;
         reference.sim.hull_substeps = 1;
-        for (dt, sub) in [(0.0025, 1), (0.005, 1), (0.005, 2)] {
+        for (dt, method, sub) in [(0.0025, Rk4, 1), (0.005, Rk4, 1), (0.005, Midpoint, 1), (0.005, Midpoint, 2)] {
             let mut c = shipped.clone();
             c.sim.dt_s = dt;
+            c.sim.integrator = method;
             c.sim.hull_substeps = sub;
             let d = differences(&reference, &c);
             println!(
-                "{name} at {dt} s x {sub}: rpm max {:.3e} mean {:.3e}; motor power mean {:.3e}, max {:.3e} of \
-                 peak; min h/R {:.3e}, h/R max {:.3e}; bus max {:.3e} pu; ship speed max {:.3e} kn; residual {:.3e} \
-                 (1 ms: {:.3e})",
+                "{name} at {dt} s x {sub}, {method:?}: rpm max {:.3e} mean {:.3e}; motor power mean {:.3e}, max {:.3e} \
+                 of peak; min h/R {:.3e}, h/R max {:.3e}; bus max {:.3e} pu; ship speed max {:.3e} kn; residual \
+                 {:.3e} (1 ms: {:.3e})",
                 d.rpm_max,
                 d.rpm_mean,
                 d.motor_power_mean_rel,
@@ -160,24 +167,26 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
                 d.residual_run,
                 d.residual_reference
             );
-            if (dt, sub) != (0.005, 1) {
+            if (dt, method, sub) != (0.005, Midpoint, 1) {
                 continue;
             }
-            // The shipped step. Measured (W1 / as printed): rpm max 0.035 / 0.115, rpm mean 3.8e-3 /
-            // 7.2e-3, mean motor power 3.8e-6 / 2.2e-4, largest motor power difference 1.2e-3 /
-            // 3.8e-3 of the peak, min h/R 1.9e-4 / 1.8e-3, bus voltage 3.5e-3 / 5.7e-3 pu, ship
-            // speed 1.0e-3 / 2.6e-3 kn, energy residual within 3e-8 of the 1 ms run's. (The as-printed
-            // run's propeller emerges: a ventilation switch a step later moves the trace after it.)
+            // The shipped step. Measured (W1 / as printed): rpm max 0.035 / 0.115, rpm mean 4.4e-3 /
+            // 6.0e-3, mean motor power 7.1e-6 / 1.8e-4, largest motor power difference 1.5e-3 /
+            // 3.8e-3 of the peak, min h/R 1.9e-4 / 1.8e-3, bus voltage 4.0e-3 / 2.7e-3 pu, ship
+            // speed 9.6e-4 / 2.0e-3 kn, energy residual 1.4e-7 / 3.7e-7 from the 1 ms run's (RK4 at 5
+            // ms: 0.035 / 0.115 rpm, 1.2e-3 / 3.8e-3 of peak power, 2e-8 / 3e-8 residual). The as-printed
+            // run's propeller emerges: a ventilation switch a step later moves the trace after it.
             let w1 = name == "head-seas-ss6";
             let tol = |a: f64, b: f64| if w1 { a } else { b };
             assert!(d.rpm_max < tol(0.05, 0.15), "{name}: rpm {}", d.rpm_max);
-            assert!(d.rpm_mean < 0.01, "{name}: rpm mean {}", d.rpm_mean);
+            assert!(d.rpm_mean < tol(6e-3, 8e-3), "{name}: rpm mean {}", d.rpm_mean);
             assert!(d.motor_power_mean_rel < tol(1e-5, 4e-4), "{name}: motor power {}", d.motor_power_mean_rel);
             assert!(d.motor_power_max_of_peak < tol(2e-3, 5e-3), "{name}: {} of peak", d.motor_power_max_of_peak);
-            assert!(d.min_h_over_r < tol(5e-4, 3e-3), "{name}: min h/R {}", d.min_h_over_r);
-            assert!(d.bus_pu_max < tol(5e-3, 1e-2), "{name}: bus {} pu", d.bus_pu_max);
-            assert!(d.speed_kn_max < tol(2e-3, 4e-3), "{name}: ship speed {} kn", d.speed_kn_max);
-            assert!((d.residual_run - d.residual_reference).abs() < 1e-7, "{name}: residual");
+            assert!(d.min_h_over_r < tol(3e-4, 3e-3), "{name}: min h/R {}", d.min_h_over_r);
+            assert!(d.bus_pu_max < 5e-3, "{name}: bus {} pu", d.bus_pu_max);
+            assert!(d.speed_kn_max < tol(2e-3, 3e-3), "{name}: ship speed {} kn", d.speed_kn_max);
+            let residual = (d.residual_run - d.residual_reference).abs();
+            assert!(residual < tol(2e-7, 5e-7), "{name}: residual {residual}");
         }
     }
 }

@@ -6,6 +6,7 @@
 //! them; the physics converts to SI on load.
 
 use crate::check_range;
+pub use crate::numerics::Integrator;
 use crate::signals::Signal;
 use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
@@ -169,8 +170,16 @@ pub struct InitialConditions {
 pub struct SimSettings {
     /// Simulated time [s].
     pub duration_s: f64,
-    /// Fixed RK4 step [s]. The DC link time constant is about 3.5 ms, so 1 ms.
+    /// Fixed step [s]. The DC link's time constant is about 4.5 ms (4.25 ms at 3 kn, 4.71 ms at
+    /// 32 kn: the fastest mode of the drive train linearised, every other one 0.9 s or slower),
+    /// so 1 ms by default; 5 ms in the presets in waves.
     pub dt_s: f64,
+    /// The fixed-step method: "rk4" (default) or "midpoint" (second order, two evaluations of
+    /// the plant a step instead of four; the presets in waves, where holding the sea's inputs
+    /// over a step costs more accuracy than the method: tests/multirate.rs). The midpoint rule
+    /// is stable for the DC link at steps up to 2 time constants (RK4: 2.8).
+    #[serde(skip_serializing_if = "is_rk4")]
+    pub integrator: Integrator,
     /// Interval between recorded trace rows [s]. Must be a whole number of time steps.
     pub record_interval_s: f64,
     /// Seed of every random number in the run (the calm-water drive train uses none).
@@ -185,6 +194,10 @@ pub struct SimSettings {
 
 fn is_one(n: &u32) -> bool {
     *n == 1
+}
+
+fn is_rk4(m: &Integrator) -> bool {
+    *m == Integrator::Rk4
 }
 
 impl Default for Scenario {
@@ -232,7 +245,14 @@ impl Default for InitialConditions {
 
 impl Default for SimSettings {
     fn default() -> Self {
-        SimSettings { duration_s: 300.0, dt_s: 0.001, record_interval_s: 0.1, seed: 0, hull_substeps: 1 }
+        SimSettings {
+            duration_s: 300.0,
+            dt_s: 0.001,
+            integrator: Integrator::Rk4,
+            record_interval_s: 0.1,
+            seed: 0,
+            hull_substeps: 1,
+        }
     }
 }
 
@@ -521,11 +541,14 @@ impl Scenario {
         if !moved.is_empty() {
             return Err(ScenarioError(moved));
         }
+        // Kept to quote the offending value in an error (serde names only the path).
+        let original = value.clone();
         let sc: Scenario = serde_path_to_error::deserialize(value).map_err(|e| {
             let path = e.path().to_string();
+            let found = value_at(&original, e.path()).map(|v| crate::validate::shorten(&v.to_string()));
             ScenarioError(vec![FieldError {
                 path: if path == "." { "(top level)".into() } else { crate::validate::shorten(&path) },
-                value: String::new(),
+                value: found.unwrap_or_default(),
                 message: crate::validate::shorten_message(&e.into_inner().to_string()),
             }])
         })?;
@@ -585,6 +608,16 @@ const MOVED_FIELDS: [(&str, &str, &str); 6] = [
     ("seakeeping", "prop_x_aft_m", "the propellers' place is the hull's: ship.hull.propeller_x_m (from the AP)"),
     ("rudder", "x_p_m", "the rudder's place is the hull's: ship.hull.rudder_x_m (from the AP)"),
 ];
+
+/// The value at a deserializer's error path in the JSON it read, if it is there.
+fn value_at<'a>(root: &'a serde_json::Value, path: &serde_path_to_error::Path) -> Option<&'a serde_json::Value> {
+    use serde_path_to_error::Segment;
+    path.iter().try_fold(root, |node, segment| match segment {
+        Segment::Map { key } => node.get(key.as_str()),
+        Segment::Seq { index } => node.get(*index),
+        Segment::Enum { .. } | Segment::Unknown => Some(node),
+    })
+}
 
 fn one_error(path: &str, value: &str, msg: &dyn fmt::Display) -> ScenarioError {
     use crate::validate::{shorten, shorten_message};
@@ -732,7 +765,13 @@ mod tests {
     #[test]
     fn wrong_type_is_named_with_path() {
         let e = Scenario::from_json(r#"{"plant": {"motor": {"pole_pairs": "twelve"}}}"#).unwrap_err();
-        assert_eq!(e.0[0].path, "plant.motor.pole_pairs");
+        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("plant.motor.pole_pairs", "\"twelve\""));
+        // An unknown choice: the value quoted and the choices listed.
+        let e = Scenario::from_json(r#"{"sim": {"integrator": "euler"}}"#).unwrap_err();
+        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("sim.integrator", "\"euler\""));
+        assert!(e.0[0].message.contains("`rk4` or `midpoint`"), "{}", e.0[0].message);
+        let e = Scenario::from_json(r#"{"commands": [{"t_s": 0}, {"t_s": 5, "speed_kn": [1]}]}"#).unwrap_err();
+        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("commands[1].speed_kn", "[1]"));
     }
 
     #[test]

@@ -127,7 +127,7 @@ pub fn drive_train(sc: &Scenario) -> Result<DriveTrainModel, SimError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sim::plant::rk4_step;
+    use crate::sim::plant::plant_step;
 
     /// Small steps of throttle (+0.5 % of full fuel) and field voltage (+1 %): over one second the
     /// linear model's turbine speed and bus voltage follow the nonlinear plant's within 1 % of the
@@ -159,7 +159,7 @@ mod tests {
             let w0: f64 = (0..N_SETS).map(|k| m.x0[omega_t(k)]).sum::<f64>() / N_SETS as f64;
             let v0: f64 = (0..N_SHAFTS).map(|s| m.x0[bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
             for _ in 0..1000 {
-                rk4_step(plant, &mut x, &h, dt);
+                plant_step(plant, &mut x, &h, dt, crate::numerics::Integrator::Rk4);
                 // The linear model by RK4 as well.
                 let f = |z: &nalgebra::DVector<f64>| &m.system.a * z + &m.system.b * &u;
                 let k1 = f(&z);

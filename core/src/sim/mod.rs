@@ -21,9 +21,8 @@ use crate::signals::{Signal, N_SIGNALS};
 use crate::speed_control::SpeedController;
 use crate::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg};
 use plant::{
-    bus_voltage, field_current, omega_rm, omega_t, rk4_drive_step, rk4_hull_step, rk4_step, Energy, Held, Outputs,
-    Plant, State, ENERGY0, HEADING, NX, N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE,
-    Y_POS,
+    bus_voltage, drive_step, field_current, hull_step, omega_rm, omega_t, plant_step, Energy, Held, Outputs, Plant,
+    State, ENERGY0, HEADING, NX, N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE, Y_POS,
 };
 use std::borrow::Cow;
 use std::f64::consts::PI;
@@ -169,6 +168,8 @@ pub struct Simulation {
     ctl_every: u64,
     rec_every: u64,
     dt: f64,
+    /// The fixed-step method (`sim.integrator`).
+    method: crate::numerics::Integrator,
     ts: f64,
     next_command: usize,
     speed_cmd: f64,
@@ -307,6 +308,7 @@ impl Simulation {
             ctl_every,
             rec_every,
             dt,
+            method: sim_cfg.integrator,
             ts: ctl_every as f64 * dt,
             next_command: 0,
             speed_cmd: 0.0,
@@ -666,14 +668,14 @@ impl Simulation {
             self.x[thrust_slot] = 0.0;
             m.va = self.plant.inflow(self.x[SURGE], self.x[SWAY], self.x[YAW_RATE]).speed;
         }
-        rk4_drive_step(&self.plant, &mut self.x, &self.ctl.held, m.va, self.dt);
+        drive_step(&self.plant, &mut self.x, &self.ctl.held, m.va, self.dt, self.method);
         let done = self.step + 1;
         if done % m.substeps == 0 || done == self.total_steps {
             let span = (done - m.start) as f64 * self.dt;
             let thrust = self.x[thrust_slot] / span;
             self.x[thrust_slot] = m.thrust_work;
             let before = self.x;
-            rk4_hull_step(&self.plant, &mut self.x, &self.ctl.held, thrust, span);
+            hull_step(&self.plant, &mut self.x, &self.ctl.held, thrust, span, self.method);
             for (i, r) in m.rate.iter_mut().enumerate() {
                 *r = (self.x[SURGE + i] - before[SURGE + i]) / span;
             }
@@ -691,7 +693,7 @@ impl Simulation {
                 self.sea_step();
             }
             if self.multi.substeps == 1 {
-                rk4_step(&self.plant, &mut self.x, &self.ctl.held, self.dt);
+                plant_step(&self.plant, &mut self.x, &self.ctl.held, self.dt, self.method);
             } else {
                 self.multi_rate_step();
             }

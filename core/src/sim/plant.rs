@@ -9,6 +9,7 @@ use crate::dc_link::{DcLink, RectifierFlow};
 use crate::generator::SyncGenerator;
 use crate::maneuvering::{handover_weight, Abkowitz};
 use crate::motor::{InductionMotor, MotorPoint};
+use crate::numerics::Integrator;
 use crate::prime_mover::GasTurbine;
 use crate::propeller::{Conditions, FourQuadrant, OpenWater, PropellerLoad};
 use crate::rudder::{rudder_force, stern_inflow, Inflow, RudderParams};
@@ -564,28 +565,28 @@ impl Plant {
     }
 }
 
-/// One RK4 step of `dt` [s] with the controls held (no allocation; the outputs are not formed:
-/// `Plant::evaluate` gives them where they are wanted).
-pub fn rk4_step(plant: &Plant, x: &mut State, h: &Held, dt: f64) {
+/// One step of `dt` [s] by `method` with the controls held (no allocation; the outputs are not
+/// formed: `Plant::evaluate` gives them where they are wanted).
+pub fn plant_step(plant: &Plant, x: &mut State, h: &Held, dt: f64, method: Integrator) {
     // The stages' headings differ from the step's start by r dt at most: their sines and cosines
     // come from the start's by a small rotation (two libm calls a step instead of eight).
     let psi0 = x[HEADING];
     let heading = (psi0, libm::sin(psi0), libm::cos(psi0));
-    crate::numerics::rk4(x, 0.0, dt, |_, y, dx| plant.derivatives(y, h, heading, dx));
+    method.step(x, 0.0, dt, |_, y, dx| plant.derivatives(y, h, heading, dx));
 }
 
-/// The multi-rate step's fast part: one RK4 step of `dt` [s] of the drive train with the hull
-/// held and the propellers' inflow `va` [m/s] fixed (see [`Plant::drive_derivatives`]).
-pub fn rk4_drive_step(plant: &Plant, x: &mut State, h: &Held, va: f64, dt: f64) {
-    crate::numerics::rk4(x, 0.0, dt, |_, y, dx| plant.drive_derivatives(y, h, va, dx));
+/// The multi-rate step's fast part: one step of `dt` [s] of the drive train with the hull held
+/// and the propellers' inflow `va` [m/s] fixed (see [`Plant::drive_derivatives`]).
+pub fn drive_step(plant: &Plant, x: &mut State, h: &Held, va: f64, dt: f64, method: Integrator) {
+    method.step(x, 0.0, dt, |_, y, dx| plant.drive_derivatives(y, h, va, dx));
 }
 
-/// The multi-rate step's slow part: one RK4 step of `dt` [s] of the hull under the mean thrust
+/// The multi-rate step's slow part: one step of `dt` [s] of the hull under the mean thrust
 /// `thrust` [N] with the drive train held (see [`Plant::hull_derivatives`]).
-pub fn rk4_hull_step(plant: &Plant, x: &mut State, h: &Held, thrust: f64, dt: f64) {
+pub fn hull_step(plant: &Plant, x: &mut State, h: &Held, thrust: f64, dt: f64, method: Integrator) {
     let psi0 = x[HEADING];
     let heading = (psi0, libm::sin(psi0), libm::cos(psi0));
-    crate::numerics::rk4(x, 0.0, dt, |_, y, dx| plant.hull_derivatives(y, h, thrust, heading, dx));
+    method.step(x, 0.0, dt, |_, y, dx| plant.hull_derivatives(y, h, thrust, heading, dx));
 }
 
 /// sin and cos of `psi` [rad]; with `near` = (psi0, sin psi0, cos psi0) and |psi - psi0| below
