@@ -90,7 +90,7 @@ build_web() {
   wasm-pack build web --release --mode no-install --target web --no-typescript --out-dir ../www/pkg
   # npm's binaryen only: Debian's binaryen breaks current wasm-bindgen output (toolchain notes).
   if [ -x node_modules/.bin/wasm-opt ]; then
-    node_modules/.bin/wasm-opt -O3 --enable-bulk-memory --enable-nontrapping-float-to-int \
+    node_modules/.bin/wasm-opt -O3 --enable-simd --enable-bulk-memory --enable-nontrapping-float-to-int \
       --enable-sign-ext --enable-mutable-globals \
       www/pkg/aes_web_bg.wasm -o www/pkg/aes_web_bg.wasm
   fi

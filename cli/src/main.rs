@@ -1127,6 +1127,17 @@ fn check_figures(report: &str, sections: &[aes_core::validation::Section]) -> Re
 }
 
 fn main() -> ExitCode {
+    // .cargo/config.toml builds for AVX2: say so on a CPU without it rather than die of an
+    // illegal instruction somewhere in a run.
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+    if !std::is_x86_feature_detected!("avx2") {
+        let _ = writeln!(
+            std::io::stderr(),
+            "aes-sim: this build needs a CPU with AVX2 (x86_64 from about 2013 on); on an older one \
+             remove the rustflags of .cargo/config.toml and build again"
+        );
+        return ExitCode::FAILURE;
+    }
     match real_main() {
         Ok(()) | Err(Failure::PipeClosed) => ExitCode::SUCCESS,
         Err(Failure::Msg(e)) => {
