@@ -12,8 +12,9 @@
 # the preset as it is now. H0=6 times the preset as it was at dac040a.
 #
 # Two ratios: W1 as defined in issue 17 (2.5 ms RK4 steps in both), and the preset as shipped now
-# (5 ms midpoint steps since issue 17: as close to 1 ms RK4 steps as 2.5 ms RK4 steps were,
-# tests/multirate.rs).
+# (5 ms midpoint steps since issue 17: as close to 1 ms RK4 steps as RK4 at 5 ms,
+# tests/multirate.rs). The baseline builds in /tmp, outside this tree's .cargo/config.toml: it
+# runs as shipped then, without AVX2.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 base="${BASE:-dac040a}"

@@ -6,8 +6,8 @@ import { fileURLToPath } from 'node:url';
 import path from 'node:path';
 
 const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..');
-const { initSync, presetJson, Run } = await import(path.join(root, 'www/pkg/aes_web.js'));
-initSync({ module: readFileSync(path.join(root, 'www/pkg/aes_web_bg.wasm')) });
+const { initSync, presetJson, Run } = await import(path.join(process.env.PKG || path.join(root, 'www/pkg'), 'aes_web.js'));
+initSync({ module: readFileSync(path.join(process.env.PKG || path.join(root, 'www/pkg'), 'aes_web_bg.wasm')) });
 const name = process.argv[2] || 'startup';
 const scenario = presetJson(name);
 let best = Infinity;

@@ -1126,11 +1126,28 @@ fn check_figures(report: &str, sections: &[aes_core::validation::Section]) -> Re
     Ok(())
 }
 
+/// Whether the kernel's list of this CPU's features lacks AVX2 (false when it cannot be read). Not
+/// `is_x86_feature_detected!`: in a build for AVX2 that answers yes without asking the CPU.
+#[cfg(all(target_os = "linux", target_arch = "x86_64", target_feature = "avx2"))]
+#[inline(never)]
+fn cpu_lacks_avx2() -> bool {
+    std::fs::read_to_string("/proc/cpuinfo").is_ok_and(|info| flags_lack_avx2(&info))
+}
+
+/// Whether the first `flags` line of a /proc/cpuinfo text lacks the word avx2 (false without one).
+#[cfg_attr(not(all(target_os = "linux", target_arch = "x86_64", target_feature = "avx2")), allow(dead_code))]
+fn flags_lack_avx2(cpuinfo: &str) -> bool {
+    cpuinfo
+        .lines()
+        .find(|l| l.starts_with("flags"))
+        .is_some_and(|flags| !flags.split_whitespace().skip(2).any(|f| f == "avx2"))
+}
+
 fn main() -> ExitCode {
     // .cargo/config.toml builds for AVX2: say so on a CPU without it rather than die of an
     // illegal instruction somewhere in a run.
-    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
-    if !std::is_x86_feature_detected!("avx2") {
+    #[cfg(all(target_os = "linux", target_arch = "x86_64", target_feature = "avx2"))]
+    if cpu_lacks_avx2() {
         let _ = writeln!(
             std::io::stderr(),
             "aes-sim: this build needs a CPU with AVX2 (x86_64 from about 2013 on); on an older one \
@@ -1143,6 +1160,23 @@ fn main() -> ExitCode {
         Err(Failure::Msg(e)) => {
             let _ = writeln!(std::io::stderr(), "aes-sim: {e}");
             ExitCode::FAILURE
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// The AVX2 check reads the kernel's flags: a word, not a prefix (avx512f is not avx2).
+    #[test]
+    fn avx2_is_read_from_the_flags_line() {
+        let has = "processor\t: 0\nflags\t\t: fpu sse2 avx avx2 fma\nbugs\t\t: none\n";
+        let lacks = "processor\t: 0\nflags\t\t: fpu sse2 avx avx512f\n";
+        assert!(!super::flags_lack_avx2(has));
+        assert!(super::flags_lack_avx2(lacks));
+        assert!(!super::flags_lack_avx2("no flags here"));
+        // A test binary built for AVX2 runs only on a CPU with it: the real flags must say so.
+        if let (true, Ok(info)) = (cfg!(target_feature = "avx2"), std::fs::read_to_string("/proc/cpuinfo")) {
+            assert!(!super::flags_lack_avx2(&info));
         }
     }
 }

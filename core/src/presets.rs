@@ -365,8 +365,9 @@ pub fn mc_wigley() -> Scenario {
 /// The runs in waves step at 5 ms, the controllers' sample period, by the midpoint rule: in head
 /// seas SS6 the traces agree with 1 ms RK4 steps to 0.035 rpm, 0.15 % of the peak motor power
 /// and 0.004 pu of bus voltage, as close as RK4 at 5 ms (0.035 rpm, 0.12 %, 0.0035 pu): the sea's
-/// inputs held over a step, not the method, set the error there. A trial costs about 0.45 of
-/// one by RK4 at 2.5 ms (tests/multirate.rs, `wave_presets_step_of_5_ms_matches_1_ms`; issue 17).
+/// inputs held over a step, not the method, set the error there. A trial costs 0.48 of one by
+/// RK4 at 2.5 ms (scripts/bench-vs-baseline.sh; accuracy: tests/multirate.rs,
+/// `wave_presets_step_of_5_ms_matches_1_ms`; issue 17).
 fn sea_step(s: &mut Scenario) {
     s.sim.dt_s = 0.005;
     s.sim.integrator = crate::numerics::Integrator::Midpoint;

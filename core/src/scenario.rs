@@ -178,26 +178,24 @@ pub struct SimSettings {
     /// the plant a step instead of four; the presets in waves, where holding the sea's inputs
     /// over a step costs more accuracy than the method: tests/multirate.rs). The midpoint rule
     /// is stable for the DC link at steps up to 2 time constants (RK4: 2.8).
-    #[serde(skip_serializing_if = "is_rk4")]
     pub integrator: Integrator,
     /// Interval between recorded trace rows [s]. Must be a whole number of time steps.
     pub record_interval_s: f64,
     /// Seed of every random number in the run (the calm-water drive train uses none).
     pub seed: u64,
-    /// Multi-rate stepping: the hull (surge, sway, yaw, position, heading) takes one RK4 step of
-    /// this many `dt_s` under the drive train's mean thrust over them, while the drive train
-    /// takes its `dt_s` steps with the hull held. 1 (the default): one RK4 step of the whole
-    /// plant every `dt_s`. `record_interval_s` must be a whole number of hull steps.
+    /// Multi-rate stepping: the hull (surge, sway, yaw, position, heading) takes one step of
+    /// this many `dt_s` (by `integrator`) under the drive train's mean thrust over them, while the
+    /// drive train takes its `dt_s` steps with the hull held. 1 (the default): one step of the
+    /// whole plant every `dt_s`. `record_interval_s` must be a whole number of hull steps.
     #[serde(skip_serializing_if = "is_one")]
     pub hull_substeps: u32,
 }
 
+/// Longest step with `sim.integrator = midpoint` [s] (see `SimSettings::validate`).
+pub const MIDPOINT_MAX_DT_S: f64 = 0.008;
+
 fn is_one(n: &u32) -> bool {
     *n == 1
-}
-
-fn is_rk4(m: &Integrator) -> bool {
-    *m == Integrator::Rk4
 }
 
 impl Default for Scenario {
@@ -328,6 +326,18 @@ impl SimSettings {
                 "record_interval_s",
                 self.record_interval_s,
                 format!("must be a whole number (1 or more) of sim.dt_s = {}", self.dt_s),
+            );
+        }
+        // The midpoint rule's stability bound: 2 time constants of the DC link (4.25 ms at the
+        // least, at 3 kn), 8.5 ms; RK4's 2.8, 11.8 ms, lies beyond the range above.
+        if self.integrator == Integrator::Midpoint && self.dt_s > MIDPOINT_MAX_DT_S {
+            v.fail(
+                "dt_s",
+                self.dt_s,
+                format!(
+                    "must be at most {MIDPOINT_MAX_DT_S} s with sim.integrator = midpoint (stable for the DC link's \
+                     4.25 ms time constant up to 2 of them; rk4 allows up to 0.01 s)"
+                ),
             );
         }
         if !(1..=100).contains(&self.hull_substeps) {
@@ -541,11 +551,10 @@ impl Scenario {
         if !moved.is_empty() {
             return Err(ScenarioError(moved));
         }
-        // Kept to quote the offending value in an error (serde names only the path).
-        let original = value.clone();
-        let sc: Scenario = serde_path_to_error::deserialize(value).map_err(|e| {
+        // From a borrow, so that an error can quote the offending value (serde names only the path).
+        let sc: Scenario = serde_path_to_error::deserialize(&value).map_err(|e| {
             let path = e.path().to_string();
-            let found = value_at(&original, e.path()).map(|v| crate::validate::shorten(&v.to_string()));
+            let found = value_at(&value, e.path()).map(|v| crate::validate::shorten(&v.to_string()));
             ScenarioError(vec![FieldError {
                 path: if path == "." { "(top level)".into() } else { crate::validate::shorten(&path) },
                 value: found.unwrap_or_default(),
@@ -615,7 +624,9 @@ fn value_at<'a>(root: &'a serde_json::Value, path: &serde_path_to_error::Path) -
     path.iter().try_fold(root, |node, segment| match segment {
         Segment::Map { key } => node.get(key.as_str()),
         Segment::Seq { index } => node.get(*index),
-        Segment::Enum { .. } | Segment::Unknown => Some(node),
+        // An enum's variant given as a map key ({"midpoint": ...}): the value under it.
+        Segment::Enum { variant } => node.get(variant.as_str()).or(Some(node)),
+        Segment::Unknown => None,
     })
 }
 
@@ -770,6 +781,8 @@ mod tests {
         let e = Scenario::from_json(r#"{"sim": {"integrator": "euler"}}"#).unwrap_err();
         assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("sim.integrator", "\"euler\""));
         assert!(e.0[0].message.contains("`rk4` or `midpoint`"), "{}", e.0[0].message);
+        let e = Scenario::from_json(r#"{"sim": {"integrator": {"midpoint": 5}}}"#).unwrap_err();
+        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("sim.integrator.midpoint", "5"));
         let e = Scenario::from_json(r#"{"commands": [{"t_s": 0}, {"t_s": 5, "speed_kn": [1]}]}"#).unwrap_err();
         assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("commands[1].speed_kn", "[1]"));
     }
@@ -786,6 +799,25 @@ mod tests {
         let m = e.0.iter().find(|f| f.path == "ship.wetted_area_m2").unwrap();
         assert_eq!(m.value, "-5");
         assert!(m.message.contains("from 1 to 100000"), "{}", m.message);
+    }
+
+    /// The midpoint rule is refused a step beyond its stability bound for the DC link; RK4 keeps
+    /// the range up to 0.01 s.
+    #[test]
+    fn midpoint_step_is_bounded() {
+        let mut s = Scenario::default();
+        s.sim.integrator = Integrator::Midpoint;
+        s.sim.dt_s = 0.01;
+        s.sim.record_interval_s = 0.1;
+        let e = s.validate().unwrap_err();
+        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("sim.dt_s", "0.01"), "{e}");
+        assert!(e.0[0].message.contains("at most 0.008 s with sim.integrator = midpoint"), "{e}");
+        s.sim.dt_s = 0.005;
+        s.validate().unwrap();
+        s.sim.integrator = Integrator::Rk4;
+        s.sim.dt_s = 0.01;
+        s.controllers.sample_period_s = 0.01;
+        s.validate().unwrap();
     }
 
     #[test]

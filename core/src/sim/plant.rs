@@ -1,8 +1,8 @@
 //! The coupled drive train: two independent shafts, each with two turbine-generator sets, one DC
 //! bus, one motor and one propeller, pushing one hull (thesis Fig. 2-1, split plant).
 //!
-//! The continuous state is a flat array advanced by RK4; the layout constants below name every
-//! slot. Energy accumulators ride along in the same array so that the energy books are integrated
+//! The continuous state is a flat array advanced by a fixed-step Runge-Kutta method (RK4, or the
+//! midpoint rule in waves: `sim.integrator`); the layout constants below name every slot. Energy accumulators ride along in the same array so that the energy books are integrated
 //! with exactly the same scheme as the states they describe.
 
 use crate::dc_link::{DcLink, RectifierFlow};
