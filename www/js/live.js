@@ -28,6 +28,9 @@ const pct = (x) => (Number.isFinite(x) ? `${(100 * x).toFixed(1)} %` : '–');
 // What a stage keeps of the power through it: out/in flowing forward, in/out flowing back (a
 // braking motor passes the shaft's power to the bus); none while the flow turns round.
 const keeps = (out, into) => (into > 0 && out >= 0 ? `keeps ${pct(out / into)}` : into < 0 && out < 0 ? `keeps ${pct(into / out)}` : 'flow turning');
+// The ship's share: above 100 % only while the ship slows (resistance above thrust; no propeller
+// turns as much as 90 % of its shaft power into thrust power), its momentum then paying the rest.
+const shipShare = (out, into) => (into > 0 && out > into ? `${pct(out / into)} while slowing` : keeps(out, into));
 // The hub's place against the local surface (eq. 2.57 as printed can put it above).
 const hubText = (hub) => (hub >= 0 ? `hub ${hub.toFixed(2)} m below the surface` : `hub ${(-hub).toFixed(2)} m above the surface`);
 const signed = (x, d = 2) => `${x >= 0 ? '+' : '−'}${Math.abs(x).toFixed(d)}`;
@@ -132,7 +135,7 @@ export class LiveViews {
     this.k = constants;
     this.from = scenario.sea.kind === 'calm' ? null : scenario.sea.from_deg;
     const w = constants.warnings;
-    this.note.textContent = `Both plants draw the trace's figures (it records sums and means over machines; the shafts' speeds are each shaft's own). Block outlines turn red with a word when a limit is reached: turbine overspeed above ${w.turbine_overspeed_pu} pu, bus voltage outside ${w.bus_voltage_low_pu} to ${w.bus_voltage_high_pu} pu, motor at its ${w.motor_power_limit_pu} pu rating, brake resistor on. What a block keeps is its stage's share in Table 5.7's chain: an inverter's is the whole power electronics (rectifier, stator resistance, notching, inverter). Arrow width follows the power; dashes move with it${reducedMotion.matches ? ' (held still: your system asks for reduced motion)' : ''}.`;
+    this.note.textContent = `Both plants draw the trace's figures (it records sums and means over machines; the shafts' speeds are each shaft's own). Block outlines turn red with a word when a limit is reached: turbine overspeed above ${w.turbine_overspeed_pu} pu, bus voltage outside ${w.bus_voltage_low_pu} to ${w.bus_voltage_high_pu} pu, motor at its ${w.motor_power_limit_pu} pu rating, brake resistor on. What a block keeps is its stage's share in Table 5.7's chain: an inverter's is the whole power electronics (rectifier, stator resistance, notching, inverter); the ship's passes 100 % only while it slows, its momentum adding to the propellers' work. Arrow width follows the power; dashes move with it${reducedMotion.matches ? ' (held still: your system asks for reduced motion)' : ''}.`;
     await loadWasm();
     if (this.sea) this.sea.free();
     this.sea = new Sea(text);
@@ -389,7 +392,7 @@ export class LiveViews {
       box(4, plantLn(p), wide, [`Motor ${p + 1}`, mw(pM), `${imPu.toFixed(2)} pu`, keeps(v('p_motor_w'), v('p_inverter_w'))], warn.motor);
       box(5, plantLn(p), wide, [`${short ? 'Prop.' : 'Propeller'} ${p + 1}`, `${v(`prop_rpm_${p + 1}`).toFixed(0)} rpm`, `β_T ${v('beta_t').toFixed(2)}`], null);
     }
-    box(6, 2, Math.min(across * 0.5, 4 * bl), ['Ship', `${v('ship_speed_kn').toFixed(1)} kn`, `useful ${mw(pS)}`, ...(down ? [] : [`thrust ${(v('thrust_kn') / 1e3).toFixed(2)} MN`]), keeps(v('p_ship_w'), v('p_motor_w'))], null);
+    box(6, 2, Math.min(across * 0.5, 4 * bl), ['Ship', `${v('ship_speed_kn').toFixed(1)} kn`, `useful ${mw(pS)}`, ...(down ? [] : [`thrust ${(v('thrust_kn') / 1e3).toFixed(2)} MN`]), shipShare(v('p_ship_w'), v('p_motor_w'))], null);
   }
 
   // Largest vertical excursion of the stern over the run [m]: |heave| + x_p |pitch| (and, in
