@@ -30,7 +30,7 @@ const pct = (x) => (Number.isFinite(x) ? `${(100 * x).toFixed(1)} %` : '–');
 const keeps = (out, into) => (into > 0 && out >= 0 ? `keeps ${pct(out / into)}` : into < 0 && out < 0 ? `keeps ${pct(into / out)}` : 'flow turning');
 // The ship's share: above 100 % only while the ship slows (resistance above thrust; no propeller
 // turns as much as 90 % of its shaft power into thrust power), its momentum then paying the rest.
-const shipShare = (out, into) => (into > 0 && out > into ? `${pct(out / into)} while slowing` : keeps(out, into));
+const shipShare = (out, into) => (into > 0 && out > into ? `slows: ${pct(out / into)}` : keeps(out, into));
 // The hub's place against the local surface (eq. 2.57 as printed can put it above).
 const hubText = (hub) => (hub >= 0 ? `hub ${hub.toFixed(2)} m below the surface` : `hub ${(-hub).toFixed(2)} m above the surface`);
 const signed = (x, d = 2) => `${x >= 0 ? '+' : '−'}${Math.abs(x).toFixed(d)}`;
