@@ -496,9 +496,11 @@ export class LiveViews {
       [`heave ${signed(heave)} m, pitch ${signed(v('pitch_deg'), 1)}° bow down`, false]];
     const fs = Math.max(11, Math.min(this.big ? 20 : 15, Math.round(w / 45)));
     g.font = `${fs}px system-ui, sans-serif`; g.textAlign = 'left'; g.textBaseline = 'top';
-    const tw = Math.max(...lines.map(([t]) => g.measureText(t).width)) + 10;
+    // Each line measured in its own font (a loud one is bold, so wider).
+    const font = (loud) => `${loud ? '700 ' : ''}${fs}px system-ui, sans-serif`;
+    const tw = Math.max(...lines.map(([t, loud]) => { g.font = font(loud); return g.measureText(t).width; })) + 10;
     g.fillStyle = 'rgba(255, 255, 255, 0.88)'; g.fillRect(4, 4, tw, lines.length * (fs + 3) + 6);
-    lines.forEach(([t, loud], j) => { g.font = `${loud ? '700 ' : ''}${fs}px system-ui, sans-serif`; g.fillStyle = loud ? C.discOut : C.text; g.fillText(t, 9, 7 + j * (fs + 3)); });
+    lines.forEach(([t, loud], j) => { g.font = font(loud); g.fillStyle = loud ? C.discOut : C.text; g.fillText(t, 9, 7 + j * (fs + 3)); });
     // Scale and direction.
     g.fillStyle = C.text; g.strokeStyle = C.text; g.lineWidth = 2; g.textBaseline = 'bottom';
     const bar = 10 * s; g.beginPath(); g.moveTo(w - bar - 10, h - 8); g.lineTo(w - 10, h - 8); g.stroke();

@@ -63,6 +63,8 @@ export class RequestError extends Error {
 // The page's end of one worker: promise-based requests with progress callbacks.
 export class WorkerClient {
   constructor({ onReady = () => {}, onFailure = () => {} } = {}) {
+    // Replaceable: a pooled worker reports to its present user.
+    this.onFailure = onFailure;
     this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
     this.pending = new Map();
     this.nextId = 0;
@@ -71,7 +73,7 @@ export class WorkerClient {
     this.worker.onmessage = (ev) => {
       const m = ev.data;
       if (m.type === 'ready') { this.settleReady.resolve(m); onReady(m); return; }
-      if (m.id == null) { this.settleReady.reject(new RequestError(m.error)); onFailure(m.error); return; }
+      if (m.id == null) { this.settleReady.reject(new RequestError(m.error)); this.onFailure(m.error); return; }
       const p = this.pending.get(m.id);
       if (!p) return;
       if (m.type === 'progress') { p.onProgress(m); return; }
@@ -83,7 +85,7 @@ export class WorkerClient {
       const error = { message: messageOf(e) };
       this.settleReady.reject(new RequestError(error));
       this.failAll(error);
-      onFailure(error);
+      this.onFailure(error);
     };
   }
 
