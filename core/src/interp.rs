@@ -3,9 +3,10 @@
 //! turbine part-load curve, a station's half-breadths).
 
 /// The segment of increasing `grid` holding `x` and the fraction along it: `(j, f)` with
-/// x = grid[j] + f (grid[j+1] - grid[j]); held at the ends (f = 0 below, (n-2, 1) above).
+/// x = grid[j] + f (grid[j+1] - grid[j]); held at the ends (f = 0 below, (n-2, 1) above); a NaN
+/// `x` gives the first point.
 pub fn bracket(grid: &[f64], x: f64) -> (usize, f64) {
-    if grid.len() < 2 || x <= grid[0] {
+    if grid.len() < 2 || x.is_nan() || x <= grid[0] {
         return (0, 0.0);
     }
     let n = grid.len();
@@ -20,7 +21,7 @@ pub fn bracket(grid: &[f64], x: f64) -> (usize, f64) {
 /// `(j, f)` in a step or two when `x` moves little between calls (the seaway's headings).
 pub fn bracket_from(grid: &[f64], x: f64, guess: usize) -> (usize, f64) {
     let n = grid.len();
-    if n < 2 || x <= grid[0] {
+    if n < 2 || x.is_nan() || x <= grid[0] {
         return (0, 0.0);
     }
     if x >= grid[n - 1] {

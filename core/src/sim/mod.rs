@@ -620,7 +620,13 @@ impl Simulation {
         let x: &State = &now;
         let Some(sea) = self.sea.as_mut() else { return };
         if self.step % self.refresh_every == 0 {
-            sea.refresh(speed_through_water(x), x[HEADING]);
+            let k = &self.scenario.seakeeping;
+            sea.refresh_if_moved(
+                speed_through_water(x),
+                x[HEADING],
+                k.rao_refresh_speed_m_s,
+                k.rao_refresh_heading_deg.to_radians(),
+            );
         }
         if self.step % self.sea_every == 0 {
             let (sp, cp) = (libm::sin(x[HEADING]), libm::cos(x[HEADING]));
@@ -714,6 +720,11 @@ impl Simulation {
             }
         }
         Ok(())
+    }
+
+    /// The seaway (None in calm water).
+    pub fn seaway(&self) -> Option<&seaway::Seaway> {
+        self.sea.as_ref()
     }
 
     /// The trace recorded so far (also after a failed step: what led up to the failure).

@@ -220,6 +220,10 @@ pub struct Seaway {
     hub_c: [Vec<f64>; N_SHAFTS],
     hub_s: [Vec<f64>; N_SHAFTS],
     refreshes_since_sync: u32,
+    /// Speed [m/s] and heading [rad] of the last look-up (None before the first), and the
+    /// look-ups so far.
+    looked_up_at: Option<(f64, f64)>,
+    look_ups: u64,
     /// Phasor (cos theta, sin theta) of every component at the last sample, the time and place
     /// of that sample, and the samples since the last exact one; the components' encounter
     /// frequencies at the present sample (scratch) [rad/s].
@@ -386,6 +390,8 @@ impl Seaway {
             hub_c: std::array::from_fn(|_| vec![1.0; np]),
             hub_s: std::array::from_fn(|_| vec![0.0; np]),
             refreshes_since_sync: RESYNC_SAMPLES,
+            looked_up_at: None,
+            look_ups: 0,
             cs: vec![1.0; np],
             sn: vec![0.0; np],
             rate: vec![0.0; np],
@@ -396,9 +402,28 @@ impl Seaway {
         }))
     }
 
+    /// RAO look-ups so far (`refresh` calls).
+    pub fn look_ups(&self) -> u64 {
+        self.look_ups
+    }
+
     /// The wave components (for analysis and tests).
     pub fn components(&self) -> Vec<WaveComponent> {
         self.waves.clone()
+    }
+
+    /// Looks the RAOs up again at speed `u` [m/s] and heading `psi` [rad] unless both are within
+    /// `du` [m/s] and `dpsi` [rad] of the last look-up's (`seakeeping.rao_refresh_speed_m_s`,
+    /// `rao_refresh_heading_deg`); the first call always looks up, and so does a non-finite
+    /// input. Returns whether it looked up.
+    pub fn refresh_if_moved(&mut self, u: f64, psi: f64, du: f64, dpsi: f64) -> bool {
+        if let Some((u0, psi0)) = self.looked_up_at {
+            if (u - u0).abs() < du && (psi - psi0).abs() < dpsi {
+                return false;
+            }
+        }
+        self.refresh(u, psi);
+        true
     }
 
     /// Looks the RAOs up again at speed `u` [m/s] and heading `psi` [rad].
@@ -409,6 +434,8 @@ impl Seaway {
     // The lane loops index several arrays by the lane: written as indices so that they vectorise.
     #[allow(clippy::needless_range_loop)]
     pub fn refresh(&mut self, u: f64, psi: f64) {
+        self.looked_up_at = Some((u, psi));
+        self.look_ups += 1;
         let (j0, fj) = bracket(&self.rao.speeds, u);
         // cos and sin of beta = psi - mu by the difference formulas: two libm calls per refresh
         // instead of three per component.
@@ -830,5 +857,22 @@ mod tests {
         println!("encounter frequency: corrected {:.4}, as printed {:.4} rad/s", got[0], got[1]);
         assert!((got[0] / (0.6 + k * u) - 1.0).abs() < 0.01, "{got:?}");
         assert!((got[1] / (0.6 + 2.0 * k * u) - 1.0).abs() < 0.01, "{got:?}");
+    }
+
+    /// `refresh_if_moved`: the first call looks up; then only a move of at least the tolerance in
+    /// speed or heading (or a non-finite input) does, and zero tolerances look up every time.
+    #[test]
+    fn look_up_only_when_moved() {
+        let mut sea = Seaway::new(&random_ss6(3, 8)).unwrap().unwrap();
+        let (du, dpsi) = (0.02, 0.01f64.to_radians());
+        assert!(sea.refresh_if_moved(12.0, 0.0, du, dpsi));
+        assert!(!sea.refresh_if_moved(12.019, 0.0, du, dpsi));
+        assert!(!sea.refresh_if_moved(11.981, 0.9 * dpsi, du, dpsi));
+        assert!(sea.refresh_if_moved(12.03, 0.0, du, dpsi));
+        assert!(sea.refresh_if_moved(12.03, -dpsi, du, dpsi));
+        assert!(sea.refresh_if_moved(f64::NAN, -dpsi, du, dpsi));
+        assert!(sea.refresh_if_moved(12.0, 0.0, du, dpsi));
+        assert!(sea.refresh_if_moved(12.0, 0.0, 0.0, 0.0));
+        assert_eq!(sea.look_ups(), 6);
     }
 }
