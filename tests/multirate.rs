@@ -236,17 +236,24 @@ fn hull_substeps_validated() {
 }
 
 /// The RAO look-up skipped while speed and heading stay within `seakeeping.rao_refresh_speed_m_s`
-/// and `rao_refresh_heading_deg` of the last one (0.02 m/s, 0.01 deg), in head seas (W1, the ship
-/// slowing 1 m/s) and in a quarter turn in SS6, against a look-up every 0.25 s (`rao_refresh_s`).
-/// Yardstick: what that interval itself costs, against a look-up at every sample (0.05 s).
-/// Measured (W1 / quarter turn), skipping: 110 of 320 / 1081 of 1200 look-ups, rpm max 0.017 /
-/// 0.0038 (mean 1.8e-3 / 4.6e-4), motor power 1.1e-3 / 1.2e-4 of peak, h/R 1.9e-3 / 3.1e-3, bus
-/// 2.7e-3 / 7e-6 pu, ship speed 7.4e-4 / 6.1e-4 kn; the interval's own: rpm max 0.075 / 0.018,
-/// motor power 3.3e-3 / 7.5e-4 of peak, h/R 1.7e-3 / 1.3e-2, bus 3.7e-3 / 5e-5 pu, ship speed
-/// 1.0e-3 / 2.9e-3 kn. (With 0.1 deg the quarter turn moved by 0.18 rpm and 0.045 kn.)
+/// and `rao_refresh_heading_deg` of the last one (0.02 m/s, 0.01 deg), in head seas (the preset at
+/// its 5 ms steps, the ship slowing 1 m/s) and in a quarter turn in SS6, against a look-up every
+/// 0.25 s (`rao_refresh_s`). Yardstick: what that interval itself costs, against a look-up at
+/// every sample (0.05 s). Measured (head seas / quarter turn), skipping: 110 of 320 / 1081 of 1200
+/// look-ups, rpm max 0.017 / 0.0038 (mean 1.8e-3 / 4.6e-4), motor power 1.1e-3 / 1.2e-4 of peak,
+/// h/R 1.9e-3 / 3.1e-3, bus 2.7e-3 / 7e-6 pu, ship speed 7.4e-4 / 6.1e-4 kn; the interval's own:
+/// rpm max 0.075 / 0.018, motor power 3.3e-3 / 7.5e-4 of peak, h/R 1.7e-3 / 1.3e-2, bus 3.7e-3 /
+/// 5e-5 pu, ship speed 1.0e-3 / 2.9e-3 kn. (With 0.1 deg the quarter turn moved by 0.18 rpm and
+/// 0.045 kn.) The as-printed run (eqs. 2.55/2.59's doubled Doppler shift) never skips: the same
+/// bits as every look-up.
 #[test]
 fn skipped_rao_look_ups_change_little() {
     use aes_core::sim::Simulation;
+    let printed = preset("as-printed").unwrap();
+    assert!(printed.as_printed.doppler_twice);
+    let mut every = printed.clone();
+    every.seakeeping.rao_refresh_speed_m_s = 0.0;
+    assert_eq!(run(&printed).trace, run(&every).trace, "as printed: a look-up skipped");
     for name in ["head-seas-ss6", "quarter-turn-ss6"] {
         let shipped = preset(name).unwrap();
         let mut every = shipped.clone();

@@ -72,6 +72,9 @@ mod tests {
         }
         assert_eq!(bracket(&g, -1.0), (0, 0.0));
         assert_eq!(bracket(&g, 9.0), (2, 1.0));
+        // A NaN takes the first point (it used to underflow the index).
+        assert_eq!(bracket(&g, f64::NAN), (0, 0.0));
+        assert_eq!(bracket_from(&g, f64::NAN, 2), (0, 0.0));
         for x in (0..=90).map(|i| -0.5 + 0.09 * i as f64).chain(g) {
             for guess in 0..5 {
                 assert_eq!(bracket_from(&g, x, guess), bracket(&g, x), "{x} from {guess}");

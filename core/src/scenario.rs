@@ -792,10 +792,14 @@ mod tests {
         let mut s = Scenario::default();
         s.ship.wetted_area_m2 = -5.0;
         s.sim.dt_s = f64::NAN;
+        s.seakeeping.rao_refresh_speed_m_s = -0.1;
+        s.seakeeping.rao_refresh_heading_deg = f64::NAN;
         let e = s.validate().unwrap_err();
         let paths: Vec<_> = e.0.iter().map(|f| f.path.as_str()).collect();
         assert!(paths.contains(&"ship.wetted_area_m2"));
         assert!(paths.contains(&"sim.dt_s"));
+        assert!(paths.contains(&"seakeeping.rao_refresh_speed_m_s"), "{paths:?}");
+        assert!(paths.contains(&"seakeeping.rao_refresh_heading_deg"), "{paths:?}");
         let m = e.0.iter().find(|f| f.path == "ship.wetted_area_m2").unwrap();
         assert_eq!(m.value, "-5");
         assert!(m.message.contains("from 1 to 100000"), "{}", m.message);

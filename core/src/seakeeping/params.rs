@@ -29,14 +29,17 @@ pub struct SeakeepingParams {
     /// speed and heading, ch. 2.5.4) [s].
     pub sample_period_s: f64,
     pub rao_refresh_s: f64,
-    /// A due look-up is skipped while the ship's speed through the water [m/s] and its heading
-    /// [deg] are both within these of the last look-up's: it would give nearly the same values
-    /// (the table's grid steps are 3.6 m/s and 15 deg). Chosen by measurement (tests/multirate.rs,
-    /// `skipped_rao_look_ups_change_little`): with 0.02 m/s and 0.01 deg a run moves less than
-    /// the 0.25 s look-up interval itself moves it (against a look-up at every sample); 0.1 deg
-    /// moved a quarter turn in SS6 by 0.18 rpm, ten times more. 0 and 0 look up every
-    /// `rao_refresh_s`. Head seas at 25 kn: 110 of 320 look-ups (issue 17).
+    /// A due look-up is skipped while the ship's speed through the water and its heading are
+    /// both within these of the last look-up's: it would give nearly the same values (the
+    /// table's grid steps are 3.6 m/s and 15 deg). Chosen by measurement (tests/multirate.rs,
+    /// `skipped_rao_look_ups_change_little`): with 0.02 m/s and 0.01 deg the propeller speed
+    /// moves less than the 0.25 s look-up interval itself moves it (against a look-up at every
+    /// sample), and the other traces about as much; 0.1 deg moved a quarter turn in SS6 by 0.18
+    /// rpm, ten times more. Either at 0 looks up every `rao_refresh_s`, and so does eqs.
+    /// 2.55/2.59 as printed (`as_printed.doppler_twice`), whose extra phase would drift with a
+    /// stale speed. Head seas at 25 kn: 110 of 320 look-ups (issue 17). Speed [m/s].
     pub rao_refresh_speed_m_s: f64,
+    /// Heading [deg] (see `rao_refresh_speed_m_s`).
     pub rao_refresh_heading_deg: f64,
     /// Second-order slowly varying forces in the maneuvering equations (eq. 2.60).
     pub second_order_forces: bool,
@@ -160,7 +163,7 @@ impl SeakeepingParams {
         check_range!(v, self.sample_period_s, dt_s, 0.5);
         check_range!(v, self.rao_refresh_s, self.sample_period_s, 10.0);
         check_range!(v, self.rao_refresh_speed_m_s, 0.0, 1.0);
-        check_range!(v, self.rao_refresh_heading_deg, 0.0, 5.0);
+        check_range!(v, self.rao_refresh_heading_deg, 0.0, 1.0);
         check_range!(v, self.turbine_rated_efficiency, 0.05, 0.8);
     }
 }

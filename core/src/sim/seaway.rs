@@ -415,9 +415,11 @@ impl Seaway {
     /// Looks the RAOs up again at speed `u` [m/s] and heading `psi` [rad] unless both are within
     /// `du` [m/s] and `dpsi` [rad] of the last look-up's (`seakeeping.rao_refresh_speed_m_s`,
     /// `rao_refresh_heading_deg`); the first call always looks up, and so does a non-finite
-    /// input. Returns whether it looked up.
+    /// input, and every call with eqs. 2.55/2.59 as printed (their extra phase, the encounter
+    /// frequency's excess over the look-up's speed, would drift for as long as it is skipped).
+    /// Returns whether it looked up.
     pub fn refresh_if_moved(&mut self, u: f64, psi: f64, du: f64, dpsi: f64) -> bool {
-        if let Some((u0, psi0)) = self.looked_up_at {
+        if let (Some((u0, psi0)), false) = (self.looked_up_at, self.doppler_twice) {
             if (u - u0).abs() < du && (psi - psi0).abs() < dpsi {
                 return false;
             }
