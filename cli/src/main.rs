@@ -916,16 +916,37 @@ fn real_main() -> Result<(), Failure> {
         Cmd::Bench { name, repeat, sets, .. } => {
             let sc = load(&format!("preset:{name}"), &sets)?;
             let mut best = f64::INFINITY;
+            let mut setup_s = f64::INFINITY;
             let mut steps = 0;
             for _ in 0..repeat.max(1) {
                 let t0 = Instant::now();
                 let mut sim = Simulation::new(&sc).map_err(|e| e.to_string())?;
+                setup_s = setup_s.min(t0.elapsed().as_secs_f64());
                 sim.advance(u64::MAX).map_err(|e| e.to_string())?;
                 let r = sim.finish();
                 best = best.min(t0.elapsed().as_secs_f64());
                 steps = r.summary.steps;
             }
             let sim_s = sc.sim.duration_s;
+            // The step's parts on their own, from the run's state half way (best of the
+            // repetitions): what the full model costs beyond the wave sums.
+            let mut parts: Option<aes_core::sim::StepParts> = None;
+            {
+                let mut sim = Simulation::new(&sc).map_err(|e| e.to_string())?;
+                sim.advance(steps / 2).map_err(|e| e.to_string())?;
+                let t0 = Instant::now();
+                let clock = || t0.elapsed().as_secs_f64();
+                for _ in 0..repeat.max(1) {
+                    let p = sim.time_step_parts(steps, &clock);
+                    parts = Some(match parts {
+                        None => p,
+                        Some(b) => aes_core::sim::StepParts {
+                            plant_s: b.plant_s.min(p.plant_s),
+                            controllers_s: b.controllers_s.min(p.controllers_s),
+                        },
+                    });
+                }
+            }
             // The irreducible part in waves: the bare superposition of the wave components (one sum
             // per sample period, as the run does it).
             let mut wave_sums_s = None;
@@ -944,7 +965,22 @@ fn real_main() -> Result<(), Failure> {
                     wave_sums_s = Some(wave_sums_s.map_or(s, |b: f64| b.min(s)));
                 }
             }
+            let parts = parts.map(|p| {
+                serde_json::json!({
+                    "plant_steps_s": p.plant_s,
+                    "controller_samples_s": p.controllers_s,
+                    // Issue 17's target 2 asks for the whole trial within 2x of the sums: these two
+                    // alone, at the controllers' sample, are the floor of that ratio's excess.
+                    "plant_and_controllers_over_wave_sums": wave_sums_s.map(|w| (p.plant_s + p.controllers_s) / w),
+                    // Simulation::new: the plant, the steady state and the seaway (its components
+                    // sampled; the RAO table is built once per process and not counted).
+                    "setup_s": setup_s,
+                    // The RAO look-ups, the propellers' ventilation, the checks, the recorded rows.
+                    "rest_s": best - setup_s - p.plant_s - p.controllers_s - wave_sums_s.unwrap_or(0.0),
+                })
+            });
             let out = serde_json::json!({
+                "parts": parts,
                 "wave_sums_s": wave_sums_s,
                 // Issue 17's measure: the full model's time over the bare wave kernel's, same steps.
                 "full_over_wave_sums": wave_sums_s.map(|w| best / w),

@@ -722,6 +722,37 @@ impl Simulation {
         Ok(())
     }
 
+    /// Where a step's time goes, for `aes-sim bench`: `n` plant steps, each from the present
+    /// state with the present held inputs (the result dropped), and `n` samples of the
+    /// controllers at the present state (each from the controllers as they are now), each batch timed
+    /// by `clock` [s] (core keeps no clock: the browser's wasm has none).
+    pub fn time_step_parts(&self, n: u64, clock: &dyn Fn() -> f64) -> StepParts {
+        let t0 = clock();
+        for _ in 0..n {
+            let mut y = std::hint::black_box(self.x);
+            plant_step(&self.plant, &mut y, &self.ctl.held, self.dt, self.method);
+            std::hint::black_box(&y);
+        }
+        let plant_s = clock() - t0;
+        // Sampled again and again at one plant state, the integrators would wind up and the
+        // slip would reach its limit: each sample starts from the controllers as they are now,
+        // and the time of that reset alone is taken off.
+        let mut copy = self.clone();
+        let t0 = clock();
+        for _ in 0..n {
+            copy.ctl.clone_from(std::hint::black_box(&self.ctl));
+            std::hint::black_box(&copy.ctl.held);
+        }
+        let reset_s = clock() - t0;
+        let t0 = clock();
+        for _ in 0..n {
+            copy.ctl.clone_from(std::hint::black_box(&self.ctl));
+            copy.control();
+            std::hint::black_box(&copy.ctl.held);
+        }
+        StepParts { plant_s, controllers_s: (clock() - t0 - reset_s).max(0.0) }
+    }
+
     /// The seaway (None in calm water).
     pub fn seaway(&self) -> Option<&seaway::Seaway> {
         self.sea.as_ref()
@@ -788,6 +819,16 @@ impl Simulation {
         );
         RunResult { trace: self.trace, summary }
     }
+}
+
+/// The time of `n` plant steps and of `n` controller samples ([`Simulation::time_step_parts`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepParts {
+    /// The plant's steps (every evaluation of the integrator's stages) [s].
+    pub plant_s: f64,
+    /// The controllers' samples (governors, fields, slips with their limits, speed loop,
+    /// autopilot) [s].
+    pub controllers_s: f64,
 }
 
 /// A scenario's run built up to its start without its sea (the plant, the calm-water speed map,
