@@ -690,19 +690,29 @@ impl Simulation {
 
     /// Advances by at most `max_steps` time steps (stopping at the end of the run).
     pub fn advance(&mut self, max_steps: u64) -> Result<(), SimError> {
+        self.advance_probed(max_steps, &mut NoProbe)
+    }
+
+    /// The same, telling `probe` where each part of every step ends (`aes-sim bench`'s account
+    /// of where a run's time goes); the run is the same, bit for bit.
+    #[inline(always)]
+    pub fn advance_probed(&mut self, max_steps: u64, probe: &mut impl StepProbe) -> Result<(), SimError> {
         let end = (self.step + max_steps).min(self.total_steps);
         while self.step < end {
             if self.step % self.ctl_every == 0 {
                 self.control();
             }
+            probe.done(StepPart::Controllers);
             if self.sea.is_some() && self.step > 0 {
                 self.sea_step();
             }
+            probe.done(StepPart::Sea);
             if self.multi.substeps == 1 {
                 plant_step(&self.plant, &mut self.x, &self.ctl.held, self.dt, self.method);
             } else {
                 self.multi_rate_step();
             }
+            probe.done(StepPart::Plant);
             if self.sea.is_some() && !self.x[HEADING].is_finite() {
                 return Err(SimError::Diverged {
                     time_s: self.t,
@@ -718,39 +728,9 @@ impl Simulation {
                 self.refresh_outputs();
                 self.record();
             }
+            probe.done(StepPart::Rest);
         }
         Ok(())
-    }
-
-    /// Where a step's time goes, for `aes-sim bench`: `n` plant steps, each from the present
-    /// state with the present held inputs (the result dropped), and `n` samples of the
-    /// controllers at the present state (each from the controllers as they are now), each batch timed
-    /// by `clock` [s] (core keeps no clock: the browser's wasm has none).
-    pub fn time_step_parts(&self, n: u64, clock: &dyn Fn() -> f64) -> StepParts {
-        let t0 = clock();
-        for _ in 0..n {
-            let mut y = std::hint::black_box(self.x);
-            plant_step(&self.plant, &mut y, &self.ctl.held, self.dt, self.method);
-            std::hint::black_box(&y);
-        }
-        let plant_s = clock() - t0;
-        // Sampled again and again at one plant state, the integrators would wind up and the
-        // slip would reach its limit: each sample starts from the controllers as they are now,
-        // and the time of that reset alone is taken off.
-        let mut copy = self.clone();
-        let t0 = clock();
-        for _ in 0..n {
-            copy.ctl.clone_from(std::hint::black_box(&self.ctl));
-            std::hint::black_box(&copy.ctl.held);
-        }
-        let reset_s = clock() - t0;
-        let t0 = clock();
-        for _ in 0..n {
-            copy.ctl.clone_from(std::hint::black_box(&self.ctl));
-            copy.control();
-            std::hint::black_box(&copy.ctl.held);
-        }
-        StepParts { plant_s, controllers_s: (clock() - t0 - reset_s).max(0.0) }
     }
 
     /// The seaway (None in calm water).
@@ -821,14 +801,33 @@ impl Simulation {
     }
 }
 
-/// The time of `n` plant steps and of `n` controller samples ([`Simulation::time_step_parts`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct StepParts {
-    /// The plant's steps (every evaluation of the integrator's stages) [s].
-    pub plant_s: f64,
-    /// The controllers' samples (governors, fields, slips with their limits, speed loop,
-    /// autopilot) [s].
-    pub controllers_s: f64,
+/// The parts of a time step, as a [`StepProbe`] is told of them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StepPart {
+    /// The controllers' sample, when one is due.
+    Controllers = 0,
+    /// The seaway: RAO look-ups and wave sums when due, the hub depth, the propellers'
+    /// ventilation.
+    Sea,
+    /// The plant's step (the integrator's stages; in the multi-rate scheme the drive train's step
+    /// and the hull's when due).
+    Plant,
+    /// The checks, the commands and the recorded rows.
+    Rest,
+}
+
+/// Told at the end of each part of every step ([`Simulation::advance_probed`]): a benchmark reads
+/// its clock there (core keeps no clock: the browser's wasm has none).
+pub trait StepProbe {
+    fn done(&mut self, part: StepPart);
+}
+
+/// The probe of a plain run: nothing (inlined away).
+struct NoProbe;
+
+impl StepProbe for NoProbe {
+    #[inline(always)]
+    fn done(&mut self, _: StepPart) {}
 }
 
 /// A scenario's run built up to its start without its sea (the plant, the calm-water speed map,
