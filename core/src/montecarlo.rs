@@ -780,6 +780,11 @@ pub struct HistogramAtTime {
 /// Welch periodogram of one motor's power over trials.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PeriodogramSummary {
+    /// Trials that ran at least one whole segment, the ones averaged (a trial that stops at its
+    /// first surface effect may end before one).
+    pub trials: u64,
+    /// Welch's segment [s] (`monte_carlo.periodogram_segment_s`).
+    pub segment_s: f64,
     pub freq_hz: Vec<f64>,
     pub unit: &'static str,
     pub mean: Vec<Option<f64>>,
@@ -873,6 +878,8 @@ pub fn study_summary(p: &Partial) -> Result<StudySummary, String> {
         envelopes,
         onset: RowStats::of(&p.onset, p.record_interval_s),
         periodogram: PeriodogramSummary {
+            trials: p.periodogram.first().map_or(0, |r| r.n),
+            segment_s: m.periodogram_segment_s,
             freq_hz: p.periodogram_hz.clone(),
             unit: "MW^2/Hz",
             mean: p.periodogram.iter().map(|r| stat(r.n, r.mean())).collect(),

@@ -219,9 +219,10 @@ pub fn fuel_regular_seas() -> Scenario {
 /// Ch. 5.3.1: 25 knots in head seas, sea state 6, 80 s (Figs. 5-13 to 5-15).
 pub fn head_seas_ss6() -> Scenario {
     let mut s = head_seas_thesis_depth();
-    s.description = "25 knots into head seas of sea state 6 (thesis ch. 5.3.1, Figs. 5-13 to 5-15) in a light \
-         (ballast) loading: the stern sits higher, so the 4.5 m propellers turn with their hub only h0 = 3.5 m \
-         below the calm surface and their tips 1.25 m below it. As the stern rises and falls in the waves \
+    s.description = "25 knots into head seas of sea state 6 (thesis ch. 5.3.1, Figs. 5-13 to 5-15) with the \
+         propeller hub raised to stand for a light (ballast) loading: the 4.5 m propellers turn with their hub \
+         only h0 = 3.5 m below the calm surface and their tips 1.25 m below it (the hull keeps the 5415's \
+         draft, mass and RAOs; only the hub moves). As the stern rises and falls in the waves \
          the hub depth swings by about 2 m: with the consistent hub depth (the stern follows the long waves) \
          the propellers ventilate about five times in the 80 s (h/R below 1.1), the disk reaches the surface \
          two or three times, and the motors' power drops from 0.6 to about 0.2 pu each time. Fully loaded \

@@ -48,6 +48,20 @@ async function runAndWait(page) {
   await page.waitForFunction(() => /^Done|^Cancel/.test(document.getElementById('status').textContent) || document.getElementById('status').className === 'error', null, { timeout: 60000 });
   return page.textContent('#status');
 }
+// Every axis label fits along its axis (a longer one is cut, its unit first): measured in the
+// axis' own font on the plot's canvas.
+const axisLabelsCut = (p) => p.evaluate(() => [...document.querySelectorAll('.chart')].filter((c) => c.getClientRects().length && c.uplot)
+  .flatMap((c) => {
+    const u = c.uplot;
+    return u.axes.filter((a) => a.show !== false && a.label).flatMap((a) => {
+      u.ctx.save();
+      u.ctx.font = Array.isArray(a.labelFont) ? a.labelFont[0] : a.labelFont;
+      const w = u.ctx.measureText(a.label).width;
+      u.ctx.restore();
+      const room = a.side % 2 === 1 ? u.bbox.height : u.bbox.width;
+      return w > room ? [`${c.closest('.plot').querySelector('h3')?.textContent}: "${a.label}" (${Math.round(w)} > ${Math.round(room)} px)`] : [];
+    });
+  }));
 const summaryText = (page) => page.$eval('#summary tbody', (t) => t.textContent);
 
 const page = await open(base);
@@ -238,6 +252,24 @@ await check('compare runs: "compare with eq. 2.57 as printed" draws both runs on
   await page.screenshot({ path: `${shots}/compare.png` });
   await page.click('#unkeep');
 });
+await check('tick labels show every multiple of the step exactly (2.5 is not "3")', async () => {
+  const got = await page.evaluate(async () => {
+    const { tickDecimals } = await import('./js/plots.js');
+    return [2.5, 25, 0.25, 0.05, 1, 0.1, 0.2, 5000, 1e-3].map(tickDecimals);
+  });
+  assert(JSON.stringify(got) === JSON.stringify([1, 0, 2, 2, 0, 1, 1, 0, 3]), `decimals ${got}`);
+});
+await check('a copied link goes away when the study or a value changes (it would share another scenario)', async () => {
+  await page.selectOption('#preset', 'startup');
+  await page.click('#share');
+  assert(await page.isVisible('#share-url'), 'no link shown');
+  await setField(page, 'sim.duration_s', 100);
+  await page.waitForFunction(() => document.getElementById('share-url').hidden, null, { timeout: 5000 });
+  await page.click('#share');
+  assert(await page.isVisible('#share-url'), 'no link shown after the edit');
+  await page.selectOption('#preset', 'turn-90');
+  await page.waitForFunction(() => document.getElementById('share-url').hidden, null, { timeout: 5000 });
+});
 await check('Monte Carlo runs over workers and shows the Table 5.8 comparison and histograms', async () => {
   await page.selectOption('#preset', 'mc-arrival');
   await setField(page, 'monte_carlo.trials', 6);
@@ -248,6 +280,10 @@ await check('Monte Carlo runs over workers and shows the Table 5.8 comparison an
   const text = await page.textContent('#plots');
   assert(/Table 5.8/.test(text) && /Rice/.test(text), 'no Table 5.8');
   assert((await page.$$eval('#plots .uplot', (els) => els.length)) >= 3, 'too few Monte Carlo plots');
+  const cut = await axisLabelsCut(page);
+  assert(!cut.length, `axis labels cut: ${cut.join(' | ')}`);
+  // (Drawn when a trial ran one whole Welch segment: with 6 trials of this study none may.)
+  assert(!/Periodogram/.test(text) || /Periodogram [^\n]*, \d+ (of 6 )?trials/.test(text), 'the periodogram does not say how many trials it averages');
   await page.screenshot({ path: `${shots}/monte-carlo.png` });
 });
 await check('Monte Carlo: a trial replays as a single run in the live views, and its seed reproduces it', async () => {
@@ -352,6 +388,9 @@ await check('100 Monte Carlo trials of head seas SS6 on 2 workers (speed report)
     return w.length % 2 ? w[m] : 0.5 * (w[m - 1] + w[m]);
   };
   const browserS = median(browsers);
+  // Every trial of this study runs its 80 s, so the periodogram averages all 100 and says so.
+  const titles = await page.$$eval('#plots h3', (hs) => hs.map((h) => h.textContent));
+  assert(titles.some((t) => /^Periodogram .*, 100 trials$/.test(t)), `no periodogram of 100 trials: ${titles.filter((t) => /Periodogram/.test(t))}`);
   console.log(`     ${await page.textContent('#status')} (wall ${browserS.toFixed(1)} s, ${await page.evaluate(() => navigator.hardwareConcurrency)} cores)`);
   if (natives[0] === null) {
     console.log(`     (no ${native}: browser/native not measured)`);
@@ -500,6 +539,8 @@ for (const [w, h] of SIZES) {
     assertLayout(await layout(p), 'more plots open');
     const noUnit = await axesWithoutUnit(p);
     assert(!noUnit.length, `axes without a unit: ${noUnit.join(' | ')}`);
+    const cut = await axisLabelsCut(p);
+    assert(!cut.length, `axis labels cut: ${cut.join(' | ')}`);
     const v1 = await axeSerious(p);
     assert(!v1.length, `simulator tab: ${v1.join(' | ')}`);
     await p.click('#tab-ips');

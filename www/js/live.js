@@ -281,7 +281,7 @@ export class LiveViews {
     const parts = [`At ${this.t.toFixed(1)} s: turbines ${mw(v('p_turbine_w') / 4)} each at ${v('turbine_speed_pu').toFixed(3)} pu speed${v('turbine_speed_pu') > w.turbine_overspeed_pu ? ' (OVERSPEED)' : ''}`,
       `generators ${mw(v('p_generator_w') / 4)} each`, `buses at ${v('bus_voltage_pu').toFixed(3)} pu (${(v('bus_voltage_v') / 1e3).toFixed(2)} kV)`,
       `motors ${mw(v('p_motor_w') / 2)} each (${v('im_power_pu').toFixed(2)} pu)`, `propellers ${v('prop_rpm_1').toFixed(0)} and ${v('prop_rpm_2').toFixed(0)} rpm`,
-      `ship ${v('ship_speed_kn').toFixed(1)} kn, heading ${v('heading_deg').toFixed(0)}°, rudder ${v('rudder_deg').toFixed(1)}°`];
+      `ship ${v('ship_speed_kn').toFixed(1)} kn, heading ${v('heading_deg').toFixed(0)}°, rudder ${v('rudder_deg').toFixed(1)}°${v('rudder_deg') > 0.05 ? ' (to port)' : v('rudder_deg') < -0.05 ? ' (to starboard)' : ''}`];
     if (v('brake_power_w') > 0) parts.push(`brake resistors ${mw(v('brake_power_w'))}`);
     if (this.inWaves) parts.push(`wave at the stern ${signed(v('wave_stern_m'))} m, ${hubText(v('hub_depth_m'))}, h/R ${v('h_over_r').toFixed(2)} (${this.discState().text}), thrust kept ${pct(v('beta_t'))}`);
     return parts.join('; ') + '.';

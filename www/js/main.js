@@ -90,7 +90,7 @@ async function openLink(hash) {
 async function onReady(m) {
   if (form) { setPhase('idle'); return; } // a fresh worker after a cancel: the page stays as it is
   signals = new Signals(m.signals);
-  form = new ScenarioForm(m.presets, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => { showCompareButtons(); refreshHull(); } });
+  form = new ScenarioForm(m.presets, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); } });
   hullPicker = new HullPicker(m.hulls || [], {
     form, validate, say: status, busy: isBusy,
     // An accepted hull or scenario file: into the form (a scenario file may name its study).
@@ -131,6 +131,7 @@ async function onReady(m) {
 let validating = 0;
 async function onEdit() {
   follow(form.name, false);
+  forgetLink();
   const mine = ++validating;
   try {
     await validate(form.current());
@@ -138,6 +139,14 @@ async function onEdit() {
   } catch (e) {
     if (mine === validating && !e.cancelled) form.markErrors(e.fields || []);
   }
+}
+
+// A copied link shows under the buttons until the study or a value changes: then it would share
+// another scenario than the one on the page.
+function forgetLink() {
+  $('share-url').hidden = true;
+  $('share-url').value = '';
+  $('share-too-long').hidden = true;
 }
 
 function selectStudy(name, push = true) {

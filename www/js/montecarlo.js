@@ -154,8 +154,11 @@ export function showMonteCarlo(box, s, signals, constants, { onReplay = null, on
     const n = k > 0 ? k : pg.freq_hz.length;
     const pos = (v) => v.slice(1, n).map((x) => Math.max(x, 1e-9));
     const unit = pg.unit.replace('^2', '²');
-    box.line(`Periodogram of one motor's power [${unit}] (Welch, Fig. 5-23)`, { data: pg.freq_hz.slice(1, n), label: 'frequency [Hz]' },
+    // Only trials that run one whole Welch segment count (a trial that ends early at its first
+    // surface effect does not): with few of them the lowest and highest lines meet the mean.
+    const counted = pg.trials === s.trials ? `${pg.trials} trials` : `${pg.trials} of ${s.trials} trials (the rest ended before one ${pg.segment_s} s segment)`;
+    box.line(`Periodogram of one motor's power [${unit}] (Welch, Fig. 5-23), ${counted}`, { data: pg.freq_hz.slice(1, n), label: 'frequency [Hz]' },
       [{ data: pos(pg.mean), label: 'mean over trials', color: '#0b5cad' }, { data: pos(pg.min), label: 'lowest', color: '#6b6b6b', dash: [2, 3] }, { data: pos(pg.max), label: 'highest', color: '#b03a2e', dash: [6, 3] }],
-      [{ scale: 'y', label: `power spectral density [${unit}]` }], { scales: { y: { distr: 3, log: 10 } } });
+      [{ scale: 'y', label: `PSD [${unit}]` }], { scales: { y: { distr: 3, log: 10 } } });
   }
 }

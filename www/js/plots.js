@@ -22,8 +22,24 @@ function ticks(u, splits, axisIdx, space, incr) {
       return Math.abs(e) <= 3 ? String(Number(v.toPrecision(1))) : `1e${Math.round(e)}`;
     });
   }
-  const digits = incr > 0 ? Math.max(0, Math.min(8, -Math.floor(Math.log10(incr) + 1e-9))) : 0;
+  const digits = tickDecimals(incr);
   return splits.map((v) => (v == null ? '' : Math.abs(v) >= 1e6 ? v.toExponential(2) : v.toFixed(digits)));
+}
+
+// Characters of an axis label that fit along a plot's height (bold 12 px, 240 px plots: 143 px
+// between the axes, about 7 px a character).
+const AXIS_LABEL_CHARS = 20;
+const fitLabel = (text, n) => (text.length <= n ? text : text.slice(0, Math.max(1, n - 1)) + '…');
+
+// Decimals that show every multiple of a tick step `incr` exactly: 1 for 2.5 (not 0, which
+// printed 2.5 as "3"), 0 for 25, 2 for 0.25 and for 0.05; at most 8.
+export function tickDecimals(incr) {
+  if (!(incr > 0) || !Number.isFinite(incr)) return 0;
+  for (let d = 0; d < 8; d++) {
+    const x = incr * 10 ** d;
+    if (Math.abs(x - Math.round(x)) <= 1e-9 * Math.max(1, x)) return d;
+  }
+  return 8;
 }
 
 // A box of plots. clear() starts a new generation: plots that arrive late for an older one
@@ -141,7 +157,9 @@ export class PlotBox {
       axes: [{ label: x.label, values: ticks }, ...axes.map((a, i) => ({ scale: a.scale, label: a.label, values: ticks, size: 60, ...(i ? { side: 1, grid: { show: false } } : {}) }))],
       series: [{ label: x.label }, ...series.map(({ data, color, ...rest }) => ({ stroke: color, width: 1.8, scale: axes[0].scale, spanGaps: true, ...rest }))],
       legend: { live: false },
-      cursor: time && this.sync ? { sync: { key: this.sync, setSeries: false } } : {},
+      // No horizontal cursor line: parked at mid-height by the live views' cursor, it read as a
+      // threshold.
+      cursor: time && this.sync ? { y: false, sync: { key: this.sync, setSeries: false } } : { y: false },
       hooks: { drawClear: [overlay], draw: [levelLabels], ...(time && this.sync ? { setScale: [(u, key) => this.linkZoom(u, key)] } : {}) },
     };
     const u = new uPlot(opts, [x.data, ...series.map((s) => s.data)], chart);
@@ -253,8 +271,8 @@ function runPlot(box, spec, cols, signals, constants, kept, more, markers) {
     const scale = 'y:' + key;
     const scaled = (d) => (factor === 1 ? d : Array.from(d, (v) => (v == null ? null : v * factor)));
     const label = s.label || signals.label(s.signal);
-    const { signal, axis, ...style } = s;
-    g.series.push({ ...style, data: scaled(pairs[k][0]), base, label, scale });
+    const { signal, axis, axisName, ...style } = s;
+    g.series.push({ ...style, data: scaled(pairs[k][0]), base, label, axisName: axisName || label, scale });
     if (keptCols) g.kept.push({ data: scaled(pairs[k][1]), label: `${label}, kept run (${kept.name})`, color: s.color + '88', dash: KEPT_STYLE.dash, width: KEPT_STYLE.width, scale });
   });
   if (groups.size > 2) throw new Error(`plot '${spec.title}': more than two axes`);
@@ -263,13 +281,16 @@ function runPlot(box, spec, cols, signals, constants, kept, more, markers) {
   for (const [key, g] of groups) {
     const one = g.bases.size === 1 && g.series.every((s) => s.base);
     const unitText = one ? `pu of ${[...g.bases][0]}` : g.unit;
-    const names = g.series.map((s) => s.label).join(', ');
+    const names = g.series.map((s) => s.axisName).join(', ');
     // "heading [deg]" / "rudder [deg]" when two axes share a unit; "h/R [-]" when dimensionless.
     // A plot may name its one axis itself (`yLabel`, e.g. h/R of both shafts).
+    // An axis label runs along the plot's height: more than about 20 characters would be cut,
+    // unit first. Several lines on one axis are named by the first (the legend names them all).
+    const named = `${names} [${unitText}]`.length <= AXIS_LABEL_CHARS ? names : g.series[0].axisName;
     const label = spec.yLabel && groups.size === 1 ? spec.yLabel
-      : groups.size > 1 || g.unit === '-' ? `${names.length > 40 ? names.slice(0, 38) + '…' : names} [${unitText}]` : `[${unitText}]`;
+      : groups.size > 1 || g.unit === '-' ? `${fitLabel(named, AXIS_LABEL_CHARS - unitText.length - 3)} [${unitText}]` : `[${unitText}]`;
     axes.push({ scale: 'y:' + key, unit: unitText, label });
-    for (const { base, ...s } of g.series) series.push(base && !one ? { ...s, label: `${s.label} (pu of ${base})` } : s);
+    for (const { base, axisName, ...s } of g.series) series.push(base && !one ? { ...s, label: `${s.label} (pu of ${base})` } : s);
   }
   for (const g of groups.values()) series.push(...g.kept);
   const units = [...new Set(axes.map((a) => a.unit))];
@@ -380,7 +401,7 @@ export function drawSeaExtras(box, client, scenario, cols, constants, onError) {
       box.line(`${hullTitle} RAOs at ${kn} kn, ${name} seas (strip theory, ch. 2.5.2) [m/m; -; rad/m]`,
         { data: lam, label: `wave length / Lpp [-] (Lpp = ${quantity(lpp, 'm')})` },
         [{ data: r.heave.amp, label: 'heave per wave amplitude [m/m]', color: '#117a65' }, { data: pk, label: 'pitch / wave slope [-]', color: '#a04000', dash: [6, 3] }, { data: r.roll.amp, label: 'roll per wave amplitude [rad/m]', color: '#5b2c6f', dash: [2, 3] }],
-        [{ scale: 'y', label: 'response per wave [m/m; -; rad/m]' }], { generation, more: true });
+        [{ scale: 'y', label: 'RAO [m/m; -; rad/m]' }], { generation, more: true });
     }, () => { /* a cancelled or failed RAO leaves the run's plots as they are */ });
   }
   if (scenario.sea.kind !== 'regular') return;
