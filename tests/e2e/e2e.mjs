@@ -574,12 +574,22 @@ await check('presentation mode: form folded away, wider plots, no overflow, and 
   assert(await page.isVisible('#preset') && await page.isVisible('#run'), 'study picker or Run hidden');
   const widthAfter = await page.$eval('#plots .uplot', (e) => e.getBoundingClientRect().width);
   assert(widthAfter > widthBefore, `plots did not grow: ${widthBefore} -> ${widthAfter}`);
+  // Readable from the back: the axes' type grows to 16 px; the comparison stays at hand.
+  const axisPx = () => page.$$eval('#plots .chart', (cs) => cs.filter((c) => c.uplot).flatMap((c) => c.uplot.axes.map((a) => a.font[2])));
+  const big = await axisPx();
+  assert(big.length && big.every((px) => px === 16), `axis type while presenting: ${big}`);
+  assert(await page.isVisible('#keep'), 'Keep this run is hidden while presenting');
+  if (await page.$$eval('#compare-with button', (b) => b.length)) assert(await page.isVisible('#compare-with'), 'the compare buttons are hidden while presenting');
+  const cut = await axisLabelsCut(page);
+  assert(!cut.length, `axis labels cut while presenting: ${cut.join(' | ')}`);
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   assert(overflow <= 1, `horizontal overflow ${overflow} px`);
   await page.screenshot({ path: `${shots}/presentation.png` });
   await page.click('#present');
   await page.waitForFunction(() => !document.body.classList.contains('presenting'), null, { timeout: 5000 });
   assert(await page.isVisible('#all-fields'), 'the form did not come back');
+  const desk = await axisPx();
+  assert(desk.every((px) => px === 12), `axis type after presenting: ${desk}`);
 });
 await check('a resize re-fits the plots to their panels', async () => {
   const p = await open(base + '#v=1&preset=startup', wide);

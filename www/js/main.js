@@ -7,7 +7,7 @@ import { setPhase, isBusy, setResult, getResult, progress, status, notice, etaTe
 import { linkHash, readLink, diff } from './link.js';
 import { ScenarioForm, setPath, leafPaths } from './form.js';
 import { Signals } from './units.js';
-import { PlotBox, drawRun, drawSeaExtras } from './plots.js';
+import { PlotBox, drawRun, drawSeaExtras, presentPlots } from './plots.js';
 import { MonteCarlo, showMonteCarlo } from './montecarlo.js';
 import { StabilityTab } from './stability.js';
 import { DesignTab } from './design.js';
@@ -367,6 +367,7 @@ $('tabs').addEventListener('keydown', (e) => {
 // Presentation mode: full screen, large type, the form folded away.
 function present(on) {
   document.body.classList.toggle('presenting', on);
+  presentPlots(on);
   $('present').setAttribute('aria-pressed', String(on));
   $('present').textContent = on ? 'Leave presentation' : 'Presentation mode';
   if (on && document.documentElement.requestFullscreen && !document.fullscreenElement) document.documentElement.requestFullscreen().catch(() => {});

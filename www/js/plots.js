@@ -42,6 +42,39 @@ export function tickDecimals(incr) {
   return 8;
 }
 
+// Every plot on the page, for presentation mode's type size.
+const ALL_PLOTS = new Set();
+const presenting = () => document.body.classList.contains('presenting');
+
+// Axis type for presentation (16 px, readable from the back of a classroom) or the desk (12 px):
+// the fonts' size and the room the ticks and labels take.
+function axisType(u, big) {
+  const css = big ? 16 : 12;
+  const dpr = devicePixelRatio || 1;
+  u.axes.forEach((a, i) => {
+    for (const f of [a.font, a.labelFont]) {
+      if (!Array.isArray(f)) continue;
+      f[2] = css;
+      f[1] = Math.round(css * dpr * 10) / 10;
+      f[0] = f[0].replace(/[0-9.]+px/, `${f[1]}px`);
+    }
+    const size = i === 0 ? (big ? 64 : 50) : big ? 80 : 60;
+    a.size = () => size;
+    a.labelSize = big ? 38 : 30;
+  });
+}
+
+// Presentation mode on or off: every plot's axis type, then its size (the plots' height follows
+// --plot-h).
+export function presentPlots(big) {
+  for (const u of ALL_PLOTS) {
+    if (!u.root.isConnected) { ALL_PLOTS.delete(u); continue; }
+    axisType(u, big);
+    u.setSize({ width: u.width, height: plotHeight() });
+    u.redraw(false, true);
+  }
+}
+
 // A box of plots. clear() starts a new generation: plots that arrive late for an older one
 // (after an asynchronous request) are dropped. `more`: a second container for the plots that do
 // not tell the study's story (one click away).
@@ -163,6 +196,8 @@ export class PlotBox {
       hooks: { drawClear: [overlay], draw: [levelLabels], ...(time && this.sync ? { setScale: [(u, key) => this.linkZoom(u, key)] } : {}) },
     };
     const u = new uPlot(opts, [x.data, ...series.map((s) => s.data)], chart);
+    ALL_PLOTS.add(u);
+    if (presenting()) { axisType(u, true); u.redraw(false, true); }
     u.linked = time;
     chart.uplot = u;
     this.observer.observe(chart);
