@@ -228,7 +228,7 @@ export const FUEL_COLORS = ['#1f618d', '#117a65', '#a04000', '#6c3483', '#1b1b1b
 export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, onsetSignal: 'im_power_pu',
   calmWaterNote: 'thesis: 94.1 ± 33.3',
   // Table 5.8 as printed in the thesis (a reference column, not a model number).
-  table58Thesis: { head: ['thesis mean', 'thesis std', 'thesis skewness', 'thesis kurtosis', 'thesis median', 'thesis mode'],
+  table58Thesis: { stats: ['mean', 'std', 'skewness', 'kurtosis', 'median', 'mode'],
     rice: ['22.64', '22.64', '2', '9', '15.69', '0'], monteCarlo: ['23.67', '22.11', '1.00', '3.13', '15.46', '0.0217'] },
   riceNote: 'Rice\'s rate counts up-crossings of a stationary Gaussian response and treats them as rare, independent events, so that arrival times are exponential. That holds for a level many standard deviations away; at this study\'s level crossings are not rare and come in clusters on wave groups, and each trial is cut off, so the Monte Carlo skewness and kurtosis fall short of the exponential\'s 2 and 9 (as in the thesis) while the means stay close.',
   excessNote: 'Two excess energies: against the same sea with surface losses switched off (the submerged counterpart: what ventilation and emergence alone cost), and against calm water (which adds the added resistance of the waves; this is the thesis\' figure).' };

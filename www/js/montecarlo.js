@@ -90,10 +90,13 @@ export function showMonteCarlo(box, s, signals, constants, { onReplay = null, on
   if (r) {
     const th = MC.table58Thesis;
     info.append(
-      el('div', { className: 'scroll' }, table('Arrival time of the first surface effect [s] (Table 5.8)', [
-        [`Rice (Z ${fmt(r.z_m, 3)} m, rate ${fmt(r.rate_per_s, 3)}/s)`, ...exponentialMoments(r.rate_per_s).map((v) => fmt(v)), ...th.rice],
-        ['Monte Carlo', ...[a.mean, a.std, a.skewness, a.kurtosis, a.median, a.mode].map((v) => fmt(v)), ...th.monteCarlo],
-      ], ['', 'mean', 'std', 'skewness', 'kurtosis', 'median', 'mode', ...th.head])),
+      // One row a statistic, ours beside the thesis': narrow enough for a phone.
+      el('div', { className: 'scroll' }, table('Arrival time of the first surface effect [s] (Table 5.8)',
+        (() => {
+          const rice = exponentialMoments(r.rate_per_s), mc = [a.mean, a.std, a.skewness, a.kurtosis, a.median, a.mode];
+          return th.stats.map((name, k) => [name, fmt(rice[k]), fmt(mc[k]), th.rice[k], th.monteCarlo[k]]);
+        })(), ['', 'Rice', 'Monte Carlo', 'thesis: Rice', 'thesis: Monte Carlo'])),
+      el('p', { className: 'about', textContent: `Rice: the level Z = ${fmt(r.z_m, 3)} m, crossed at ${fmt(r.rate_per_s, 3)} per second (exponential arrivals).` }),
       el('p', { className: 'about', textContent: `Censored at ${a.cap_s} s alike: Monte Carlo mean of min(T, cap) ${fmt(a.mean_censored)} s, Rice ${fmt(r.mean_censored_s)} s.` }),
       el('p', { className: 'about', textContent: MC.riceNote }));
   }
