@@ -91,6 +91,8 @@ export function drawPoleMap(box, poles, max) {
     }
     g.fillStyle = '#4a4a4a'; g.font = '11px system-ui';
     g.fillText(`${(-span).toPrecision(3)} /s`, 4, py(0) - 4);
-    g.fillText(`${span.toPrecision(3)} rad/s`, px(0) + 4, 12);
+    // Right of the imaginary axis where it fits, else left of it (a phone's narrow picture).
+    const im = `${span.toPrecision(3)} rad/s`, tw = g.measureText(im).width;
+    g.fillText(im, px(0) + 4 + tw <= w - 2 ? px(0) + 4 : px(0) - 4 - tw, 12);
   });
 }
