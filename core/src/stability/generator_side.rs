@@ -28,6 +28,9 @@ use std::f64::consts::PI;
 
 const K1: f64 = 3.0 * 1.732_050_807_568_877_2 / PI;
 
+/// Least v~ / (k1 |v|) of the rectifier's first mode (commutation overlap at most 60 deg).
+pub const MODE_1_MIN_RATIO: f64 = 0.75;
+
 /// Generator-side parameters (SI; stator quantities are peak qd values, rotor quantities referred
 /// to the stator).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -310,6 +313,17 @@ impl GeneratorSideParams {
             cos_phi: vr / (K1 * libm::hypot(vq, vd)),
             x,
         };
+        // The average model of eqs. 4.8-4.10 is the bridge's first mode, each commutation over
+        // before the next begins (overlap mu up to 60 deg): v~ = k1 |v| - k2 i_dc with
+        // cos mu = 1 - 2 k2 i_dc / (k1 |v|), so mu = 60 deg at v~ / (k1 |v|) = 3/4. Past it the
+        // equations still solve, but to nothing a diode bridge does (the bus goes negative near
+        // 400 A at the default field): refused, with the way back.
+        if !(ss.cos_phi >= MODE_1_MIN_RATIO) {
+            return Err(format!(
+                "the generator-side steady state at load current I = {i_load} A (omega = {omega_star} rad/s, v_fd = {v_fd} V) lies outside the rectifier model: the commutation overlap passes 60 degrees (v~ / (k1 |v|) = {:.3}; eqs. 4.8-4.10 hold from {MODE_1_MIN_RATIO} up; the bus would be at {:.1} V); lower the load current I or raise the field voltage v_fd",
+                ss.cos_phi, ss.v_dc
+            ));
+        }
         let mut values = vec![
             ("v_gs_mag", ss.v_gs_mag),
             ("i_gs_mag", ss.i_gs_mag),
@@ -540,5 +554,20 @@ mod tests {
                 assert!((a[(r, c)] - n[(r, c)]).abs() <= 1e-6 * scale, "A[{r},{c}] = {} vs {}", a[(r, c)], n[(r, c)]);
             }
         }
+    }
+
+    /// The rectifier's first mode bounds the steady states: at the default field (28.5 V) the
+    /// ratio v~ / (k1 |v|) is 0.982 at Table 4.1's 45 A and 0.933 at 80 A (accepted), and falls
+    /// through 3/4 between 80 and 120 A (0.695 there): 120 A and 400 A (where the bus would be
+    /// at -10 V) are refused, naming the load and the way back; a stronger field carries 120 A.
+    #[test]
+    fn steady_states_past_the_first_rectifier_mode_are_refused() {
+        let p = GeneratorSideParams::default();
+        assert!(p.steady_state(377.0, 28.5, 80.0).unwrap().cos_phi > MODE_1_MIN_RATIO);
+        for load in [120.0, 400.0] {
+            let e = p.steady_state(377.0, 28.5, load).unwrap_err();
+            assert!(e.contains(&format!("I = {load} A")) && e.contains("60 degrees") && e.contains("raise the field voltage"), "{e}");
+        }
+        assert!(p.steady_state(377.0, 60.0, 120.0).is_ok());
     }
 }
