@@ -566,7 +566,12 @@ mod tests {
         assert!(p.steady_state(377.0, 28.5, 80.0).unwrap().cos_phi > MODE_1_MIN_RATIO);
         for load in [120.0, 400.0] {
             let e = p.steady_state(377.0, 28.5, load).unwrap_err();
-            assert!(e.contains(&format!("I = {load} A")) && e.contains("60 degrees") && e.contains("raise the field voltage"), "{e}");
+            assert!(
+                e.contains(&format!("I = {load} A"))
+                    && e.contains("60 degrees")
+                    && e.contains("raise the field voltage"),
+                "{e}"
+            );
         }
         assert!(p.steady_state(377.0, 60.0, 120.0).is_ok());
     }
