@@ -463,9 +463,33 @@ await check('extreme values never freeze the stability tab or the simulator (cle
   await page.waitForFunction(() => document.getElementById('ips-status').className === 'error', null, { timeout: 10000 });
   const msg = await page.textContent('#ips-status');
   assert(/v_fd|field voltage/i.test(msg), `stability error does not name the input: ${msg}`);
+  // The box at fault is marked, and the last results are dimmed as not following the controls.
+  assert(await page.$eval('#ips-vfd', (e) => e.getAttribute('aria-invalid') === 'true'), 'the field voltage box is not marked invalid');
+  assert(await page.$eval('#ips-plots', (e) => e.classList.contains('stale')), 'the old plots are not marked as stale');
   await page.fill('#ips-vfd', '28.5');
   await page.dispatchEvent('#ips-vfd', 'input');
   await page.dispatchEvent('#ips-vfd', 'change');
+  await page.waitForFunction(() => /^Stable|^UNSTABLE/.test(document.getElementById('ips-status').textContent), null, { timeout: 10000 });
+  assert(await page.$eval('#ips-vfd', (e) => !e.hasAttribute('aria-invalid')), 'the field voltage box is still marked invalid');
+  assert(await page.$eval('#ips-plots', (e) => !e.classList.contains('stale')), 'the plots are still marked as stale');
+  // The Bode phase is unwrapped (no jump of 180 deg or more between neighbours), and an unstable
+  // operating point (closed loop, 5 A, a 200 V field) is named on the pole map.
+  const jumps = await page.$$eval('#ips-plots .chart', (cs) => cs.filter((c) => c.uplot && /phase/.test(c.closest('.plot').querySelector('h3').textContent))
+    .flatMap((c) => { const d = c.uplot.data[1]; return d.slice(1).map((v, i) => Math.abs(v - d[i])).filter((x) => x >= 180); }));
+  assert(!jumps.length, `phase jumps of ${jumps}`);
+  await page.selectOption('#ips-loop', 'closed');
+  await page.dispatchEvent('#ips-loop', 'input');
+  await page.fill('#ips-load', '5');
+  await page.dispatchEvent('#ips-load', 'input');
+  await page.fill('#ips-vfd', '200');
+  await page.dispatchEvent('#ips-vfd', 'input');
+  await page.waitForFunction(() => /^UNSTABLE/.test(document.getElementById('ips-status').textContent), null, { timeout: 10000 });
+  const map = await page.$eval('#ips-plots canvas[role="img"]', (c) => c.getAttribute('aria-label'));
+  assert(/unstable: 1\.\d+[+-]/.test(map), `the pole map does not name the unstable poles: ${map}`);
+  await page.screenshot({ path: `${shots}/stability-unstable.png` });
+  for (const [id, v] of [['#ips-vfd', '28.5'], ['#ips-load', '45']]) { await page.fill(id, v); await page.dispatchEvent(id, 'input'); }
+  await page.selectOption('#ips-loop', 'open');
+  await page.dispatchEvent('#ips-loop', 'input');
   await page.waitForFunction(() => /^Stable|^UNSTABLE/.test(document.getElementById('ips-status').textContent), null, { timeout: 10000 });
   await page.selectOption('#ips-side', 'motor');
   await page.dispatchEvent('#ips-side', 'change');

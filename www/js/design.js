@@ -6,7 +6,7 @@
 import { DESIGN } from './config.js';
 import { $, el } from './dom.js';
 import { REQUEST } from './protocol.js';
-import { drawPoleMap } from './stability.js';
+import { drawPoleMap, poleCells, numberBoxError, markStale } from './stability.js';
 
 const db = (x) => 20 * Math.log10(Math.max(x, 1e-12));
 const CURVES = ['#0b5cad', '#c2410c'];
@@ -48,11 +48,20 @@ export class DesignTab {
     $('design-mu').setAttribute('aria-valuetext', `mu = ${t.mu}`);
     $('design-q').setAttribute('aria-valuetext', `q = ${t.q}`);
     clearTimeout(this.timer);
+    const results = [$('design-margins'), $('design-poles'), $('design-plots')];
+    const bad = numberBoxError($('design-weight'), 'turbine-speed weight');
+    if (bad) {
+      this.ok = false;
+      $('design-run').disabled = true;
+      markStale(results, $('design-status'), true, $('design-weight'), bad);
+      return;
+    }
     this.timer = setTimeout(() => {
       const sc = this.baseScenario();
       sc.controllers.lqg_ltr = t;
       this.client().request(REQUEST.design, { scenario: JSON.stringify(sc) }).then(({ result }) => {
         this.ok = true;
+        markStale(results, $('design-status'), false);
         $('design-run').disabled = !result.stable;
         const pms = result.input_margins.map((m) => m.phase_margin_deg).filter((x) => x !== null && x !== undefined);
         const worst = pms.length ? ` Smallest phase margin at a plant input: ${Math.min(...pms).toFixed(0)}°.` : '';
@@ -63,8 +72,7 @@ export class DesignTab {
         if (e.cancelled) return;
         this.ok = false;
         $('design-run').disabled = true;
-        $('design-status').textContent = e.message;
-        $('design-status').className = 'error';
+        markStale(results, $('design-status'), true, null, e.message);
       });
     }, DESIGN.debounceMs);
   }
@@ -76,8 +84,7 @@ export class DesignTab {
       el('td', { textContent: `+${num(m.gain_margin_db)} / ${m.gain_reduction_margin_db === null ? '−∞' : num(m.gain_reduction_margin_db)}` }),
       el('td', { textContent: num(m.phase_margin_deg, 0) }),
       el('td', { textContent: m.crossover_rad_s === null ? '–' : Number(m.crossover_rad_s).toPrecision(3) }))));
-    $('design-poles').querySelector('tbody').replaceChildren(...r.closed_loop_poles.map((p) => el('tr', {},
-      ...[p.re, p.im, p.damping].map((x) => el('td', { textContent: Number(x).toPrecision(4) })))));
+    $('design-poles').querySelector('tbody').replaceChildren(...r.closed_loop_poles.map((p) => el('tr', {}, ...poleCells(p))));
     this.box.clear();
     const sv = r.singular_values;
     const x = { data: sv.frequency_rad_s, label: 'frequency [rad/s]', distr: 3 };
