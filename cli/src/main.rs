@@ -485,11 +485,18 @@ fn load(file: &str, sets: &[String]) -> Result<Scenario, String> {
         let text = read_bounded(file, aes_core::scenario::MAX_SCENARIO_BYTES as u64, "a scenario")?;
         Scenario::from_json(&text).map_err(|e| format!("{}: invalid scenario:\n{e}", shorten(file)))?
     };
+    let mut pairs = Vec::with_capacity(sets.len());
     for s in sets {
         let (path, value) = s
             .split_once('=')
             .ok_or_else(|| format!("--set '{}': expected PATH=VALUE, e.g. sim.duration_s=60", shorten(s)))?;
-        sc = sc.with_override(path.trim(), value.trim()).map_err(|e| format!("--set {}: {e}", shorten(path)))?;
+        pairs.push((path.trim(), value.trim()));
+    }
+    // All at once: fields that change together (a significant height with its peak frequency)
+    // are checked together. An error names its field.
+    if !pairs.is_empty() {
+        let what = if pairs.len() == 1 { format!("--set {}", shorten(pairs[0].0)) } else { "--set".to_string() };
+        sc = sc.with_overrides(&pairs).map_err(|e| format!("{what}: {e}"))?;
     }
     Ok(sc)
 }
@@ -780,6 +787,19 @@ fn real_main() -> Result<(), Failure> {
             }
             let acc = acc.ok_or("no partials given")?;
             let summary = aes_core::montecarlo::study_summary(&acc)?;
+            // A lost shard leaves a smaller study that looks like a whole one: say which trials
+            // are missing (a merge of the shards done so far is still allowed).
+            let missing = missing_trials(&summary.ranges, summary.trials_requested);
+            if !missing.is_empty() {
+                let shown: Vec<String> = missing.iter().take(5).map(|(a, b)| format!("{a}..{b}")).collect();
+                eprintln!(
+                    "aes-sim merge: warning: {} of the study's {} trials merged; missing {}{}",
+                    summary.trials,
+                    summary.trials_requested,
+                    shown.join(", "),
+                    if missing.len() > 5 { format!(" and {} more ranges", missing.len() - 5) } else { String::new() }
+                );
+            }
             emit_json(&summary)?;
             if let Some(path) = &partial {
                 let text = serde_json::to_string(&acc).map_err(|e| e.to_string())?;
@@ -1041,6 +1061,25 @@ impl SlowNote {
             let _ = t.join();
         }
     }
+}
+
+/// The trial ranges of 0..`requested` that `ranges` (the merged shards' ranges) leave out.
+fn missing_trials(ranges: &[(u64, u64)], requested: u64) -> Vec<(u64, u64)> {
+    let mut sorted = ranges.to_vec();
+    sorted.sort_unstable();
+    let mut gaps = Vec::new();
+    let mut next = 0;
+    for (a, b) in sorted {
+        if a > next {
+            gaps.push((next, a.min(requested)));
+        }
+        next = next.max(b);
+    }
+    if next < requested {
+        gaps.push((next, requested));
+    }
+    gaps.retain(|(a, b)| a < b);
+    gaps
 }
 
 /// `aes-sim bench`'s probe: the time since the last part's end, added to the part that ends now.

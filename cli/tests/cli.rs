@@ -377,3 +377,65 @@ fn bench_in_waves_breaks_the_trial_down() {
     let pc = (f(&p["plant_s"]) + f(&p["controllers_s"])) / sums;
     assert!((f(&p["plant_and_controllers_over_wave_sums"]) - pc).abs() < 1e-9 * pc);
 }
+
+/// Several `--set` are applied together and then checked: a significant height and its peak
+/// frequency (each refused alone while the other is 0) can be set in either order.
+#[test]
+fn overrides_that_belong_together_are_checked_together() {
+    for pair in [["sea.h_sig_m=8", "sea.omega_n_rad_s=0.5"], ["sea.omega_n_rad_s=0.5", "sea.h_sig_m=8"]] {
+        let (ok, out, err) =
+            aes_sim(&["run", "preset:head-seas-ss6", "--set", pair[0], "--set", pair[1], "--set", "sim.duration_s=1"]);
+        assert!(ok && out.contains("efficiency"), "{pair:?}: {err}");
+    }
+    let (ok, _, err) = aes_sim(&["run", "preset:head-seas-ss6", "--set", "sea.omega_n_rad_s=0.5"]);
+    assert!(!ok && err.contains("sea.h_sig_m = 0: must be a number from 0.01 to 20"), "{err}");
+}
+
+/// A scenario or a section given as an array is refused (serde would fill it field by field in
+/// order), naming where.
+#[test]
+fn arrays_for_objects_are_refused() {
+    for (text, path) in [("[]", "scenario = []"), ("{\"ship\":[1,2]}", "ship = [1,2]")] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_aes-sim"))
+            .args(["run", "-"])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        child.stdin.take().unwrap().write_all(text.as_bytes()).unwrap();
+        let out = child.wait_with_output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success() && err.contains(path) && err.contains("not an array"), "{text}: {err}");
+    }
+}
+
+/// `merge` of shards that leave trials out says which, on stderr, and still merges.
+#[test]
+fn merge_names_the_missing_trials() {
+    let dir = std::env::temp_dir().join(format!("aes-merge-gap-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let shard = |range: &str, name: &str| {
+        let p = dir.join(name);
+        let (ok, _, err) = aes_sim(&[
+            "mc",
+            "preset:mc-arrival",
+            "--trials",
+            "12",
+            "--trial-range",
+            range,
+            "--partial",
+            p.to_str().unwrap(),
+            "--quiet",
+            "--set",
+            "sim.duration_s=2",
+        ]);
+        assert!(ok, "{err}");
+        p
+    };
+    let (a, b) = (shard("0..4", "a.json"), shard("8..12", "b.json"));
+    let (ok, out, err) = aes_sim(&["merge", a.to_str().unwrap(), b.to_str().unwrap()]);
+    assert!(ok && out.contains("\"trials\": 8"), "{err}");
+    assert!(err.contains("8 of the study's 12 trials merged; missing 4..8"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}

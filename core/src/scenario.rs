@@ -551,6 +551,13 @@ impl Scenario {
         if !moved.is_empty() {
             return Err(ScenarioError(moved));
         }
+        // serde would fill a section from an array, field by field in order: refused, so that a
+        // scenario means what its names say.
+        let mut arrays = Vec::new();
+        arrays_for_objects(&value, &serde_json::to_value(Scenario::default()).unwrap_or_default(), "", &mut arrays);
+        if !arrays.is_empty() {
+            return Err(ScenarioError(arrays));
+        }
         // From a borrow, so that an error can quote the offending value (serde names only the path).
         let sc: Scenario = serde_path_to_error::deserialize(&value).map_err(|e| {
             let path = e.path().to_string();
@@ -573,39 +580,76 @@ impl Scenario {
     /// Sets one parameter by dotted path (`sim.duration_s`, `commands.0.speed_kn`) to a value
     /// given as text (JSON; bare words are taken as strings), then re-validates.
     pub fn with_override(&self, path: &str, value_text: &str) -> Result<Scenario, ScenarioError> {
-        let mut root = serde_json::to_value(self).map_err(|e| one_error(path, value_text, &e))?;
-        let new_value: serde_json::Value =
-            serde_json::from_str(value_text).unwrap_or_else(|_| serde_json::Value::String(value_text.to_string()));
-        let mut node = &mut root;
-        let parts: Vec<&str> = path.split('.').collect();
-        for (i, part) in parts.iter().enumerate() {
-            let last = i + 1 == parts.len();
-            let here = parts[..=i].join(".");
-            node = match node {
-                serde_json::Value::Object(map) => {
-                    if !map.contains_key(*part) {
-                        if last {
-                            // Optional fields (e.g. commands.N.heading_deg) are absent when unset.
-                            map.insert(part.to_string(), serde_json::Value::Null);
-                        } else {
-                            return Err(unknown_path(&here, value_text));
-                        }
-                    }
-                    map.get_mut(*part).ok_or_else(|| unknown_path(&here, value_text))?
-                }
-                serde_json::Value::Array(items) => {
-                    let idx: usize = part.parse().map_err(|_| unknown_path(&here, value_text))?;
-                    let len = items.len();
-                    items.get_mut(idx).ok_or_else(|| {
-                        one_error(&here, value_text, &format!("index out of range (0 to {})", len.saturating_sub(1)))
-                    })?
-                }
-                _ => return Err(unknown_path(&here, value_text)),
-            };
+        self.with_overrides(&[(path, value_text)])
+    }
+
+    /// The same for several (path, value) pairs at once, checked together: fields that must
+    /// change together (sea.h_sig_m with sea.omega_n_rad_s) can, in either order.
+    pub fn with_overrides(&self, sets: &[(&str, &str)]) -> Result<Scenario, ScenarioError> {
+        let Some((first, first_value)) = sets.first() else { return Ok(self.clone()) };
+        let mut root = serde_json::to_value(self).map_err(|e| one_error(first, first_value, &e))?;
+        for (path, value_text) in sets {
+            set_path(&mut root, path, value_text)?;
         }
-        *node = new_value;
         Scenario::from_value(root)
     }
+}
+
+/// Where `input` has an array for a section that `schema` (the default scenario's JSON) has as an
+/// object: one error each, named by path (the root is "scenario").
+fn arrays_for_objects(input: &serde_json::Value, schema: &serde_json::Value, path: &str, out: &mut Vec<FieldError>) {
+    let serde_json::Value::Object(fields) = schema else { return };
+    match input {
+        serde_json::Value::Array(_) => out.push(FieldError {
+            path: if path.is_empty() { "scenario".into() } else { path.into() },
+            value: crate::validate::shorten(&input.to_string()),
+            message: "must be a JSON object of named fields ({...}), not an array".into(),
+        }),
+        serde_json::Value::Object(map) => {
+            for (k, v) in map {
+                if let Some(sub) = fields.get(k) {
+                    let p = if path.is_empty() { k.clone() } else { format!("{path}.{k}") };
+                    arrays_for_objects(v, sub, &p, out);
+                }
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Writes `value_text` (JSON, or else a string) at dotted `path` of a scenario's JSON.
+fn set_path(root: &mut serde_json::Value, path: &str, value_text: &str) -> Result<(), ScenarioError> {
+    let new_value: serde_json::Value =
+        serde_json::from_str(value_text).unwrap_or_else(|_| serde_json::Value::String(value_text.to_string()));
+    let mut node = root;
+    let parts: Vec<&str> = path.split('.').collect();
+    for (i, part) in parts.iter().enumerate() {
+        let last = i + 1 == parts.len();
+        let here = parts[..=i].join(".");
+        node = match node {
+            serde_json::Value::Object(map) => {
+                if !map.contains_key(*part) {
+                    if last {
+                        // Optional fields (e.g. commands.N.heading_deg) are absent when unset.
+                        map.insert(part.to_string(), serde_json::Value::Null);
+                    } else {
+                        return Err(unknown_path(&here, value_text));
+                    }
+                }
+                map.get_mut(*part).ok_or_else(|| unknown_path(&here, value_text))?
+            }
+            serde_json::Value::Array(items) => {
+                let idx: usize = part.parse().map_err(|_| unknown_path(&here, value_text))?;
+                let len = items.len();
+                items.get_mut(idx).ok_or_else(|| {
+                    one_error(&here, value_text, &format!("index out of range (0 to {})", len.saturating_sub(1)))
+                })?
+            }
+            _ => return Err(unknown_path(&here, value_text)),
+        };
+    }
+    *node = new_value;
+    Ok(())
 }
 
 /// Fields of earlier scenario files that the hull now owns: (section, field, where it went).

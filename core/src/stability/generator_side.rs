@@ -318,7 +318,7 @@ impl GeneratorSideParams {
         // cos mu = 1 - 2 k2 i_dc / (k1 |v|), so mu = 60 deg at v~ / (k1 |v|) = 3/4. Past it the
         // equations still solve, but to nothing a diode bridge does (the bus goes negative near
         // 400 A at the default field): refused, with the way back.
-        if !(ss.cos_phi >= MODE_1_MIN_RATIO) {
+        if ss.cos_phi.is_nan() || ss.cos_phi < MODE_1_MIN_RATIO {
             return Err(format!(
                 "the generator-side steady state at load current I = {i_load} A (omega = {omega_star} rad/s, v_fd = {v_fd} V) lies outside the rectifier model: the commutation overlap passes 60 degrees (v~ / (k1 |v|) = {:.3}; eqs. 4.8-4.10 hold from {MODE_1_MIN_RATIO} up; the bus would be at {:.1} V); lower the load current I or raise the field voltage v_fd",
                 ss.cos_phi, ss.v_dc
