@@ -705,10 +705,11 @@ impl RowStats {
             n: rows.iter().map(|r| r.n).collect(),
             min: each(&|r| r.min),
             max: each(&|r| r.max),
-            plus_2sigma: each(&|r| r.mean() + 2.0 * r.std()),
-            minus_2sigma: each(&|r| r.mean() - 2.0 * r.std()),
+            // The spread needs two trials or more (a row where one is left has none).
+            plus_2sigma: rows.iter().map(|r| r.std_defined().map(|s| r.mean() + 2.0 * s)).collect(),
+            minus_2sigma: rows.iter().map(|r| r.std_defined().map(|s| r.mean() - 2.0 * s)).collect(),
             mean: each(&|r| r.mean()),
-            std: rows.iter().map(|r| Some(r.std())).collect(),
+            std: rows.iter().map(|r| r.std_defined()).collect(),
         }
     }
 }
@@ -830,14 +831,14 @@ pub fn study_summary(p: &Partial) -> Result<StudySummary, String> {
     let ec = &p.excess_vs_calm_mj;
     let excess_energy_mj = m.excess_energy.then(|| ExcessEnergy {
         mean: stat(ee.n, ee.mean()),
-        std: Some(ee.std()),
+        std: ee.std_defined(),
         min: stat(ee.n, ee.min),
         max: stat(ee.n, ee.max),
         histogram: (&p.excess_hist).into(),
         definition: "energy drawn by one motor minus that drawn in the same sea without surface losses [MJ]",
         vs_calm_water: ExcessVsCalm {
             mean: stat(ec.n, ec.mean()),
-            std: Some(ec.std()),
+            std: ec.std_defined(),
             histogram: (&p.excess_vs_calm_hist).into(),
             definition:
                 "energy drawn by one motor minus its calm-water power at the ordered speed times the duration [MJ]",
@@ -855,14 +856,14 @@ pub fn study_summary(p: &Partial) -> Result<StudySummary, String> {
             censored: p.censored,
             cap_s: sc.sim.duration_s,
             mean: stat(events, p.arrival.mean()),
-            std: Some(p.arrival.std()),
-            skewness: Some(p.arrival.skewness()),
-            kurtosis: Some(p.arrival.kurtosis()),
+            std: p.arrival.std_defined(),
+            skewness: p.arrival.skewness_defined(),
+            kurtosis: p.arrival.kurtosis_defined(),
             median: stat(p.arrival_hist.total(), p.arrival_hist.median()),
-            mode: Some(p.arrival_hist.mode()),
+            mode: stat(p.arrival_hist.total(), p.arrival_hist.mode()),
             histogram: (&p.arrival_hist).into(),
             mean_censored: stat(p.exposure.n, p.exposure.mean()),
-            std_censored: Some(p.exposure.std()),
+            std_censored: p.exposure.std_defined(),
             rate_per_s: (exposure_total > 0.0).then(|| events as f64 / exposure_total),
         },
         rice: rice_summary(sc)?,
@@ -871,8 +872,8 @@ pub fn study_summary(p: &Partial) -> Result<StudySummary, String> {
             t_s: m.histogram_time_s,
             n: p.at_time.n,
             mean: stat(p.at_time.n, p.at_time.mean()),
-            std: Some(p.at_time.std()),
-            skewness: Some(p.at_time.skewness()),
+            std: p.at_time.std_defined(),
+            skewness: p.at_time.skewness_defined(),
             histogram: (&p.at_time_hist).into(),
         },
         envelopes,

@@ -205,12 +205,32 @@ impl ExactMoments {
         self.sums[k - 1] as f64 / self.n.max(1) as f64 / libm::pow(self.scale(), k as f64)
     }
 
+    /// The mean; within [min, max], which the values' quantisation to the grid could leave by
+    /// a grid step (a mean above the largest value, measured 5e-6 rpm over 60 trials).
     pub fn mean(&self) -> f64 {
         if self.n == 0 {
             f64::NAN
         } else {
-            self.raw(1)
+            self.raw(1).clamp(self.min, self.max)
         }
+    }
+
+    /// The sample standard deviation where it is defined (two values or more), else None.
+    pub fn std_defined(&self) -> Option<f64> {
+        (self.n >= 2).then(|| self.std())
+    }
+
+    /// The skewness where it is defined (three values or more, not all equal, third and fourth
+    /// moments kept), else None.
+    pub fn skewness_defined(&self) -> Option<f64> {
+        let (mu2, _, _) = self.central();
+        (self.n >= 3 && mu2 > 0.0 && self.order >= 4).then(|| self.skewness())
+    }
+
+    /// The kurtosis where it is defined (four values or more, not all equal), else None.
+    pub fn kurtosis_defined(&self) -> Option<f64> {
+        let (mu2, _, _) = self.central();
+        (self.n >= 4 && mu2 > 0.0 && self.order >= 4).then(|| self.kurtosis())
     }
 
     /// Sample standard deviation (n - 1).
@@ -420,6 +440,27 @@ mod exact_tests {
 
 #[cfg(test)]
 mod tests {
+
+    /// The defined statistics: a spread needs two values, skewness three and kurtosis four (and
+    /// values not all equal); the mean stays within the values although each is quantised to
+    /// 2^-16 (160.903055906... rounds up to ...061 on the grid: the mean was above the largest).
+    #[test]
+    fn statistics_are_none_where_undefined_and_the_mean_stays_within_the_values() {
+        let mut x = ExactMoments::new(16, 4);
+        assert_eq!(x.std_defined(), None);
+        let v = 160.903_055_906_900_42;
+        x.push(v);
+        assert_eq!((x.std_defined(), x.skewness_defined(), x.kurtosis_defined()), (None, None, None));
+        assert_eq!(x.mean(), v);
+        x.push(v);
+        x.push(v);
+        assert_eq!(x.std_defined(), Some(0.0));
+        assert_eq!((x.skewness_defined(), x.kurtosis_defined()), (None, None));
+        x.push(v + 1.0);
+        assert!(x.std_defined().unwrap() > 0.0 && x.skewness_defined().is_some() && x.kurtosis_defined().is_some());
+        assert!(x.mean() >= v && x.mean() <= v + 1.0);
+    }
+
     use super::*;
     use rand::{RngExt, SeedableRng};
     use rand_chacha::ChaCha8Rng;
