@@ -285,6 +285,10 @@ fn class6_messages_name_the_field_briefly() {
     refused(&["run", "-"], br#"{"ship": {"mass_kg": 7e6, "mass_kg": 8e6}}"#, "duplicate key ship.mass_kg");
     let deep = format!(r#"{{"commands": {}}}"#, "[".repeat(64));
     refused(&["run", "-"], deep.as_bytes(), "nesting deeper than 32 levels at commands.0");
+    // A huge number is quoted in its exponent form wherever it appears (it printed 301 digits).
+    let o = run(&["run", "-"], br#"{"sim": {"duration_s": 1e300}}"#);
+    assert_eq!(o.code, Some(1));
+    assert!(o.err.contains("with sim.duration_s = 1e300 this records") && !o.err.contains("0000000000"), "{}", o.err);
 }
 
 #[test]

@@ -357,7 +357,10 @@ impl SimSettings {
             v.fail(
                 "duration_s",
                 self.duration_s,
-                format!("with sim.dt_s = {} this is {steps:.3e} steps; at most {MAX_STEPS:e}", self.dt_s),
+                format!(
+                    "with sim.dt_s = {} this is {steps:.3e} steps; at most {MAX_STEPS:e}",
+                    crate::validate::num(self.dt_s)
+                ),
             );
         }
         let rows = self.duration_s / self.record_interval_s;
@@ -367,7 +370,7 @@ impl SimSettings {
                 self.record_interval_s,
                 format!(
                     "with sim.duration_s = {} this records {rows:.3e} rows of {} columns; at most {:.0} rows ({MAX_RECORDED_VALUES:e} values): raise the interval or shorten the run",
-                    self.duration_s,
+                    crate::validate::num(self.duration_s),
                     crate::signals::N_SIGNALS,
                     MAX_RECORDED_ROWS.floor()
                 ),
@@ -484,7 +487,7 @@ impl Scenario {
                     self.sim.duration_s,
                     format!(
                         "with sim.dt_s = {} this is {:.3e} steps and {work:.3e} units of work (steps times state size); at most {MAX_WORK:e}: shorten the run or raise sim.dt_s",
-                        self.sim.dt_s,
+                        crate::validate::num(self.sim.dt_s),
                         self.sim.duration_s / self.sim.dt_s
                     ),
                 )

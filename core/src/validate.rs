@@ -157,7 +157,13 @@ impl Validator {
     /// A problem with a field of the present section.
     pub fn fail(&mut self, field: &str, value: impl fmt::Display, message: impl Into<String>) {
         let path = self.path(field);
-        self.errors.push(FieldError { path, value: shorten(&value.to_string()), message: message.into() });
+        // A long number (1e300 prints 301 digits) in its exponent form, then cut like any value.
+        let text = value.to_string();
+        let text = match text.parse::<f64>() {
+            Ok(x) if text.len() > 24 => num(x),
+            _ => text,
+        };
+        self.errors.push(FieldError { path, value: shorten(&text), message: message.into() });
     }
 
     /// Whether nothing has failed so far.
