@@ -142,7 +142,20 @@ impl Validator {
 
     /// A number in [lo, hi] (NaN and infinities fail).
     pub fn range(&mut self, field: &str, v: f64, lo: f64, hi: f64) {
-        if !(v.is_finite() && v >= lo && v <= hi) {
+        if lo > hi {
+            // A range set by other fields (a hull's draft sets those of KG, the shafts, the hub)
+            // can close up: no value of this field helps, and a range "from 3 to 0.4" would
+            // read as a typo.
+            self.fail(
+                field,
+                num(v),
+                format!(
+                    "no value fits: the range the other fields leave it (from {} down to {}) is empty; change those (for a hull: its draft or mass)",
+                    num(lo),
+                    num(hi)
+                ),
+            );
+        } else if !(v.is_finite() && v >= lo && v <= hi) {
             self.fail(field, num(v), format!("must be a number from {} to {}", num(lo), num(hi)));
         }
     }
@@ -398,6 +411,19 @@ mod tests {
     struct P {
         mass_kg: f64,
         blades: u32,
+    }
+
+    /// A range that other fields closed up says so instead of "from 3 to 0.4".
+    #[test]
+    fn an_empty_range_says_no_value_fits() {
+        let mut v = Validator::new();
+        v.range("kg_m", 7.5, 3.0, 0.4);
+        let e = v.finish().unwrap_err();
+        assert!(
+            e.0[0].message.starts_with("no value fits: the range the other fields leave it (from 3 down to 0.4)"),
+            "{}",
+            e.0[0].message
+        );
     }
 
     #[test]
