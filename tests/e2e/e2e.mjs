@@ -636,7 +636,10 @@ await check('the tabs follow the ARIA pattern: arrow keys move between them', as
   assert(await p.evaluate(() => document.activeElement.id === 'tab-design'), 'focus did not follow');
   await p.keyboard.press('End');
   assert((await p.getAttribute('#tab-ips', 'aria-selected')) === 'true', 'End did not select the stability tab');
+  // "Skip to the results" goes to the shown tab's results.
+  assert((await p.getAttribute('a.skip', 'href')) === '#ips-plots', 'the skip link does not lead to the stability results');
   await p.keyboard.press('Home');
+  assert((await p.getAttribute('a.skip', 'href')) === '#results', 'the skip link did not come back');
   assert((await p.getAttribute('#tab-sim', 'aria-selected')) === 'true', 'Home did not come back');
   await p.close();
 });

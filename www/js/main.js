@@ -343,6 +343,7 @@ function cancel() {
 
 // Tabs (ARIA pattern): click, or arrow keys / Home / End on the tab list.
 const TABS = [['tab-sim', 'panel-sim'], ['tab-design', 'panel-design'], ['tab-ips', 'panel-ips']];
+const SKIP_TARGETS = { 'tab-sim': '#results', 'tab-ips': '#ips-plots', 'tab-design': '#design-plots' };
 function selectTab(id, focus = false) {
   for (const [tab, panel] of TABS) {
     const on = tab === id;
@@ -351,6 +352,8 @@ function selectTab(id, focus = false) {
     $(panel).hidden = !on;
   }
   if (focus) $(id).focus();
+  // "Skip to the results" goes to the shown tab's results (the simulator's are hidden here).
+  document.querySelector('a.skip').setAttribute('href', SKIP_TARGETS[id]);
   if (id === 'tab-ips') stability.update();
   if (id === 'tab-design') design.update();
 }
