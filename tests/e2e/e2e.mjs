@@ -417,6 +417,11 @@ await check('stability tab shows poles and Bode plots, and follows the slider', 
   assert((await page.$$eval('#ips-plots .uplot', (els) => els.length)) === 2, 'no Bode plots');
   assert((await page.$$eval('#ips-plots canvas.track', (els) => els.length)) === 1, 'no pole map');
   assert((await page.$$eval('#ips-poles tbody tr', (r) => r.length)) === 6, 'expected 6 poles above the torque threshold');
+  // The steady state says which side of the torque threshold it is (eqs. 4.23-4.24).
+  assert(/not active \(T\*\* below/.test(before) && /rotor-flux limitactive \(T\*\* above/.test(await page.textContent('#ips-steady')), 'the flux limit row does not follow the torque');
+  // The plots' text alternative says where a line peaks (the resonance's frequency).
+  const peak = await page.$eval('#ips-plots .plot details table tbody tr td:nth-child(4)', (td) => td.textContent);
+  assert(/ at [\d.e+-]+ Hz$/.test(peak), `the Bode table's highest value does not say where: ${peak}`);
   await page.screenshot({ path: `${shots}/stability.png` });
 });
 await check('controller design tab: LTR closes the gap to the Kalman target as q grows; margins; the acceleration beside the PI loops', async () => {

@@ -216,15 +216,22 @@ export class PlotBox {
   }
 
   // Under a plot: what the shading means, PNG export, and the text alternative (a table of each
-  // line's first, lowest, highest and last value).
+  // line's first, lowest and highest with where they are, and last value).
   tools(title, u, x, series, key) {
     const png = el('button', { type: 'button', textContent: 'PNG' });
     png.setAttribute('aria-label', `Save "${title}" as PNG`);
     png.addEventListener('click', () => downloadUrl(`${(title || 'plot').replace(/[^\w]+/g, '-').slice(0, 60)}.png`, u.ctx.canvas.toDataURL('image/png')));
+    // Where each line is lowest and highest, as well (a resonance's frequency, a dip's time).
+    const xs = Array.from(x.data);
+    const xUnit = (/\[([^\]]+)\]/.exec(x.label) || [])[1];
+    const at = (i) => `${fmt(xs[i])}${xUnit && xUnit !== '-' ? ` ${xUnit}` : ''}`;
     const rows = series.map((s) => {
-      const v = Array.from(s.data).filter((y) => y != null && Number.isFinite(y));
+      const idx = Array.from(s.data).map((y, i) => [y, i]).filter(([y]) => y != null && Number.isFinite(y));
+      if (!idx.length) return el('tr', {}, el('th', { scope: 'row', textContent: s.label }), ...[0, 1, 2, 3].map(() => el('td', { textContent: '–' })));
+      const lo = idx.reduce((a, b) => (b[0] < a[0] ? b : a)), hi = idx.reduce((a, b) => (b[0] > a[0] ? b : a));
       return el('tr', {}, el('th', { scope: 'row', textContent: s.label }),
-        ...[v[0], Math.min(...v), Math.max(...v), v[v.length - 1]].map((y) => el('td', { textContent: v.length ? fmt(y) : '–' })));
+        el('td', { textContent: fmt(idx[0][0]) }), el('td', { textContent: `${fmt(lo[0])} at ${at(lo[1])}` }),
+        el('td', { textContent: `${fmt(hi[0])} at ${at(hi[1])}` }), el('td', { textContent: fmt(idx[idx.length - 1][0]) }));
     });
     const table = el('table', {}, el('caption', { textContent: `${title}: over ${x.label}` }),
       el('thead', {}, el('tr', {}, ...['line', 'first', 'lowest', 'highest', 'last'].map((h) => el('th', { scope: 'col', textContent: h })))),

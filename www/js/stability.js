@@ -6,7 +6,8 @@ import { REQUEST } from './protocol.js';
 import { sizedCanvas } from './plots.js';
 
 const STEADY = {
-  motor: [['t_m0', 'T_m0 [N m]'], ['t_ref0', 'T** [N m]'], ['omega_r0', 'ω_r0 [rad/s]'], ['omega_s0', 'ω_s0 [rad/s]'], ['i_s_mag', '|i_s| [A]'], ['i_r_mag', '|i_r| [A]'], ['v_s_mag', '|v_s| [V]']],
+  motor: [['t_m0', 'T_m0 [N m]'], ['t_ref0', 'T** [N m]'], ['omega_r0', 'ω_r0 [rad/s]'], ['omega_s0', 'ω_s0 [rad/s]'], ['i_s_mag', '|i_s| [A]'], ['i_r_mag', '|i_r| [A]'], ['v_s_mag', '|v_s| [V]'],
+    ['t_threshold', 'torque threshold [N m]']],
   generator: [['v_gs_mag', '|v_gs| [V]'], ['i_gs_mag', '|i_gs| [A]'], ['i_fd', 'i_fd [A]'], ['v_dc_rect', 'ṽ_dc [V]'], ['v_dc', 'v_dc, bus [V]'], ['i_dc', 'i_dc [A]'], ['cos_phi', 'cos φ']],
 };
 const TRANSFER = {
@@ -58,7 +59,11 @@ export class StabilityTab {
 
   show(r, a) {
     const st = r.steady_state;
-    $('ips-steady').querySelector('tbody').replaceChildren(...STEADY[a.side].map(([k, label]) => row(label, [Number(st[k]).toPrecision(5)])));
+    const rows = STEADY[a.side].map(([k, label]) => row(label, [Number(st[k]).toPrecision(5)]));
+    // Eqs. 4.23-4.24: above the torque threshold the rotor-flux limit alters the slip (Figs. 4-8
+    // and 4-9 compare the two regimes).
+    if (a.side === 'motor') rows.push(row('rotor-flux limit', [st.above_threshold ? 'active (T** above the threshold)' : 'not active (T** below the threshold)']));
+    $('ips-steady').querySelector('tbody').replaceChildren(...rows);
     $('ips-poles').querySelector('tbody').replaceChildren(...r.poles.map((p) => el('tr', {}, ...poleCells(p))));
     this.box.clear();
     this.poleMap(r.poles);
