@@ -556,8 +556,10 @@ impl Scenario {
         }
         // serde would fill a section from an array, field by field in order: refused, so that a
         // scenario means what its names say.
+        static SHAPE: std::sync::OnceLock<serde_json::Value> = std::sync::OnceLock::new();
+        let shape = SHAPE.get_or_init(|| serde_json::to_value(Scenario::default()).unwrap_or_default());
         let mut arrays = Vec::new();
-        arrays_for_objects(&value, &serde_json::to_value(Scenario::default()).unwrap_or_default(), "", &mut arrays);
+        arrays_for_objects(&value, shape, "", &mut arrays);
         if !arrays.is_empty() {
             return Err(ScenarioError(arrays));
         }

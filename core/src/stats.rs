@@ -440,6 +440,9 @@ mod exact_tests {
 
 #[cfg(test)]
 mod tests {
+    use super::*;
+    use rand::{RngExt, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
 
     /// The defined statistics: a spread needs two values, skewness three and kurtosis four (and
     /// values not all equal); the mean stays within the values although each is quantised to
@@ -460,10 +463,6 @@ mod tests {
         assert!(x.std_defined().unwrap() > 0.0 && x.skewness_defined().is_some() && x.kurtosis_defined().is_some());
         assert!(x.mean() >= v && x.mean() <= v + 1.0);
     }
-
-    use super::*;
-    use rand::{RngExt, SeedableRng};
-    use rand_chacha::ChaCha8Rng;
 
     fn sample(n: usize, seed: u64) -> Vec<f64> {
         let mut r = ChaCha8Rng::seed_from_u64(seed);

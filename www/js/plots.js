@@ -96,7 +96,7 @@ export class PlotBox {
   }
 
   clear() {
-    for (const p of this.plots) p.destroy();
+    for (const p of this.plots) { ALL_PLOTS.delete(p); p.destroy(); }
     this.plots = [];
     this.observer.disconnect();
     this.box.replaceChildren();

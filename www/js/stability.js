@@ -152,8 +152,10 @@ export function numberBoxError(input, name) {
 // at fault is marked invalid (aria-invalid, its message read by aria-describedby).
 export function markStale(results, status, stale, input = null, message = '') {
   for (const r of results) r.classList.toggle('stale', stale);
-  status.textContent = stale ? `${message} (the results below are still those of the last valid values)` : status.textContent;
-  status.className = stale ? 'error' : status.className;
+  if (stale) {
+    status.textContent = `${message} (the results below are still those of the last valid values)`;
+    status.className = 'error';
+  }
   for (const i of document.querySelectorAll(`[aria-describedby="${status.id}"]`)) { i.removeAttribute('aria-invalid'); i.removeAttribute('aria-describedby'); }
   if (stale && input) { input.setAttribute('aria-invalid', 'true'); input.setAttribute('aria-describedby', status.id); }
 }
