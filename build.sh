@@ -11,6 +11,7 @@
 #   ./build.sh bench      simulated seconds per wall second of the start-up preset
 #   ./build.sh fuzz       the property tests of every entry point (tests/fuzz.rs) with many more
 #                         cases (AES_FUZZ_CASES, default 20000; a few minutes), before releases
+#   ./build.sh docs       regenerate the README's table of scenario parameters from the registry
 #   ./build.sh golden     regenerate the golden records of every preset (tests/golden/) after a
 #                         deliberate physics change; review the diff before committing
 #
@@ -173,6 +174,20 @@ case "${1:-serve}" in
     ./target/release/aes-sim validate --out docs/validation.md
     git --no-pager diff --stat -- docs/validation.md || true
     ;;
+  docs)
+    # The README's scenario table, from the parameter registry (tests/registry.rs checks it).
+    build_native
+    python3 - <<'PY'
+import subprocess
+table = subprocess.check_output(["./target/release/aes-sim", "params", "--markdown"], text=True).rstrip("\n") + "\n"
+text = open("README.md").read()
+begin, end = "<!-- params:begin -->\n", "<!-- params:end -->"
+a = text.index(begin) + len(begin)
+b = text.index(end, a)
+open("README.md", "w").write(text[:a] + table + text[b:])
+PY
+    git --no-pager diff --stat -- README.md || true
+    ;;
   golden)
     UPDATE_GOLDEN=1 cargo test --release -p aes-tests --test golden
     git --no-pager diff --stat -- tests/golden || true
@@ -183,7 +198,7 @@ case "${1:-serve}" in
     ./target/release/aes-sim bench startup
     ;;
   *)
-    echo "usage: ./build.sh [serve|build|test|bench|fuzz|golden|validate]" >&2
+    echo "usage: ./build.sh [serve|build|test|bench|fuzz|golden|validate|docs]" >&2
     exit 2
     ;;
 esac

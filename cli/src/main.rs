@@ -105,6 +105,15 @@ enum Cmd {
         #[arg(long)]
         json: bool,
     },
+    /// List every scenario parameter: path, unit, default, allowed values and label (`--json`
+    /// for the full declarations: help, source, page group, per-unit base; `--markdown` for the
+    /// README's table).
+    Params {
+        #[arg(long, conflicts_with = "markdown")]
+        json: bool,
+        #[arg(long)]
+        markdown: bool,
+    },
     /// Print a preset scenario as JSON (a starting point for your own).
     Preset {
         /// Preset name (see `aes-sim presets`).
@@ -523,6 +532,34 @@ fn real_main() -> Result<(), Failure> {
                 emit(text.trim_end())?;
             }
         }
+        Cmd::Params { json, markdown } => {
+            let all = aes_core::params::all();
+            if json {
+                emit_json(&all)?;
+            } else if markdown {
+                emit(aes_core::params::markdown_table().trim_end())?;
+            } else {
+                let mut text = String::new();
+                for m in &all {
+                    let default = match &m.default {
+                        serde_json::Value::Null => "-".to_string(),
+                        v => shorten(&v.to_string()),
+                    };
+                    let range = match (m.min, m.max) {
+                        (Some(lo), Some(hi)) => {
+                            format!("{} .. {}", aes_core::validate::num(lo), aes_core::validate::num(hi))
+                        }
+                        _ if !m.choices.is_empty() => m.choices.iter().map(|c| c.value).collect::<Vec<_>>().join(" | "),
+                        _ => m.kind.to_string(),
+                    };
+                    text.push_str(&format!(
+                        "{:<44} {:<10} {:<14} {:<28} {}\n",
+                        m.path, m.unit, default, range, m.label
+                    ));
+                }
+                emit(text.trim_end())?;
+            }
+        }
         Cmd::Preset { name } => {
             let sc = preset(&name)
                 .ok_or_else(|| format!("no preset named '{}' (try: {})", shorten(&name), PRESET_NAMES.join(", ")))?;
@@ -586,7 +623,7 @@ fn real_main() -> Result<(), Failure> {
             let mut t = aes_core::design::LqgLtrParams::default();
             tuning.apply(&mut t);
             let mut v = aes_core::validate::Validator::new();
-            v.section("controllers", |v| v.section("lqg_ltr", |v| t.validate(v)));
+            v.section("controllers", |v| v.section("lqg_ltr", |v| aes_core::params::Section::check_fields(&t, v)));
             v.finish().map_err(|e| e.to_string())?;
             let rows = aes_core::controller_study::compare(&t)?;
             if json {

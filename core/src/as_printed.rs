@@ -16,57 +16,81 @@
 //! (`core/src/stability`), not a scenario run; eq. 2.34's Lewis area coefficient and eq. 2.35's
 //! bulb map (README) are not switches yet.
 
-use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 
-/// The `as_printed` section of the scenario. All `false` (the default) is the corrected model.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct AsPrintedParams {
-    /// Eqs. 2.55 and 2.59 print the encounter frequency omega = |omega0 - k U cos beta| in front
-    /// of t *and* the moving position k (x cos mu + y sin mu) in the phase, which counts the
-    /// Doppler shift twice: at speed U into head seas the phase turns at omega0 + 2 k U.
-    /// Corrected: the wave frequency omega0 in front of t with the moving position, so the phase
-    /// turns at the encounter frequency. As printed: the phase gains (omega - omega0) dt on top,
-    /// with omega at the speed and heading of the last RAO look-up.
-    pub doppler_twice: bool,
-    /// Appendix A's two typos against STF (1970), which the thesis says it takes verbatim: eq. 5
-    /// prints -(U^2/omega^2) B33^0 in A35 (STF: -(U/omega^2) B33^0; the printed term does not
-    /// even have A35's units) and eq. 17 prints +U A53^0 in B35 (STF: +U A33^0). Corrected: STF.
-    /// As printed: the RAO table is computed with the printed A35 and B35.
-    pub appendix_a_typos: bool,
-    /// Eq. 2.47 (second-order mean force, after Salvesen 1978) conjugates only the Froude-Krylov
-    /// force: (i/2) k H_j ((F_j^I)' + ^F_j^D). Salvesen's real part needs the diffraction force of
-    /// the conjugate incident wave conjugated too; the printed form does not vanish in long waves
-    /// (added resistance coefficient 1.0 at lambda/L = 4.8 and Fn 0.28, against 0.1 corrected and
-    /// 0.01 by Gerritsma-Beukelman). As printed: ^F_j^D unconjugated.
-    pub eq_2_47_conjugate: bool,
-    /// Ch. 2.2.3 calls E_a "rms line-to-line", while eq. 2.8's v_DC = (3 sqrt(6)/pi) E_a is the
-    /// bridge formula in phase rms. Corrected: E_a is the phase emf, so Table 5.3's 4160 V line
-    /// to line take 500 A of field current and the bus sits at 5618 V. As printed: E_a is the
-    /// line-to-line value, so the rated 4160 V is the E_a of eq. 2.8, the field current for it
-    /// (and the field voltage ceiling) are sqrt(3) times larger, and the bus set point
-    /// (`controllers.field.bus_voltage_ref_v`) is read as sqrt(3) times itself, 9731 V.
-    pub ea_line_to_line: bool,
-    /// Eq. 2.5 prints Q_m = 3 eta_m |I_r|^2 R_rm / omega_rm: the rotor copper loss over the shaft
-    /// speed. Corrected: the converted power 3 |I_r|^2 R_r (1-s)/s over the shaft speed, i.e.
-    /// p P_airgap / omega_e. As printed: the copper loss over the shaft speed, s/(1-s) times the
-    /// corrected torque (a motor that makes about 1 % of its torque at its working slip), with
-    /// the shaft speed kept above 1 rad/s so that standstill stays finite.
-    pub eq_2_5_copper_loss: bool,
-    /// Table 2.1's P = 12 is called pole pairs while ch. 2.2.2 writes omega_r = (P_m/2) omega_rm
-    /// as if P were poles. Corrected: 12 pole pairs, the 300 rpm machine of ch. 5. As printed
-    /// (poles): `plant.motor.pole_pairs` counts poles, so the motor has half as many pole pairs,
-    /// a 600 rpm machine at 60 Hz.
-    pub motor_p_is_poles: bool,
-    /// Tables 5.1 and 5.5 give the ship L = 180 m, x_p = 75 m and m = 7e6 kg, while its hull, the
-    /// DTMB 5415 (the DDG-51's public form), has Lpp = 142 m, the rudder 67 m aft of the centre
-    /// of gravity and 8.64e6 kg at its 6.15 m draft. Corrected: the hull's numbers everywhere
-    /// (`ship_hull`). As printed: the maneuvering prime system takes L = 180 m, the rudder's lever
-    /// 75 m and the surge model's mass 7e6 kg (the seakeeping hull and the propellers' place stay
-    /// the hull's: 75 m aft of the centre of gravity is behind a 142 m hull's stern).
-    pub table_5_ship: bool,
+crate::params! {
+    /// The `as_printed` section of the scenario. All `false` (the default) is the corrected model.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct AsPrintedParams {
+        /// Eqs. 2.55 and 2.59 print the encounter frequency omega = |omega0 - k U cos beta| in front
+        /// of t *and* the moving position k (x cos mu + y sin mu) in the phase, which counts the
+        /// Doppler shift twice: at speed U into head seas the phase turns at omega0 + 2 k U.
+        /// Corrected: the wave frequency omega0 in front of t with the moving position, so the phase
+        /// turns at the encounter frequency. As printed: the phase gains (omega - omega0) dt on top,
+        /// with omega at the speed and heading of the last RAO look-up.
+        pub doppler_twice: bool = false => {
+            label: "Eqs. 2.55/2.59 as printed", source: "corrected by default (README: where the thesis was inconsistent)",
+            help: "Doppler shift counted twice in the wave phase.",
+        },
+        /// Appendix A's two typos against STF (1970), which the thesis says it takes verbatim: eq. 5
+        /// prints -(U^2/omega^2) B33^0 in A35 (STF: -(U/omega^2) B33^0; the printed term does not
+        /// even have A35's units) and eq. 17 prints +U A53^0 in B35 (STF: +U A33^0). Corrected: STF.
+        /// As printed: the RAO table is computed with the printed A35 and B35.
+        pub appendix_a_typos: bool = false => {
+            label: "Appendix A eqs. 5, 17 as printed", source: "corrected by default (README: where the thesis was inconsistent)",
+            help: "The two typos against STF (1970) in A35 and B35.",
+        },
+        /// Eq. 2.47 (second-order mean force, after Salvesen 1978) conjugates only the Froude-Krylov
+        /// force: (i/2) k H_j ((F_j^I)' + ^F_j^D). Salvesen's real part needs the diffraction force of
+        /// the conjugate incident wave conjugated too; the printed form does not vanish in long waves
+        /// (added resistance coefficient 1.0 at lambda/L = 4.8 and Fn 0.28, against 0.1 corrected and
+        /// 0.01 by Gerritsma-Beukelman). As printed: ^F_j^D unconjugated.
+        pub eq_2_47_conjugate: bool = false => {
+            label: "Eq. 2.47 as printed", source: "corrected by default (README: where the thesis was inconsistent)",
+            help: "Only the Froude-Krylov force conjugated in the mean drift force.",
+        },
+        /// Ch. 2.2.3 calls E_a "rms line-to-line", while eq. 2.8's v_DC = (3 sqrt(6)/pi) E_a is the
+        /// bridge formula in phase rms. Corrected: E_a is the phase emf, so Table 5.3's 4160 V line
+        /// to line take 500 A of field current and the bus sits at 5618 V. As printed: E_a is the
+        /// line-to-line value, so the rated 4160 V is the E_a of eq. 2.8, the field current for it
+        /// (and the field voltage ceiling) are sqrt(3) times larger, and the bus set point
+        /// (`controllers.field.bus_voltage_ref_v`) is read as sqrt(3) times itself, 9731 V.
+        pub ea_line_to_line: bool = false => {
+            label: "Eq. 2.8's E_a line to line", source: "corrected by default (README: where the thesis was inconsistent)",
+            help: "The bus at sqrt 3 times the phase reading (9731 V).",
+        },
+        /// Eq. 2.5 prints Q_m = 3 eta_m |I_r|^2 R_rm / omega_rm: the rotor copper loss over the shaft
+        /// speed. Corrected: the converted power 3 |I_r|^2 R_r (1-s)/s over the shaft speed, i.e.
+        /// p P_airgap / omega_e. As printed: the copper loss over the shaft speed, s/(1-s) times the
+        /// corrected torque (a motor that makes about 1 % of its torque at its working slip), with
+        /// the shaft speed kept above 1 rad/s so that standstill stays finite.
+        pub eq_2_5_copper_loss: bool = false => {
+            label: "Eq. 2.5 as printed", source: "corrected by default (README: where the thesis was inconsistent)",
+            help: "Motor torque as the rotor copper loss over shaft speed.",
+        },
+        /// Table 2.1's P = 12 is called pole pairs while ch. 2.2.2 writes omega_r = (P_m/2) omega_rm
+        /// as if P were poles. Corrected: 12 pole pairs, the 300 rpm machine of ch. 5. As printed
+        /// (poles): `plant.motor.pole_pairs` counts poles, so the motor has half as many pole pairs,
+        /// a 600 rpm machine at 60 Hz.
+        pub motor_p_is_poles: bool = false => {
+            label: "Table 2.1's P as poles", source: "corrected by default (README: where the thesis was inconsistent)",
+            help: "A 600 rpm motor: plant.motor.pole_pairs counts poles.",
+        },
+        /// Tables 5.1 and 5.5 give the ship L = 180 m, x_p = 75 m and m = 7e6 kg, while its hull, the
+        /// DTMB 5415 (the DDG-51's public form), has Lpp = 142 m, the rudder 67 m aft of the centre
+        /// of gravity and 8.64e6 kg at its 6.15 m draft. Corrected: the hull's numbers everywhere
+        /// (`ship_hull`). As printed: the maneuvering prime system takes L = 180 m, the rudder's lever
+        /// 75 m and the surge model's mass 7e6 kg (the seakeeping hull and the propellers' place stay
+        /// the hull's: 75 m aft of the centre of gravity is behind a 142 m hull's stern).
+        pub table_5_ship: bool = false => {
+            label: "Tables 5.1/5.5's ship", source: "corrected by default (README: where the thesis was inconsistent)",
+            help: "L = 180 m, x_p = 75 m, m = 7e6 kg in the maneuvering and surge models.",
+        },
+    }
 }
+
+impl crate::params::CrossCheck for AsPrintedParams {}
 
 impl AsPrintedParams {
     /// Every switch as printed.
@@ -127,9 +151,6 @@ impl AsPrintedParams {
             1.0
         }
     }
-
-    /// Every combination of switches is a model; nothing to check beyond the field names (serde).
-    pub fn validate(&self, _v: &mut Validator) {}
 }
 
 #[cfg(test)]

@@ -8,8 +8,6 @@
 //! balance across the rectifier, Re{3 (E_a i_s^* - R |i_s|^2)} = v_DC i_gDC, then holds exactly and
 //! fixes the generator's electrical power 3 Re{E_a i_s^*} (eq. 2.3).
 
-use crate::check_range;
-use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -110,70 +108,64 @@ impl DcLink {
     }
 }
 
-/// Rectifier, DC bus and inverter (eqs. 2.7-2.10, Table 5.4).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct DcLinkParams {
-    /// Bus capacitance C [F]. Table 5.4: 0.037.
-    pub capacitance_f: f64,
-    /// Notching resistance R_p between each rectifier and the bus [ohm]. Table 5.4: 0.05.
-    pub notching_resistance_ohm: f64,
-    /// Largest fundamental phase rms voltage the inverter can make, as a fraction of the bus
-    /// voltage [-]. Not given in the thesis; sqrt(2)/pi = 0.450, six-step operation, so that the
-    /// nominal 5618 V bus can drive the 4160 V motor at rated frequency with 5 % to spare.
-    /// This is the "dynamic saturation of motor voltage" of ch. 2.2.3.
-    pub inverter_voltage_ratio: f64,
-    /// Rectifier: "diode" (power flows only from the generators to the bus) or "reversible" (an
-    /// average model of a converter that also returns power to the generators, as ch. 5.2.2's
-    /// unbuffered braking needs to overspeed the turbines).
-    pub rectifier: RectifierKind,
-    /// Braking (dump) resistor on each bus, switched by a chopper [ohm]; 0 for none. Ch. 5.2.2's
-    /// "ideal power management". Our value for the braking preset: 1 ohm (31.6 MW at 5.62 kV).
-    pub brake_resistor_ohm: f64,
-    /// Bus voltage at which the chopper starts to conduct, per unit of the bus set point [-].
-    /// Our choice: 1.10, above the no-load voltage of the generators at the field current of full
-    /// power (1.08), so that the resistor takes the braking energy and not the generators' output;
-    /// it conducts fully 5 % higher.
-    pub brake_on_pu: f64,
-    /// The chopper's duty rises linearly from zero at `brake_on_pu` to full conduction this much
-    /// higher, per unit of the bus set point [-]. Our choice: 0.05, a proportional band narrow
-    /// enough to hold the bus within 5 % above the threshold at full braking power, wide enough to
-    /// avoid chattering at the 1 ms step.
-    pub brake_band_pu: f64,
-}
-
-impl Default for DcLinkParams {
-    fn default() -> Self {
-        DcLinkParams {
-            capacitance_f: 0.037,
-            notching_resistance_ohm: 0.05,
-            inverter_voltage_ratio: std::f64::consts::SQRT_2 / std::f64::consts::PI,
-            rectifier: RectifierKind::Diode,
-            brake_resistor_ohm: 0.0,
-            brake_on_pu: 1.10,
-            brake_band_pu: 0.05,
-        }
+crate::params! {
+    /// Rectifier, DC bus and inverter (eqs. 2.7-2.10, Table 5.4).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct DcLinkParams {
+        pub capacitance_f: f64 = 0.037 => {
+            label: "Bus capacitance", unit: "F", range: 1.0e-4..=100.0, source: "Table 5.4", group: "plant",
+            help: "Capacitance C of each DC bus (eq. 2.7).",
+        },
+        pub notching_resistance_ohm: f64 = 0.05 => {
+            label: "Notching resistance R_p", unit: "Ω", range: 1.0e-4..=10.0, source: "Table 5.4",
+            help: "Between each rectifier and the bus.",
+        },
+        /// sqrt(2)/pi = 0.450, six-step operation, so that the nominal 5618 V bus can drive the
+        /// 4160 V motor at rated frequency with 5 % to spare. This is the "dynamic saturation of
+        /// motor voltage" of ch. 2.2.3.
+        pub inverter_voltage_ratio: f64 = std::f64::consts::SQRT_2 / std::f64::consts::PI => {
+            label: "Inverter voltage limit", unit: "-", range: 0.1..=0.5,
+            source: "our choice: sqrt 2 / pi, six-step operation (not given in the thesis)",
+            help: "Largest motor phase rms voltage as a fraction of the bus voltage (ch. 2.2.3).",
+        },
+        /// "reversible" is an average model of a converter that also returns power to the
+        /// generators, as ch. 5.2.2's unbuffered braking needs to overspeed the turbines.
+        pub rectifier: RectifierKind = RectifierKind::Diode => {
+            label: "Rectifier", source: "ch. 2.2.1 (diode); ch. 5.2.2 (reversible)", group: "plant",
+            help: "Which way power may flow between turbines and bus.",
+        },
+        /// Ch. 5.2.2's "ideal power management". Our value for the braking preset: 1 ohm (31.6 MW
+        /// at 5.62 kV).
+        pub brake_resistor_ohm: f64 = 0.0 => {
+            label: "Brake resistor", unit: "Ω", range: 0.01..=1.0e4, empty: "none", group: "plant",
+            source: "none by default; 1 Ω in the braking preset (31.6 MW at 5.62 kV)",
+            help: "Dump resistor on each bus, switched by a chopper (ch. 5.2.2); 0 for none.",
+        },
+        /// Above the no-load voltage of the generators at the field current of full power (1.08),
+        /// so that the resistor takes the braking energy and not the generators' output.
+        pub brake_on_pu: f64 = 1.10 => {
+            label: "Brake chopper threshold", unit: "pu", range: 1.0..=1.5, base: "the bus voltage set point (controllers.field.bus_voltage_ref_v)",
+            source: "our choice: above the generators' full-power no-load voltage (1.08 pu)",
+            help: "Bus voltage at which the chopper starts to conduct.",
+        },
+        /// A proportional band narrow enough to hold the bus within 5 % above the threshold at full
+        /// braking power, wide enough to avoid chattering at the 1 ms step.
+        pub brake_band_pu: f64 = 0.05 => {
+            label: "Brake chopper band", unit: "pu", range: 0.001..=0.5, base: "the bus voltage set point (controllers.field.bus_voltage_ref_v)",
+            source: "our choice: holds the bus within 5 % without chattering",
+            help: "The chopper conducts fully this far above its threshold.",
+        },
     }
 }
 
-/// Rectifier average model.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum RectifierKind {
-    Diode,
-    Reversible,
-}
+impl crate::params::CrossCheck for DcLinkParams {}
 
-impl DcLinkParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.capacitance_f, 1.0e-4, 100.0);
-        check_range!(v, self.notching_resistance_ohm, 1.0e-4, 10.0);
-        check_range!(v, self.inverter_voltage_ratio, 0.1, 0.5);
-        if self.brake_resistor_ohm != 0.0 {
-            check_range!(v, self.brake_resistor_ohm, 0.01, 1.0e4);
-        }
-        check_range!(v, self.brake_on_pu, 1.0, 1.5);
-        check_range!(v, self.brake_band_pu, 0.001, 0.5);
+crate::choices! {
+    /// Rectifier average model.
+    pub enum RectifierKind {
+        Diode = "diode", "diode: one way only",
+        Reversible = "reversible", "reversible: back to the turbines too",
     }
 }
 

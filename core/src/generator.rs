@@ -8,7 +8,6 @@
 //! needs i_f = 500 A, and the bus sits at 5.6 kV, a medium-voltage DC bus; the line-to-line reading
 //! would put the bus at 9.7 kV.
 
-use crate::check_range;
 use crate::control::DiscretePi;
 use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
@@ -104,103 +103,98 @@ impl FieldController {
     }
 }
 
-/// Synchronous generator and its field circuit (eqs. 2.2-2.4, Table 5.3).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct GeneratorParams {
-    /// Stator resistance R_sg [ohm]. Table 5.3: 2.27e-2.
-    pub stator_resistance_ohm: f64,
-    /// Stator inductance L_sg [H]. Table 5.3: 0.391 mH. Also the commutating inductance of the
-    /// rectifier (X_co = omega L_sg in eq. 2.8).
-    pub stator_inductance_h: f64,
-    /// Mutual inductance M_g [H]. Table 5.3: 18.0 mH.
-    pub mutual_inductance_h: f64,
-    /// Number of poles P_g [-]. Table 5.3: 2 (3600 rpm gives 60 Hz).
-    pub poles: u32,
-    /// Rated line-to-line rms voltage at rated speed [V]. Table 5.3 caption: 4160 V. Sets the
-    /// initial field current (about 500 A with E_a taken as phase rms, see generator.rs).
-    pub rated_voltage_ll_v: f64,
-    /// Field winding resistance R_fg [ohm]. Not given in the thesis; 0.25 ohm puts the no-load
-    /// field voltage at 125 V, usual for a 20-25 MVA machine.
-    pub field_resistance_ohm: f64,
-    /// Field winding inductance L_fg [H]. Not given in the thesis; 0.25 H gives a field time
-    /// constant of 1 s, the order of the transient constant T'd of machines of this size.
-    pub field_inductance_h: f64,
-    /// Field voltage ceiling as a multiple of the no-load field voltage [-]. Not given in the
-    /// thesis; 3, a common static-exciter ceiling.
-    pub field_ceiling_ratio: f64,
-    /// Constant part mu_1 of the friction torque Q_fric = mu_1 + mu_2 omega_t [N m]. Not given in
-    /// the thesis; 0 (all of the loss is taken as speed-proportional, see mu_2).
-    pub friction_constant_nm: f64,
-    /// Viscous part mu_2 [N m s/rad]. Not given in the thesis; 2.46, i.e. 350 kW of friction,
-    /// windage and (unmodelled) core loss at 3600 rpm. That constant loss is what Table 5.7's three
-    /// generator efficiencies imply (0.35 MW at 20, 25 and 30 knots within 0.03 MW).
-    pub friction_viscous_nm_s: f64,
-}
-
-impl Default for GeneratorParams {
-    fn default() -> Self {
-        GeneratorParams {
-            stator_resistance_ohm: 2.27e-2,
-            stator_inductance_h: 0.391e-3,
-            mutual_inductance_h: 18.0e-3,
-            poles: 2,
-            rated_voltage_ll_v: 4160.0,
-            field_resistance_ohm: 0.25,
-            field_inductance_h: 0.25,
-            field_ceiling_ratio: 3.0,
-            friction_constant_nm: 0.0,
-            friction_viscous_nm_s: 2.46,
-        }
+crate::params! {
+    /// Synchronous generator and its field circuit (eqs. 2.2-2.4, Table 5.3).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct GeneratorParams {
+        pub stator_resistance_ohm: f64 = 2.27e-2 => {
+            label: "Stator resistance R_sg", unit: "Ω", range: 0.0..=10.0, source: "Table 5.3",
+            help: "Resistance of one stator phase (eqs. 2.2-2.4).",
+        },
+        /// Also the commutating inductance of the rectifier (X_co = omega L_sg in eq. 2.8).
+        pub stator_inductance_h: f64 = 0.391e-3 => {
+            label: "Stator inductance L_sg", unit: "H", range: 0.0..=1.0, source: "Table 5.3",
+            help: "Also the rectifier's commutating inductance (eq. 2.8).",
+        },
+        pub mutual_inductance_h: f64 = 18.0e-3 => {
+            label: "Mutual inductance M_g", unit: "H", range: 1.0e-5..=10.0, source: "Table 5.3",
+            help: "Couples the field to the stator: the emf per field current and speed.",
+        },
+        pub poles: u32 = 2 => {
+            label: "Generator poles P_g", unit: "-", range: 2.0..=64.0, source: "Table 5.3 (3600 rpm gives 60 Hz)",
+            help: "An even number; with the turbine speed it sets the electrical frequency.",
+        },
+        /// Sets the initial field current (about 500 A with E_a taken as phase rms, see
+        /// generator.rs).
+        pub rated_voltage_ll_v: f64 = 4160.0 => {
+            label: "Generator rated voltage", unit: "V", range: 100.0..=1.0e5, source: "Table 5.3 caption",
+            help: "Line-to-line rms voltage at rated speed; sets the initial field current.",
+        },
+        pub field_resistance_ohm: f64 = 0.25 => {
+            label: "Field resistance R_fg", unit: "Ω", range: 1.0e-3..=100.0,
+            source: "our choice: 125 V no-load field voltage, usual for a 20-25 MVA machine",
+            help: "Resistance of the field winding.",
+        },
+        pub field_inductance_h: f64 = 0.25 => {
+            label: "Field inductance L_fg", unit: "H", range: 1.0e-3..=100.0,
+            source: "our choice: a 1 s field time constant, the order of T'd for this size",
+            help: "Inductance of the field winding; with R_fg the field's time constant.",
+        },
+        pub field_ceiling_ratio: f64 = 3.0 => {
+            label: "Field voltage ceiling", unit: "-", range: 1.0..=10.0,
+            source: "our choice: a common static-exciter ceiling",
+            help: "Largest field voltage as a multiple of the no-load field voltage.",
+        },
+        pub friction_constant_nm: f64 = 0.0 => {
+            label: "Friction torque mu_1", unit: "N m", range: 0.0..=1.0e5,
+            source: "our choice: all of the loss is taken as speed-proportional (mu_2)",
+            help: "Constant part of Q_fric = mu_1 + mu_2 omega_t.",
+        },
+        /// 2.46 is 350 kW of friction, windage and (unmodelled) core loss at 3600 rpm: the constant
+        /// loss that Table 5.7's three generator efficiencies imply (0.35 MW at 20, 25 and 30
+        /// knots within 0.03 MW).
+        pub friction_viscous_nm_s: f64 = 2.46 => {
+            label: "Viscous friction mu_2", unit: "N m s/rad", range: 0.0..=1.0e3,
+            source: "our choice: 350 kW at 3600 rpm, the constant loss Table 5.7 implies",
+            help: "Speed-proportional part of the friction torque.",
+        },
     }
 }
 
-/// PI control of the bus voltage through the field voltage (ch. 2.2.1).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct FieldControlParams {
-    /// Bus voltage set point [V]: the no-load output of the rectifier (3 sqrt(2)/pi) 4160 V =
-    /// 5618 V, the per-unit base of the bus voltage.
-    pub bus_voltage_ref_v: f64,
-    /// Proportional gain K_p,v [V of field voltage per V of bus error]. Ch. 5.2.1 baseline: 1e-4.
-    /// The thesis does not state the units; volts per volt is the reading under which its own
-    /// remark holds that this loop acts only "slightly".
-    pub kp: f64,
-    /// Integral gain K_i,v [V per V s]. Ch. 5.2.1 baseline: 5e-4.
-    pub ki: f64,
-}
-
-impl Default for FieldControlParams {
-    fn default() -> Self {
-        FieldControlParams { bus_voltage_ref_v: 5618.0, kp: 1.0e-4, ki: 5.0e-4 }
+crate::params! {
+    /// PI control of the bus voltage through the field voltage (ch. 2.2.1).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct FieldControlParams {
+        /// The no-load output of the rectifier, (3 sqrt(2)/pi) 4160 V.
+        pub bus_voltage_ref_v: f64 = 5618.0 => {
+            label: "Bus voltage set point", unit: "V", range: 10.0..=1.0e5,
+            source: "no-load rectifier output (3 sqrt 2 / pi) 4160 V (eq. 2.8)",
+            help: "Bus voltage the field control holds; the base of bus voltage in per unit.",
+        },
+        /// The thesis does not state the units; volts per volt is the reading under which its own
+        /// remark holds that this loop acts only "slightly".
+        pub kp: f64 = 1.0e-4 => {
+            label: "Field K_p,v", unit: "V/V", range: 0.0..=10.0, source: "ch. 5.2.1 baseline", group: "controllers",
+            help: "Field voltage per volt of bus voltage error.",
+        },
+        pub ki: f64 = 5.0e-4 => {
+            label: "Field K_i,v", unit: "V/(V s)", range: 0.0..=10.0, source: "ch. 5.2.1 baseline", group: "controllers",
+            help: "Field voltage per volt of bus error and second.",
+        },
     }
 }
 
-impl GeneratorParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.stator_resistance_ohm, 0.0, 10.0);
-        check_range!(v, self.stator_inductance_h, 0.0, 1.0);
-        check_range!(v, self.mutual_inductance_h, 1.0e-5, 10.0);
+impl crate::params::CrossCheck for GeneratorParams {
+    fn cross_check(&self, v: &mut Validator) {
         if self.poles % 2 != 0 {
             v.fail("poles", self.poles, "must be even (2, 4, ...)");
         }
-        check_range!(v, self.poles as u64, 2, 64);
-        check_range!(v, self.rated_voltage_ll_v, 100.0, 1.0e5);
-        check_range!(v, self.field_resistance_ohm, 1.0e-3, 100.0);
-        check_range!(v, self.field_inductance_h, 1.0e-3, 100.0);
-        check_range!(v, self.field_ceiling_ratio, 1.0, 10.0);
-        check_range!(v, self.friction_constant_nm, 0.0, 1.0e5);
-        check_range!(v, self.friction_viscous_nm_s, 0.0, 1.0e3);
     }
 }
 
-impl FieldControlParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.bus_voltage_ref_v, 10.0, 1.0e5);
-        check_range!(v, self.kp, 0.0, 10.0);
-        check_range!(v, self.ki, 0.0, 10.0);
-    }
-}
+impl crate::params::CrossCheck for FieldControlParams {}
 
 #[cfg(test)]
 mod tests {

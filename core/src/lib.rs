@@ -19,6 +19,7 @@ pub mod maneuvering;
 pub mod montecarlo;
 pub mod motor;
 pub mod numerics;
+pub mod params;
 pub mod presentation;
 pub mod presets;
 pub mod prime_mover;

@@ -16,104 +16,56 @@
 //!   default all six are dropped (`symmetric_hull = true`); `false` keeps eqs. 2.23-2.24 literally.
 //! - X_vvu, X_rru are the terms eq. 2.22 prints as X_vvv v^2 du and X_rrr r^2 du.
 
-use crate::check_range;
 use crate::rudder::{rudder_force, stern_inflow, RudderParams};
 use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 
-/// Table 2.3, non-dimensional, in units of 1e-5 (as printed).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct AbkowitzCoefficients {
-    pub xudot_minus_m: f64,
-    pub x0: f64,
-    pub xu: f64,
-    pub xuu: f64,
-    pub xuuu: f64,
-    pub xvr_plus_m: f64,
-    pub xvv: f64,
-    pub xrr: f64,
-    pub xvvu: f64,
-    pub xrru: f64,
-    pub xvru: f64,
-    pub yvdot_minus_m: f64,
-    pub y0: f64,
-    pub y0u: f64,
-    pub y0uu: f64,
-    pub yrdot: f64,
-    pub yr_minus_mu: f64,
-    pub yrrr: f64,
-    pub yv: f64,
-    pub yvvv: f64,
-    pub yvvr: f64,
-    pub yvrr: f64,
-    pub yvu: f64,
-    pub yvuu: f64,
-    pub yru: f64,
-    pub yruu: f64,
-    pub nrdot_minus_iz: f64,
-    pub n0: f64,
-    pub n0u: f64,
-    pub n0uu: f64,
-    pub nvdot: f64,
-    pub nv: f64,
-    pub nvvv: f64,
-    pub nr: f64,
-    pub nrrr: f64,
-    pub nvvr: f64,
-    pub nvrr: f64,
-    pub nvu: f64,
-    pub nvuu: f64,
-    pub nru: f64,
-    pub nruu: f64,
-}
-
-impl Default for AbkowitzCoefficients {
-    /// Table 2.3 (22-knot test), x 1e-5.
-    fn default() -> Self {
-        AbkowitzCoefficients {
-            xudot_minus_m: -646.9,
-            x0: -65.01,
-            xu: -167.3,
-            xuu: -178.1,
-            xuuu: -80.78,
-            xvr_plus_m: 93.65,
-            xvv: -268.7,
-            xrr: -101.58,
-            xvvu: -496.4,
-            xrru: -79.74,
-            xvru: 117.2,
-            yvdot_minus_m: -939.0,
-            y0: 3.216,
-            y0u: 6.836,
-            y0uu: 3.590,
-            yrdot: -13.17,
-            yr_minus_mu: -381.6,
-            yrrr: -156.8,
-            yv: -124.6,
-            yvvv: -39.94,
-            yvvr: -3704.0,
-            yvrr: -4580.0,
-            yvu: -2140.0,
-            yvuu: -1332.0,
-            yru: -543.5,
-            yruu: -111.4,
-            nrdot_minus_iz: -55.08,
-            n0: -6.813,
-            n0u: -17.38,
-            n0uu: -10.57,
-            nvdot: 16.85,
-            nv: -308.8,
-            nvvv: -3857.0,
-            nr: -219.9,
-            nrrr: -442.0,
-            nvvr: -1666.0,
-            nvrr: -14820.0,
-            nvu: -900.5,
-            nvuu: -671.1,
-            nru: -607.0,
-            nruu: -561.8,
-        }
+crate::params! {
+    /// Table 2.3 (22-knot test), non-dimensional, in units of 1e-5 (as printed).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct AbkowitzCoefficients {
+        pub xudot_minus_m: f64 = -646.9 => { label: "X_udot - m", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub x0: f64 = -65.01 => { label: "X_0", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub xu: f64 = -167.3 => { label: "X_u", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub xuu: f64 = -178.1 => { label: "X_uu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub xuuu: f64 = -80.78 => { label: "X_uuu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub xvr_plus_m: f64 = 93.65 => { label: "X_vr + m", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub xvv: f64 = -268.7 => { label: "X_vv", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub xrr: f64 = -101.58 => { label: "X_rr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub xvvu: f64 = -496.4 => { label: "X_vvu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub xrru: f64 = -79.74 => { label: "X_rru", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub xvru: f64 = 117.2 => { label: "X_vru", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yvdot_minus_m: f64 = -939.0 => { label: "Y_vdot - m", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub y0: f64 = 3.216 => { label: "Y_0", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub y0u: f64 = 6.836 => { label: "Y_0u", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub y0uu: f64 = 3.590 => { label: "Y_0uu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yrdot: f64 = -13.17 => { label: "Y_rdot", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yr_minus_mu: f64 = -381.6 => { label: "Y_r - m u", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yrrr: f64 = -156.8 => { label: "Y_rrr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yv: f64 = -124.6 => { label: "Y_v", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yvvv: f64 = -39.94 => { label: "Y_vvv", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yvvr: f64 = -3704.0 => { label: "Y_vvr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yvrr: f64 = -4580.0 => { label: "Y_vrr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yvu: f64 = -2140.0 => { label: "Y_vu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yvuu: f64 = -1332.0 => { label: "Y_vuu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yru: f64 = -543.5 => { label: "Y_ru", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub yruu: f64 = -111.4 => { label: "Y_ruu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nrdot_minus_iz: f64 = -55.08 => { label: "N_rdot - I_z", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub n0: f64 = -6.813 => { label: "N_0", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub n0u: f64 = -17.38 => { label: "N_0u", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub n0uu: f64 = -10.57 => { label: "N_0uu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nvdot: f64 = 16.85 => { label: "N_vdot", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nv: f64 = -308.8 => { label: "N_v", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nvvv: f64 = -3857.0 => { label: "N_vvv", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nr: f64 = -219.9 => { label: "N_r", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nrrr: f64 = -442.0 => { label: "N_rrr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nvvr: f64 = -1666.0 => { label: "N_vvr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nvrr: f64 = -14820.0 => { label: "N_vrr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nvu: f64 = -900.5 => { label: "N_vu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nvuu: f64 = -671.1 => { label: "N_vuu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nru: f64 = -607.0 => { label: "N_ru", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
+        pub nruu: f64 = -561.8 => { label: "N_ruu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
     }
 }
 
@@ -299,72 +251,62 @@ pub fn handover_weight(u: f64, lo: f64, hi: f64) -> f64 {
     s * s * (3.0 - 2.0 * s)
 }
 
-/// Hull model selection and the maneuvering model's data (ch. 2.4, Table 2.3).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct HullParams {
-    /// "surge" (default) or "maneuvering".
-    pub model: HullModelKind,
-    /// Abkowitz coefficients, non-dimensional x 1e-5 (Table 2.3, the 22-knot set).
-    pub abkowitz: AbkowitzCoefficients,
-    /// Speed about which the expansion was made, u0 [knots]. Ch. 2.4: 22.
-    pub linearization_speed_kn: f64,
-    /// Drop the straight-running side force and yaw moment (Y_0, N_0 and their Delta-u terms), as a
-    /// port-starboard symmetric hull must (see maneuvering.rs). Default true.
-    pub symmetric_hull: bool,
-    /// With `as_printed.table_5_ship` (eq. 2.22's straight-line polynomial), below this speed surge
-    /// follows the surge model alone [knots]. Our choice: 17. The Abkowitz surge polynomial, fitted
-    /// at 11 and 22 knots, turns propulsive near 11 knots. Otherwise the straight-line resistance is
-    /// eq. 2.15's at every speed and these two are not used.
-    pub handover_low_kn: f64,
-    /// With `as_printed.table_5_ship`, above this speed surge follows the Abkowitz model alone
-    /// [knots]. Our choice: 21.
-    pub handover_high_kn: f64,
-}
-
-impl Default for HullParams {
-    fn default() -> Self {
-        HullParams {
-            model: HullModelKind::Surge,
-            abkowitz: AbkowitzCoefficients::default(),
-            linearization_speed_kn: 22.0,
-            symmetric_hull: true,
-            handover_low_kn: 17.0,
-            handover_high_kn: 21.0,
-        }
+crate::params! {
+    /// Hull model selection and the maneuvering model's data (ch. 2.4, Table 2.3).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct HullParams {
+        pub model: HullModelKind = HullModelKind::Surge => {
+            label: "Hull model", source: "ch. 2.3 (surge), ch. 2.4 (maneuvering)", group: "ship",
+            help: "Straight line only, or turns with a rudder.",
+        },
+        pub abkowitz: AbkowitzCoefficients = AbkowitzCoefficients::default() => {},
+        pub linearization_speed_kn: f64 = 22.0 => {
+            label: "Expansion speed u0", unit: "kn", range: 1.0..=40.0, source: "ch. 2.4",
+            help: "Speed about which Table 2.3's expansion was made.",
+        },
+        /// Drops the straight-running side force and yaw moment (Y_0, N_0 and their Delta-u
+        /// terms), as a port-starboard symmetric hull must (see maneuvering.rs).
+        pub symmetric_hull: bool = true => {
+            label: "Symmetric hull", source: "our choice: a port-starboard symmetric hull has no Y_0, N_0",
+            help: "Drop the straight-running side force and yaw moment of Table 2.3.",
+        },
+        /// The Abkowitz surge polynomial, fitted at 11 and 22 knots, turns propulsive near 11
+        /// knots. Without `as_printed.table_5_ship` the straight-line resistance is eq. 2.15's at
+        /// every speed and these two are not used.
+        pub handover_low_kn: f64 = 17.0 => {
+            label: "Hand-over from", unit: "kn", range: 0.0..=40.0,
+            source: "our choice: the surge polynomial turns propulsive near 11 kn",
+            help: "With as_printed.table_5_ship: below this speed surge follows the surge model alone.",
+        },
+        pub handover_high_kn: f64 = 21.0 => {
+            label: "Hand-over to", unit: "kn", range: 0.0..=40.0, source: "our choice",
+            help: "With as_printed.table_5_ship: above this speed surge follows the Abkowitz model alone.",
+        },
     }
 }
 
-/// Which hull model moves the ship.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum HullModelKind {
-    /// Straight-line surge (eqs. 2.15-2.16), as ch. 5.1 uses for start-up.
-    Surge,
-    /// Abkowitz 3-DOF maneuvering (eqs. 2.17-2.25) with the rudder; in surge it hands over smoothly
-    /// to the surge model below `hull.handover_low_kn`.
-    Maneuvering,
+crate::choices! {
+    /// Which hull model moves the ship.
+    pub enum HullModelKind {
+        /// Straight-line surge (eqs. 2.15-2.16), as ch. 5.1 uses for start-up.
+        Surge = "surge", "surge only: straight line (ch. 2.3)",
+        /// Abkowitz 3-DOF maneuvering (eqs. 2.17-2.25) with the rudder; in surge it hands over
+        /// smoothly to the surge model below `hull.handover_low_kn`.
+        Maneuvering = "maneuvering", "maneuvering: 3 DOF with rudder (ch. 2.4)",
+    }
 }
 
-impl HullParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.linearization_speed_kn, 1.0, 40.0);
-        check_range!(v, self.handover_low_kn, 0.0, 40.0);
-        check_range!(v, self.handover_high_kn, 0.0, 40.0);
+impl crate::params::CrossCheck for HullParams {
+    fn cross_check(&self, v: &mut Validator) {
         if self.handover_high_kn <= self.handover_low_kn {
             v.fail("handover_high_kn", self.handover_high_kn, format!("must be above {}", v.path("handover_low_kn")));
         }
-        v.section("abkowitz", |v| self.abkowitz.validate(v));
     }
 }
 
-impl AbkowitzCoefficients {
-    pub fn validate(&self, v: &mut Validator) {
-        if let Ok(serde_json::Value::Object(map)) = serde_json::to_value(self) {
-            for (name, x) in map {
-                v.range(&name, x.as_f64().unwrap_or(f64::NAN), -1.0e6, 1.0e6);
-            }
-        }
+impl crate::params::CrossCheck for AbkowitzCoefficients {
+    fn cross_check(&self, v: &mut Validator) {
         for (name, x) in [
             ("xudot_minus_m", self.xudot_minus_m),
             ("yvdot_minus_m", self.yvdot_minus_m),

@@ -11,9 +11,7 @@
 //! Q_e = 3 |I_r|^2 R_r / (s omega_e / p) = p P_airgap / omega_e.
 
 use crate::as_printed::AsPrintedParams;
-use crate::check_range;
 use crate::control::DiscretePi;
-use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -303,102 +301,98 @@ impl SlipController {
     }
 }
 
-/// 38 MW induction motor (eqs. 2.5-2.6, Table 2.1).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct MotorParams {
-    /// Stator resistance R_sm [ohm]. Table 2.1: 2.2 mohm.
-    pub stator_resistance_ohm: f64,
-    /// Stator leakage inductance L_sm [H]. Table 2.1: 0.198 mH.
-    pub stator_inductance_h: f64,
-    /// Rotor resistance R_rm [ohm]. Table 2.1: 3.4 mohm.
-    pub rotor_resistance_ohm: f64,
-    /// Rotor leakage inductance L_rm [H]. Table 2.1: 0.330 mH.
-    pub rotor_inductance_h: f64,
-    /// Magnetizing inductance L_m [H]. Table 2.1: 11.74 mH.
-    pub magnetizing_inductance_h: f64,
-    /// Pole pairs [-]. Table 2.1 gives P = 12 and calls it pole pairs, while ch. 2.2.2 writes
-    /// omega_r = (P_m/2) omega_rm as if P were poles. Twelve pole pairs make a 300 rpm machine at
-    /// 60 Hz whose peak torque (1.34 MN m) delivers 38 MW there; twelve poles would make a 600 rpm
-    /// machine, which contradicts the 300 rpm rating of ch. 5. So: 12 pole pairs.
-    pub pole_pairs: u32,
-    /// Rated line-to-line rms voltage [V]. Table 2.1: 4160.
-    pub rated_voltage_ll_v: f64,
-    /// Rated frequency [Hz]. Table 2.1: 60.
-    pub rated_frequency_hz: f64,
-    /// Rated shaft power [W]: 38 MW (ch. 2.2.2). The slip saturation keeps the motor under it.
-    pub rated_power_w: f64,
-    /// Efficiency eta_m of eq. 2.5 for friction, windage and stray loss [-]. Not given in the
-    /// thesis; 0.998, i.e. 0.2 % mechanical loss, usual for large low-speed machines. Applied so
-    /// that the loss is positive in both motoring and generating.
-    pub efficiency: f64,
-}
-
-impl Default for MotorParams {
-    fn default() -> Self {
-        MotorParams {
-            stator_resistance_ohm: 2.2e-3,
-            stator_inductance_h: 0.198e-3,
-            rotor_resistance_ohm: 3.4e-3,
-            rotor_inductance_h: 0.330e-3,
-            magnetizing_inductance_h: 11.74e-3,
-            pole_pairs: 12,
-            rated_voltage_ll_v: 4160.0,
-            rated_frequency_hz: 60.0,
-            rated_power_w: 38.0e6,
-            efficiency: 0.998,
-        }
+crate::params! {
+    /// 38 MW induction motor (eqs. 2.5-2.6, Table 2.1).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct MotorParams {
+        pub stator_resistance_ohm: f64 = 2.2e-3 => {
+            label: "Motor stator resistance R_sm", unit: "Ω", range: 0.0..=10.0, source: "Table 2.1",
+            help: "Per phase, in the equivalent circuit (eq. 2.5).",
+        },
+        pub stator_inductance_h: f64 = 0.198e-3 => {
+            label: "Motor stator leakage L_sm", unit: "H", range: 0.0..=1.0, source: "Table 2.1",
+            help: "Stator leakage inductance per phase.",
+        },
+        pub rotor_resistance_ohm: f64 = 3.4e-3 => {
+            label: "Motor rotor resistance R_rm", unit: "Ω", range: 1.0e-6..=10.0, source: "Table 2.1",
+            help: "Referred to the stator; sets the slip at a given torque.",
+        },
+        pub rotor_inductance_h: f64 = 0.330e-3 => {
+            label: "Motor rotor leakage L_rm", unit: "H", range: 0.0..=1.0, source: "Table 2.1",
+            help: "Rotor leakage inductance, referred to the stator.",
+        },
+        pub magnetizing_inductance_h: f64 = 11.74e-3 => {
+            label: "Magnetizing inductance L_m", unit: "H", range: 1.0e-5..=10.0, source: "Table 2.1",
+            help: "The motor's magnetizing branch.",
+        },
+        /// Table 2.1 gives P = 12 and calls it pole pairs, while ch. 2.2.2 writes omega_r =
+        /// (P_m/2) omega_rm as if P were poles. Twelve pole pairs make a 300 rpm machine at 60 Hz
+        /// whose peak torque (1.34 MN m) delivers 38 MW there; twelve poles would make a 600 rpm
+        /// machine, which contradicts the 300 rpm rating of ch. 5. So: 12 pole pairs.
+        pub pole_pairs: u32 = 12 => {
+            label: "Motor pole pairs", unit: "-", range: 1.0..=64.0,
+            source: "Table 2.1 (read as pole pairs: a 300 rpm machine, as ch. 5 rates it)",
+            help: "With the frequency, the motor's synchronous speed.",
+        },
+        pub rated_voltage_ll_v: f64 = 4160.0 => {
+            label: "Motor rated voltage", unit: "V", range: 100.0..=1.0e5, source: "Table 2.1",
+            help: "Line-to-line rms; the base of motor voltage in per unit.",
+        },
+        pub rated_frequency_hz: f64 = 60.0 => {
+            label: "Motor rated frequency", unit: "Hz", range: 1.0..=1000.0, source: "Table 2.1",
+            help: "Electrical frequency at rated speed.",
+        },
+        /// The slip saturation keeps the motor under it.
+        pub rated_power_w: f64 = 38.0e6 => {
+            label: "Motor rating", unit: "W", range: 1.0e3..=1.0e9, source: "ch. 2.2.2", group: "plant",
+            help: "Rated shaft power; the base of motor power in per unit.",
+        },
+        /// 0.2 % mechanical loss, usual for large low-speed machines; applied so that the loss is
+        /// positive in both motoring and generating.
+        pub efficiency: f64 = 0.998 => {
+            label: "Motor efficiency eta_m", unit: "-", range: 0.5..=1.0,
+            source: "our choice: 0.2 % friction and windage, usual for large slow machines",
+            help: "Friction, windage and stray loss of eq. 2.5.",
+        },
     }
 }
 
-/// Volts-per-hertz slip-speed PI on rotor speed error (ch. 2.2.4).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct SlipControlParams {
-    /// Proportional gain [rad/s of slip per rad/s of electrical rotor speed error]. Not given in
-    /// the thesis; 0.1: near zero slip the motor torque is 430 kN m per rad/s of slip, so the
-    /// shaft speed loop closes near 2 rad/s with K_i below.
-    pub kp: f64,
-    /// Integral gain [rad/s of slip per rad of electrical rotor angle error]. Not given; 0.1.
-    pub ki: f64,
-    /// Allow negative slip, so the motor brakes as a generator (AC braking, ch. 5.2.2). Only
-    /// meaningful with a path for the returned power (brake resistor or reversible rectifier).
-    pub allow_braking: bool,
-    /// The "offset discontinuity" of ch. 5.2.2 [rad/s]: the slip command skips the band
-    /// (-offset, offset). The thesis needed it because its circuit is singular at zero slip; ours
-    /// (written in admittances) is regular there, so the default is 0; set it to reproduce the
-    /// thesis' scheme.
-    pub zero_slip_offset_rad_s: f64,
-}
-
-impl Default for SlipControlParams {
-    fn default() -> Self {
-        SlipControlParams { kp: 0.1, ki: 0.1, allow_braking: false, zero_slip_offset_rad_s: 0.0 }
+crate::params! {
+    /// Volts-per-hertz slip-speed PI on rotor speed error (ch. 2.2.4).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct SlipControlParams {
+        /// Near zero slip the motor torque is 430 kN m per rad/s of slip, so the shaft speed loop
+        /// closes near 2 rad/s with K_i below.
+        pub kp: f64 = 0.1 => {
+            label: "Slip K_p", unit: "-", range: 0.0..=100.0,
+            source: "our choice: the shaft loop closes near 2 rad/s (not given in the thesis)",
+            help: "Slip speed per electrical rotor speed error.",
+        },
+        pub ki: f64 = 0.1 => {
+            label: "Slip K_i", unit: "1/s", range: 0.0..=100.0, source: "our choice, with K_p",
+            help: "Slip speed per electrical rotor angle error.",
+        },
+        /// Only meaningful with a path for the returned power (brake resistor or reversible
+        /// rectifier).
+        pub allow_braking: bool = false => {
+            label: "Allow AC braking", source: "ch. 5.2.2", group: "controllers",
+            help: "Negative slip: the motor brakes as a generator.",
+        },
+        /// The thesis needed it because its circuit is singular at zero slip; ours (written in
+        /// admittances) is regular there, so the default is 0; set it to reproduce the thesis'
+        /// scheme.
+        pub zero_slip_offset_rad_s: f64 = 0.0 => {
+            label: "Zero-slip offset", unit: "rad/s", range: 0.0..=1.0,
+            source: "ch. 5.2.2 needs one; our circuit is regular at zero slip, so 0",
+            help: "The slip command skips the band (-offset, offset) (ch. 5.2.2).",
+        },
     }
 }
 
-impl MotorParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.stator_resistance_ohm, 0.0, 10.0);
-        check_range!(v, self.stator_inductance_h, 0.0, 1.0);
-        check_range!(v, self.rotor_resistance_ohm, 1.0e-6, 10.0);
-        check_range!(v, self.rotor_inductance_h, 0.0, 1.0);
-        check_range!(v, self.magnetizing_inductance_h, 1.0e-5, 10.0);
-        check_range!(v, self.pole_pairs as u64, 1, 64);
-        check_range!(v, self.rated_voltage_ll_v, 100.0, 1.0e5);
-        check_range!(v, self.rated_frequency_hz, 1.0, 1000.0);
-        check_range!(v, self.rated_power_w, 1.0e3, 1.0e9);
-        check_range!(v, self.efficiency, 0.5, 1.0);
-    }
-}
-
-impl SlipControlParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.kp, 0.0, 100.0);
-        check_range!(v, self.ki, 0.0, 100.0);
-        check_range!(v, self.zero_slip_offset_rad_s, 0.0, 1.0);
-    }
-}
+impl crate::params::CrossCheck for MotorParams {}
+impl crate::params::CrossCheck for SlipControlParams {}
 
 #[cfg(test)]
 mod tests {

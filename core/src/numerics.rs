@@ -1,7 +1,5 @@
 //! Small numerical helpers shared by the physics modules.
 
-use serde::{Deserialize, Serialize};
-
 /// Bisection for a sign change of `f` between `lo` and `hi`: `iterations` halvings, returns the
 /// midpoint of the last bracket. The side that keeps `lo` is the one with the sign of `f(lo)`.
 pub fn bisect(f: impl Fn(f64) -> f64, lo: f64, hi: f64, iterations: u32) -> f64 {
@@ -97,15 +95,14 @@ where
     }
 }
 
-/// A fixed-step Runge-Kutta method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Integrator {
-    /// Classical fourth order ([`rk4`]).
-    #[default]
-    Rk4,
-    /// Explicit midpoint, second order ([`midpoint`]).
-    Midpoint,
+crate::choices! {
+    /// A fixed-step Runge-Kutta method.
+    pub enum Integrator {
+        /// Classical fourth order ([`rk4`]).
+        Rk4 = "rk4", "RK4 (fourth order)",
+        /// Explicit midpoint, second order ([`midpoint`]).
+        Midpoint = "midpoint", "midpoint rule (second order)",
+    }
 }
 
 impl Integrator {

@@ -1,7 +1,6 @@
 //! LM2500 gas turbine (thesis ch. 2.1, eq. 2.1) and its discrete PI speed governor with
 //! throttle saturation and slew limit.
 
-use crate::check_range;
 use crate::control::DiscretePi;
 use crate::units::rpm_to_rad_s;
 use crate::validate::Validator;
@@ -72,60 +71,63 @@ impl Governor {
     }
 }
 
-/// GE LM2500 gas turbine, linear torque model (eq. 2.1, Table 5.2).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct TurbineParams {
-    /// Full-throttle locking torque Q_lock [N m]. Table 5.2: 123 kN m.
-    pub locking_torque_nm: f64,
-    /// Full-throttle no-load speed n_t,max [rpm]. Table 5.2: 6875.
-    pub no_load_speed_rpm: f64,
-    /// Governor set point n_t* [rpm]: 60 Hz, ch. 2.1 (3600 rpm for the two-pole generator).
-    pub rated_speed_rpm: f64,
-    /// Shaft inertia of turbine and generator rotor I_t [kg m^2]. Table 5.2: 400.
-    pub inertia_kg_m2: f64,
-    /// Rated power [W]: 21.5 MW (ch. 2.1). Per-unit base for turbine power.
-    pub rated_power_w: f64,
-}
-
-impl Default for TurbineParams {
-    fn default() -> Self {
-        TurbineParams {
-            locking_torque_nm: 123.0e3,
-            no_load_speed_rpm: 6875.0,
-            rated_speed_rpm: 3600.0,
-            inertia_kg_m2: 400.0,
-            rated_power_w: 21.5e6,
-        }
+crate::params! {
+    /// GE LM2500 gas turbine, linear torque model (eq. 2.1, Table 5.2).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct TurbineParams {
+        pub locking_torque_nm: f64 = 123.0e3 => {
+            label: "Locking torque Q_lock", unit: "N m", range: 1.0e3..=1.0e7, source: "Table 5.2",
+            help: "Full-throttle torque at stall (eq. 2.1).",
+        },
+        pub no_load_speed_rpm: f64 = 6875.0 => {
+            label: "No-load speed n_t,max", unit: "rpm", range: 100.0..=1.0e5, source: "Table 5.2",
+            help: "Full-throttle speed at which the turbine gives no torque (eq. 2.1).",
+        },
+        pub rated_speed_rpm: f64 = 3600.0 => {
+            label: "Governor set point n_t*", unit: "rpm", range: 100.0..=1.0e5,
+            source: "ch. 2.1: 60 Hz from the two-pole generator",
+            help: "Turbine speed the governor holds; the base of turbine speed in per unit.",
+        },
+        pub inertia_kg_m2: f64 = 400.0 => {
+            label: "Turbine inertia I_t", unit: "kg m²", range: 1.0..=1.0e6, source: "Table 5.2", group: "plant",
+            help: "Turbine and generator rotor together.",
+        },
+        pub rated_power_w: f64 = 21.5e6 => {
+            label: "Turbine rating", unit: "W", range: 1.0e4..=1.0e9, source: "ch. 2.1 (LM2500)",
+            help: "Rated shaft power; the base of turbine power in per unit.",
+        },
     }
 }
 
-/// Discrete PI governor on turbine speed acting on the throttle (ch. 2.1).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct GovernorParams {
-    /// Proportional gain K_p,t [throttle fraction per per-unit speed error]. Not given in the
-    /// thesis; 10, which with K_i,t gives a critically damped loop near 2 rad/s (throttle moves the
-    /// per-unit speed at 0.39 /s per unit throttle at 3600 rpm).
-    pub kp: f64,
-    /// Integral gain K_i,t [throttle fraction per per-unit speed error per second]. Not given; 10.
-    pub ki: f64,
-    /// Throttle slew limit Delta_t [1/s]. Not given in the thesis; 0.1, i.e. zero to full fuel in
-    /// 10 s, a conservative fuel schedule against compressor surge.
-    pub slew_rate_per_s: f64,
-}
-
-impl Default for GovernorParams {
-    fn default() -> Self {
-        GovernorParams { kp: 10.0, ki: 10.0, slew_rate_per_s: 0.1 }
+crate::params! {
+    /// Discrete PI governor on turbine speed acting on the throttle (ch. 2.1).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct GovernorParams {
+        /// Not given in the thesis; 10, which with K_i,t gives a critically damped loop near 2
+        /// rad/s (throttle moves the per-unit speed at 0.39 /s per unit throttle at 3600 rpm).
+        pub kp: f64 = 10.0 => {
+            label: "Governor K_p,t", unit: "1/pu", range: 0.0..=1.0e3, group: "controllers",
+            source: "our choice: a critically damped loop near 2 rad/s (not given in the thesis)",
+            help: "Throttle per per-unit turbine speed error.",
+        },
+        pub ki: f64 = 10.0 => {
+            label: "Governor K_i,t", unit: "1/(pu s)", range: 0.0..=1.0e3,
+            source: "our choice, with K_p,t (not given in the thesis)",
+            help: "Throttle per per-unit speed error and second.",
+        },
+        /// 0.1: zero to full fuel in 10 s, a conservative fuel schedule against compressor surge.
+        pub slew_rate_per_s: f64 = 0.1 => {
+            label: "Throttle slew limit", unit: "1/s", range: 1.0e-3..=100.0, group: "controllers",
+            source: "our choice: zero to full fuel in 10 s, against compressor surge",
+            help: "Fastest the throttle may move (fuel schedule limit).",
+        },
     }
 }
 
-impl TurbineParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.locking_torque_nm, 1.0e3, 1.0e7);
-        check_range!(v, self.no_load_speed_rpm, 100.0, 1.0e5);
-        check_range!(v, self.rated_speed_rpm, 100.0, 1.0e5);
+impl crate::params::CrossCheck for TurbineParams {
+    fn cross_check(&self, v: &mut Validator) {
         if self.rated_speed_rpm >= self.no_load_speed_rpm {
             v.fail(
                 "rated_speed_rpm",
@@ -133,18 +135,10 @@ impl TurbineParams {
                 format!("must be below {} (eq. 2.1 gives no torque there)", v.path("no_load_speed_rpm")),
             );
         }
-        check_range!(v, self.inertia_kg_m2, 1.0, 1.0e6);
-        check_range!(v, self.rated_power_w, 1.0e4, 1.0e9);
     }
 }
 
-impl GovernorParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.kp, 0.0, 1.0e3);
-        check_range!(v, self.ki, 0.0, 1.0e3);
-        check_range!(v, self.slew_rate_per_s, 1.0e-3, 100.0);
-    }
-}
+impl crate::params::CrossCheck for GovernorParams {}
 
 #[cfg(test)]
 mod tests {

@@ -4,8 +4,6 @@
 //! collapsed on load into cubics in J for the chosen P/D, Ae/A0 and Z, so each evaluation in the
 //! time loop costs a few multiplications.
 
-use crate::check_range;
-use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -290,71 +288,64 @@ mod four_quadrant_tests {
     }
 }
 
-/// Wageningen B-series propeller, one per shaft (eqs. 2.11-2.13, Table 5.1).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct PropellerParams {
-    /// Open-water model: "b_series" (default) or "four_quadrant" (needed for braking).
-    pub model: PropellerModelKind,
-    /// Diameter D [m]. Table 5.1: 4.5.
-    pub diameter_m: f64,
-    /// Pitch ratio P/D [-]. Table 5.1: 1.0.
-    pub pitch_ratio: f64,
-    /// Expanded blade area ratio Ae/A0 [-]. Not given in the thesis; 0.75, typical of a five-bladed
-    /// destroyer propeller sized against cavitation at 30+ knots.
-    pub blade_area_ratio: f64,
-    /// Number of blades Z [-]. Not given in the thesis; 5, as on the DDG-51 class.
-    pub blades: u32,
-    /// Relative rotative efficiency eta_R [-] of eq. 2.11. Not given in the thesis; 0.98 from
-    /// Holtrop's twin-screw regression (0.9737 + 0.111 (C_P - 0.0225 lcb) - 0.06325 P/D with
-    /// C_P = 0.6, lcb = -1.5 %).
-    pub rotative_efficiency: f64,
-    /// Moment of inertia of one shaft line (propeller, shaft, motor rotor) [kg m^2].
-    /// Table 5.1: 1.33e5.
-    pub shaft_inertia_kg_m2: f64,
-    /// Thrust loss coefficient beta_T of eq. 2.13 held for the whole run [-]; 1 in deep calm water.
-    pub beta_t: f64,
-    /// Torque loss coefficient beta_Q of eq. 2.13 held for the whole run [-]; 1 in deep calm water.
-    pub beta_q: f64,
-}
-
-impl Default for PropellerParams {
-    fn default() -> Self {
-        PropellerParams {
-            model: PropellerModelKind::BSeries,
-            diameter_m: 4.5,
-            pitch_ratio: 1.0,
-            blade_area_ratio: 0.75,
-            blades: 5,
-            rotative_efficiency: 0.98,
-            shaft_inertia_kg_m2: 1.33e5,
-            beta_t: 1.0,
-            beta_q: 1.0,
-        }
+crate::params! {
+    /// Wageningen B-series propeller, one per shaft (eqs. 2.11-2.13, Table 5.1).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct PropellerParams {
+        pub model: PropellerModelKind = PropellerModelKind::BSeries => {
+            label: "Propeller model", source: "ch. 2.3 (B-series); ch. 5.2.2 (four-quadrant)", group: "plant",
+            help: "The four-quadrant model is needed for braking.",
+        },
+        pub diameter_m: f64 = 4.5 => {
+            label: "Propeller diameter", unit: "m", range: 0.1..=15.0, source: "Table 5.1", group: "plant",
+            help: "Diameter D of each propeller.",
+        },
+        pub pitch_ratio: f64 = 1.0 => {
+            label: "Pitch ratio P/D", unit: "-", range: 0.5..=1.4, source: "Table 5.1", group: "plant",
+            help: "Within the Wageningen B-series regression (0.5 to 1.4).",
+        },
+        /// Typical of a five-bladed destroyer propeller sized against cavitation at 30+ knots.
+        pub blade_area_ratio: f64 = 0.75 => {
+            label: "Blade area ratio Ae/A0", unit: "-", range: 0.3..=1.05,
+            source: "our choice: a five-bladed destroyer propeller (not given in the thesis)",
+            help: "Expanded blade area over disc area, within the B-series regression.",
+        },
+        pub blades: u32 = 5 => {
+            label: "Blades", unit: "-", range: 2.0..=7.0, source: "our choice: as on the DDG-51 class", group: "plant",
+            help: "Number of blades Z, within the Wageningen B-series (2 to 7).",
+        },
+        /// Holtrop's twin-screw regression, 0.9737 + 0.111 (C_P - 0.0225 lcb) - 0.06325 P/D with
+        /// C_P = 0.6, lcb = -1.5 %.
+        pub rotative_efficiency: f64 = 0.98 => {
+            label: "Relative rotative efficiency eta_R", unit: "-", range: 0.8..=1.2,
+            source: "our choice: Holtrop's twin-screw regression",
+            help: "Behind-hull over open-water torque efficiency (eq. 2.11).",
+        },
+        pub shaft_inertia_kg_m2: f64 = 1.33e5 => {
+            label: "Shaft line inertia", unit: "kg m²", range: 1.0..=1.0e8, source: "Table 5.1",
+            help: "Propeller, shaft and motor rotor of one shaft line.",
+        },
+        pub beta_t: f64 = 1.0 => {
+            label: "Fixed thrust loss beta_T", unit: "-", range: 0.0..=1.0, source: "eq. 2.13: 1 in deep calm water",
+            help: "Thrust kept, held for the whole run (waves add their own losses).",
+        },
+        pub beta_q: f64 = 1.0 => {
+            label: "Fixed torque loss beta_Q", unit: "-", range: 0.0..=1.0, source: "eq. 2.13: 1 in deep calm water",
+            help: "Torque kept, held for the whole run.",
+        },
     }
 }
 
-/// Which open-water model the propellers follow.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum PropellerModelKind {
-    /// Wageningen B-series polynomials, first quadrant only (eqs. 2.11-2.13).
-    BSeries,
-    /// Four-quadrant B4-70 Fourier series (ch. 5.2.2): any sign of thrust, torque and speed.
-    FourQuadrant,
-}
+impl crate::params::CrossCheck for PropellerParams {}
 
-impl PropellerParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.diameter_m, 0.1, 15.0);
-        // Ranges of the Oosterveld & van Oossanen regression.
-        check_range!(v, self.pitch_ratio, 0.5, 1.4);
-        check_range!(v, self.blade_area_ratio, 0.3, 1.05);
-        check_range!(v, self.blades as u64, 2, 7);
-        check_range!(v, self.rotative_efficiency, 0.8, 1.2);
-        check_range!(v, self.shaft_inertia_kg_m2, 1.0, 1.0e8);
-        check_range!(v, self.beta_t, 0.0, 1.0);
-        check_range!(v, self.beta_q, 0.0, 1.0);
+crate::choices! {
+    /// Which open-water model the propellers follow.
+    pub enum PropellerModelKind {
+        /// Wageningen B-series polynomials, first quadrant only (eqs. 2.11-2.13).
+        BSeries = "b_series", "Wageningen B-series (ahead only)",
+        /// Four-quadrant B4-70 Fourier series (ch. 5.2.2): any sign of thrust, torque and speed.
+        FourQuadrant = "four_quadrant", "four-quadrant B4-70 (ahead and astern)",
     }
 }
 

@@ -5,30 +5,34 @@
 //! print v + x_p r, which holds with x_p signed (negative aft); eq. 2.19's moment -x_p F_y takes x_p
 //! positive aft, which is our convention. A positive rudder angle delta turns the ship to port.
 
-use crate::check_range;
 use crate::control::DiscretePi;
-use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 
-/// Rudder size and limits (Table 5.5). Its place, x_p, is the hull's (`ship.hull.rudder_x_m`).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct RudderParams {
-    /// Rudder area A_r [m^2]. Table 5.5: 20.
-    pub area_m2: f64,
-    /// Lift slope dC_L/dalpha [1/rad]. Table 5.5: 3.31 (No. 1 rudder of [42]).
-    pub lift_slope: f64,
-    /// Drag slope dC_D/dalpha [1/rad]. Table 5.5: 0.46.
-    pub drag_slope: f64,
-    /// Largest rudder angle [deg]: saturation before stall, ch. 2.4.1: 20.
-    pub max_angle_deg: f64,
-    /// Swing rate limit Delta_r [rad/s]. Table 5.5: 0.1.
-    pub swing_rate_rad_s: f64,
-}
-
-impl Default for RudderParams {
-    fn default() -> Self {
-        RudderParams { area_m2: 20.0, lift_slope: 3.31, drag_slope: 0.46, max_angle_deg: 20.0, swing_rate_rad_s: 0.1 }
+crate::params! {
+    /// Rudder size and limits (Table 5.5). Its place, x_p, is the hull's (`ship.hull.rudder_x_m`).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct RudderParams {
+        pub area_m2: f64 = 20.0 => {
+            label: "Rudder area A_r", unit: "m²", range: 0.0..=500.0, source: "Table 5.5",
+            help: "Area of each rudder (eqs. 2.28-2.30).",
+        },
+        pub lift_slope: f64 = 3.31 => {
+            label: "Rudder lift slope", unit: "1/rad", range: 0.0..=10.0, source: "Table 5.5 (No. 1 rudder of [42])",
+            help: "dC_L/dalpha of the rudder.",
+        },
+        pub drag_slope: f64 = 0.46 => {
+            label: "Rudder drag slope", unit: "1/rad", range: 0.0..=5.0, source: "Table 5.5",
+            help: "dC_D/dalpha of the rudder.",
+        },
+        pub max_angle_deg: f64 = 20.0 => {
+            label: "Largest rudder angle", unit: "deg", range: 1.0..=45.0, source: "ch. 2.4.1",
+            help: "The rudder saturates here, before it stalls.",
+        },
+        pub swing_rate_rad_s: f64 = 0.1 => {
+            label: "Rudder swing rate", unit: "rad/s", range: 0.001..=1.0, source: "Table 5.5",
+            help: "Fastest the steering gear moves the rudder.",
+        },
     }
 }
 
@@ -61,39 +65,49 @@ pub fn rudder_force(p: &RudderParams, rho: f64, a: &Inflow, delta: f64) -> (f64,
     (lift * s - drag * c, -lift * c - drag * s)
 }
 
-/// Saturated PID heading autopilot gains.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct AutopilotParams {
-    /// Proportional gain [rad of rudder per rad of heading error]. Not given in the thesis; 3.
-    pub kp: f64,
-    /// Integral gain [rad of rudder per rad s]. Not given; 0.02.
-    pub ki: f64,
-    /// Derivative gain on yaw rate [rad of rudder per rad/s]. Not given; 80.
-    pub kd: f64,
-    /// Rate at which the heading reference moves when a command gives none [deg/s]. Our choice: 0.5
-    /// (about 8 ship lengths of radius at 25 knots). A step would put the rudder hard over and,
-    /// since the Table 2.3 hull turns unstable in tight turns, spiral the ship into a turn tighter
-    /// than full counter-rudder can stop.
-    pub turn_rate_deg_s: f64,
-    /// Fastest turn the autopilot will order, as a non-dimensional yaw rate r' = r L / U [-]. Our
-    /// choice: 0.25 (1 deg/s at 25 knots). With the Table 2.3 coefficients the hull's turning
-    /// motion grows unstable above r' = 0.1 (0.2 /s at r' = 0.2, 0.4 /s at r' = 0.33; its spiral
-    /// curve loops at 3.6 deg of rudder, `maneuvering::steady_turn`). On the hull's ship (L = 142
-    /// m) the default gains still hold ramps up to r' = 0.6 (measured: radius 1.56 L, the rudder
-    /// touching 20 deg on the way in) and diverge at 0.7; on Tables 5.1/5.5's ship (L = 180 m) the
-    /// ramp at r' = 1/3 diverges 31 s after the order. Faster orders are slowed to this limit and a
-    /// warning says so.
-    pub max_turn_rate_nondim: f64,
-    /// Yaw acceleration gain [rad of rudder per rad/s^2]. Not given; 1000: starts taking the rudder off
-    /// while the turn is still gathering pace, which this directionally marginal hull needs (its
-    /// rudder swings at only 0.1 rad/s).
-    pub ka: f64,
-}
-
-impl Default for AutopilotParams {
-    fn default() -> Self {
-        AutopilotParams { kp: 3.0, ki: 0.02, kd: 80.0, turn_rate_deg_s: 0.5, ka: 1000.0, max_turn_rate_nondim: 0.25 }
+crate::params! {
+    /// Saturated PID heading autopilot gains.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct AutopilotParams {
+        pub kp: f64 = 3.0 => {
+            label: "Autopilot K_p", unit: "rad/rad", range: 0.0..=1.0e3, source: "our choice (not given in the thesis)",
+            help: "Rudder per heading error.",
+        },
+        pub ki: f64 = 0.02 => {
+            label: "Autopilot K_i", unit: "1/s", range: 0.0..=1.0e3, source: "our choice (not given in the thesis)",
+            help: "Rudder per heading error and second.",
+        },
+        pub kd: f64 = 80.0 => {
+            label: "Autopilot K_d", unit: "s", range: 0.0..=1.0e4, source: "our choice (not given in the thesis)",
+            help: "Rudder per yaw rate error.",
+        },
+        /// About 8 ship lengths of radius at 25 knots. A step would put the rudder hard over and,
+        /// since the Table 2.3 hull turns unstable in tight turns, spiral the ship into a turn
+        /// tighter than full counter-rudder can stop.
+        pub turn_rate_deg_s: f64 = 0.5 => {
+            label: "Default turn rate", unit: "deg/s", range: 0.01..=10.0, group: "controllers",
+            source: "our choice: about 8 ship lengths of radius at 25 kn",
+            help: "How fast the heading order moves when an order gives no rate.",
+        },
+        /// With the Table 2.3 coefficients the hull's turning motion grows unstable above r' = 0.1
+        /// (0.2 /s at r' = 0.2, 0.4 /s at r' = 0.33; its spiral curve loops at 3.6 deg of rudder,
+        /// `maneuvering::steady_turn`). On the hull's ship (L = 142 m) the default gains still hold
+        /// ramps up to r' = 0.6 (measured: radius 1.56 L, the rudder touching 20 deg on the way in)
+        /// and diverge at 0.7; on Tables 5.1/5.5's ship (L = 180 m) the ramp at r' = 1/3 diverges
+        /// 31 s after the order. Faster orders are slowed to this limit and a warning says so.
+        pub max_turn_rate_nondim: f64 = 0.25 => {
+            label: "Fastest turn r'", unit: "-", range: 0.01..=2.0,
+            source: "our choice: 1 deg/s at 25 kn, within what the Table 2.3 hull holds",
+            help: "Fastest turn the autopilot orders, as r' = r L / U; faster orders are slowed.",
+        },
+        /// Starts taking the rudder off while the turn is still gathering pace, which this
+        /// directionally marginal hull needs (its rudder swings at only 0.1 rad/s).
+        pub ka: f64 = 1000.0 => {
+            label: "Autopilot yaw acceleration gain", unit: "s²", range: 0.0..=1.0e5,
+            source: "our choice: eases the rudder off early on this marginal hull",
+            help: "Rudder per yaw acceleration error.",
+        },
     }
 }
 
@@ -142,26 +156,8 @@ impl Autopilot {
     }
 }
 
-impl RudderParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.area_m2, 0.0, 500.0);
-        check_range!(v, self.lift_slope, 0.0, 10.0);
-        check_range!(v, self.drag_slope, 0.0, 5.0);
-        check_range!(v, self.max_angle_deg, 1.0, 45.0);
-        check_range!(v, self.swing_rate_rad_s, 0.001, 1.0);
-    }
-}
-
-impl AutopilotParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.kp, 0.0, 1.0e3);
-        check_range!(v, self.ki, 0.0, 1.0e3);
-        check_range!(v, self.kd, 0.0, 1.0e4);
-        check_range!(v, self.ka, 0.0, 1.0e5);
-        check_range!(v, self.max_turn_rate_nondim, 0.01, 2.0);
-        check_range!(v, self.turn_rate_deg_s, 0.01, 10.0);
-    }
-}
+impl crate::params::CrossCheck for RudderParams {}
+impl crate::params::CrossCheck for AutopilotParams {}
 
 #[cfg(test)]
 mod tests {

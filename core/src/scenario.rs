@@ -5,7 +5,6 @@
 //! rotating machines are given in rpm and ship speeds in knots because that is how engineers state
 //! them; the physics converts to SI on load.
 
-use crate::check_range;
 pub use crate::numerics::Integrator;
 use crate::signals::Signal;
 use crate::validate::Validator;
@@ -29,166 +28,215 @@ pub use crate::surge::ShipParams;
 pub use crate::validate::{FieldError, ScenarioError};
 pub use crate::waves::{SeaKind, SeaParams};
 
-/// One complete run: ship, plant, propeller, controllers, commands and simulation settings.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct Scenario {
-    /// Short name (shown in summaries).
-    pub name: String,
-    /// One or two sentences for the reader: what this run shows.
-    pub description: String,
-    pub ship: ShipParams,
-    pub hull: HullParams,
-    pub rudder: RudderParams,
-    pub propeller: PropellerParams,
-    pub plant: PlantParams,
-    pub controllers: ControllerParams,
-    /// Time-stamped commands; the latest command whose time has come is in force.
-    pub commands: Vec<Command>,
-    pub initial: InitialConditions,
-    pub sim: SimSettings,
-    /// The sea (calm unless set).
-    pub sea: SeaParams,
-    /// Ship motions in waves and the propeller's surface losses (used when the sea is not calm).
-    pub seakeeping: SeakeepingParams,
-    /// What a Monte Carlo study of this scenario collects (`aes-sim mc`, the page's Monte Carlo
-    /// tab); a single run ignores it.
-    pub monte_carlo: MonteCarloParams,
-    /// The thesis' equations as printed where we chose a corrected form (all off by default;
-    /// `core/src/as_printed.rs`).
-    pub as_printed: AsPrintedParams,
-}
-
-/// A Monte Carlo study (thesis ch. 5.4): trial i runs the scenario with the sea of seed
-/// `trial_seed(sim.seed, i)`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct MonteCarloParams {
-    pub trials: u64,
-    /// Signals whose envelope over trials (mean, +-2 sigma, min, max per recorded time) is kept.
-    pub envelope_signals: Vec<String>,
-    /// Histogram of `histogram_signal` at `histogram_time_s` over [`histogram_lo`, `histogram_hi`)
-    /// (empty when the trials end before that time).
-    pub histogram_signal: String,
-    pub histogram_time_s: f64,
-    pub histogram_lo: f64,
-    pub histogram_hi: f64,
-    pub histogram_bins: u32,
-    /// Excess motor energy due to surface effects per trial: against the same trial without
-    /// surface losses (doubles the cost).
-    pub excess_energy: bool,
-    /// Stop a trial `onset_window_s` after its first surface effect (beta_T < 1); trials without
-    /// one run to the end and count as censored at `sim.duration_s`.
-    pub stop_at_first_event: bool,
-    /// Window of motor power kept after the onset [s] (Fig. 5-25).
-    pub onset_window_s: f64,
-    /// Traces of the first trials kept for display (at most 10).
-    pub keep_traces: u32,
-    /// Welch segment for the periodogram of motor power [s].
-    pub periodogram_segment_s: f64,
-}
-
-impl Default for MonteCarloParams {
-    fn default() -> Self {
-        MonteCarloParams {
-            trials: 100,
-            envelope_signals: vec!["im_power_pu".into(), "h_over_r".into(), "prop_rpm".into()],
-            histogram_signal: "im_power_pu".into(),
-            histogram_time_s: 40.0,
-            histogram_lo: 0.0,
-            histogram_hi: 1.5,
-            histogram_bins: 30,
-            excess_energy: false,
-            stop_at_first_event: false,
-            onset_window_s: 12.0,
-            keep_traces: 1,
-            periodogram_segment_s: 25.6,
-        }
+crate::params! {
+    /// One complete run: ship, plant, propeller, controllers, commands and simulation settings.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct Scenario {
+        pub name: String = "custom".into() => {
+            label: "Name", source: "our choice", help: "Short name, shown in summaries.",
+        },
+        pub description: String = String::new() => {
+            label: "Description", help: "One or two sentences for the reader: what this run shows.",
+        },
+        pub ship: ShipParams = ShipParams::default() => {},
+        pub hull: HullParams = HullParams::default() => {},
+        pub rudder: RudderParams = RudderParams::default() => {},
+        pub propeller: PropellerParams = PropellerParams::default() => {},
+        pub plant: PlantParams = PlantParams::default() => {},
+        pub controllers: ControllerParams = ControllerParams::default() => {},
+        /// Time-stamped commands; the latest command whose time has come is in force.
+        pub commands: Vec<Command> = vec![Command { t_s: 0.0, speed_kn: Some(25.0), heading_deg: None, heading_rate_deg_s: None }] => {},
+        pub initial: InitialConditions = InitialConditions::default() => {},
+        pub sim: SimSettings = SimSettings::default() => {},
+        /// The sea (calm unless set).
+        pub sea: SeaParams = SeaParams::default() => {},
+        /// Ship motions in waves and the propeller's surface losses (used when the sea is not calm).
+        pub seakeeping: SeakeepingParams = SeakeepingParams::default() => {},
+        /// What a Monte Carlo study of this scenario collects (`aes-sim mc`, the page's Monte Carlo
+        /// tab); a single run ignores it.
+        pub monte_carlo: MonteCarloParams = MonteCarloParams::default() => {},
+        /// The thesis' equations as printed where we chose a corrected form (all off by default;
+        /// `core/src/as_printed.rs`).
+        pub as_printed: AsPrintedParams = AsPrintedParams::default() => {},
     }
 }
 
-/// The split plant: per shaft two gas turbine-generator sets, one DC bus and one motor.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct PlantParams {
-    pub turbine: TurbineParams,
-    pub generator: GeneratorParams,
-    pub dc_link: DcLinkParams,
-    pub motor: MotorParams,
+crate::params! {
+    /// A Monte Carlo study (thesis ch. 5.4): trial i runs the scenario with the sea of seed
+    /// `trial_seed(sim.seed, i)`.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct MonteCarloParams {
+        pub trials: u64 = 100 => {
+            label: "Monte Carlo trials", unit: "-", range: 1.0..=1.0e7, source: "our choice (the thesis: 1000)", group: "sea",
+            help: "For the Monte Carlo button (ch. 5.4): trials, each with its own sea.",
+        },
+        pub envelope_signals: Vec<String> = vec!["im_power_pu".into(), "h_over_r".into(), "prop_rpm".into()] => {
+            label: "Envelope signals", source: "Figs. 5-22 to 5-24",
+            help: "Signals whose envelope over trials (mean, +-2 sigma, min, max) is kept.",
+        },
+        /// Empty when the trials end before `histogram_time_s`.
+        pub histogram_signal: String = "im_power_pu".into() => {
+            label: "Histogram signal", source: "Fig. 5-21", help: "The trace column whose histogram over trials is kept.",
+        },
+        pub histogram_time_s: f64 = 40.0 => {
+            label: "Histogram time", unit: "s", range: 0.0..=1.0e6, source: "our choice", help: "When the histogram is taken.",
+        },
+        pub histogram_lo: f64 = 0.0 => {
+            label: "Histogram from", unit: "-", range: -1.0e9..=1.0e9, source: "our choice", help: "Lower edge, in the histogram signal's unit.",
+        },
+        pub histogram_hi: f64 = 1.5 => {
+            label: "Histogram to", unit: "-", range: -1.0e9..=1.0e9, source: "our choice", help: "Upper edge, in the histogram signal's unit.",
+        },
+        pub histogram_bins: u32 = 30 => {
+            label: "Histogram bins", unit: "-", range: 1.0..=1000.0, source: "our choice", help: "Number of bins.",
+        },
+        /// Doubles the cost.
+        pub excess_energy: bool = false => {
+            label: "Excess energy", source: "ch. 5.4.2",
+            help: "Each trial's extra motor energy against the same trial without surface losses (doubles the cost).",
+        },
+        /// Trials without one run to the end and count as censored at `sim.duration_s`.
+        pub stop_at_first_event: bool = false => {
+            label: "Stop at the first event", source: "ch. 5.4.3",
+            help: "Stop a trial onset_window_s after its first surface effect (beta_T < 1).",
+        },
+        pub onset_window_s: f64 = 12.0 => {
+            label: "Onset window", unit: "s", range: 0.0..=600.0, source: "Fig. 5-25",
+            help: "Motor power kept after the onset of the first event.",
+        },
+        pub keep_traces: u32 = 1 => {
+            label: "Traces kept", unit: "-", range: 0.0..=10.0, source: "our choice", help: "Traces of the first trials kept for display.",
+        },
+        pub periodogram_segment_s: f64 = 25.6 => {
+            label: "Periodogram segment", unit: "s", range: 1.0..=1.0e4, source: "our choice: 0.04 Hz resolution",
+            help: "Welch segment for the periodogram of motor power.",
+        },
+    }
 }
 
-/// Gains of all the control loops.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct ControllerParams {
-    /// Sample period of the discrete controllers [s]. Must be a whole number of time steps.
-    /// Not given in the thesis (which calls the governor "discrete"); 5 ms.
-    pub sample_period_s: f64,
-    /// Which controller runs throttles and field voltages: "pi" (the governor and field PIs
-    /// below, as in the thesis' ch. 5) or "lqg_ltr" (ch. 3.1, tuned by `lqg_ltr`).
-    pub design: ControllerDesign,
-    pub lqg_ltr: LqgLtrParams,
-    pub governor: GovernorParams,
-    pub field: FieldControlParams,
-    pub slip: SlipControlParams,
-    pub speed: SpeedControlParams,
-    pub autopilot: AutopilotParams,
+crate::params! {
+    /// The split plant: per shaft two gas turbine-generator sets, one DC bus and one motor.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct PlantParams {
+        pub turbine: TurbineParams = TurbineParams::default() => {},
+        pub generator: GeneratorParams = GeneratorParams::default() => {},
+        pub dc_link: DcLinkParams = DcLinkParams::default() => {},
+        pub motor: MotorParams = MotorParams::default() => {},
+    }
 }
 
-/// A command; the latest one whose time has come is in force.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Command {
-    /// Time at which the command takes effect [s].
-    pub t_s: f64,
-    /// Ordered ship speed [knots]. Omitted: keep the previous order.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub speed_kn: Option<f64>,
-    /// Ordered heading [degrees, clockwise from north, not wrapped: 360 means one full turn to
-    /// starboard]. Needs `hull.model = "maneuvering"`. Omitted: keep the previous order.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub heading_deg: Option<f64>,
-    /// Rate at which the heading reference moves to the ordered heading [deg/s]; omitted: the
-    /// autopilot's `turn_rate_deg_s`.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub heading_rate_deg_s: Option<f64>,
+crate::params! {
+    /// Gains of all the control loops.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct ControllerParams {
+        /// Must be a whole number of time steps. Not given in the thesis (which calls the governor
+        /// "discrete").
+        pub sample_period_s: f64 = 0.005 => {
+            label: "Controller sample period", unit: "s", range: 1.0e-4..=1.0,
+            source: "our choice: 5 ms (not given in the thesis)",
+            help: "The discrete controllers sample this often; a whole number of time steps.",
+        },
+        pub design: ControllerDesign = ControllerDesign::Pi => {
+            label: "Turbine and field control", source: "ch. 2, 5 (PI); ch. 3.1 (LQG/LTR)", group: "controllers",
+            help: "Two PI loops per set (ch. 2, 5), or one LQG/LTR controller per set moving throttle and field together (ch. 3.1; tune it in the Controller design tab).",
+        },
+        pub lqg_ltr: LqgLtrParams = LqgLtrParams::default() => {},
+        pub governor: GovernorParams = GovernorParams::default() => {},
+        pub field: FieldControlParams = FieldControlParams::default() => {},
+        pub slip: SlipControlParams = SlipControlParams::default() => {},
+        pub speed: SpeedControlParams = SpeedControlParams::default() => {},
+        pub autopilot: AutopilotParams = AutopilotParams::default() => {},
+    }
 }
 
-/// Where the run starts.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct InitialConditions {
-    /// Initial ship speed [knots]. With 0 the run starts from idle: turbines at rated speed on
-    /// idle fuel, bus charged, shafts stopped. Above 0 the plant starts at the calm-water steady
-    /// state for that speed (solved on load).
-    pub speed_kn: f64,
+crate::params! {
+    /// A command; the latest one whose time has come is in force.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields)]
+    pub struct Command {
+        pub t_s: f64 = 0.0 => {
+            label: "Order time", unit: "s", range: 0.0..=1.0e7, help: "When the order takes effect.",
+        },
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub speed_kn: Option<f64> = None => {
+            label: "Ordered speed", unit: "kn", range: 0.0..=40.0, empty: "keep the previous order",
+            help: "Ship speed ordered.",
+        },
+        /// Not wrapped: 360 means one full turn to starboard.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub heading_deg: Option<f64> = None => {
+            label: "Ordered heading", unit: "deg", range: -3600.0..=3600.0, empty: "keep the previous order",
+            help: "Clockwise from north, not wrapped (360: a full turn to starboard); needs hull.model maneuvering.",
+        },
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub heading_rate_deg_s: Option<f64> = None => {
+            label: "Heading rate", unit: "deg/s", range: 0.01..=10.0, empty: "the autopilot's turn_rate_deg_s",
+            help: "How fast the heading order moves to the ordered heading.",
+        },
+    }
 }
 
-/// Integration and recording.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct SimSettings {
-    /// Simulated time [s].
-    pub duration_s: f64,
-    /// Fixed step [s]. The DC link's time constant is about 4.5 ms (4.25 ms at 3 kn, 4.71 ms at
-    /// 32 kn: the fastest mode of the drive train linearised, every other one 0.9 s or slower),
-    /// so 1 ms by default; 5 ms in the presets in waves.
-    pub dt_s: f64,
-    /// The fixed-step method: "rk4" (default) or "midpoint" (second order, two evaluations of
-    /// the plant a step instead of four; the presets in waves, where holding the sea's inputs
-    /// over a step costs more accuracy than the method: tests/multirate.rs). The midpoint rule
-    /// is stable for the DC link at steps up to 2 time constants (RK4: 2.8).
-    pub integrator: Integrator,
-    /// Interval between recorded trace rows [s]. Must be a whole number of time steps.
-    pub record_interval_s: f64,
-    /// Seed of every random number in the run (the calm-water drive train uses none).
-    pub seed: u64,
-    /// Multi-rate stepping: the hull (surge, sway, yaw, position, heading) takes one step of
-    /// this many `dt_s` (by `integrator`) under the drive train's mean thrust over them, while the
-    /// drive train takes its `dt_s` steps with the hull held. 1 (the default): one step of the
-    /// whole plant every `dt_s`. `record_interval_s` must be a whole number of hull steps.
-    #[serde(skip_serializing_if = "is_one")]
-    pub hull_substeps: u32,
+crate::params! {
+    /// Where the run starts.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct InitialConditions {
+        /// Above 0 the plant starts at the calm-water steady state for that speed (solved on load).
+        pub speed_kn: f64 = 0.0 => {
+            label: "Initial speed", unit: "kn", range: 0.0..=35.0, source: "ch. 5.1 starts from idle", group: "sim",
+            help: "0 starts from idle (turbines at rated speed, bus charged, shafts stopped); above 0, at the calm-water steady state.",
+        },
+    }
+}
+
+crate::params! {
+    /// Integration and recording.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct SimSettings {
+        pub duration_s: f64 = 300.0 => {
+            label: "Duration", unit: "s", range: 0.0..=1.0e6, source: "our choice", group: "sim",
+            help: "Simulated time.",
+        },
+        /// The DC link's time constant is about 4.5 ms (4.25 ms at 3 kn, 4.71 ms at 32 kn: the
+        /// fastest mode of the drive train linearised, every other one 0.9 s or slower), so 1 ms by
+        /// default; 5 ms in the presets in waves.
+        pub dt_s: f64 = 0.001 => {
+            label: "Time step", unit: "s", range: 1.0e-5..=0.01, group: "sim",
+            source: "our choice: a quarter of the DC link's 4.5 ms time constant",
+            help: "Fixed step (1 ms; 5 ms in waves, the controllers' sample period); the record interval must be a whole number of steps.",
+        },
+        /// "midpoint" is second order, two evaluations of the plant a step instead of four; the
+        /// presets in waves use it, where holding the sea's inputs over a step costs more accuracy
+        /// than the method (tests/multirate.rs). The midpoint rule is stable for the DC link at
+        /// steps up to 2 time constants (RK4: 2.8).
+        pub integrator: Integrator = Integrator::Rk4 => {
+            label: "Integration method", group: "sim", source: "our choice: RK4; midpoint in waves (tests/multirate.rs)",
+            help: "RK4 evaluates the plant four times a step, the midpoint rule twice (second order). In waves at 5 ms both agree with 1 ms RK4 steps to 0.035 rpm: holding the sea over a step costs more than the method.",
+        },
+        pub record_interval_s: f64 = 0.1 => {
+            label: "Record every", unit: "s", range: 1.0e-4..=1.0e4, source: "our choice", group: "sim",
+            help: "Interval between recorded trace rows; a whole number of steps.",
+        },
+        /// The calm-water drive train uses none.
+        pub seed: u64 = 0 => {
+            label: "Seed", unit: "-", source: "our choice", group: "sim",
+            help: "Fixes every random number: the same seed gives the same sea.",
+        },
+        /// The hull (surge, sway, yaw, position, heading) takes one step of this many `dt_s` (by
+        /// `integrator`) under the drive train's mean thrust over them, while the drive train takes
+        /// its `dt_s` steps with the hull held. 1: one step of the whole plant every `dt_s`.
+        /// `record_interval_s` must be a whole number of hull steps.
+        #[serde(skip_serializing_if = "is_one")]
+        pub hull_substeps: u32 = 1 => {
+            label: "Hull sub-steps", unit: "-", range: 1.0..=100.0, source: "our choice: single rate (tests/multirate.rs)",
+            help: "Multi-rate: the hull steps once per this many time steps under the mean thrust.",
+        },
+    }
 }
 
 /// Longest step with `sim.integrator = midpoint` [s] (see `SimSettings::validate`).
@@ -196,62 +244,6 @@ pub const MIDPOINT_MAX_DT_S: f64 = 0.008;
 
 fn is_one(n: &u32) -> bool {
     *n == 1
-}
-
-impl Default for Scenario {
-    fn default() -> Self {
-        Scenario {
-            name: "custom".into(),
-            description: String::new(),
-            ship: ShipParams::default(),
-            hull: HullParams::default(),
-            rudder: RudderParams::default(),
-            propeller: PropellerParams::default(),
-            plant: PlantParams::default(),
-            controllers: ControllerParams::default(),
-            commands: vec![Command { t_s: 0.0, speed_kn: Some(25.0), heading_deg: None, heading_rate_deg_s: None }],
-            initial: InitialConditions::default(),
-            sim: SimSettings::default(),
-            sea: SeaParams::default(),
-            seakeeping: SeakeepingParams::default(),
-            monte_carlo: MonteCarloParams::default(),
-            as_printed: AsPrintedParams::default(),
-        }
-    }
-}
-
-impl Default for ControllerParams {
-    fn default() -> Self {
-        ControllerParams {
-            sample_period_s: 0.005,
-            design: ControllerDesign::Pi,
-            lqg_ltr: LqgLtrParams::default(),
-            governor: GovernorParams::default(),
-            field: FieldControlParams::default(),
-            slip: SlipControlParams::default(),
-            speed: SpeedControlParams::default(),
-            autopilot: AutopilotParams::default(),
-        }
-    }
-}
-
-impl Default for InitialConditions {
-    fn default() -> Self {
-        InitialConditions { speed_kn: 0.0 }
-    }
-}
-
-impl Default for SimSettings {
-    fn default() -> Self {
-        SimSettings {
-            duration_s: 300.0,
-            dt_s: 0.001,
-            integrator: Integrator::Rk4,
-            record_interval_s: 0.1,
-            seed: 0,
-            hull_substeps: 1,
-        }
-    }
 }
 
 /// How many recorded values (rows times trace columns) a run may hold; beyond it the run is
@@ -273,21 +265,14 @@ pub const MAX_COMMANDS: usize = 10_000;
 /// How many signals a Monte Carlo study may keep envelopes of.
 pub const MAX_ENVELOPE_SIGNALS: usize = 20;
 
-impl ControllerParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.sample_period_s, 1.0e-4, 1.0);
-        v.section("lqg_ltr", |v| self.lqg_ltr.validate(v));
-        v.section("governor", |v| self.governor.validate(v));
-        v.section("field", |v| self.field.validate(v));
-        v.section("slip", |v| self.slip.validate(v));
-        v.section("autopilot", |v| self.autopilot.validate(v));
-        v.section("speed", |v| self.speed.validate(v));
-    }
-}
+impl crate::params::CrossCheck for ControllerParams {}
+impl crate::params::CrossCheck for PlantParams {}
+impl crate::params::CrossCheck for InitialConditions {}
 
-impl MonteCarloParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.trials as u64, 1, 10_000_000);
+impl crate::params::CrossCheck for Command {}
+
+impl crate::params::CrossCheck for MonteCarloParams {
+    fn cross_check(&self, v: &mut Validator) {
         if self.envelope_signals.len() > MAX_ENVELOPE_SIGNALS {
             v.fail(
                 "envelope_signals",
@@ -297,27 +282,24 @@ impl MonteCarloParams {
         }
         for (i, n) in self.envelope_signals.iter().enumerate().take(MAX_ENVELOPE_SIGNALS) {
             if Signal::from_name(n).is_none() {
-                v.fail(&format!("envelope_signals.{i}"), n, "is not a trace column");
+                v.fail(&format!("envelope_signals.{i}"), n, "is not a trace column (see `aes-sim signals`)");
             }
         }
         if Signal::from_name(&self.histogram_signal).is_none() {
-            v.fail("histogram_signal", &self.histogram_signal, "is not a trace column");
+            v.fail("histogram_signal", &self.histogram_signal, "is not a trace column (see `aes-sim signals`)");
         }
-        check_range!(v, self.histogram_time_s, 0.0, 1.0e6);
-        check_range!(v, self.histogram_lo, -1.0e9, 1.0e9);
-        check_range!(v, self.histogram_hi, self.histogram_lo, 1.0e9);
-        check_range!(v, self.histogram_bins as u64, 1, 1000);
-        check_range!(v, self.onset_window_s, 0.0, 600.0);
-        check_range!(v, self.keep_traces as u64, 0, 10);
-        check_range!(v, self.periodogram_segment_s, 1.0, 1.0e4);
+        if self.histogram_hi < self.histogram_lo {
+            v.fail(
+                "histogram_hi",
+                crate::validate::num(self.histogram_hi),
+                format!("must be at least {}", v.path("histogram_lo")),
+            );
+        }
     }
 }
 
-impl SimSettings {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.duration_s, 0.0, 1.0e6);
-        check_range!(v, self.dt_s, 1.0e-5, 0.01);
-        check_range!(v, self.record_interval_s, 1.0e-4, 1.0e4);
+impl crate::params::CrossCheck for SimSettings {
+    fn cross_check(&self, v: &mut Validator) {
         if !(self.dt_s.is_finite() && self.dt_s > 0.0) {
             return;
         }
@@ -340,9 +322,9 @@ impl SimSettings {
                 ),
             );
         }
-        if !(1..=100).contains(&self.hull_substeps) {
-            v.fail("hull_substeps", self.hull_substeps as f64, "must be 1 to 100".to_string());
-        } else if !whole_multiple(self.record_interval_s, self.hull_substeps as f64 * self.dt_s) {
+        if (1..=100).contains(&self.hull_substeps)
+            && !whole_multiple(self.record_interval_s, self.hull_substeps as f64 * self.dt_s)
+        {
             v.fail(
                 "record_interval_s",
                 self.record_interval_s,
@@ -379,30 +361,10 @@ impl SimSettings {
     }
 }
 
-fn whole_multiple(a: f64, b: f64) -> bool {
-    let r = a / b;
-    (r - r.round()).abs() < 1e-6 && r.round() >= 1.0
-}
-
-impl Scenario {
-    /// Checks every field against its allowed range; returns all problems at once.
-    pub fn validate(&self) -> Result<(), ScenarioError> {
-        let mut v = Validator::new();
-        v.section("ship", |v| self.ship.validate(v));
-        v.section("hull", |v| self.hull.validate(v));
-        v.section("rudder", |v| self.rudder.validate(v));
-        v.section("propeller", |v| self.propeller.validate(v));
-        v.section("plant", |v| {
-            v.section("turbine", |v| self.plant.turbine.validate(v));
-            v.section("generator", |v| self.plant.generator.validate(v));
-            v.section("dc_link", |v| self.plant.dc_link.validate(v));
-            v.section("motor", |v| self.plant.motor.validate(v));
-        });
-        v.section("controllers", |v| self.controllers.validate(v));
-        self.validate_commands(&mut v);
-        v.section("initial", |v| v.range("speed_kn", self.initial.speed_kn, 0.0, 35.0));
-        v.section("monte_carlo", |v| self.monte_carlo.validate(v));
-        v.section("sea", |v| self.sea.validate(v));
+/// The checks that span sections.
+impl crate::params::CrossCheck for Scenario {
+    fn cross_check(&self, v: &mut Validator) {
+        self.validate_commands(v);
         if self.sea.kind != SeaKind::Calm && self.hull.model != HullModelKind::Maneuvering {
             v.fail(
                 "sea.kind",
@@ -410,11 +372,7 @@ impl Scenario {
                 "waves need hull.model = \"maneuvering\"",
             );
         }
-        // Validated in calm water too: the fuel power uses the turbine efficiency in every run.
-        v.section("seakeeping", |v| self.seakeeping.validate(v, self.sim.dt_s));
-        v.section("sim", |v| self.sim.validate(v));
-        v.section("as_printed", |v| self.as_printed.validate(v));
-        self.validate_work(&mut v);
+        self.validate_work(v);
         let dt = self.sim.dt_s;
         if dt.is_finite() && dt > 0.0 {
             for (path, period) in [
@@ -427,6 +385,20 @@ impl Scenario {
                 }
             }
         }
+    }
+}
+
+fn whole_multiple(a: f64, b: f64) -> bool {
+    let r = a / b;
+    (r - r.round()).abs() < 1e-6 && r.round() >= 1.0
+}
+
+impl Scenario {
+    /// Checks every field against its declaration and the checks that span fields; returns all
+    /// problems at once.
+    pub fn validate(&self) -> Result<(), ScenarioError> {
+        let mut v = Validator::new();
+        crate::params::Section::check_fields(self, &mut v);
         v.finish()
     }
 
@@ -502,26 +474,16 @@ impl Scenario {
         let mut last_t = f64::NEG_INFINITY;
         for (i, cmd) in self.commands.iter().enumerate().take(MAX_COMMANDS) {
             v.section(&format!("commands.{i}"), |v| {
-                check_range!(v, cmd.t_s, 0.0, 1.0e7);
                 if cmd.t_s < last_t {
                     v.fail("t_s", cmd.t_s, "commands must be in time order");
                 }
                 last_t = cmd.t_s;
-                if let Some(kn) = cmd.speed_kn {
-                    v.range("speed_kn", kn, 0.0, 40.0);
-                }
-                if let Some(hd) = cmd.heading_deg {
-                    v.range("heading_deg", hd, -3600.0, 3600.0);
-                    if self.hull.model != HullModelKind::Maneuvering {
-                        v.fail(
-                            "heading_deg",
-                            hd,
-                            "heading commands need hull.model = \"maneuvering\" (the surge model only goes straight)",
-                        );
-                    }
-                }
-                if let Some(rate) = cmd.heading_rate_deg_s {
-                    v.range("heading_rate_deg_s", rate, 0.01, 10.0);
+                if let (Some(hd), false) = (cmd.heading_deg, self.hull.model == HullModelKind::Maneuvering) {
+                    v.fail(
+                        "heading_deg",
+                        hd,
+                        "heading commands need hull.model = \"maneuvering\" (the surge model only goes straight)",
+                    );
                 }
             });
         }
@@ -565,12 +527,13 @@ impl Scenario {
         }
         // From a borrow, so that an error can quote the offending value (serde names only the path).
         let sc: Scenario = serde_path_to_error::deserialize(&value).map_err(|e| {
-            let path = e.path().to_string();
+            let path = dotted(e.path());
             let found = value_at(&value, e.path()).map(|v| crate::validate::shorten(&v.to_string()));
+            let message = reader_message(&path, &e.into_inner().to_string());
             ScenarioError(vec![FieldError {
-                path: if path == "." { "(top level)".into() } else { crate::validate::shorten(&path) },
+                path: if path.is_empty() { "(top level)".into() } else { crate::validate::shorten(&path) },
                 value: found.unwrap_or_default(),
-                message: crate::validate::shorten_message(&e.into_inner().to_string()),
+                message,
             }])
         })?;
         sc.validate()?;
@@ -666,6 +629,55 @@ const MOVED_FIELDS: [(&str, &str, &str); 6] = [
     ("seakeeping", "prop_x_aft_m", "the propellers' place is the hull's: ship.hull.propeller_x_m (from the AP)"),
     ("rudder", "x_p_m", "the rudder's place is the hull's: ship.hull.rudder_x_m (from the AP)"),
 ];
+
+/// A deserializer's error path as the dotted path the checks use (`commands.1.speed_kn`).
+fn dotted(path: &serde_path_to_error::Path) -> String {
+    use serde_path_to_error::Segment;
+    let parts: Vec<String> = path
+        .iter()
+        .filter_map(|s| match s {
+            Segment::Map { key } => Some(key.clone()),
+            Segment::Seq { index } => Some(index.to_string()),
+            Segment::Enum { variant } => Some(variant.clone()),
+            Segment::Unknown => None,
+        })
+        .collect();
+    parts.join(".")
+}
+
+/// The reader's error in the registry's words: what the field at `path` accepts (its label and
+/// range or choices), or, for a name that is no parameter, the closest one. serde's own wording
+/// ("invalid type: floating point `2.5`, expected u32") never reaches a user.
+fn reader_message(path: &str, serde_says: &str) -> String {
+    if serde_says.starts_with("unknown field") {
+        let (parent, _) = path.rsplit_once('.').unwrap_or(("", path));
+        let near = crate::params::closest(path);
+        let hint = near.map(|n| format!("; did you mean {n}?")).unwrap_or_default();
+        let section = if parent.is_empty() { "the scenario".to_string() } else { parent.to_string() };
+        return format!("no such parameter in {section}{hint} (`aes-sim params` lists them all)");
+    }
+    if serde_says.starts_with("missing field") {
+        if let Some(m) = serde_says.split('`').nth(1).and_then(|f| crate::params::find(&format!("{path}.{f}"))) {
+            return format!("needs {} ({}), which {}", m.path, m.label, m.expects());
+        }
+    }
+    if serde_says.starts_with("duplicate key") || serde_says.starts_with("nesting deeper") {
+        return crate::validate::shorten_message(serde_says);
+    }
+    // The field, or the choice or pair that a deeper path ({"midpoint": 5}) sits in.
+    let mut at = Some(path);
+    while let Some(p) = at {
+        if let Some(m) = crate::params::find(p).filter(|m| m.kind != "section" && m.kind != "list") {
+            return m.message();
+        }
+        at = p.rsplit_once('.').map(|(parent, _)| parent);
+    }
+    match crate::params::find(path) {
+        _ if path == "commands" => "must be a list of orders, e.g. [{\"t_s\": 0, \"speed_kn\": 25}]".into(),
+        _ if path.is_empty() => "a scenario must be a JSON object of named sections ({...})".into(),
+        _ => "must be a JSON object of named fields ({...})".into(),
+    }
+}
 
 /// The value at a deserializer's error path in the JSON it read, if it is there.
 fn value_at<'a>(root: &'a serde_json::Value, path: &serde_path_to_error::Path) -> Option<&'a serde_json::Value> {
@@ -820,20 +832,35 @@ mod tests {
         let e = Scenario::from_json(r#"{"ship": {"mass_kgg": 1}}"#).unwrap_err();
         let text = e.to_string();
         assert!(text.contains("mass_kgg"), "{text}");
+        let e = Scenario::from_json(r#"{"sea": {"sea_stat": 4}}"#).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "sea.sea_stat = 4: no such parameter in sea; did you mean sea.sea_state? (`aes-sim params` lists them all)"
+        );
     }
 
     #[test]
     fn wrong_type_is_named_with_path() {
         let e = Scenario::from_json(r#"{"plant": {"motor": {"pole_pairs": "twelve"}}}"#).unwrap_err();
         assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("plant.motor.pole_pairs", "\"twelve\""));
+        assert_eq!(e.0[0].message, "Motor pole pairs must be a whole number from 1 to 64");
+        // The issue's example: a fraction where a whole number belongs, in words, no serde.
+        let e = Scenario::from_json(r#"{"sea": {"sea_state": 2.5}}"#).unwrap_err();
+        assert_eq!(e.to_string(), "sea.sea_state = 2.5: Sea state must be a whole number from 2 to 6");
+        let e = Scenario::from_json(r#"{"ship": {"wetted_area_m2": "big"}}"#).unwrap_err();
+        assert_eq!(e.0[0].message, "Wetted area must be a number from 1 to 100000 m²");
         // An unknown choice: the value quoted and the choices listed.
         let e = Scenario::from_json(r#"{"sim": {"integrator": "euler"}}"#).unwrap_err();
         assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("sim.integrator", "\"euler\""));
-        assert!(e.0[0].message.contains("`rk4` or `midpoint`"), "{}", e.0[0].message);
+        assert_eq!(
+            e.0[0].message,
+            "Integration method must be one of \"rk4\" (RK4 (fourth order)), \"midpoint\" (midpoint rule (second order))"
+        );
         let e = Scenario::from_json(r#"{"sim": {"integrator": {"midpoint": 5}}}"#).unwrap_err();
         assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("sim.integrator.midpoint", "5"));
         let e = Scenario::from_json(r#"{"commands": [{"t_s": 0}, {"t_s": 5, "speed_kn": [1]}]}"#).unwrap_err();
-        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("commands[1].speed_kn", "[1]"));
+        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("commands.1.speed_kn", "[1]"));
+        assert!(e.0[0].message.starts_with("Ordered speed must be a number from 0 to 40 kn"), "{}", e.0[0].message);
     }
 
     #[test]

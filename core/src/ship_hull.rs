@@ -32,73 +32,90 @@ const MEMO_SIZE: usize = 8;
 /// The embedded hulls' names (`ship.hull.name`), then "custom" for offsets of one's own.
 pub const HULL_NAMES: [&str; 3] = ["dtmb5415", "wigley", "custom"];
 
-/// The `ship.hull` section of the scenario.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct HullSpec {
-    /// "dtmb5415" (the default), "wigley", or "custom" with `offsets_csv`.
-    pub name: String,
-    /// Offsets of a custom hull in the long format `station_index,x_m,z_m,half_breadth_m` (what
-    /// `aes-sim rao --hull` reads), x forward from the aft perpendicular, z above the baseline.
-    #[serde(skip_serializing_if = "String::is_empty")]
-    pub offsets_csv: String,
-    /// Draft: the calm waterline's height above the baseline, even keel [m]. Give this or
-    /// `mass_kg`; neither takes the embedded hull's design draft (5415: 6.15 m, Wigley: 6.25 m).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub draft_m: Option<f64>,
-    /// Displaced mass [kg]: the draft is solved so that rho V equals it (e.g. 7e6, Table 5.1).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub mass_kg: Option<f64>,
-    /// Centre of gravity above the baseline [m]. Needed for custom offsets.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub kg_m: Option<f64>,
-    /// Radii of gyration about the centre of gravity: roll, pitch, yaw [m]. Custom offsets:
-    /// 0.37 B, 0.25 Lpp, 0.25 Lpp (the 5415's ratios, typical of slender ships).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub kxx_m: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub kyy_m: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub kzz_m: Option<f64>,
-    /// Bilge keels on both sides (length 0: none). Custom offsets and the Wigley: none.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub bilge_keels: Option<BilgeKeels>,
-    /// Propeller hubs' distance forward of the aft perpendicular [m]. Custom: 0.058 Lpp (the 5415's).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub propeller_x_m: Option<f64>,
-    /// Lateral offsets of the port and starboard shafts, to port [m] (port positive, starboard
-    /// negative). Custom: +-0.26 B (the 5415's).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub shaft_y_m: Option<[f64; N_SHAFTS]>,
-    /// Propeller hubs' height above the baseline [m]; the calm-water hub depth h0 is the draft
-    /// minus it (ch. 5.3 and 5.4 vary h0). Custom: 0.024 T (the 5415's 0.15 m at 6.15 m).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub hub_above_base_m: Option<f64>,
-    /// Rudder's distance forward of the aft perpendicular [m] (its lever in eq. 2.19). Custom:
-    /// 0.022 Lpp (the 5415's).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub rudder_x_m: Option<f64>,
-}
-
-impl Default for HullSpec {
-    fn default() -> Self {
-        HullSpec {
-            name: "dtmb5415".into(),
-            offsets_csv: String::new(),
-            draft_m: None,
-            mass_kg: None,
-            kg_m: None,
-            kxx_m: None,
-            kyy_m: None,
-            kzz_m: None,
-            bilge_keels: None,
-            propeller_x_m: None,
-            shaft_y_m: None,
-            hub_above_base_m: None,
-            rudder_x_m: None,
-        }
+crate::params! {
+    /// The `ship.hull` section of the scenario. Its ranges depend on the hull (a draft bounds KG,
+    /// the length the appendages' places): `HullSpec::validate` checks them once it resolves.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct HullSpec {
+        pub name: String = "dtmb5415".into() => {
+            label: "Hull", source: "our choice: the DTMB 5415, the destroyer the thesis' ship resembles",
+            choices: &[("dtmb5415", "DTMB 5415 (destroyer, 142 m)"), ("wigley", "Wigley (test hull)"), ("custom", "custom offsets")],
+            help: "An embedded hull, or \"custom\" with offsets_csv.",
+        },
+        /// Offsets of a custom hull in the long format `station_index,x_m,z_m,half_breadth_m` (what
+        /// `aes-sim rao --hull` reads), x forward from the aft perpendicular, z above the baseline.
+        #[serde(skip_serializing_if = "String::is_empty")]
+        pub offsets_csv: String = String::new() => {
+            label: "Custom hull offsets", empty: "an embedded hull",
+            help: "CSV lines station_index,x_m,z_m,half_breadth_m (x from the AP, z above the baseline).",
+        },
+        /// Neither this nor `mass_kg`: the embedded hull's design draft (5415: 6.15 m, Wigley:
+        /// 6.25 m).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub draft_m: Option<f64> = None => {
+            label: "Draft T", unit: "m", empty: "the hull's own", group: "hull-loading",
+            source: "the embedded hull's design draft (5415: 6.15 m, Wigley: 6.25 m)",
+            help: "Calm waterline above the baseline, even keel. Give the draft or the mass.",
+        },
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub mass_kg: Option<f64> = None => {
+            label: "Displaced mass", unit: "kg", empty: "from the draft", group: "hull-loading",
+            excludes: &["ship.hull.draft_m"],
+            help: "Instead of the draft: the draft is solved so that the hull displaces this mass.",
+        },
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub kg_m: Option<f64> = None => {
+            label: "Centre of gravity KG", unit: "m", empty: "the hull's own", group: "hull-loading",
+            source: "5415: 7.555 m (SIMMAN 2014); Wigley: 4.5 m (our choice)",
+            help: "Above the baseline; a custom hull needs it.",
+        },
+        /// Custom offsets: 0.37 B, 0.25 Lpp, 0.25 Lpp (the 5415's ratios, typical of slender ships).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub kxx_m: Option<f64> = None => {
+            label: "Roll radius of gyration k_xx", unit: "m", empty: "the hull's own (custom: 0.37 B)", group: "hull-loading",
+            source: "SIMMAN 2014 ratios", help: "About the centre of gravity.",
+        },
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub kyy_m: Option<f64> = None => {
+            label: "Pitch radius of gyration k_yy", unit: "m", empty: "the hull's own (custom: 0.25 Lpp)", group: "hull-loading",
+            source: "SIMMAN 2014 ratios", help: "About the centre of gravity.",
+        },
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub kzz_m: Option<f64> = None => {
+            label: "Yaw radius of gyration k_zz", unit: "m", empty: "the hull's own (custom: 0.25 Lpp)", group: "hull-loading",
+            source: "SIMMAN 2014 ratios", help: "About the centre of gravity.",
+        },
+        /// Length 0: none. Custom offsets and the Wigley: none.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub bilge_keels: Option<BilgeKeels> = None => {},
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub propeller_x_m: Option<f64> = None => {
+            label: "Propellers from the AP", unit: "m", empty: "the hull's own (custom: 0.058 Lpp)",
+            source: "5415: 8.3 m (our choice)", help: "Propeller hubs' distance forward of the aft perpendicular.",
+        },
+        /// Port positive, starboard negative.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub shaft_y_m: Option<[f64; N_SHAFTS]> = None => {
+            label: "Shaft offsets", unit: "m", empty: "the hull's own (custom: +-0.26 B)",
+            source: "5415: +-5.0 m (our choice)", help: "Lateral offsets of the port and starboard shafts, to port.",
+        },
+        /// Custom: 0.024 T (the 5415's 0.15 m at 6.15 m).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub hub_above_base_m: Option<f64> = None => {
+            label: "Propeller hub above the baseline", unit: "m", empty: "the hull's own (custom: 0.024 T)", group: "hull-loading",
+            source: "5415: 0.15 m, h0 = 6.0 m (ch. 5.3)",
+            help: "The calm-water hub depth is h0 = draft - hub height (ch. 5.3 and 5.4 vary h0).",
+        },
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub rudder_x_m: Option<f64> = None => {
+            label: "Rudder from the AP", unit: "m", empty: "the hull's own (custom: 0.022 Lpp)",
+            source: "5415: 3.1 m (our choice)", help: "Rudders' distance forward of the aft perpendicular (its lever in eq. 2.19).",
+        },
     }
 }
+
+impl crate::params::CrossCheck for HullSpec {}
 
 /// An embedded hull's own loading and appendages.
 struct Embedded {

@@ -1,6 +1,5 @@
 //! Ship surge in calm water (thesis ch. 2.3, eqs. 2.15-2.16).
 
-use crate::check_range;
 use crate::ship_hull::HullSpec;
 use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
@@ -42,54 +41,51 @@ impl Surge {
     }
 }
 
-/// The ship: its hull (`ship_hull`: geometry, loading, appendages; the mass and the length every
-/// model uses) and the surge model's resistance and propulsion factors (thesis eqs. 2.12,
-/// 2.15-2.16, Table 5.1).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct ShipParams {
-    pub hull: HullSpec,
-    /// Surge added mass m_a over the displaced mass [-]. Not given in the thesis; 0.05, the usual
-    /// slender-hull value of -X_udot (Fossen 2011, ch. 6).
-    pub added_mass_fraction: f64,
-    /// Resistance area A_w of eq. 2.15 [m^2]. Table 5.1: 5200. With C_r it is the thesis'
-    /// calibration of the resistance, kept as printed: the 5415's own wetted area is 2973 m^2
-    /// (SIMMAN), with which C_r = 3e-3 would give 57 % of the resistance and not the powers of
-    /// Table 5.7.
-    pub wetted_area_m2: f64,
-    /// Hull drag coefficient C_r [-] of eq. 2.15. Table 5.1: 3e-3.
-    pub drag_coeff: f64,
-    /// Thrust deduction t [-]. Table 5.1 (called "thrust coefficient" there): 0.1.
-    pub thrust_deduction: f64,
-    /// Wake fraction w [-] of eq. 2.12. Table 5.1: 0.1.
-    pub wake_fraction: f64,
-    /// Sea water density rho [kg/m^3]. Table 5.1: 1025.
-    pub water_density_kg_m3: f64,
-}
-
-impl Default for ShipParams {
-    fn default() -> Self {
-        ShipParams {
-            hull: HullSpec::default(),
-            added_mass_fraction: 0.05,
-            wetted_area_m2: 5200.0,
-            drag_coeff: 3.0e-3,
-            thrust_deduction: 0.1,
-            wake_fraction: 0.1,
-            water_density_kg_m3: 1025.0,
-        }
+crate::params! {
+    /// The ship: its hull (`ship_hull`: geometry, loading, appendages; the mass and the length
+    /// every model uses) and the surge model's resistance and propulsion factors (thesis eqs. 2.12,
+    /// 2.15-2.16, Table 5.1).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct ShipParams {
+        pub hull: HullSpec = HullSpec::default() => {},
+        /// The usual slender-hull value of -X_udot (Fossen 2011, ch. 6).
+        pub added_mass_fraction: f64 = 0.05 => {
+            label: "Surge added mass", unit: "-", range: 0.0..=1.0,
+            source: "our choice: the usual slender-hull -X_udot (Fossen 2011, ch. 6)",
+            help: "Surge added mass m_a as a fraction of the displaced mass.",
+        },
+        /// With C_r it is the thesis' calibration of the resistance, kept as printed: the 5415's own
+        /// wetted area is 2973 m^2 (SIMMAN), with which C_r = 3e-3 would give 57 % of the
+        /// resistance and not the powers of Table 5.7.
+        pub wetted_area_m2: f64 = 5200.0 => {
+            label: "Wetted area", unit: "m²", range: 1.0..=1.0e5, source: "Table 5.1", group: "ship",
+            help: "Resistance area A_w of eq. 2.15 (the thesis' calibration with C_r).",
+        },
+        pub drag_coeff: f64 = 3.0e-3 => {
+            label: "Drag coefficient C_r", unit: "-", range: 1.0e-5..=0.1, source: "Table 5.1", group: "ship",
+            help: "Hull resistance coefficient of eq. 2.15.",
+        },
+        pub thrust_deduction: f64 = 0.1 => {
+            label: "Thrust deduction t", unit: "-", range: 0.0..=0.5, source: "Table 5.1 (\"thrust coefficient\")", group: "ship",
+            help: "Share of thrust lost to the hull's suction (eq. 2.15).",
+        },
+        pub wake_fraction: f64 = 0.1 => {
+            label: "Wake fraction w", unit: "-", range: 0.0..=0.6, source: "Table 5.1", group: "ship",
+            help: "The propeller meets water slowed by the hull: V_a = (1 - w) u (eq. 2.12).",
+        },
+        pub water_density_kg_m3: f64 = 1025.0 => {
+            label: "Water density", unit: "kg/m³", range: 900.0..=1100.0, source: "Table 5.1",
+            help: "Sea water density rho.",
+        },
     }
 }
 
-impl ShipParams {
-    pub fn validate(&self, v: &mut Validator) {
-        check_range!(v, self.added_mass_fraction, 0.0, 1.0);
-        check_range!(v, self.wetted_area_m2, 1.0, 1.0e5);
-        check_range!(v, self.drag_coeff, 1.0e-5, 0.1);
-        check_range!(v, self.thrust_deduction, 0.0, 0.5);
-        check_range!(v, self.wake_fraction, 0.0, 0.6);
-        check_range!(v, self.water_density_kg_m3, 900.0, 1100.0);
-        if (900.0..=1100.0).contains(&self.water_density_kg_m3) {
+impl crate::params::CrossCheck for ShipParams {
+    /// The hull must resolve, float and carry its appendages, in this water.
+    fn cross_check(&self, v: &mut Validator) {
+        let named = crate::ship_hull::HULL_NAMES.contains(&self.hull.name.as_str());
+        if named && (900.0..=1100.0).contains(&self.water_density_kg_m3) {
             v.section("hull", |v| self.hull.validate(v, self.water_density_kg_m3));
         }
     }

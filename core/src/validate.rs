@@ -1,10 +1,9 @@
 //! Validation of parameters: every problem names the field by its dotted path, its value
 //! (shortened) and what is allowed.
 //!
-//! Each subsystem's `Params::validate(&self, v: &mut Validator)` checks its own fields with
-//! [`check_range!`] (the path comes from the field's name, never from a typed string); `Scenario`
-//! nests the sections (`v.section("plant.motor", |v| self.plant.motor.validate(v))`) and adds the
-//! checks that span sections.
+//! Each section's fields are checked against their declarations (`crate::params`: the path comes
+//! from the field's name, never from a typed string); a section's `CrossCheck` adds the checks
+//! that relate its fields, and `Scenario`'s the checks that span sections.
 
 use serde::Serialize;
 use std::fmt;

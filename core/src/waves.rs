@@ -8,7 +8,6 @@
 //! ship's heading psi: x north, y east); z_i(x, y, t) = a_i cos(w_i t - k_i (x cos mu_i + y sin mu_i)
 //! + gamma_i) with deep-water wave number k_i = w_i^2 / g.
 
-use crate::check_range;
 use crate::validate::Validator;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -238,45 +237,84 @@ mod drift_tests {
     }
 }
 
-/// The sea (thesis ch. 2.5.4). Directions are where the waves come FROM, in the earth frame of the
-/// ship's heading (0 = north): a ship heading 0 deg in waves from 0 deg meets head seas.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct SeaParams {
-    pub kind: SeaKind,
-    /// Table 2.4 sea state (2 to 6), used unless `h_sig_m` and `omega_n_rad_s` are both set.
-    pub sea_state: u32,
-    /// Significant wave height H_1/3 [m] and modal frequency [rad/s] (0: from the sea state).
-    pub h_sig_m: f64,
-    pub omega_n_rad_s: f64,
-    /// Mean direction the waves come from [deg].
-    pub from_deg: f64,
-    /// Number of components N_s (ch. 2.5.4: 100 to 500).
-    pub components: u32,
-    /// Spectrum bounds [rad/s] (0: 0.6 and 4 times the modal frequency, 99.5 % of the energy).
-    pub omega_min_rad_s: f64,
-    pub omega_max_rad_s: f64,
-    /// Exponent h of the cos^h spreading about the mean direction (0: long-crested).
-    pub spreading: f64,
-    /// Regular sea: amplitude [m] and frequency [rad/s].
-    pub amplitude_m: f64,
-    pub omega_rad_s: f64,
+crate::params! {
+    /// The sea (thesis ch. 2.5.4). Directions are where the waves come FROM, in the earth frame of
+    /// the ship's heading (0 = north): a ship heading 0 deg in waves from 0 deg meets head seas.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct SeaParams {
+        pub kind: SeaKind = SeaKind::Calm => {
+            label: "Sea", source: "ch. 2.5.4 (random), ch. 5.2.4 (regular)", group: "sea",
+            help: "Random: Bretschneider spectrum (eq. 2.58) of a Table 2.4 sea state.",
+        },
+        /// Used unless `h_sig_m` and `omega_n_rad_s` are both set.
+        pub sea_state: u32 = 6 => {
+            label: "Sea state", unit: "-", range: 2.0..=6.0, source: "Table 2.4 (the ch. 5 studies use 6)", group: "sea",
+            help: "Table 2.4 gives each sea state's significant height and peak frequency.",
+        },
+        pub h_sig_m: f64 = 0.0 => {
+            label: "Significant wave height H_1/3", unit: "m", range: 0.01..=20.0, empty: "the sea state's",
+            help: "With omega_n_rad_s, a spectrum of one's own instead of the sea state's.",
+        },
+        pub omega_n_rad_s: f64 = 0.0 => {
+            label: "Modal frequency omega_n", unit: "rad/s", range: 0.2..=3.0, empty: "the sea state's",
+            help: "Peak frequency of the spectrum of one's own (with h_sig_m).",
+        },
+        pub from_deg: f64 = 0.0 => {
+            label: "Waves from", unit: "deg", range: -3600.0..=3600.0, source: "head seas for a ship heading north", group: "sea",
+            help: "0 = from north: head seas for a ship heading north.",
+        },
+        pub components: u32 = 200 => {
+            label: "Wave components N_s", unit: "-", range: 1.0..=2000.0, source: "ch. 2.5.4 (100 to 500)", group: "sea",
+            help: "Regular waves summed to make the random sea.",
+        },
+        /// 0: 0.6 and 4 times the modal frequency, 99.5 % of the energy.
+        pub omega_min_rad_s: f64 = 0.0 => {
+            label: "Lowest wave frequency", unit: "rad/s", range: 0.05..=5.0, empty: "0.6 times the modal frequency",
+            help: "Lower bound of the sampled spectrum.",
+        },
+        pub omega_max_rad_s: f64 = 0.0 => {
+            label: "Highest wave frequency", unit: "rad/s", range: 0.06..=6.0, empty: "4 times the modal frequency",
+            help: "Upper bound of the sampled spectrum.",
+        },
+        pub spreading: f64 = 2.0 => {
+            label: "Directional spreading", unit: "-", range: 0.0..=100.0, source: "our choice: cos² spreading, usual for wind seas",
+            help: "Exponent h of cos^h about the mean direction; 0: long-crested.",
+        },
+        pub amplitude_m: f64 = 0.6096 => {
+            label: "Regular wave amplitude", unit: "m", range: 0.0..=10.0, source: "ch. 5.2.4: 2 ft", group: "sea",
+            help: "1 ft = 0.3048 m.",
+        },
+        pub omega_rad_s: f64 = 0.6 => {
+            label: "Regular wave frequency", unit: "rad/s", range: 0.1..=5.0, source: "our choice, within Fig. 5-12's sweep", group: "sea",
+            help: "Wave length 2 pi g / omega^2.",
+        },
+    }
 }
 
-impl Default for SeaParams {
-    fn default() -> Self {
-        SeaParams {
-            kind: SeaKind::Calm,
-            sea_state: 6,
-            h_sig_m: 0.0,
-            omega_n_rad_s: 0.0,
-            from_deg: 0.0,
-            components: 200,
-            omega_min_rad_s: 0.0,
-            omega_max_rad_s: 0.0,
-            spreading: 2.0,
-            amplitude_m: 0.6096,
-            omega_rad_s: 0.6,
+impl crate::params::CrossCheck for SeaParams {
+    fn cross_check(&self, v: &mut Validator) {
+        // A spectrum of one's own needs both its height and its frequency.
+        for (a, b, x, y) in [
+            ("h_sig_m", "omega_n_rad_s", self.h_sig_m, self.omega_n_rad_s),
+            ("omega_min_rad_s", "omega_max_rad_s", self.omega_min_rad_s, self.omega_max_rad_s),
+        ] {
+            if (x == 0.0) != (y == 0.0) {
+                let (missing, given) = if x == 0.0 { (a, b) } else { (b, a) };
+                v.fail(missing, 0, format!("must be set too when {} is", v.path(given)));
+            }
+        }
+        if self.omega_min_rad_s != 0.0
+            && self.omega_max_rad_s != 0.0
+            && self.omega_max_rad_s < self.omega_min_rad_s + 0.01
+        {
+            {
+                v.fail(
+                    "omega_max_rad_s",
+                    crate::validate::num(self.omega_max_rad_s),
+                    format!("must be above {} by 0.01 or more", v.path("omega_min_rad_s")),
+                );
+            }
         }
     }
 }
@@ -293,39 +331,14 @@ impl SeaParams {
     }
 }
 
-/// Which sea.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SeaKind {
-    Calm,
-    /// Bretschneider spectrum (eq. 2.58) sampled into components (ch. 2.5.4).
-    Random,
-    /// One regular wave (ch. 5.2.4).
-    Regular,
-}
-
-impl SeaParams {
-    /// Checks the sea (only what a non-calm sea uses).
-    pub fn validate(&self, v: &mut Validator) {
-        if self.kind == SeaKind::Calm {
-            return;
-        }
-        check_range!(v, self.sea_state as u64, 2, 6);
-        if self.h_sig_m != 0.0 || self.omega_n_rad_s != 0.0 {
-            check_range!(v, self.h_sig_m, 0.01, 20.0);
-            check_range!(v, self.omega_n_rad_s, 0.2, 3.0);
-        }
-        check_range!(v, self.from_deg, -3600.0, 3600.0);
-        check_range!(v, self.components as u64, 1, 2000);
-        if self.omega_min_rad_s != 0.0 || self.omega_max_rad_s != 0.0 {
-            check_range!(v, self.omega_min_rad_s, 0.05, 5.0);
-            check_range!(v, self.omega_max_rad_s, self.omega_min_rad_s.max(0.05) + 0.01, 6.0);
-        }
-        check_range!(v, self.spreading, 0.0, 100.0);
-        if self.kind == SeaKind::Regular {
-            check_range!(v, self.amplitude_m, 0.0, 10.0);
-            check_range!(v, self.omega_rad_s, 0.1, 5.0);
-        }
+crate::choices! {
+    /// Which sea.
+    pub enum SeaKind {
+        Calm = "calm", "calm water",
+        /// Bretschneider spectrum (eq. 2.58) sampled into components (ch. 2.5.4).
+        Random = "random", "random sea of a sea state",
+        /// One regular wave (ch. 5.2.4).
+        Regular = "regular", "one regular wave",
     }
 }
 

@@ -36,6 +36,15 @@ pub fn signal_meta() -> String {
     serde_json::to_string(aes_core::signals::SIGNALS).unwrap_or_default()
 }
 
+/// Every scenario parameter's declaration, as JSON: `{"groups": [[id, title], ...], "params":
+/// [{"path", "kind", "label", "unit", "help", "source", "default", "min", "max", "choices",
+/// "empty", "empty_is", "group", "base", "excludes"}, ...]}` in scenario order. The page's form is
+/// made from it (the parameters with a group, in its groups).
+#[wasm_bindgen(js_name = paramMeta)]
+pub fn param_meta() -> String {
+    serde_json::json!({ "groups": aes_core::params::FORM_GROUPS, "params": aes_core::params::all() }).to_string()
+}
+
 /// The model's levels and ratings the page draws (bands, reference lines, per-unit bases), for a
 /// scenario, as JSON. The page copies none of these numbers.
 #[wasm_bindgen(js_name = pageConstants)]

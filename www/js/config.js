@@ -2,74 +2,14 @@
 // levels, bands, lengths, gravity) comes from the wasm (signalMeta, pageConstants); units and
 // labels of recorded signals come from signalMeta. Nothing here is a physics value.
 
-// Parameters shown in the form, grouped as a naval engineer thinks of them.
-// [path, label, unit, help, choices?, {optional?, derived?}]; a group may go elsewhere than the full
-// form ({into: element id}). Optional fields may be empty (the hull's own value, shown as the
-// placeholder); `derived` adds a line the page fills (h0 under the hub height). The form adds the
-// preset's value to each help line.
-export const FIELDS = [
-  ['Hull loading and propeller hub', [
-    ['ship.hull.draft_m', 'Draft T', 'm', 'Calm waterline above the baseline, even keel. Give the draft or the mass; empty: the hull\'s own.', null, { optional: true }],
-    ['ship.hull.mass_kg', 'Displaced mass', 'kg', 'Instead of the draft: the draft is solved so that the hull displaces this mass.', null, { optional: true }],
-    ['ship.hull.kg_m', 'Centre of gravity KG', 'm', 'Above the baseline; a custom hull needs it.', null, { optional: true }],
-    ['ship.hull.kxx_m', 'Roll radius of gyration k_xx', 'm', 'Empty: the hull\'s own (custom: 0.37 B).', null, { optional: true }],
-    ['ship.hull.kyy_m', 'Pitch radius of gyration k_yy', 'm', 'Empty: the hull\'s own (custom: 0.25 Lpp).', null, { optional: true }],
-    ['ship.hull.kzz_m', 'Yaw radius of gyration k_zz', 'm', 'Empty: the hull\'s own (custom: 0.25 Lpp).', null, { optional: true }],
-    ['ship.hull.hub_above_base_m', 'Propeller hub above the baseline', 'm', 'The calm-water hub depth is h0 = draft - hub height (ch. 5.3 and 5.4 vary h0).', null, { optional: true, derived: 'h0' }],
-  ], { into: 'hull-loading' }],
-  ['Ship: resistance and maneuvering', [
-    ['ship.wetted_area_m2', 'Wetted area', 'm²', 'Table 5.1.'],
-    ['ship.drag_coeff', 'Drag coefficient C_r', '-', 'Eq. 2.15, Table 5.1.'],
-    ['ship.wake_fraction', 'Wake fraction w', '-', 'Eq. 2.12, Table 5.1.'],
-    ['ship.thrust_deduction', 'Thrust deduction t', '-', 'Eq. 2.15, Table 5.1.'],
-    ['hull.model', 'Hull model', '', 'Straight line only, or turns with a rudder.', [['surge', 'surge only: straight line (ch. 2.3)'], ['maneuvering', 'maneuvering: 3 DOF with rudder (ch. 2.4)']]],
-  ]],
-  ['Propulsion plant', [
-    ['propeller.model', 'Propeller model', '', 'The four-quadrant model is needed for braking.', [['b_series', 'Wageningen B-series (ahead only)'], ['four_quadrant', 'four-quadrant B4-70 (ahead and astern)']]],
-    ['propeller.diameter_m', 'Propeller diameter', 'm', 'Table 5.1.'],
-    ['propeller.pitch_ratio', 'Pitch ratio P/D', '-', 'Table 5.1.'],
-    ['propeller.blades', 'Blades', '-', 'Within the Wageningen B-series range.'],
-    ['plant.turbine.inertia_kg_m2', 'Turbine inertia', 'kg m²', 'Table 5.2.'],
-    ['plant.motor.rated_power_w', 'Motor rating', 'W', 'Ch. 2.2.2; the base of motor power in per unit.'],
-    ['plant.dc_link.capacitance_f', 'Bus capacitance', 'F', 'Table 5.4.'],
-    ['plant.dc_link.rectifier', 'Rectifier', '', 'Which way power may flow between turbines and bus.', [['diode', 'diode: one way only'], ['reversible', 'reversible: back to the turbines too']]],
-    ['plant.dc_link.brake_resistor_ohm', 'Brake resistor', 'Ω', '0 for none.'],
-  ]],
-  ['Controllers', [
-    ['controllers.design', 'Turbine and field control', '', 'Two PI loops per set (ch. 2, 5), or one LQG/LTR controller per set moving throttle and field together (ch. 3.1; tune it in the Controller design tab).', [['pi', 'PI loops: governor and field'], ['lqg_ltr', 'LQG/LTR (ch. 3.1)']]],
-    ['controllers.lqg_ltr.q', 'LQG/LTR recovery gain q', '-', 'Eq. 3.6: larger q recovers more of the Kalman target loop.'],
-    ['controllers.lqg_ltr.mu', 'LQG/LTR Kalman weight mu', '-', 'Eq. 3.4: smaller mu makes the target loop faster.'],
-    ['controllers.lqg_ltr.turbine_speed_weight', 'LQG/LTR turbine-speed weight', '-', 'How much the turbine-speed error counts beside the bus voltage error.'],
-    ['controllers.governor.kp', 'Governor K_p,t', '1/pu', 'Throttle per per-unit speed error.'],
-    ['controllers.governor.slew_rate_per_s', 'Throttle slew limit', '1/s', 'Fuel schedule limit.'],
-    ['controllers.field.kp', 'Field K_p,v', 'V/V', 'Ch. 5.2.1 baseline.'],
-    ['controllers.field.ki', 'Field K_i,v', 'V/(V s)', 'Ch. 5.2.1 baseline.'],
-    ['controllers.speed.shaft_ramp_rpm_per_s', 'Shaft ramp', 'rpm/s', '0 for a step.'],
-    ['controllers.slip.allow_braking', 'Allow AC braking', '', 'Negative slip: the motor brakes as a generator.', [['false', 'no'], ['true', 'yes']]],
-    ['controllers.autopilot.turn_rate_deg_s', 'Default turn rate', 'deg/s', 'Used when a heading order gives none.'],
-  ]],
-  ['Sea and seakeeping', [
-    ['sea.kind', 'Sea', '', 'Random: Bretschneider spectrum (eq. 2.58) of a Table 2.4 sea state.', [['calm', 'calm water'], ['random', 'random sea of a sea state'], ['regular', 'one regular wave']]],
-    ['sea.sea_state', 'Sea state', '-', 'Table 2.4 gives each sea state\'s significant height and peak frequency.'],
-    ['sea.from_deg', 'Waves from', 'deg', '0 = from north: head seas for a ship heading north.'],
-    ['sea.components', 'Wave components N_s', '-', 'Ch. 2.5.4.'],
-    ['sea.amplitude_m', 'Regular wave amplitude', 'm', '1 ft = 0.3048 m.'],
-    ['sea.omega_rad_s', 'Regular wave frequency', 'rad/s', 'Wave length 2 pi g / omega^2.'],
-    ['seakeeping.stern_motion', 'Hub depth formula', '', 'Consistent: the stern rises with long waves, so the hub depth swings less than the wave. As printed, eq. 2.57 adds the stern motion with the opposite sign: the depth swings by wave plus motion, and surface effects come far more often (the thesis figures).', [['consistent', 'consistent (stern follows long waves)'], ['thesis_eq_2_57', 'as printed in eq. 2.57']]],
-    ['monte_carlo.trials', 'Monte Carlo trials', '-', 'For the Monte Carlo button (ch. 5.4).'],
-  ]],
-  ['Simulation', [
-    ['initial.speed_kn', 'Initial speed', 'kn', '0 starts from idle.'],
-    ['sim.duration_s', 'Duration', 's', 'Simulated time.'],
-    ['sim.dt_s', 'Time step', 's', 'Fixed step (1 ms; 5 ms in waves, the controllers\' sample period); the record interval must be a whole number of steps.'],
-    ['sim.integrator', 'Integration method', '', 'RK4 evaluates the plant four times a step, the midpoint rule twice (second order). In waves at 5 ms both agree with 1 ms RK4 steps to 0.035 rpm: holding the sea over a step costs more than the method.', [['rk4', 'RK4 (fourth order)'], ['midpoint', 'midpoint rule (second order)']]],
-    ['sim.record_interval_s', 'Record every', 's', 'A whole number of steps.'],
-    ['sim.seed', 'Seed', '-', 'Fixes every random number.'],
-  ]],
-];
-
-export const ORDERS_HELP = 'Orders: [{"t_s": 0, "speed_kn": 25}, {"t_s": 10, "heading_deg": 90, "heading_rate_deg_s": 0.5}]';
-export const ORDERS_LABEL = 'Orders as JSON: time [s], speed [kn], heading [deg], heading rate [deg/s]';
+// The scenario form is made from the wasm's paramMeta (labels, units, help, ranges, choices and
+// each parameter's group are declared once, in core). Here only where a group goes on the page
+// (an element id other than the full form) and which fields get a line the page fills (h0 under
+// the hub height).
+export const FORM_PLACES = {
+  into: { 'hull-loading': 'hull-loading' },
+  derived: { 'ship.hull.hub_above_base_m': 'h0' },
+};
 
 // The studies as the page offers them: grouped by thesis chapter, each with a human name, what to
 // watch, the plots that tell its story first (ids of PLOTS; the others one click away), the

@@ -1,7 +1,7 @@
 // The scenario form: the study picker, the scenario being edited, its fields (the ones that matter
 // for the study on top, the rest folded below), errors at the field, the fields a link changed,
 // and the edits kept in localStorage so that they survive a reload.
-import { FIELDS, CHAPTERS, STUDIES, studyTitle, ORDERS_HELP, ORDERS_LABEL, STORE_KEY } from './config.js';
+import { FORM_PLACES, CHAPTERS, STUDIES, studyTitle, STORE_KEY } from './config.js';
 import { $, el } from './dom.js';
 import { fieldLine } from './protocol.js';
 
@@ -27,11 +27,23 @@ export function leafPaths(d, prefix = '') {
   return Object.keys(d).flatMap((k) => leafPaths(d[k], prefix ? `${prefix}.${k}` : k));
 }
 
+// A field's help line: what it does, what is allowed and where its default comes from.
+function helpText(m) {
+  const unit = m.unit && m.unit !== '-' ? ` ${m.unit}` : '';
+  const range = m.min != null && m.max != null ? ` From ${show(m.min)} to ${show(m.max)}${unit}.` : '';
+  const empty = m.empty ? (m.empty_is === 'null' ? ` Empty: ${m.empty}.` : ` 0: ${m.empty}.`) : '';
+  const source = m.source ? ` Source: ${m.source}.` : '';
+  return `${m.help}${range}${empty}${source}`;
+}
+
 export class ScenarioForm {
-  // presets: {name: scenario JSON text}; onLooseErrors(text): errors of no field on the form;
-  // onEdit(): after every accepted edit (the page validates and follows it in the address).
-  constructor(presets, { onLooseErrors, onEdit = () => {}, onValidity = () => {}, onSelect = () => {} }) {
+  // presets: {name: scenario JSON text}; meta: the wasm's paramMeta() ({groups, params}), of which
+  // the form shows the parameters with a group; onLooseErrors(text): errors of no field on the
+  // form; onEdit(): after every accepted edit (the page validates and follows it in the address).
+  constructor(presets, meta, { onLooseErrors, onEdit = () => {}, onValidity = () => {}, onSelect = () => {} }) {
     this.onSelect = onSelect;
+    this.meta = meta;
+    this.byPath = new Map(meta.params.map((m) => [m.path, m]));
     this.presets = presets;
     this.onLooseErrors = onLooseErrors;
     this.onEdit = onEdit;
@@ -57,33 +69,41 @@ export class ScenarioForm {
   build() {
     const form = $('form');
     form.replaceChildren();
-    for (const [group, fields, where = {}] of FIELDS) {
-      const fs = el('fieldset', {}, el('legend', { textContent: group }));
-      for (const [path, label, unit, help, choices, opts = {}] of fields) {
-        const id = fieldId(path);
+    for (const [group, title] of this.meta.groups) {
+      const fs = el('fieldset', {}, el('legend', { textContent: title }));
+      for (const m of this.meta.params.filter((p) => p.group === group)) {
+        const id = fieldId(m.path);
         let input;
-        if (choices) {
-          input = el('select', {}, ...choices.map(([value, text]) => new Option(text, value)));
+        if (m.kind === 'choice') {
+          input = el('select', {}, ...m.choices.map((c) => new Option(c.label, c.value)));
+        } else if (m.kind === 'switch') {
+          input = el('select', {}, new Option('no', 'false'), new Option('yes', 'true'));
         } else {
-          input = el('input', { type: 'text', inputMode: 'decimal', autocomplete: 'off' });
+          input = el('input', { type: 'text', inputMode: m.kind === 'integer' ? 'numeric' : 'decimal', autocomplete: 'off' });
         }
         input.id = id;
-        input.dataset.path = path;
-        if (opts.optional) input.dataset.optional = 'true';
+        input.dataset.path = m.path;
+        if (m.empty_is === 'null') input.dataset.optional = 'true';
         input.setAttribute('aria-describedby', `${id}-help ${id}-err`);
         input.addEventListener('change', () => this.onFieldChange(input));
         input.addEventListener('input', () => { if (input.tagName === 'INPUT') this.checkNumber(input); });
-        const h = el('div', { className: 'help', id: id + '-help' }, el('span', { textContent: help }), el('span', { className: 'preset-value' }),
-          ...(opts.derived ? [el('output', { className: 'derived', id: `${id}-derived`, htmlFor: id })] : []));
+        const derived = FORM_PLACES.derived[m.path];
+        const h = el('div', { className: 'help', id: id + '-help' }, el('span', { textContent: helpText(m) }), el('span', { className: 'preset-value' }),
+          ...(derived ? [el('output', { className: 'derived', id: `${id}-derived`, htmlFor: id })] : []));
+        const unit = m.unit && m.unit !== '-' ? m.unit : '';
         const div = el('div', { className: 'field', id: id + '-field' },
-          el('label', { htmlFor: id, textContent: unit && unit !== '-' ? `${label} [${unit}]` : label }),
+          el('label', { htmlFor: id, textContent: unit ? `${m.label} [${unit}]` : m.label }),
           input, h, el('div', { className: 'ferr', id: id + '-err' }));
         fs.append(div);
         this.home.set(div, fs);
       }
-      if (where.into) $(where.into).replaceChildren(fs); else form.append(fs);
+      const into = FORM_PLACES.into[group];
+      if (into) $(into).replaceChildren(fs); else form.append(fs);
     }
-    const ta = el('textarea', { id: 'f-commands', rows: 6, attrs: { 'aria-label': ORDERS_LABEL, 'aria-describedby': 'f-commands-err' } });
+    const order = (f) => this.byPath.get(`commands.N.${f}`);
+    const ordersLabel = 'Orders as JSON: ' + ['t_s', 'speed_kn', 'heading_deg', 'heading_rate_deg_s']
+      .map((f) => `${order(f).label.toLowerCase()} ${f} [${order(f).unit}]`).join(', ');
+    const ta = el('textarea', { id: 'f-commands', rows: 6, attrs: { 'aria-label': ordersLabel, 'aria-describedby': 'f-commands-err' } });
     ta.addEventListener('change', () => {
       try {
         this.scenario.commands = JSON.parse(ta.value);
@@ -94,7 +114,7 @@ export class ScenarioForm {
         this.setError('commands', 'not valid JSON: ' + e.message);
       }
     });
-    form.append(el('fieldset', {}, el('legend', { textContent: 'Maneuver (orders)' }), ta, el('div', { className: 'ferr', id: 'f-commands-err' }), el('div', { className: 'help', textContent: ORDERS_HELP })));
+    form.append(el('fieldset', {}, el('legend', { textContent: 'Maneuver (orders)' }), ta, el('div', { className: 'ferr', id: 'f-commands-err' }), el('div', { className: 'help', textContent: `${ordersLabel}. Each order keeps its fields until another gives them; e.g. [{"t_s": 0, "speed_kn": 25}, {"t_s": 10, "heading_deg": 90, "heading_rate_deg_s": 0.5}].` })));
   }
 
   // The study's parameters that matter go on top; the others back into the full form.
@@ -133,10 +153,12 @@ export class ScenarioForm {
   // A number field that does not hold a number is marked at once (Run waits for it).
   // An optional field may be empty (the hull's own value).
   checkNumber(input) {
+    const m = this.byPath.get(input.dataset.path);
     const v = Number(input.value);
     const empty = input.value.trim() === '';
-    const bad = empty ? !input.dataset.optional : !Number.isFinite(v);
-    this.setError(input.dataset.path, bad ? 'must be a number' : '');
+    const whole = m.kind === 'integer';
+    const bad = empty ? !input.dataset.optional : !Number.isFinite(v) || (whole && !Number.isInteger(v));
+    this.setError(input.dataset.path, bad ? `${m.label} must be ${whole ? 'a whole number' : 'a number'}${input.dataset.optional ? ' (or empty for ' + m.empty + ')' : ''}` : '');
     return !bad;
   }
 

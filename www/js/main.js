@@ -90,7 +90,7 @@ async function openLink(hash) {
 async function onReady(m) {
   if (form) { setPhase('idle'); return; } // a fresh worker after a cancel: the page stays as it is
   signals = new Signals(m.signals);
-  form = new ScenarioForm(m.presets, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); } });
+  form = new ScenarioForm(m.presets, m.params, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); } });
   hullPicker = new HullPicker(m.hulls || [], {
     form, validate, say: status, busy: isBusy,
     // An accepted hull or scenario file: into the form (a scenario file may name its study).

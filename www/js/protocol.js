@@ -1,6 +1,7 @@
 // The worker protocol, shared by the page and the worker.
 //
-// Worker -> page, once after loading: {type: 'ready', presets: {name: json}, signals: [meta], hulls: [names]}
+// Worker -> page, once after loading: {type: 'ready', presets: {name: json}, signals: [meta], hulls: [names],
+//   params: {groups, params} (paramMeta)}
 //   (signals: signalMeta() of the wasm, in trace column order), or, if loading fails,
 //   {type: 'error', id: null, error}.
 // Page -> worker: one message per request, {type, id, ...arguments}; the request types are
@@ -45,7 +46,7 @@ export function errorOf(e, fields) {
 }
 
 export const reply = {
-  ready: (presets, signals, hulls) => ({ type: 'ready', presets, signals, hulls }),
+  ready: (presets, signals, hulls, params) => ({ type: 'ready', presets, signals, hulls, params }),
   progress: (id, data) => ({ type: 'progress', id, ...data }),
   done: (id, data) => ({ type: 'done', id, ...data }),
   error: (id, error) => ({ type: 'error', id, error }),

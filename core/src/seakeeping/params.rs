@@ -1,92 +1,122 @@
 //! The scenario's seakeeping section: the RAO grid, the propeller hub's place, the surface-loss
 //! model's parameters and the multi-rate sampling of the seaway.
 
-use crate::check_range;
 use crate::propeller_losses::LossParams;
 use crate::validate::Validator;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
 
-/// Ship motions in waves and propeller surface losses (ch. 2.3, 2.5.4). The hull, its loading and
-/// the propellers' place are the ship's (`ship.hull`).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct SeakeepingParams {
-    /// The RAO table's grid.
-    pub grid: crate::seakeeping::tables::SeakeepingGrid,
-    /// Ventilation starts below this h/R and ends above `ventilation_off_h_over_r` (ch. 2.3; see
-    /// `propeller_losses` for why 1.1 starts and 1.3 ends the loop).
-    pub ventilation_on_h_over_r: f64,
-    pub ventilation_off_h_over_r: f64,
-    /// Thrust lost when fully ventilated [-] (ch. 2.3: 0.7).
-    pub ventilation_loss: f64,
-    /// Revolutions over which the lift returns (Wagner effect) [-] (ch. 2.3: about 4).
-    pub recovery_revolutions: f64,
-    /// beta_Q = beta_T^m (ch. 2.3: m = 0.85).
-    pub torque_exponent: f64,
-    /// Wave kinematics are summed every `sample_period_s` and carried between samples by a
-    /// second-order Taylor series; RAOs are looked up again every `rao_refresh_s` (quasi-steady
-    /// speed and heading, ch. 2.5.4) [s].
-    pub sample_period_s: f64,
-    pub rao_refresh_s: f64,
-    /// A due look-up is skipped while the ship's speed through the water and its heading are
-    /// both within these of the last look-up's: it would give nearly the same values (the
-    /// table's grid steps are 3.6 m/s and 15 deg). Chosen by measurement (tests/multirate.rs,
-    /// `skipped_rao_look_ups_change_little`): with 0.02 m/s and 0.01 deg the propeller speed
-    /// moves less than the 0.25 s look-up interval itself moves it (against a look-up at every
-    /// sample), and the other traces about as much; 0.1 deg moved a quarter turn in SS6 by 0.18
-    /// rpm, ten times more. Either at 0 looks up every `rao_refresh_s`, and so does eqs.
-    /// 2.55/2.59 as printed (`as_printed.doppler_twice`), whose extra phase would drift with a
-    /// stale speed. Head seas at 25 kn: 110 of 320 look-ups (issue 17). Speed [m/s].
-    pub rao_refresh_speed_m_s: f64,
-    /// Heading [deg] (see `rao_refresh_speed_m_s`).
-    pub rao_refresh_heading_deg: f64,
-    /// Second-order slowly varying forces in the maneuvering equations (eq. 2.60).
-    pub second_order_forces: bool,
-    /// Propeller surface losses (ch. 2.3); off gives the fully submerged counterpart of a run.
-    pub surface_losses: bool,
-    /// Sign of the pitch term in the hub depth (eq. 2.57): "consistent" or "thesis_eq_2_57".
-    pub stern_motion: SternMotion,
-    /// Fuel: turbine thermal efficiency at rated power [-] (ch. 5.1: about 37 %), scaled by the
-    /// part-load curve of `core/data/gas_turbine_part_load.csv`.
-    pub turbine_rated_efficiency: f64,
+crate::params! {
+    /// Ship motions in waves and propeller surface losses (ch. 2.3, 2.5.4). The hull, its loading
+    /// and the propellers' place are the ship's (`ship.hull`). The surface-loss model owns its
+    /// defaults (ch. 2.3); this section only carries them.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct SeakeepingParams {
+        pub grid: crate::seakeeping::tables::SeakeepingGrid = Default::default() => {},
+        /// See `propeller_losses` for why 1.1 starts and 1.3 ends the loop.
+        pub ventilation_on_h_over_r: f64 = LossParams::default().ventilation_on => {
+            label: "Ventilation starts below h/R", unit: "-", range: -1.0..=5.0, source: "ch. 2.3",
+            help: "The propeller draws air when its hub depth over radius falls below this.",
+        },
+        pub ventilation_off_h_over_r: f64 = LossParams::default().ventilation_off => {
+            label: "Ventilation ends above h/R", unit: "-", range: -1.0..=5.0, source: "ch. 2.3",
+            help: "...and stops drawing air above this (a hysteresis loop).",
+        },
+        pub ventilation_loss: f64 = LossParams::default().ventilation_loss => {
+            label: "Thrust lost when ventilated", unit: "-", range: 0.0..=1.0, source: "ch. 2.3: 0.7",
+            help: "Share of thrust lost when the propeller is fully ventilated.",
+        },
+        pub recovery_revolutions: f64 = LossParams::default().recovery_revolutions => {
+            label: "Revolutions to recover lift", unit: "-", range: 0.01..=100.0, source: "ch. 2.3: about 4 (Wagner effect)",
+            help: "Revolutions over which the lift returns after ventilation.",
+        },
+        pub torque_exponent: f64 = LossParams::default().torque_exponent => {
+            label: "Torque loss exponent m", unit: "-", range: 0.1..=2.0, source: "ch. 2.3: 0.85",
+            help: "beta_Q = beta_T^m.",
+        },
+        /// Wave kinematics are summed every `sample_period_s` and carried between samples by a
+        /// second-order Taylor series.
+        pub sample_period_s: f64 = 0.05 => {
+            label: "Sea sample period", unit: "s", range: 1.0e-5..=0.5,
+            source: "our choice: 20 Hz, measured against every step (tests/multirate.rs)",
+            help: "How often the wave sums are made; a whole number of time steps.",
+        },
+        /// Quasi-steady speed and heading, ch. 2.5.4.
+        pub rao_refresh_s: f64 = 0.25 => {
+            label: "RAO look-up interval", unit: "s", range: 1.0e-5..=10.0, source: "our choice (tests/multirate.rs)",
+            help: "RAOs are looked up again at the ship's speed and heading this often.",
+        },
+        /// A due look-up is skipped while the ship's speed through the water and its heading are
+        /// both within these of the last look-up's: it would give nearly the same values (the
+        /// table's grid steps are 3.6 m/s and 15 deg). Chosen by measurement (tests/multirate.rs,
+        /// `skipped_rao_look_ups_change_little`): with 0.02 m/s and 0.01 deg the propeller speed
+        /// moves less than the 0.25 s look-up interval itself moves it (against a look-up at every
+        /// sample), and the other traces about as much; 0.1 deg moved a quarter turn in SS6 by 0.18
+        /// rpm, ten times more. Either at 0 looks up every `rao_refresh_s`, and so does eqs.
+        /// 2.55/2.59 as printed (`as_printed.doppler_twice`), whose extra phase would drift with a
+        /// stale speed. Head seas at 25 kn: 110 of 320 look-ups (issue 17).
+        pub rao_refresh_speed_m_s: f64 = 0.02 => {
+            label: "RAO look-up: speed change", unit: "m/s", range: 0.0..=1.0,
+            source: "our choice, measured (tests/multirate.rs)",
+            help: "A due look-up is skipped while speed and heading changed less than these; 0: never skip.",
+        },
+        pub rao_refresh_heading_deg: f64 = 0.01 => {
+            label: "RAO look-up: heading change", unit: "deg", range: 0.0..=1.0,
+            source: "our choice, measured (tests/multirate.rs)",
+            help: "See the speed change; 0: never skip.",
+        },
+        pub second_order_forces: bool = true => {
+            label: "Second-order wave forces", source: "eq. 2.60",
+            help: "Slowly varying added resistance and drift force in the maneuvering equations.",
+        },
+        pub surface_losses: bool = true => {
+            label: "Propeller surface losses", source: "ch. 2.3",
+            help: "Off gives the fully submerged counterpart of a run.",
+        },
+        pub stern_motion: SternMotion = SternMotion::Consistent => {
+            label: "Hub depth formula", group: "sea",
+            source: "our choice: the sign consistent with the pitch convention (eq. 2.57 printed otherwise)",
+            help: "Consistent: the stern rises with long waves, so the hub depth swings less than the wave. As printed, eq. 2.57 adds the stern motion with the opposite sign: the depth swings by wave plus motion, and surface effects come far more often (the thesis figures).",
+        },
+        /// Scaled by the part-load curve of `core/data/gas_turbine_part_load.csv`.
+        pub turbine_rated_efficiency: f64 = 0.37 => {
+            label: "Turbine efficiency at rating", unit: "-", range: 0.05..=0.8, source: "ch. 5.1: about 37 %",
+            help: "Thermal efficiency at rated power, for the fuel power (part-load curve beneath).",
+        },
+    }
 }
 
-impl Default for SeakeepingParams {
-    fn default() -> Self {
-        // The surface-loss model owns its defaults (ch. 2.3); this section only carries them.
-        let losses = LossParams::default();
-        SeakeepingParams {
-            grid: Default::default(),
-            ventilation_on_h_over_r: losses.ventilation_on,
-            ventilation_off_h_over_r: losses.ventilation_off,
-            ventilation_loss: losses.ventilation_loss,
-            recovery_revolutions: losses.recovery_revolutions,
-            torque_exponent: losses.torque_exponent,
-            sample_period_s: 0.05,
-            rao_refresh_s: 0.25,
-            rao_refresh_speed_m_s: 0.02,
-            rao_refresh_heading_deg: 0.01,
-            second_order_forces: true,
-            surface_losses: true,
-            stern_motion: SternMotion::Consistent,
-            turbine_rated_efficiency: 0.37,
+impl crate::params::CrossCheck for SeakeepingParams {
+    fn cross_check(&self, v: &mut Validator) {
+        if self.ventilation_off_h_over_r < self.ventilation_on_h_over_r {
+            v.fail(
+                "ventilation_off_h_over_r",
+                crate::validate::num(self.ventilation_off_h_over_r),
+                format!("must be at least {}", v.path("ventilation_on_h_over_r")),
+            );
+        }
+        if self.rao_refresh_s < self.sample_period_s {
+            v.fail(
+                "rao_refresh_s",
+                crate::validate::num(self.rao_refresh_s),
+                format!("must be at least {}", v.path("sample_period_s")),
+            );
         }
     }
 }
 
-/// How the stern's vertical motion enters the hub depth (eq. 2.57).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SternMotion {
-    /// h = h0 + eta_s - eta3 - x_p eta5 with STF's bow-down pitch: the stern rises by
-    /// eta3 + x_p eta5, and a hull that follows long waves keeps its propeller at h0.
-    Consistent,
-    /// Eq. 2.57 as printed, h0 + eta_s - eta3 + x_p eta5: pitch adds to the stern's relative
-    /// motion instead of following the wave. Several times larger swings of h/R; with it the
-    /// ch. 5.3 runs show the thesis' frequent ventilation at h0 = 6 m.
-    #[serde(rename = "thesis_eq_2_57")]
-    ThesisEq257,
+crate::choices! {
+    /// How the stern's vertical motion enters the hub depth (eq. 2.57).
+    pub enum SternMotion {
+        /// h = h0 + eta_s - eta3 - x_p eta5 with STF's bow-down pitch: the stern rises by
+        /// eta3 + x_p eta5, and a hull that follows long waves keeps its propeller at h0.
+        Consistent = "consistent", "consistent (stern follows long waves)",
+        /// Eq. 2.57 as printed, h0 + eta_s - eta3 + x_p eta5: pitch adds to the stern's relative
+        /// motion instead of following the wave. Several times larger swings of h/R; with it the
+        /// ch. 5.3 runs show the thesis' frequent ventilation at h0 = 6 m.
+        ThesisEq257 = "thesis_eq_2_57", "as printed in eq. 2.57",
+    }
 }
 
 /// Where a propeller hub is: `x_aft` [m] aft of the centre of gravity, `y` [m] to port of the
@@ -144,27 +174,6 @@ impl SeakeepingParams {
             recovery_revolutions: self.recovery_revolutions,
             torque_exponent: self.torque_exponent,
         }
-    }
-
-    /// Checks the section for a run with time step `dt_s` [s].
-    pub fn validate(&self, v: &mut Validator, dt_s: f64) {
-        if let Err(e) = self.grid.validate() {
-            // The grid names its own field: "seakeeping.grid.<field> = <value> <message>".
-            let (path, rest) = e.split_once(" = ").unwrap_or(("seakeeping.grid", e.as_str()));
-            let (value, msg) = rest.split_once(' ').unwrap_or((rest, ""));
-            let field = path.strip_prefix("seakeeping.").unwrap_or(path);
-            v.fail(field, value, msg);
-        }
-        check_range!(v, self.ventilation_on_h_over_r, -1.0, 5.0);
-        check_range!(v, self.ventilation_off_h_over_r, self.ventilation_on_h_over_r, 5.0);
-        check_range!(v, self.ventilation_loss, 0.0, 1.0);
-        check_range!(v, self.recovery_revolutions, 0.01, 100.0);
-        check_range!(v, self.torque_exponent, 0.1, 2.0);
-        check_range!(v, self.sample_period_s, dt_s, 0.5);
-        check_range!(v, self.rao_refresh_s, self.sample_period_s, 10.0);
-        check_range!(v, self.rao_refresh_speed_m_s, 0.0, 1.0);
-        check_range!(v, self.rao_refresh_heading_deg, 0.0, 1.0);
-        check_range!(v, self.turbine_rated_efficiency, 0.05, 0.8);
     }
 }
 

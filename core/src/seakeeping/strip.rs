@@ -37,13 +37,23 @@ pub struct MassProperties {
     pub kzz_m: f64,
 }
 
-/// Bilge keels (both sides alike).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct BilgeKeels {
-    pub length_m: f64,
-    pub breadth_m: f64,
+crate::params! {
+    /// Bilge keels (both sides alike).
+    #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields)]
+    pub struct BilgeKeels {
+        pub length_m: f64 = 0.0 => {
+            label: "Bilge keel length", unit: "m", empty: "none",
+            source: "5415: 0.25 Lpp (our choice, destroyer practice)", help: "Length of each bilge keel; 0 for none.",
+        },
+        pub breadth_m: f64 = 0.0 => {
+            label: "Bilge keel breadth", unit: "m",
+            source: "5415: 0.6 m (our choice, b/B = 0.031)", help: "Breadth of each bilge keel.",
+        },
+    }
 }
+
+impl crate::params::CrossCheck for BilgeKeels {}
 
 /// One strip.
 #[derive(Debug, Clone)]

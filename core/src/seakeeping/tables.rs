@@ -12,37 +12,55 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::f64::consts::PI;
 
-/// The table grid (part of the scenario). Headings cover 0..180 deg; waves from port use the
-/// mirror image (sway, roll, yaw, the drift force and the drift moment change sign).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct SeakeepingGrid {
-    /// Wave frequencies: `n_omega` points evenly spaced from `omega_min` to `omega_max` [rad/s].
-    pub omega_min: f64,
-    pub omega_max: f64,
-    pub n_omega: usize,
-    /// Speeds: `n_speed` points from 0 to `speed_max_kn` [kn].
-    pub speed_max_kn: f64,
-    pub n_speed: usize,
-    /// Headings: `n_heading` points from 0 (following) to 180 deg (head seas).
-    pub n_heading: usize,
-    /// Wave amplitude at which the nonlinear roll damping is linearised (eq. 2.45) [m]: the
-    /// significant amplitude of the sea sailed in is the natural choice (SS6: 2.5 m).
-    pub roll_wave_amplitude_m: f64,
+crate::params! {
+    /// The table grid (part of the scenario). Headings cover 0..180 deg; waves from port use the
+    /// mirror image (sway, roll, yaw, the drift force and the drift moment change sign). The
+    /// default, 40 x 6 x 13: 0.2-2.0 rad/s covers the Bretschneider sea states 2-6 of Table 2.4
+    /// beyond their spectra's 1 % points; 0-35 kn in 7 kn steps; 15 deg steps in heading.
+    #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct SeakeepingGrid {
+        pub omega_min: f64 = 0.2 => {
+            label: "RAO table: lowest frequency", unit: "rad/s", range: 0.05..=5.0,
+            source: "our choice: below the 1 % point of sea state 6", help: "Wave frequencies from this one...",
+        },
+        pub omega_max: f64 = 2.0 => {
+            label: "RAO table: highest frequency", unit: "rad/s", range: 0.06..=6.0,
+            source: "our choice: above the 1 % point of sea state 2", help: "...to this one, evenly spaced.",
+        },
+        pub n_omega: usize = 40 => {
+            label: "RAO table: frequencies", unit: "-", range: 2.0..=400.0, source: "our choice",
+            help: "Number of wave frequencies of the table.",
+        },
+        pub speed_max_kn: f64 = 35.0 => {
+            label: "RAO table: top speed", unit: "kn", range: 0.0..=60.0, source: "our choice: above the ship's top speed",
+            help: "Speeds from 0 to this one.",
+        },
+        pub n_speed: usize = 6 => {
+            label: "RAO table: speeds", unit: "-", range: 1.0..=60.0, source: "our choice: 7 kn steps",
+            help: "Number of ship speeds of the table.",
+        },
+        pub n_heading: usize = 13 => {
+            label: "RAO table: headings", unit: "-", range: 2.0..=73.0, source: "our choice: 15 deg steps",
+            help: "Number of headings from 0 (following) to 180 deg (head seas).",
+        },
+        /// The significant amplitude of the sea sailed in is the natural choice (SS6: 2.5 m).
+        pub roll_wave_amplitude_m: f64 = 2.5 => {
+            label: "Roll damping wave amplitude", unit: "m", range: 0.01..=20.0,
+            source: "our choice: sea state 6's significant amplitude",
+            help: "Wave amplitude at which the nonlinear roll damping is linearised (eq. 2.45).",
+        },
+    }
 }
 
-impl Default for SeakeepingGrid {
-    /// 40 x 6 x 13: 0.2-2.0 rad/s covers the Bretschneider sea states 2-6 of Table 2.4 beyond
-    /// their spectra's 1 % points; 0-35 kn in 7 kn steps; 15 deg steps in heading.
-    fn default() -> Self {
-        SeakeepingGrid {
-            omega_min: 0.2,
-            omega_max: 2.0,
-            n_omega: 40,
-            speed_max_kn: 35.0,
-            n_speed: 6,
-            n_heading: 13,
-            roll_wave_amplitude_m: 2.5,
+impl crate::params::CrossCheck for SeakeepingGrid {
+    fn cross_check(&self, v: &mut crate::validate::Validator) {
+        if self.omega_max < self.omega_min + 0.01 {
+            v.fail(
+                "omega_max",
+                crate::validate::num(self.omega_max),
+                format!("must be above {} by 0.01 or more", v.path("omega_min")),
+            );
         }
     }
 }
@@ -50,20 +68,9 @@ impl Default for SeakeepingGrid {
 impl SeakeepingGrid {
     /// Errors name the field, its value and the allowed range.
     pub fn validate(&self) -> Result<(), String> {
-        let chk = |name: &str, v: f64, lo: f64, hi: f64| -> Result<(), String> {
-            if v.is_finite() && (lo..=hi).contains(&v) {
-                Ok(())
-            } else {
-                Err(format!("seakeeping.grid.{name} = {v} is outside [{lo}, {hi}]"))
-            }
-        };
-        chk("omega_min", self.omega_min, 0.05, 5.0)?;
-        chk("omega_max", self.omega_max, self.omega_min + 0.01, 6.0)?;
-        chk("n_omega", self.n_omega as f64, 2.0, 400.0)?;
-        chk("speed_max_kn", self.speed_max_kn, 0.0, 60.0)?;
-        chk("n_speed", self.n_speed as f64, 1.0, 60.0)?;
-        chk("n_heading", self.n_heading as f64, 2.0, 73.0)?;
-        chk("roll_wave_amplitude_m", self.roll_wave_amplitude_m, 0.01, 20.0)
+        let mut v = crate::validate::Validator::new();
+        v.section("seakeeping.grid", |v| crate::params::Section::check_fields(self, v));
+        v.finish().map_err(|e| e.to_string())
     }
 
     pub fn omegas(&self) -> Vec<f64> {
