@@ -264,7 +264,7 @@ fn table_4_1() -> Result<Section, String> {
             ),
             row("|i_gs|", src, 48.81, s.i_gs_mag, "A", Tolerance::Rel(2e-4), "rectifier model of eqs. 4.8-4.10"),
             calibrated("i_fd", src, 108.75, s.i_fd, "A", Tolerance::Rel(1e-12), "r_fd is v_fd / i_fd of this table"),
-            row("v~_dc", src, 743.17, s.v_dc_rect, "V", Tolerance::Rel(2e-4), "X_co = 0.323 ohm as printed"),
+            row("v~_dc", src, 743.17, s.v_rect_v, "V", Tolerance::Rel(2e-4), "X_co = 0.323 ohm as printed"),
             row("i_dc", src, 45.09, s.i_dc, "A", Tolerance::Rel(2e-4), "the load current sink plus the droop"),
             row("cos phi", src, 0.982, s.cos_phi, "-", Tolerance::Abs(5e-4), "half a unit of the printed digit"),
         ],
