@@ -445,7 +445,7 @@ fn ips(cmd: IpsCmd) -> Result<serde_json::Value, String> {
             let steady = serde_json::json!({
                 "omega_rad_s": s.omega, "v_fd": s.v_fd, "i_load": s.i_load,
                 "v_gs_mag": s.v_gs_mag, "i_gs_mag": s.i_gs_mag, "i_fd": s.i_fd,
-                "v_dc": s.v_dc_rect, "v_bus": s.v_dc, "i_dc": s.i_dc, "cos_phi": s.cos_phi,
+                "v_rect_v": s.v_rect_v, "v_dc": s.v_dc, "i_dc": s.i_dc, "cos_phi": s.cos_phi,
                 "parameters": p,
             });
             let sys = loop_kind.map(|l| if l == Loop::Open { p.open_loop(&s) } else { p.closed_loop(&s) });

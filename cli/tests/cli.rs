@@ -150,9 +150,14 @@ fn ips_commands() {
     let (ok, out, err) = aes_sim(&["ips", "steady", "--side", "generator"]);
     assert!(ok, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
-    for key in ["v_gs_mag", "i_gs_mag", "i_fd", "v_dc", "i_dc", "cos_phi"] {
+    for key in ["v_gs_mag", "i_gs_mag", "i_fd", "v_rect_v", "v_dc", "i_dc", "cos_phi"] {
         assert!(v["steady_state"][key].is_number(), "{key}");
     }
+    // v_dc is the thesis' bus voltage (after the filter, eq. 4.12); the rectifier output v~_dc of
+    // Table 4.1 (743.17 V) is v_rect_v, above the bus by the filter's resistive drop.
+    let (v_rect, v_dc) = (v["steady_state"]["v_rect_v"].as_f64().unwrap(), v["steady_state"]["v_dc"].as_f64().unwrap());
+    assert!((v_rect - 743.17).abs() < 0.2 && v_dc < v_rect && v_dc > 0.9 * v_rect, "v_rect_v {v_rect}, v_dc {v_dc}");
+    assert!(v["steady_state"].get("v_bus").is_none());
     let (ok, out, _) = aes_sim(&["ips", "steady", "--side", "motor", "--torque", "100"]);
     assert!(ok);
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();

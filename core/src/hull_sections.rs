@@ -1,5 +1,5 @@
 //! Hull geometry for seakeeping (thesis ch. 2.5.1): station offsets in the long CSV format of
-//! shared/data/dtmb5415_offsets.csv, their validation, sectional properties at a waterline, the
+//! core/data/dtmb5415_offsets.csv, their validation, sectional properties at a waterline, the
 //! hull's hydrostatics, and the Lewis-form conformal mapping coefficients of each section
 //! (eqs. 2.33-2.34).
 //!

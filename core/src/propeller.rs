@@ -7,7 +7,7 @@
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
-/// The polynomial table, copied from shared/data with its source line.
+/// The polynomial table (core/data/wageningen_b_series.csv, with its source line).
 const B_SERIES_CSV: &str = include_str!("../data/wageningen_b_series.csv");
 
 /// Open-water characteristics of one B-series propeller.
@@ -353,7 +353,7 @@ crate::choices! {
 mod tests {
     use super::*;
 
-    /// B4-70, P/D = 1.0: the polynomial values quoted in shared/data/four_quadrant_b4_70.csv
+    /// B4-70, P/D = 1.0: the polynomial values quoted in core/data/four_quadrant_b4_70.csv
     /// (kT(0) = 0.455, kT(0.6) = 0.226, kQ(0) = 0.0675), three significant figures.
     #[test]
     fn b4_70_matches_published_values() {

@@ -250,7 +250,7 @@ fn table_4_1() -> Result<Section, String> {
         figures: Vec::new(),
         title: "Table 4.1: generator side steady state (omega = 377 rad/s, v_fd = 28.5 V, I = 45 A)",
         note: "The testbed's parameters are not printed; they are reconstructed from the thesis' own numbers \
-               (shared/data/purdue_testbed_params.md), so |v_gs| and i_fd are not independent checks."
+               (core/data/purdue_testbed_params.md), so |v_gs| and i_fd are not independent checks."
             .into(),
         rows: vec![
             calibrated(
@@ -264,7 +264,7 @@ fn table_4_1() -> Result<Section, String> {
             ),
             row("|i_gs|", src, 48.81, s.i_gs_mag, "A", Tolerance::Rel(2e-4), "rectifier model of eqs. 4.8-4.10"),
             calibrated("i_fd", src, 108.75, s.i_fd, "A", Tolerance::Rel(1e-12), "r_fd is v_fd / i_fd of this table"),
-            row("v~_dc", src, 743.17, s.v_dc_rect, "V", Tolerance::Rel(2e-4), "X_co = 0.323 ohm as printed"),
+            row("v~_dc", src, 743.17, s.v_rect_v, "V", Tolerance::Rel(2e-4), "X_co = 0.323 ohm as printed"),
             row("i_dc", src, 45.09, s.i_dc, "A", Tolerance::Rel(2e-4), "the load current sink plus the droop"),
             row("cos phi", src, 0.982, s.cos_phi, "-", Tolerance::Abs(5e-4), "half a unit of the printed digit"),
         ],
@@ -1725,7 +1725,7 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
          (van Lammeren et al. 1969, as quoted by Smogeli 2006); the DTMB 5415 offsets (SIMMAN benchmark hull, sliced \
          from the navaltoolbox-lib test mesh); the gas-turbine part-load curve (TransiEnt library, anchored to the \
          thesis' 37 % and 28 %); the Purdue MVDC testbed parameters (our reconstruction from the thesis' own \
-         Tables 4.1 and 4.2, shared/data/purdue_testbed_params.md); the Wigley hull (Wigley 1934's parabolic \
+         Tables 4.1 and 4.2, core/data/purdue_testbed_params.md); the Wigley hull (Wigley 1934's parabolic \
          form at L/B 10, B/T 1.6, the Wigley I of Journee 1992, Delft report 909, generated in code at L = 100 m; \
          checked against its closed-form hydrostatics, Journee's measured RAOs not yet compared).\n\n",
     );

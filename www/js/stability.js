@@ -8,7 +8,7 @@ import { sizedCanvas } from './plots.js';
 const STEADY = {
   motor: [['t_m0', 'T_m0 [N m]'], ['t_ref0', 'T** [N m]'], ['omega_r0', 'ω_r0 [rad/s]'], ['omega_s0', 'ω_s0 [rad/s]'], ['i_s_mag', '|i_s| [A]'], ['i_r_mag', '|i_r| [A]'], ['v_s_mag', '|v_s| [V]'],
     ['t_threshold', 'torque threshold [N m]']],
-  generator: [['v_gs_mag', '|v_gs| [V]'], ['i_gs_mag', '|i_gs| [A]'], ['i_fd', 'i_fd [A]'], ['v_dc_rect', 'ṽ_dc [V]'], ['v_dc', 'v_dc, bus [V]'], ['i_dc', 'i_dc [A]'], ['cos_phi', 'cos φ']],
+  generator: [['v_gs_mag', '|v_gs| [V]'], ['i_gs_mag', '|i_gs| [A]'], ['i_fd', 'i_fd [A]'], ['v_rect_v', 'ṽ_dc, rectifier output [V]'], ['v_dc', 'v_dc, bus [V]'], ['i_dc', 'i_dc [A]'], ['cos_phi', 'cos φ']],
 };
 const TRANSFER = {
   closed: { motor: 'torque command to torque', generator: 'voltage set point to bus voltage' },

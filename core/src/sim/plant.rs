@@ -18,8 +18,8 @@ use crate::surge::Surge;
 use crate::units::kn_to_m_s;
 use std::f64::consts::PI;
 
-/// Shafts (independent plants).
-pub const N_SHAFTS: usize = 2;
+/// Shafts (independent plants): the hull's count, owned by `ship_hull`.
+pub use crate::ship_hull::N_SHAFTS;
 /// Turbine-generator sets per shaft.
 pub const SETS_PER_SHAFT: usize = 2;
 /// Turbine-generator sets in all.

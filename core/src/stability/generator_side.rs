@@ -131,8 +131,10 @@ pub struct GeneratorSteadyState {
     pub v_gs_mag: f64,
     pub i_gs_mag: f64,
     pub i_fd: f64,
-    /// Rectifier output v~_dc and the bus voltage after the filter [V].
-    pub v_dc_rect: f64,
+    /// Rectifier output voltage, the thesis' v~_dc (eqs. 4.8-4.10, Table 4.1) [V].
+    pub v_rect_v: f64,
+    /// Bus voltage after the DC filter, the thesis' v_dc (eqs. 4.12-4.13: the droop's
+    /// measurement and the motor side's source) [V].
     pub v_dc: f64,
     pub i_dc: f64,
     pub cos_phi: f64,
@@ -307,7 +309,7 @@ impl GeneratorSideParams {
             v_gs_mag: libm::hypot(vq, vd),
             i_gs_mag: libm::hypot(iq, id),
             i_fd,
-            v_dc_rect: vr,
+            v_rect_v: vr,
             v_dc,
             i_dc: idc,
             cos_phi: vr / (K1 * libm::hypot(vq, vd)),
@@ -530,7 +532,7 @@ mod tests {
         check("|v_gs|", s.v_gs_mag, 457.74, 2e-4);
         check("|i_gs|", s.i_gs_mag, 48.81, 2e-4);
         check("i_fd", s.i_fd, 108.75, 1e-14);
-        check("v~_dc", s.v_dc_rect, 743.17, 2e-4);
+        check("v~_dc", s.v_rect_v, 743.17, 2e-4);
         check("i_dc", s.i_dc, 45.09, 2e-4);
         check("cos phi", s.cos_phi, 0.982, 0.0005 / 0.982);
         // It is an equilibrium of the nonlinear model: |dx/dt| under 1e-8 (1 + |x|) (measured

@@ -4,7 +4,7 @@
 //! limit, and current hysteresis represented by its equivalent continuous control.
 //!
 //! Machine parameters: the thesis prints none. The defaults are the maximum-torque-per-ampere
-//! reconstruction in shared/data/purdue_testbed_params.md (L_m = 30.46 mH, L_ls = L_lr = 1.335 mH,
+//! reconstruction in core/data/purdue_testbed_params.md (L_m = 30.46 mH, L_ls = L_lr = 1.335 mH,
 //! r_r = 0.0530 ohm, r_s = 0.117 ohm), which reproduces Table 4.2.
 //!
 //! Two places where the thesis' printed equations disagree with the machine physics, and what we
