@@ -1,7 +1,7 @@
 //! The parameter registry reaches the page and the README: the page names no parameter the
 //! registry lacks, and the README's scenario table is the registry's.
 
-use aes_core::params;
+use aes_core::registry;
 use std::path::Path;
 
 /// Quoted strings in a text that look like scenario parameter paths (`'sea.sea_state'`).
@@ -47,7 +47,7 @@ fn the_page_names_only_declared_parameters() {
     for f in files {
         let text = std::fs::read_to_string(&f).unwrap();
         for p in quoted_paths(&text) {
-            assert!(params::find(&p).is_some(), "{} names {p}, which no parameter declares", f.display());
+            assert!(registry::find(&p).is_some(), "{} names {p}, which no parameter declares", f.display());
             seen += 1;
         }
     }
@@ -60,7 +60,7 @@ fn the_page_names_only_declared_parameters() {
 fn a_stale_path_is_caught() {
     let found = quoted_paths("params: ['sea.sea_state', 'sea.wave_height_m'], other: 'sea state'");
     assert_eq!(found, ["sea.sea_state", "sea.wave_height_m"]);
-    assert!(params::find("sea.wave_height_m").is_none());
+    assert!(registry::find("sea.wave_height_m").is_none());
 }
 
 /// The README's scenario table is `aes-sim params --markdown` (regenerate with `./build.sh docs`).
@@ -70,5 +70,5 @@ fn the_readme_table_is_the_registry() {
     let (begin, end) = ("<!-- params:begin -->\n", "<!-- params:end -->");
     let a = readme.find(begin).expect("README has no params:begin marker") + begin.len();
     let b = readme[a..].find(end).expect("README has no params:end marker") + a;
-    assert!(readme[a..b] == params::markdown_table(), "README's scenario table is stale: run ./build.sh docs");
+    assert!(readme[a..b] == registry::markdown_table(), "README's scenario table is stale: run ./build.sh docs");
 }

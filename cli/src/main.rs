@@ -491,7 +491,7 @@ fn load(file: &str, sets: &[String]) -> Result<Scenario, String> {
     let mut sc = if let Some(name) = file.strip_prefix("preset:") {
         preset(name).ok_or_else(|| format!("no preset named '{}' (try: {})", shorten(name), PRESET_NAMES.join(", ")))?
     } else {
-        let text = read_bounded(file, aes_core::scenario::MAX_SCENARIO_BYTES as u64, "a scenario")?;
+        let text = read_bounded(file, aes_core::scenario_file::MAX_SCENARIO_BYTES as u64, "a scenario")?;
         Scenario::from_json(&text).map_err(|e| format!("{}: invalid scenario:\n{e}", shorten(file)))?
     };
     let mut pairs = Vec::with_capacity(sets.len());
@@ -533,11 +533,11 @@ fn real_main() -> Result<(), Failure> {
             }
         }
         Cmd::Params { json, markdown } => {
-            let all = aes_core::params::all();
+            let all = aes_core::registry::all();
             if json {
                 emit_json(&all)?;
             } else if markdown {
-                emit(aes_core::params::markdown_table().trim_end())?;
+                emit(aes_core::registry::markdown_table().trim_end())?;
             } else {
                 let mut text = String::new();
                 for m in &all {

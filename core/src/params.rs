@@ -11,6 +11,7 @@
 //! of steps) are the section's [`CrossCheck`], written by hand beside the physics.
 //!
 //! To add a parameter: one line in its section's `params!`, then read it where the model needs it.
+//! The whole scenario's list, look-ups by path and the checks on raw JSON are `crate::registry`'s.
 
 use crate::validate::{num, Validator};
 use serde::Serialize;
@@ -301,11 +302,14 @@ impl<T: Section> Param for Vec<T> {
         T::describe_fields(&format!("{path}.N"), &T::default(), out);
     }
     fn check(&self, field: &str, _: &Decl, v: &mut Validator) {
-        for (i, s) in self.iter().enumerate().take(crate::scenario::MAX_COMMANDS) {
+        for (i, s) in self.iter().enumerate().take(MAX_LIST_ITEMS) {
             v.section(&format!("{field}.{i}"), |v| s.check_fields(v));
         }
     }
 }
+
+/// How many items of a list are checked (a longer list is refused by its section, which says so).
+pub const MAX_LIST_ITEMS: usize = 10_000;
 
 /// A section of the scenario written with [`params!`].
 pub trait Section: Param + Default {
@@ -333,7 +337,7 @@ pub fn join(prefix: &str, field: &str) -> String {
 /// Declares a section of the scenario: a struct whose every field has a type, a default and a
 /// [`Decl`] (written as `{ label: "...", unit: "...", range: lo..=hi, ... }`; keys left out say
 /// nothing). Attributes before a field (serde's, docs) are kept. A field whose type is another
-/// section is written `=> section`.
+/// section is written `=> {}`: its own fields carry the declarations.
 #[macro_export]
 macro_rules! params {
     (
@@ -428,257 +432,4 @@ macro_rules! choices {
             fn check(&self, _: &str, _: &$crate::params::Decl, _: &mut $crate::validate::Validator) {}
         }
     };
-}
-
-/// Every parameter of the scenario, in the order of its JSON.
-pub fn all() -> Vec<ParamMeta> {
-    let mut out = Vec::new();
-    let d = crate::Scenario::default();
-    <crate::Scenario as Section>::describe_fields("", &d, &mut out);
-    out
-}
-
-/// The parameter at a dotted path (`commands.3.t_s` finds `commands.N.t_s`; a pair's element
-/// `ship.hull.shaft_y_m.1` finds the pair).
-pub fn find(path: &str) -> Option<ParamMeta> {
-    static ALL: std::sync::OnceLock<Vec<ParamMeta>> = std::sync::OnceLock::new();
-    let all = ALL.get_or_init(all);
-    let generic = generic(path);
-    all.iter()
-        .find(|m| m.path == generic || m.path == path)
-        .or_else(|| {
-            let parent = generic.rsplit_once('.')?.0;
-            all.iter().find(|m| m.path == parent && m.kind == "pair")
-        })
-        .cloned()
-}
-
-/// The parameter whose path is nearest to `path` by edit distance (at most 3 edits), for "did you
-/// mean" hints.
-pub fn closest(path: &str) -> Option<String> {
-    let generic = generic(path);
-    let (parent, name) = generic.rsplit_once('.').unwrap_or(("", generic.as_str()));
-    all()
-        .into_iter()
-        .filter_map(|m| {
-            let (p, n) = m.path.rsplit_once('.').unwrap_or(("", m.path.as_str()));
-            (p == parent).then(|| (edit_distance(n, name), m.path.clone()))
-        })
-        .filter(|(d, _)| *d <= 3)
-        .min_by_key(|(d, _)| *d)
-        .map(|(_, p)| p)
-}
-
-/// A path with its list indices as `N` (`commands.3.t_s` is `commands.N.t_s`).
-fn generic(path: &str) -> String {
-    path.split('.')
-        .enumerate()
-        .map(|(i, p)| if i > 0 && !p.is_empty() && p.chars().all(|c| c.is_ascii_digit()) { "N" } else { p })
-        .collect::<Vec<_>>()
-        .join(".")
-}
-
-/// Levenshtein distance of two short names.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let cur = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
-            prev = cur;
-        }
-    }
-    row[b.len()]
-}
-
-/// The README's scenario table: every parameter with its unit, default, allowed values and
-/// label, section by section.
-pub fn markdown_table() -> String {
-    let mut s = String::from("| parameter | unit | default | allowed | what it is |\n|---|---|---|---|---|\n");
-    for m in all() {
-        let default = match &m.default {
-            serde_json::Value::Null => format!("({})", m.empty),
-            serde_json::Value::String(t) if t.len() > 24 => "(text)".into(),
-            serde_json::Value::String(t) => format!("`\"{t}\"`"),
-            v => format!("`{}`", crate::validate::shorten(&v.to_string())),
-        };
-        let allowed = match m.kind {
-            "choice" | "text" if !m.choices.is_empty() => {
-                m.choices.iter().map(|c| format!("`{}`", c.value)).collect::<Vec<_>>().join(", ")
-            }
-            "number" | "integer" | "pair" => match (m.min, m.max) {
-                (Some(lo), Some(hi)) => format!("{} to {}", num(lo), num(hi)),
-                (Some(lo), None) => format!("from {}", num(lo)),
-                (None, Some(hi)) => format!("to {}", num(hi)),
-                _ if m.path.starts_with("ship.hull.") => "checked against the hull".into(),
-                _ => "any".into(),
-            },
-            "switch" => "true, false".into(),
-            k => k.into(),
-        };
-        let unit = if m.unit.is_empty() { "" } else { m.unit };
-        let what = if m.source.is_empty() { m.label.to_string() } else { format!("{} ({})", m.label, m.source) };
-        s.push_str(&format!(
-            "| `{}` | {} | {} | {} | {} |\n",
-            m.path,
-            unit,
-            default,
-            allowed,
-            what.replace('|', "\\|")
-        ));
-    }
-    s
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::Scenario;
-
-    /// Every leaf of the default scenario's JSON is declared, and every declaration is a leaf
-    /// of it (or an optional field left out): no parameter escapes the registry.
-    #[test]
-    fn the_registry_lists_every_field_once() {
-        let json = serde_json::to_value(Scenario::default()).unwrap();
-        let mut leaves = Vec::new();
-        fn walk(v: &serde_json::Value, p: &str, out: &mut Vec<String>) {
-            match v {
-                serde_json::Value::Object(m) if p != "commands.N" || !m.is_empty() => {
-                    for (k, x) in m {
-                        walk(x, &join(p, k), out)
-                    }
-                }
-                serde_json::Value::Array(items) if p == "commands" => walk(&items[0], "commands.N", out),
-                _ => out.push(p.to_string()),
-            }
-        }
-        walk(&json, "", &mut leaves);
-        let all = all();
-        let paths: Vec<&str> = all.iter().map(|m| m.path.as_str()).collect();
-        for leaf in &leaves {
-            assert!(paths.contains(&leaf.as_str()), "{leaf} is not declared");
-        }
-        for m in &all {
-            let listed = leaves.contains(&m.path);
-            // Left out of the JSON at their defaults: optional fields, the bilge keels, a custom
-            // hull's offsets, a single-rate run's sub-steps.
-            let left_out = m.default.is_null()
-                || m.path.starts_with("ship.hull.bilge_keels")
-                || ["ship.hull.offsets_csv", "sim.hull_substeps"].contains(&m.path.as_str());
-            assert!(listed || left_out, "{} is not in the scenario", m.path);
-            assert_eq!(paths.iter().filter(|p| **p == m.path).count(), 1, "{} twice", m.path);
-        }
-        assert!(all.len() > 190, "{} parameters", all.len());
-    }
-
-    /// Every declaration has a label and a help line; a number has a unit ("-" for none) and a
-    /// default inside its range; a choice's default is one of its choices.
-    #[test]
-    fn every_declaration_is_complete() {
-        for m in all() {
-            assert!(!m.label.is_empty() && !m.help.is_empty(), "{}: label or help missing", m.path);
-            assert!(m.help.ends_with('.') || m.help.ends_with("..."), "{}: help is a sentence", m.path);
-            if matches!(m.kind, "number" | "integer" | "pair") {
-                assert!(!m.unit.is_empty(), "{}: no unit", m.path);
-                if let Some(x) = m.default.as_f64() {
-                    let unset = !m.empty.is_empty() && x == 0.0;
-                    assert!(
-                        unset || (m.min.unwrap_or(f64::MIN) <= x && x <= m.max.unwrap_or(f64::MAX)),
-                        "{}: default {x} outside its range",
-                        m.path
-                    );
-                }
-            }
-            if m.kind == "choice" {
-                let d = m.default.as_str().unwrap();
-                assert!(m.choices.iter().any(|c| c.value == d), "{}: default {d} is no choice", m.path);
-            }
-            if !m.group.is_empty() {
-                assert!(FORM_GROUPS.iter().any(|(id, _)| *id == m.group), "{}: no form group {}", m.path, m.group);
-            }
-        }
-    }
-
-    /// A unit in a name (`_kn`, `_rpm`, `_m2`) and the declared unit agree.
-    #[test]
-    fn units_agree_with_names() {
-        let suffixes = [
-            ("_kg_m2", "kg m²"),
-            ("_kg_m3", "kg/m³"),
-            ("_rad_s", "rad/s"),
-            ("_m_s", "m/s"),
-            ("_deg_s", "deg/s"),
-            ("_rpm_per_s", "rpm/s"),
-            ("_rpm_per_kn_s", "rpm/(kn s)"),
-            ("_rpm_per_kn", "rpm/kn"),
-            ("_per_s", "1/s"),
-            ("_nm_s", "N m s/rad"),
-            ("_m2", "m²"),
-            ("_kg", "kg"),
-            ("_kn", "kn"),
-            ("_rpm", "rpm"),
-            ("_deg", "deg"),
-            ("_hz", "Hz"),
-            ("_ohm", "Ω"),
-            ("_pu", "pu"),
-            ("_nm", "N m"),
-            ("_w", "W"),
-            ("_v", "V"),
-            ("_f", "F"),
-            ("_h", "H"),
-            ("_s", "s"),
-            ("_m", "m"),
-        ];
-        for m in all() {
-            let name = m.path.rsplit('.').next().unwrap();
-            // Table 2.3's coefficients are named for their symbols (xudot_minus_m).
-            if m.path.starts_with("hull.abkowitz.") {
-                continue;
-            }
-            if let Some((_, unit)) = suffixes.iter().find(|(s, _)| name.ends_with(s)) {
-                assert_eq!(m.unit, *unit, "{}", m.path);
-            }
-        }
-    }
-
-    /// Each bounded number refused just outside its range, with the declaration's message at its
-    /// own path; the same value inside the range accepted by that field.
-    #[test]
-    fn ranges_are_enforced_with_their_messages() {
-        let base = Scenario::default();
-        let mut checked = 0;
-        for m in all() {
-            let (Some(lo), Some(hi)) = (m.min, m.max) else { continue };
-            if !matches!(m.kind, "number" | "integer") || m.path.starts_with("commands") {
-                continue;
-            }
-            let outside = if m.kind == "integer" { hi + 1.0 } else { hi + (hi - lo).abs().max(1.0) };
-            let e = base.with_override(&m.path, &num(outside)).unwrap_err();
-            assert!(e.0.iter().any(|f| f.path == m.path && f.message == m.message()), "{} = {outside}: {e}", m.path);
-            checked += 1;
-        }
-        assert!(checked > 120, "{checked}");
-        let e = base.with_override("commands.0.speed_kn", "41").unwrap_err();
-        assert_eq!(
-            e.to_string(),
-            "commands.0.speed_kn = 41: Ordered speed must be a number from 0 to 40 kn, or left out (keep the previous order)"
-        );
-        // An order's 0 is not "unset": a heading rate of 0 is refused.
-        let e = base.with_override("commands.0.heading_rate_deg_s", "0").unwrap_err();
-        assert_eq!(e.0[0].path, "commands.0.heading_rate_deg_s", "{e}");
-        let e = base.with_override("plant.dc_link.brake_resistor_ohm", "0.001").unwrap_err();
-        assert_eq!(e.0[0].message, "Brake resistor must be a number from 0.01 to 10000 Ω, or 0 (none)");
-    }
-
-    #[test]
-    fn paths_with_indices_find_their_declaration() {
-        assert_eq!(find("commands.7.heading_deg").unwrap().path, "commands.N.heading_deg");
-        assert_eq!(find("ship.hull.shaft_y_m.1").unwrap().path, "ship.hull.shaft_y_m");
-        assert!(find("ship.nope").is_none());
-        assert_eq!(closest("plant.motor.rated_powr_w").as_deref(), Some("plant.motor.rated_power_w"));
-        assert_eq!(closest("sim.zzzzzzzzzz"), None);
-    }
 }

@@ -3,6 +3,7 @@
 
 use crate::propeller_losses::{DISK_AT_SURFACE_H_OVER_R, DISK_OUT_H_OVER_R, HUB_AT_SURFACE_H_OVER_R};
 use crate::scenario::Scenario;
+use crate::signals::Signal;
 use serde::Serialize;
 
 /// A horizontal level on a plot of one signal.
@@ -47,6 +48,16 @@ pub struct PageConstants {
     pub prop_x_aft_m: f64,
     /// When the live views turn a block to its warning colour.
     pub warnings: WarningLevels,
+    /// What 1 pu is for every per-unit trace column, in this scenario.
+    pub pu_bases: Vec<PuBase>,
+}
+
+/// The base of a per-unit signal: `signal` is `value` `unit` per unit.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PuBase {
+    pub signal: &'static str,
+    pub value: f64,
+    pub unit: &'static str,
 }
 
 /// Levels at which the live drive-train view marks a block (display levels, not model limits:
@@ -237,6 +248,16 @@ impl PageConstants {
                 bus_voltage_high_pu: sc.plant.dc_link.brake_on_pu,
                 motor_power_limit_pu: 1.0,
             },
+            pu_bases: vec![
+                PuBase { signal: Signal::TurbineSpeedPu.name(), value: sc.plant.turbine.rated_speed_rpm, unit: "rpm" },
+                PuBase { signal: Signal::BusVoltagePu.name(), value: sc.bus_voltage_ref_v(), unit: "V" },
+                PuBase {
+                    signal: Signal::MotorVoltagePu.name(),
+                    value: crate::motor::InductionMotor::new(&sc.plant.motor).v_rated,
+                    unit: "V",
+                },
+                PuBase { signal: Signal::ImPowerPu.name(), value: sc.plant.motor.rated_power_w, unit: "W" },
+            ],
         })
     }
 }
@@ -244,6 +265,17 @@ impl PageConstants {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every per-unit trace column has its base, and only those.
+    #[test]
+    fn every_per_unit_signal_has_a_base() {
+        let c = PageConstants::of(&Scenario::default()).unwrap();
+        let pu: Vec<&str> = crate::signals::SIGNALS.iter().filter(|s| s.unit == "pu").map(|s| s.name).collect();
+        let based: Vec<&str> = c.pu_bases.iter().map(|b| b.signal).collect();
+        assert_eq!(pu, based);
+        // The motor's rated phase voltage: 4160 V line to line (Table 2.1).
+        assert!((c.pu_bases[2].value - 4160.0 / 3f64.sqrt()).abs() < 1e-9);
+    }
 
     #[test]
     fn the_hull_profile_spans_the_ship_and_the_waterline_is_between_keel_and_deck() {

@@ -247,17 +247,20 @@ crate::params! {
             label: "Sea", source: "ch. 2.5.4 (random), ch. 5.2.4 (regular)", group: "sea",
             help: "Random: Bretschneider spectrum (eq. 2.58) of a Table 2.4 sea state.",
         },
-        /// Used unless `h_sig_m` and `omega_n_rad_s` are both set.
+        /// Used unless `h_sig_m` and `omega_n_rad_s` are set; given with them, refused. Left out of
+        /// the JSON when they are set.
         pub sea_state: u32 = 6 => {
             label: "Sea state", unit: "-", range: 2.0..=6.0, source: "Table 2.4 (the ch. 5 studies use 6)", group: "sea",
             help: "Table 2.4 gives each sea state's significant height and peak frequency.",
         },
         pub h_sig_m: f64 = 0.0 => {
             label: "Significant wave height H_1/3", unit: "m", range: 0.01..=20.0, empty: "the sea state's",
+            excludes: &["sea.sea_state"],
             help: "With omega_n_rad_s, a spectrum of one's own instead of the sea state's.",
         },
         pub omega_n_rad_s: f64 = 0.0 => {
             label: "Modal frequency omega_n", unit: "rad/s", range: 0.2..=3.0, empty: "the sea state's",
+            excludes: &["sea.sea_state"],
             help: "Peak frequency of the spectrum of one's own (with h_sig_m).",
         },
         pub from_deg: f64 = 0.0 => {

@@ -42,7 +42,7 @@ pub fn signal_meta() -> String {
 /// made from it (the parameters with a group, in its groups).
 #[wasm_bindgen(js_name = paramMeta)]
 pub fn param_meta() -> String {
-    serde_json::json!({ "groups": aes_core::params::FORM_GROUPS, "params": aes_core::params::all() }).to_string()
+    serde_json::json!({ "groups": aes_core::params::FORM_GROUPS, "params": aes_core::registry::all() }).to_string()
 }
 
 /// The model's levels and ratings the page draws (bands, reference lines, per-unit bases), for a

@@ -63,7 +63,7 @@ export const STUDIES = {
     compare: [{ label: 'calm water', set: { 'sea.kind': 'calm' } }] },
   'head-seas-ss6': { title: 'Head seas, sea state 6: ventilation', plots: ['hr', 'beta', 'motor', 'rpm', 'bus'], params: ['ship.hull.hub_above_base_m', 'seakeeping.stern_motion', 'sea.sea_state', 'sim.seed'],
     watch: 'h/R against the shaded ventilation band: each time it dips below 1.1 the propeller draws air (orange markers), thrust and torque drop (beta), the propeller races and the motor power falls. Below 1 the disk breaks the surface. Each event is a sudden load rejection for the plant: the turbines overspeed (up to 13 % with seed 1) and dip as much when the propeller bites again, the bus voltage follows them (0.83 to 1.14 pu), then both ring for tens of seconds (bus plot), far beyond the 0.2 % (turbines) and 2 % (bus) they move in these seas when the propellers stay down.',
-    compare: [{ label: 'eq. 2.57 as printed', set: { 'seakeeping.stern_motion': 'thesis_eq_2_57' } }, { label: 'fully loaded (hub 0.15 m up: h0 = 6 m)', set: { 'ship.hull.hub_above_base_m': 0.15 } }],
+    compare: [{ label: 'eq. 2.57 as printed', set: { 'seakeeping.stern_motion': 'thesis_eq_2_57' } }, { label: 'fully loaded (the hull\'s own hub height)', set: { 'ship.hull.hub_above_base_m': null } }],
     note: 'The sign of eq. 2.57: as printed, the stern\'s own motion is added to the wave instead of taken from it, so the hub depth swings by wave plus motion and surface effects come several times as often; with the consistent sign the stern rides the long waves of SS6 and a fully loaded ship (h0 = 6 m) keeps its propellers down.' },
   'as-printed': { title: 'The thesis as printed: head seas SS6', plots: ['heave', 'hr', 'motor', 'rpm', 'bus'], params: ['seakeeping.stern_motion', 'ship.hull.hub_above_base_m', 'sim.seed'],
     watch: 'Heave first: with Appendix A\'s eq. 5 as printed the destroyer heaves by 16 to 18 m in SS6, and the propellers leave the water (h/R far below the band) again and again; the motor power drops to nothing each time. Compare with the corrected equations, and with eq. 2.57\'s sign alone, which gives the thesis\' ch. 5.3 picture of ventilation and swings of tens of rpm. The bus sits at 9.7 kV (E_a line to line).',
@@ -85,13 +85,6 @@ STUDIES['mc-wigley'] = { title: 'Monte Carlo on the Wigley hull', plots: ['motor
   watch: 'Press Monte Carlo (Run shows one trial): how motor power, hub depth and shaft speed spread over 50 random seas on a hull other than the thesis\' destroyer.' };
 // What the page calls a study it has no entry for (a new preset): its name.
 export const studyTitle = (name) => (STUDIES[name] && STUDIES[name].title) || name;
-
-// The per-unit signals and the pageConstants entry that is their base, with its unit.
-export const PU_BASES = {
-  turbine_speed_pu: { constant: 'turbine_rated_speed_rpm', unit: 'rpm' },
-  bus_voltage_pu: { constant: 'bus_voltage_ref_v', unit: 'V' },
-  im_power_pu: { constant: 'motor_rated_power_w', unit: 'W' },
-};
 
 // Plots of a run. Each series is a trace column: its label and unit come from signalMeta (label
 // overrides a meta label only to add a sign convention). `prefix` shows W as MW, N as kN.
@@ -119,24 +112,27 @@ export const PLOTS = [
 ];
 // Plots shown when a study names none.
 export const DEFAULT_PLOTS = ['speed', 'rpm', 'bus', 'motor', 'track'];
-// Key figures of the comparison of a kept run with the new one: [label, from the summary].
+// Key figures of the comparison of a kept run with the new one: a statistic of a signal's summary
+// ('swing' is max - min) or an energy of the summary, named by `text` ({} is the signal's label);
+// units from signalMeta (a statistic in seconds, `_s`, is in s), with an optional metric prefix.
 export const KEY_FIGURES = [
-  ['peak motor power [pu]', (s) => s.signals.im_power_pu.max],
-  ['lowest motor power [pu]', (s) => s.signals.im_power_pu.min],
-  ['lowest bus voltage (dip) [pu]', (s) => s.signals.bus_voltage_pu.min],
-  ['lowest turbine speed (dip) [pu]', (s) => s.signals.turbine_speed_pu.min],
-  ['highest turbine speed [pu]', (s) => s.signals.turbine_speed_pu.max],
-  ['peak fuel power [MW]', (s) => s.signals.fuel_power_w.max / 1e6],
-  ['final ship speed [kn]', (s) => s.signals.ship_speed_kn.final],
-  ['ship speed settles after [s]', (s) => s.signals.ship_speed_kn.settling_time_s],
-  ['bus voltage settles after [s]', (s) => s.signals.bus_voltage_pu.settling_time_s],
-  ['turbine speed settles after [s]', (s) => s.signals.turbine_speed_pu.settling_time_s],
-  ['propeller speed swing [rpm]', (s) => s.signals.prop_rpm.max - s.signals.prop_rpm.min],
-  ['lowest h/R [-]', (s) => s.signals.h_over_r.min],
-  ['mean fuel power [MW]', (s) => s.signals.fuel_power_w.mean / 1e6],
-  ['turbine energy [MJ]', (s) => s.energy_j.turbine / 1e6],
-  ['energy burnt in the brake [MJ]', (s) => s.energy_j.brake / 1e6],
+  { text: 'peak {}', signal: 'im_power_pu', stat: 'max' },
+  { text: 'lowest {}', signal: 'im_power_pu', stat: 'min' },
+  { text: 'lowest {} (dip)', signal: 'bus_voltage_pu', stat: 'min' },
+  { text: 'lowest {} (dip)', signal: 'turbine_speed_pu', stat: 'min' },
+  { text: 'highest {}', signal: 'turbine_speed_pu', stat: 'max' },
+  { text: 'peak {}', signal: 'fuel_power_w', stat: 'max', prefix: 'M' },
+  { text: 'final {}', signal: 'ship_speed_kn', stat: 'final' },
+  { text: '{} settles after', signal: 'ship_speed_kn', stat: 'settling_time_s' },
+  { text: '{} settles after', signal: 'bus_voltage_pu', stat: 'settling_time_s' },
+  { text: '{} settles after', signal: 'turbine_speed_pu', stat: 'settling_time_s' },
+  { text: '{} swing', signal: 'prop_rpm', stat: 'swing' },
+  { text: 'lowest {}', signal: 'h_over_r', stat: 'min' },
+  { text: 'mean {}', signal: 'fuel_power_w', stat: 'mean', prefix: 'M' },
+  { text: 'turbine energy', energy: 'turbine', prefix: 'M' },
+  { text: 'energy burnt in the brake', energy: 'brake', prefix: 'M' },
 ];
+
 
 // The h/R plot: the ventilation hysteresis band, the region where the disk is at or above the
 // surface, and the levels of pageConstants (dashed, labelled). Colours >= 3:1 on white.
@@ -179,7 +175,10 @@ export const IPS = { omegaRadS: 377, fromHz: 0.01, toHz: 1000, points: 300, pole
 
 // The controller design tab (ch. 3.1): the plant is the acceleration study's; poles faster than
 // poleMapMax [1/s] are listed, not drawn (the compensator's fastest are near -216 /s).
-export const DESIGN = { basePreset: 'acceleration', poleMapMax: 40, debounceMs: 120 };
+// The sliders' spans (in decades for mu and q) within the declared ranges, and their steps.
+export const DESIGN = { basePreset: 'acceleration', poleMapMax: 40, debounceMs: 120,
+  spans: { mu: [-4, 0], q: [0, 4], omega_p_rad_s: [0, 10] },
+  steps: { mu: 0.1, q: 0.1, omega_p_rad_s: 0.1, design_speed_kn: 1 } };
 
 // Progress reports while running: at most one per this many milliseconds; steps per chunk.
 export const RUN_CHUNK_STEPS = 4000; // small enough that the live views follow a run (about 20 ms a chunk)
@@ -214,11 +213,10 @@ export const LIVE = {
   },
 };
 
-// The hull panel and picker (issue 15): display names of the embedded hulls (the list itself comes
-// from hullNames()), the longest share link the page writes (a custom hull's offsets past it go
+// The hull panel and picker (issue 15; the hulls' names and labels come from hullNames() and the
+// registry's ship.hull.name choices): the longest share link the page writes (a custom hull's offsets past it go
 // into a scenario file instead), and the drawing's colours (>= 3:1 on white).
 export const HULL = {
-  titles: { dtmb5415: 'DTMB 5415 (destroyer, 142 m)', wigley: 'Wigley (test hull)', custom: 'custom offsets' },
   maxLinkChars: 8000,
   // Body plan and profile: the drawing keeps 1:1 scale unless its height would be under this many
   // pixels; then heights are stretched by a whole factor, said on the axis.

@@ -11,6 +11,9 @@ import { drawPoleMap, poleCells, numberBoxError, markStale } from './stability.j
 const db = (x) => 20 * Math.log10(Math.max(x, 1e-12));
 const CURVES = ['#0b5cad', '#c2410c'];
 const INPUTS = ['throttle', 'field voltage'];
+// The controls: element id, the controllers.lqg_ltr field, whether its slider is in decades.
+const DESIGN_CONTROLS = [['design-mu', 'mu', true], ['design-q', 'q', true], ['design-omega', 'omega_p_rad_s', false],
+  ['design-speed', 'design_speed_kn', false], ['design-weight', 'turbine_speed_weight', false]];
 
 export class DesignTab {
   // client(): the current worker client; box: a PlotBox; baseScenario(): the study scenario the
@@ -25,6 +28,27 @@ export class DesignTab {
     $('design-run').addEventListener('click', () => { if (this.ok) onRun(this.tuning()); });
   }
 
+  // Sets each control's label, range and starting value from the registry (paramMeta: the
+  // controllers.lqg_ltr declarations); a slider spans DESIGN.spans within the declared range.
+  configure(meta) {
+    const byPath = new Map(meta.params.map((m) => [m.path, m]));
+    for (const [id, field, log] of DESIGN_CONTROLS) {
+      const m = byPath.get(`controllers.lqg_ltr.${field}`);
+      const input = $(id);
+      const f = log ? Math.log10 : (x) => x;
+      const span = DESIGN.spans[field];
+      const lo = span ? Math.max(span[0], f(m.min)) : f(m.min), hi = span ? Math.min(span[1], f(m.max)) : f(m.max);
+      Object.assign(input, { min: String(lo), max: String(hi), value: String(f(m.default)) });
+      if (input.type === 'range') input.step = String(DESIGN.steps[field]);
+      else input.step = 'any';
+      const unit = m.unit && m.unit !== '-' ? ` [${m.unit}]` : '';
+      const label = m.label.replace(/^LQG\/LTR /, '');
+      document.querySelector(`label[for="${id}"]`).textContent = label[0].toUpperCase() + label.slice(1) + unit;
+      input.title = m.help;
+    }
+    this.readouts();
+  }
+
   // controllers.lqg_ltr as the controls set it (mu and q on log sliders).
   tuning() {
     const round = (x) => Number(x.toPrecision(3));
@@ -37,9 +61,8 @@ export class DesignTab {
     };
   }
 
-  update() {
-    // The readouts (and what a screen reader says for the log sliders) follow at once; the design
-    // waits for the slider to rest.
+  // The readouts beside the sliders (and what a screen reader says for the log sliders).
+  readouts() {
     const t = this.tuning();
     $('design-mu-out').textContent = t.mu;
     $('design-q-out').textContent = t.q;
@@ -47,6 +70,12 @@ export class DesignTab {
     $('design-speed-out').textContent = t.design_speed_kn;
     $('design-mu').setAttribute('aria-valuetext', `mu = ${t.mu}`);
     $('design-q').setAttribute('aria-valuetext', `q = ${t.q}`);
+    return t;
+  }
+
+  update() {
+    // The readouts follow at once; the design waits for the slider to rest.
+    const t = this.readouts();
     clearTimeout(this.timer);
     const results = [$('design-margins'), $('design-poles'), $('design-plots')];
     const bad = numberBoxError($('design-weight'), 'turbine-speed weight');

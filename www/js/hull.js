@@ -3,6 +3,7 @@
 // plan, profile and hydrostatics of the scenario's hull at its loading. Every number comes from the
 // wasm (hullSheet, validateScenario); the offsets are parsed by the same Rust code as the command
 // line. This module only draws and moves text.
+import { choiceLabel } from './registry.js';
 import { HULL } from './config.js';
 import { $, el } from './dom.js';
 import { REQUEST, fieldLine } from './protocol.js';
@@ -331,7 +332,7 @@ export class HullPicker {
     Object.assign(this, { form, validate, commit, say, busy });
     this.custom = null; // the last custom hull: {spec: its ship.hull section, file: its file's name}
     this.select = $('hull');
-    this.select.replaceChildren(...names.map((n) => new Option(HULL.titles[n] || n, n)));
+    this.select.replaceChildren(...names.map((n) => new Option(choiceLabel('ship.hull.name', n), n)));
     this.select.addEventListener('change', () => this.pick(this.select.value));
     const file = $(FILE_INPUT);
     file.addEventListener('change', () => { if (file.files[0]) this.loadFile(file.files[0]); });
@@ -393,7 +394,7 @@ export class HullPicker {
       if (prev.hub_above_base_m != null) sc.ship.hull.hub_above_base_m = prev.hub_above_base_m;
     }
     this.fileError('');
-    await this.accept(sc, `Hull: ${HULL.titles[name] || name}.`);
+    await this.accept(sc, `Hull: ${choiceLabel('ship.hull.name', name)}.`);
   }
 
   // Validates; a refused hull file (name or offsets) leaves the scenario as it was; refusals of the

@@ -6,7 +6,8 @@ import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
 import { setPhase, isBusy, setResult, getResult, progress, status, notice, etaText, setFormValid } from './state.js';
 import { linkHash, readLink, diff } from './link.js';
 import { ScenarioForm, setPath, leafPaths } from './form.js';
-import { Signals } from './units.js';
+import { Signals, withPrefix } from './units.js';
+import { setRegistry } from './registry.js';
 import { PlotBox, drawRun, drawSeaExtras, presentPlots } from './plots.js';
 import { MonteCarlo, showMonteCarlo } from './montecarlo.js';
 import { StabilityTab } from './stability.js';
@@ -90,6 +91,8 @@ async function openLink(hash) {
 async function onReady(m) {
   if (form) { setPhase('idle'); return; } // a fresh worker after a cancel: the page stays as it is
   signals = new Signals(m.signals);
+  setRegistry(m.params);
+  design.configure(m.params);
   form = new ScenarioForm(m.presets, m.params, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); } });
   hullPicker = new HullPicker(m.hulls || [], {
     form, validate, say: status, busy: isBusy,
@@ -181,12 +184,28 @@ function showSummary(s, constants) {
   $('summary-box').hidden = false;
 }
 
+// A key figure of config.js as a label with its unit and a reader of a summary.
+function keyFigure(fig) {
+  if (fig.energy) {
+    const { unit, factor } = withPrefix('J', fig.prefix);
+    return { label: `${fig.text} [${unit}]`, f: (s) => s.energy_j[fig.energy] * factor };
+  }
+  const { unit, factor } = signals.display(fig.signal, fig.prefix);
+  const shown = fig.stat.endsWith('_s') ? 's' : unit;
+  const stat = (x) => (fig.stat === 'swing' ? x.max - x.min : x[fig.stat]);
+  return {
+    label: `${fig.text.replace('{}', signals.label(fig.signal))} [${shown}]`,
+    f: (s) => stat(s.signals[fig.signal]) * (fig.stat.endsWith('_s') ? 1 : factor),
+  };
+}
+
 // The kept run against the new one: key figures side by side.
 function showComparison(now) {
   const box = $('compare-box');
   if (!kept || !now) { box.hidden = true; return; }
   const rows = [];
-  for (const [label, f] of KEY_FIGURES) {
+  for (const fig of KEY_FIGURES) {
+    const { label, f } = keyFigure(fig);
     let a, b;
     try { a = f(kept.summary); b = f(now.summary); } catch (_) { continue; }
     if (!Number.isFinite(a) || !Number.isFinite(b) || (a === 0 && b === 0)) continue;

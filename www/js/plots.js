@@ -1,8 +1,9 @@
 // Plots: uPlot charts and canvas pictures in a box, sized to their container and re-fitted when it
 // changes (ResizeObserver); the plots of a run (units from signalMeta, levels and bases from
 // pageConstants), a kept run drawn muted under the new one, and the extra plots after a run in waves.
+import { choiceLabel } from './registry.js';
 import uPlot from '../vendor/uPlot.esm.js';
-import { PLOTS, DEFAULT_PLOTS, LEVEL_COLORS, BAND_FILL, BAND_EDGE, SURFACE_FILL, EVENT_COLOR, KEPT_STYLE, TRACK_MARK_S, TRACK_MIN_SPAN_M, RAO, FUEL_OMEGAS, FUEL_COLORS, HULL } from './config.js';
+import { PLOTS, DEFAULT_PLOTS, LEVEL_COLORS, BAND_FILL, BAND_EDGE, SURFACE_FILL, EVENT_COLOR, KEPT_STYLE, TRACK_MARK_S, TRACK_MIN_SPAN_M, RAO, FUEL_OMEGAS, FUEL_COLORS } from './config.js';
 import { el, fmt, downloadUrl } from './dom.js';
 import { quantity, withPrefix } from './units.js';
 import { REQUEST } from './protocol.js';
@@ -432,7 +433,7 @@ function drawTrack(cv, cols, unit, scenario, kept) {
 export function drawSeaExtras(box, client, scenario, cols, constants, onError) {
   const generation = box.generation;
   const hull = scenario.ship.hull || {};
-  const hullTitle = hull.name === 'custom' ? 'Custom hull' : (HULL.titles[hull.name] || hull.name || 'Hull').replace(/ \(.*\)$/, '');
+  const hullTitle = hull.name === 'custom' ? 'Custom hull' : (choiceLabel('ship.hull.name', hull.name) || 'Hull').replace(/ \(.*\)$/, '');
   const g = constants.gravity_m_s2, lpp = constants.seakeeping_lpp_m;
   const kn = Number(cols.speed_cmd_kn[cols.speed_cmd_kn.length - 1].toPrecision(3));
   const lam = Array.from({ length: RAO.points }, (_, i) => RAO.lambdaFrom + i * RAO.lambdaStep);

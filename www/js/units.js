@@ -1,10 +1,9 @@
 // Units and labels of recorded signals, from the wasm's signalMeta (sent in the worker's 'ready'
 // message), and the per-unit bases from pageConstants. The page guesses no unit.
-import { PU_BASES } from './config.js';
 
 const PREFIX = { '': 1, k: 1e3, M: 1e6 };
 // Units a metric prefix may go in front of.
-const PREFIXABLE = new Set(['W', 'N', 'V', 'A']);
+const PREFIXABLE = new Set(['W', 'N', 'V', 'A', 'J']);
 
 export class Signals {
   constructor(meta) {
@@ -26,9 +25,8 @@ export class Signals {
 
   // For a per-unit signal, what one unit is, e.g. "38 MW" (from pageConstants); null otherwise.
   puBase(name, constants) {
-    const b = PU_BASES[name];
-    if (!b || !constants || !(b.constant in constants)) return null;
-    return quantity(constants[b.constant], b.unit);
+    const b = constants && constants.pu_bases && constants.pu_bases.find((x) => x.signal === name);
+    return b ? quantity(b.value, b.unit) : null;
   }
 
   // The unit as shown: "kn", per unit with its base: "pu of 38 MW".
