@@ -1,4 +1,4 @@
-//! Multi-rate stepping (`sim.hull_substeps`): the hull steps once per several drive-train
+//! Multi-rate stepping (`stepping.hull_substeps`): the hull steps once per several drive-train
 //! steps under their mean thrust. Against the single-rate run of the same preset the recorded
 //! propeller speed, motor power, hub depth and ship speed agree within the tolerances below, and
 //! the energy accounts close as tightly.
@@ -50,16 +50,16 @@ fn compare(name: &str, hull_step_s: f64) -> Diff {
     let mut single = every_look_up(name);
     if name == "head-seas-ss6" {
         // W1 as defined in issue 17: 2.5 ms steps (the preset ships with 5 ms: `wave_presets_step_of_5_ms_matches_1_ms`).
-        single.sim.dt_s = 0.0025;
-        single.sim.integrator = Integrator::Rk4;
+        single.stepping.dt_s = 0.0025;
+        single.stepping.integrator = Integrator::Rk4;
     }
     let mut multi = single.clone();
-    multi.sim.hull_substeps = (hull_step_s / single.sim.dt_s).round() as u32;
+    multi.stepping.hull_substeps = (hull_step_s / single.stepping.dt_s).round() as u32;
     let d = differences(&single, &multi);
     println!(
         "{name}, hull step {hull_step_s} s ({} substeps): rpm max {:.2e} mean {:.2e}; motor power mean {:.2e}, \
          max {:.2e} of peak; min h/R {:.2e}; ship speed max {:.2e} kn; energy residual {:.2e} single, {:.2e} multi",
-        multi.sim.hull_substeps,
+        multi.stepping.hull_substeps,
         d.rpm_max,
         d.rpm_mean,
         d.motor_power_mean_rel,
@@ -171,16 +171,16 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
     use Integrator::{Midpoint, Rk4};
     for name in ["head-seas-ss6", "as-printed"] {
         let shipped = every_look_up(name);
-        assert_eq!((shipped.sim.dt_s, shipped.sim.integrator), (0.005, Midpoint));
+        assert_eq!((shipped.stepping.dt_s, shipped.stepping.integrator), (0.005, Midpoint));
         let mut reference = shipped.clone();
-        reference.sim.dt_s = 0.001;
-        reference.sim.integrator = Rk4;
-        reference.sim.hull_substeps = 1;
+        reference.stepping.dt_s = 0.001;
+        reference.stepping.integrator = Rk4;
+        reference.stepping.hull_substeps = 1;
         for (dt, method, sub) in [(0.0025, Rk4, 1), (0.005, Rk4, 1), (0.005, Midpoint, 1), (0.005, Midpoint, 2)] {
             let mut c = shipped.clone();
-            c.sim.dt_s = dt;
-            c.sim.integrator = method;
-            c.sim.hull_substeps = sub;
+            c.stepping.dt_s = dt;
+            c.stepping.integrator = method;
+            c.stepping.hull_substeps = sub;
             let d = differences(&reference, &c);
             println!("{name} at {dt} s x {sub}, {method:?}: {d}");
             let w1 = name == "head-seas-ss6";
@@ -229,10 +229,10 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
 #[test]
 fn hull_substeps_validated() {
     let mut s = preset("head-seas-ss6").unwrap();
-    s.sim.hull_substeps = 3; // 7.5 ms does not divide 0.1 s
+    s.stepping.hull_substeps = 3; // 7.5 ms does not divide 0.1 s
     assert!(s.validate().unwrap_err().to_string().contains("sim.record_interval_s"));
-    s.sim.hull_substeps = 0;
-    assert!(s.validate().unwrap_err().to_string().contains("sim.hull_substeps"));
+    s.stepping.hull_substeps = 0;
+    assert!(s.validate().unwrap_err().to_string().contains("stepping.hull_substeps"));
 }
 
 /// The RAO look-up skipped while speed and heading stay within `seakeeping.rao_refresh_speed_m_s`
@@ -256,7 +256,7 @@ fn skipped_rao_look_ups_change_little() {
         let shipped = preset(name).unwrap();
         let every = every_look_up(name);
         let mut each_sample = every.clone();
-        each_sample.seakeeping.rao_refresh_s = each_sample.seakeeping.sample_period_s;
+        each_sample.seakeeping.rao_refresh_s = each_sample.stepping.sea_sample_s;
         let look_ups = |sc: &aes_core::Scenario| {
             let mut sim = Simulation::new(sc).unwrap();
             sim.advance(u64::MAX).unwrap();

@@ -51,8 +51,8 @@ fn same_seed_same_trace() {
 fn multi_rate_matches_single_rate() {
     let multi = head_seas(2, SternMotion::ThesisEq257, 40.0);
     let mut single = multi.clone();
-    single.seakeeping.sample_period_s = single.sim.dt_s;
-    single.seakeeping.rao_refresh_s = single.sim.dt_s;
+    single.stepping.sea_sample_s = single.stepping.dt_s;
+    single.seakeeping.rao_refresh_s = single.stepping.dt_s;
     single.seakeeping.rao_refresh_speed_m_s = 0.0;
     single.seakeeping.rao_refresh_heading_deg = 0.0;
     let (a, b) = (run(&multi), run(&single));

@@ -12,8 +12,8 @@ fn main() {
     h.sim.duration_s = 10.0;
     h.seakeeping.stern_motion = aes_core::scenario::SternMotion::ThesisEq257;
     let seas = aes_core::run(&h).map(|r| r.summary.to_json_value().to_string()).unwrap_or_default();
-    // The same with the multi-rate hull step (sim.hull_substeps = 4: 10 ms).
-    h.sim.hull_substeps = 4;
+    // The same with the multi-rate hull step (stepping.hull_substeps = 4: 10 ms).
+    h.stepping.hull_substeps = 4;
     let multirate = aes_core::run(&h).map(|r| r.summary.to_json_value().to_string()).unwrap_or_default();
     let out = std::env::var("OUT_DIR").unwrap_or_else(|_| ".".into());
     let _ = std::fs::write(format!("{out}/native_head_seas_10s.json"), seas);

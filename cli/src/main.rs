@@ -1008,12 +1008,12 @@ fn real_main() -> Result<(), Failure> {
             let mut wave_sums_s = None;
             for _ in 0..repeat.max(1) {
                 if let Some(mut sea) = aes_core::sim::seaway::Seaway::new(&sc)? {
-                    let n = (sim_s / sc.seakeeping.sample_period_s).round() as u64;
+                    let n = (sim_s / sc.stepping.sea_sample_s).round() as u64;
                     sea.refresh(12.86, 0.0);
                     let t0 = Instant::now();
                     let mut acc = 0.0;
                     for i in 0..n {
-                        let t = i as f64 * sc.seakeeping.sample_period_s;
+                        let t = i as f64 * sc.stepping.sea_sample_s;
                         acc += sea.sample(t, 12.86 * t, 0.0, 12.86, 0.0).hub[0];
                     }
                     std::hint::black_box(acc);

@@ -132,7 +132,7 @@ fn class3_endless_and_huge_inputs_are_refused_quickly() {
     refused(
         &["run", "-"],
         br#"{"sim":{"duration_s":1e6,"dt_s":0.001}}"#,
-        "sim.duration_s = 1000000: with sim.dt_s = 0.001",
+        "sim.duration_s = 1000000: with stepping.dt_s = 0.001",
     );
     refused(
         &["run", "-"],

@@ -42,7 +42,7 @@ pub fn powi(x: f64, n: u32) -> f64 {
 }
 
 /// One classical fourth-order Runge-Kutta step of dx/dt = f(t, x) from `t` over `dt` [s], the
-/// stability tool's integrator and the simulator's default (`sim.integrator`). `f(t, y, dx)` writes the derivative into
+/// stability tool's integrator and the simulator's default (`stepping.integrator`). `f(t, y, dx)` writes the derivative into
 /// every entry of `dx`. With a fixed-size array state nothing is allocated.
 pub fn rk4<S>(x: &mut S, t: f64, dt: f64, mut f: impl FnMut(f64, &S, &mut S))
 where

@@ -370,8 +370,8 @@ pub fn mc_wigley() -> Scenario {
 /// RK4 at 2.5 ms (scripts/bench-vs-baseline.sh; accuracy: tests/multirate.rs,
 /// `wave_presets_step_of_5_ms_matches_1_ms`; issue 17).
 fn sea_step(s: &mut Scenario) {
-    s.sim.dt_s = 0.005;
-    s.sim.integrator = crate::numerics::Integrator::Midpoint;
+    s.stepping.dt_s = 0.005;
+    s.stepping.integrator = crate::numerics::Integrator::Midpoint;
 }
 
 #[cfg(test)]

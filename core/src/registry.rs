@@ -193,7 +193,7 @@ mod tests {
             // hull's offsets, a single-rate run's sub-steps.
             let left_out = m.default.is_null()
                 || m.path.starts_with("ship.hull.bilge_keels")
-                || ["ship.hull.offsets_csv", "sim.hull_substeps"].contains(&m.path.as_str());
+                || ["ship.hull.offsets_csv", "stepping.hull_substeps"].contains(&m.path.as_str());
             assert!(listed || left_out, "{} is not in the scenario", m.path);
             assert_eq!(paths.iter().filter(|p| **p == m.path).count(), 1, "{} twice", m.path);
         }

@@ -48,6 +48,7 @@ crate::params! {
         pub commands: Vec<Command> = vec![Command { t_s: 0.0, speed_kn: Some(25.0), heading_deg: None, heading_rate_deg_s: None }] => {},
         pub initial: InitialConditions = InitialConditions::default() => {},
         pub sim: SimSettings = SimSettings::default() => {},
+        pub stepping: SteppingParams = SteppingParams::default() => {},
         /// The sea (calm unless set).
         pub sea: SeaParams = SeaParams::default() => {},
         /// Ship motions in waves and the propeller's surface losses (used when the sea is not calm).
@@ -132,13 +133,6 @@ crate::params! {
     #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
     #[serde(deny_unknown_fields, default)]
     pub struct ControllerParams {
-        /// Must be a whole number of time steps. Not given in the thesis (which calls the governor
-        /// "discrete").
-        pub sample_period_s: f64 = 0.005 => {
-            label: "Controller sample period", unit: "s", range: 1.0e-4..=1.0,
-            source: "our choice: 5 ms (not given in the thesis)",
-            help: "The discrete controllers sample this often; a whole number of time steps.",
-        },
         pub design: ControllerDesign = ControllerDesign::Pi => {
             label: "Turbine and field control", source: "ch. 2, 5 (PI); ch. 3.1 (LQG/LTR)", group: "controllers",
             help: "Two PI loops per set (ch. 2, 5), or one LQG/LTR controller per set moving throttle and field together (ch. 3.1; tune it in the Controller design tab).",
@@ -193,7 +187,7 @@ crate::params! {
 }
 
 crate::params! {
-    /// Integration and recording.
+    /// The run: how long, what is recorded, the seed.
     #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
     #[serde(deny_unknown_fields, default)]
     pub struct SimSettings {
@@ -201,6 +195,24 @@ crate::params! {
             label: "Duration", unit: "s", range: 0.0..=1.0e6, source: "our choice", group: "sim",
             help: "Simulated time.",
         },
+        pub record_interval_s: f64 = 0.1 => {
+            label: "Record every", unit: "s", range: 1.0e-4..=1.0e4, source: "our choice", group: "sim",
+            help: "Interval between recorded trace rows; a whole number of steps.",
+        },
+        /// The calm-water drive train uses none.
+        pub seed: u64 = 0 => {
+            label: "Seed", unit: "-", source: "our choice", group: "sim",
+            help: "Fixes every random number: the same seed gives the same sea.",
+        },
+    }
+}
+
+crate::params! {
+    /// How time is stepped, in one place: the fixed step and its method, the controllers' and the
+    /// sea's sample periods and the hull's multi-rate step (each a whole number of steps).
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields, default)]
+    pub struct SteppingParams {
         /// The DC link's time constant is about 4.5 ms (4.25 ms at 3 kn, 4.71 ms at 32 kn: the
         /// fastest mode of the drive train linearised, every other one 0.9 s or slower), so 1 ms by
         /// default; 5 ms in the presets in waves.
@@ -217,19 +229,23 @@ crate::params! {
             label: "Integration method", group: "sim", source: "our choice: RK4; midpoint in waves (tests/multirate.rs)",
             help: "RK4 evaluates the plant four times a step, the midpoint rule twice (second order). In waves at 5 ms both agree with 1 ms RK4 steps to 0.035 rpm: holding the sea over a step costs more than the method.",
         },
-        pub record_interval_s: f64 = 0.1 => {
-            label: "Record every", unit: "s", range: 1.0e-4..=1.0e4, source: "our choice", group: "sim",
-            help: "Interval between recorded trace rows; a whole number of steps.",
+        /// Not given in the thesis (which calls the governor "discrete").
+        pub controller_sample_s: f64 = 0.005 => {
+            label: "Controller sample period", unit: "s", range: 1.0e-4..=1.0,
+            source: "our choice: 5 ms (not given in the thesis)",
+            help: "The discrete controllers sample this often; a whole number of time steps.",
         },
-        /// The calm-water drive train uses none.
-        pub seed: u64 = 0 => {
-            label: "Seed", unit: "-", source: "our choice", group: "sim",
-            help: "Fixes every random number: the same seed gives the same sea.",
+        /// Wave kinematics are summed every `sea_sample_s` and carried between samples by a
+        /// second-order Taylor series.
+        pub sea_sample_s: f64 = 0.05 => {
+            label: "Sea sample period", unit: "s", range: 1.0e-5..=0.5,
+            source: "our choice: 20 Hz, measured against every step (tests/multirate.rs)",
+            help: "How often the wave sums are made; a whole number of time steps.",
         },
         /// The hull (surge, sway, yaw, position, heading) takes one step of this many `dt_s` (by
         /// `integrator`) under the drive train's mean thrust over them, while the drive train takes
         /// its `dt_s` steps with the hull held. 1: one step of the whole plant every `dt_s`.
-        /// `record_interval_s` must be a whole number of hull steps.
+        /// `sim.record_interval_s` must be a whole number of hull steps.
         #[serde(skip_serializing_if = "is_one")]
         pub hull_substeps: u32 = 1 => {
             label: "Hull sub-steps", unit: "-", range: 1.0..=100.0, source: "our choice: single rate (tests/multirate.rs)",
@@ -238,7 +254,7 @@ crate::params! {
     }
 }
 
-/// Longest step with `sim.integrator = midpoint` [s] (see `SimSettings::validate`).
+/// Longest step with `stepping.integrator = midpoint` [s] (see `SteppingParams`' checks).
 pub const MIDPOINT_MAX_DT_S: f64 = 0.008;
 
 fn is_one(n: &u32) -> bool {
@@ -297,18 +313,10 @@ impl crate::params::CrossCheck for MonteCarloParams {
     }
 }
 
-impl crate::params::CrossCheck for SimSettings {
+impl crate::params::CrossCheck for SimSettings {}
+
+impl crate::params::CrossCheck for SteppingParams {
     fn cross_check(&self, v: &mut Validator) {
-        if !(self.dt_s.is_finite() && self.dt_s > 0.0) {
-            return;
-        }
-        if !whole_multiple(self.record_interval_s, self.dt_s) {
-            v.fail(
-                "record_interval_s",
-                self.record_interval_s,
-                format!("must be a whole number (1 or more) of sim.dt_s = {}", self.dt_s),
-            );
-        }
         // The midpoint rule's stability bound: 2 time constants of the DC link (4.25 ms at the
         // least, at 3 kn), 8.5 ms; RK4's 2.8, 11.8 ms, lies beyond the range above.
         if self.integrator == Integrator::Midpoint && self.dt_s > MIDPOINT_MAX_DT_S {
@@ -316,46 +324,19 @@ impl crate::params::CrossCheck for SimSettings {
                 "dt_s",
                 self.dt_s,
                 format!(
-                    "must be at most {MIDPOINT_MAX_DT_S} s with sim.integrator = midpoint (stable for the DC link's \
-                     4.25 ms time constant up to 2 of them; rk4 allows up to 0.01 s)"
+                    "must be at most {MIDPOINT_MAX_DT_S} s with stepping.integrator = midpoint (stable for the DC \
+                     link's 4.25 ms time constant up to 2 of them; rk4 allows up to 0.01 s)"
                 ),
             );
         }
-        if (1..=100).contains(&self.hull_substeps)
-            && !whole_multiple(self.record_interval_s, self.hull_substeps as f64 * self.dt_s)
+        if !(self.dt_s.is_finite() && self.dt_s > 0.0) {
+            return;
+        }
+        for (field, period) in [("controller_sample_s", self.controller_sample_s), ("sea_sample_s", self.sea_sample_s)]
         {
-            v.fail(
-                "record_interval_s",
-                self.record_interval_s,
-                format!(
-                    "must be a whole number of hull steps, sim.hull_substeps x sim.dt_s = {} x {}",
-                    self.hull_substeps, self.dt_s
-                ),
-            );
-        }
-        let steps = self.duration_s / self.dt_s;
-        if steps > MAX_STEPS {
-            v.fail(
-                "duration_s",
-                self.duration_s,
-                format!(
-                    "with sim.dt_s = {} this is {steps:.3e} steps; at most {MAX_STEPS:e}",
-                    crate::validate::num(self.dt_s)
-                ),
-            );
-        }
-        let rows = self.duration_s / self.record_interval_s;
-        if rows > MAX_RECORDED_ROWS {
-            v.fail(
-                "record_interval_s",
-                self.record_interval_s,
-                format!(
-                    "with sim.duration_s = {} this records {rows:.3e} rows of {} columns; at most {:.0} rows ({MAX_RECORDED_VALUES:e} values): raise the interval or shorten the run",
-                    crate::validate::num(self.duration_s),
-                    crate::signals::N_SIGNALS,
-                    MAX_RECORDED_ROWS.floor()
-                ),
-            );
+            if !whole_multiple(period, self.dt_s) {
+                v.fail(field, period, format!("must be a whole number (1 or more) of stepping.dt_s = {}", self.dt_s));
+            }
         }
     }
 }
@@ -371,19 +352,8 @@ impl crate::params::CrossCheck for Scenario {
                 "waves need hull.model = \"maneuvering\"",
             );
         }
+        self.validate_steps(v);
         self.validate_work(v);
-        let dt = self.sim.dt_s;
-        if dt.is_finite() && dt > 0.0 {
-            for (path, period) in [
-                ("controllers.sample_period_s", self.controllers.sample_period_s),
-                ("seakeeping.sample_period_s", self.seakeeping.sample_period_s),
-                ("seakeeping.rao_refresh_s", self.seakeeping.rao_refresh_s),
-            ] {
-                if !whole_multiple(period, dt) {
-                    v.fail(path, period, format!("must be a whole number (1 or more) of sim.dt_s = {dt}"));
-                }
-            }
-        }
     }
 }
 
@@ -438,16 +408,81 @@ impl Scenario {
     /// The work a run asks for: time steps times the state variables advanced per step (plus, in
     /// waves, the wave components summed per step).
     pub fn work(&self) -> f64 {
-        let steps = self.sim.duration_s / self.sim.dt_s;
+        let steps = self.sim.duration_s / self.stepping.dt_s;
         let mut per_step = STATE_SIZE as f64;
         if self.sea.kind != SeaKind::Calm {
-            per_step += self.sea.components as f64 * self.sim.dt_s / self.seakeeping.sample_period_s;
+            per_step += self.sea.components as f64 * self.stepping.dt_s / self.stepping.sea_sample_s;
         }
         steps * per_step
     }
 
+    /// The run against its step: whole numbers of steps, and the budgets of steps and rows.
+    fn validate_steps(&self, v: &mut Validator) {
+        let (sim, st) = (&self.sim, &self.stepping);
+        let dt = st.dt_s;
+        if !(dt.is_finite() && dt > 0.0) {
+            return;
+        }
+        if !whole_multiple(sim.record_interval_s, dt) {
+            v.fail(
+                "sim.record_interval_s",
+                sim.record_interval_s,
+                format!("must be a whole number (1 or more) of stepping.dt_s = {dt}"),
+            );
+        } else if (1..=100).contains(&st.hull_substeps)
+            && !whole_multiple(sim.record_interval_s, st.hull_substeps as f64 * dt)
+        {
+            v.fail(
+                "sim.record_interval_s",
+                sim.record_interval_s,
+                format!(
+                    "must be a whole number of hull steps, stepping.hull_substeps x stepping.dt_s = {} x {dt}",
+                    st.hull_substeps
+                ),
+            );
+        }
+        if !whole_multiple(self.seakeeping.rao_refresh_s, dt) {
+            v.fail(
+                "seakeeping.rao_refresh_s",
+                self.seakeeping.rao_refresh_s,
+                format!("must be a whole number (1 or more) of stepping.dt_s = {dt}"),
+            );
+        }
+        if self.seakeeping.rao_refresh_s < st.sea_sample_s {
+            v.fail(
+                "seakeeping.rao_refresh_s",
+                crate::validate::num(self.seakeeping.rao_refresh_s),
+                "must be at least stepping.sea_sample_s",
+            );
+        }
+        let steps = sim.duration_s / dt;
+        if steps > MAX_STEPS {
+            v.fail(
+                "sim.duration_s",
+                sim.duration_s,
+                format!(
+                    "with stepping.dt_s = {} this is {steps:.3e} steps; at most {MAX_STEPS:e}",
+                    crate::validate::num(dt)
+                ),
+            );
+        }
+        let rows = sim.duration_s / sim.record_interval_s;
+        if rows > MAX_RECORDED_ROWS {
+            v.fail(
+                "sim.record_interval_s",
+                sim.record_interval_s,
+                format!(
+                    "with sim.duration_s = {} this records {rows:.3e} rows of {} columns; at most {:.0} rows ({MAX_RECORDED_VALUES:e} values): raise the interval or shorten the run",
+                    crate::validate::num(sim.duration_s),
+                    crate::signals::N_SIGNALS,
+                    MAX_RECORDED_ROWS.floor()
+                ),
+            );
+        }
+    }
+
     fn validate_work(&self, v: &mut Validator) {
-        if !(self.sim.dt_s.is_finite() && self.sim.dt_s > 0.0 && self.seakeeping.sample_period_s > 0.0) {
+        if !(self.stepping.dt_s.is_finite() && self.stepping.dt_s > 0.0 && self.stepping.sea_sample_s > 0.0) {
             return;
         }
         let work = self.work();
@@ -457,9 +492,9 @@ impl Scenario {
                     "duration_s",
                     self.sim.duration_s,
                     format!(
-                        "with sim.dt_s = {} this is {:.3e} steps and {work:.3e} units of work (steps times state size); at most {MAX_WORK:e}: shorten the run or raise sim.dt_s",
-                        crate::validate::num(self.sim.dt_s),
-                        self.sim.duration_s / self.sim.dt_s
+                        "with stepping.dt_s = {} this is {:.3e} steps and {work:.3e} units of work (steps times state size); at most {MAX_WORK:e}: shorten the run or raise stepping.dt_s",
+                        crate::validate::num(self.stepping.dt_s),
+                        self.sim.duration_s / self.stepping.dt_s
                     ),
                 )
             });
@@ -527,14 +562,14 @@ mod tests {
         let e = Scenario::from_json(r#"{"ship": {"wetted_area_m2": "big"}}"#).unwrap_err();
         assert_eq!(e.0[0].message, "Wetted area must be a number from 1 to 100000 m²");
         // An unknown choice: the value quoted and the choices listed.
-        let e = Scenario::from_json(r#"{"sim": {"integrator": "euler"}}"#).unwrap_err();
-        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("sim.integrator", "\"euler\""));
+        let e = Scenario::from_json(r#"{"stepping": {"integrator": "euler"}}"#).unwrap_err();
+        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("stepping.integrator", "\"euler\""));
         assert_eq!(
             e.0[0].message,
             "Integration method must be one of \"rk4\" (RK4 (fourth order)), \"midpoint\" (midpoint rule (second order))"
         );
-        let e = Scenario::from_json(r#"{"sim": {"integrator": {"midpoint": 5}}}"#).unwrap_err();
-        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("sim.integrator.midpoint", "5"));
+        let e = Scenario::from_json(r#"{"stepping": {"integrator": {"midpoint": 5}}}"#).unwrap_err();
+        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("stepping.integrator.midpoint", "5"));
         let e = Scenario::from_json(r#"{"commands": [{"t_s": 0}, {"t_s": 5, "speed_kn": [1]}]}"#).unwrap_err();
         assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("commands.1.speed_kn", "[1]"));
         assert!(e.0[0].message.starts_with("Ordered speed must be a number from 0 to 40 kn"), "{}", e.0[0].message);
@@ -544,13 +579,13 @@ mod tests {
     fn out_of_range_names_field_value_and_range() {
         let mut s = Scenario::default();
         s.ship.wetted_area_m2 = -5.0;
-        s.sim.dt_s = f64::NAN;
+        s.stepping.dt_s = f64::NAN;
         s.seakeeping.rao_refresh_speed_m_s = -0.1;
         s.seakeeping.rao_refresh_heading_deg = f64::NAN;
         let e = s.validate().unwrap_err();
         let paths: Vec<_> = e.0.iter().map(|f| f.path.as_str()).collect();
         assert!(paths.contains(&"ship.wetted_area_m2"));
-        assert!(paths.contains(&"sim.dt_s"));
+        assert!(paths.contains(&"stepping.dt_s"));
         assert!(paths.contains(&"seakeeping.rao_refresh_speed_m_s"), "{paths:?}");
         assert!(paths.contains(&"seakeeping.rao_refresh_heading_deg"), "{paths:?}");
         let m = e.0.iter().find(|f| f.path == "ship.wetted_area_m2").unwrap();
@@ -563,17 +598,17 @@ mod tests {
     #[test]
     fn midpoint_step_is_bounded() {
         let mut s = Scenario::default();
-        s.sim.integrator = Integrator::Midpoint;
-        s.sim.dt_s = 0.01;
+        s.stepping.integrator = Integrator::Midpoint;
+        s.stepping.dt_s = 0.01;
         s.sim.record_interval_s = 0.1;
         let e = s.validate().unwrap_err();
-        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("sim.dt_s", "0.01"), "{e}");
-        assert!(e.0[0].message.contains("at most 0.008 s with sim.integrator = midpoint"), "{e}");
-        s.sim.dt_s = 0.005;
+        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("stepping.dt_s", "0.01"), "{e}");
+        assert!(e.0[0].message.contains("at most 0.008 s with stepping.integrator = midpoint"), "{e}");
+        s.stepping.dt_s = 0.005;
         s.validate().unwrap();
-        s.sim.integrator = Integrator::Rk4;
-        s.sim.dt_s = 0.01;
-        s.controllers.sample_period_s = 0.01;
+        s.stepping.integrator = Integrator::Rk4;
+        s.stepping.dt_s = 0.01;
+        s.stepping.controller_sample_s = 0.01;
         s.validate().unwrap();
     }
 

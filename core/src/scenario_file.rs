@@ -14,7 +14,9 @@ impl Scenario {
     }
 
     /// Like [`Scenario::from_json`], from an already parsed JSON value.
-    pub fn from_value(value: serde_json::Value) -> Result<Scenario, ScenarioError> {
+    pub fn from_value(mut value: serde_json::Value) -> Result<Scenario, ScenarioError> {
+        // Earlier files and links name some parameters by their old paths: read as they were.
+        migrate(&mut value)?;
         // Fields that moved into `ship.hull` (issue 15): say where, not just "unknown field".
         let moved: Vec<FieldError> = MOVED_FIELDS
             .iter()
@@ -83,6 +85,9 @@ impl Scenario {
         if sets.is_empty() {
             return Ok(self.clone());
         }
+        // An old name sets the parameter at its new path.
+        let sets: Vec<(&str, &str)> = sets.iter().map(|&(p, v)| (renamed(p), v)).collect();
+        let sets = sets.as_slice();
         let mut root = self.to_value();
         // A field set here replaces the ones it excludes in the base (a height of one's own, the
         // sea state); given both here, both stay, and the reader refuses them.
@@ -104,6 +109,55 @@ impl Scenario {
             set_path(&mut root, path, value_text)?;
         }
         Scenario::from_value(root)
+    }
+}
+
+/// Parameters renamed since earlier scenario files and share links: (old path, new path). The
+/// time step, its method and the sample periods were in three sections; they are `stepping`'s.
+pub const RENAMED: [(&str, &str); 5] = [
+    ("sim.dt_s", "stepping.dt_s"),
+    ("sim.integrator", "stepping.integrator"),
+    ("sim.hull_substeps", "stepping.hull_substeps"),
+    ("controllers.sample_period_s", "stepping.controller_sample_s"),
+    ("seakeeping.sample_period_s", "stepping.sea_sample_s"),
+];
+
+/// A path with an old name (`sim.dt_s`) as its new one (`stepping.dt_s`); others as they are.
+pub fn renamed(path: &str) -> &str {
+    RENAMED.iter().find(|(old, _)| *old == path).map_or(path, |(_, new)| new)
+}
+
+/// Moves every field of `root` (a scenario, or the part of one that a link carries) that has an
+/// old name to its new path; refuses a field given under both names.
+pub fn migrate(root: &mut serde_json::Value) -> Result<(), ScenarioError> {
+    let mut errors = Vec::new();
+    for (old, new) in RENAMED {
+        let (old_parent, old_key) = old.rsplit_once('.').unwrap_or(("", old));
+        let Some(serde_json::Value::Object(map)) = old_parent.split('.').try_fold(&mut *root, |v, k| v.get_mut(k))
+        else {
+            continue;
+        };
+        let Some(value) = map.remove(old_key) else { continue };
+        let (new_parent, new_key) = new.rsplit_once('.').unwrap_or(("", new));
+        let serde_json::Value::Object(top) = &mut *root else { continue };
+        let section = top.entry(new_parent.to_string()).or_insert_with(|| serde_json::json!({}));
+        match section {
+            serde_json::Value::Object(sec) if !sec.contains_key(new_key) => {
+                sec.insert(new_key.to_string(), value);
+            }
+            serde_json::Value::Object(_) => errors.push(FieldError {
+                path: old.to_string(),
+                value: crate::validate::shorten(&value.to_string()),
+                message: format!("is the old name of {new}, which is given too: give {new} only"),
+            }),
+            // A `stepping` that is no object: the reader names it.
+            _ => {}
+        }
+    }
+    if errors.is_empty() {
+        Ok(())
+    } else {
+        Err(ScenarioError(errors))
     }
 }
 

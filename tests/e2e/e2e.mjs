@@ -88,7 +88,7 @@ await check('a copied link reproduces the identical run in a new page', async ()
   const mine = await summaryText(page);
   await page.click('#share');
   const url = await page.inputValue('#share-url');
-  assert(url.includes('#v=1&preset=startup&d='), url);
+  assert(url.includes('#v=2&preset=startup&d='), url);
   const other = await open(url);
   await other.waitForFunction(() => document.getElementById('status').textContent.startsWith('Done'), null, { timeout: 60000 });
   const theirs = await summaryText(other);
@@ -657,6 +657,16 @@ await check('the address follows the study; Back and Forward restore it', async 
   await p.waitForFunction(() => document.getElementById('preset').value === 'turn-90', null, { timeout: 5000 });
   await p.goForward();
   await p.waitForFunction(() => document.getElementById('preset').value === 'ac-braking', null, { timeout: 5000 });
+  await p.close();
+});
+await check('a link of version 1 (time step and method under sim, as the page wrote them before stepping) opens with them in stepping', async () => {
+  // Recorded from the page before the change: head seas with Duration 20, Time step 0.0025 and RK4.
+  const p = await open(`${base}#v=1&preset=head-seas-ss6&d=eyJzaW0iOnsiZHVyYXRpb25fcyI6MjAsImR0X3MiOjAuMDAyNSwiaW50ZWdyYXRvciI6InJrNCJ9fQ`, wide);
+  await p.waitForFunction(() => document.getElementById('f-stepping-dt_s')?.value === '0.0025', null, { timeout: 10000 });
+  assert((await p.inputValue('#f-stepping-integrator')) === 'rk4', 'integrator not restored');
+  assert((await p.inputValue('#f-sim-duration_s')) === '20', 'duration not restored');
+  const st = await runAndWait(p);
+  assert(st.startsWith('Done'), st);
   await p.close();
 });
 await check('a linked page marks the fields the link changed', async () => {

@@ -38,11 +38,17 @@ pub fn signal_meta() -> String {
 
 /// Every scenario parameter's declaration, as JSON: `{"groups": [[id, title], ...], "params":
 /// [{"path", "kind", "label", "unit", "help", "source", "default", "min", "max", "choices",
-/// "empty", "empty_is", "group", "base", "excludes"}, ...]}` in scenario order. The page's form is
-/// made from it (the parameters with a group, in its groups).
+/// "empty", "empty_is", "group", "base", "excludes"}, ...], "renamed": [[old path, new path], ...]}`
+/// in scenario order. The page's form is made from it (the parameters with a group, in its
+/// groups); links and files of earlier versions are read with `renamed`.
 #[wasm_bindgen(js_name = paramMeta)]
 pub fn param_meta() -> String {
-    serde_json::json!({ "groups": aes_core::params::FORM_GROUPS, "params": aes_core::registry::all() }).to_string()
+    serde_json::json!({
+        "groups": aes_core::params::FORM_GROUPS,
+        "params": aes_core::registry::all(),
+        "renamed": aes_core::scenario_file::RENAMED,
+    })
+    .to_string()
 }
 
 /// The model's levels and ratings the page draws (bands, reference lines, per-unit bases), for a

@@ -79,7 +79,7 @@ fn wasm_matches_native_bit_for_bit() {
         run_summary(&h.to_string()).unwrap(),
         include_str!(concat!(env!("OUT_DIR"), "/native_head_seas_10s.json"))
     );
-    // The multi-rate hull step (sim.hull_substeps = 4) too.
+    // The multi-rate hull step (stepping.hull_substeps = 4) too.
     h["sim"]["hull_substeps"] = serde_json::json!(4);
     assert_eq!(
         run_summary(&h.to_string()).unwrap(),

@@ -3,6 +3,7 @@
 // and the edits kept in localStorage so that they survive a reload.
 import { FORM_PLACES, CHAPTERS, STUDIES, studyTitle, STORE_KEY } from './config.js';
 import { $, el } from './dom.js';
+import { migrate } from './registry.js';
 import { fieldLine } from './protocol.js';
 
 function getPath(obj, path) { return path.split('.').reduce((o, k) => (o == null ? undefined : o[k]), obj); }
@@ -230,7 +231,7 @@ export class ScenarioForm {
   saved() {
     try {
       const s = JSON.parse(localStorage.getItem(STORE_KEY) || 'null');
-      return s && this.has(s.preset) && s.scenario ? s : null;
+      return s && this.has(s.preset) && s.scenario ? { ...s, scenario: migrate(s.scenario) } : null;
     } catch (_) { return null; }
   }
 }

@@ -3,7 +3,7 @@
 // plan, profile and hydrostatics of the scenario's hull at its loading. Every number comes from the
 // wasm (hullSheet, validateScenario); the offsets are parsed by the same Rust code as the command
 // line. This module only draws and moves text.
-import { choiceLabel } from './registry.js';
+import { choiceLabel, migrate } from './registry.js';
 import { HULL } from './config.js';
 import { $, el } from './dom.js';
 import { REQUEST, fieldLine } from './protocol.js';
@@ -452,7 +452,7 @@ export class HullPicker {
   // the page has one, else the study now picked.
   async loadScenario(text, fileName) {
     let sc;
-    try { sc = JSON.parse(text); } catch (e) { this.fileError(`${fileName}: not valid JSON (${e.message})`); return; }
+    try { sc = migrate(JSON.parse(text)); } catch (e) { this.fileError(`${fileName}: not valid JSON (${e.message})`); return; }
     if (!sc || typeof sc !== 'object' || !sc.ship) { this.fileError(`${fileName}: neither hull offsets (CSV) nor a scenario (JSON with a ship)`); return; }
     const name = typeof sc.name === 'string' && this.form.has(sc.name) ? sc.name : this.form.name;
     await this.accept(sc, `Scenario ${fileName} loaded.`, { name, source: fileName });

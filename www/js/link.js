@@ -1,9 +1,13 @@
-// Share links: #v=1&preset=NAME&d=BASE64URL(JSON of what differs from the preset), optionally
+// Share links: #v=2&preset=NAME&d=BASE64URL(JSON of what differs from the preset), optionally
 // &at=SECONDS&speed=X: where the live views stand and how fast they play (a link opens the run there). Reading a link
 // refuses, with a reason a person can act on, anything too long, too deep, damaged, from a newer
 // page or naming an unknown study. Pure functions: no DOM, no worker (the caller validates).
 
-export const LINK_VERSION = 1;
+import { migrate } from './registry.js';
+
+// 2: the time step, its method and the sample periods moved into `stepping` (a link of version 1
+// names them by their old paths and is read with them moved).
+export const LINK_VERSION = 2;
 export const MAX_LINK_CHARS = 16000;
 export const MAX_LINK_DEPTH = 12;
 
@@ -96,7 +100,7 @@ export function readLink(hash, presets) {
     let parsed;
     try { parsed = JSON.parse(text); } catch (_) { return refuse('its scenario part is not valid JSON (truncated?)'); }
     if (!isObject(parsed)) return refuse('its scenario part is not an object');
-    scenario = merge(scenario, parsed);
+    scenario = merge(scenario, v < 2 ? migrate(parsed) : parsed);
   }
   return { name, scenario, view: readView(params) };
 }

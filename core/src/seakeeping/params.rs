@@ -35,17 +35,10 @@ crate::params! {
             label: "Torque loss exponent m", unit: "-", range: 0.1..=2.0, source: "ch. 2.3: 0.85",
             help: "beta_Q = beta_T^m.",
         },
-        /// Wave kinematics are summed every `sample_period_s` and carried between samples by a
-        /// second-order Taylor series.
-        pub sample_period_s: f64 = 0.05 => {
-            label: "Sea sample period", unit: "s", range: 1.0e-5..=0.5,
-            source: "our choice: 20 Hz, measured against every step (tests/multirate.rs)",
-            help: "How often the wave sums are made; a whole number of time steps.",
-        },
         /// Quasi-steady speed and heading, ch. 2.5.4.
         pub rao_refresh_s: f64 = 0.25 => {
             label: "RAO look-up interval", unit: "s", range: 1.0e-5..=10.0, source: "our choice (tests/multirate.rs)",
-            help: "RAOs are looked up again at the ship's speed and heading this often.",
+            help: "RAOs are looked up again at the ship's speed and heading this often; a whole number of time steps, at least the sea sample period.",
         },
         /// A due look-up is skipped while the ship's speed through the water and its heading are
         /// both within these of the last look-up's: it would give nearly the same values (the
@@ -94,13 +87,6 @@ impl crate::params::CrossCheck for SeakeepingParams {
                 "ventilation_off_h_over_r",
                 crate::validate::num(self.ventilation_off_h_over_r),
                 format!("must be at least {}", v.path("ventilation_on_h_over_r")),
-            );
-        }
-        if self.rao_refresh_s < self.sample_period_s {
-            v.fail(
-                "rao_refresh_s",
-                crate::validate::num(self.rao_refresh_s),
-                format!("must be at least {}", v.path("sample_period_s")),
             );
         }
     }

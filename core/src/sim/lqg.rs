@@ -64,7 +64,7 @@ impl LqgDesign {
         let mut inputs = DMatrix::zeros(a_obs.nrows(), 2 * m);
         inputs.view_mut((0, 0), (a_obs.nrows(), m)).copy_from(&k.k_f);
         inputs.view_mut((0, m), (a_obs.nrows(), m)).copy_from(&(-&k.b_aug));
-        let (phi, gam) = zero_order_hold(&a_obs, &inputs, sc.controllers.sample_period_s)
+        let (phi, gam) = zero_order_hold(&a_obs, &inputs, sc.stepping.controller_sample_s)
             .map_err(|e| setup(sc, "the discretisation", e))?;
         let n = phi.nrows();
         Ok(LqgDesign {
@@ -103,7 +103,7 @@ pub fn design_model(sc: &Scenario) -> Result<(DriveTrainModel, StateSpace), SimE
     op.commands =
         vec![Command { t_s: 0.0, speed_kn: Some(p.design_speed_kn), heading_deg: None, heading_rate_deg_s: None }];
     // Only the steady state is needed: no long trace.
-    op.sim.duration_s = op.sim.dt_s.max(op.controllers.sample_period_s);
+    op.sim.duration_s = op.stepping.dt_s.max(op.stepping.controller_sample_s);
     let model = drive_train(&op).map_err(|e| setup(sc, "the linearisation", e.to_string()))?;
     let mut weighted = model.system.clone();
     weighted.c.row_mut(0).scale_mut(p.turbine_speed_weight);

@@ -168,7 +168,7 @@ pub struct Simulation {
     ctl_every: u64,
     rec_every: u64,
     dt: f64,
-    /// The fixed-step method (`sim.integrator`).
+    /// The fixed-step method (`stepping.integrator`).
     method: crate::numerics::Integrator,
     ts: f64,
     next_command: usize,
@@ -195,7 +195,7 @@ pub struct Simulation {
     fuel_extrapolated: bool,
     /// Time of the first surface effect (beta_T < 1 on either shaft) [s].
     first_event: Option<f64>,
-    /// Multi-rate stepping (`sim.hull_substeps` > 1).
+    /// Multi-rate stepping (`stepping.hull_substeps` > 1).
     multi: MultiRate,
 }
 
@@ -259,9 +259,10 @@ impl Simulation {
         let hub0 = scenario.ship_hull().map_err(SimError::Setup)?.hub_depth_m;
         plant.extra_resistance = extra;
         let sim_cfg = &scenario.sim;
-        let dt = sim_cfg.dt_s;
+        let stepping = &scenario.stepping;
+        let dt = stepping.dt_s;
         let total_steps = (sim_cfg.duration_s / dt).round() as u64;
-        let ctl_every = (scenario.controllers.sample_period_s / dt).round().max(1.0) as u64;
+        let ctl_every = (scenario.stepping.controller_sample_s / dt).round().max(1.0) as u64;
         let rec_every = (sim_cfg.record_interval_s / dt).round().max(1.0) as u64;
         let rows = (total_steps / rec_every + 2) as usize;
         let trace = Trace::with_capacity(rows);
@@ -308,7 +309,7 @@ impl Simulation {
             ctl_every,
             rec_every,
             dt,
-            method: sim_cfg.integrator,
+            method: stepping.integrator,
             ts: ctl_every as f64 * dt,
             next_command: 0,
             speed_cmd: 0.0,
@@ -317,7 +318,7 @@ impl Simulation {
             warnings: Vec::new(),
             max_heading_lag: 0.0,
             sea: seaway::Seaway::new(scenario).map_err(SimError::Setup)?,
-            sea_every: (scenario.seakeeping.sample_period_s / dt).round().max(1.0) as u64,
+            sea_every: (scenario.stepping.sea_sample_s / dt).round().max(1.0) as u64,
             refresh_every: (scenario.seakeeping.rao_refresh_s / dt).round().max(1.0) as u64,
             vent: [Ventilation::default(); N_SHAFTS],
             losses: scenario.seakeeping.loss_params(),
@@ -328,7 +329,7 @@ impl Simulation {
             fuel_extrapolated: false,
             first_event: None,
             multi: MultiRate {
-                substeps: sim_cfg.hull_substeps.max(1) as u64,
+                substeps: stepping.hull_substeps.max(1) as u64,
                 start: 0,
                 thrust_work: 0.0,
                 va: 0.0,
@@ -743,7 +744,7 @@ impl Simulation {
         &self.trace
     }
 
-    /// The state vector now (for tests and analysis). With `sim.hull_substeps` > 1 between hull
+    /// The state vector now (for tests and analysis). With `stepping.hull_substeps` > 1 between hull
     /// steps the hull's states are those of its last step and the thrust account's slot holds
     /// the thrust's impulse since then [N s].
     pub fn state(&self) -> &State {

@@ -2,7 +2,7 @@
 //! bus, one motor and one propeller, pushing one hull (thesis Fig. 2-1, split plant).
 //!
 //! The continuous state is a flat array advanced by a fixed-step Runge-Kutta method (RK4, or the
-//! midpoint rule in waves: `sim.integrator`); the layout constants below name every slot. Energy accumulators ride along in the same array so that the energy books are integrated
+//! midpoint rule in waves: `stepping.integrator`); the layout constants below name every slot. Energy accumulators ride along in the same array so that the energy books are integrated
 //! with exactly the same scheme as the states they describe.
 
 use crate::dc_link::{DcLink, RectifierFlow};

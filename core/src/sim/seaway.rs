@@ -9,7 +9,7 @@
 //! counts the Doppler shift twice; with the position in the phase, the wave frequency is the
 //! right one (the encounter frequency is theta's rate, omega0 - k (x' cos mu + y' sin mu)).
 //!
-//! Multi-rate: the sums run every `sample_period_s`; the hub depth between samples follows the
+//! Multi-rate: the sums run every `stepping.sea_sample_s`; the hub depth between samples follows the
 //! second-order Taylor series of its own sum (the derivatives come with the sum at no extra
 //! transcendental cost). RAOs, the stern's phase offsets and the drift-force weights are looked up
 //! again every `rao_refresh_s` at the ship's speed and heading then.
