@@ -1,0 +1,119 @@
+// Live view: the drive train of Fig. 2-1 with its power flowing, from the four gas turbines through
+// the generators, the two DC buses, inverters and motors to the propellers and the ship. Every
+// number drawn is a trace value at the playback time; the warning levels and the motors' rating
+// come from the wasm's pageConstants. No physics here.
+import { LIVE } from '../config.js';
+import { C, View, mw, pct } from './shared.js';
+
+// What a stage keeps of the power through it: out/in flowing forward, in/out flowing back (a
+// braking motor passes the shaft's power to the bus); none while the flow turns round.
+const keeps = (out, into) => (into > 0 && out >= 0 ? `keeps ${pct(out / into)}` : into < 0 && out < 0 ? `keeps ${pct(into / out)}` : 'flow turning');
+// The ship's share: above 100 % only while the ship slows (resistance above thrust; no propeller
+// turns as much as 90 % of its shaft power into thrust power), its momentum then paying the rest.
+const shipShare = (out, into) => (into > 0 && out > into ? `slows: ${pct(out / into)}` : keeps(out, into));
+
+// A block: rounded box with lines of text; warn: a word shown and the warning colours.
+function block(g, x, y, w, h, lines, warn, fsMax = 14) {
+  g.fillStyle = warn ? C.warn : C.block;
+  g.strokeStyle = warn ? C.warnEdge : C.blockEdge;
+  g.lineWidth = warn ? 3 : 1.2;
+  g.beginPath(); g.roundRect(x, y, w, h, 6); g.fill(); g.stroke();
+  const all = warn ? [...lines, warn] : lines;
+  const fs = Math.max(10, Math.min(fsMax, Math.floor((h - 6) / all.length) - 2, Math.floor(w / 7.5)));
+  g.textAlign = 'center'; g.textBaseline = 'middle';
+  all.forEach((s, j) => {
+    g.font = `${j === 0 ? '600 ' : ''}${fs}px system-ui, sans-serif`;
+    g.fillStyle = warn && j === all.length - 1 ? C.warnEdge : C.text;
+    g.fillText(s, x + w / 2, y + h / 2 + (j - (all.length - 1) / 2) * (fs + 2), w - 6);
+  });
+  return warn ? C.warnEdge : C.blockEdge;
+}
+
+// An arrow from (x0, y0) to (x1, y1) (along one axis) for power p [W] against a link rating
+// [W]: width with the power, dashes moving with it; reversed (other colour) when power flows back.
+// L: the live views (the dashes move with their playback speed).
+function arrow(L, g, x0, y0, x1, y1, p, rating) {
+  const frac = Math.min(1.5, Math.abs(p) / rating);
+  const width = Math.max(1.5, LIVE.arrowMaxPx * frac);
+  const back = p < 0;
+  const [ax, ay, bx, by] = back ? [x1, y1, x0, y0] : [x0, y0, x1, y1];
+  const len = Math.hypot(bx - ax, by - ay) || 1, ux = (bx - ax) / len, uy = (by - ay) / len;
+  const head = Math.min(10, len / 3);
+  g.save();
+  g.strokeStyle = back ? C.back : C.flow; g.fillStyle = g.strokeStyle;
+  g.lineWidth = width;
+  g.setLineDash([10, 6]);
+  g.lineDashOffset = -L.dashPhase * LIVE.dashPxPerS * frac * L.speed;
+  g.beginPath(); g.moveTo(ax, ay); g.lineTo(bx - ux * head, by - uy * head); g.stroke();
+  g.setLineDash([]);
+  const hw = width / 2 + 4;
+  g.beginPath(); g.moveTo(bx, by); g.lineTo(bx - ux * head - uy * hw, by - uy * head + ux * hw); g.lineTo(bx - ux * head + uy * hw, by - uy * head - ux * hw); g.closePath(); g.fill();
+  g.restore();
+}
+
+export class TrainView extends View {
+  constructor(onResize) {
+    super('Drive train (Fig. 2-1): power flows from the turbines to the ship', 'The drive train: four gas turbines, four generators, two DC buses, two inverters, two motors, two propellers and the ship, with the power each passes on', '--live-train-h', onResize);
+  }
+
+  // Fig. 2-1 left to right (top to bottom on a narrow screen): stages along one axis (turbines,
+  // generators, buses, inverters, motors, propellers, ship), the four sets across the other. L: the live views (the trace at their playback time).
+  draw(L) {
+    const { g, w, h } = this;
+    const v = (n) => L.v(n), k = L.k, lv = k.warnings;
+    g.clearRect(0, 0, w, h);
+    const down = w < LIVE.trainVerticalBelowPx; // stages from top to bottom
+    const along = down ? h : w, across = down ? w : h;
+    const stage = along / 7, lane = across / 4;
+    // Block extents along the flow and across it, and the picture position of (stage, lane).
+    const big = (L.big = document.body.classList.contains('presenting')) ? 1.45 : 1; // presentation: larger blocks and type
+    const bs = Math.min(stage * (down ? 0.7 : 0.8), 130 * big), bl = Math.min(lane * (down ? 0.92 : 0.86), (down ? 130 : 64) * big);
+    const at = (st, ln) => (down ? [ln * lane, (st + 0.5) * stage] : [(st + 0.5) * stage, ln * lane]);
+    const box = (st, ln, ext, lines, warn) => {
+      const [cx, cy] = at(st, ln);
+      const [bw, bh] = down ? [ext, bs] : [bs, ext];
+      return block(g, cx - bw / 2, cy - bh / 2, bw, bh, lines, warn, fsMax);
+    };
+    const link = (st, ln, p, rating) => {
+      const [x0, y0] = at(st, ln), [x1, y1] = at(st + 1, ln);
+      if (down) arrow(L, g, x0, y0 + bs / 2, x1, y1 - bs / 2, p, rating);
+      else arrow(L, g, x0 + bs / 2, y0, x1 - bs / 2, y1, p, rating);
+    };
+    const short = (down ? lane : bs) < 100; // narrow blocks: short names
+    // One type size for every block: four lines in the smallest (a block with more shrinks alone).
+    const fsMax = Math.max(10, Math.min(big > 1 ? 20 : 14, Math.floor(((down ? bs : bl) - 6) / 4) - 2));
+    const pT = v('p_turbine_w') / 4, pG = v('p_generator_w') / 4, pI = v('p_inverter_w') / 2, pM = v('p_motor_w') / 2, pS = v('p_ship_w');
+    const setRating = k.motor_rated_power_w / 2, plantRating = k.motor_rated_power_w;
+    const speedPu = v('turbine_speed_pu'), busPu = v('bus_voltage_pu'), imPu = v('im_power_pu'), brake = v('brake_power_w');
+    const warn = {
+      turbine: speedPu > lv.turbine_overspeed_pu ? 'OVERSPEED' : null,
+      bus: busPu < lv.bus_voltage_low_pu ? 'LOW' : busPu > lv.bus_voltage_high_pu ? 'HIGH' : null,
+      motor: imPu >= lv.motor_power_limit_pu * 0.999 ? 'AT RATING' : null,
+      brake: brake > 0 ? 'BRAKE ON' : null,
+    };
+    const d = L.drawn.train = { turbine_mw: pT / 1e6, generator_mw: pG / 1e6, inverter_mw: pI / 1e6, motor_mw: pM / 1e6, ship_mw: pS / 1e6, warn };
+    const setLn = (s) => s + 0.5, plantLn = (p) => 2 * p + 1;
+    // Arrows first, blocks over their ends.
+    for (let s = 0; s < 4; s++) { link(0, setLn(s), pT, setRating); link(1, setLn(s), pG, setRating); }
+    for (let p = 0; p < 2; p++) {
+      link(2, plantLn(p), pI, plantRating);
+      link(3, plantLn(p), pI, plantRating);
+      link(4, plantLn(p), pM, plantRating);
+      // Useful power (resistance times speed), half per shaft, into the one ship; backwards
+      // when the propellers brake the ship (negative thrust).
+      link(5, plantLn(p) + (p ? -0.3 : 0.3), v('thrust_kn') < 0 ? -pS / 2 : pS / 2, plantRating);
+    }
+    for (let s = 0; s < 4; s++) {
+      d.turbineEdge = box(0, setLn(s), bl, [`${short ? 'GT' : 'Gas turbine'} ${s + 1}`, mw(pT), `${speedPu.toFixed(3)} pu`], warn.turbine);
+      box(1, setLn(s), bl, [`${short ? 'Gen.' : 'Generator'} ${s + 1}`, mw(pG), keeps(v('p_generator_w'), v('p_turbine_w'))], null);
+    }
+    const wide = Math.min(2 * lane * 0.9, bl * 1.6);
+    for (let p = 0; p < 2; p++) {
+      box(2, plantLn(p), wide, [`DC bus ${p + 1}`, `${busPu.toFixed(3)} pu`, `${(v('bus_voltage_v') / 1e3).toFixed(2)} kV`, ...(warn.brake ? [`brake ${mw(brake / 2)}`] : [])], warn.bus || warn.brake);
+      box(3, plantLn(p), wide, [`${short ? 'Inv.' : 'Inverter'} ${p + 1}`, mw(pI), keeps(v('p_inverter_w'), v('p_generator_w')), ...(short ? [] : [`${v('motor_voltage_pu').toFixed(2)} pu V`])], null);
+      box(4, plantLn(p), wide, [`Motor ${p + 1}`, mw(pM), `${imPu.toFixed(2)} pu`, keeps(v('p_motor_w'), v('p_inverter_w'))], warn.motor);
+      box(5, plantLn(p), wide, [`${short ? 'Prop.' : 'Propeller'} ${p + 1}`, `${v(`prop_rpm_${p + 1}`).toFixed(0)} rpm`, `β_T ${v('beta_t').toFixed(2)}`], null);
+    }
+    box(6, 2, Math.min(across * 0.5, 4 * bl), ['Ship', `${v('ship_speed_kn').toFixed(1)} kn`, `useful ${mw(pS)}`, ...(down ? [] : [`thrust ${(v('thrust_kn') / 1e3).toFixed(2)} MN`]), shipShare(v('p_ship_w'), v('p_motor_w'))], null);
+  }
+}

@@ -1,0 +1,43 @@
+// The live views' shared parts: the colours, the trace's row at a time, the wording that more
+// than one view (or the text alternative) prints, and the canvas every view draws on. No number
+// of the model here: the views take theirs from the trace and the wasm's pageConstants.
+import { LIVE } from '../config.js';
+import { el } from '../dom.js';
+
+export const C = LIVE.colors;
+
+// Index of the last row at or before t (t_s increasing).
+export function rowAt(ts, t) {
+  let lo = 0, hi = ts.length - 1;
+  if (t <= ts[0]) return 0;
+  if (t >= ts[hi]) return hi;
+  while (hi - lo > 1) { const m = (lo + hi) >> 1; if (ts[m] <= t) lo = m; else hi = m; }
+  return lo;
+}
+
+export const mw = (w) => `${(w / 1e6).toFixed(1)} MW`;
+export const pct = (x) => (Number.isFinite(x) ? `${(100 * x).toFixed(1)} %` : '–');
+// The hub's place against the local surface (eq. 2.57 as printed can put it above).
+export const hubText = (hub) => (hub >= 0 ? `hub ${hub.toFixed(2)} m below the surface` : `hub ${(-hub).toFixed(2)} m above the surface`);
+export const signed = (x, d = 2) => `${x >= 0 ? '+' : '−'}${Math.abs(x).toFixed(d)}`;
+
+// A canvas that follows its box's width at a CSS height; draw() redraws after a resize.
+export class View {
+  constructor(title, label, heightVar, onResize) {
+    this.canvas = el('canvas', { className: 'live-canvas', attrs: { role: 'img', 'aria-label': label, 'aria-describedby': 'live-text' } });
+    this.canvas.style.height = `var(${heightVar})`;
+    this.figure = el('figure', { className: 'plot live-view' }, el('h3', { textContent: title }), this.canvas);
+    this.w = 0; this.h = 0;
+    new ResizeObserver(() => {
+      const w = this.canvas.clientWidth, h = this.canvas.clientHeight;
+      if (!w || !h || (w === this.w && h === this.h)) return;
+      const dpr = window.devicePixelRatio || 1;
+      this.w = w; this.h = h;
+      this.canvas.width = Math.round(w * dpr); this.canvas.height = Math.round(h * dpr);
+      this.g = this.canvas.getContext('2d');
+      this.g.setTransform(dpr, 0, 0, dpr, 0, 0);
+      onResize();
+    }).observe(this.canvas);
+  }
+  ready() { return this.g && this.w > 0 && !this.figure.hidden; }
+}
