@@ -1502,9 +1502,10 @@ fn second_order_and_fuel(base: &crate::RunResult) -> Result<Section, String> {
         s3,
         "-",
         &format!(
-            "SS3's waves (H 0.9 m, peak 0.838 rad/s, lambda/L about 0.6) are short against the 142 m hull, where the \
+            "SS3's waves (H 0.9 m, peak {} rad/s, lambda/L about 0.6) are short against the 142 m hull, where the \
              added resistance operator is small, and the force goes as H^2 ((0.9 / 5.0)^2 = 0.03 of SS6's): the \
-             {lo_text}-{hi_text} % is for severe seas (Fig. 5-11 shows SS3 and SS6 without numbers)"
+             {lo_text}-{hi_text} % is for severe seas (Fig. 5-11 shows SS3 and SS6 without numbers)",
+            thesis_text("table_2_4.ss3.peak_frequency_rad_s")
         ),
     ));
     // Fuel: the thermal efficiency the part-load curve gives, and one prime mover at 25 kn.
