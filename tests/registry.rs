@@ -104,3 +104,45 @@ fn scenario_files_of_the_old_format_read_as_before() {
     let s = preset("startup").unwrap().with_override("sim.dt_s", "0.0025").unwrap();
     assert_eq!(s.stepping.dt_s, 0.0025);
 }
+
+/// Every key of the thesis' numbers (core/data/thesis_values.csv) that the page, the tests, the
+/// command line's tests and the wasm's tests name exists: a renamed or removed key fails here, before a slow test or a
+/// browser meets it. (The validation report's keys are checked in aes-core.)
+#[test]
+fn the_page_and_the_tests_name_only_known_thesis_values() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let mut files = Vec::new();
+    for (dir, ext) in [("www/js", "js"), ("tests", "rs"), ("cli/tests", "rs"), ("web/tests", "rs")] {
+        for e in std::fs::read_dir(root.join(dir)).unwrap() {
+            let path = e.unwrap().path();
+            if path.extension().is_some_and(|x| x == ext) && !path.ends_with("registry.rs") {
+                files.push(path);
+            }
+        }
+    }
+    let mut seen = 0;
+    for f in files {
+        let text = std::fs::read_to_string(&f).unwrap();
+        for key in aes_core::thesis_values::quoted_keys(&text) {
+            assert!(
+                aes_core::thesis_values::get(&key).is_some(),
+                "{} names {key}, which {} lacks",
+                f.display(),
+                aes_core::thesis_values::PATH
+            );
+            seen += 1;
+        }
+    }
+    // Table 5.8 and the excess energy on the page, Tables 4.1 and 5.7 and Fig. 5-1 in the tests.
+    assert!(seen >= 25, "{seen} keys found: the scan is broken");
+}
+
+/// The scanner finds a key and would catch a stale one.
+#[test]
+fn a_stale_thesis_key_is_caught() {
+    let found = aes_core::thesis_values::quoted_keys(
+        "const k = ['table_5_8.rice.mean_s', 'table_5_8.rice.average_s', 'table 5.8'];",
+    );
+    assert_eq!(found, ["table_5_8.rice.mean_s", "table_5_8.rice.average_s"]);
+    assert!(aes_core::thesis_values::get("table_5_8.rice.average_s").is_none());
+}

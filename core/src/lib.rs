@@ -40,6 +40,7 @@ pub mod stability;
 pub mod stats;
 pub mod surge;
 pub mod svg_plot;
+pub mod thesis_values;
 pub mod units;
 pub mod validate;
 pub mod validation;

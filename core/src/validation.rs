@@ -9,6 +9,7 @@ use crate::presets::preset;
 use crate::scenario::{Scenario, SternMotion};
 use crate::stability::{generator_side::GeneratorSideParams, motor_side::MotorSideParams};
 use crate::svg_plot::{check_well_formed, svg, Panel, Plot, Series};
+use crate::thesis_values;
 use serde::Serialize;
 
 /// How far ours may be from the thesis' number.
@@ -98,7 +99,92 @@ fn points(r: &crate::RunResult, name: &str, scale: f64) -> Result<Vec<(f64, f64)
     Ok(t.iter().zip(y).map(|(&t, &y)| (t, y * scale)).collect())
 }
 
-fn row(quantity: &str, source: &str, thesis: f64, ours: f64, unit: &'static str, tol: Tolerance, reason: &str) -> Row {
+/// The thesis column of a row: a number the thesis prints, by its key in
+/// core/data/thesis_values.csv ([`reference`], [`reference_pct`]), or one computed here (a closed
+/// form, Rice's prediction, a run with a switch as printed).
+#[derive(Debug, Clone, Copy)]
+enum Thesis {
+    /// The printed number over `divisor` (100 for a percentage compared as a fraction).
+    Printed {
+        key: &'static str,
+        divisor: f64,
+    },
+    Computed(f64),
+}
+
+impl From<f64> for Thesis {
+    fn from(x: f64) -> Self {
+        Thesis::Computed(x)
+    }
+}
+
+/// A number the thesis prints, as printed.
+fn reference(key: &'static str) -> Thesis {
+    Thesis::Printed { key, divisor: 1.0 }
+}
+
+/// A percentage the thesis prints, as a fraction.
+fn reference_pct(key: &'static str) -> Thesis {
+    Thesis::Printed { key, divisor: 100.0 }
+}
+
+/// Why a key gives no number.
+fn missing_why(key: &str) -> String {
+    match thesis_values::all() {
+        Ok(_) => format!("missing reference: {key} is not in {}", thesis_values::PATH),
+        Err(e) => format!("missing reference: {key} ({e})"),
+    }
+}
+
+impl Thesis {
+    fn resolve(self) -> Result<f64, String> {
+        match self {
+            Thesis::Computed(x) => Ok(x),
+            Thesis::Printed { key, divisor } => {
+                thesis_values::value(key).map(|v| v / divisor).ok_or_else(|| missing_why(key))
+            }
+        }
+    }
+}
+
+/// A thesis number for a computation or a plot: NaN when the file lacks it (the row that compares
+/// with the same key then says "missing reference").
+fn thesis_f64(key: &str) -> f64 {
+    thesis_values::value(key).unwrap_or(f64::NAN)
+}
+
+/// A thesis number as printed, for the report's text.
+fn thesis_text(key: &str) -> String {
+    thesis_values::printed(key).map_or_else(|| format!("[{}]", missing_why(key)), str::to_string)
+}
+
+/// A row whose thesis number is missing: it fails, and says so.
+fn missing_reference(quantity: &str, source: &str, ours: f64, unit: &'static str, why: String) -> Row {
+    Row {
+        quantity: quantity.into(),
+        source: source.into(),
+        thesis: f64::NAN,
+        ours,
+        unit,
+        tolerance: None,
+        verdict: Verdict::Fail,
+        reason: why,
+    }
+}
+
+fn row(
+    quantity: &str,
+    source: &str,
+    thesis: impl Into<Thesis>,
+    ours: f64,
+    unit: &'static str,
+    tol: Tolerance,
+    reason: &str,
+) -> Row {
+    let thesis = match thesis.into().resolve() {
+        Ok(x) => x,
+        Err(why) => return missing_reference(quantity, source, ours, unit, why),
+    };
     let ok = match tol {
         Tolerance::Abs(x) => (ours - thesis).abs() <= x,
         Tolerance::Rel(x) => (ours - thesis).abs() <= x * thesis.abs(),
@@ -115,7 +201,11 @@ fn row(quantity: &str, source: &str, thesis: f64, ours: f64, unit: &'static str,
     }
 }
 
-fn open(quantity: &str, source: &str, thesis: f64, ours: f64, unit: &'static str, reason: &str) -> Row {
+fn open(quantity: &str, source: &str, thesis: impl Into<Thesis>, ours: f64, unit: &'static str, reason: &str) -> Row {
+    let thesis = match thesis.into().resolve() {
+        Ok(x) => x,
+        Err(why) => return missing_reference(quantity, source, ours, unit, why),
+    };
     Row {
         quantity: quantity.into(),
         source: source.into(),
@@ -132,7 +222,7 @@ fn open(quantity: &str, source: &str, thesis: f64, ours: f64, unit: &'static str
 fn calibrated(
     quantity: &str,
     source: &str,
-    thesis: f64,
+    thesis: impl Into<Thesis>,
     ours: f64,
     unit: &'static str,
     tol: Tolerance,
@@ -142,8 +232,16 @@ fn calibrated(
     Row { verdict: if r.verdict == Verdict::Pass { Verdict::Calibrated } else { r.verdict }, ..r }
 }
 
-fn explained(quantity: &str, source: &str, thesis: f64, ours: f64, unit: &'static str, reason: &str) -> Row {
-    Row { verdict: Verdict::Explained, ..open(quantity, source, thesis, ours, unit, reason) }
+fn explained(
+    quantity: &str,
+    source: &str,
+    thesis: impl Into<Thesis>,
+    ours: f64,
+    unit: &'static str,
+    reason: &str,
+) -> Row {
+    let r = open(quantity, source, thesis, ours, unit, reason);
+    Row { verdict: if r.verdict == Verdict::Open { Verdict::Explained } else { r.verdict }, ..r }
 }
 
 /// How large a run of the report is.
@@ -202,14 +300,20 @@ pub fn sections(size: Size) -> Result<Vec<Section>, String> {
 }
 
 fn table_2_4() -> Result<Section, String> {
-    let printed = [(2, 0.997, 0.984), (3, 0.838, 2.952), (4, 0.714, 6.232), (5, 0.648, 10.824), (6, 0.507, 16.400)];
+    let printed = [
+        (2, "table_2_4.ss2.peak_frequency_rad_s", "table_2_4.ss2.significant_height_ft"),
+        (3, "table_2_4.ss3.peak_frequency_rad_s", "table_2_4.ss3.significant_height_ft"),
+        (4, "table_2_4.ss4.peak_frequency_rad_s", "table_2_4.ss4.significant_height_ft"),
+        (5, "table_2_4.ss5.peak_frequency_rad_s", "table_2_4.ss5.significant_height_ft"),
+        (6, "table_2_4.ss6.peak_frequency_rad_s", "table_2_4.ss6.significant_height_ft"),
+    ];
     let mut rows = Vec::new();
-    for (ss, w, h_ft) in printed {
+    for (ss, w_key, h_key) in printed {
         let (w_ours, h_ours) = crate::waves::sea_state(ss).ok_or("no sea state")?;
         rows.push(calibrated(
             &format!("SS{ss} peak frequency"),
             "Table 2.4",
-            w,
+            reference(w_key),
             w_ours,
             "rad/s",
             Tolerance::Abs(0.0),
@@ -218,13 +322,14 @@ fn table_2_4() -> Result<Section, String> {
         rows.push(calibrated(
             &format!("SS{ss} significant height"),
             "Table 2.4",
-            h_ft,
+            reference(h_key),
             h_ours / 0.3048,
             "ft",
             Tolerance::Rel(1e-12),
             "copied (stored in metres)",
         ));
         // Eq. 2.58's zeroth moment is H^2/16 in closed form; the integral of our spectrum.
+        let w = thesis_f64(w_key);
         let (lo, hi, n) = (0.05 * w, 20.0 * w, 20_000);
         let dw = (hi - lo) / n as f64;
         let m0: f64 = (0..n).map(|i| crate::waves::bretschneider(lo + (i as f64 + 0.5) * dw, h_ours, w) * dw).sum();
@@ -256,17 +361,57 @@ fn table_4_1() -> Result<Section, String> {
             calibrated(
                 "|v_gs|",
                 src,
-                457.74,
+                reference("table_4_1.steady_state.v_gs_mag_v"),
                 s.v_gs_mag,
                 "V",
                 Tolerance::Rel(2e-4),
                 &format!("L_md chosen to give it{hf}"),
             ),
-            row("|i_gs|", src, 48.81, s.i_gs_mag, "A", Tolerance::Rel(2e-4), "rectifier model of eqs. 4.8-4.10"),
-            calibrated("i_fd", src, 108.75, s.i_fd, "A", Tolerance::Rel(1e-12), "r_fd is v_fd / i_fd of this table"),
-            row("v~_dc", src, 743.17, s.v_rect_v, "V", Tolerance::Rel(2e-4), "X_co = 0.323 ohm as printed"),
-            row("i_dc", src, 45.09, s.i_dc, "A", Tolerance::Rel(2e-4), "the load current sink plus the droop"),
-            row("cos phi", src, 0.982, s.cos_phi, "-", Tolerance::Abs(5e-4), "half a unit of the printed digit"),
+            row(
+                "|i_gs|",
+                src,
+                reference("table_4_1.steady_state.i_gs_mag_a"),
+                s.i_gs_mag,
+                "A",
+                Tolerance::Rel(2e-4),
+                "rectifier model of eqs. 4.8-4.10",
+            ),
+            calibrated(
+                "i_fd",
+                src,
+                reference("table_4_1.steady_state.i_fd_a"),
+                s.i_fd,
+                "A",
+                Tolerance::Rel(1e-12),
+                "r_fd is v_fd / i_fd of this table",
+            ),
+            row(
+                "v~_dc",
+                src,
+                reference("table_4_1.steady_state.v_rect_v"),
+                s.v_rect_v,
+                "V",
+                Tolerance::Rel(2e-4),
+                "X_co = 0.323 ohm as printed",
+            ),
+            row(
+                "i_dc",
+                src,
+                reference("table_4_1.steady_state.i_dc_a"),
+                s.i_dc,
+                "A",
+                Tolerance::Rel(2e-4),
+                "the load current sink plus the droop",
+            ),
+            row(
+                "cos phi",
+                src,
+                reference("table_4_1.steady_state.cos_phi"),
+                s.cos_phi,
+                "-",
+                Tolerance::Abs(5e-4),
+                "half a unit of the printed digit",
+            ),
         ],
     })
 }
@@ -278,25 +423,83 @@ fn table_4_2() -> Result<Section, String> {
     Ok(Section {
         figures: Vec::new(),
         title: "Table 4.2: motor side steady state (T* = 100 N m)",
-        note: "r_s and r_r reconstructed to reproduce this column (motor_side.rs); the high-fidelity column's \
-               431.06 V differs by 4.6 % from both, the square-wave harmonics the thesis names."
-            .into(),
+        note: format!(
+            "r_s and r_r reconstructed to reproduce this column (motor_side.rs); the high-fidelity column's \
+             {} V differs by 4.6 % from both, the square-wave harmonics the thesis names.",
+            thesis_text("table_4_2.high_fidelity.v_s_mag_v")
+        ),
         rows: vec![
-            calibrated("T_m0", src, 100.0, s.t_m0, "N m", tol, "the torque command"),
-            row("omega_r0", src, 377.0, s.omega_r0, "rad/s", tol, "eq. 4.31"),
-            calibrated("omega_s0", src, 1.667, s.omega_s0, "rad/s", tol, "r_r chosen to give this slip"),
-            row("|i_s|", src, 47.80, s.i_s_mag, "A", tol, ""),
-            row("|i_r|", src, 32.38, s.i_r_mag, "A", tol, ""),
-            calibrated("|v_s|", src, 411.91, s.v_s_mag, "V", tol, "r_s chosen to give it"),
+            calibrated(
+                "T_m0",
+                src,
+                reference("table_4_2.steady_state.t_m0_nm"),
+                s.t_m0,
+                "N m",
+                tol,
+                "the torque command",
+            ),
+            row(
+                "omega_r0",
+                src,
+                reference("table_4_2.steady_state.omega_r0_rad_s"),
+                s.omega_r0,
+                "rad/s",
+                tol,
+                "eq. 4.31",
+            ),
+            calibrated(
+                "omega_s0",
+                src,
+                reference("table_4_2.steady_state.omega_s0_rad_s"),
+                s.omega_s0,
+                "rad/s",
+                tol,
+                "r_r chosen to give this slip",
+            ),
+            row("|i_s|", src, reference("table_4_2.steady_state.i_s_mag_a"), s.i_s_mag, "A", tol, ""),
+            row("|i_r|", src, reference("table_4_2.steady_state.i_r_mag_a"), s.i_r_mag, "A", tol, ""),
+            calibrated(
+                "|v_s|",
+                src,
+                reference("table_4_2.steady_state.v_s_mag_v"),
+                s.v_s_mag,
+                "V",
+                tol,
+                "r_s chosen to give it",
+            ),
         ],
     })
 }
 
 fn table_5_7(st25: &crate::RunResult) -> Result<Section, String> {
     let thesis = [
-        (20.0, [0.909, 0.991, 0.993, 0.705]),
-        (25.0, [0.950, 0.992, 0.992, 0.703]),
-        (30.0, [0.971, 0.988, 0.991, 0.702]),
+        (
+            20.0,
+            [
+                "table_5_7.generator.20kn",
+                "table_5_7.power_electronics.20kn",
+                "table_5_7.motor.20kn",
+                "table_5_7.propeller.20kn",
+            ],
+        ),
+        (
+            25.0,
+            [
+                "table_5_7.generator.25kn",
+                "table_5_7.power_electronics.25kn",
+                "table_5_7.motor.25kn",
+                "table_5_7.propeller.25kn",
+            ],
+        ),
+        (
+            30.0,
+            [
+                "table_5_7.generator.30kn",
+                "table_5_7.power_electronics.30kn",
+                "table_5_7.motor.30kn",
+                "table_5_7.propeller.30kn",
+            ],
+        ),
     ];
     let mut rows = Vec::new();
     for (kn, want) in thesis {
@@ -306,7 +509,7 @@ fn table_5_7(st25: &crate::RunResult) -> Result<Section, String> {
         rows.push(calibrated(
             &format!("generator efficiency at {kn} kn"),
             &src,
-            want[0],
+            reference(want[0]),
             got[0],
             "-",
             Tolerance::Abs(0.01),
@@ -315,7 +518,7 @@ fn table_5_7(st25: &crate::RunResult) -> Result<Section, String> {
         rows.push(explained(
             &format!("power electronics efficiency at {kn} kn"),
             &src,
-            want[1],
+            reference(want[1]),
             got[1],
             "-",
             "the notching (Table 5.4) and stator (Table 5.3) resistances lose 1-3 % at the currents of a 5.6 kV \
@@ -325,7 +528,7 @@ fn table_5_7(st25: &crate::RunResult) -> Result<Section, String> {
         rows.push(row(
             &format!("motor efficiency at {kn} kn"),
             &src,
-            want[2],
+            reference(want[2]),
             got[2],
             "-",
             Tolerance::Abs(0.01),
@@ -334,11 +537,14 @@ fn table_5_7(st25: &crate::RunResult) -> Result<Section, String> {
         rows.push(explained(
             &format!("propeller efficiency at {kn} kn"),
             &src,
-            want[3],
+            reference(want[3]),
             got[3],
             "-",
-            "Table 5.6's definition gives eta_0 eta_R / (1 - w) = 0.677 x 0.98 / 0.9 = 0.737 for the B-series at \
-             P/D = 1; the thesis' 0.703 needs eta_R = 0.935 or no wake factor",
+            &format!(
+                "Table 5.6's definition gives eta_0 eta_R / (1 - w) = 0.677 x 0.98 / 0.9 = 0.737 for the B-series at \
+                 P/D = 1; the thesis' {} needs eta_R = 0.935 or no wake factor",
+                thesis_text("table_5_7.propeller.25kn")
+            ),
         ));
     }
     Ok(Section {
@@ -352,14 +558,17 @@ fn table_5_7(st25: &crate::RunResult) -> Result<Section, String> {
 fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     let sig = |r: &crate::RunResult, n: &str| r.summary.signals[n];
     let mut rows = Vec::new();
+    let rpm_fig_5_1 = thesis_text("ch_5_1.prop_rpm_25kn");
     rows.push(explained(
         "propeller speed at 25 kn",
         "Fig. 5-1",
-        225.0,
+        reference("ch_5_1.prop_rpm_25kn"),
         sig(st, "prop_rpm").final_,
         "rpm",
-        "the thrust balance 2 kT rho n^2 D^4 = R_sp(u) with Table 5.1's resistance fixes 201 rpm; 225 rpm \
-         would need 25 % more resistance than Table 5.1 gives",
+        &format!(
+            "the thrust balance 2 kT rho n^2 D^4 = R_sp(u) with Table 5.1's resistance fixes 201 rpm; {rpm_fig_5_1} rpm \
+             would need 25 % more resistance than Table 5.1 gives"
+        ),
     ));
     let acc = run(&preset("acceleration").ok_or("no preset")?)?;
     let mut acc_t5 = preset("acceleration").ok_or("no preset")?;
@@ -372,8 +581,8 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     let step = sig(&acc, "im_power_pu").max - p25;
     rows.push(explained(
         "turbine speed loss in the acceleration",
-        "ch. 5.2.1 text (\"approximately 20 %\")",
-        0.20,
+        &format!("ch. 5.2.1 text (\"approximately {} %\")", thesis_text("ch_5_2_1.turbine_speed_loss")),
+        reference_pct("ch_5_2_1.turbine_speed_loss"),
         1.0 - sig(&acc, "turbine_speed_pu").min,
         "pu",
         &format!(
@@ -388,8 +597,8 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     let away = below.last().copied().unwrap_or(0.0) - below.first().copied().unwrap_or(0.0);
     rows.push(explained(
         "time the turbine is away from rated (below 0.99 pu)",
-        "ch. 5.2.1 text (\"approximately 20 seconds\")",
-        20.0,
+        &format!("ch. 5.2.1 text (\"approximately {} seconds\")", thesis_text("ch_5_2_1.time_off_rated_s")),
+        reference("ch_5_2_1.time_off_rated_s"),
         away,
         "s",
         "the thesis does not print its governor gains; ours (K_p,t = K_i,t = 10) give a critically damped loop \
@@ -397,8 +606,10 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     ));
     let sc_brk = preset("ac-braking").ok_or("no preset")?;
     let brk = run(&sc_brk)?;
-    // When the brake resistors have taken 10 MJ per plant, and the ship's kinetic energy given up
-    // over the run (hull and surge added mass), per plant.
+    // When the brake resistors have taken the thesis' 10 MJ per plant, and the ship's kinetic energy
+    // given up over the run (hull and surge added mass), per plant.
+    let (e_thesis, e_text) =
+        (thesis_f64("ch_5_2_2.brake_energy_per_plant_mj"), thesis_text("ch_5_2_2.brake_energy_per_plant_mj"));
     let (t, p) = (brk.trace.column("t_s").ok_or("no t_s")?, brk.trace.column("brake_power_w").ok_or("no column")?);
     let (mut e, mut t10, mut t_on) = (0.0, f64::NAN, f64::NAN);
     for i in 1..t.len() {
@@ -406,7 +617,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         if p[i] > 0.0 && t_on.is_nan() {
             t_on = t[i - 1];
         }
-        if e >= 10e6 && t10.is_nan() {
+        if e >= e_thesis * 1e6 && t10.is_nan() {
             t10 = t[i];
         }
     }
@@ -420,28 +631,28 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     // plant, the mass that would make that 10 MJ, and the speed lost while giving up 10 MJ.
     let m5 = crate::ship_hull::TABLE_5_SHIP.mass_kg;
     let ke5 = ke_of(m5, u.max) / 2.0 / 1e6;
-    let m10 = 2.0 * 10e6 / ke_of(1.0, u.max);
+    let m10 = 2.0 * (e_thesis * 1e6) / ke_of(1.0, u.max);
     let u0 = u.max * crate::units::KNOT_M_S;
-    let u10 = (u0 * u0 - 2.0 * 2.0 * 10e6 / m5).sqrt() / crate::units::KNOT_M_S;
+    let u10 = (u0 * u0 - 2.0 * 2.0 * (e_thesis * 1e6) / m5).sqrt() / crate::units::KNOT_M_S;
     let share = brake / dke;
     rows.push(explained(
         "energy to dissipate per plant in AC braking",
-        "ch. 5.2.2 text (\"about 10 MJ\")",
-        10.0,
+        &format!("ch. 5.2.2 text (\"about {e_text} MJ\")"),
+        reference("ch_5_2_2.brake_energy_per_plant_mj"),
         brake,
         "MJ",
         &format!(
-            "the thesis calls its 10 MJ \"most of the ship's kinetic energy\" per plant, but its own Table 5.1 ship \
-             (m = {m5:.1e} kg, two plants) carries {ke5:.0} MJ per plant at {:.0} kn, {:.0} times more: 10 MJ per \
+            "the thesis calls its {e_text} MJ \"most of the ship's kinetic energy\" per plant, but its own Table 5.1 ship \
+             (m = {m5:.1e} kg, two plants) carries {ke5:.0} MJ per plant at {:.0} kn, {:.0} times more: {e_text} MJ per \
              plant is the kinetic energy of a {:.0} t ship at that speed, or what the 7e6 kg ship gives up slowing \
              from {:.0} to {u10:.1} kn, so it is not the kinetic energy of any ship or deceleration of the thesis. \
              Ours is the brake resistors' energy over the whole run ({:.0} to {:.1} kn in {:.0} s): {:.0} % of the \
              {dke:.0} MJ of kinetic energy per plant our ship (m - X_udot = {:.2e} kg) gives up, the hull's \
              resistance taking the rest; with that share the thesis' ship would return {:.0} MJ per plant. Ours \
-             reaches 10 MJ per plant {:.1} s after the resistors start ({:.0} s after the order): the thesis' \
+             reaches {e_text} MJ per plant {:.1} s after the resistors start ({:.0} s after the order): the thesis' \
              number fits only a window of that length",
             u.max,
-            ke5 / 10.0,
+            ke5 / e_thesis,
             m10 / 1e3,
             u.max,
             u.max,
@@ -472,25 +683,35 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     let ((r45, _), (r90, _)) = (turn("turn-45", false)?, turn("turn-90", false)?);
     let ((f45, _), (f90, rud90)) = (turn("turn-45", true)?, turn("turn-90", true)?);
     let src = "ch. 5.2.3 text, Fig. 5-10";
-    rows.push(row("motor power rise in a 45 deg turn", src, 0.06, r45, "-", Tolerance::Abs(0.02), ""));
+    rows.push(row(
+        "motor power rise in a 45 deg turn",
+        src,
+        reference_pct("ch_5_2_3.power_rise_45deg"),
+        r45,
+        "-",
+        Tolerance::Abs(0.02),
+        "",
+    ));
     let rud_max = preset("turn-90").ok_or("no preset")?.rudder.max_angle_deg;
     rows.push(explained(
         "motor power rise in a 90 deg turn",
         src,
-        0.15,
+        reference_pct("ch_5_2_3.power_rise_90deg"),
         r90,
         "-",
         &format!(
             "the rise grows with the rate of the order, which ch. 5.2.3 does not give: at the preset's 0.5 deg/s \
              both turns reach the same gentle steady turn and rise alike ({:.1} % and {:.1} %); ordered as ch. \
              5.3.2 orders its turn, a ramp that takes the rudder to its limit (r' = {full_order}, rudder {rud90:.1} \
-             of {rud_max:.0} deg), the 90 deg turn rises {:.1} %, the thesis' 15 %. The same order makes the 45 deg \
-             turn rise {:.1} % (thesis 6 %): no one order gives both of the thesis' rises, so the 45 deg row is \
+             of {rud_max:.0} deg), the 90 deg turn rises {:.1} %, the thesis' {} %. The same order makes the 45 deg \
+             turn rise {:.1} % (thesis {} %): no one order gives both of the thesis' rises, so the 45 deg row is \
              checked at the preset's rate",
             100.0 * r45,
             100.0 * r90,
             100.0 * f90,
-            100.0 * f45
+            thesis_text("ch_5_2_3.power_rise_90deg"),
+            100.0 * f45,
+            thesis_text("ch_5_2_3.power_rise_45deg"),
         ),
     ));
     let sc360 = preset("turn-360").ok_or("no preset")?;
@@ -586,7 +807,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     rows.push(explained(
         "radius of the 360 deg turn",
         "ch. 5.3.2 text (\"approximately three ship lengths\")",
-        3.0,
+        reference("ch_5_3_2.turn_radius_l"),
         radius(&t360),
         "L",
         &format!(
@@ -638,10 +859,10 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
          {:.0} rpm and the power {:.1} %; at r' = 0.6 (the rudder at its limit) {:.0} rpm and {:.1} %; in SS6 \
          (this row) the waves add their resistance. Nothing limits the drive: at 25 kn the motors run at \
          {p0:.3} of their rating, the speed loop may trim the shaft by {:.0} % and up to {:.0} rpm. The thesis' pair \
-         needs about 60 % more thrust at 25 kn; its 255 over 225 rpm and 160 % fit the straight-line resistance of \
+         needs about 60 % more thrust at 25 kn; its {} over {} rpm and {} % fit the straight-line resistance of \
          Table 2.3 scaled by its L = 180 m (1.64 times eq. 2.15's, which its start-up of ch. 5.1 uses): going \
          straight at 25 kn on that ship (as_printed.table_5_ship) our shaft turns {rpm5:.0} rpm, {:.3} times the \
-         {rpm0:.0} rpm of eq. 2.15's resistance (the thesis' ratio: 1.133), at {:.2} times its power. That \
+         {rpm0:.0} rpm of eq. 2.15's resistance (the thesis' ratio: {:.3}), at {:.2} times its power. That \
          unit would make the turn's power a change of model, not of the turn; the thesis does not say which \
          power it took as its unit, so this stays open",
         radius(&t3),
@@ -651,21 +872,25 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         100.0 * (sig(&t6, "im_power_pu").max / sig(&t6, "im_power_pu").min - 1.0),
         100.0 * sc360.controllers.speed.trim_limit,
         sc360.controllers.speed.max_shaft_rpm,
+        thesis_text("ch_5_3_2.prop_rpm_turn"),
+        rpm_fig_5_1,
+        thesis_text("ch_5_3_2.im_power_turn"),
         rpm5 / rpm0,
+        thesis_f64("ch_5_3_2.prop_rpm_turn") / thesis_f64("ch_5_1.prop_rpm_25kn"),
         p5 / p0,
     );
     rows.push(open(
         "shaft speed holding 25 kn in the 360 deg turn (SS6, mean over the turn)",
-        "ch. 5.3.2 text, Fig. 5-18 (\"approximately 255 rpm\")",
-        255.0,
+        &format!("ch. 5.3.2 text, Fig. 5-18 (\"approximately {} rpm\")", thesis_text("ch_5_3_2.prop_rpm_turn")),
+        reference("ch_5_3_2.prop_rpm_turn"),
         turn_mean(&ss6, "prop_rpm")?,
         "rpm",
         &why_power,
     ));
     rows.push(open(
         "motor power in the 360 deg turn (SS6, mean over the turn, per unit of the 25 kn straight-line power)",
-        "ch. 5.3.2 text, Fig. 5-19 (\"about 160 %\")",
-        1.6,
+        &format!("ch. 5.3.2 text, Fig. 5-19 (\"about {} %\")", thesis_text("ch_5_3_2.im_power_turn")),
+        reference_pct("ch_5_3_2.im_power_turn"),
         turn_mean(&ss6, "im_power_pu")? / p0,
         "-",
         &why_power,
@@ -680,7 +905,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     rows.push(row(
         "propeller speed swing in SS6 head seas (h0 = 6 m, eq. 2.57 and Tables 5.1/5.5 as printed)",
         "ch. 5.3.1 text, Fig. 5-15",
-        50.0,
+        reference("ch_5_3_1.prop_rpm_swing"),
         rpm.max - rpm.min,
         "rpm",
         Tolerance::Rel(0.25),
@@ -710,7 +935,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     rows.push(open(
         "motor power swing in SS6 head seas (h0 = 6 m, eq. 2.57 and Tables 5.1/5.5 as printed)",
         "ch. 5.3.1 text, Fig. 5-15",
-        0.25,
+        reference_pct("ch_5_3_1.im_power_swing"),
         (pw.max - pw.min) / p_cruise,
         "-",
         &why,
@@ -722,6 +947,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
 /// The 25-knot start-up (Figs. 5-1, 5-2): shaft and ship speed, turbine speed, bus voltage.
 fn startup_figure(st: &crate::RunResult) -> Result<Figure, String> {
     let end = st.summary.final_time_s;
+    let rpm_thesis = thesis_text("ch_5_1.prop_rpm_25kn");
     let plot = Plot {
         title: "Start-up to 25 kn in calm water (Fig. 5-1)".into(),
         x_label: "time [s]".into(),
@@ -731,7 +957,13 @@ fn startup_figure(st: &crate::RunResult) -> Result<Figure, String> {
                 "propeller speed [rpm]",
                 vec![
                     Series::line("ours", 0, points(st, "prop_rpm", 1.0)?),
-                    Series::level("thesis, Fig. 5-1: 225 rpm", 1, 225.0, 0.0, end),
+                    Series::level(
+                        &format!("thesis, Fig. 5-1: {rpm_thesis} rpm"),
+                        1,
+                        thesis_f64("ch_5_1.prop_rpm_25kn"),
+                        0.0,
+                        end,
+                    ),
                 ],
             ),
             Panel::new(
@@ -749,7 +981,7 @@ fn startup_figure(st: &crate::RunResult) -> Result<Figure, String> {
     Figure::new(
         "startup-25kn",
         &format!(
-            "Start-up to 25 kn: ours settles at {rpm:.0} rpm where Fig. 5-1 shows about 225 rpm (the thrust balance \
+            "Start-up to 25 kn: ours settles at {rpm:.0} rpm where Fig. 5-1 shows about {rpm_thesis} rpm (the thrust balance \
              with Table 5.1's resistance); the turbines hold their speed while the shaft ramps up"
         ),
         &plot,
@@ -759,6 +991,7 @@ fn startup_figure(st: &crate::RunResult) -> Result<Figure, String> {
 /// The acceleration (ch. 5.2.1, Figs. 5-3, 5-4): the turbine's dip and recovery.
 fn acceleration_figure(acc: &crate::RunResult, away: f64) -> Result<Figure, String> {
     let end = acc.summary.final_time_s;
+    let (loss, loss_text) = (thesis_f64("ch_5_2_1.turbine_speed_loss"), thesis_text("ch_5_2_1.turbine_speed_loss"));
     let plot = Plot {
         title: "Acceleration order at speed (ch. 5.2.1, Figs. 5-3, 5-4)".into(),
         x_label: "time [s]".into(),
@@ -768,7 +1001,7 @@ fn acceleration_figure(acc: &crate::RunResult, away: f64) -> Result<Figure, Stri
                 "turbine speed [pu]",
                 vec![
                     Series::line("ours", 0, points(acc, "turbine_speed_pu", 1.0)?),
-                    Series::level("thesis: 20 % loss", 1, 0.8, 0.0, end),
+                    Series::level(&format!("thesis: {loss_text} % loss"), 1, (100.0 - loss) / 100.0, 0.0, end),
                 ],
             ),
             Panel::new("bus voltage [pu]", vec![Series::line("ours", 0, points(acc, "bus_voltage_pu", 1.0)?)]),
@@ -779,8 +1012,9 @@ fn acceleration_figure(acc: &crate::RunResult, away: f64) -> Result<Figure, Stri
     Figure::new(
         "acceleration",
         &format!(
-            "Acceleration: the turbine speed dips {dip:.0} % (the thesis: about 20 %) and is back above 0.99 pu \
-             {away:.0} s after it left (the thesis: about 20 s; its governor gains are not printed)"
+            "Acceleration: the turbine speed dips {dip:.0} % (the thesis: about {loss_text} %) and is back above 0.99 pu \
+             {away:.0} s after it left (the thesis: about {} s; its governor gains are not printed)",
+            thesis_text("ch_5_2_1.time_off_rated_s")
         ),
         &plot,
     )
@@ -790,6 +1024,8 @@ fn acceleration_figure(acc: &crate::RunResult, away: f64) -> Result<Figure, Stri
 /// against the thesis' 10 MJ.
 fn braking_figure(brk: &crate::RunResult, order: f64, t10: f64) -> Result<Figure, String> {
     let end = brk.summary.final_time_s;
+    let e_key = "ch_5_2_2.brake_energy_per_plant_mj";
+    let e_text = thesis_text(e_key);
     let t = brk.trace.column("t_s").ok_or("no t_s")?;
     let p = brk.trace.column("brake_power_w").ok_or("no brake_power_w")?;
     let mut e = 0.0;
@@ -816,7 +1052,7 @@ fn braking_figure(brk: &crate::RunResult, order: f64, t10: f64) -> Result<Figure
                 "brake energy per plant [MJ]",
                 vec![
                     Series::line("ours, from the start", 0, energy),
-                    Series::level("thesis: about 10 MJ", 1, 10.0, 0.0, end),
+                    Series::level(&format!("thesis: about {e_text} MJ"), 1, thesis_f64(e_key), 0.0, end),
                 ],
             ),
         ],
@@ -824,7 +1060,7 @@ fn braking_figure(brk: &crate::RunResult, order: f64, t10: f64) -> Result<Figure
     Figure::new(
         "ac-braking",
         &format!(
-            "AC braking: the order comes at {order:.0} s; the brake resistors have taken the thesis' 10 MJ per plant \
+            "AC braking: the order comes at {order:.0} s; the brake resistors have taken the thesis' {e_text} MJ per plant \
              {:.0} s later and {:.0} MJ by the end",
             t10 - order,
             e
@@ -855,9 +1091,10 @@ fn arrival_density(a: &crate::montecarlo::ArrivalTimes, trials: u64) -> Vec<(f64
 }
 
 fn table_5_8(size: Size) -> Result<Section, String> {
-    // The thesis' analytic row and level (ch. 5.4.2).
-    const THESIS_RATE: f64 = 0.044;
-    const THESIS_Z: f64 = 3.88;
+    // The thesis' predicted rate and level (ch. 5.4.2), for the computations and the text.
+    let (rate_key, z_key) = ("ch_5_4_2.rate_per_s", "ch_5_4_2.level_z_m");
+    let (thesis_rate, thesis_z) = (thesis_f64(rate_key), thesis_f64(z_key));
+    let (rate_text, z_text) = (thesis_text(rate_key), thesis_text(z_key));
     let sc = preset("mc-arrival").ok_or("no preset")?;
     let s = mc(&sc, size.trials)?;
     let a = &s.arrival_time_s;
@@ -870,8 +1107,8 @@ fn table_5_8(size: Size) -> Result<Section, String> {
     let nu0 = (rice.m2 / rice.m0).sqrt() / (2.0 * std::f64::consts::PI);
     // Our spectrum at the thesis' level, and the standard deviation the thesis' pair (Z, rate)
     // needs at our zero-crossing rate (eq. 5.3 solved for M0).
-    let rate_at_thesis_z = crate::stats::rice_upcrossing_rate(rice.m0, rice.m2, THESIS_Z);
-    let sigma_implied = THESIS_Z / libm::sqrt(2.0 * libm::log(nu0 / THESIS_RATE));
+    let rate_at_thesis_z = crate::stats::rice_upcrossing_rate(rice.m0, rice.m2, thesis_z);
+    let sigma_implied = thesis_z / libm::sqrt(2.0 * libm::log(nu0 / thesis_rate));
     // Rice (no trials) for the same study in a long-crested sea and with the consistent sign.
     let variant = |f: &dyn Fn(&mut Scenario)| -> Result<crate::montecarlo::RiceSummary, String> {
         let mut c = sc.clone();
@@ -889,7 +1126,7 @@ fn table_5_8(size: Size) -> Result<Section, String> {
         Ok((z + on * radius, mc(&c, size.trials)?))
     };
     // Where our Rice rate is the thesis' 0.044 1/s, and where the level is 2 sigma deep.
-    let z44 = libm::sqrt(2.0 * rice.m0 * libm::log(nu0 / THESIS_RATE));
+    let z44 = libm::sqrt(2.0 * rice.m0 * libm::log(nu0 / thesis_rate));
     let (h44, s44) = at_level(z44)?;
     let (h2, s2) = at_level(2.0 * sigma)?;
     let (a44, a2) = (&s44.arrival_time_s, &s2.arrival_time_s);
@@ -901,44 +1138,48 @@ fn table_5_8(size: Size) -> Result<Section, String> {
     // Probability that a trial starts with the hub already below the level: Phi(-Z / sigma).
     let below = |z: f64| 0.5 * libm::erfc(z / sigma / std::f64::consts::SQRT_2);
     let src_a = "Table 5.8, analytic row";
-    let src_m = format!("Table 5.8, Monte Carlo row (189 trials; ours {})", size.trials);
+    let src_m = format!(
+        "Table 5.8, Monte Carlo row ({} trials; ours {})",
+        thesis_text("table_5_8.monte_carlo.trials"),
+        size.trials
+    );
     let why_z = format!(
         "ours is h0 - {on} R = {h0:.2} - {on} x {radius:.2} = {:.2} m: our ventilation loop starts at h/R = {on} \
          (ch. 2.3's two numbers read as a loop, core/src/propeller_losses.rs). The thesis' own recipe, h/R = 1.3 \
          with its h0 = 6 m and R = 2.4 m, gives 2.88 m, and none of the levels it names (h/R 1.3, 1.1, 1.0, 0) \
-         gives 3.88 m from h0 = 6 m (2.88, 3.36, 3.60, 6.00 m); 3.88 m is exactly 7.0 - 1.3 x 2.4: the thesis' inputs \
-         give its Z only with the hub 1 m deeper than the printed 6 m. Set at Z = 3.88 m (h0 = 7 m, h/R = 1.3) our \
+         gives {z_text} m from h0 = 6 m (2.88, 3.36, 3.60, 6.00 m); {z_text} m is exactly 7.0 - 1.3 x 2.4: the thesis' inputs \
+         give its Z only with the hub 1 m deeper than the printed 6 m. Set at Z = {z_text} m (h0 = 7 m, h/R = 1.3) our \
          Rice rate is {rate_at_thesis_z:.4} 1/s (rows above): the level does not close the gap",
         rice.z_m
     );
     let why_rice = format!(
         "the hub-depth spectrum (eq. 5.2 with eq. 2.57's sign as printed; both shafts on the centreline, as eq. 2.57 \
          has them) gives M0 = {:.2} m^2 (sigma {sigma:.2} m) and a zero-crossing rate of {nu0:.4} 1/s. At our Z = \
-         {:.2} m that is {:.4} 1/s; at the thesis' Z = 3.88 m it is {rate_at_thesis_z:.4} 1/s ({:.1} s), still {:.2} \
-         times the thesis'. At our zero-crossing rate the thesis' pair (3.88 m, 0.044 1/s) needs sigma = \
+         {:.2} m that is {:.4} 1/s; at the thesis' Z = {z_text} m it is {rate_at_thesis_z:.4} 1/s ({:.1} s), still {:.2} \
+         times the thesis'. At our zero-crossing rate the thesis' pair ({z_text} m, {rate_text} 1/s) needs sigma = \
          {sigma_implied:.2} m (M0 = {:.2} m^2): {:.0} % less than ours with eq. 2.57 as printed, and far more \
-         than with the consistent sign (sigma {:.2} m, {:.1e} 1/s at 3.88 m). A long-crested sea raises ours \
-         ({:.4} 1/s at 3.88 m). The thesis prints neither M0 nor M2 (its RAOs are its own strip theory), so which \
+         than with the consistent sign (sigma {:.2} m, {:.1e} 1/s at {z_text} m). A long-crested sea raises ours \
+         ({:.4} 1/s at {z_text} m). The thesis prints neither M0 nor M2 (its RAOs are its own strip theory), so which \
          of its inputs makes the smaller motion is not shown: open",
         rice.m0,
         rice.z_m,
         rice.rate_per_s,
         1.0 / rate_at_thesis_z,
-        rate_at_thesis_z / THESIS_RATE,
+        rate_at_thesis_z / thesis_rate,
         sigma_implied * sigma_implied,
         100.0 * (1.0 - sigma_implied / sigma),
         cons.m0.sqrt(),
-        rate_at(&cons, THESIS_Z),
-        rate_at(&long, THESIS_Z),
+        rate_at(&cons, thesis_z),
+        rate_at(&long, thesis_z),
     );
     let why_mc = format!(
         "two causes, one measured, one open. Measured: our level is only {:.2} sigma deep, so {:.0} % of trials \
          start below it and the first passage is no Poisson arrival at Rice's rate (mean of min(T, 90 s) {:.1} +- \
          {se:.1} s against Rice's {:.1} s); with the hub lowered to put it 2 sigma deep (h0 = {h2:.2} m) the two agree \
-         (row below). Open: Rice's rate itself (rows above). At the level where our Rice rate is the thesis' 0.044 \
+         (row below). Open: Rice's rate itself (rows above). At the level where our Rice rate is the thesis' {rate_text} \
          1/s (Z = {:.2} m, {:.2} sigma, h0 = {h44:.2} m) our arrival times have mean {:.2} s, std {:.2} s, skewness \
          {:.2}, kurtosis {:.2}, median {:.2} s, from {} events at {:.4} 1/s ({:.0} % of starts below), against the \
-         thesis' 23.67, 22.11, 1.00, 3.13, 15.46",
+         thesis' {}, {}, {}, {}, {}",
         rice.z_m / sigma,
         100.0 * below(rice.z_m),
         v(a.mean_censored),
@@ -953,20 +1194,32 @@ fn table_5_8(size: Size) -> Result<Section, String> {
         a44.events,
         v(a44.rate_per_s),
         100.0 * below(r44.z_m),
+        thesis_text("table_5_8.monte_carlo.mean_s"),
+        thesis_text("table_5_8.monte_carlo.std_s"),
+        thesis_text("table_5_8.monte_carlo.skewness"),
+        thesis_text("table_5_8.monte_carlo.kurtosis"),
+        thesis_text("table_5_8.monte_carlo.median_s"),
     );
     let mut rows = vec![
-        open("mean arrival time (Rice)", src_a, 22.64, rice.mean_arrival_s, "s", &why_rice),
-        open("rate of surface effects (Rice)", src_a, THESIS_RATE, rice.rate_per_s, "1/s", &why_rice),
-        explained("level Z", "ch. 5.4.2 text", THESIS_Z, rice.z_m, "m", &why_z),
+        open(
+            "mean arrival time (Rice)",
+            src_a,
+            reference("table_5_8.rice.mean_s"),
+            rice.mean_arrival_s,
+            "s",
+            &why_rice,
+        ),
+        open("rate of surface effects (Rice)", src_a, reference(rate_key), rice.rate_per_s, "1/s", &why_rice),
+        explained("level Z", "ch. 5.4.2 text", reference(z_key), rice.z_m, "m", &why_z),
     ];
-    for (name, thesis, ours, unit) in [
-        ("mean", 23.67, v(a.mean), "s"),
-        ("standard deviation", 22.11, v(a.std), "s"),
-        ("skewness", 1.00, v(a.skewness), "-"),
-        ("kurtosis", 3.13, v(a.kurtosis), "-"),
-        ("median", 15.46, v(a.median), "s"),
+    for (name, key, ours, unit) in [
+        ("mean", "table_5_8.monte_carlo.mean_s", v(a.mean), "s"),
+        ("standard deviation", "table_5_8.monte_carlo.std_s", v(a.std), "s"),
+        ("skewness", "table_5_8.monte_carlo.skewness", v(a.skewness), "-"),
+        ("kurtosis", "table_5_8.monte_carlo.kurtosis", v(a.kurtosis), "-"),
+        ("median", "table_5_8.monte_carlo.median_s", v(a.median), "s"),
     ] {
-        rows.push(open(&format!("arrival time {name} (Monte Carlo)"), &src_m, thesis, ours, unit, &why_mc));
+        rows.push(open(&format!("arrival time {name} (Monte Carlo)"), &src_m, reference(key), ours, unit, &why_mc));
     }
     // Rice's Poisson assumption where it holds: our Monte Carlo against our Rice with the level
     // 2 sigma deep (eq. 2.57's sign, as the study).
@@ -997,9 +1250,9 @@ fn table_5_8(size: Size) -> Result<Section, String> {
             vec![
                 Series::line(&format!("ours, {} trials", size.trials), 0, arrival_density(a, size.trials)),
                 Series::dashed(&format!("Rice, our rate {:.3} 1/s", rice.rate_per_s), 2, law(rice.rate_per_s)),
-                Series::dashed("thesis, Rice 0.044 1/s", 1, law(THESIS_RATE)),
+                Series::dashed(&format!("thesis, Rice {rate_text} 1/s"), 1, law(thesis_rate)),
                 Series::line(
-                    &format!("ours, hub at {h44:.2} m (Rice 0.044 1/s)"),
+                    &format!("ours, hub at {h44:.2} m (Rice {rate_text} 1/s)"),
                     3,
                     arrival_density(a44, size.trials),
                 ),
@@ -1034,6 +1287,8 @@ fn excess_energy(size: Size) -> Result<Section, String> {
     let se = std / (n.max(1) as f64).sqrt();
     // The thesis' window: one motor over the whole run (its 94.1 MJ and 1.18 MW agree over 80 s).
     let dur = sc.sim.duration_s;
+    let (mean_key, std_key) = ("ch_5_4_1.excess_energy_mean_mj", "ch_5_4_1.excess_energy_std_mj");
+    let (mean_text, power_text) = (thesis_text(mean_key), thesis_text("ch_5_4_1.excess_power_mw"));
     let sub = e.mean.unwrap_or(f64::NAN);
     let sub_std = e.std.unwrap_or(f64::NAN);
     let calm_mw = {
@@ -1054,26 +1309,28 @@ fn excess_energy(size: Size) -> Result<Section, String> {
             open(
                 "mean excess energy",
                 "ch. 5.4.1 text",
-                94.1,
+                reference(mean_key),
                 mean,
                 "MJ",
                 &format!(
                     "ours {mean:.0} +- {se:.0} (standard error). The window is the thesis': one motor over the \
-                     whole {dur:.0} s run, which its own 94.1 MJ and \"1.18 MW\" confirm (94.1 MJ / 80 s = {:.2} \
+                     whole {dur:.0} s run, which its own {mean_text} MJ and \"{power_text} MW\" confirm ({mean_text} MJ / {} s = {:.2} \
                      MW); ours is {:.2} MW over calm water's {calm_mw:.1} MW. The reference is what differs: \
                      against the same sea without surface losses (what \"due to propeller emergence\" names) ours \
                      is {sub:.1} +- {sub_std:.1} MJ, since an emerging propeller sheds load and the motor draws \
                      less; only against calm water, which counts the added resistance and the speed control's \
                      work in the waves, is it positive. The thesis' reference is not printed and neither of ours \
-                     gives 94 MJ: open",
-                    94.1 / 80.0,
+                     gives {:.0} MJ: open",
+                    thesis_text("ch_5_4_1.duration_s"),
+                    thesis_f64(mean_key) / thesis_f64("ch_5_4_1.duration_s"),
                     mean / dur,
+                    thesis_f64(mean_key),
                 ),
             ),
             open(
                 "standard deviation of the excess energy",
                 "ch. 5.4.1 text",
-                33.3,
+                reference(std_key),
                 std,
                 "MJ",
                 &format!("as above; against the same sea without surface losses the spread is {sub_std:.1} MJ"),
@@ -1204,17 +1461,31 @@ fn second_order_and_fuel(base: &crate::RunResult) -> Result<Section, String> {
     };
     let sc6 = preset("head-seas-ss6").ok_or("no preset")?;
     let (s6, r6) = share(base, &sc6);
-    let src = "ch. 2.5.3 text (\"can add 20-30 % resistance\")";
+    // The thesis' range, read as its middle +- half its width.
+    let (lo_key, hi_key) = ("ch_2_5_3.added_resistance_low", "ch_2_5_3.added_resistance_high");
+    let (lo, hi) = (thesis_f64(lo_key), thesis_f64(hi_key));
+    let (lo_text, hi_text) = (thesis_text(lo_key), thesis_text(hi_key));
+    let middle: Thesis = if lo.is_nan() {
+        reference(lo_key)
+    } else if hi.is_nan() {
+        reference(hi_key)
+    } else {
+        Thesis::Computed((lo + hi) / 200.0)
+    };
+    let src = format!("ch. 2.5.3 text (\"can add {lo_text}-{hi_text} % resistance\")");
+    let src = src.as_str();
     rows.push(row(
         "mean second-order force over calm-water resistance, head seas SS6, 25 kn, h0 = 6 m, 80 s",
         src,
-        0.25,
+        middle,
         s6,
         "-",
-        Tolerance::Abs(0.05),
+        Tolerance::Abs((hi - lo) / 200.0),
         &format!(
-            "the thesis' range read as 0.25 +- 0.05; a general figure for rough seas, not a result for this hull: \
+            "the thesis' range read as {} +- {}; a general figure for rough seas, not a result for this hull: \
              ours is one realisation's mean added resistance ({:.0} kN) over R_sp = {:.0} kN at its mean speed",
+            (lo + hi) / 200.0,
+            (hi - lo) / 200.0,
             sig(base, "added_resistance_n").mean / 1e3,
             r6 / 1e3
         ),
@@ -1227,23 +1498,32 @@ fn second_order_and_fuel(base: &crate::RunResult) -> Result<Section, String> {
     rows.push(explained(
         "mean second-order force over calm-water resistance, head seas SS3, 25 kn, 80 s",
         src,
-        0.25,
+        middle,
         s3,
         "-",
-        "SS3's waves (H 0.9 m, peak 0.838 rad/s, lambda/L about 0.6) are short against the 142 m hull, where the \
-         added resistance operator is small, and the force goes as H^2 ((0.9 / 5.0)^2 = 0.03 of SS6's): the 20-30 % is for severe seas (Fig. 5-11 \
-         shows SS3 and SS6 without numbers)",
+        &format!(
+            "SS3's waves (H 0.9 m, peak {} rad/s, lambda/L about 0.6) are short against the 142 m hull, where the \
+             added resistance operator is small, and the force goes as H^2 ((0.9 / 5.0)^2 = 0.03 of SS6's): the \
+             {lo_text}-{hi_text} % is for severe seas (Fig. 5-11 shows SS3 and SS6 without numbers)",
+            thesis_text("table_2_4.ss3.peak_frequency_rad_s")
+        ),
     ));
     // Fuel: the thermal efficiency the part-load curve gives, and one prime mover at 25 kn.
     let curve = part_load_curve();
     let rated = sc6.plant.turbine.rated_power_w;
     let eta = sc6.seakeeping.turbine_rated_efficiency;
     let thermal = |p: f64| p / fuel_power(&curve, p, rated, eta).0;
-    let src = "ch. 5.1 text (\"as high as 37 % ... about 28 % at half the rated power\")";
+    let (rated_key, half_key) = ("ch_5_1.turbine_efficiency_rated", "ch_5_1.turbine_efficiency_half");
+    let src = format!(
+        "ch. 5.1 text (\"as high as {} % ... about {} % at half the rated power\")",
+        thesis_text(rated_key),
+        thesis_text(half_key)
+    );
+    let src = src.as_str();
     rows.push(calibrated(
-        "gas-turbine thermal efficiency at rated power (21.5 MW)",
+        &format!("gas-turbine thermal efficiency at rated power ({} MW)", thesis_text("ch_5_1.turbine_rated_power_mw")),
         src,
-        0.37,
+        reference_pct(rated_key),
         thermal(rated),
         "-",
         Tolerance::Abs(1e-9),
@@ -1252,12 +1532,15 @@ fn second_order_and_fuel(base: &crate::RunResult) -> Result<Section, String> {
     rows.push(row(
         "gas-turbine thermal efficiency at half rated power",
         src,
-        0.28,
+        reference_pct(half_key),
         thermal(0.5 * rated),
         "-",
         Tolerance::Abs(0.01),
-        "the generic TransiEnt part-load curve scaled to 37 % at rated power (not fitted at half load); \
-         \"about\": read to +-1 point",
+        &format!(
+            "the generic TransiEnt part-load curve scaled to {} % at rated power (not fitted at half load); \
+             \"about\": read to +-1 point",
+            thesis_text(rated_key)
+        ),
     ));
     let fsc = preset("fuel-regular-seas").ok_or("no preset")?;
     let pts = crate::fuel_study::run(&fsc, &[0.6])?;
@@ -1267,7 +1550,7 @@ fn second_order_and_fuel(base: &crate::RunResult) -> Result<Section, String> {
     rows.push(explained(
         "thermal efficiency of one prime mover, 25 kn, 1 ft regular head sea at 0.6 rad/s",
         "ch. 5.2.4 text and Fig. 5-12 (\"the efficiency of each turbine is low\")",
-        0.37,
+        reference_pct(rated_key),
         e1,
         "-",
         &format!(
@@ -1413,9 +1696,13 @@ fn as_printed(base: &crate::RunResult) -> Result<Section, String> {
     let s0 = startup("none")?;
     let su = "start-up to 25 kn, end";
     let e = startup("ea_line_to_line")?;
-    let why = "E_a read as the line-to-line emf in eq. 2.8: the rated 4160 V drive the bridge, so the bus and its set \
-               point are sqrt(3) times higher and the currents and their losses smaller; the thesis' power-electronics \
-               efficiency (0.992 at 25 kn, Table 5.7) fits this reading";
+    let why = format!(
+        "E_a read as the line-to-line emf in eq. 2.8: the rated 4160 V drive the bridge, so the bus and its set \
+         point are sqrt(3) times higher and the currents and their losses smaller; the thesis' power-electronics \
+         efficiency ({} at 25 kn, Table 5.7) fits this reading",
+        thesis_text("table_5_7.power_electronics.25kn")
+    );
+    let why = why.as_str();
     let sw = "as_printed.ea_line_to_line";
     add(format!("bus voltage, {su}"), sw, sig(&e, "bus_voltage_v").final_, sig(&s0, "bus_voltage_v").final_, "V", why);
     add(
@@ -1527,9 +1814,13 @@ fn as_printed(base: &crate::RunResult) -> Result<Section, String> {
     };
     let fig = Figure::new(
         "head-seas-ss6",
-        "Head seas SS6 at 25 kn, one realisation: with eq. 2.57 as printed the hub leaves the water and the shaft \
-         speed swings by tens of rpm (the thesis' Fig. 5-15: about 50 rpm and 0.25 pu); corrected, the hub stays \
-         below the ventilation level",
+        &format!(
+            "Head seas SS6 at 25 kn, one realisation: with eq. 2.57 as printed the hub leaves the water and the shaft \
+             speed swings by tens of rpm (the thesis' Fig. 5-15: about {} rpm and {} pu); corrected, the hub stays \
+             below the ventilation level",
+            thesis_text("ch_5_3_1.prop_rpm_swing"),
+            thesis_f64("ch_5_3_1.im_power_swing") / 100.0
+        ),
         &plot,
     )?;
     Ok(Section {
@@ -1713,7 +2004,8 @@ fn wigley_rows() -> Vec<Row> {
 
 /// The report as Markdown.
 pub fn markdown(sections: &[Section], size: Size) -> String {
-    let mut s = String::from(
+    let (rated, half) = (thesis_text("ch_5_1.turbine_efficiency_rated"), thesis_text("ch_5_1.turbine_efficiency_half"));
+    let mut s = format!(
         "# Validation report\n\n\
          Generated by `aes-sim validate` (`./build.sh validate`); do not edit by hand. `./build.sh test` \
          regenerates it and fails when a row leaves its tolerance or this file is stale.\n\n\
@@ -1724,7 +2016,7 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
          the Wageningen B-series polynomials (Oosterveld and van Oossanen 1975); the B4-70 four-quadrant series \
          (van Lammeren et al. 1969, as quoted by Smogeli 2006); the DTMB 5415 offsets (SIMMAN benchmark hull, sliced \
          from the navaltoolbox-lib test mesh); the gas-turbine part-load curve (TransiEnt library, anchored to the \
-         thesis' 37 % and 28 %); the Purdue MVDC testbed parameters (our reconstruction from the thesis' own \
+         thesis' {rated} % and {half} %); the Purdue MVDC testbed parameters (our reconstruction from the thesis' own \
          Tables 4.1 and 4.2, core/data/purdue_testbed_params.md); the Wigley hull (Wigley 1934's parabolic \
          form at L/B 10, B/T 1.6, the Wigley I of Journee 1992, Delft report 909, generated in code at L = 100 m; \
          checked against its closed-form hydrostatics, Journee's measured RAOs not yet compared).\n\n",
@@ -1801,4 +2093,44 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
         }
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A key the data file lacks makes a failing row that says so, whatever kind of row it is,
+    /// and the report still renders.
+    #[test]
+    fn a_missing_reference_fails_its_row_and_says_so() {
+        let key = "table_9_9.nothing";
+        let rows = [
+            row("q", "s", reference(key), 1.0, "-", Tolerance::Abs(1.0), ""),
+            calibrated("q", "s", reference_pct(key), 1.0, "-", Tolerance::Abs(1.0), ""),
+            open("q", "s", reference(key), 1.0, "-", ""),
+            explained("q", "s", reference(key), 1.0, "-", ""),
+        ];
+        for r in &rows {
+            assert_eq!(r.verdict, Verdict::Fail, "{r:?}");
+            assert!(r.thesis.is_nan() && r.reason.starts_with("missing reference: table_9_9.nothing"), "{r:?}");
+        }
+        assert!(thesis_f64(key).is_nan());
+        assert!(thesis_text(key).contains("missing reference"));
+        let sec = Section { title: "t", note: String::new(), rows: rows.to_vec(), figures: Vec::new() };
+        let md = markdown(&[sec], Size::default());
+        assert!(md.contains("| q | - - | s | 1 |") && md.contains("missing reference"), "{md}");
+    }
+
+    /// A key the file has gives its printed number (a percentage as a fraction), and the row
+    /// compares with it.
+    #[test]
+    fn references_resolve_to_the_printed_numbers() {
+        assert_eq!(reference("table_5_8.monte_carlo.mean_s").resolve(), Ok(23.67));
+        assert_eq!(reference_pct("ch_5_3_2.im_power_turn").resolve(), Ok(1.6));
+        assert_eq!(reference_pct("ch_5_2_1.turbine_speed_loss").resolve(), Ok(0.20));
+        assert_eq!(Thesis::from(0.5).resolve(), Ok(0.5));
+        assert_eq!(thesis_text("table_5_8.monte_carlo.skewness"), "1.00");
+        let r = row("q", "s", reference("table_4_1.steady_state.v_rect_v"), 743.2, "V", Tolerance::Abs(0.1), "");
+        assert_eq!((r.thesis, r.verdict), (743.17, Verdict::Pass));
+    }
 }

@@ -51,6 +51,15 @@ pub fn param_meta() -> String {
     .to_string()
 }
 
+/// The thesis' numbers we compare with (core/data/thesis_values.csv), as JSON: `[{"key", "value",
+/// "printed", "unit", "where", "what", "note"}, ...]` in the file's order. The page takes its
+/// reference columns from here (Table 5.8, the excess energy); `printed` is the number as the thesis
+/// prints it ("1.00").
+#[wasm_bindgen(js_name = thesisValues)]
+pub fn thesis_values() -> String {
+    aes_core::thesis_values::to_json()
+}
+
 /// The model's levels and ratings the page draws (bands, reference lines, per-unit bases), for a
 /// scenario, as JSON. The page copies none of these numbers.
 #[wasm_bindgen(js_name = pageConstants)]

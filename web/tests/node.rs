@@ -53,7 +53,8 @@ fn stability_tool_in_wasm() {
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let i = v["steady_state"]["i_s_mag"].as_f64().unwrap();
     // Within 1e-4 as natively (measured 5.5e-5, core's table_4_2).
-    assert!((i - 47.80).abs() < 1e-4 * 47.80, "{i}");
+    let table_4_2 = aes_core::thesis_values::value("table_4_2.steady_state.i_s_mag_a").unwrap();
+    assert!((i - table_4_2).abs() < 1e-4 * table_4_2, "{i}");
     assert_eq!(v["bode"]["magnitude_db"].as_array().unwrap().len(), 10);
     assert!(ips_analysis("rotor", 0.0, 0.0, 0.0, 0.0, false, 0.1, 1.0, 3).is_err());
 }
@@ -246,4 +247,16 @@ fn live_view_exports() {
     let seed = sc["sim"]["seed"].as_u64().unwrap();
     assert_eq!(trial["sim"]["seed"].as_u64(), Some(aes_core::stats::trial_seed(seed, 2)));
     assert!(trial_scenario(&json, 1_000_000).is_err());
+}
+
+/// The thesis' numbers reach the page as the file prints them (Table 5.8's "1.00", not 1).
+#[wasm_bindgen_test]
+fn thesis_values_as_printed() {
+    let v: serde_json::Value = serde_json::from_str(&thesis_values()).unwrap();
+    let rows = v.as_array().unwrap();
+    let row = |key: &str| rows.iter().find(|r| r["key"] == key).unwrap_or_else(|| panic!("{key} missing"));
+    let r = row("table_5_8.monte_carlo.skewness");
+    assert_eq!((r["printed"].as_str(), r["value"].as_f64(), r["unit"].as_str()), (Some("1.00"), Some(1.0), Some("-")));
+    assert_eq!(row("ch_5_4_1.excess_energy_mean_mj")["printed"], "94.1");
+    assert_eq!(row("table_5_8.rice.mean_s")["where"], "Table 5.8, analytic row (sec. 5.4.2)");
 }

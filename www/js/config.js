@@ -162,10 +162,17 @@ export const FUEL_COLORS = ['#1f618d', '#117a65', '#a04000', '#6c3483', '#1b1b1b
 // Monte Carlo in the page: trial limit, at most this many workers, the periodogram's upper
 // frequency on the plot, and the signal of the onset plot (the study's motor power, ch. 5.4.3).
 export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, onsetSignal: 'im_power_pu',
-  calmWaterNote: 'thesis: 94.1 ± 33.3',
-  // Table 5.8 as printed in the thesis (a reference column, not a model number).
-  table58Thesis: { stats: ['mean', 'std', 'skewness', 'kurtosis', 'median', 'mode'],
-    rice: ['22.64', '22.64', '2', '9', '15.69', '0'], monteCarlo: ['23.67', '22.11', '1.00', '3.13', '15.46', '0.0217'] },
+  // The thesis' reference numbers are not copied here: these are their keys in the thesis' numbers
+  // (core/data/thesis_values.csv, sent by the worker with 'ready'). Table 5.8: each statistic with
+  // its analytic (Rice) and Monte Carlo cells; ch. 5.4.1: the excess energy's mean and spread.
+  table58: [
+    ['mean', 'table_5_8.rice.mean_s', 'table_5_8.monte_carlo.mean_s'],
+    ['std', 'table_5_8.rice.std_s', 'table_5_8.monte_carlo.std_s'],
+    ['skewness', 'table_5_8.rice.skewness', 'table_5_8.monte_carlo.skewness'],
+    ['kurtosis', 'table_5_8.rice.kurtosis', 'table_5_8.monte_carlo.kurtosis'],
+    ['median', 'table_5_8.rice.median_s', 'table_5_8.monte_carlo.median_s'],
+    ['mode', 'table_5_8.rice.mode_s', 'table_5_8.monte_carlo.mode_s']],
+  calmWater: ['ch_5_4_1.excess_energy_mean_mj', 'ch_5_4_1.excess_energy_std_mj'],
   riceNote: 'Rice\'s rate counts up-crossings of a stationary Gaussian response and treats them as rare, independent events, so that arrival times are exponential. That holds for a level many standard deviations away; at this study\'s level crossings are not rare and come in clusters on wave groups, and each trial is cut off, so the Monte Carlo skewness and kurtosis fall short of the exponential\'s 2 and 9 (as in the thesis) while the means stay close.',
   excessNote: 'Two excess energies: against the same sea with surface losses switched off (the submerged counterpart: what ventilation and emergence alone cost), and against calm water (which adds the added resistance of the waves; this is the thesis\' figure).' };
 

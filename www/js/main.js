@@ -22,6 +22,7 @@ const live = new LiveViews($('live'), plots);
 let client = null;
 let form = null;
 let signals = null;
+let thesis = []; // the thesis' numbers we compare with (the worker's thesisValues)
 let kept = null; // a kept run: {name, columns, summary}
 let hullPicker = null;
 // The hull panel; its sheet also gives the loading fields their placeholders (the hull's own
@@ -93,6 +94,7 @@ async function onReady(m) {
   signals = new Signals(m.signals);
   setRegistry(m.params);
   design.configure(m.params);
+  thesis = m.thesis || [];
   form = new ScenarioForm(m.presets, m.params, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); } });
   hullPicker = new HullPicker(m.hulls || [], {
     form, validate, say: status, busy: isBusy,
@@ -291,7 +293,7 @@ async function runMonteCarlo() {
   setPhase('idle');
   $('summary-box').hidden = true;
   $('compare-box').hidden = true;
-  showMonteCarlo(plots, out.summary, signals, out.constants, { onReplay: replayTrial, onPickBar: replayFromBar });
+  showMonteCarlo(plots, out.summary, signals, out.constants, { onReplay: replayTrial, onPickBar: replayFromBar, thesis });
   status(`Monte Carlo done: ${n} trials in ${((performance.now() - started) / 1000).toFixed(1)} s.`);
   $('results').focus();
 }

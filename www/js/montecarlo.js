@@ -77,24 +77,32 @@ function table(caption, rows, head) {
   return t;
 }
 
+// A thesis number as the thesis prints it, from the worker's thesisValues rows ('missing' when the
+// rows lack the key: the registry test keeps the page's keys in the file).
+function thesisPrinted(thesis, key) {
+  const row = (thesis || []).find((t) => t.key === key);
+  return row ? row.printed : 'missing';
+}
+
 // The study's summary: tables, then envelopes, histograms, onset and periodogram plots.
 // onReplay(i): replay trial i as a single run in the live views; onPickBar(hist, bin): replay a
-// trial from a histogram bar.
-export function showMonteCarlo(box, s, signals, constants, { onReplay = null, onPickBar = null } = {}) {
+// trial from a histogram bar; thesis: the worker's thesisValues rows (the reference columns).
+export function showMonteCarlo(box, s, signals, constants, { onReplay = null, onPickBar = null, thesis = [] } = {}) {
   box.clear();
   const a = s.arrival_time_s, r = s.rice, e = s.excess_energy_mj;
+  const th = (key) => thesisPrinted(thesis, key);
   const rows = [['Trials', s.trials], ['Seed', s.seed]];
-  if (e) rows.push(['Excess energy vs submerged counterpart [MJ]', `${fmt(e.mean)} ± ${fmt(e.std)}`], [`Excess energy vs calm water [MJ] (${MC.calmWaterNote})`, `${fmt(e.vs_calm_water.mean)} ± ${fmt(e.vs_calm_water.std)}`]);
+  const [calmMean, calmStd] = MC.calmWater.map(th);
+  if (e) rows.push(['Excess energy vs submerged counterpart [MJ]', `${fmt(e.mean)} ± ${fmt(e.std)}`], [`Excess energy vs calm water [MJ] (thesis: ${calmMean} ± ${calmStd})`, `${fmt(e.vs_calm_water.mean)} ± ${fmt(e.vs_calm_water.std)}`]);
   rows.push(['First surface effects / censored', `${a.events} / ${a.censored} (cap ${a.cap_s} s)`]);
   const info = box.panel(null, box.generation, false, table('Monte Carlo summary', rows));
   if (r) {
-    const th = MC.table58Thesis;
     info.append(
       // One row a statistic, ours beside the thesis': narrow enough for a phone.
       el('div', { className: 'scroll' }, table('Arrival time of the first surface effect [s] (Table 5.8)',
         (() => {
           const rice = exponentialMoments(r.rate_per_s), mc = [a.mean, a.std, a.skewness, a.kurtosis, a.median, a.mode];
-          return th.stats.map((name, k) => [name, fmt(rice[k]), fmt(mc[k]), th.rice[k], th.monteCarlo[k]]);
+          return MC.table58.map(([name, riceKey, mcKey], k) => [name, fmt(rice[k]), fmt(mc[k]), th(riceKey), th(mcKey)]);
         })(), ['', 'Rice', 'Monte Carlo', 'thesis: Rice', 'thesis: Monte Carlo'])),
       el('p', { className: 'about', textContent: `Rice: the level Z = ${fmt(r.z_m, 3)} m, crossed at ${fmt(r.rate_per_s, 3)} per second (exponential arrivals).` }),
       el('p', { className: 'about', textContent: `Censored at ${a.cap_s} s alike: Monte Carlo mean of min(T, cap) ${fmt(a.mean_censored)} s, Rice ${fmt(r.mean_censored_s)} s.` }),

@@ -1,7 +1,8 @@
 // The worker protocol, shared by the page and the worker.
 //
 // Worker -> page, once after loading: {type: 'ready', presets: {name: json}, signals: [meta], hulls: [names],
-//   params: {groups, params} (paramMeta)}
+//   params: {groups, params} (paramMeta), thesis: [{key, value, printed, unit, where, what, note}]
+//   (thesisValues: the thesis' numbers we compare with, core/data/thesis_values.csv)}
 //   (signals: signalMeta() of the wasm, in trace column order), or, if loading fails,
 //   {type: 'error', id: null, error}.
 // Page -> worker: one message per request, {type, id, ...arguments}; the request types are
@@ -46,7 +47,7 @@ export function errorOf(e, fields) {
 }
 
 export const reply = {
-  ready: (presets, signals, hulls, params) => ({ type: 'ready', presets, signals, hulls, params }),
+  ready: (presets, signals, hulls, params, thesis) => ({ type: 'ready', presets, signals, hulls, params, thesis }),
   progress: (id, data) => ({ type: 'progress', id, ...data }),
   done: (id, data) => ({ type: 'done', id, ...data }),
   error: (id, error) => ({ type: 'error', id, error }),
