@@ -154,10 +154,11 @@ pub fn run_summary(json: &str) -> Result<String, JsError> {
     Ok(serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default())
 }
 
-/// The IPS stability tool (thesis ch. 4) for the page's stability tab. `side` is "generator" or
-/// "motor"; the operating point is omega [rad/s], v_fd [V] and I [A] (generator) or T* [N m]
-/// (motor); `closed` picks the closed-loop model; Bode from `from_hz` to `to_hz` in `points`
-/// points. Returns JSON: the steady state, poles and the Bode arrays.
+/// The IPS stability tool (thesis ch. 4) for the page's stability tab: `aes_core::stability::study`,
+/// as `aes-sim ips bode` runs it. `side` is "generator" or "motor"; the operating point is omega
+/// [rad/s], v_fd [V] and I [A] (generator) or T* [N m] (motor); `closed` picks the closed-loop
+/// model; Bode from `from_hz` to `to_hz` in `points` points. Returns the JSON of `aes-sim ips bode`:
+/// `steady_state`, `linear` (matrices, `poles`, `stable`), `margins` (closed loop) and `bode`.
 #[wasm_bindgen(js_name = ipsAnalysis)]
 #[allow(clippy::too_many_arguments)]
 pub fn ips_analysis(
@@ -171,50 +172,33 @@ pub fn ips_analysis(
     to_hz: f64,
     points: u32,
 ) -> Result<String, JsError> {
-    use aes_core::stability::{bode_frequencies, generator_side::GeneratorSideParams, motor_side::MotorSideParams};
-    use aes_core::validate::check_finite;
-    let err = |e: String| JsError::new(&e);
-    let hz = bode_frequencies(from_hz, to_hz, points.min(5000) as usize).map_err(err)?;
-    if points > 5000 {
-        return Err(JsError::new(&format!("Bode points = {points}: must be a whole number from 2 to 5000")));
-    }
-    let (steady, sys) = match side {
-        "generator" => {
-            let p = GeneratorSideParams::default();
-            let s = p.steady_state(omega, v_fd, i_load).map_err(err)?;
-            check_finite(&s).map_err(err)?;
-            let sys = if closed { p.closed_loop(&s) } else { p.open_loop(&s) };
-            (serde_json::to_value(s).unwrap_or_default(), sys)
-        }
-        "motor" => {
-            let p = MotorSideParams::default();
-            let s = p.steady_state(torque).map_err(err)?;
-            check_finite(&s).map_err(err)?;
-            let sys = if closed { p.closed_loop(&s) } else { p.open_loop(&s) };
-            (serde_json::to_value(s).unwrap_or_default(), sys)
-        }
-        other => {
-            return Err(JsError::new(&format!(
-                "side = '{}': use 'generator' or 'motor'",
-                aes_core::validate::shorten(other)
-            )))
-        }
-    };
-    let omegas: Vec<f64> = hz.iter().map(|f| 2.0 * std::f64::consts::PI * f).collect();
-    let pts = sys.bode(&omegas).map_err(err)?;
-    let poles = sys.poles().map_err(err)?;
-    let stable = poles.iter().all(|p| p.re < 0.0);
-    Ok(serde_json::json!({
-        "steady_state": steady,
-        "poles": poles,
-        "stable": stable,
-        "bode": {
-            "frequency_hz": hz,
-            "magnitude_db": pts.iter().map(|p| p.magnitude_db).collect::<Vec<_>>(),
-            "phase_deg": pts.iter().map(|p| p.phase_deg).collect::<Vec<_>>(),
+    use aes_core::stability::study::{self, Analysis, IpsRequest, OperatingPoint, Side};
+    let request = IpsRequest {
+        side: Side::from_name(side).map_err(|e| JsError::new(&e))?,
+        analysis: Analysis::Bode,
+        closed,
+        point: OperatingPoint {
+            omega_rad_s: omega,
+            v_fd_v: v_fd,
+            load_a: i_load,
+            torque_nm: torque,
+            from_hz,
+            to_hz,
+            points: points as usize,
         },
-    })
-    .to_string())
+        overrides: Vec::new(),
+    };
+    let r = study::run(&request).map_err(|e| JsError::new(&e.to_string()))?;
+    serde_json::to_string(&r).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The declarations of the IPS tool's operating point and Bode range, as JSON: `[{"path",
+/// "kind", "label", "unit", "help", "source", "default", "min", "max", "span"}, ...]` (the paths
+/// are `aes_core::stability::study::OperatingPoint`'s fields; `span` is a slider's [from, to]).
+/// The stability tab's sliders, their ranges and the synchronous speed come from it.
+#[wasm_bindgen(js_name = ipsMeta)]
+pub fn ips_meta() -> String {
+    serde_json::to_string(&aes_core::stability::study::meta()).unwrap_or_default()
 }
 
 /// The LQG/LTR design (thesis ch. 3.1) for a scenario's drive train and `controllers.lqg_ltr`

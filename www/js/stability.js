@@ -47,8 +47,8 @@ export class StabilityTab {
       if (bad) { markStale(this.results(), $('ips-status'), true, $('ips-vfd'), bad); return; }
       this.client().request(REQUEST.ips, { args: a }).then(({ result }) => {
         markStale(this.results(), $('ips-status'), false);
-        $('ips-status').textContent = result.stable ? 'Stable: every pole in the left half plane.' : 'UNSTABLE: a pole in the right half plane (the red ring on the pole map).';
-        $('ips-status').className = result.stable ? '' : 'error';
+        $('ips-status').textContent = result.linear.stable ? 'Stable: every pole in the left half plane.' : 'UNSTABLE: a pole in the right half plane (the red ring on the pole map).';
+        $('ips-status').className = result.linear.stable ? '' : 'error';
         this.show(result, a);
       }, (e) => {
         if (e.cancelled) return;
@@ -64,9 +64,9 @@ export class StabilityTab {
     // and 4-9 compare the two regimes).
     if (a.side === 'motor') rows.push(row('rotor-flux limit', [st.above_threshold ? 'active (T** above the threshold)' : 'not active (T** below the threshold)']));
     $('ips-steady').querySelector('tbody').replaceChildren(...rows);
-    $('ips-poles').querySelector('tbody').replaceChildren(...r.poles.map((p) => el('tr', {}, ...poleCells(p))));
+    $('ips-poles').querySelector('tbody').replaceChildren(...r.linear.poles.map((p) => el('tr', {}, ...poleCells(p))));
     this.box.clear();
-    this.poleMap(r.poles);
+    this.poleMap(r.linear.poles);
     const what = TRANSFER[a.closed ? 'closed' : 'open'][a.side];
     const curves = { magnitude_db: r.bode.magnitude_db, phase_deg: unwrapDeg(r.bode.phase_deg) };
     for (const [key, label] of [['magnitude_db', 'magnitude [dB]'], ['phase_deg', 'phase [deg]']]) {
