@@ -29,8 +29,9 @@ pub struct Decl {
     pub source: &'static str,
     /// Allowed values of a number (both ends included); unbounded: any finite number.
     pub range: RangeInclusive<f64>,
-    /// The part of `range` a slider on the page covers, where the model is of interest (the
-    /// command line accepts all of `range`); unbounded: no slider.
+    /// The part of `range` the page's control offers (a slider's ends, a number box's limits),
+    /// where the model is of interest; the command line accepts all of `range`. Unbounded: the
+    /// page offers all of `range`.
     pub span: RangeInclusive<f64>,
     /// What leaving it unset means (an optional field left out, or a number at 0 where 0 means
     /// "not set"), e.g. "the hull's own value"; empty: it is always set.
@@ -102,7 +103,7 @@ pub struct ParamMeta {
     pub min: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max: Option<f64>,
-    /// A slider's [from, to] (`Decl::span`), inside [min, max].
+    /// The page control's [from, to] (`Decl::span`), inside [min, max].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub span: Option<[f64; 2]>,
     #[serde(skip_serializing_if = "Vec::is_empty")]

@@ -90,6 +90,7 @@ async function openLink(hash) {
 async function onReady(m) {
   if (form) { setPhase('idle'); return; } // a fresh worker after a cancel: the page stays as it is
   signals = new Signals(m.signals);
+  stability.setMeta(m.ips);
   form = new ScenarioForm(m.presets, m.params, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); } });
   hullPicker = new HullPicker(m.hulls || [], {
     form, validate, say: status, busy: isBusy,
