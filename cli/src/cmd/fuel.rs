@@ -18,12 +18,7 @@ pub struct Args {
 
 pub fn run(Args { file, omega, sets }: Args) -> Result<(), Failure> {
     let sc = load(&file, &sets)?;
-    let omegas = if omega.is_empty() { (3..=15).map(|i| i as f64 / 10.0).collect() } else { omega };
-    for &w in &omegas {
-        if !(w.is_finite() && (0.1..=5.0).contains(&w)) {
-            return Err(format!("--omega {w}: must be from 0.1 to 5 rad/s").into());
-        }
-    }
+    let omegas = if omega.is_empty() { aes_core::fuel_study::fig_5_12_omegas() } else { omega };
     let rows = aes_core::fuel_study::run(&sc, &omegas)?;
     let extrapolated = rows.iter().any(|r| r.extrapolated);
     let out = serde_json::json!({

@@ -48,9 +48,7 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
             let (x, y) = r.split_once("..").ok_or_else(|| format!("--trial-range '{r}': expected A..B"))?;
             let a: u64 = x.trim().parse().map_err(|_| format!("--trial-range '{r}': A is not a whole number"))?;
             let b: u64 = y.trim().parse().map_err(|_| format!("--trial-range '{r}': B is not a whole number"))?;
-            if a >= b || b > n {
-                return Err(format!("--trial-range {a}..{b}: must satisfy 0 <= A < B <= trials = {n}").into());
-            }
+            aes_core::montecarlo::check_shard(&sc, a, b).map_err(|e| format!("--trial-range {a}..{b}: {e}"))?;
             (a, b)
         }
     };
