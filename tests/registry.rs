@@ -146,3 +146,31 @@ fn a_stale_thesis_key_is_caught() {
     assert_eq!(found, ["table_5_8.rice.mean_s", "table_5_8.rice.average_s"]);
     assert!(aes_core::thesis_values::get("table_5_8.rice.average_s").is_none());
 }
+
+/// The stability tab's controls and their steps name inputs the IPS tool declares (the page
+/// takes their labels, ranges and values from `ipsMeta()`), and index.html writes no number for
+/// them.
+#[test]
+fn the_stability_tab_takes_its_inputs_from_the_declarations() {
+    let declared: Vec<String> = aes_core::stability::study::meta().into_iter().map(|m| m.path).collect();
+    let www = Path::new(env!("CARGO_MANIFEST_DIR")).join("../www");
+    let read = |f: &str| std::fs::read_to_string(www.join(f)).unwrap();
+    let mut named = 0;
+    for (file, start) in [("js/stability.js", "const CONTROLS = {"), ("js/config.js", "steps: {")] {
+        let text = read(file);
+        let body = text.split(start).nth(1).and_then(|b| b.split('}').next()).expect(start);
+        for key in body.split(',').filter_map(|kv| kv.split(':').next()).map(str::trim) {
+            assert!(declared.iter().any(|d| d == key), "{file} names {key}, which the IPS tool does not declare");
+            named += 1;
+        }
+    }
+    assert_eq!(named, 6, "the scan is broken");
+    let html = read("index.html");
+    for id in ["ips-torque", "ips-load", "ips-vfd"] {
+        let tag = html.split(&format!("id=\"{id}\"")).nth(1).and_then(|t| t.split('>').next()).expect(id);
+        assert!(!tag.chars().any(|c| c.is_ascii_digit()), "index.html: #{id} carries a number: {tag}");
+        for text in html.split(&format!("for=\"{id}\">")).skip(1).filter_map(|t| t.split('<').next()) {
+            assert!(!text.chars().any(|c| c.is_ascii_digit()), "index.html: #{id}'s label or output says {text}");
+        }
+    }
+}

@@ -2,6 +2,32 @@
 //! resistance, and the fuel power of one prime mover (`aes-sim fuel`, the page's fuel curves).
 
 use crate::fuel::{fuel_power, part_load_curve};
+use std::ops::RangeInclusive;
+
+/// Wave frequencies the study takes [rad/s] (the RAO table's span and more), and how many at once
+/// (each is ten steady states).
+pub const OMEGA_RANGE_RAD_S: RangeInclusive<f64> = 0.1..=5.0;
+pub const MAX_OMEGAS: usize = 200;
+
+/// Fig. 5-12's wave frequencies: 0.3 to 1.5 rad/s in steps of 0.1.
+pub fn fig_5_12_omegas() -> Vec<f64> {
+    (3..=15).map(|i| i as f64 / 10.0).collect()
+}
+
+/// Checks the wave frequencies of a study: 1 to [`MAX_OMEGAS`], each in [`OMEGA_RANGE_RAD_S`].
+pub fn check_omegas(omegas: &[f64]) -> Result<(), String> {
+    let (lo, hi) = (*OMEGA_RANGE_RAD_S.start(), *OMEGA_RANGE_RAD_S.end());
+    if omegas.is_empty() || omegas.len() > MAX_OMEGAS {
+        return Err(format!("fuel study: {} wave frequencies: give 1 to {MAX_OMEGAS}", omegas.len()));
+    }
+    match omegas.iter().find(|w| !OMEGA_RANGE_RAD_S.contains(w)) {
+        Some(w) => Err(format!(
+            "fuel study: wave frequency {} rad/s: must be from {lo} to {hi} rad/s",
+            crate::validate::num(*w)
+        )),
+        None => Ok(()),
+    }
+}
 
 /// One row of the fuel study (Fig. 5-12).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -21,7 +47,9 @@ pub struct FuelPoint {
 /// scenario's first ordered speed with the mean added resistance alpha^2 R_aw(omega, U, beta) of the
 /// RAO table, and the shaft and fuel power of one prime mover. Quasi-static: the wave-frequency
 /// load swings average out over a turbine's response; the mean added resistance is what costs fuel.
+/// The frequencies are checked first ([`check_omegas`]).
 pub fn run(sc: &crate::Scenario, omegas: &[f64]) -> Result<Vec<FuelPoint>, String> {
+    check_omegas(omegas)?;
     let curve = part_load_curve();
     let speed_kn = sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(25.0);
     let u = crate::units::kn_to_m_s(speed_kn);
@@ -55,4 +83,23 @@ pub fn run(sc: &crate::Scenario, omegas: &[f64]) -> Result<Vec<FuelPoint>, Strin
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The frequencies both the command line and the page may ask for, and Fig. 5-12's among them.
+    #[test]
+    fn frequencies_are_checked() {
+        assert!(check_omegas(&fig_5_12_omegas()).is_ok());
+        assert_eq!(fig_5_12_omegas().len(), 13);
+        assert!(check_omegas(&[0.1, 5.0]).is_ok());
+        assert!(check_omegas(&[]).unwrap_err().contains("0 wave frequencies"));
+        assert!(check_omegas(&vec![1.0; MAX_OMEGAS + 1]).is_err());
+        for bad in [0.09, 5.01, f64::NAN, f64::INFINITY] {
+            let e = check_omegas(&[1.0, bad]).unwrap_err();
+            assert!(e.contains("must be from 0.1 to 5 rad/s"), "{bad}: {e}");
+        }
+    }
 }

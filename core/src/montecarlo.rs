@@ -580,15 +580,48 @@ fn run_trial_from(
     Ok(p)
 }
 
+/// Checks a shard of the study `sc`, trials `a..b`: a < b <= monte_carlo.trials. The error says
+/// what is needed; the caller names the range as its user gave it (`--trial-range 3..9: ...`).
+pub fn check_shard(sc: &Scenario, a: u64, b: u64) -> Result<(), String> {
+    let n = sc.monte_carlo.trials;
+    if a < b && b <= n {
+        Ok(())
+    } else {
+        Err(format!("need a < b <= monte_carlo.trials = {n}"))
+    }
+}
+
 /// Runs trials `a..b` one after another (the browser's way; natively the CLI spreads them over
-/// threads and merges, with the same result).
+/// threads and merges, with the same result), after checking the shard ([`check_shard`]).
 pub fn run_range(sc: &Scenario, a: u64, b: u64) -> Result<Partial, String> {
+    check_shard(sc, a, b).map_err(|e| format!("trials {a}..{b}: {e}"))?;
     let mut acc = Partial::empty(sc);
     let trials = Trials::new(sc);
     for i in a..b {
         acc.merge(&trials.run(i)?)?;
     }
     Ok(acc)
+}
+
+/// A study's partials merged one at a time as they come (memory does not grow with their number;
+/// the result does not depend on their order or on how the trials were split).
+#[derive(Debug, Default)]
+pub struct Merged(Option<Partial>);
+
+impl Merged {
+    /// Merges one more partial (the first is taken as it is).
+    pub fn add(&mut self, p: Partial) -> Result<(), String> {
+        match self.0.as_mut() {
+            None => self.0 = Some(p),
+            Some(acc) => acc.merge(&p)?,
+        }
+        Ok(())
+    }
+
+    /// The merged partial; an error if none was added.
+    pub fn partial(self) -> Result<Partial, String> {
+        self.0.ok_or_else(|| "no partials given".to_string())
+    }
 }
 
 /// Rice's prediction (eqs. 5.1-5.3) for the study's sea, speed and hub: Z [m], M0 [m^2],
@@ -894,4 +927,25 @@ pub fn study_summary(p: &Partial) -> Result<StudySummary, String> {
 /// Names of the trace columns a study may collect.
 pub fn signal_names() -> impl Iterator<Item = &'static str> {
     crate::signals::names()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A shard is a < b <= trials; merging needs one partial, and one merged alone is itself.
+    #[test]
+    fn shards_are_checked_and_merged() {
+        let mut sc = Scenario::default();
+        sc.monte_carlo.trials = 4;
+        assert!(check_shard(&sc, 0, 4).is_ok() && check_shard(&sc, 3, 4).is_ok());
+        for (a, b) in [(2, 2), (3, 1), (0, 5)] {
+            assert_eq!(check_shard(&sc, a, b).unwrap_err(), "need a < b <= monte_carlo.trials = 4");
+        }
+        assert!(run_range(&sc, 3, 9).unwrap_err().starts_with("trials 3..9: need a < b"));
+        assert_eq!(Merged::default().partial().unwrap_err(), "no partials given");
+        let mut m = Merged::default();
+        m.add(Partial::empty(&sc)).unwrap();
+        assert_eq!(m.partial().unwrap(), Partial::empty(&sc));
+    }
 }

@@ -30,6 +30,10 @@ pub struct Decl {
     pub source: &'static str,
     /// Allowed values of a number (both ends included); unbounded: any finite number.
     pub range: RangeInclusive<f64>,
+    /// The part of `range` the page's control offers (a slider's ends, a number box's limits),
+    /// where the model is of interest; the command line accepts all of `range`. Unbounded: the
+    /// page offers all of `range`.
+    pub span: RangeInclusive<f64>,
     /// What leaving it unset means (an optional field left out, or a number at 0 where 0 means
     /// "not set"), e.g. "the hull's own value"; empty: it is always set.
     pub empty: &'static str,
@@ -51,6 +55,7 @@ impl Decl {
         help: "",
         source: "",
         range: f64::NEG_INFINITY..=f64::INFINITY,
+        span: f64::NEG_INFINITY..=f64::INFINITY,
         empty: "",
         choices: &[],
         group: "",
@@ -99,6 +104,9 @@ pub struct ParamMeta {
     pub min: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max: Option<f64>,
+    /// The page control's [from, to] (`Decl::span`), inside [min, max].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub span: Option<[f64; 2]>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub choices: Vec<Choice>,
     #[serde(skip_serializing_if = "str::is_empty")]
@@ -134,6 +142,7 @@ impl ParamMeta {
             default,
             min: range.map(|r| r.0).filter(|x| x.is_finite()),
             max: range.map(|r| r.1).filter(|x| x.is_finite()),
+            span: (d.span.start().is_finite() && d.span.end().is_finite()).then(|| [*d.span.start(), *d.span.end()]),
             choices: choices.iter().map(|&(value, label)| Choice { value, label }).collect(),
             empty: d.empty,
             empty_is: if d.empty.is_empty() { "" } else { T::EMPTY_IS },

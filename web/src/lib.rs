@@ -169,10 +169,11 @@ pub fn run_summary(json: &str) -> Result<String, JsError> {
     Ok(serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default())
 }
 
-/// The IPS stability tool (thesis ch. 4) for the page's stability tab. `side` is "generator" or
-/// "motor"; the operating point is omega [rad/s], v_fd [V] and I [A] (generator) or T* [N m]
-/// (motor); `closed` picks the closed-loop model; Bode from `from_hz` to `to_hz` in `points`
-/// points. Returns JSON: the steady state, poles and the Bode arrays.
+/// The IPS stability tool (thesis ch. 4) for the page's stability tab: `aes_core::stability::study`,
+/// as `aes-sim ips bode` runs it. `side` is "generator" or "motor"; the operating point is omega
+/// [rad/s], v_fd [V] and I [A] (generator) or T* [N m] (motor); `closed` picks the closed-loop
+/// model; Bode from `from_hz` to `to_hz` in `points` points. Returns the JSON of `aes-sim ips bode`:
+/// `steady_state`, `linear` (matrices, `poles`, `stable`), `margins` (closed loop) and `bode`.
 #[wasm_bindgen(js_name = ipsAnalysis)]
 #[allow(clippy::too_many_arguments)]
 pub fn ips_analysis(
@@ -186,50 +187,33 @@ pub fn ips_analysis(
     to_hz: f64,
     points: u32,
 ) -> Result<String, JsError> {
-    use aes_core::stability::{bode_frequencies, generator_side::GeneratorSideParams, motor_side::MotorSideParams};
-    use aes_core::validate::check_finite;
-    let err = |e: String| JsError::new(&e);
-    let hz = bode_frequencies(from_hz, to_hz, points.min(5000) as usize).map_err(err)?;
-    if points > 5000 {
-        return Err(JsError::new(&format!("Bode points = {points}: must be a whole number from 2 to 5000")));
-    }
-    let (steady, sys) = match side {
-        "generator" => {
-            let p = GeneratorSideParams::default();
-            let s = p.steady_state(omega, v_fd, i_load).map_err(err)?;
-            check_finite(&s).map_err(err)?;
-            let sys = if closed { p.closed_loop(&s) } else { p.open_loop(&s) };
-            (serde_json::to_value(s).unwrap_or_default(), sys)
-        }
-        "motor" => {
-            let p = MotorSideParams::default();
-            let s = p.steady_state(torque).map_err(err)?;
-            check_finite(&s).map_err(err)?;
-            let sys = if closed { p.closed_loop(&s) } else { p.open_loop(&s) };
-            (serde_json::to_value(s).unwrap_or_default(), sys)
-        }
-        other => {
-            return Err(JsError::new(&format!(
-                "side = '{}': use 'generator' or 'motor'",
-                aes_core::validate::shorten(other)
-            )))
-        }
-    };
-    let omegas: Vec<f64> = hz.iter().map(|f| 2.0 * std::f64::consts::PI * f).collect();
-    let pts = sys.bode(&omegas).map_err(err)?;
-    let poles = sys.poles().map_err(err)?;
-    let stable = poles.iter().all(|p| p.re < 0.0);
-    Ok(serde_json::json!({
-        "steady_state": steady,
-        "poles": poles,
-        "stable": stable,
-        "bode": {
-            "frequency_hz": hz,
-            "magnitude_db": pts.iter().map(|p| p.magnitude_db).collect::<Vec<_>>(),
-            "phase_deg": pts.iter().map(|p| p.phase_deg).collect::<Vec<_>>(),
+    use aes_core::stability::study::{self, Analysis, IpsRequest, OperatingPoint, Side};
+    let request = IpsRequest {
+        side: Side::from_name(side).map_err(|e| JsError::new(&e))?,
+        analysis: Analysis::Bode,
+        closed,
+        point: OperatingPoint {
+            omega_rad_s: omega,
+            v_fd_v: v_fd,
+            load_a: i_load,
+            torque_nm: torque,
+            from_hz,
+            to_hz,
+            points: points as usize,
         },
-    })
-    .to_string())
+        overrides: Vec::new(),
+    };
+    let r = study::run(&request).map_err(|e| JsError::new(&e.to_string()))?;
+    serde_json::to_string(&r).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The declarations of the IPS tool's operating point and Bode range, as JSON: `[{"path",
+/// "kind", "label", "unit", "help", "source", "default", "min", "max", "span"}, ...]` (the paths
+/// are `aes_core::stability::study::OperatingPoint`'s fields; `span` is a slider's [from, to]).
+/// The stability tab's sliders, their ranges and the synchronous speed come from it.
+#[wasm_bindgen(js_name = ipsMeta)]
+pub fn ips_meta() -> String {
+    serde_json::to_string(&aes_core::stability::study::meta()).unwrap_or_default()
 }
 
 /// The LQG/LTR design (thesis ch. 3.1) for a scenario's drive train and `controllers.lqg_ltr`
@@ -262,9 +246,6 @@ pub fn trial_bins(json: &str, i: u32) -> Result<String, JsError> {
 #[wasm_bindgen(js_name = mcRange)]
 pub fn mc_range(json: &str, a: u32, b: u32) -> Result<Vec<u8>, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    if a >= b || b as u64 > sc.monte_carlo.trials {
-        return Err(JsError::new(&format!("trials {a}..{b}: need a < b <= monte_carlo.trials")));
-    }
     let p = aes_core::montecarlo::run_range(&sc, a as u64, b as u64).map_err(|e| JsError::new(&e))?;
     p.to_bytes().map_err(|e| JsError::new(&e))
 }
@@ -289,19 +270,16 @@ pub fn trial_scenario(json: &str, i: u32) -> Result<String, JsError> {
 /// result does not depend on how the trials were split or in which order the partials come.
 #[wasm_bindgen(js_name = mcSummary)]
 pub fn mc_summary(partials: Vec<js_sys::Uint8Array>) -> Result<String, JsError> {
-    let mut acc: Option<aes_core::montecarlo::Partial> = None;
+    let mut merged = aes_core::montecarlo::Merged::default();
     for p in &partials {
         let p = aes_core::montecarlo::Partial::from_bytes(&p.to_vec()).map_err(|e| JsError::new(&e))?;
-        match acc.as_mut() {
-            None => acc = Some(p),
-            Some(a) => a.merge(&p).map_err(|e| JsError::new(&e))?,
-        }
+        merged.add(p).map_err(|e| JsError::new(&e))?;
     }
-    let acc = acc.ok_or_else(|| JsError::new("no partials"))?;
+    let acc = merged.partial().map_err(|e| JsError::new(&e))?;
     let s = aes_core::montecarlo::study_summary(&acc).map_err(|e| JsError::new(&e))?;
     aes_core::validate::check_finite(&s).map_err(|e| JsError::new(&e))?;
-    let v = aes_core::montecarlo::summary(&acc).map_err(|e| JsError::new(&e))?;
-    Ok(v.to_string())
+    // Through a Value, whose keys are sorted, as `aes-sim mc` prints it.
+    Ok(serde_json::to_value(&s).map_err(|e| JsError::new(&e.to_string()))?.to_string())
 }
 
 /// The RAO table of a scenario's seakeeping grid as flat numbers (built here once, or taken from
@@ -350,9 +328,6 @@ pub fn rao_json(json: &str, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -
 #[wasm_bindgen(js_name = fuelStudy)]
 pub fn fuel_study(json: &str, omegas: Vec<f64>) -> Result<String, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    if omegas.is_empty() || omegas.len() > 200 || omegas.iter().any(|w| !(w.is_finite() && (0.1..=5.0).contains(w))) {
-        return Err(JsError::new("fuel study: 1 to 200 frequencies from 0.1 to 5 rad/s"));
-    }
     let rows = aes_core::fuel_study::run(&sc, &omegas).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
 }

@@ -176,9 +176,10 @@ export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, ons
   riceNote: 'Rice\'s rate counts up-crossings of a stationary Gaussian response and treats them as rare, independent events, so that arrival times are exponential. That holds for a level many standard deviations away; at this study\'s level crossings are not rare and come in clusters on wave groups, and each trial is cut off, so the Monte Carlo skewness and kurtosis fall short of the exponential\'s 2 and 9 (as in the thesis) while the means stay close.',
   excessNote: 'Two excess energies: against the same sea with surface losses switched off (the submerged counterpart: what ventilation and emergence alone cost), and against calm water (which adds the added resistance of the waves; this is the thesis\' figure).' };
 
-// Stability tab: the Bode range and the pole map's radius (faster poles are listed, not drawn).
-// The testbed's synchronous speed is an operating-point input like the sliders.
-export const IPS = { omegaRadS: 377, fromHz: 0.01, toHz: 1000, points: 300, poleMapMax: 2000, debounceMs: 60 };
+// Stability tab: presentation only. The operating point's defaults, ranges, labels and units, the
+// synchronous speed and the Bode range come from the wasm (ipsMeta); here the controls' steps (by
+// declaration path), the pole map's radius (faster poles are listed, not drawn) and the debounce.
+export const IPS = { steps: { torque_nm: 1, load_a: 0.5, v_fd_v: 'any' }, poleMapMax: 2000, debounceMs: 60 };
 
 // The controller design tab (ch. 3.1): the plant is the acceleration study's; poles faster than
 // poleMapMax [1/s] are listed, not drawn (the compensator's fastest are near -216 /s).

@@ -95,6 +95,7 @@ async function onReady(m) {
   setRegistry(m.params);
   design.configure(m.params);
   thesis = m.thesis || [];
+  stability.setMeta(m.ips);
   form = new ScenarioForm(m.presets, m.params, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); } });
   hullPicker = new HullPicker(m.hulls || [], {
     form, validate, say: status, busy: isBusy,

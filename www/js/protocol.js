@@ -2,7 +2,8 @@
 //
 // Worker -> page, once after loading: {type: 'ready', presets: {name: json}, signals: [meta], hulls: [names],
 //   params: {groups, params} (paramMeta), thesis: [{key, value, printed, unit, where, what, note}]
-//   (thesisValues: the thesis' numbers we compare with, core/data/thesis_values.csv)}
+//   (thesisValues: the thesis' numbers we compare with, core/data/thesis_values.csv),
+//   ips: [declaration] (ipsMeta: the stability tab's inputs)}
 //   (signals: signalMeta() of the wasm, in trace column order), or, if loading fails,
 //   {type: 'error', id: null, error}.
 // Page -> worker: one message per request, {type, id, ...arguments}; the request types are
@@ -27,7 +28,9 @@ export const REQUEST = {
   rao: 'rao', // {scenario, speed_kn, heading_deg, omegas} -> done {result}: RAOs of the scenario's hull
   hullSheet: 'hull-sheet', // {scenario} -> done {sheet}: body plan, profile, hydrostatics (presentation::HullSheet)
   fuel: 'fuel', // {scenario, omegas} -> done {rows}
-  ips: 'ips', // {args} -> done {result}
+  // {args: {side, closed, point: {omega_rad_s, v_fd_v, load_a, torque_nm, from_hz, to_hz, points}}}
+  // -> done {result} (the JSON of `aes-sim ips bode`)
+  ips: 'ips',
   design: 'design', // {scenario} -> done {result} (LQG/LTR design and analysis, ch. 3.1)
 };
 
@@ -47,7 +50,7 @@ export function errorOf(e, fields) {
 }
 
 export const reply = {
-  ready: (presets, signals, hulls, params, thesis) => ({ type: 'ready', presets, signals, hulls, params, thesis }),
+  ready: (presets, signals, hulls, params, thesis, ips) => ({ type: 'ready', presets, signals, hulls, params, thesis, ips }),
   progress: (id, data) => ({ type: 'progress', id, ...data }),
   done: (id, data) => ({ type: 'done', id, ...data }),
   error: (id, error) => ({ type: 'error', id, error }),

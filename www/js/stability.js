@@ -10,6 +10,9 @@ const STEADY = {
     ['t_threshold', 'torque threshold [N m]']],
   generator: [['v_gs_mag', '|v_gs| [V]'], ['i_gs_mag', '|i_gs| [A]'], ['i_fd', 'i_fd [A]'], ['v_rect_v', 'ṽ_dc, rectifier output [V]'], ['v_dc', 'v_dc, bus [V]'], ['i_dc', 'i_dc [A]'], ['cos_phi', 'cos φ']],
 };
+// The controls of the operating point, by declaration path (ipsMeta); the other inputs (the
+// synchronous speed, the Bode range) take their declared defaults.
+const CONTROLS = { torque_nm: 'ips-torque', load_a: 'ips-load', v_fd_v: 'ips-vfd' };
 const TRANSFER = {
   closed: { motor: 'torque command to torque', generator: 'voltage set point to bus voltage' },
   open: { motor: 'stator voltage to stator current magnitude', generator: 'field voltage to droop feedback' },
@@ -22,33 +25,49 @@ export class StabilityTab {
     this.box = box;
     this.timer = null;
     this.changed = null;
-    for (const id of ['ips-side', 'ips-loop', 'ips-torque', 'ips-load', 'ips-vfd']) $(id).addEventListener('input', () => { this.changed = $(id); this.update(); });
+    this.meta = null;
+    for (const id of ['ips-side', 'ips-loop', ...Object.values(CONTROLS)]) $(id).addEventListener('input', () => { this.changed = $(id); this.update(); });
+  }
+
+  // The declarations of the operating point (the wasm's ipsMeta): each control's label, range (a
+  // declaration's span: the part of the model's range the page offers) and starting value.
+  setMeta(meta) {
+    this.meta = Object.fromEntries(meta.map((m) => [m.path, m]));
+    for (const [path, id] of Object.entries(CONTROLS)) {
+      const m = this.meta[path], input = $(id);
+      const [lo, hi] = m.span || [m.min, m.max];
+      document.querySelector(`label[for="${id}"]`).textContent = `${m.label} [${m.unit}]`;
+      input.title = m.help;
+      Object.assign(input, { min: lo, max: hi, step: IPS.steps[path] });
+      input.value = m.default;
+    }
+    if (!$('panel-ips').hidden) this.update();
   }
 
   results() { return [$('ips-steady'), $('ips-poles'), $('ips-plots')]; }
 
   args() {
-    return {
-      side: $('ips-side').value, closed: $('ips-loop').value === 'closed',
-      omega: IPS.omegaRadS, vfd: Number($('ips-vfd').value), load: Number($('ips-load').value), torque: Number($('ips-torque').value),
-      from_hz: IPS.fromHz, to_hz: IPS.toHz, points: IPS.points,
-    };
+    const point = Object.fromEntries(Object.values(this.meta).map((m) => [m.path, m.default]));
+    for (const [path, id] of Object.entries(CONTROLS)) point[path] = Number($(id).value);
+    return { side: $('ips-side').value, closed: $('ips-loop').value === 'closed', point };
   }
 
   update() {
     clearTimeout(this.timer);
+    if (!this.meta) return; // the simulator is loading: the tab is filled once it is ready
     this.timer = setTimeout(() => {
       const a = this.args();
       for (const e of document.querySelectorAll('.ips-motor')) e.hidden = a.side !== 'motor';
       for (const e of document.querySelectorAll('.ips-gen')) e.hidden = a.side !== 'generator';
-      $('ips-torque-out').textContent = a.torque;
-      $('ips-load-out').textContent = a.load;
-      const bad = a.side === 'generator' ? numberBoxError($('ips-vfd'), 'field voltage v_fd [V]') : null;
+      $('ips-torque-out').textContent = a.point.torque_nm;
+      $('ips-load-out').textContent = a.point.load_a;
+      const vfd = this.meta.v_fd_v;
+      const bad = a.side === 'generator' ? numberBoxError($('ips-vfd'), `${vfd.label} [${vfd.unit}]`) : null;
       if (bad) { markStale(this.results(), $('ips-status'), true, $('ips-vfd'), bad); return; }
       this.client().request(REQUEST.ips, { args: a }).then(({ result }) => {
         markStale(this.results(), $('ips-status'), false);
-        $('ips-status').textContent = result.stable ? 'Stable: every pole in the left half plane.' : 'UNSTABLE: a pole in the right half plane (the red ring on the pole map).';
-        $('ips-status').className = result.stable ? '' : 'error';
+        $('ips-status').textContent = result.linear.stable ? 'Stable: every pole in the left half plane.' : 'UNSTABLE: a pole in the right half plane (the red ring on the pole map).';
+        $('ips-status').className = result.linear.stable ? '' : 'error';
         this.show(result, a);
       }, (e) => {
         if (e.cancelled) return;
@@ -64,9 +83,9 @@ export class StabilityTab {
     // and 4-9 compare the two regimes).
     if (a.side === 'motor') rows.push(row('rotor-flux limit', [st.above_threshold ? 'active (T** above the threshold)' : 'not active (T** below the threshold)']));
     $('ips-steady').querySelector('tbody').replaceChildren(...rows);
-    $('ips-poles').querySelector('tbody').replaceChildren(...r.poles.map((p) => el('tr', {}, ...poleCells(p))));
+    $('ips-poles').querySelector('tbody').replaceChildren(...r.linear.poles.map((p) => el('tr', {}, ...poleCells(p))));
     this.box.clear();
-    this.poleMap(r.poles);
+    this.poleMap(r.linear.poles);
     const what = TRANSFER[a.closed ? 'closed' : 'open'][a.side];
     const curves = { magnitude_db: r.bode.magnitude_db, phase_deg: unwrapDeg(r.bode.phase_deg) };
     for (const [key, label] of [['magnitude_db', 'magnitude [dB]'], ['phase_deg', 'phase [deg]']]) {

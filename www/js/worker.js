@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -105,8 +105,8 @@ const handlers = {
 
   [REQUEST.design]: (m) => ({ result: JSON.parse(designLqgLtr(checked(m.scenario))) }),
   [REQUEST.ips]: (m) => {
-    const a = m.args;
-    return { result: JSON.parse(ipsAnalysis(a.side, a.omega, a.vfd, a.load, a.torque, a.closed, a.from_hz, a.to_hz, a.points)) };
+    const { side, closed, point: p } = m.args;
+    return { result: JSON.parse(ipsAnalysis(side, p.omega_rad_s, p.v_fd_v, p.load_a, p.torque_nm, closed, p.from_hz, p.to_hz, p.points)) };
   },
 };
 
@@ -131,6 +131,6 @@ loaded = init().then(() => {
   signals = JSON.parse(signalMeta());
   const presets = {};
   for (const n of presetNames()) presets[n] = presetJson(n);
-  postMessage(reply.ready(presets, signals, hullNames(), JSON.parse(paramMeta()), JSON.parse(thesisValues())));
+  postMessage(reply.ready(presets, signals, hullNames(), JSON.parse(paramMeta()), JSON.parse(thesisValues()), JSON.parse(ipsMeta())));
 });
 loaded.catch((e) => postMessage(reply.error(null, errorOf(e))));

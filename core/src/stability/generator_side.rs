@@ -25,11 +25,19 @@ use super::{numerical_jacobian, LinearSystem};
 use nalgebra::{DMatrix, Matrix3, Matrix5, Vector5};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
+use std::ops::RangeInclusive;
 
 const K1: f64 = 3.0 * 1.732_050_807_568_877_2 / PI;
 
 /// Least v~ / (k1 |v|) of the rectifier's first mode (commutation overlap at most 60 deg).
 pub const MODE_1_MIN_RATIO: f64 = 0.75;
+
+/// The operating points the steady state accepts (beyond them the model's numbers lose meaning;
+/// inside them it may still find no steady state, and says why): speed set point [rad/s
+/// electrical], field voltage [V], sink current [A].
+pub const OMEGA_RANGE_RAD_S: RangeInclusive<f64> = 1.0..=5000.0;
+pub const V_FD_RANGE_V: RangeInclusive<f64> = 0.01..=1000.0;
+pub const LOAD_RANGE_A: RangeInclusive<f64> = 0.01..=1000.0;
 
 /// Generator-side parameters (SI; stator quantities are peak qd values, rotor quantities referred
 /// to the stator).
@@ -233,9 +241,9 @@ impl GeneratorSideParams {
     /// and sink current `i_load` [A] (ch. 4.2.1), by Newton's method with a line search on the
     /// three unknowns (i_qs, i_ds, i_dc).
     pub fn steady_state(&self, omega_star: f64, v_fd: f64, i_load: f64) -> Result<GeneratorSteadyState, String> {
-        super::check_input("omega", "rad/s", omega_star, 1.0, 5000.0)?;
-        super::check_input("v_fd", "V", v_fd, 0.01, 1000.0)?;
-        super::check_input("load current I", "A", i_load, 0.01, 1000.0)?;
+        super::check_input("omega", "rad/s", omega_star, &OMEGA_RANGE_RAD_S)?;
+        super::check_input("v_fd", "V", v_fd, &V_FD_RANGE_V)?;
+        super::check_input("load current I", "A", i_load, &LOAD_RANGE_A)?;
         let w = omega_star;
         let i_fd = self.turns_ratio * v_fd / self.r_fd;
         let lq = self.l_ls + self.l_mq;

@@ -5,10 +5,12 @@
 
 pub mod generator_side;
 pub mod motor_side;
+pub mod study;
 
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 use serde::Serialize;
+use std::ops::RangeInclusive;
 
 /// A linear time-invariant model dx/dt = A x + B u, y = C x + D u (single input, single output).
 #[derive(Debug, Clone, PartialEq)]
@@ -129,23 +131,37 @@ impl LinearSystem {
             .collect()
     }
 
-    /// The public JSON form: matrices as arrays of rows, poles, state names.
-    pub fn to_json_value(&self) -> Result<serde_json::Value, String> {
+    /// The public form (`aes-sim ips linear`'s `linear`): matrices as arrays of rows, poles,
+    /// state names.
+    pub fn report(&self) -> Result<LinearReport, String> {
         let poles = self.poles()?;
         let stable = poles.iter().all(|p| p.re < 0.0);
         let rows = |m: &DMatrix<f64>| -> Vec<Vec<f64>> {
             (0..m.nrows()).map(|i| (0..m.ncols()).map(|j| m[(i, j)]).collect()).collect()
         };
-        Ok(serde_json::json!({
-            "states": self.states,
-            "a": rows(&self.a),
-            "b": rows(&self.b),
-            "c": rows(&self.c),
-            "d": rows(&self.d),
-            "poles": poles,
-            "stable": stable,
-        }))
+        Ok(LinearReport {
+            states: self.states.clone(),
+            a: rows(&self.a),
+            b: rows(&self.b),
+            c: rows(&self.c),
+            d: rows(&self.d),
+            poles,
+            stable,
+        })
     }
+}
+
+/// A linear model as the IPS tool reports it: state names, A, B, C, D as arrays of rows, the poles
+/// (least stable last) and whether every one is in the left half plane.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LinearReport {
+    pub states: Vec<&'static str>,
+    pub a: Vec<Vec<f64>>,
+    pub b: Vec<Vec<f64>>,
+    pub c: Vec<Vec<f64>>,
+    pub d: Vec<Vec<f64>>,
+    pub poles: Vec<Pole>,
+    pub stable: bool,
 }
 
 /// Most QR iterations the eigenvalue solver may take (the models have at most 12 states and
@@ -282,10 +298,13 @@ where
     serde_path_to_error::deserialize(v).map_err(|e| format!("{}: {}", e.path(), e.inner()))
 }
 
+/// The frequencies a Bode plot may span [Hz].
+pub const BODE_HZ_RANGE: RangeInclusive<f64> = 1e-6..=1e7;
+
 /// `n` logarithmically spaced Bode frequencies [Hz] from `from_hz` to `to_hz`, after checking
-/// the range (0 < from < to <= 1e7 Hz, 2 to [`MAX_BODE_POINTS`] points).
+/// the range (both in [`BODE_HZ_RANGE`], from below to, 2 to [`MAX_BODE_POINTS`] points).
 pub fn bode_frequencies(from_hz: f64, to_hz: f64, points: usize) -> Result<Vec<f64>, String> {
-    if !(from_hz.is_finite() && from_hz >= 1e-6 && to_hz.is_finite() && to_hz > from_hz && to_hz <= 1e7) {
+    if !(BODE_HZ_RANGE.contains(&from_hz) && BODE_HZ_RANGE.contains(&to_hz) && to_hz > from_hz) {
         return Err(format!("Bode range from {from_hz} Hz to {to_hz} Hz: need 1e-6 <= from < to <= 1e7 Hz"));
     }
     if !(2..=MAX_BODE_POINTS).contains(&points) {
@@ -297,10 +316,11 @@ pub fn bode_frequencies(from_hz: f64, to_hz: f64, points: usize) -> Result<Vec<f
 /// Most points of one Bode plot.
 pub const MAX_BODE_POINTS: usize = 10_000;
 
-/// Checks an operating-point input of a steady state: a finite number in [lo, hi], or an error
+/// Checks an operating-point input of a steady state: a finite number in `range`, or an error
 /// naming it, its value and the range.
-pub(crate) fn check_input(name: &str, unit: &str, x: f64, lo: f64, hi: f64) -> Result<(), String> {
-    if x.is_finite() && x >= lo && x <= hi {
+pub(crate) fn check_input(name: &str, unit: &str, x: f64, range: &RangeInclusive<f64>) -> Result<(), String> {
+    let (lo, hi) = (*range.start(), *range.end());
+    if x.is_finite() && range.contains(&x) {
         Ok(())
     } else {
         Err(format!("{name} = {} {unit}: must be a number from {lo} to {hi} {unit}", crate::validate::num(x)))

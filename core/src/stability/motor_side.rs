@@ -20,10 +20,11 @@ use crate::numerics::powi;
 use nalgebra::{DMatrix, Matrix4, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
+use std::ops::RangeInclusive;
 
-/// Range of the torque command T* [N m] (the testbed's motor is rated near 200 N m).
-pub const MIN_TORQUE: f64 = 0.01;
-pub const MAX_TORQUE: f64 = 10_000.0;
+/// Range of the torque command T* [N m] the steady state accepts (the testbed's motor is rated
+/// near 200 N m; beyond this the model's numbers lose meaning).
+pub const TORQUE_RANGE_NM: RangeInclusive<f64> = 0.01..=10_000.0;
 
 /// Motor-side parameters (SI; magnitudes are peak qd values, as the thesis' tables are).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -195,7 +196,7 @@ impl MotorSideParams {
 
     /// The five-step steady-state procedure of ch. 4.2.2 for torque command `t_star` [N m].
     pub fn steady_state(&self, t_star: f64) -> Result<MotorSteadyState, String> {
-        super::check_input("torque command T*", "N m", t_star, MIN_TORQUE, MAX_TORQUE)?;
+        super::check_input("torque command T*", "N m", t_star, &TORQUE_RANGE_NM)?;
         // I: the propeller carries T* at steady state (eq. 4.31).
         let c = self.kq0 * self.rho * powi(self.diameter, 5) / ((2.0 * PI) * (2.0 * PI));
         let w_rm = (t_star / c).sqrt();

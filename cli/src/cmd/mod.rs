@@ -1,0 +1,15 @@
+//! The commands of `aes-sim`, one module each: its arguments (clap) and what it does.
+
+pub mod bench;
+pub mod design;
+pub mod fuel;
+pub mod ips;
+pub mod mc;
+pub mod merge;
+pub mod params;
+pub mod presets;
+pub mod rao;
+pub mod run;
+pub mod section;
+pub mod signals;
+pub mod validate;

@@ -1,0 +1,105 @@
+//! What the commands share: how a command fails, printing, reading bounded input, loading a
+//! scenario.
+
+use aes_core::presets::{preset, PRESET_NAMES};
+use aes_core::Scenario;
+use std::io::{Read, Write};
+
+/// How a command ends other than with success.
+pub enum Failure {
+    /// A message for stderr; exit status 1.
+    Msg(String),
+    /// Standard output was closed by its reader (`aes-sim ... | head`): a normal end, exit 0.
+    PipeClosed,
+}
+
+impl From<String> for Failure {
+    fn from(s: String) -> Failure {
+        Failure::Msg(s)
+    }
+}
+
+impl From<&str> for Failure {
+    fn from(s: &str) -> Failure {
+        Failure::Msg(s.to_string())
+    }
+}
+
+/// Writes text to standard output; a closed pipe ends the command quietly (exit 0).
+pub fn emit(text: &str) -> Result<(), Failure> {
+    let mut out = std::io::stdout().lock();
+    let r = out.write_all(text.as_bytes()).and_then(|()| out.write_all(b"\n")).and_then(|()| out.flush());
+    match r {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Err(Failure::PipeClosed),
+        Err(e) => Err(Failure::Msg(format!("cannot write to standard output: {e}"))),
+    }
+}
+
+/// Prints a value as pretty JSON after checking that every number in it is finite (the error
+/// names the first that is not, by its path).
+pub fn emit_json<T: serde::Serialize + ?Sized>(x: &T) -> Result<(), Failure> {
+    aes_core::validate::check_finite(x)?;
+    // Through a Value, whose keys are sorted: the output keeps its established form.
+    let v = serde_json::to_value(x).map_err(|e| e.to_string())?;
+    emit(&serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?)
+}
+
+/// Reads a file (or standard input for `-`) as UTF-8, stopping at `limit` bytes: a larger or
+/// endless input (`/dev/zero`) is refused after reading `limit + 1` bytes, never read whole.
+pub fn read_bounded(file: &str, limit: u64, what: &str) -> Result<String, String> {
+    let mut buf = Vec::new();
+    let r = if file == "-" {
+        std::io::stdin().lock().take(limit + 1).read_to_end(&mut buf)
+    } else {
+        std::fs::File::open(file).and_then(|f| f.take(limit + 1).read_to_end(&mut buf))
+    };
+    let name = if file == "-" { "standard input".to_string() } else { format!("'{}'", shorten(file)) };
+    r.map_err(|e| format!("cannot read {name}: {e}"))?;
+    if buf.len() as u64 > limit {
+        return Err(format!("{name}: larger than {limit} bytes, the limit for {what}"));
+    }
+    String::from_utf8(buf).map_err(|e| format!("{name}: not UTF-8 text (byte {})", e.utf8_error().valid_up_to()))
+}
+
+/// Checks before a long computation that `path` can be written (created or truncated now, so a
+/// bad directory or permission is found before the run, not after).
+pub fn check_writable(path: &str, flag: &str) -> Result<(), String> {
+    std::fs::OpenOptions::new()
+        .write(true)
+        .create(true)
+        .truncate(true)
+        .open(path)
+        .map(|_| ())
+        .map_err(|e| format!("{flag} '{}': cannot write: {e}", shorten(path)))
+}
+
+/// A user's text cut short for a message.
+pub fn shorten(s: &str) -> String {
+    aes_core::validate::shorten(s)
+}
+
+/// The scenario of a command: a file, `-` (standard input) or `preset:NAME`, with its `--set`
+/// overrides applied all at once.
+pub fn load(file: &str, sets: &[String]) -> Result<Scenario, String> {
+    let mut sc = if let Some(name) = file.strip_prefix("preset:") {
+        preset(name).ok_or_else(|| format!("no preset named '{}' (try: {})", shorten(name), PRESET_NAMES.join(", ")))?
+    } else {
+        let text = read_bounded(file, aes_core::scenario_file::MAX_SCENARIO_BYTES as u64, "a scenario")?;
+        Scenario::from_json(&text).map_err(|e| format!("{}: invalid scenario:\n{e}", shorten(file)))?
+    };
+    let mut pairs = Vec::with_capacity(sets.len());
+    for s in sets {
+        let (path, value) = s
+            .split_once('=')
+            .ok_or_else(|| format!("--set '{}': expected PATH=VALUE, e.g. sim.duration_s=60", shorten(s)))?;
+        pairs.push((path.trim(), value.trim()));
+    }
+    // All at once: fields that change together (a significant height with its peak frequency)
+    // are checked together. An error names its field.
+    if !pairs.is_empty() {
+        let what = if pairs.len() == 1 { format!("--set {}", shorten(pairs[0].0)) } else { "--set".to_string() };
+        sc = sc.with_overrides(&pairs).map_err(|e| format!("{what}: {e}"))?;
+    }
+    Ok(sc)
+}
