@@ -14,7 +14,7 @@ use serde::Serialize;
 use std::sync::OnceLock;
 
 /// The file, embedded.
-pub const CSV: &str = include_str!("../data/thesis_values.csv");
+pub const CSV: &str = include_str!("../../data/thesis_values.csv");
 
 /// Where the file lives in the repository (for messages).
 pub const PATH: &str = "core/data/thesis_values.csv";
@@ -232,7 +232,7 @@ mod tests {
     /// reference aside).
     #[test]
     fn every_key_the_report_uses_exists() {
-        let source = include_str!("validation.rs");
+        let source = include_str!("validation_report.rs");
         let keys = quoted_keys(source.split("#[cfg(test)]").next().unwrap_or(source));
         assert!(keys.len() >= 60, "only {} keys found in validation.rs", keys.len());
         let refs: Vec<&str> = keys.iter().map(String::as_str).collect();

@@ -2,7 +2,7 @@
 //! efficiency at rated power times a generic part-load curve (core/data/gas_turbine_part_load.csv,
 //! from the TransiEnt library; 37 % at rated power as the thesis' ch. 5.1).
 
-const CURVE: &str = include_str!("../data/gas_turbine_part_load.csv");
+const CURVE: &str = include_str!("../../data/gas_turbine_part_load.csv");
 
 /// The part-load curve: (power fraction, efficiency / rated efficiency), increasing fraction.
 pub fn part_load_curve() -> Vec<(f64, f64)> {

@@ -5,6 +5,11 @@
 //! rotating machines are given in rpm and ship speeds in knots because that is how engineers state
 //! them; the physics converts to SI on load.
 
+pub mod presets;
+pub mod as_printed;
+pub mod registry;
+pub mod file;
+
 pub use crate::numerics::Integrator;
 use crate::signals::Signal;
 use crate::validate::Validator;

@@ -8,7 +8,7 @@ use crate::seakeeping::complex::cabs;
 use std::f64::consts::PI;
 
 /// Reference points for the Wigley I hull in head seas (see the file's header).
-pub const WIGLEY_JOURNEE1992: &str = include_str!("../../data/wigley_journee1992_head_seas.csv");
+pub const WIGLEY_JOURNEE1992: &str = include_str!("../../../data/wigley_journee1992_head_seas.csv");
 
 /// Heave RAO [m/m] and pitch RAO over the wave slope, pitch / (k zeta_a) [-], in head seas
 /// (beta = 180 deg) at Froude number `froude` and wave length ratio `lambda_over_l`, as

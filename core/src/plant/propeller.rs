@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// The polynomial table (core/data/wageningen_b_series.csv, with its source line).
-const B_SERIES_CSV: &str = include_str!("../data/wageningen_b_series.csv");
+const B_SERIES_CSV: &str = include_str!("../../data/wageningen_b_series.csv");
 
 /// Open-water characteristics of one B-series propeller.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -169,7 +169,7 @@ impl OpenWater {
 }
 
 /// Four-quadrant open-water data (Fourier series in the hydrodynamic pitch angle).
-const FOUR_QUADRANT_CSV: &str = include_str!("../data/four_quadrant_b4_70.csv");
+const FOUR_QUADRANT_CSV: &str = include_str!("../../data/four_quadrant_b4_70.csv");
 
 /// Number of Fourier terms (k = 0..20).
 const N_FOURIER: usize = 21;

@@ -1,5 +1,9 @@
 //! Small numerical helpers shared by the physics modules.
 
+pub mod interp;
+pub mod fft;
+pub mod units;
+
 /// Bisection for a sign change of `f` between `lo` and `hi`: `iterations` halvings, returns the
 /// midpoint of the last bracket. The side that keeps `lo` is the one with the sign of `f(lo)`.
 pub fn bisect(f: impl Fn(f64) -> f64, lo: f64, hi: f64, iterations: u32) -> f64 {

@@ -1,0 +1,11 @@
+//! The propulsion plant, turbine to propeller (thesis ch. 2.1-2.3): the gas turbine and its
+//! governor, the synchronous generator, the DC link (rectifier, bus, inverter, brake), the induction
+//! motor, the propeller with its surface losses, and the turbines' fuel.
+
+pub mod prime_mover;
+pub mod generator;
+pub mod dc_link;
+pub mod motor;
+pub mod propeller;
+pub mod propeller_losses;
+pub mod fuel;

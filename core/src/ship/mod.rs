@@ -1,0 +1,8 @@
+//! The ship (thesis ch. 2.3-2.4): its hull (offsets, loading, appendages) and sections, the surge
+//! model's resistance, the Abkowitz maneuvering model and the rudder.
+
+pub mod hull;
+pub mod sections;
+pub mod surge;
+pub mod maneuvering;
+pub mod rudder;

@@ -1,0 +1,12 @@
+//! Studies built on runs and on the model: Monte Carlo and its statistics (ch. 5.4), the fuel
+//! study (Fig. 5-12), the controller study, regressions, the validation report against the
+//! thesis' numbers, and the IPS stability tool (ch. 4).
+
+pub mod montecarlo;
+pub mod stats;
+pub mod fuel;
+pub mod controller;
+pub mod regression;
+pub mod validation_report;
+pub mod ips;
+pub mod thesis_values;
