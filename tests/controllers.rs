@@ -1,7 +1,7 @@
 //! Thesis ch. 3.1 applied to our plant (ch. 3.1.3): the LQG/LTR controller running in the
 //! simulator in place of the governor and field PIs, against the PI loops of ch. 5.2.
 
-use aes_core::presets::{acceleration, acceleration_lqg_ltr, preset};
+use aes_core::scenario::presets::{acceleration, acceleration_lqg_ltr, preset};
 use aes_core::scenario::ControllerDesign;
 use aes_tests::run;
 

@@ -4,11 +4,11 @@
 //! a panic. Seeded (the same cases every run); `AES_FUZZ_CASES` sets the cases per property
 //! (default 128, about a second each; `./build.sh fuzz` runs 2000).
 
-use aes_core::hull_sections::HullOffsets;
-use aes_core::montecarlo::Partial;
-use aes_core::presets::{preset, PRESET_NAMES};
-use aes_core::seakeeping::strip::{MassProperties, Ship};
-use aes_core::validate::check_finite;
+use aes_core::checks::check_finite;
+use aes_core::scenario::presets::{preset, PRESET_NAMES};
+use aes_core::sea::seakeeping::strip::{MassProperties, Ship};
+use aes_core::ship::sections::HullOffsets;
+use aes_core::studies::montecarlo::Partial;
 use aes_core::Simulation;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
@@ -121,7 +121,7 @@ fn hull_csvs_fail_cleanly_or_give_finite_raos() {
             if let Ok(h) = HullOffsets::parse(&text) {
                 let mass = MassProperties { kg_m: 3.0, kxx_m: 2.0, kyy_m: 10.0, kzz_m: 10.0 };
                 if let Ok(ship) = Ship::new(&h, 2.0, mass, None, 1025.0, 9.81) {
-                    if let Ok(v) = aes_core::seakeeping::tables::rao_json(&ship, 5.0, 3.0, &[0.5, 1.0], 1.0) {
+                    if let Ok(v) = aes_core::sea::seakeeping::tables::rao_json(&ship, 5.0, 3.0, &[0.5, 1.0], 1.0) {
                         prop_assert!(!v.to_string().contains("null"), "{text}");
                     }
                 }
@@ -137,8 +137,8 @@ fn hull_csvs_fail_cleanly_or_give_finite_raos() {
 fn mutated_partials_fail_cleanly_or_merge_finitely() {
     let sc = preset("mc-arrival").unwrap().with_override("sim.duration_s", "2").unwrap();
     let sc = sc.with_override("monte_carlo.trials", "4").unwrap();
-    let a = aes_core::montecarlo::run_range(&sc, 0, 2).unwrap();
-    let b = aes_core::montecarlo::run_range(&sc, 2, 4).unwrap();
+    let a = aes_core::studies::montecarlo::run_range(&sc, 0, 2).unwrap();
+    let b = aes_core::studies::montecarlo::run_range(&sc, 2, 4).unwrap();
     let good = serde_json::to_value(&a).unwrap();
     let mut paths = Vec::new();
     leaf_paths(&good, "", &mut paths);
@@ -159,7 +159,7 @@ fn mutated_partials_fail_cleanly_or_merge_finitely() {
             }
             if let Ok(mut p) = Partial::from_json(&v.to_string()) {
                 if p.merge(&b).is_ok() {
-                    if let Ok(s) = aes_core::montecarlo::study_summary(&p) {
+                    if let Ok(s) = aes_core::studies::montecarlo::study_summary(&p) {
                         prop_assert!(check_finite(&s).is_ok(), "{changes:?}: {:?}", check_finite(&s));
                     }
                 }
@@ -173,7 +173,7 @@ fn mutated_partials_fail_cleanly_or_merge_finitely() {
 /// The ch. 4 tool at any operating point and parameter: an error, or finite poles and Bode.
 #[test]
 fn ips_parameters_fail_cleanly_or_stay_finite() {
-    use aes_core::stability::{generator_side::GeneratorSideParams, load_params, motor_side::MotorSideParams};
+    use aes_core::studies::ips::{generator_side::GeneratorSideParams, load_params, motor_side::MotorSideParams};
     let x = prop_oneof![
         (1e-3..1e4f64),
         prop::sample::select(vec![0.0, -1.0, 1e100, 1e300, 1e-300, 5e-324, f64::NAN, f64::INFINITY]),

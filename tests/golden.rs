@@ -5,10 +5,10 @@
 //! A deliberate change regenerates them with one command (`./build.sh golden`, i.e.
 //! `UPDATE_GOLDEN=1 cargo test --release -p aes-tests --test golden`); the diff of the JSON files
 //! then shows which numbers moved and by how much.
-//! The records are made by `aes_core::regression::record`; the wasm tests compare the same.
+//! The records are made by `aes_core::studies::regression::record`; the wasm tests compare the same.
 
-use aes_core::presets::PRESET_NAMES;
-use aes_core::regression::record;
+use aes_core::scenario::presets::PRESET_NAMES;
+use aes_core::studies::regression::record;
 use std::path::PathBuf;
 
 fn path(name: &str) -> PathBuf {

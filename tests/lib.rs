@@ -1,6 +1,6 @@
 //! Shared helpers of the thesis-reproduction tests.
 
-use aes_core::presets::startup;
+use aes_core::scenario::presets::startup;
 use aes_core::{RunResult, Scenario};
 
 /// The start-up preset ordered to `speed_kn` and run for `duration_s`.

@@ -1,9 +1,9 @@
 //! Thesis ch. 2.4 and 5.2: the Abkowitz maneuvering model and the routine maneuvering studies
 //! (acceleration, AC braking, heading changes). Figures are printed with `--nocapture`.
 
-use aes_core::maneuvering::{Abkowitz, AbkowitzCoefficients};
-use aes_core::presets::preset;
-use aes_core::units::kn_to_m_s;
+use aes_core::numerics::units::kn_to_m_s;
+use aes_core::scenario::presets::preset;
+use aes_core::ship::maneuvering::{Abkowitz, AbkowitzCoefficients};
 use aes_tests::{final_value, run};
 
 fn column<'a>(r: &'a aes_core::RunResult, name: &str) -> &'a [f64] {

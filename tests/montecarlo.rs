@@ -1,8 +1,8 @@
 //! Thesis ch. 5.4: Monte Carlo studies, their exact merging, and Rice's arrival rate.
 
-use aes_core::montecarlo::{rice, run_range, run_trial, summary, Partial};
-use aes_core::presets::preset;
+use aes_core::scenario::presets::preset;
 use aes_core::scenario::SternMotion;
+use aes_core::studies::montecarlo::{rice, run_range, run_trial, summary, Partial};
 
 /// A trial started from the study's prototype (plant, calm-water map and steady state built
 /// once) runs bit for bit as one built from scratch with the trial's seed, also after another
@@ -158,14 +158,14 @@ fn eq_2_57_arrivals_are_poisson_at_two_sigma() {
 /// "replay a trial from this bar") gives exactly the study's histograms, bin for bin.
 #[test]
 fn trial_bins_add_up_to_the_histograms() {
-    use aes_core::montecarlo::{study_summary, trial_bins};
+    use aes_core::studies::montecarlo::{study_summary, trial_bins};
     let mut sc = preset("mc-excess-energy").unwrap();
     sc.sim.duration_s = 30.0;
     sc.monte_carlo.trials = 6;
     sc.monte_carlo.histogram_time_s = 10.0;
     sc.monte_carlo.periodogram_segment_s = 5.0;
     let s = study_summary(&run_range(&sc, 0, 6).unwrap()).unwrap();
-    let count = |pick: &dyn Fn(&aes_core::montecarlo::TrialBins) -> Option<usize>, n: usize| {
+    let count = |pick: &dyn Fn(&aes_core::studies::montecarlo::TrialBins) -> Option<usize>, n: usize| {
         let mut c = vec![0u64; n];
         for i in 0..6 {
             if let Some(b) = pick(&trial_bins(&sc, i).unwrap()) {

@@ -3,7 +3,7 @@
 //! propeller speed, motor power, hub depth and ship speed agree within the tolerances below, and
 //! the energy accounts close as tightly.
 
-use aes_core::presets::preset;
+use aes_core::scenario::presets::preset;
 use aes_core::scenario::Integrator;
 use aes_core::RunResult;
 use aes_tests::run;

@@ -1,7 +1,7 @@
 //! The parameter registry reaches the page and the README: the page names no parameter the
 //! registry lacks, and the README's scenario table is the registry's.
 
-use aes_core::registry;
+use aes_core::scenario::registry;
 use std::path::Path;
 
 /// Quoted strings in a text that look like scenario parameter paths (`'sea.sea_state'`).
@@ -87,7 +87,7 @@ fn the_readme_table_is_the_registry() {
 /// an old name given beside its new one is refused; `--set` takes the old name too.
 #[test]
 fn scenario_files_of_the_old_format_read_as_before() {
-    use aes_core::presets::preset;
+    use aes_core::scenario::presets::preset;
     use aes_core::Scenario;
     for (name, old) in [
         ("head-seas-ss6", include_str!("data/head-seas-ss6.v1.json")),
@@ -123,12 +123,12 @@ fn the_page_and_the_tests_name_only_known_thesis_values() {
     let mut seen = 0;
     for f in files {
         let text = std::fs::read_to_string(&f).unwrap();
-        for key in aes_core::thesis_values::quoted_keys(&text) {
+        for key in aes_core::studies::thesis_values::quoted_keys(&text) {
             assert!(
-                aes_core::thesis_values::get(&key).is_some(),
+                aes_core::studies::thesis_values::get(&key).is_some(),
                 "{} names {key}, which {} lacks",
                 f.display(),
-                aes_core::thesis_values::PATH
+                aes_core::studies::thesis_values::PATH
             );
             seen += 1;
         }
@@ -140,11 +140,11 @@ fn the_page_and_the_tests_name_only_known_thesis_values() {
 /// The scanner finds a key and would catch a stale one.
 #[test]
 fn a_stale_thesis_key_is_caught() {
-    let found = aes_core::thesis_values::quoted_keys(
+    let found = aes_core::studies::thesis_values::quoted_keys(
         "const k = ['table_5_8.rice.mean_s', 'table_5_8.rice.average_s', 'table 5.8'];",
     );
     assert_eq!(found, ["table_5_8.rice.mean_s", "table_5_8.rice.average_s"]);
-    assert!(aes_core::thesis_values::get("table_5_8.rice.average_s").is_none());
+    assert!(aes_core::studies::thesis_values::get("table_5_8.rice.average_s").is_none());
 }
 
 /// The stability tab's controls and their steps name inputs the IPS tool declares (the page
@@ -152,7 +152,7 @@ fn a_stale_thesis_key_is_caught() {
 /// them.
 #[test]
 fn the_stability_tab_takes_its_inputs_from_the_declarations() {
-    let declared: Vec<String> = aes_core::stability::study::meta().into_iter().map(|m| m.path).collect();
+    let declared: Vec<String> = aes_core::studies::ips::study::meta().into_iter().map(|m| m.path).collect();
     let www = Path::new(env!("CARGO_MANIFEST_DIR")).join("../www");
     let read = |f: &str| std::fs::read_to_string(www.join(f)).unwrap();
     let mut named = 0;

@@ -1,7 +1,7 @@
 //! Thesis ch. 5.2.4 and 5.3: the ship in random and regular seas, the propeller's surface losses,
 //! and the coupling into the drive train. Figures are printed for the notes (`--nocapture`).
 
-use aes_core::presets::preset;
+use aes_core::scenario::presets::preset;
 use aes_core::scenario::{SeaKind, SternMotion};
 use aes_core::{RunResult, Scenario};
 use aes_tests::run;
@@ -226,7 +226,7 @@ fn quarter_turns_show_added_resistance_and_drift() {
 #[test]
 fn fuel_in_regular_seas() {
     let sc = preset("fuel-regular-seas").unwrap();
-    let rows = aes_core::fuel_study::run(&sc, &[0.6]).unwrap();
+    let rows = aes_core::studies::fuel::run(&sc, &[0.6]).unwrap();
     let head: Vec<f64> = rows.iter().filter(|r| r.heading == "head").map(|r| r.fuel_power_w).collect();
     let bow: Vec<f64> = rows.iter().filter(|r| r.heading == "bow").map(|r| r.fuel_power_w).collect();
     println!("fuel power at 0.6 rad/s, 1-5 ft: head {head:?}, bow {bow:?}");
@@ -239,7 +239,7 @@ fn fuel_in_regular_seas() {
 /// interpolates to the same bits as the table it came from; a wrong length is refused.
 #[test]
 fn rao_table_values_round_trip() {
-    use aes_core::seakeeping::tables::{RaoTable, SeakeepingGrid};
+    use aes_core::sea::seakeeping::tables::{RaoTable, SeakeepingGrid};
     let grid = SeakeepingGrid::default();
     let t = aes_core::Scenario::default().rao_table().unwrap();
     let v = t.values();

@@ -2,8 +2,8 @@
 //! models' Bode plots against small sinusoidal perturbations of the nonlinear averaged models
 //! (the counterpart of the stars on Figs. 4-7 to 4-9 and 4-12).
 
-use aes_core::stability::motor_side::MotorSideParams;
-use aes_core::stability::{fourier_gain, rk4, trapezoid_step, BodePoint, LinearSystem};
+use aes_core::studies::ips::motor_side::MotorSideParams;
+use aes_core::studies::ips::{fourier_gain, rk4, trapezoid_step, BodePoint, LinearSystem};
 
 #[allow(clippy::too_many_arguments)]
 /// Simulates dx/dt = f(t, x) from `x0` with input amplitude `amp` at `omega` (RK4, or the implicit
@@ -115,7 +115,7 @@ fn motor_closed_loop_bode_matches_nonlinear_model() {
 /// set point in, bus voltage out, below its bandwidth.
 #[test]
 fn generator_bode_matches_nonlinear_model() {
-    use aes_core::stability::generator_side::GeneratorSideParams;
+    use aes_core::studies::ips::generator_side::GeneratorSideParams;
     let p = GeneratorSideParams::default();
     let ss = p.steady_state(377.0, 28.5, 45.0).unwrap();
     let ol = p.open_loop(&ss);
@@ -145,7 +145,7 @@ fn generator_bode_matches_nonlinear_model() {
 /// with positive gain and phase margins, consistent with their closed-loop poles.
 #[test]
 fn margins_agree_with_closed_loop_poles() {
-    use aes_core::stability::generator_side::GeneratorSideParams;
+    use aes_core::studies::ips::generator_side::GeneratorSideParams;
     let g = GeneratorSideParams::default();
     let ss = g.steady_state(377.0, 28.5, 45.0).unwrap();
     let m = g.droop_margins(&ss);

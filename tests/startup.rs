@@ -1,9 +1,9 @@
 //! Thesis ch. 5.1: start-up from idle to 25 knots in calm water, power conservation across the
 //! IPS (Table 5.6), steady efficiencies (Table 5.7) and propeller speeds (Fig. 5-1).
 
-use aes_core::presets::startup;
-use aes_core::thesis_values;
-use aes_core::units::rpm_to_rad_s;
+use aes_core::numerics::units::rpm_to_rad_s;
+use aes_core::scenario::presets::startup;
+use aes_core::studies::thesis_values;
 use aes_tests::{final_value, run, startup_to};
 
 /// Over the whole start-up transient the energy books close: turbine work = work against the
@@ -134,12 +134,12 @@ fn propeller_speeds_of_fig_5_1() {
     let (rpm_thesis, rpm_full_thesis) = (thesis("ch_5_1.prop_rpm_25kn"), thesis("ch_5_1.prop_rpm_full_ahead"));
     let r = run(&startup());
     let rpm25 = final_value(&r, "prop_rpm");
-    // Analytic thrust balance (see aes_core::propeller::OpenWater::equilibrium_advance_ratio).
+    // Analytic thrust balance (see aes_core::plant::propeller::OpenWater::equilibrium_advance_ratio).
     let sc = startup();
-    let ow = aes_core::propeller::OpenWater::from_params(&sc.propeller).unwrap();
-    let surge = aes_core::surge::Surge::new(&sc.ship, sc.ship_hull().unwrap().mass_kg);
+    let ow = aes_core::plant::propeller::OpenWater::from_params(&sc.propeller).unwrap();
+    let surge = aes_core::ship::surge::Surge::new(&sc.ship, sc.ship_hull().unwrap().mass_kg);
     let j = ow.equilibrium_advance_ratio(surge.c_r, 2.0, 4.5, 1025.0, 0.1);
-    let rpm_balance = 60.0 * aes_core::units::kn_to_m_s(25.0) * 0.9 / (j * 4.5);
+    let rpm_balance = 60.0 * aes_core::numerics::units::kn_to_m_s(25.0) * 0.9 / (j * 4.5);
     println!("25 kn: {rpm25:.1} rpm (balance {rpm_balance:.1}, thesis {rpm_thesis})");
     assert!((rpm25 - rpm_balance).abs() < 5e-4 * rpm_balance);
     assert!((rpm25 - rpm_thesis).abs() < 0.12 * rpm_thesis);

@@ -2,13 +2,13 @@
 //! that the browser computes the same numbers bit for bit; and lists the golden record of every preset
 //! (tests/golden/NAME.json, from the preset list itself) for the wasm golden test.
 fn main() {
-    let mut s = aes_core::presets::startup();
+    let mut s = aes_core::scenario::presets::startup();
     s.sim.duration_s = 60.0;
     let summary = aes_core::run(&s).map(|r| r.summary.to_json_value().to_string()).unwrap_or_default();
-    let mut m = aes_core::presets::preset("turn-90").unwrap_or_default();
+    let mut m = aes_core::scenario::presets::preset("turn-90").unwrap_or_default();
     m.sim.duration_s = 40.0;
     let turn = aes_core::run(&m).map(|r| r.summary.to_json_value().to_string()).unwrap_or_default();
-    let mut h = aes_core::presets::preset("head-seas-ss6").unwrap_or_default();
+    let mut h = aes_core::scenario::presets::preset("head-seas-ss6").unwrap_or_default();
     h.sim.duration_s = 10.0;
     h.seakeeping.stern_motion = aes_core::scenario::SternMotion::ThesisEq257;
     let seas = aes_core::run(&h).map(|r| r.summary.to_json_value().to_string()).unwrap_or_default();
@@ -21,7 +21,7 @@ fn main() {
     let _ = std::fs::write(format!("{out}/native_startup_60s.json"), summary);
     let _ = std::fs::write(format!("{out}/native_turn90_40s.json"), turn);
     let golden = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/golden");
-    let list: Vec<String> = aes_core::presets::PRESET_NAMES
+    let list: Vec<String> = aes_core::scenario::presets::PRESET_NAMES
         .iter()
         .map(|n| format!("({n:?}, include_str!({:?}))", golden.join(format!("{n}.json")).display().to_string()))
         .collect();

@@ -1,7 +1,7 @@
 //! What the commands share: how a command fails, printing, reading bounded input, loading a
 //! scenario.
 
-use aes_core::presets::{preset, PRESET_NAMES};
+use aes_core::scenario::presets::{preset, PRESET_NAMES};
 use aes_core::Scenario;
 use std::io::{Read, Write};
 
@@ -39,7 +39,7 @@ pub fn emit(text: &str) -> Result<(), Failure> {
 /// Prints a value as pretty JSON after checking that every number in it is finite (the error
 /// names the first that is not, by its path).
 pub fn emit_json<T: serde::Serialize + ?Sized>(x: &T) -> Result<(), Failure> {
-    aes_core::validate::check_finite(x)?;
+    aes_core::checks::check_finite(x)?;
     // Through a Value, whose keys are sorted: the output keeps its established form.
     let v = serde_json::to_value(x).map_err(|e| e.to_string())?;
     emit(&serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?)
@@ -76,7 +76,7 @@ pub fn check_writable(path: &str, flag: &str) -> Result<(), String> {
 
 /// A user's text cut short for a message.
 pub fn shorten(s: &str) -> String {
-    aes_core::validate::shorten(s)
+    aes_core::checks::shorten(s)
 }
 
 /// The scenario of a command: a file, `-` (standard input) or `preset:NAME`, with its `--set`
@@ -85,7 +85,7 @@ pub fn load(file: &str, sets: &[String]) -> Result<Scenario, String> {
     let mut sc = if let Some(name) = file.strip_prefix("preset:") {
         preset(name).ok_or_else(|| format!("no preset named '{}' (try: {})", shorten(name), PRESET_NAMES.join(", ")))?
     } else {
-        let text = read_bounded(file, aes_core::scenario_file::MAX_SCENARIO_BYTES as u64, "a scenario")?;
+        let text = read_bounded(file, aes_core::scenario::file::MAX_SCENARIO_BYTES as u64, "a scenario")?;
         Scenario::from_json(&text).map_err(|e| format!("{}: invalid scenario:\n{e}", shorten(file)))?
     };
     let mut pairs = Vec::with_capacity(sets.len());

@@ -156,7 +156,7 @@ fn ips_commands() {
     // v_dc is the thesis' bus voltage (after the filter, eq. 4.12); the rectifier output v~_dc of
     // Table 4.1 (743.17 V) is v_rect_v, above the bus by the filter's resistive drop.
     let (v_rect, v_dc) = (v["steady_state"]["v_rect_v"].as_f64().unwrap(), v["steady_state"]["v_dc"].as_f64().unwrap());
-    let table_4_1 = aes_core::thesis_values::value("table_4_1.steady_state.v_rect_v").unwrap();
+    let table_4_1 = aes_core::studies::thesis_values::value("table_4_1.steady_state.v_rect_v").unwrap();
     assert!((v_rect - table_4_1).abs() < 0.2 && v_dc < v_rect && v_dc > 0.9 * v_rect, "v_rect_v {v_rect}, v_dc {v_dc}");
     assert!(v["steady_state"].get("v_bus").is_none());
     let (ok, out, _) = aes_sim(&["ips", "steady", "--side", "motor", "--torque", "100"]);

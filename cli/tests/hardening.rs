@@ -184,7 +184,7 @@ fn class4_no_nan_reaches_an_output() {
     );
     let dir = std::env::temp_dir().join(format!("aes-harden4-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let mut text = aes_core::hull_sections::DTMB5415_OFFSETS.to_string();
+    let mut text = aes_core::ship::sections::DTMB5415_OFFSETS.to_string();
     let line = text.lines().filter(|l| l.starts_with(|c: char| c.is_ascii_digit())).nth(10).unwrap().to_string();
     let mut f: Vec<&str> = line.split(',').collect();
     f[3] = "1e300";

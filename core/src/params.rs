@@ -11,9 +11,9 @@
 //! of steps) are the section's [`CrossCheck`], written by hand beside the physics.
 //!
 //! To add a parameter: one line in its section's `params!`, then read it where the model needs it.
-//! The whole scenario's list, look-ups by path and the checks on raw JSON are `crate::registry`'s.
+//! The whole scenario's list, look-ups by path and the checks on raw JSON are `crate::scenario::registry`'s.
 
-use crate::validate::{num, Validator};
+use crate::checks::{num, Validator};
 use serde::Serialize;
 use std::ops::RangeInclusive;
 
@@ -266,7 +266,7 @@ impl Param for String {
     fn check(&self, field: &str, d: &Decl, v: &mut Validator) {
         if !d.choices.is_empty() && !d.choices.iter().any(|(c, _)| c == self) {
             let meta = ParamMeta::new::<Self>(field, d, serde_json::Value::Null, d.choices);
-            v.fail(field, format!("\"{}\"", crate::validate::shorten(self)), meta.message());
+            v.fail(field, format!("\"{}\"", crate::checks::shorten(self)), meta.message());
         }
     }
 }
@@ -377,7 +377,7 @@ macro_rules! params {
             fn describe(path: &str, _: &$crate::params::Decl, default: &Self, out: &mut Vec<$crate::params::ParamMeta>) {
                 <Self as $crate::params::Section>::describe_fields(path, default, out);
             }
-            fn check(&self, field: &str, _: &$crate::params::Decl, v: &mut $crate::validate::Validator) {
+            fn check(&self, field: &str, _: &$crate::params::Decl, v: &mut $crate::checks::Validator) {
                 v.section(field, |v| <Self as $crate::params::Section>::check_fields(self, v));
             }
         }
@@ -393,7 +393,7 @@ macro_rules! params {
                     );
                 )*
             }
-            fn check_fields(&self, v: &mut $crate::validate::Validator) {
+            fn check_fields(&self, v: &mut $crate::checks::Validator) {
                 $(
                     $crate::params::Param::check(
                         &self.$field,
@@ -438,7 +438,7 @@ macro_rules! choices {
             fn choices() -> &'static [(&'static str, &'static str)] {
                 &[($first_json, $first_label) $(, ($json, $label))*]
             }
-            fn check(&self, _: &str, _: &$crate::params::Decl, _: &mut $crate::validate::Validator) {}
+            fn check(&self, _: &str, _: &$crate::params::Decl, _: &mut $crate::checks::Validator) {}
         }
     };
 }

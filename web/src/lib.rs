@@ -3,7 +3,7 @@
 //! Scenarios cross as JSON text (the same public format as the command line), so that a scenario
 //! file, a shared link and a native run all speak one language.
 
-use aes_core::presets::{preset, PRESET_NAMES};
+use aes_core::scenario::presets::{preset, PRESET_NAMES};
 use aes_core::{Scenario, Simulation};
 use wasm_bindgen::prelude::*;
 
@@ -45,8 +45,8 @@ pub fn signal_meta() -> String {
 pub fn param_meta() -> String {
     serde_json::json!({
         "groups": aes_core::params::FORM_GROUPS,
-        "params": aes_core::registry::all(),
-        "renamed": aes_core::scenario_file::RENAMED,
+        "params": aes_core::scenario::registry::all(),
+        "renamed": aes_core::scenario::file::RENAMED,
     })
     .to_string()
 }
@@ -57,7 +57,7 @@ pub fn param_meta() -> String {
 /// prints it ("1.00").
 #[wasm_bindgen(js_name = thesisValues)]
 pub fn thesis_values() -> String {
-    aes_core::thesis_values::to_json()
+    aes_core::studies::thesis_values::to_json()
 }
 
 /// The model's levels and ratings the page draws (bands, reference lines, per-unit bases), for a
@@ -65,7 +65,7 @@ pub fn thesis_values() -> String {
 #[wasm_bindgen(js_name = pageConstants)]
 pub fn page_constants(json: &str) -> Result<String, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    let c = aes_core::presentation::PageConstants::of(&sc).map_err(|e| JsError::new(&e))?;
+    let c = aes_core::output::presentation::PageConstants::of(&sc).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&c).map_err(|e| JsError::new(&e.to_string()))
 }
 
@@ -103,7 +103,7 @@ impl Run {
         if sim.done() {
             if let Some(sim) = self.sim.take() {
                 let r = sim.finish();
-                aes_core::validate::check_finite(&r.summary).map_err(|e| JsError::new(&e))?;
+                aes_core::checks::check_finite(&r.summary).map_err(|e| JsError::new(&e))?;
                 self.summary_json = serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default();
                 self.trace_csv = r.trace.to_csv();
                 self.columns = r.trace.columns;
@@ -169,7 +169,7 @@ pub fn run_summary(json: &str) -> Result<String, JsError> {
     Ok(serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default())
 }
 
-/// The IPS stability tool (thesis ch. 4) for the page's stability tab: `aes_core::stability::study`,
+/// The IPS stability tool (thesis ch. 4) for the page's stability tab: `aes_core::studies::ips::study`,
 /// as `aes-sim ips bode` runs it. `side` is "generator" or "motor"; the operating point is omega
 /// [rad/s], v_fd [V] and I [A] (generator) or T* [N m] (motor); `closed` picks the closed-loop
 /// model; Bode from `from_hz` to `to_hz` in `points` points. Returns the JSON of `aes-sim ips bode`:
@@ -187,7 +187,7 @@ pub fn ips_analysis(
     to_hz: f64,
     points: u32,
 ) -> Result<String, JsError> {
-    use aes_core::stability::study::{self, Analysis, IpsRequest, OperatingPoint, Side};
+    use aes_core::studies::ips::study::{self, Analysis, IpsRequest, OperatingPoint, Side};
     let request = IpsRequest {
         side: Side::from_name(side).map_err(|e| JsError::new(&e))?,
         analysis: Analysis::Bode,
@@ -209,11 +209,11 @@ pub fn ips_analysis(
 
 /// The declarations of the IPS tool's operating point and Bode range, as JSON: `[{"path",
 /// "kind", "label", "unit", "help", "source", "default", "min", "max", "span"}, ...]` (the paths
-/// are `aes_core::stability::study::OperatingPoint`'s fields; `span` is a slider's [from, to]).
+/// are `aes_core::studies::ips::study::OperatingPoint`'s fields; `span` is a slider's [from, to]).
 /// The stability tab's sliders, their ranges and the synchronous speed come from it.
 #[wasm_bindgen(js_name = ipsMeta)]
 pub fn ips_meta() -> String {
-    serde_json::to_string(&aes_core::stability::study::meta()).unwrap_or_default()
+    serde_json::to_string(&aes_core::studies::ips::study::meta()).unwrap_or_default()
 }
 
 /// The LQG/LTR design (thesis ch. 3.1) for a scenario's drive train and `controllers.lqg_ltr`
@@ -223,7 +223,7 @@ pub fn ips_meta() -> String {
 pub fn design_lqg_ltr(json: &str) -> Result<String, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
     let d = aes_core::sim::lqg::analyse(&sc).map_err(|e| JsError::new(&e))?;
-    aes_core::validate::check_finite(&d).map_err(|e| JsError::new(&e))?;
+    aes_core::checks::check_finite(&d).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&d).map_err(|e| JsError::new(&e.to_string()))
 }
 
@@ -236,7 +236,7 @@ pub fn trial_bins(json: &str, i: u32) -> Result<String, JsError> {
     if i as u64 >= sc.monte_carlo.trials {
         return Err(JsError::new(&format!("trial {i}: the study has {} trials", sc.monte_carlo.trials)));
     }
-    let b = aes_core::montecarlo::trial_bins(&sc, i as u64).map_err(|e| JsError::new(&e))?;
+    let b = aes_core::studies::montecarlo::trial_bins(&sc, i as u64).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&b).map_err(|e| JsError::new(&e.to_string()))
 }
 
@@ -246,7 +246,7 @@ pub fn trial_bins(json: &str, i: u32) -> Result<String, JsError> {
 #[wasm_bindgen(js_name = mcRange)]
 pub fn mc_range(json: &str, a: u32, b: u32) -> Result<Vec<u8>, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    let p = aes_core::montecarlo::run_range(&sc, a as u64, b as u64).map_err(|e| JsError::new(&e))?;
+    let p = aes_core::studies::montecarlo::run_range(&sc, a as u64, b as u64).map_err(|e| JsError::new(&e))?;
     p.to_bytes().map_err(|e| JsError::new(&e))
 }
 
@@ -262,7 +262,7 @@ pub fn trial_scenario(json: &str, i: u32) -> Result<String, JsError> {
             sc.monte_carlo.trials.saturating_sub(1)
         )));
     }
-    sc.sim.seed = aes_core::stats::trial_seed(sc.sim.seed, i as u64);
+    sc.sim.seed = aes_core::studies::stats::trial_seed(sc.sim.seed, i as u64);
     Ok(sc.to_json())
 }
 
@@ -270,14 +270,14 @@ pub fn trial_scenario(json: &str, i: u32) -> Result<String, JsError> {
 /// result does not depend on how the trials were split or in which order the partials come.
 #[wasm_bindgen(js_name = mcSummary)]
 pub fn mc_summary(partials: Vec<js_sys::Uint8Array>) -> Result<String, JsError> {
-    let mut merged = aes_core::montecarlo::Merged::default();
+    let mut merged = aes_core::studies::montecarlo::Merged::default();
     for p in &partials {
-        let p = aes_core::montecarlo::Partial::from_bytes(&p.to_vec()).map_err(|e| JsError::new(&e))?;
+        let p = aes_core::studies::montecarlo::Partial::from_bytes(&p.to_vec()).map_err(|e| JsError::new(&e))?;
         merged.add(p).map_err(|e| JsError::new(&e))?;
     }
     let acc = merged.partial().map_err(|e| JsError::new(&e))?;
-    let s = aes_core::montecarlo::study_summary(&acc).map_err(|e| JsError::new(&e))?;
-    aes_core::validate::check_finite(&s).map_err(|e| JsError::new(&e))?;
+    let s = aes_core::studies::montecarlo::study_summary(&acc).map_err(|e| JsError::new(&e))?;
+    aes_core::checks::check_finite(&s).map_err(|e| JsError::new(&e))?;
     // Through a Value, whose keys are sorted, as `aes-sim mc` prints it.
     Ok(serde_json::to_value(&s).map_err(|e| JsError::new(&e.to_string()))?.to_string())
 }
@@ -297,7 +297,7 @@ pub fn rao_table_values(json: &str) -> Result<Vec<f64>, JsError> {
 pub fn rao_table_load(json: &str, values: &[f64]) -> Result<(), JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
     let hull = sc.ship_hull().map_err(|e| JsError::new(&e))?;
-    aes_core::rao_cache::insert_rao_table(&hull, &sc.seakeeping.grid, &sc.as_printed, values)
+    aes_core::sea::rao_cache::insert_rao_table(&hull, &sc.seakeeping.grid, &sc.as_printed, values)
         .map_err(|e| JsError::new(&e))
 }
 
@@ -313,9 +313,9 @@ pub fn rao_json(json: &str, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -
         return Err(JsError::new("RAOs: speed 0 to 40 kn and a finite heading"));
     }
     let ship = sc.ship_hull().and_then(|h| h.strip_ship()).map_err(|e| JsError::new(&e))?;
-    let v = aes_core::seakeeping::tables::rao_json(
+    let v = aes_core::sea::seakeeping::tables::rao_json(
         &ship,
-        speed_kn * aes_core::units::KNOT_M_S,
+        speed_kn * aes_core::numerics::units::KNOT_M_S,
         heading_deg.to_radians(),
         &omegas,
         1.0,
@@ -328,7 +328,7 @@ pub fn rao_json(json: &str, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -
 #[wasm_bindgen(js_name = fuelStudy)]
 pub fn fuel_study(json: &str, omegas: Vec<f64>) -> Result<String, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    let rows = aes_core::fuel_study::run(&sc, &omegas).map_err(|e| JsError::new(&e))?;
+    let rows = aes_core::studies::fuel::run(&sc, &omegas).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
 }
 
@@ -337,7 +337,7 @@ pub fn fuel_study(json: &str, omegas: Vec<f64>) -> Result<String, JsError> {
 #[wasm_bindgen(js_name = hullProfile)]
 pub fn hull_profile(json: &str) -> Result<String, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    let p = aes_core::presentation::HullProfile::of(&sc).map_err(|e| JsError::new(&e))?;
+    let p = aes_core::output::presentation::HullProfile::of(&sc).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
 }
 
@@ -346,21 +346,21 @@ pub fn hull_profile(json: &str) -> Result<String, JsError> {
 #[wasm_bindgen(js_name = hullSheet)]
 pub fn hull_sheet(json: &str) -> Result<String, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
-    let p = aes_core::presentation::HullSheet::of(&sc).map_err(|e| JsError::new(&e))?;
+    let p = aes_core::output::presentation::HullSheet::of(&sc).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
 }
 
 /// The embedded hulls' names, then "custom" (offsets of one's own).
 #[wasm_bindgen(js_name = hullNames)]
 pub fn hull_names() -> Vec<String> {
-    aes_core::ship_hull::HULL_NAMES.iter().map(|s| s.to_string()).collect()
+    aes_core::ship::hull::HULL_NAMES.iter().map(|s| s.to_string()).collect()
 }
 
 /// A run's sea surface for pictures: the same seeded wave components the run sails in
 /// (`sim::seaway::wave_components`), summed at points the page asks for.
 #[wasm_bindgen]
 pub struct Sea {
-    comps: Vec<aes_core::waves::WaveComponent>,
+    comps: Vec<aes_core::sea::waves::WaveComponent>,
     out: Vec<f64>,
 }
 
@@ -386,7 +386,7 @@ impl Sea {
             return Err(JsError::new("elevations: xs and ys of equal length, at most 20000 points"));
         }
         self.out.resize(xs.len(), 0.0);
-        aes_core::waves::elevations(&self.comps, xs, ys, t, &mut self.out);
+        aes_core::sea::waves::elevations(&self.comps, xs, ys, t, &mut self.out);
         Ok(js_sys::Float64Array::from(self.out.as_slice()))
     }
 }

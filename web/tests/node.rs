@@ -53,7 +53,7 @@ fn stability_tool_in_wasm() {
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let i = v["steady_state"]["i_s_mag"].as_f64().unwrap();
     // Within 1e-4 as natively (measured 5.5e-5, core's table_4_2).
-    let table_4_2 = aes_core::thesis_values::value("table_4_2.steady_state.i_s_mag_a").unwrap();
+    let table_4_2 = aes_core::studies::thesis_values::value("table_4_2.steady_state.i_s_mag_a").unwrap();
     assert!((i - table_4_2).abs() < 1e-4 * table_4_2, "{i}");
     assert_eq!(v["bode"]["magnitude_db"].as_array().unwrap().len(), 10);
     assert!(ips_analysis("rotor", 0.0, 0.0, 0.0, 0.0, false, 0.1, 1.0, 3).is_err());
@@ -137,10 +137,10 @@ fn hull_sheet_in_wasm() {
 fn golden_records_in_wasm() {
     // Every preset's record, listed at build time from PRESET_NAMES (web/build.rs).
     let stored: &[(&str, &str)] = &include!(concat!(env!("OUT_DIR"), "/golden_files.rs"));
-    assert_eq!(stored.len(), aes_core::presets::PRESET_NAMES.len(), "a preset without a golden record here");
+    assert_eq!(stored.len(), aes_core::scenario::presets::PRESET_NAMES.len(), "a preset without a golden record here");
     let mut failed = Vec::new();
     for &(name, text) in stored {
-        let now = aes_core::regression::record(name).unwrap();
+        let now = aes_core::studies::regression::record(name).unwrap();
         if now != text {
             let (a, b): (serde_json::Value, serde_json::Value) =
                 (serde_json::from_str(text).unwrap(), serde_json::from_str(&now).unwrap());
@@ -206,7 +206,7 @@ fn extreme_inputs_end_with_named_errors() {
     let mut sc: serde_json::Value = serde_json::from_str(&preset_json("mc-arrival").unwrap()).unwrap();
     sc["sim"]["duration_s"] = serde_json::json!(2.0);
     let p = mc_range(&sc.to_string(), 0, 1).unwrap();
-    let mut bad = aes_core::montecarlo::Partial::from_bytes(&p).unwrap();
+    let mut bad = aes_core::studies::montecarlo::Partial::from_bytes(&p).unwrap();
     bad.ranges = vec![(2, 0)];
     let bad = js_sys::Uint8Array::from(&bad.to_bytes().unwrap()[..]);
     assert!(message(mc_summary(vec![bad]).unwrap_err()).contains("ranges.0 = [2, 0]"));
@@ -236,7 +236,7 @@ fn live_view_exports() {
     let (xs, ys) = ([10.0, -62.0], [0.0, 5.0]);
     let got = sea.elevations(3.5, &xs, &ys).unwrap().to_vec();
     for i in 0..2 {
-        let want = aes_core::waves::elevation(&comps, xs[i], ys[i], 3.5);
+        let want = aes_core::sea::waves::elevation(&comps, xs[i], ys[i], 3.5);
         // The same terms in the same order (measured: equal to the last bit).
         assert!((got[i] - want).abs() <= 1e-12 * (1.0 + want.abs()), "{} vs {want}", got[i]);
     }
@@ -245,7 +245,7 @@ fn live_view_exports() {
 
     let trial: serde_json::Value = serde_json::from_str(&trial_scenario(&json, 2).unwrap()).unwrap();
     let seed = sc["sim"]["seed"].as_u64().unwrap();
-    assert_eq!(trial["sim"]["seed"].as_u64(), Some(aes_core::stats::trial_seed(seed, 2)));
+    assert_eq!(trial["sim"]["seed"].as_u64(), Some(aes_core::studies::stats::trial_seed(seed, 2)));
     assert!(trial_scenario(&json, 1_000_000).is_err());
 }
 

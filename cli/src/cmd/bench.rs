@@ -1,8 +1,8 @@
 //! `aes-sim bench`: realtime factor of a preset, or the time to build the RAO tables.
 
 use crate::common::{emit_json, load, read_bounded, shorten, Failure};
-use aes_core::seakeeping::strip::{default_omega_grid, Ship};
-use aes_core::seakeeping::tables::{RaoTable, SeakeepingGrid};
+use aes_core::sea::seakeeping::strip::{default_omega_grid, Ship};
+use aes_core::sea::seakeeping::tables::{RaoTable, SeakeepingGrid};
 use aes_core::Simulation;
 use std::time::Instant;
 
@@ -39,11 +39,11 @@ fn seakeeping(repeat: u32, hull: Option<String>, sets: Vec<String>) -> Result<()
     let other = match &hull {
         None => None,
         Some(h) => {
-            let spec = if aes_core::ship_hull::HULL_NAMES.contains(&h.as_str()) && h != "custom" {
-                aes_core::ship_hull::HullSpec { name: h.clone(), ..Default::default() }
+            let spec = if aes_core::ship::hull::HULL_NAMES.contains(&h.as_str()) && h != "custom" {
+                aes_core::ship::hull::HullSpec { name: h.clone(), ..Default::default() }
             } else {
-                let text = read_bounded(h, aes_core::hull_sections::MAX_HULL_BYTES as u64, "a hull offsets file")?;
-                aes_core::ship_hull::HullSpec { name: "custom".into(), offsets_csv: text, ..Default::default() }
+                let text = read_bounded(h, aes_core::ship::sections::MAX_HULL_BYTES as u64, "a hull offsets file")?;
+                aes_core::ship::hull::HullSpec { name: "custom".into(), offsets_csv: text, ..Default::default() }
             };
             // Every --set ship.hull.FIELD=VALUE at once (a custom hull is whole only with all).
             let mut v = serde_json::to_value(&spec).map_err(|e| e.to_string())?;
@@ -56,9 +56,9 @@ fn seakeeping(repeat: u32, hull: Option<String>, sets: Vec<String>) -> Result<()
                 v[field] = serde_json::from_str(val.trim())
                     .unwrap_or_else(|_| serde_json::Value::String(val.trim().to_string()));
             }
-            let spec: aes_core::ship_hull::HullSpec =
+            let spec: aes_core::ship::hull::HullSpec =
                 serde_json::from_value(v).map_err(|e| format!("ship.hull: {}", shorten(&e.to_string())))?;
-            let mut check = aes_core::validate::Validator::new();
+            let mut check = aes_core::checks::Validator::new();
             check.section("ship.hull", |c| spec.validate(c, 1025.0));
             check.finish().map_err(|e| e.to_string())?;
             let hull = spec.resolve(1025.0).map_err(|(f, e)| format!("ship.hull.{f}: {e}"))?;

@@ -29,7 +29,7 @@ impl TuningArgs {
     }
 
     /// The defaults with the given values in place.
-    fn apply(&self, t: &mut aes_core::design::LqgLtrParams) {
+    fn apply(&self, t: &mut aes_core::control::design::LqgLtrParams) {
         t.mu = self.mu.unwrap_or(t.mu);
         t.omega_p_rad_s = self.omega_p.unwrap_or(t.omega_p_rad_s);
         t.q = self.q.unwrap_or(t.q);
@@ -70,7 +70,7 @@ const MAX_DESIGN_BYTES: u64 = 4 << 20;
 pub fn run(command: Cmd) -> Result<(), Failure> {
     match command {
         Cmd::LqgLtr { file, plant, tuning } => {
-            let input: aes_core::design::lqg_ltr::DesignInput = match (file, plant.as_deref()) {
+            let input: aes_core::control::design::lqg_ltr::DesignInput = match (file, plant.as_deref()) {
                 (Some(_), None) if tuning.any() => {
                     return Err("--mu, --omega-p, --q, --turbine-weight and --speed-kn go with --plant aes; a FILE \
                                 carries its own mu, omega_p and q"
@@ -81,7 +81,7 @@ pub fn run(command: Cmd) -> Result<(), Failure> {
                     serde_json::from_str(&text).map_err(|e| format!("{file}: {e}"))?
                 }
                 (None, Some("aes")) => {
-                    let mut sc = aes_core::presets::preset("acceleration").ok_or("no acceleration preset")?;
+                    let mut sc = aes_core::scenario::presets::preset("acceleration").ok_or("no acceleration preset")?;
                     tuning.apply(&mut sc.controllers.lqg_ltr);
                     let d = aes_core::sim::lqg::analyse(&sc)?;
                     return emit_json(&d);
@@ -92,20 +92,20 @@ pub fn run(command: Cmd) -> Result<(), Failure> {
                 (Some(_), Some(_)) => return Err("give a FILE or --plant aes, not both".into()),
                 (None, None) => return Err("give a FILE (or `-`) or --plant aes".into()),
             };
-            let d = aes_core::design::lqg_ltr::design(&input)?;
+            let d = aes_core::control::design::lqg_ltr::design(&input)?;
             emit_json(&d)?;
         }
         Cmd::Compare { tuning, json } => {
-            let mut t = aes_core::design::LqgLtrParams::default();
+            let mut t = aes_core::control::design::LqgLtrParams::default();
             tuning.apply(&mut t);
-            let mut v = aes_core::validate::Validator::new();
+            let mut v = aes_core::checks::Validator::new();
             v.section("controllers", |v| v.section("lqg_ltr", |v| aes_core::params::Section::check_fields(&t, v)));
             v.finish().map_err(|e| e.to_string())?;
-            let rows = aes_core::controller_study::compare(&t)?;
+            let rows = aes_core::studies::controller::compare(&t)?;
             if json {
                 emit_json(&rows)?;
             } else {
-                emit(&aes_core::controller_study::markdown(&rows))?;
+                emit(&aes_core::studies::controller::markdown(&rows))?;
             }
         }
     }

@@ -18,8 +18,8 @@ pub struct Args {
 
 pub fn run(Args { file, omega, sets }: Args) -> Result<(), Failure> {
     let sc = load(&file, &sets)?;
-    let omegas = if omega.is_empty() { aes_core::fuel_study::fig_5_12_omegas() } else { omega };
-    let rows = aes_core::fuel_study::run(&sc, &omegas)?;
+    let omegas = if omega.is_empty() { aes_core::studies::fuel::fig_5_12_omegas() } else { omega };
+    let rows = aes_core::studies::fuel::run(&sc, &omegas)?;
     let extrapolated = rows.iter().any(|r| r.extrapolated);
     let out = serde_json::json!({
         "speed_kn": sc.commands.first().and_then(|c| c.speed_kn),
@@ -27,7 +27,7 @@ pub fn run(Args { file, omega, sets }: Args) -> Result<(), Failure> {
         "note": if extrapolated { "some turbine loads are below 30 % of rated, where the part-load curve has no data: extrapolated linearly" } else { "" },
         "rows": rows,
     });
-    aes_core::validate::check_finite(&rows)?;
+    aes_core::checks::check_finite(&rows)?;
     emit_json(&out)?;
     Ok(())
 }

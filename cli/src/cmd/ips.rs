@@ -1,9 +1,9 @@
-//! `aes-sim ips`: the IPS performance and stability tool of ch. 4 (`aes_core::stability::study`,
+//! `aes-sim ips`: the IPS performance and stability tool of ch. 4 (`aes_core::studies::ips::study`,
 //! which the page's Stability tab calls too). The flags' defaults and help come from the
 //! operating point's declarations there.
 
 use crate::common::{emit_json, shorten, Failure};
-use aes_core::stability::study::{self, Analysis, IpsError, IpsRequest, OperatingPoint};
+use aes_core::studies::ips::study::{self, Analysis, IpsError, IpsRequest, OperatingPoint};
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum Side {
@@ -27,7 +27,7 @@ fn help(field: &str) -> String {
     let Some(m) = study::meta().into_iter().find(|m| m.path == field) else { return String::new() };
     let unit = if m.unit == "-" { String::new() } else { format!(" [{}]", m.unit) };
     let range = match (m.min, m.max) {
-        (Some(lo), Some(hi)) => format!(", {} to {}", aes_core::validate::num(lo), aes_core::validate::num(hi)),
+        (Some(lo), Some(hi)) => format!(", {} to {}", aes_core::checks::num(lo), aes_core::checks::num(hi)),
         _ => String::new(),
     };
     format!("{} ({}{unit}{range})", m.help.trim_end_matches('.'), m.label)

@@ -48,7 +48,8 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
             let (x, y) = r.split_once("..").ok_or_else(|| format!("--trial-range '{r}': expected A..B"))?;
             let a: u64 = x.trim().parse().map_err(|_| format!("--trial-range '{r}': A is not a whole number"))?;
             let b: u64 = y.trim().parse().map_err(|_| format!("--trial-range '{r}': B is not a whole number"))?;
-            aes_core::montecarlo::check_shard(&sc, a, b).map_err(|e| format!("--trial-range {a}..{b}: {e}"))?;
+            aes_core::studies::montecarlo::check_shard(&sc, a, b)
+                .map_err(|e| format!("--trial-range {a}..{b}: {e}"))?;
             (a, b)
         }
     };
@@ -79,14 +80,14 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
         note.finish();
     }
     // What the trials share is built once, not per trial.
-    let trials = aes_core::montecarlo::Trials::new(&sc);
+    let trials = aes_core::studies::montecarlo::Trials::new(&sc);
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
     let t0 = Instant::now();
     let progress = Progress::start(b - a, "aes-sim mc", quiet);
     let result = pool.install(|| {
         use rayon::prelude::*;
         (a..b).into_par_iter().map(|i| progress.tick(trials.run(i))).try_reduce(
-            || aes_core::montecarlo::Partial::empty(&sc),
+            || aes_core::studies::montecarlo::Partial::empty(&sc),
             |mut x, y| {
                 x.merge(&y)?;
                 Ok(x)
@@ -106,7 +107,7 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
     }
     // The summary first: it is printed even when the partial cannot be written.
     if trial_range.is_none() {
-        emit_json(&aes_core::montecarlo::study_summary(&result)?)?;
+        emit_json(&aes_core::studies::montecarlo::study_summary(&result)?)?;
     }
     if let Some(path) = &partial {
         let text = serde_json::to_string(&result).map_err(|e| e.to_string())?;

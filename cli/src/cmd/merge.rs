@@ -34,18 +34,19 @@ pub fn run(Args { files, files_from, partial }: Args) -> Result<(), Failure> {
             Box::new(std::io::BufRead::lines(std::io::BufReader::new(f)))
         }
     };
-    let mut merged = aes_core::montecarlo::Merged::default();
+    let mut merged = aes_core::studies::montecarlo::Merged::default();
     for f in files.into_iter().map(Ok).chain(listed) {
         let f = f.map_err(|e| format!("--files-from: {e}"))?;
         if f.trim().is_empty() {
             continue;
         }
         let text = read_bounded(&f, MAX_PARTIAL_BYTES, "a Monte Carlo partial")?;
-        let p = aes_core::montecarlo::Partial::from_json(&text).map_err(|e| format!("{}: {e}", shorten(&f)))?;
+        let p =
+            aes_core::studies::montecarlo::Partial::from_json(&text).map_err(|e| format!("{}: {e}", shorten(&f)))?;
         merged.add(p).map_err(|e| format!("{}: {e}", shorten(&f)))?;
     }
     let acc = merged.partial()?;
-    let summary = aes_core::montecarlo::study_summary(&acc)?;
+    let summary = aes_core::studies::montecarlo::study_summary(&acc)?;
     // A lost shard leaves a smaller study that looks like a whole one: say which trials
     // are missing (a merge of the shards done so far is still allowed).
     let missing = missing_trials(&summary.ranges, summary.trials_requested);

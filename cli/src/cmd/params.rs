@@ -12,11 +12,11 @@ pub struct Args {
 }
 
 pub fn run(Args { json, markdown }: Args) -> Result<(), Failure> {
-    let all = aes_core::registry::all();
+    let all = aes_core::scenario::registry::all();
     if json {
         emit_json(&all)?;
     } else if markdown {
-        emit(aes_core::registry::markdown_table().trim_end())?;
+        emit(aes_core::scenario::registry::markdown_table().trim_end())?;
     } else {
         let mut text = String::new();
         for m in &all {
@@ -26,7 +26,7 @@ pub fn run(Args { json, markdown }: Args) -> Result<(), Failure> {
             };
             let range = match (m.min, m.max) {
                 (Some(lo), Some(hi)) => {
-                    format!("{} .. {}", aes_core::validate::num(lo), aes_core::validate::num(hi))
+                    format!("{} .. {}", aes_core::checks::num(lo), aes_core::checks::num(hi))
                 }
                 _ if !m.choices.is_empty() => m.choices.iter().map(|c| c.value).collect::<Vec<_>>().join(" | "),
                 _ => m.kind.to_string(),

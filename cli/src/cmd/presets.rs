@@ -1,7 +1,7 @@
 //! `aes-sim presets` and `aes-sim preset`: the preset scenarios.
 
 use crate::common::{emit, shorten, Failure};
-use aes_core::presets::{preset, PRESET_NAMES};
+use aes_core::scenario::presets::{preset, PRESET_NAMES};
 
 // The command line of `aes-sim preset`.
 #[derive(clap::Args)]

@@ -1,7 +1,7 @@
 //! `aes-sim rao`: RAOs and mean drift forces of a hull (ch. 2.5.2-2.5.3).
 
 use crate::common::{emit_json, load, read_bounded, Failure};
-use aes_core::seakeeping::tables::rao_json;
+use aes_core::sea::seakeeping::tables::rao_json;
 
 // The command line of `aes-sim rao`.
 #[derive(clap::Args)]
@@ -57,11 +57,11 @@ pub fn run(
     };
     let spec = &mut ship.hull;
     if let Some(h) = &hull {
-        if aes_core::ship_hull::HULL_NAMES.contains(&h.as_str()) && h != "custom" {
-            *spec = aes_core::ship_hull::HullSpec { name: h.clone(), ..Default::default() };
+        if aes_core::ship::hull::HULL_NAMES.contains(&h.as_str()) && h != "custom" {
+            *spec = aes_core::ship::hull::HullSpec { name: h.clone(), ..Default::default() };
         } else {
-            let text = read_bounded(h, aes_core::hull_sections::MAX_HULL_BYTES as u64, "a hull offsets file")?;
-            *spec = aes_core::ship_hull::HullSpec { name: "custom".into(), offsets_csv: text, ..Default::default() };
+            let text = read_bounded(h, aes_core::ship::sections::MAX_HULL_BYTES as u64, "a hull offsets file")?;
+            *spec = aes_core::ship::hull::HullSpec { name: "custom".into(), offsets_csv: text, ..Default::default() };
         }
     }
     if draft.is_some() || mass.is_some() {
@@ -74,7 +74,7 @@ pub fn run(
         }
     }
     // The hull section's own checks, with the flags' names for its fields.
-    let mut v = aes_core::validate::Validator::new();
+    let mut v = aes_core::checks::Validator::new();
     v.section("hull", |v| ship.hull.validate(v, ship.water_density_kg_m3));
     v.finish().map_err(|e| {
         let e = e.to_string();
@@ -84,8 +84,13 @@ pub fn run(
     })?;
     let resolved = ship.hull.resolve(ship.water_density_kg_m3).map_err(|(f, e)| format!("hull.{f}: {e}"))?;
     let strips = resolved.strip_ship()?;
-    let v =
-        rao_json(&strips, speed_kn * aes_core::units::KNOT_M_S, heading_deg.to_radians(), &omega, roll_wave_amplitude)?;
+    let v = rao_json(
+        &strips,
+        speed_kn * aes_core::numerics::units::KNOT_M_S,
+        heading_deg.to_radians(),
+        &omega,
+        roll_wave_amplitude,
+    )?;
     emit_json(&v)?;
     Ok(())
 }

@@ -1,7 +1,7 @@
 //! `aes-sim section`: sectional added mass and damping (ch. 2.5.1).
 
 use crate::common::{emit_json, Failure};
-use aes_core::seakeeping::tables::{section_json, FormChoice};
+use aes_core::sea::seakeeping::tables::{section_json, FormChoice};
 
 // The command line of `aes-sim section`.
 #[derive(clap::Args)]

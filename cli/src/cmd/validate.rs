@@ -20,13 +20,13 @@ pub fn run(Args { trials, out, check }: Args) -> Result<(), Failure> {
     if !(1..=100_000).contains(&trials) {
         return Err(format!("--trials = {trials}: must be a whole number from 1 to 100000").into());
     }
-    let size = aes_core::validation::Size { trials };
-    let sections = aes_core::validation::sections(size)?;
-    let text = aes_core::validation::markdown(&sections, size);
+    let size = aes_core::studies::validation_report::Size { trials };
+    let sections = aes_core::studies::validation_report::sections(size)?;
+    let text = aes_core::studies::validation_report::markdown(&sections, size);
     let failed: Vec<String> = sections
         .iter()
         .flat_map(|s| &s.rows)
-        .filter(|r| r.verdict == aes_core::validation::Verdict::Fail)
+        .filter(|r| r.verdict == aes_core::studies::validation_report::Verdict::Fail)
         .map(|r| format!("{}: ours {} against {} ({})", r.quantity, r.ours, r.thesis, r.source))
         .collect();
     if let Some(path) = check {
@@ -58,11 +58,14 @@ pub fn run(Args { trials, out, check }: Args) -> Result<(), Failure> {
 }
 
 fn figure_dir(report: &str) -> std::path::PathBuf {
-    std::path::Path::new(report).parent().unwrap_or(std::path::Path::new("")).join(aes_core::validation::FIGURE_DIR)
+    std::path::Path::new(report)
+        .parent()
+        .unwrap_or(std::path::Path::new(""))
+        .join(aes_core::studies::validation_report::FIGURE_DIR)
 }
 
 /// Writes the report's figures beside it, and removes figures it no longer makes.
-fn write_figures(report: &str, sections: &[aes_core::validation::Section]) -> Result<(), String> {
+fn write_figures(report: &str, sections: &[aes_core::studies::validation_report::Section]) -> Result<(), String> {
     let dir = figure_dir(report);
     std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let made: Vec<String> = sections.iter().flat_map(|s| &s.figures).map(|f| format!("{}.svg", f.name)).collect();
@@ -92,7 +95,7 @@ fn stray_figures(dir: &std::path::Path, made: &[String]) -> Result<Vec<String>, 
 
 /// Fails when a committed figure differs from the one the report makes now, is missing, or is
 /// one the report no longer makes.
-fn check_figures(report: &str, sections: &[aes_core::validation::Section]) -> Result<(), String> {
+fn check_figures(report: &str, sections: &[aes_core::studies::validation_report::Section]) -> Result<(), String> {
     let dir = figure_dir(report);
     let mut made = Vec::new();
     for f in sections.iter().flat_map(|s| &s.figures) {

@@ -1,8 +1,8 @@
 //! The discrete PI controller every loop of the ship uses (governor, field, slip, autopilot,
 //! ship speed): one type, one anti-windup rule.
 
-pub mod speed;
 pub mod design;
+pub mod speed;
 
 /// A discrete PI: output `kp e + integral`, clamped to [lo, hi]; the integral advances by
 /// `ki e Ts` per sample unless that would push an output sitting at a limit further into it

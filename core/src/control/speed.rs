@@ -2,7 +2,7 @@
 //! ordered ship speed to shaft speed, trimmed by a PI on the speed error, then a ramp limit.
 
 use crate::control::DiscretePi;
-use crate::units::{kn_to_m_s, rpm_to_rad_s};
+use crate::numerics::units::{kn_to_m_s, rpm_to_rad_s};
 use serde::{Deserialize, Serialize};
 crate::params! {
     /// Outer ship-speed loop: a calm-water rpm map trimmed by a PI on ship speed error. Ours: the
@@ -92,7 +92,7 @@ impl SpeedController {
 
     /// The calm-water map at ship speed `u` [m/s] (linear interpolation, held at the ends).
     pub fn map_speed(&self, u: f64) -> f64 {
-        crate::interp::uniform(&self.map, MAP_STEP_M_S, u)
+        crate::numerics::interp::uniform(&self.map, MAP_STEP_M_S, u)
     }
 
     /// Starts in the steady state: shaft at `w_rm0` [rad/s] at ship speed `u0` [m/s].

@@ -1,7 +1,7 @@
 //! Small numerical helpers shared by the physics modules.
 
-pub mod interp;
 pub mod fft;
+pub mod interp;
 pub mod units;
 
 /// Bisection for a sign change of `f` between `lo` and `hi`: `iterations` halvings, returns the

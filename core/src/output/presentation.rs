@@ -1,7 +1,7 @@
 //! The levels, ratings and per-unit bases a display of a run needs (the page's bands and reference
 //! lines), taken from the scenario and the model so that no front end copies a number.
 
-use crate::propeller_losses::{DISK_AT_SURFACE_H_OVER_R, DISK_OUT_H_OVER_R, HUB_AT_SURFACE_H_OVER_R};
+use crate::plant::propeller_losses::{DISK_AT_SURFACE_H_OVER_R, DISK_OUT_H_OVER_R, HUB_AT_SURFACE_H_OVER_R};
 use crate::scenario::Scenario;
 use crate::signals::Signal;
 use serde::Serialize;
@@ -41,7 +41,7 @@ pub struct PageConstants {
     pub gravity_m_s2: f64,
     /// Calm-water hub depth h0 [m] and the shafts' offsets to port [m].
     pub hub_depth_m: f64,
-    pub shaft_y_m: [f64; crate::ship_hull::N_SHAFTS],
+    pub shaft_y_m: [f64; crate::ship::hull::N_SHAFTS],
     /// Propeller radius R [m] (the disc drawn at the hub depth).
     pub propeller_radius_m: f64,
     /// Propeller hub aft of the centre of gravity [m] (eq. 2.56).
@@ -159,7 +159,7 @@ pub struct HullSheet {
     /// Propeller hubs: x from the AP, shafts' offsets to port, height above the baseline,
     /// calm-water depth h0 [m]; the propeller's diameter [m]; the rudder's x from the AP [m].
     pub propeller_x_m: f64,
-    pub shaft_y_m: [f64; crate::ship_hull::N_SHAFTS],
+    pub shaft_y_m: [f64; crate::ship::hull::N_SHAFTS],
     pub hub_above_base_m: f64,
     pub hub_depth_m: f64,
     pub propeller_diameter_m: f64,
@@ -237,7 +237,7 @@ impl PageConstants {
             turbine_rated_speed_rpm: sc.plant.turbine.rated_speed_rpm,
             ship_length_m: hull.rigid_body(&sc.as_printed).length_m,
             seakeeping_lpp_m: hull.lpp_m,
-            gravity_m_s2: crate::waves::G,
+            gravity_m_s2: crate::sea::waves::G,
             hub_depth_m: hull.hub_depth_m,
             shaft_y_m: hull.shaft_y_m,
             propeller_radius_m: 0.5 * sc.propeller.diameter_m,
@@ -253,7 +253,7 @@ impl PageConstants {
                 PuBase { signal: Signal::BusVoltagePu.name(), value: sc.bus_voltage_ref_v(), unit: "V" },
                 PuBase {
                     signal: Signal::MotorVoltagePu.name(),
-                    value: crate::motor::InductionMotor::new(&sc.plant.motor).v_rated,
+                    value: crate::plant::motor::InductionMotor::new(&sc.plant.motor).v_rated,
                     unit: "V",
                 },
                 PuBase { signal: Signal::ImPowerPu.name(), value: sc.plant.motor.rated_power_w, unit: "W" },

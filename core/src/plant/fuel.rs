@@ -29,7 +29,7 @@ pub fn efficiency_ratio(curve: &[(f64, f64)], f: f64) -> (f64, bool) {
     for w in curve.windows(2) {
         let ((a, ra), (b, rb)) = (w[0], w[1]);
         if f <= b {
-            return (crate::interp::point_slope(a, ra, b, rb, f), false);
+            return (crate::numerics::interp::point_slope(a, ra, b, rb, f), false);
         }
     }
     (curve[curve.len() - 1].1, false)

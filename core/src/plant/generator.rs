@@ -8,8 +8,8 @@
 //! needs i_f = 500 A, and the bus sits at 5.6 kV, a medium-voltage DC bus; the line-to-line reading
 //! would put the bus at 9.7 kV.
 
+use crate::checks::Validator;
 use crate::control::DiscretePi;
-use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::SQRT_2;
 
@@ -199,7 +199,7 @@ impl crate::params::CrossCheck for FieldControlParams {}
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::units::rpm_to_rad_s;
+    use crate::numerics::units::rpm_to_rad_s;
 
     /// Table 5.3: 4160 V line-to-line at 60 Hz, reached at about 500 A of field current.
     #[test]

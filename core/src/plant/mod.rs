@@ -2,10 +2,10 @@
 //! governor, the synchronous generator, the DC link (rectifier, bus, inverter, brake), the induction
 //! motor, the propeller with its surface losses, and the turbines' fuel.
 
-pub mod prime_mover;
-pub mod generator;
 pub mod dc_link;
+pub mod fuel;
+pub mod generator;
 pub mod motor;
+pub mod prime_mover;
 pub mod propeller;
 pub mod propeller_losses;
-pub mod fuel;

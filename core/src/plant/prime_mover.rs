@@ -1,9 +1,9 @@
 //! LM2500 gas turbine (thesis ch. 2.1, eq. 2.1) and its discrete PI speed governor with
 //! throttle saturation and slew limit.
 
+use crate::checks::Validator;
 use crate::control::DiscretePi;
-use crate::units::rpm_to_rad_s;
-use crate::validate::Validator;
+use crate::numerics::units::rpm_to_rad_s;
 use serde::{Deserialize, Serialize};
 
 /// Turbine constants in SI.

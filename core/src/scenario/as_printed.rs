@@ -160,7 +160,7 @@ mod tests {
     /// The start-up to 25 kn in calm water (400 s) with one switch as printed: its efficiencies,
     /// final shaft speed [rpm], ship speed [kn] and bus voltage [V].
     fn startup(name: &str) -> ([f64; 4], f64, f64, f64) {
-        let mut sc = crate::presets::startup();
+        let mut sc = crate::scenario::presets::startup();
         sc.as_printed = AsPrintedParams::default().with(name, true).unwrap_or_default();
         let r = crate::run(&sc).unwrap();
         let e = r.summary.efficiency;
@@ -200,7 +200,7 @@ mod tests {
         assert!(e1[2] < e0[2] - 0.03);
         // In the thesis' ship (Tables 5.1/5.5: L = 180 m, whose Table 2.3 resistance is the
         // larger), the 25 kn propeller torque is beyond the P-as-poles motor's peak.
-        let mut sc = crate::presets::head_seas_ss6();
+        let mut sc = crate::scenario::presets::head_seas_ss6();
         sc.as_printed.motor_p_is_poles = true;
         sc.as_printed.table_5_ship = true;
         // The refusal names the switch before the motor's ratings.

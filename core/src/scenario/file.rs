@@ -24,7 +24,7 @@ impl Scenario {
                 let v = value.get(section)?.get(field)?;
                 Some(FieldError {
                     path: format!("{section}.{field}"),
-                    value: crate::validate::shorten(&v.to_string()),
+                    value: crate::checks::shorten(&v.to_string()),
                     message: format!("this field is gone: {to}"),
                 })
             })
@@ -41,17 +41,17 @@ impl Scenario {
         if !arrays.is_empty() {
             return Err(ScenarioError(arrays));
         }
-        let conflicts = crate::registry::conflicts(&value);
+        let conflicts = crate::scenario::registry::conflicts(&value);
         if !conflicts.is_empty() {
             return Err(ScenarioError(conflicts));
         }
         // From a borrow, so that an error can quote the offending value (serde names only the path).
         let sc: Scenario = serde_path_to_error::deserialize(&value).map_err(|e| {
             let path = dotted(e.path());
-            let found = value_at(&value, e.path()).map(|v| crate::validate::shorten(&v.to_string()));
+            let found = value_at(&value, e.path()).map(|v| crate::checks::shorten(&v.to_string()));
             let message = reader_message(&path, &e.into_inner().to_string());
             ScenarioError(vec![FieldError {
-                path: if path.is_empty() { "(top level)".into() } else { crate::validate::shorten(&path) },
+                path: if path.is_empty() { "(top level)".into() } else { crate::checks::shorten(&path) },
                 value: found.unwrap_or_default(),
                 message,
             }])
@@ -69,7 +69,7 @@ impl Scenario {
     /// The scenario as a JSON value, as `to_json` writes it.
     pub fn to_value(&self) -> serde_json::Value {
         let mut v = serde_json::to_value(self).unwrap_or_default();
-        crate::registry::drop_excluded(&mut v);
+        crate::scenario::registry::drop_excluded(&mut v);
         v
     }
 
@@ -92,7 +92,7 @@ impl Scenario {
         // A field set here replaces the ones it excludes in the base (a height of one's own, the
         // sea state); given both here, both stay, and the reader refuses them.
         for (path, _) in sets {
-            if let Some(m) = crate::registry::find(path) {
+            if let Some(m) = crate::scenario::registry::find(path) {
                 for ex in m.excludes {
                     if !sets.iter().any(|(p, _)| p == ex) {
                         if let Some((parent, key)) = ex.rsplit_once('.') {
@@ -147,7 +147,7 @@ pub fn migrate(root: &mut serde_json::Value) -> Result<(), ScenarioError> {
             }
             serde_json::Value::Object(_) => errors.push(FieldError {
                 path: old.to_string(),
-                value: crate::validate::shorten(&value.to_string()),
+                value: crate::checks::shorten(&value.to_string()),
                 message: format!("is the old name of {new}, which is given too: give {new} only"),
             }),
             // A `stepping` that is no object: the reader names it.
@@ -168,7 +168,7 @@ fn arrays_for_objects(input: &serde_json::Value, schema: &serde_json::Value, pat
     match input {
         serde_json::Value::Array(_) => out.push(FieldError {
             path: if path.is_empty() { "scenario".into() } else { path.into() },
-            value: crate::validate::shorten(&input.to_string()),
+            value: crate::checks::shorten(&input.to_string()),
             message: "must be a JSON object of named fields ({...}), not an array".into(),
         }),
         serde_json::Value::Object(map) => {
@@ -249,28 +249,30 @@ fn dotted(path: &serde_path_to_error::Path) -> String {
 fn reader_message(path: &str, serde_says: &str) -> String {
     if serde_says.starts_with("unknown field") {
         let (parent, _) = path.rsplit_once('.').unwrap_or(("", path));
-        let near = crate::registry::closest(path);
+        let near = crate::scenario::registry::closest(path);
         let hint = near.map(|n| format!("; did you mean {n}?")).unwrap_or_default();
         let section = if parent.is_empty() { "the scenario".to_string() } else { parent.to_string() };
         return format!("no such parameter in {section}{hint} (`aes-sim params` lists them all)");
     }
     if serde_says.starts_with("missing field") {
-        if let Some(m) = serde_says.split('`').nth(1).and_then(|f| crate::registry::find(&format!("{path}.{f}"))) {
+        if let Some(m) =
+            serde_says.split('`').nth(1).and_then(|f| crate::scenario::registry::find(&format!("{path}.{f}")))
+        {
             return format!("needs {} ({}), which {}", m.path, m.label, m.expects());
         }
     }
     if serde_says.starts_with("duplicate key") || serde_says.starts_with("nesting deeper") {
-        return crate::validate::shorten_message(serde_says);
+        return crate::checks::shorten_message(serde_says);
     }
     // The field, or the choice or pair that a deeper path ({"midpoint": 5}) sits in.
     let mut at = Some(path);
     while let Some(p) = at {
-        if let Some(m) = crate::registry::find(p).filter(|m| m.kind != "section" && m.kind != "list") {
+        if let Some(m) = crate::scenario::registry::find(p).filter(|m| m.kind != "section" && m.kind != "list") {
             return m.message();
         }
         at = p.rsplit_once('.').map(|(parent, _)| parent);
     }
-    match crate::registry::find(path) {
+    match crate::scenario::registry::find(path) {
         _ if path == "commands" => "must be a list of orders, e.g. [{\"t_s\": 0, \"speed_kn\": 25}]".into(),
         _ if path.is_empty() => "a scenario must be a JSON object of named sections ({...})".into(),
         _ => "must be a JSON object of named fields ({...})".into(),
@@ -290,7 +292,7 @@ fn value_at<'a>(root: &'a serde_json::Value, path: &serde_path_to_error::Path) -
 }
 
 fn one_error(path: &str, value: &str, msg: &dyn fmt::Display) -> ScenarioError {
-    use crate::validate::{shorten, shorten_message};
+    use crate::checks::{shorten, shorten_message};
     ScenarioError(vec![FieldError {
         path: shorten(path),
         value: shorten(value),
@@ -343,7 +345,7 @@ impl Strict {
             let at = if self.path.is_empty() { "(top level)" } else { self.path.as_str() };
             return Err(E::custom(format!(
                 "nesting deeper than {MAX_SCENARIO_DEPTH} levels at {}",
-                crate::validate::shorten(at)
+                crate::checks::shorten(at)
             )));
         }
         Ok(())
@@ -403,7 +405,7 @@ impl<'de> serde::de::Visitor<'de> for Strict {
             if out.contains_key(&key) {
                 return Err(serde::de::Error::custom(format!(
                     "duplicate key {} (each key may appear once)",
-                    crate::validate::shorten(&child.path)
+                    crate::checks::shorten(&child.path)
                 )));
             }
             let v = map.next_value_seed(child)?;

@@ -5,32 +5,32 @@
 //! rotating machines are given in rpm and ship speeds in knots because that is how engineers state
 //! them; the physics converts to SI on load.
 
-pub mod presets;
 pub mod as_printed;
-pub mod registry;
 pub mod file;
+pub mod presets;
+pub mod registry;
 
+use crate::checks::Validator;
 pub use crate::numerics::Integrator;
 use crate::signals::Signal;
-use crate::validate::Validator;
 use serde::{Deserialize, Serialize};
 
 // Each subsystem owns its parameters (field docs with the thesis source, defaults, ranges); the
 // scenario only composes them. Re-exported so that `scenario::X` names every part of the format.
-pub use crate::as_printed::AsPrintedParams;
-pub use crate::dc_link::{DcLinkParams, RectifierKind};
-pub use crate::design::{ControllerDesign, LqgLtrParams};
-pub use crate::generator::{FieldControlParams, GeneratorParams};
-pub use crate::maneuvering::{AbkowitzCoefficients, HullModelKind, HullParams};
-pub use crate::motor::{MotorParams, SlipControlParams};
-pub use crate::prime_mover::{GovernorParams, TurbineParams};
-pub use crate::propeller::{PropellerModelKind, PropellerParams};
-pub use crate::rudder::{AutopilotParams, RudderParams};
-pub use crate::seakeeping::params::{SeakeepingParams, SternMotion};
-pub use crate::speed_control::SpeedControlParams;
-pub use crate::surge::ShipParams;
-pub use crate::validate::{FieldError, ScenarioError};
-pub use crate::waves::{SeaKind, SeaParams};
+pub use crate::checks::{FieldError, ScenarioError};
+pub use crate::control::design::{ControllerDesign, LqgLtrParams};
+pub use crate::control::speed::SpeedControlParams;
+pub use crate::plant::dc_link::{DcLinkParams, RectifierKind};
+pub use crate::plant::generator::{FieldControlParams, GeneratorParams};
+pub use crate::plant::motor::{MotorParams, SlipControlParams};
+pub use crate::plant::prime_mover::{GovernorParams, TurbineParams};
+pub use crate::plant::propeller::{PropellerModelKind, PropellerParams};
+pub use crate::scenario::as_printed::AsPrintedParams;
+pub use crate::sea::seakeeping::params::{SeakeepingParams, SternMotion};
+pub use crate::sea::waves::{SeaKind, SeaParams};
+pub use crate::ship::maneuvering::{AbkowitzCoefficients, HullModelKind, HullParams};
+pub use crate::ship::rudder::{AutopilotParams, RudderParams};
+pub use crate::ship::surge::ShipParams;
 
 crate::params! {
     /// One complete run: ship, plant, propeller, controllers, commands and simulation settings.
@@ -62,7 +62,7 @@ crate::params! {
         /// tab); a single run ignores it.
         pub monte_carlo: MonteCarloParams = MonteCarloParams::default() => {},
         /// The thesis' equations as printed where we chose a corrected form (all off by default;
-        /// `core/src/as_printed.rs`).
+        /// `core/src/scenario/as_printed.rs`).
         pub as_printed: AsPrintedParams = AsPrintedParams::default() => {},
     }
 }
@@ -311,7 +311,7 @@ impl crate::params::CrossCheck for MonteCarloParams {
         if self.histogram_hi < self.histogram_lo {
             v.fail(
                 "histogram_hi",
-                crate::validate::num(self.histogram_hi),
+                crate::checks::num(self.histogram_hi),
                 format!("must be at least {}", v.path("histogram_lo")),
             );
         }
@@ -377,7 +377,7 @@ impl Scenario {
     }
 
     /// The ship's hull, resolved (`ship.hull`); the error names the field.
-    pub fn ship_hull(&self) -> Result<crate::ship_hull::ShipHull, String> {
+    pub fn ship_hull(&self) -> Result<crate::ship::hull::ShipHull, String> {
         self.ship.hull.resolve(self.ship.water_density_kg_m3).map_err(|(f, e)| format!("ship.hull.{f}: {e}"))
     }
 
@@ -390,8 +390,8 @@ impl Scenario {
     }
 
     /// The RAO table of this scenario's hull, grid and strip-theory switches (built once, shared).
-    pub fn rao_table(&self) -> Result<std::sync::Arc<crate::seakeeping::tables::RaoTable>, String> {
-        crate::rao_cache::rao_table(&self.ship_hull()?, &self.seakeeping.grid, &self.as_printed)
+    pub fn rao_table(&self) -> Result<std::sync::Arc<crate::sea::seakeeping::tables::RaoTable>, String> {
+        crate::sea::rao_cache::rao_table(&self.ship_hull()?, &self.seakeeping.grid, &self.as_printed)
     }
 
     /// The bus voltage set point the field control holds [V]: `controllers.field.bus_voltage_ref_v`,
@@ -456,7 +456,7 @@ impl Scenario {
         if self.seakeeping.rao_refresh_s < st.sea_sample_s {
             v.fail(
                 "seakeeping.rao_refresh_s",
-                crate::validate::num(self.seakeeping.rao_refresh_s),
+                crate::checks::num(self.seakeeping.rao_refresh_s),
                 "must be at least stepping.sea_sample_s",
             );
         }
@@ -467,7 +467,7 @@ impl Scenario {
                 sim.duration_s,
                 format!(
                     "with stepping.dt_s = {} this is {steps:.3e} steps; at most {MAX_STEPS:e}",
-                    crate::validate::num(dt)
+                    crate::checks::num(dt)
                 ),
             );
         }
@@ -478,7 +478,7 @@ impl Scenario {
                 sim.record_interval_s,
                 format!(
                     "with sim.duration_s = {} this records {rows:.3e} rows of {} columns; at most {:.0} rows ({MAX_RECORDED_VALUES:e} values): raise the interval or shorten the run",
-                    crate::validate::num(sim.duration_s),
+                    crate::checks::num(sim.duration_s),
                     crate::signals::N_SIGNALS,
                     MAX_RECORDED_ROWS.floor()
                 ),
@@ -498,7 +498,7 @@ impl Scenario {
                     self.sim.duration_s,
                     format!(
                         "with stepping.dt_s = {} this is {:.3e} steps and {work:.3e} units of work (steps times state size); at most {MAX_WORK:e}: shorten the run or raise stepping.dt_s",
-                        crate::validate::num(self.stepping.dt_s),
+                        crate::checks::num(self.stepping.dt_s),
                         self.sim.duration_s / self.stepping.dt_s
                     ),
                 )
@@ -656,7 +656,7 @@ mod tests {
         // Parsing with the checks gives serde_json's own value.
         let text = Scenario::default().to_json();
         assert_eq!(
-            crate::scenario_file::parse_bounded(&text).unwrap(),
+            crate::scenario::file::parse_bounded(&text).unwrap(),
             serde_json::from_str::<serde_json::Value>(&text).unwrap()
         );
     }

@@ -2,8 +2,8 @@
 //! (`aes-sim params`, the wasm's `paramMeta()`), look-ups by dotted path, "did you mean" hints,
 //! fields that exclude each other, and the README's table.
 
+use crate::checks::num;
 use crate::params::{ParamMeta, Section};
-use crate::validate::num;
 
 /// Every parameter of the scenario, in the order of its JSON.
 pub fn all() -> Vec<ParamMeta> {
@@ -45,8 +45,8 @@ fn is_set(m: &ParamMeta, v: Option<&serde_json::Value>) -> bool {
 /// Fields given together that exclude each other (`sea.h_sig_m` with `sea.sea_state`), in a
 /// scenario's JSON as read: one error each, at the excluded field. Refused, never resolved
 /// silently.
-pub fn conflicts(root: &serde_json::Value) -> Vec<crate::validate::FieldError> {
-    let mut out: Vec<crate::validate::FieldError> = Vec::new();
+pub fn conflicts(root: &serde_json::Value) -> Vec<crate::checks::FieldError> {
+    let mut out: Vec<crate::checks::FieldError> = Vec::new();
     for m in all().iter().filter(|m| !m.excludes.is_empty() && is_set(m, at(root, &m.path))) {
         for ex in m.excludes {
             let Some(v) = at(root, ex) else { continue };
@@ -54,9 +54,9 @@ pub fn conflicts(root: &serde_json::Value) -> Vec<crate::validate::FieldError> {
                 continue;
             }
             let label = find(ex).map(|e| e.label).unwrap_or("");
-            out.push(crate::validate::FieldError {
+            out.push(crate::checks::FieldError {
                 path: ex.to_string(),
-                value: crate::validate::shorten(&v.to_string()),
+                value: crate::checks::shorten(&v.to_string()),
                 message: format!("{label} cannot be given together with {} ({}): leave one out", m.path, m.label),
             });
         }
@@ -128,7 +128,7 @@ pub fn markdown_table() -> String {
             serde_json::Value::Null => format!("({})", m.empty),
             serde_json::Value::String(t) if t.len() > 24 => "(text)".into(),
             serde_json::Value::String(t) => format!("`\"{t}\"`"),
-            v => format!("`{}`", crate::validate::shorten(&v.to_string())),
+            v => format!("`{}`", crate::checks::shorten(&v.to_string())),
         };
         let allowed = match m.kind {
             "choice" | "text" if !m.choices.is_empty() => {

@@ -1,9 +1,9 @@
 //! RAO tables, built once per hull, grid and strip-theory switches and shared by every study
 //! (runs in waves, Monte Carlo trials, the fuel study, repeated runs in the browser).
 
-use crate::as_printed::AsPrintedParams;
-use crate::seakeeping::tables::{RaoTable, SeakeepingGrid};
-use crate::ship_hull::ShipHull;
+use crate::scenario::as_printed::AsPrintedParams;
+use crate::sea::seakeeping::tables::{RaoTable, SeakeepingGrid};
+use crate::ship::hull::ShipHull;
 use std::sync::{Arc, Mutex, OnceLock};
 
 /// A table is keyed by its hull (`ShipHull::table_key`), its grid and the strip-theory switches

@@ -8,7 +8,7 @@
 //! ship's heading psi: x north, y east); z_i(x, y, t) = a_i cos(w_i t - k_i (x cos mu_i + y sin mu_i)
 //! + gamma_i) with deep-water wave number k_i = w_i^2 / g.
 
-use crate::validate::Validator;
+use crate::checks::Validator;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
@@ -314,7 +314,7 @@ impl crate::params::CrossCheck for SeaParams {
             {
                 v.fail(
                     "omega_max_rad_s",
-                    crate::validate::num(self.omega_max_rad_s),
+                    crate::checks::num(self.omega_max_rad_s),
                     format!("must be above {} by 0.01 or more", v.path("omega_min_rad_s")),
                 );
             }
@@ -328,7 +328,7 @@ impl SeaParams {
         if self.h_sig_m > 0.0 && self.omega_n_rad_s > 0.0 {
             (self.h_sig_m, self.omega_n_rad_s)
         } else {
-            let (w, h) = crate::waves::sea_state(self.sea_state).unwrap_or((0.507, 5.0));
+            let (w, h) = crate::sea::waves::sea_state(self.sea_state).unwrap_or((0.507, 5.0));
             (h, w)
         }
     }

@@ -14,12 +14,12 @@
 //! its 6.15 m design draft. The default is the 5415 throughout: Table 2.3's (X_udot - m)' scaled
 //! by L = 142 m gives m - X_udot = 9.5e6 kg, the 5415's mass plus 10 % added mass, while L = 180 m
 //! gives 19.3e6 kg, 2.75 times Table 5.1's mass. `as_printed.table_5_ship` runs the thesis'
-//! numbers instead (core/src/as_printed.rs).
+//! numbers instead (core/src/scenario/as_printed.rs).
 
-use crate::as_printed::AsPrintedParams;
-use crate::hull_sections::{HullOffsets, Hydrostatics};
-use crate::seakeeping::strip::{BilgeKeels, MassProperties, Ship};
-use crate::validate::{num, Validator};
+use crate::checks::{num, Validator};
+use crate::scenario::as_printed::AsPrintedParams;
+use crate::sea::seakeeping::strip::{BilgeKeels, MassProperties, Ship};
+use crate::ship::sections::{HullOffsets, Hydrostatics};
 use serde::{Deserialize, Serialize};
 use std::sync::{Arc, Mutex, OnceLock};
 
@@ -437,7 +437,7 @@ impl ShipHull {
     /// The strip-theory hull (thesis ch. 2.5.1-2.5.2). Errors name the stations the radiation
     /// solver cannot represent.
     pub fn strip_ship(&self) -> Result<Ship, String> {
-        Ship::new(&self.offsets, self.draft_m, self.mass_props, self.bilge_keels, self.rho, crate::waves::G)
+        Ship::new(&self.offsets, self.draft_m, self.mass_props, self.bilge_keels, self.rho, crate::sea::waves::G)
     }
 
     /// Whether `strip_ship` builds, memoised by `table_key` (validation asks once per run, and
@@ -488,7 +488,7 @@ impl Ship {
     /// An embedded hull (`ship_hull`: "dtmb5415", "wigley") at its own design loading in water
     /// of 1025 kg/m^3.
     pub fn embedded(name: &str) -> Ship {
-        crate::ship_hull::HullSpec { name: name.into(), ..Default::default() }
+        crate::ship::hull::HullSpec { name: name.into(), ..Default::default() }
             .resolve(1025.0)
             .map_err(|(f, e)| format!("{f}: {e}"))
             .and_then(|h| h.strip_ship())
@@ -511,9 +511,9 @@ impl Ship {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::hull_sections::DTMB5415_OFFSETS;
     use crate::scenario::Scenario;
-    use crate::seakeeping::complex::cabs;
+    use crate::sea::seakeeping::complex::cabs;
+    use crate::ship::sections::DTMB5415_OFFSETS;
 
     fn resolve(spec: &HullSpec) -> Result<ShipHull, (String, String)> {
         spec.resolve(1025.0)
@@ -569,15 +569,15 @@ mod tests {
             ..Default::default()
         };
         let (a, b) = (resolve(&custom).unwrap().strip_ship().unwrap(), Ship::dtmb5415());
-        let rad = a.radiation_table(&crate::seakeeping::strip::default_omega_grid());
-        let rad_b = b.radiation_table(&crate::seakeeping::strip::default_omega_grid());
+        let rad = a.radiation_table(&crate::sea::seakeeping::strip::default_omega_grid());
+        let rad_b = b.radiation_table(&crate::sea::seakeeping::strip::default_omega_grid());
         let mut sc = Scenario::default();
         sc.ship.hull = custom;
         let table = sc.rao_table().unwrap();
         let grid = sc.seakeeping.grid;
         let (w, u, beta) = (grid.omegas()[17], grid.speeds()[4], grid.headings()[9]);
-        let ra = crate::seakeeping::strip::response(&a, &rad, w, u, beta, grid.roll_wave_amplitude_m);
-        let rb = crate::seakeeping::strip::response(&b, &rad_b, w, u, beta, grid.roll_wave_amplitude_m);
+        let ra = crate::sea::seakeeping::strip::response(&a, &rad, w, u, beta, grid.roll_wave_amplitude_m);
+        let rb = crate::sea::seakeeping::strip::response(&b, &rad_b, w, u, beta, grid.roll_wave_amplitude_m);
         assert_eq!(format!("{ra:?}"), format!("{rb:?}"));
         let t = table.interpolate(w, u, beta);
         for (x, y) in [(t.heave, ra.heave), (t.pitch, ra.pitch), (t.roll, ra.roll)] {

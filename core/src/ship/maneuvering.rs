@@ -16,8 +16,8 @@
 //!   default all six are dropped (`symmetric_hull = true`); `false` keeps eqs. 2.23-2.24 literally.
 //! - X_vvu, X_rru are the terms eq. 2.22 prints as X_vvv v^2 du and X_rrr r^2 du.
 
-use crate::rudder::{rudder_force, stern_inflow, RudderParams};
-use crate::validate::Validator;
+use crate::checks::Validator;
+use crate::ship::rudder::{rudder_force, stern_inflow, RudderParams};
 use serde::{Deserialize, Serialize};
 
 crate::params! {
@@ -322,7 +322,7 @@ impl crate::params::CrossCheck for AbkowitzCoefficients {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::units::kn_to_m_s;
+    use crate::numerics::units::kn_to_m_s;
 
     fn model() -> Abkowitz {
         Abkowitz::new(&AbkowitzCoefficients::default(), true, kn_to_m_s(22.0), 180.0, 1025.0)

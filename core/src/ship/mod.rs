@@ -2,7 +2,7 @@
 //! model's resistance, the Abkowitz maneuvering model and the rudder.
 
 pub mod hull;
-pub mod sections;
-pub mod surge;
 pub mod maneuvering;
 pub mod rudder;
+pub mod sections;
+pub mod surge;

@@ -95,7 +95,7 @@ impl HullOffsets {
                 if line.replace(' ', "") != "station_index,x_m,z_m,half_breadth_m" {
                     return Err(format!(
                         "line {line_no}: expected the header 'station_index,x_m,z_m,half_breadth_m', found '{}'",
-                        crate::validate::shorten(line)
+                        crate::checks::shorten(line)
                     ));
                 }
                 header_seen = true;
@@ -110,7 +110,7 @@ impl HullOffsets {
                 return Err(format!(
                     "line {line_no}: expected 4 numbers, found {} fields in '{}'",
                     if f.len() == 5 { "more than 4".to_string() } else { f.len().to_string() },
-                    crate::validate::shorten(line)
+                    crate::checks::shorten(line)
                 ));
             }
             let mut v = [0.0; 4];
@@ -119,13 +119,13 @@ impl HullOffsets {
                     .parse::<f64>()
                     .ok()
                     .filter(|x| x.is_finite())
-                    .ok_or_else(|| format!("line {line_no}: '{}' is not a number", crate::validate::shorten(s)))?;
+                    .ok_or_else(|| format!("line {line_no}: '{}' is not a number", crate::checks::shorten(s)))?;
             }
             for (name, x) in ["station_index", "x_m", "z_m", "half_breadth_m"].iter().zip(v) {
                 if x.abs() > MAX_COORDINATE_M {
                     return Err(format!(
                         "line {line_no}: {name} = {}: must be a number from -{MAX_COORDINATE_M} to {MAX_COORDINATE_M}",
-                        crate::validate::num(x)
+                        crate::checks::num(x)
                     ));
                 }
             }
@@ -271,7 +271,7 @@ fn section(s: &Station, t: f64) -> Section {
         for i in 1..s.z.len() {
             if zq <= s.z[i] {
                 let f = (zq - s.z[i - 1]) / (s.z[i] - s.z[i - 1]);
-                return crate::interp::lerp(s.half_breadth[i - 1], s.half_breadth[i], f);
+                return crate::numerics::interp::lerp(s.half_breadth[i - 1], s.half_breadth[i], f);
             }
         }
         *s.half_breadth.last().unwrap_or(&0.0)

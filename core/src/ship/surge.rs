@@ -1,7 +1,7 @@
 //! Ship surge in calm water (thesis ch. 2.3, eqs. 2.15-2.16).
 
-use crate::ship_hull::HullSpec;
-use crate::validate::Validator;
+use crate::checks::Validator;
+use crate::ship::hull::HullSpec;
 use serde::{Deserialize, Serialize};
 
 /// Surge constants in SI.
@@ -84,7 +84,7 @@ crate::params! {
 impl crate::params::CrossCheck for ShipParams {
     /// The hull must resolve, float and carry its appendages, in this water.
     fn cross_check(&self, v: &mut Validator) {
-        let named = crate::ship_hull::HULL_NAMES.contains(&self.hull.name.as_str());
+        let named = crate::ship::hull::HULL_NAMES.contains(&self.hull.name.as_str());
         if named && (900.0..=1100.0).contains(&self.water_density_kg_m3) {
             v.section("hull", |v| self.hull.validate(v, self.water_density_kg_m3));
         }
@@ -99,8 +99,8 @@ mod tests {
     #[test]
     fn resistance_at_25_knots() {
         let s = Surge::new(&ShipParams::default(), 7.0e6);
-        let r = s.resistance(crate::units::kn_to_m_s(25.0));
+        let r = s.resistance(crate::numerics::units::kn_to_m_s(25.0));
         assert!((r - 1.469e6).abs() < 1e3, "R = {r}");
-        assert_eq!(s.acceleration(r, crate::units::kn_to_m_s(25.0)), 0.0);
+        assert_eq!(s.acceleration(r, crate::numerics::units::kn_to_m_s(25.0)), 0.0);
     }
 }

@@ -13,7 +13,7 @@ use super::plant::{
     bus_voltage, field_current, omega_rm, omega_t, Held, Outputs, Plant, State, N_SETS, N_SHAFTS, SURGE,
 };
 use super::{SimError, Simulation};
-use crate::design::lqg_ltr::StateSpace;
+use crate::control::design::state_space::StateSpace;
 use crate::scenario::Scenario;
 use nalgebra::DMatrix;
 
@@ -135,7 +135,7 @@ mod tests {
     /// for the field step).
     #[test]
     fn linear_model_follows_the_plant_for_small_steps() {
-        let mut sc = crate::presets::acceleration(false);
+        let mut sc = crate::scenario::presets::acceleration(false);
         sc.initial.speed_kn = 20.0;
         sc.commands[0].speed_kn = Some(20.0);
         let m = drive_train(&sc).unwrap();
@@ -195,13 +195,13 @@ mod tests {
     /// on the field voltage).
     #[test]
     fn default_design_on_the_drive_train() {
-        let t = crate::design::LqgLtrParams::default();
-        let mut sc = crate::presets::acceleration(false);
+        let t = crate::control::design::LqgLtrParams::default();
+        let mut sc = crate::scenario::presets::acceleration(false);
         sc.initial.speed_kn = t.design_speed_kn;
         sc.commands[0].speed_kn = Some(t.design_speed_kn);
         let m = drive_train(&sc).unwrap();
-        let input = crate::design::lqg_ltr::DesignInput::from_plant(&m.system, t.mu, t.omega_p_rad_s, t.q);
-        let d = crate::design::lqg_ltr::design(&input).unwrap();
+        let input = crate::control::design::lqg_ltr::DesignInput::from_plant(&m.system, t.mu, t.omega_p_rad_s, t.q);
+        let d = crate::control::design::lqg_ltr::design(&input).unwrap();
         assert!(d.stable);
         assert!(d.riccati_residual_filter < 1e-12 && d.riccati_residual_control < 1e-12);
         for mg in &d.input_margins {

@@ -18,11 +18,12 @@
 
 use super::linearize::{drive_train, DriveTrainModel};
 use super::SimError;
-use crate::design::discrete::zero_order_hold;
-use crate::design::lqg_ltr::{compensator, design, Design, DesignInput, StateSpace};
-use crate::design::ControllerDesign;
+use crate::control::design::discrete::zero_order_hold;
+use crate::control::design::lqg_ltr::{compensator, design, Design, DesignInput};
+use crate::control::design::state_space::StateSpace;
+use crate::control::design::ControllerDesign;
 use crate::scenario::{Command, Scenario};
-use crate::waves::SeaParams;
+use crate::sea::waves::SeaParams;
 use nalgebra::DMatrix;
 
 /// The discretised design, shared by every set.

@@ -10,16 +10,16 @@ pub mod seaway;
 mod steady;
 pub mod summary;
 
+use crate::control::speed::SpeedController;
 use crate::control::DiscretePi;
-use crate::generator::FieldController;
-use crate::motor::SlipController;
-use crate::prime_mover::Governor;
-use crate::propeller_losses::{beta_out_of_water, torque_factor, LossParams, Ventilation};
-use crate::rudder::Autopilot;
+use crate::numerics::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg};
+use crate::plant::generator::FieldController;
+use crate::plant::motor::SlipController;
+use crate::plant::prime_mover::Governor;
+use crate::plant::propeller_losses::{beta_out_of_water, torque_factor, LossParams, Ventilation};
 use crate::scenario::{ControllerDesign, HullModelKind, Scenario};
+use crate::ship::rudder::Autopilot;
 use crate::signals::{Signal, N_SIGNALS};
-use crate::speed_control::SpeedController;
-use crate::units::{deg_to_rad, kn_to_m_s, m_s_to_kn, rad_s_to_rpm, rad_to_deg};
 use plant::{
     bus_voltage, drive_step, field_current, hull_step, omega_rm, omega_t, plant_step, Energy, Held, Outputs, Plant,
     State, ENERGY0, HEADING, NX, N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE, Y_POS,
@@ -325,7 +325,7 @@ impl Simulation {
             last_beta: [(1.0, 1.0); N_SHAFTS],
             hub0,
             h_over_r: [2.0 * hub0 / scenario.propeller.diameter_m; N_SHAFTS],
-            fuel_curve: crate::fuel::part_load_curve(),
+            fuel_curve: crate::plant::fuel::part_load_curve(),
             fuel_extrapolated: false,
             first_event: None,
             multi: MultiRate {
@@ -566,7 +566,7 @@ impl Simulation {
         let mut fuel = 0.0;
         let eta = self.scenario.seakeeping.turbine_rated_efficiency;
         for k in 0..N_SETS {
-            let (f, ex) = crate::fuel::fuel_power(
+            let (f, ex) = crate::plant::fuel::fuel_power(
                 &self.fuel_curve,
                 o.turbine_torque[k] * x[omega_t(k)],
                 self.scenario.plant.turbine.rated_power_w,

@@ -5,21 +5,21 @@
 //! midpoint rule in waves: `stepping.integrator`); the layout constants below name every slot. Energy accumulators ride along in the same array so that the energy books are integrated
 //! with exactly the same scheme as the states they describe.
 
-use crate::dc_link::{DcLink, RectifierFlow};
-use crate::generator::SyncGenerator;
-use crate::maneuvering::{handover_weight, Abkowitz};
-use crate::motor::{InductionMotor, MotorPoint};
+use crate::numerics::units::kn_to_m_s;
 use crate::numerics::Integrator;
-use crate::prime_mover::GasTurbine;
-use crate::propeller::{Conditions, FourQuadrant, OpenWater, PropellerLoad};
-use crate::rudder::{rudder_force, stern_inflow, Inflow, RudderParams};
+use crate::plant::dc_link::{DcLink, RectifierFlow};
+use crate::plant::generator::SyncGenerator;
+use crate::plant::motor::{InductionMotor, MotorPoint};
+use crate::plant::prime_mover::GasTurbine;
+use crate::plant::propeller::{Conditions, FourQuadrant, OpenWater, PropellerLoad};
 use crate::scenario::{HullModelKind, PropellerModelKind, RectifierKind, Scenario};
-use crate::surge::Surge;
-use crate::units::kn_to_m_s;
+use crate::ship::maneuvering::{handover_weight, Abkowitz};
+use crate::ship::rudder::{rudder_force, stern_inflow, Inflow, RudderParams};
+use crate::ship::surge::Surge;
 use std::f64::consts::PI;
 
 /// Shafts (independent plants): the hull's count, owned by `ship_hull`.
-pub use crate::ship_hull::N_SHAFTS;
+pub use crate::ship::hull::N_SHAFTS;
 /// Turbine-generator sets per shaft.
 pub const SETS_PER_SHAFT: usize = 2;
 /// Turbine-generator sets in all.

@@ -5,8 +5,8 @@ use super::plant::{bus_voltage, field_current, omega_rm, omega_t, Outputs, Plant
 use super::plant::{HEADING, N_SETS, N_SHAFTS, SURGE, SWAY, X_POS, YAW_RATE, Y_POS};
 use super::seaway::SeaSample;
 use super::Controllers;
+use crate::numerics::units::{m_s_to_kn, rad_s_to_rpm};
 use crate::signals::N_SIGNALS;
-use crate::units::{m_s_to_kn, rad_s_to_rpm};
 
 /// Everything a row is computed from, with the sums that several signals share done once.
 pub(super) struct Recording<'a> {
@@ -36,7 +36,7 @@ impl Recording<'_> {
         (0..N_SETS).map(f).sum::<f64>() / N_SETS as f64
     }
     pub fn rad_to_deg(&self, a: f64) -> f64 {
-        crate::units::rad_to_deg(a)
+        crate::numerics::units::rad_to_deg(a)
     }
     pub fn ship_speed_kn(&self) -> f64 {
         m_s_to_kn(super::speed_through_water(self.x))

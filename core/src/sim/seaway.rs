@@ -27,12 +27,12 @@
 //! runs still add in the same order; the RAO table's values at each component's frequency are
 //! looked up per grid point (speed, heading) the first time a refresh needs them.
 
-use crate::interp::{bracket, bracket_from};
+use crate::numerics::interp::{bracket, bracket_from};
 use crate::scenario::{Scenario, SeaKind};
-use crate::seakeeping::params::{HubPlace, SternMotion};
-use crate::seakeeping::tables::RaoTable;
-use crate::ship_hull::N_SHAFTS;
-use crate::waves::{newman_force, newman_sign, newman_weight, SeaSampling, WaveComponent, G};
+use crate::sea::seakeeping::params::{HubPlace, SternMotion};
+use crate::sea::seakeeping::tables::RaoTable;
+use crate::sea::waves::{newman_force, newman_sign, newman_weight, SeaSampling, WaveComponent, G};
+use crate::ship::hull::N_SHAFTS;
 use num_complex::Complex64 as C;
 use std::f64::consts::PI;
 
@@ -837,8 +837,8 @@ mod tests {
         let mut sc = Scenario::default();
         sc.sea.kind = SeaKind::Regular;
         sc.sea.omega_rad_s = 0.6;
-        let u = 25.0 * crate::units::KNOT_M_S;
-        let k = 0.36 / crate::waves::G;
+        let u = 25.0 * crate::numerics::units::KNOT_M_S;
+        let k = 0.36 / crate::sea::waves::G;
         let mut got = Vec::new();
         for printed in [false, true] {
             sc.as_printed.doppler_twice = printed;

@@ -4,8 +4,8 @@
 
 use super::plant::{Plant, SETS_PER_SHAFT};
 use super::SimError;
+use crate::numerics::units::{kn_to_m_s, rad_s_to_rpm};
 use crate::scenario::Scenario;
-use crate::units::{kn_to_m_s, rad_s_to_rpm};
 
 /// Relative mismatch of motor and propeller torque above which the motor cannot carry the load.
 const TORQUE_MATCH: f64 = 1e-6;
@@ -78,7 +78,7 @@ pub fn calm_water(p: &Plant, sc: &Scenario) -> Result<SteadyState, SimError> {
     let i_dc = p_inv_shaft / (SETS_PER_SHAFT as f64 * v_ref);
     let w_e = p.generator.electrical_speed(w_t);
     let r_total = p.dc_link.total_resistance(w_e);
-    let e_a = (v_ref + r_total * i_dc) / crate::dc_link::BRIDGE_VOLTAGE_RATIO;
+    let e_a = (v_ref + r_total * i_dc) / crate::plant::dc_link::BRIDGE_VOLTAGE_RATIO;
     let i_f = p.generator.field_current_for(e_a, w_t);
     let flow = p.dc_link.rectify(e_a, w_e, v_ref, false);
     let q_load = p.generator.friction_torque(w_t) + flow.p_generator / w_t;

@@ -42,7 +42,7 @@ pub fn compare(tuning: &LqgLtrParams) -> Result<Vec<ControllerRun>, String> {
     let mut out = Vec::new();
     for name in STUDIES {
         for design in [ControllerDesign::Pi, ControllerDesign::LqgLtr] {
-            let mut sc = crate::presets::preset(name).ok_or_else(|| format!("no preset {name}"))?;
+            let mut sc = crate::scenario::presets::preset(name).ok_or_else(|| format!("no preset {name}"))?;
             sc.controllers.design = design;
             sc.controllers.lqg_ltr = tuning.clone();
             let r = crate::run(&sc).map_err(|e| format!("{name} ({design:?}): {e}"))?;

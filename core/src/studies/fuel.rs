@@ -1,7 +1,7 @@
 //! The fuel study of ch. 5.2.4 (Fig. 5-12): steady states in regular seas with the mean added
 //! resistance, and the fuel power of one prime mover (`aes-sim fuel`, the page's fuel curves).
 
-use crate::fuel::{fuel_power, part_load_curve};
+use crate::plant::fuel::{fuel_power, part_load_curve};
 use std::ops::RangeInclusive;
 
 /// Wave frequencies the study takes [rad/s] (the RAO table's span and more), and how many at once
@@ -21,10 +21,9 @@ pub fn check_omegas(omegas: &[f64]) -> Result<(), String> {
         return Err(format!("fuel study: {} wave frequencies: give 1 to {MAX_OMEGAS}", omegas.len()));
     }
     match omegas.iter().find(|w| !OMEGA_RANGE_RAD_S.contains(w)) {
-        Some(w) => Err(format!(
-            "fuel study: wave frequency {} rad/s: must be from {lo} to {hi} rad/s",
-            crate::validate::num(*w)
-        )),
+        Some(w) => {
+            Err(format!("fuel study: wave frequency {} rad/s: must be from {lo} to {hi} rad/s", crate::checks::num(*w)))
+        }
         None => Ok(()),
     }
 }
@@ -52,7 +51,7 @@ pub fn run(sc: &crate::Scenario, omegas: &[f64]) -> Result<Vec<FuelPoint>, Strin
     check_omegas(omegas)?;
     let curve = part_load_curve();
     let speed_kn = sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(25.0);
-    let u = crate::units::kn_to_m_s(speed_kn);
+    let u = crate::numerics::units::kn_to_m_s(speed_kn);
     let table = sc.rao_table()?;
     let mut calm = sc.clone();
     calm.sea.kind = crate::scenario::SeaKind::Calm;

@@ -2,11 +2,11 @@
 //! study (Fig. 5-12), the controller study, regressions, the validation report against the
 //! thesis' numbers, and the IPS stability tool (ch. 4).
 
-pub mod montecarlo;
-pub mod stats;
-pub mod fuel;
 pub mod controller;
-pub mod regression;
-pub mod validation_report;
+pub mod fuel;
 pub mod ips;
+pub mod montecarlo;
+pub mod regression;
+pub mod stats;
 pub mod thesis_values;
+pub mod validation_report;

@@ -18,10 +18,10 @@
 //!   encounter frequency, and the up-crossing rate of eq. 5.3.
 
 use crate::scenario::{Scenario, SeaKind};
-use crate::seakeeping::params::HubPlace;
+use crate::sea::seakeeping::params::HubPlace;
 use crate::signals::Signal;
 use crate::sim::{Prototype, SimError};
-use crate::stats::{rice_upcrossing_rate, trial_seed, welch, ExactMoments, Histogram};
+use crate::studies::stats::{rice_upcrossing_rate, trial_seed, welch, ExactMoments, Histogram};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::f64::consts::PI;
@@ -117,7 +117,7 @@ impl Partial {
     /// validates it fully ([`Partial::validate`]).
     pub fn from_json(text: &str) -> Result<Partial, String> {
         let p: Partial = serde_json::from_str(text)
-            .map_err(|e| format!("not a Monte Carlo partial: {}", crate::validate::shorten_message(&e.to_string())))?;
+            .map_err(|e| format!("not a Monte Carlo partial: {}", crate::checks::shorten_message(&e.to_string())))?;
         p.validate()?;
         Ok(p)
     }
@@ -127,7 +127,7 @@ impl Partial {
     /// and that every accumulator has the quantum, order, bins and counts this study makes
     /// (nothing more samples than trials, nothing that could overflow when merged).
     pub fn validate(&self) -> Result<(), String> {
-        use crate::validate::shorten;
+        use crate::checks::shorten;
         if self.format != FORMAT || self.version != VERSION {
             return Err(format!(
                 "format = '{}' version {}: expected '{FORMAT}' version {VERSION}",
@@ -155,7 +155,7 @@ impl Partial {
         if self.record_interval_s != sc.sim.record_interval_s {
             return Err(format!(
                 "record_interval_s = {}: must equal the scenario's sim.record_interval_s = {}",
-                crate::validate::num(self.record_interval_s),
+                crate::checks::num(self.record_interval_s),
                 sc.sim.record_interval_s
             ));
         }
@@ -365,7 +365,7 @@ impl Partial {
         let len = u64::from_le_bytes(b[8..16].try_into().map_err(|_| bad("length"))?) as usize;
         let json = b.get(16..16usize.saturating_add(len)).ok_or_else(|| bad("length"))?;
         let head: BinaryHead =
-            serde_json::from_slice(json).map_err(|e| bad(&crate::validate::shorten_message(&e.to_string())))?;
+            serde_json::from_slice(json).map_err(|e| bad(&crate::checks::shorten_message(&e.to_string())))?;
         let mut p = head.partial;
         let total: usize = head.rows.iter().try_fold(0usize, |a, &r| a.checked_add(r)).ok_or_else(|| bad("rows"))?;
         let body = &b[16 + len..];
@@ -648,7 +648,7 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
     } else {
         (0.6 * wn, 4.0 * wn)
     };
-    let u = crate::units::kn_to_m_s(sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(25.0));
+    let u = crate::numerics::units::kn_to_m_s(sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(25.0));
     let psi = 0.0;
     let mu0 = (sc.sea.from_deg + 180.0).to_radians();
     let (nw, nd) = (400usize, 61usize);
@@ -670,8 +670,8 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
     let (mut m0, mut m2) = (0.0, 0.0);
     for i in 0..nw {
         let w = w_lo + (i as f64 + 0.5) * dw;
-        let s = crate::waves::bretschneider(w, h, wn);
-        let kw = w * w / crate::waves::G;
+        let s = crate::sea::waves::bretschneider(w, h, wn);
+        let kw = w * w / crate::sea::waves::G;
         for &(d, wt) in &dirs {
             let beta = psi - (mu0 + d);
             let r = table.interpolate(w, u, beta);

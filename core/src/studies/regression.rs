@@ -6,8 +6,8 @@
 //! The long presets run in full; the two Monte Carlo presets store one trial's run and a
 //! four-trial study shortened to 20 s.
 
-use crate::montecarlo::{run_range, summary};
-use crate::presets::preset;
+use crate::scenario::presets::preset;
+use crate::studies::montecarlo::{run_range, summary};
 
 /// FNV-1a over the bits of every value of a column: equal only if every recorded number is
 /// identical.

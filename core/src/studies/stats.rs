@@ -362,7 +362,7 @@ pub fn welch(signal: &[f64], dt: f64, segment: usize) -> (Vec<f64>, Vec<f64>) {
     let step = (seg / 2).max(1);
     let window: Vec<f64> = (0..seg).map(|i| 0.5 - 0.5 * libm::cos(2.0 * PI * i as f64 / seg as f64)).collect();
     let wsum2: f64 = window.iter().map(|w| w * w).sum();
-    let fft = crate::fft::Fft::new(seg);
+    let fft = crate::numerics::fft::Fft::new(seg);
     let n_out = seg / 2 + 1;
     let mut psd = vec![0.0; n_out];
     let mut count = 0usize;

@@ -4,12 +4,12 @@
 //! report's diff, and `aes-sim validate --check` (run by `./build.sh test`) fails when a row leaves
 //! its tolerance or the committed report is stale.
 
-use crate::montecarlo::{run_range, study_summary};
-use crate::presets::preset;
+use crate::output::svg_plot::{check_well_formed, svg, Panel, Plot, Series};
+use crate::scenario::presets::preset;
 use crate::scenario::{Scenario, SternMotion};
-use crate::stability::{generator_side::GeneratorSideParams, motor_side::MotorSideParams};
-use crate::svg_plot::{check_well_formed, svg, Panel, Plot, Series};
-use crate::thesis_values;
+use crate::studies::ips::{generator_side::GeneratorSideParams, motor_side::MotorSideParams};
+use crate::studies::montecarlo::{run_range, study_summary};
+use crate::studies::thesis_values;
 use serde::Serialize;
 
 /// How far ours may be from the thesis' number.
@@ -66,7 +66,7 @@ pub struct Section {
     pub figures: Vec<Figure>,
 }
 
-/// A figure of the report: `FIGURE_DIR/{name}.svg` beside the report, made by [`crate::svg_plot`].
+/// A figure of the report: `FIGURE_DIR/{name}.svg` beside the report, made by [`crate::output::svg_plot`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Figure {
     /// The file's stem.
@@ -264,7 +264,7 @@ fn run(sc: &Scenario) -> Result<crate::RunResult, String> {
 
 /// The ch. 5.3 run (head seas SS6, 25 kn, 80 s) at the thesis' depth h0 = 6 m, with these
 /// as-printed switches and this stern motion.
-fn head_seas(ap: crate::as_printed::AsPrintedParams, stern: SternMotion) -> Result<crate::RunResult, String> {
+fn head_seas(ap: crate::scenario::as_printed::AsPrintedParams, stern: SternMotion) -> Result<crate::RunResult, String> {
     let mut sc = preset("head-seas-ss6").ok_or("no preset")?;
     sc.set_hub_depth_m(6.0);
     sc.as_printed = ap;
@@ -273,7 +273,7 @@ fn head_seas(ap: crate::as_printed::AsPrintedParams, stern: SternMotion) -> Resu
 }
 
 fn startup_to(kn: f64) -> Scenario {
-    let mut s = crate::presets::startup();
+    let mut s = crate::scenario::presets::startup();
     s.commands[0].speed_kn = Some(kn);
     s.sim.duration_s = 400.0;
     s
@@ -309,7 +309,7 @@ fn table_2_4() -> Result<Section, String> {
     ];
     let mut rows = Vec::new();
     for (ss, w_key, h_key) in printed {
-        let (w_ours, h_ours) = crate::waves::sea_state(ss).ok_or("no sea state")?;
+        let (w_ours, h_ours) = crate::sea::waves::sea_state(ss).ok_or("no sea state")?;
         rows.push(calibrated(
             &format!("SS{ss} peak frequency"),
             "Table 2.4",
@@ -332,7 +332,8 @@ fn table_2_4() -> Result<Section, String> {
         let w = thesis_f64(w_key);
         let (lo, hi, n) = (0.05 * w, 20.0 * w, 20_000);
         let dw = (hi - lo) / n as f64;
-        let m0: f64 = (0..n).map(|i| crate::waves::bretschneider(lo + (i as f64 + 0.5) * dw, h_ours, w) * dw).sum();
+        let m0: f64 =
+            (0..n).map(|i| crate::sea::waves::bretschneider(lo + (i as f64 + 0.5) * dw, h_ours, w) * dw).sum();
         rows.push(row(
             &format!("SS{ss} spectral area m0 / (H^2/16)"),
             "eq. 2.58 (closed form)",
@@ -624,16 +625,17 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     let order = sc_brk.commands.get(1).map_or(0.0, |c| c.t_s);
     let u = sig(&brk, "ship_speed_kn");
     let m = crate::sim::plant::Plant::new(&sc_brk)?.surge_mass;
-    let ke_of = |m: f64, kn: f64| 0.5 * m * (kn * crate::units::KNOT_M_S) * (kn * crate::units::KNOT_M_S);
+    let ke_of =
+        |m: f64, kn: f64| 0.5 * m * (kn * crate::numerics::units::KNOT_M_S) * (kn * crate::numerics::units::KNOT_M_S);
     let dke = (ke_of(m, u.max) - ke_of(m, u.final_)) / 2.0 / 1e6;
     let brake = brk.summary.energy_j.brake / 2.0 / 1e6;
     // The thesis' own ship (Table 5.1: m = 7e6 kg) at the same speeds: its kinetic energy per
     // plant, the mass that would make that 10 MJ, and the speed lost while giving up 10 MJ.
-    let m5 = crate::ship_hull::TABLE_5_SHIP.mass_kg;
+    let m5 = crate::ship::hull::TABLE_5_SHIP.mass_kg;
     let ke5 = ke_of(m5, u.max) / 2.0 / 1e6;
     let m10 = 2.0 * (e_thesis * 1e6) / ke_of(1.0, u.max);
-    let u0 = u.max * crate::units::KNOT_M_S;
-    let u10 = (u0 * u0 - 2.0 * 2.0 * (e_thesis * 1e6) / m5).sqrt() / crate::units::KNOT_M_S;
+    let u0 = u.max * crate::numerics::units::KNOT_M_S;
+    let u10 = (u0 * u0 - 2.0 * 2.0 * (e_thesis * 1e6) / m5).sqrt() / crate::numerics::units::KNOT_M_S;
     let share = brake / dke;
     rows.push(explained(
         "energy to dissipate per plant in AC braking",
@@ -717,7 +719,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     let sc360 = preset("turn-360").ok_or("no preset")?;
     let t360 = run(&sc360)?;
     let len = sc360.ship_hull()?.rigid_body(&sc360.as_printed).length_m;
-    let u25 = sc360.initial.speed_kn * crate::units::KNOT_M_S;
+    let u25 = sc360.initial.speed_kn * crate::numerics::units::KNOT_M_S;
     // The tactical diameter: the turn starts heading north, so the circle's width is its extent east.
     let radius = |r: &crate::RunResult| {
         let y = sig(r, "y_m");
@@ -757,7 +759,10 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         match crate::run(&sc) {
             Ok(r) => {
                 let (rate, kn) = (sig(&r, "yaw_rate_deg_s").final_, sig(&r, "ship_speed_kn").final_);
-                format!("turns steadily at r' = {:.3}", rate.to_radians() * len / (kn * crate::units::KNOT_M_S))
+                format!(
+                    "turns steadily at r' = {:.3}",
+                    rate.to_radians() * len / (kn * crate::numerics::units::KNOT_M_S)
+                )
             }
             Err(crate::sim::SimError::Diverged { time_s, .. }) => {
                 format!("diverges {:.0} s after the order", time_s - t_order)
@@ -770,26 +775,26 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     // hull alone and with the rudder's lift (eqs. 2.23-2.24, 2.26-2.30), and the steady turns of
     // the hull with its rudder (the spiral-test curve).
     let body = sc360.ship_hull()?.rigid_body(&sc360.as_printed);
-    let abk = crate::maneuvering::Abkowitz::new(
+    let abk = crate::ship::maneuvering::Abkowitz::new(
         &sc360.hull.abkowitz,
         sc360.hull.symmetric_hull,
-        crate::units::kn_to_m_s(sc360.hull.linearization_speed_kn),
+        crate::numerics::units::kn_to_m_s(sc360.hull.linearization_speed_kn),
         body.length_m,
         sc360.ship.water_density_kg_m3,
     );
     let (rho, x_p) = (sc360.ship.water_density_kg_m3, body.rudder_x_aft_m);
-    let c_hull = crate::maneuvering::stability_index(&abk, None, rho, u25);
-    let c_rud = crate::maneuvering::stability_index(&abk, Some((&sc360.rudder, x_p)), rho, u25);
+    let c_hull = crate::ship::maneuvering::stability_index(&abk, None, rho, u25);
+    let c_rud = crate::ship::maneuvering::stability_index(&abk, Some((&sc360.rudder, x_p)), rho, u25);
     // Eqs. 2.26-2.27 as printed, v + x_p r with x_p positive aft (as eq. 2.19's moment takes it):
     // the rudder's lift derivative Y_d = -A_r C_L / L^2 then adds Y_d to Y_v, +Y_d x_p/L to Y_r,
     // -Y_d x_p/L to N_v and -Y_d (x_p/L)^2 to N_r (the yaw damping's sign turned).
     let c_printed = {
-        let [yv, yr, nv, nr] = crate::maneuvering::linear_derivatives(&abk, None, rho, u25);
+        let [yv, yr, nv, nr] = crate::ship::maneuvering::linear_derivatives(&abk, None, rho, u25);
         let yd = -sc360.rudder.area_m2 * sc360.rudder.lift_slope / (len * len);
         let k = x_p / len;
         (yv + yd) * (nr - yd * k * k) - (nv - yd * k) * (yr + yd * k)
     };
-    let steady = |rp: f64| crate::maneuvering::steady_turn(&abk, &sc360.rudder, rho, x_p, u25, rp * u25 / len);
+    let steady = |rp: f64| crate::ship::maneuvering::steady_turn(&abk, &sc360.rudder, rho, x_p, u25, rp * u25 / len);
     let (mut loop_deg, mut loop_r) = (0.0f64, 0.0);
     for i in 1..=60 {
         let rp = 0.01 * f64::from(i);
@@ -801,7 +806,8 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
     }
     let (v3, d3) = steady(1.0 / 3.0).ok_or("no steady turn at r' = 1/3")?;
     let c = &sc360.hull.abkowitz;
-    let (vp, rp3, du) = (v3 / u25, 1.0 / 3.0, (u25 - crate::units::kn_to_m_s(sc360.hull.linearization_speed_kn)) / u25);
+    let (vp, rp3, du) =
+        (v3 / u25, 1.0 / 3.0, (u25 - crate::numerics::units::kn_to_m_s(sc360.hull.linearization_speed_kn)) / u25);
     let n_vrr = c.nvrr * vp * rp3 * rp3;
     let n_r = c.nr * rp3 + c.nru * rp3 * du + c.nrrr * rp3 * rp3 * rp3;
     rows.push(explained(
@@ -1069,14 +1075,14 @@ fn braking_figure(brk: &crate::RunResult, order: f64, t10: f64) -> Result<Figure
     )
 }
 
-fn mc(sc: &Scenario, trials: u64) -> Result<crate::montecarlo::StudySummary, String> {
+fn mc(sc: &Scenario, trials: u64) -> Result<crate::studies::montecarlo::StudySummary, String> {
     let mut sc = sc.clone();
     sc.monte_carlo.trials = trials;
     study_summary(&run_range(&sc, 0, trials)?)
 }
 
 /// The arrival-time histogram as a density over all `trials` (censored trials count in no bin).
-fn arrival_density(a: &crate::montecarlo::ArrivalTimes, trials: u64) -> Vec<(f64, f64)> {
+fn arrival_density(a: &crate::studies::montecarlo::ArrivalTimes, trials: u64) -> Vec<(f64, f64)> {
     let h = &a.histogram;
     let nb = h.counts.len().max(1);
     let width = (h.hi - h.lo) / nb as f64;
@@ -1107,20 +1113,22 @@ fn table_5_8(size: Size) -> Result<Section, String> {
     let nu0 = (rice.m2 / rice.m0).sqrt() / (2.0 * std::f64::consts::PI);
     // Our spectrum at the thesis' level, and the standard deviation the thesis' pair (Z, rate)
     // needs at our zero-crossing rate (eq. 5.3 solved for M0).
-    let rate_at_thesis_z = crate::stats::rice_upcrossing_rate(rice.m0, rice.m2, thesis_z);
+    let rate_at_thesis_z = crate::studies::stats::rice_upcrossing_rate(rice.m0, rice.m2, thesis_z);
     let sigma_implied = thesis_z / libm::sqrt(2.0 * libm::log(nu0 / thesis_rate));
     // Rice (no trials) for the same study in a long-crested sea and with the consistent sign.
-    let variant = |f: &dyn Fn(&mut Scenario)| -> Result<crate::montecarlo::RiceSummary, String> {
+    let variant = |f: &dyn Fn(&mut Scenario)| -> Result<crate::studies::montecarlo::RiceSummary, String> {
         let mut c = sc.clone();
         f(&mut c);
-        crate::montecarlo::rice_summary(&c)?.ok_or_else(|| "no Rice summary".to_string())
+        crate::studies::montecarlo::rice_summary(&c)?.ok_or_else(|| "no Rice summary".to_string())
     };
     let long = variant(&|c| c.sea.spreading = 0.0)?;
     let cons = variant(&|c| c.seakeeping.stern_motion = SternMotion::Consistent)?;
-    let rate_at = |r: &crate::montecarlo::RiceSummary, z: f64| crate::stats::rice_upcrossing_rate(r.m0, r.m2, z);
+    let rate_at = |r: &crate::studies::montecarlo::RiceSummary, z: f64| {
+        crate::studies::stats::rice_upcrossing_rate(r.m0, r.m2, z)
+    };
     // The same study with the hub lowered so that the level lies `z` below the calm hub: the
     // RAOs and so M0, M2 do not depend on the hub's height, only Z does.
-    let at_level = |z: f64| -> Result<(f64, crate::montecarlo::StudySummary), String> {
+    let at_level = |z: f64| -> Result<(f64, crate::studies::montecarlo::StudySummary), String> {
         let mut c = sc.clone();
         c.set_hub_depth_m(z + on * radius);
         Ok((z + on * radius, mc(&c, size.trials)?))
@@ -1145,7 +1153,7 @@ fn table_5_8(size: Size) -> Result<Section, String> {
     );
     let why_z = format!(
         "ours is h0 - {on} R = {h0:.2} - {on} x {radius:.2} = {:.2} m: our ventilation loop starts at h/R = {on} \
-         (ch. 2.3's two numbers read as a loop, core/src/propeller_losses.rs). The thesis' own recipe, h/R = 1.3 \
+         (ch. 2.3's two numbers read as a loop, core/src/plant/propeller_losses.rs). The thesis' own recipe, h/R = 1.3 \
          with its h0 = 6 m and R = 2.4 m, gives 2.88 m, and none of the levels it names (h/R 1.3, 1.1, 1.0, 0) \
          gives {z_text} m from h0 = 6 m (2.88, 3.36, 3.60, 6.00 m); {z_text} m is exactly 7.0 - 1.3 x 2.4: the thesis' inputs \
          give its Z only with the hub 1 m deeper than the printed 6 m. Set at Z = {z_text} m (h0 = 7 m, h/R = 1.3) our \
@@ -1293,7 +1301,7 @@ fn excess_energy(size: Size) -> Result<Section, String> {
     let sub_std = e.std.unwrap_or(f64::NAN);
     let calm_mw = {
         let mut calm = sc.clone();
-        calm.sea.kind = crate::waves::SeaKind::Calm;
+        calm.sea.kind = crate::sea::waves::SeaKind::Calm;
         calm.sim.duration_s = 1.0;
         let r = run(&calm)?;
         r.summary.signals["im_power_pu"].final_ * sc.plant.motor.rated_power_w / 1e6
@@ -1350,13 +1358,13 @@ fn analytic(size: Size, st: &crate::RunResult) -> Result<Section, String> {
         Tolerance::Abs(1e-9),
         "RK4 with 1 ms steps closes the books to round-off",
     ));
-    let (w, h) = crate::waves::sea_state(6).ok_or("no sea state")?;
-    let comps = crate::waves::SeaSampling::new(h, w, 0.0).sample(1);
+    let (w, h) = crate::sea::waves::sea_state(6).ok_or("no sea state")?;
+    let comps = crate::sea::waves::SeaSampling::new(h, w, 0.0).sample(1);
     rows.push(row(
         "SS6, 200 components: sum a_i^2 / 2 over H^2/16",
         "Parseval (eq. 2.58)",
         1.0,
-        crate::waves::m0(&comps) / (h * h / 16.0),
+        crate::sea::waves::m0(&comps) / (h * h / 16.0),
         "-",
         Tolerance::Abs(0.02),
         "the sampled band holds all but the tails of the spectrum",
@@ -1387,12 +1395,12 @@ fn analytic(size: Size, st: &crate::RunResult) -> Result<Section, String> {
 /// The DTMB 5415's heave and pitch RAOs in head seas against wavelength, at rest and at Fn 0.28,
 /// with Appendix A as printed, and the long-wave limit the rows above check.
 fn rao_figure() -> Result<Figure, String> {
-    use crate::as_printed::AsPrintedParams;
-    use crate::seakeeping::complex::cabs;
-    use crate::seakeeping::strip::{default_omega_grid, response_as, Ship};
+    use crate::scenario::as_printed::AsPrintedParams;
+    use crate::sea::seakeeping::complex::cabs;
+    use crate::sea::seakeeping::strip::{default_omega_grid, response_as, Ship};
     let ship = Ship::dtmb5415();
     let table = ship.radiation_table(&default_omega_grid());
-    let g = crate::waves::G;
+    let g = crate::sea::waves::G;
     let fn028 = 0.28 * libm::sqrt(g * ship.lpp);
     let printed = AsPrintedParams::default().with("appendix_a_typos", true).unwrap_or_default();
     let corrected = AsPrintedParams::default();
@@ -1450,13 +1458,13 @@ fn rao_figure() -> Result<Figure, String> {
 /// The second-order forces' share of the resistance (ch. 2.5.3) and the fuel of one prime mover
 /// (ch. 5.1, 5.2.4).
 fn second_order_and_fuel(base: &crate::RunResult) -> Result<Section, String> {
-    use crate::fuel::{fuel_power, part_load_curve};
+    use crate::plant::fuel::{fuel_power, part_load_curve};
     let sig = |r: &crate::RunResult, n: &str| r.summary.signals[n];
     let mut rows = Vec::new();
     // Share of the calm-water resistance R_sp (eq. 2.15) at the run's mean speed.
     let share = |r: &crate::RunResult, sc: &Scenario| {
-        let surge = crate::surge::Surge::new(&sc.ship, sc.ship_hull().map_or(0.0, |h| h.mass_kg));
-        let u = crate::units::kn_to_m_s(sig(r, "ship_speed_kn").mean);
+        let surge = crate::ship::surge::Surge::new(&sc.ship, sc.ship_hull().map_or(0.0, |h| h.mass_kg));
+        let u = crate::numerics::units::kn_to_m_s(sig(r, "ship_speed_kn").mean);
         (sig(r, "added_resistance_n").mean / surge.resistance(u), surge.resistance(u))
     };
     let sc6 = preset("head-seas-ss6").ok_or("no preset")?;
@@ -1543,7 +1551,7 @@ fn second_order_and_fuel(base: &crate::RunResult) -> Result<Section, String> {
         ),
     ));
     let fsc = preset("fuel-regular-seas").ok_or("no preset")?;
-    let pts = crate::fuel_study::run(&fsc, &[0.6])?;
+    let pts = crate::studies::fuel::run(&fsc, &[0.6])?;
     let head5 = pts.iter().find(|r| r.heading == "head" && r.amplitude_ft == 5.0).ok_or("no 5 ft head row")?;
     let head1 = pts.iter().find(|r| r.heading == "head" && r.amplitude_ft == 1.0).ok_or("no 1 ft head row")?;
     let (p1, e1) = (head1.turbine_power_w, head1.turbine_power_w / head1.fuel_power_w);
@@ -1582,9 +1590,9 @@ fn onsets(r: &crate::RunResult) -> Result<f64, String> {
 /// What each switch of `as_printed` (and `seakeeping.stern_motion`) moves: the thesis column is
 /// the run or computation with the switch as printed, ours the corrected one.
 fn as_printed(base: &crate::RunResult) -> Result<Section, String> {
-    use crate::as_printed::AsPrintedParams;
-    use crate::seakeeping::complex::cabs;
-    use crate::seakeeping::strip::{default_omega_grid, response_as, Ship};
+    use crate::scenario::as_printed::AsPrintedParams;
+    use crate::sea::seakeeping::complex::cabs;
+    use crate::sea::seakeeping::strip::{default_omega_grid, response_as, Ship};
     let sig = |r: &crate::RunResult, n: &str| r.summary.signals[n];
     let mut rows = Vec::new();
     // The ch. 5.3 run at the thesis' depth, corrected (`base`) and with one switch as printed.
@@ -1608,8 +1616,8 @@ fn as_printed(base: &crate::RunResult) -> Result<Section, String> {
 
     // The Doppler shift counted twice (eqs. 2.55, 2.59).
     let d = head_seas(one("doppler_twice"), SternMotion::Consistent)?;
-    let k = 0.36 / crate::waves::G;
-    let u = 25.0 * crate::units::KNOT_M_S;
+    let k = 0.36 / crate::sea::waves::G;
+    let u = 25.0 * crate::numerics::units::KNOT_M_S;
     let why = "the phase turns at omega0 + 2 k U instead of the encounter frequency omega0 + k U: the motions and \
                the hub depth come faster and the second-order force's slow part changes with them";
     let sw = "as_printed.doppler_twice";
@@ -1779,12 +1787,12 @@ fn as_printed(base: &crate::RunResult) -> Result<Section, String> {
         let abk = |ap: &AsPrintedParams| {
             let b = hull.rigid_body(ap);
             let h = crate::scenario::HullParams::default();
-            let u0 = crate::units::kn_to_m_s(h.linearization_speed_kn);
-            crate::maneuvering::Abkowitz::new(&h.abkowitz, h.symmetric_hull, u0, b.length_m, 1025.0)
+            let u0 = crate::numerics::units::kn_to_m_s(h.linearization_speed_kn);
+            crate::ship::maneuvering::Abkowitz::new(&h.abkowitz, h.symmetric_hull, u0, b.length_m, 1025.0)
         };
         let (a5, a0) = (abk(&t5), abk(&AsPrintedParams::default()));
         add("maneuvering surge mass m - X_udot".into(), sw, a5.m11 / 1e3, a0.m11 / 1e3, "t", why);
-        let u25 = crate::units::kn_to_m_s(25.0);
+        let u25 = crate::numerics::units::kn_to_m_s(25.0);
         add(
             "Table 2.3's straight-line resistance at 25 kn (eq. 2.15, which the hull's ship takes: 1469 kN)".into(),
             sw,
@@ -1839,9 +1847,9 @@ fn as_printed(base: &crate::RunResult) -> Result<Section, String> {
 /// Closed-form limits of the radiation solver (the semicircle) and of the strip theory (long
 /// waves on the DTMB 5415), with the tolerances of their unit tests.
 fn seakeeping_limits() -> Vec<Row> {
-    use crate::seakeeping::conformal::section_map;
-    use crate::seakeeping::radiation::coefficients;
-    use crate::seakeeping::strip::{default_omega_grid, response, Ship};
+    use crate::sea::seakeeping::conformal::section_map;
+    use crate::sea::seakeeping::radiation::coefficients;
+    use crate::sea::seakeeping::strip::{default_omega_grid, response, Ship};
     let (rho, g) = (1025.0, 9.81);
     let norm = rho * core::f64::consts::PI / 2.0;
     let mut rows = Vec::new();
@@ -1900,7 +1908,7 @@ fn seakeeping_limits() -> Vec<Row> {
             &format!("DTMB 5415 heave RAO, head seas, {name}"),
             src,
             1.0,
-            crate::seakeeping::complex::cabs(r.heave),
+            crate::sea::seakeeping::complex::cabs(r.heave),
             "m/m",
             Tolerance::Abs(3e-3),
             "",
@@ -1909,7 +1917,7 @@ fn seakeeping_limits() -> Vec<Row> {
             &format!("DTMB 5415 pitch RAO / k, head seas, {name}"),
             src,
             1.0,
-            crate::seakeeping::complex::cabs(r.pitch) / r.k,
+            crate::sea::seakeeping::complex::cabs(r.pitch) / r.k,
             "-",
             Tolerance::Abs(0.02),
             "the hull's length against the wave",
@@ -1921,7 +1929,7 @@ fn seakeeping_limits() -> Vec<Row> {
         "DTMB 5415 sway RAO",
         src,
         1.0,
-        crate::seakeeping::complex::cabs(r.sway),
+        crate::sea::seakeeping::complex::cabs(r.sway),
         "m/m",
         Tolerance::Abs(0.01),
         "at the waterline above G",
@@ -1930,7 +1938,7 @@ fn seakeeping_limits() -> Vec<Row> {
         "DTMB 5415 heave RAO",
         src,
         1.0,
-        crate::seakeeping::complex::cabs(r.heave),
+        crate::sea::seakeeping::complex::cabs(r.heave),
         "m/m",
         Tolerance::Abs(1e-3),
         "",
@@ -1943,9 +1951,9 @@ fn seakeeping_limits() -> Vec<Row> {
 /// forms, heave and pitch in long head waves, and the Fn 0.3 heave resonance. No published RAO is
 /// compared yet: core/data/wigley_journee1992_head_seas.csv awaits Journee's (1992) points.
 fn wigley_rows() -> Vec<Row> {
-    use crate::hull_sections::HullOffsets;
-    use crate::seakeeping::strip::{default_omega_grid, natural_periods, Ship};
-    use crate::seakeeping::wigley_check::heave_pitch;
+    use crate::sea::seakeeping::strip::{default_omega_grid, natural_periods, Ship};
+    use crate::sea::seakeeping::wigley_check::heave_pitch;
+    use crate::ship::sections::HullOffsets;
     let (l, b, t) = (100.0, 10.0, 6.25);
     let mut rows = Vec::new();
     let Ok(h) = HullOffsets::wigley().hydrostatics(t) else { return rows };

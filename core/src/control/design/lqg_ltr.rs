@@ -13,7 +13,8 @@
 use super::margins::{input_margins, LoopMargins};
 use super::reduction::{reduce, ReduceOptions, ReductionReport};
 use super::riccati::{care, residual};
-use crate::stability::{log_space, Pole};
+use super::state_space::StateSpace;
+use crate::studies::ips::{log_space, Pole};
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
@@ -47,29 +48,6 @@ pub struct DesignInput {
 pub const MAX_STATES: usize = 60;
 /// Most inputs/outputs accepted.
 pub const MAX_CHANNELS: usize = 10;
-
-/// A state-space model.
-#[derive(Debug, Clone, PartialEq)]
-pub struct StateSpace {
-    pub a: DMatrix<f64>,
-    pub b: DMatrix<f64>,
-    pub c: DMatrix<f64>,
-    pub d: DMatrix<f64>,
-}
-
-impl StateSpace {
-    /// Frequency response C (j w I - A)^-1 B + D.
-    pub fn response(&self, w: f64) -> Option<DMatrix<C>> {
-        let n = self.a.nrows();
-        if n == 0 {
-            return Some(self.d.map(|v| C::new(v, 0.0)));
-        }
-        let m = DMatrix::<C>::from_fn(n, n, |i, j| C::new(-self.a[(i, j)], if i == j { w } else { 0.0 }));
-        let b = self.b.map(|v| C::new(v, 0.0));
-        let x = m.lu().solve(&b)?;
-        Some(self.c.map(|v| C::new(v, 0.0)) * x + self.d.map(|v| C::new(v, 0.0)))
-    }
-}
 
 fn matrix(rows: &[Vec<f64>], name: &str) -> Result<DMatrix<f64>, String> {
     let r = rows.len();
@@ -297,7 +275,7 @@ pub fn singular_values(m: &DMatrix<C>) -> Vec<f64> {
 fn poles(a: &DMatrix<f64>) -> Result<Vec<Pole>, String> {
     let ev = crate::numerics::eigenvalues(a).ok_or("the closed-loop eigenvalues did not converge")?;
     let mut p: Vec<Pole> = ev.iter().map(|&l| Pole::of(l)).collect();
-    crate::stability::sort_poles(&mut p);
+    crate::studies::ips::sort_poles(&mut p);
     Ok(p)
 }
 

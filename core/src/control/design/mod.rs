@@ -8,6 +8,7 @@ pub mod lqg_ltr;
 pub mod margins;
 pub mod reduction;
 pub mod riccati;
+pub mod state_space;
 
 use serde::{Deserialize, Serialize};
 

@@ -6,9 +6,9 @@
 //! state that the integral action and Gamma = Re{G(j omega_p)^-1} rest on. The realisation is
 //! real: a conjugate pair becomes the block [[sigma, -omega], [omega, sigma]].
 
-use super::lqg_ltr::StateSpace;
-use crate::seakeeping::complex::cabs;
-use crate::stability::log_space;
+use super::state_space::StateSpace;
+use crate::sea::seakeeping::complex::cabs;
+use crate::studies::ips::log_space;
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};

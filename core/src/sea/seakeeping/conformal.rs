@@ -11,7 +11,7 @@
 //! a_{2n+1} = B A^n (eq. 2.35, see `bulb`). The radiation solver only needs the coefficients.
 
 use super::complex::cabs;
-use crate::hull_sections::{lewis, LewisForm};
+use crate::ship::sections::{lewis, LewisForm};
 use num_complex::Complex64 as C;
 use std::f64::consts::PI;
 

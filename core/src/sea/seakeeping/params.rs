@@ -1,8 +1,8 @@
 //! The scenario's seakeeping section: the RAO grid, the propeller hub's place, the surface-loss
 //! model's parameters and the multi-rate sampling of the seaway.
 
-use crate::propeller_losses::LossParams;
-use crate::validate::Validator;
+use crate::checks::Validator;
+use crate::plant::propeller_losses::LossParams;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
 
@@ -13,7 +13,7 @@ crate::params! {
     #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
     #[serde(deny_unknown_fields, default)]
     pub struct SeakeepingParams {
-        pub grid: crate::seakeeping::tables::SeakeepingGrid = Default::default() => {},
+        pub grid: crate::sea::seakeeping::tables::SeakeepingGrid = Default::default() => {},
         /// See `propeller_losses` for why 1.1 starts and 1.3 ends the loop.
         pub ventilation_on_h_over_r: f64 = LossParams::default().ventilation_on => {
             label: "Ventilation starts below h/R", unit: "-", range: -1.0..=5.0, source: "ch. 2.3",
@@ -85,7 +85,7 @@ impl crate::params::CrossCheck for SeakeepingParams {
         if self.ventilation_off_h_over_r < self.ventilation_on_h_over_r {
             v.fail(
                 "ventilation_off_h_over_r",
-                crate::validate::num(self.ventilation_off_h_over_r),
+                crate::checks::num(self.ventilation_off_h_over_r),
                 format!("must be at least {}", v.path("ventilation_on_h_over_r")),
             );
         }
@@ -166,8 +166,8 @@ impl SeakeepingParams {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::seakeeping::complex::cabs;
-    use crate::seakeeping::strip::{default_omega_grid, response, Ship};
+    use crate::sea::seakeeping::complex::cabs;
+    use crate::sea::seakeeping::strip::{default_omega_grid, response, Ship};
 
     /// Eq. 2.57 off the centreline: in long waves the ship follows the surface, so each hub keeps
     /// its depth whatever the heading. DTMB 5415 at rest, omega 0.1 rad/s (lambda/L = 43), hubs
@@ -182,7 +182,7 @@ mod tests {
         let ship = Ship::dtmb5415();
         let rad = ship.radiation_table(&default_omega_grid());
         let w = 0.1;
-        let k = w * w / crate::waves::G;
+        let k = w * w / crate::sea::waves::G;
         let m = SternMotion::Consistent;
         for beta_deg in [90.0f64, 120.0, 150.0] {
             let beta = beta_deg.to_radians();

@@ -327,7 +327,7 @@ pub fn modulus(q: C) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::seakeeping::conformal::{section_map, Form};
+    use crate::sea::seakeeping::conformal::{section_map, Form};
 
     const RHO: f64 = 1025.0;
     const G: f64 = 9.81;
@@ -348,7 +348,7 @@ mod tests {
             section_map(9.5, 6.15, 0.85).unwrap(),
             section_map(9.0, 6.15, 0.62).unwrap(),
             // A sonar-dome section of the 5415 (station 19.5) in the bulb form.
-            crate::seakeeping::conformal::bulb(0.725, 9.16, 1.834).unwrap(),
+            crate::sea::seakeeping::conformal::bulb(0.725, 9.16, 1.834).unwrap(),
         ];
         assert_eq!(maps[3].form, Form::Bulb);
         for m in &maps {

@@ -20,8 +20,8 @@ use super::complex::cexp;
 use super::conformal::{best_section_map, SectionMap};
 use super::radiation::{default_multipoles, solve, Contour, Radiation2d};
 use super::roll_damping::{components, RollHull};
-use crate::as_printed::AsPrintedParams;
-use crate::hull_sections::HullOffsets;
+use crate::scenario::as_printed::AsPrintedParams;
+use crate::ship::sections::HullOffsets;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
 
@@ -676,7 +676,7 @@ pub fn natural_periods(ship: &Ship, table: &RadiationTable) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::seakeeping::complex::{cabs, carg};
+    use crate::sea::seakeeping::complex::{cabs, carg};
     use std::f64::consts::PI;
     use std::sync::OnceLock;
 
@@ -700,7 +700,7 @@ mod tests {
     /// roll of the Lewis section.
     #[test]
     fn haskind_relation_for_sections() {
-        use crate::seakeeping::conformal::section_map;
+        use crate::sea::seakeeping::conformal::section_map;
         let (rho, g) = (1025.0, 9.81);
         for m in [
             section_map(9.5, 6.15, 0.9).unwrap(),

@@ -5,8 +5,8 @@
 use super::conformal::{bulb, section_map, Form, SectionMap};
 use super::radiation::{default_multipoles, solve, Contour};
 use super::strip::{default_omega_grid, response, response_as, RadiationTable, Response, Ship};
-use crate::as_printed::AsPrintedParams;
-use crate::interp::bracket;
+use crate::numerics::interp::bracket;
+use crate::scenario::as_printed::AsPrintedParams;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -54,11 +54,11 @@ crate::params! {
 }
 
 impl crate::params::CrossCheck for SeakeepingGrid {
-    fn cross_check(&self, v: &mut crate::validate::Validator) {
+    fn cross_check(&self, v: &mut crate::checks::Validator) {
         if self.omega_max < self.omega_min + 0.01 {
             v.fail(
                 "omega_max",
-                crate::validate::num(self.omega_max),
+                crate::checks::num(self.omega_max),
                 format!("must be above {} by 0.01 or more", v.path("omega_min")),
             );
         }
@@ -68,7 +68,7 @@ impl crate::params::CrossCheck for SeakeepingGrid {
 impl SeakeepingGrid {
     /// Errors name the field, its value and the allowed range.
     pub fn validate(&self) -> Result<(), String> {
-        let mut v = crate::validate::Validator::new();
+        let mut v = crate::checks::Validator::new();
         v.section("seakeeping.grid", |v| crate::params::Section::check_fields(self, v));
         v.finish().map_err(|e| e.to_string())
     }
@@ -78,7 +78,7 @@ impl SeakeepingGrid {
     }
     /// Speeds [m/s].
     pub fn speeds(&self) -> Vec<f64> {
-        lin(0.0, self.speed_max_kn * crate::units::KNOT_M_S, self.n_speed)
+        lin(0.0, self.speed_max_kn * crate::numerics::units::KNOT_M_S, self.n_speed)
     }
     /// Headings [rad].
     pub fn headings(&self) -> Vec<f64> {
@@ -299,7 +299,7 @@ pub fn section_json(
         if v.is_finite() && v > lo && v <= hi {
             Ok(())
         } else {
-            Err(format!("{name} = {} is outside ({lo}, {hi}]", crate::validate::num(v)))
+            Err(format!("{name} = {} is outside ({lo}, {hi}]", crate::checks::num(v)))
         }
     };
     chk("beam", beam, 0.0, 200.0)?;
@@ -312,7 +312,7 @@ pub fn section_json(
         // Below 1e-3 rad/s the multipole series loses every digit (deep water's long-wave limit).
         chk("omega", w, 0.0, 50.0)?;
         if w < MIN_OMEGA {
-            return Err(format!("omega = {}: must be from {MIN_OMEGA} to 50 rad/s", crate::validate::num(w)));
+            return Err(format!("omega = {}: must be from {MIN_OMEGA} to 50 rad/s", crate::checks::num(w)));
         }
     }
     let map: SectionMap = match form {
@@ -344,7 +344,7 @@ pub fn section_json(
         sway_roll: mode(&|r| r.a24, &|r| r.b24, None),
         multipoles: rs.iter().map(|r| r.multipoles).collect(),
     };
-    crate::validate::check_finite(&out)
+    crate::checks::check_finite(&out)
         .map_err(|e| format!("the section's coefficients are not finite ({e}): try another form or frequency"))?;
     serde_json::to_value(out).map_err(|e| e.to_string())
 }
@@ -412,7 +412,7 @@ pub fn rao_json(
     roll_wave_amplitude: f64,
 ) -> Result<Value, String> {
     if !(speed.is_finite() && (0.0..=30.0).contains(&speed)) {
-        return Err(format!("speed = {:.3} kn is outside [0, 58.3] kn", speed / crate::units::KNOT_M_S));
+        return Err(format!("speed = {:.3} kn is outside [0, 58.3] kn", speed / crate::numerics::units::KNOT_M_S));
     }
     if !heading.is_finite() {
         return Err(format!("heading = {heading} is not a number"));
@@ -422,7 +422,7 @@ pub fn rao_json(
     }
     for &w in omegas {
         if !(w.is_finite() && (MIN_OMEGA..=10.0).contains(&w)) {
-            return Err(format!("omega = {} rad/s: must be from {MIN_OMEGA} to 10 rad/s", crate::validate::num(w)));
+            return Err(format!("omega = {} rad/s: must be from {MIN_OMEGA} to 10 rad/s", crate::checks::num(w)));
         }
     }
     let rad = ship.radiation_table(&default_omega_grid());
@@ -439,7 +439,7 @@ pub fn rao_json(
             .collect(),
     };
     let out = RaoReport {
-        speed_kn: speed / crate::units::KNOT_M_S,
+        speed_kn: speed / crate::numerics::units::KNOT_M_S,
         heading_deg: heading.to_degrees(),
         omega0: omegas.to_vec(),
         omega_e: rs.iter().map(|r| r.omega_e).collect(),
@@ -452,7 +452,7 @@ pub fn rao_json(
         drift_force_n_per_m2: rs.iter().map(|r| r.drift_force).collect(),
         added_resistance_gerritsma_beukelman_n_per_m2: rs.iter().map(|r| r.added_resistance_gb).collect(),
     };
-    crate::validate::check_finite(&out)
+    crate::checks::check_finite(&out)
         .map_err(|e| format!("the RAOs are not finite ({e}): check the hull, draft and mass properties"))?;
     serde_json::to_value(out).map_err(|e| e.to_string())
 }
@@ -460,7 +460,7 @@ pub fn rao_json(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::seakeeping::complex::cabs;
+    use crate::sea::seakeeping::complex::cabs;
 
     /// At grid nodes the interpolation returns the direct strip-theory result; waves from port
     /// mirror those from starboard; between nodes it stays close to the direct result in heave

@@ -4,7 +4,7 @@
 //! core/data/wigley_journee1992_head_seas.csv (empty until the reference points are found).
 
 use super::strip::{response, RadiationTable, Ship};
-use crate::seakeeping::complex::cabs;
+use crate::sea::seakeeping::complex::cabs;
 use std::f64::consts::PI;
 
 /// Reference points for the Wigley I hull in head seas (see the file's header).
@@ -24,8 +24,8 @@ pub fn heave_pitch(ship: &Ship, table: &RadiationTable, froude: f64, lambda_over
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::hull_sections::HullOffsets;
-    use crate::seakeeping::strip::{default_omega_grid, natural_periods};
+    use crate::sea::seakeeping::strip::{default_omega_grid, natural_periods};
+    use crate::ship::sections::HullOffsets;
     use std::sync::OnceLock;
 
     fn wigley() -> &'static (Ship, RadiationTable) {
@@ -137,7 +137,7 @@ mod tests {
     #[test]
     #[ignore = "a timing, printed"]
     fn wigley_table_time_against_dtmb5415() {
-        use crate::seakeeping::tables::{RaoTable, SeakeepingGrid};
+        use crate::sea::seakeeping::tables::{RaoTable, SeakeepingGrid};
         let grid = SeakeepingGrid::default();
         let (wig, dtmb) = (Ship::wigley(), Ship::dtmb5415());
         let time = |s: &Ship| {

@@ -269,7 +269,7 @@ pub fn load_params<T>(base: &T, overrides: &[(String, String)]) -> Result<T, Str
 where
     T: serde::Serialize + serde::de::DeserializeOwned,
 {
-    use crate::validate::shorten;
+    use crate::checks::shorten;
     let defaults = serde_json::to_value(base).map_err(|e| e.to_string())?;
     let mut v = defaults.clone();
     for (path, text) in overrides {
@@ -290,7 +290,7 @@ where
             if !(x.is_finite() && x >= lo && x <= hi) {
                 return Err(format!(
                     "{k} = {}: must be a number from {lo:e} to {hi:e} (the default {d} within a factor of {PARAM_SPAN})",
-                    crate::validate::num(x)
+                    crate::checks::num(x)
                 ));
             }
         }
@@ -323,7 +323,7 @@ pub(crate) fn check_input(name: &str, unit: &str, x: f64, range: &RangeInclusive
     if x.is_finite() && range.contains(&x) {
         Ok(())
     } else {
-        Err(format!("{name} = {} {unit}: must be a number from {lo} to {hi} {unit}", crate::validate::num(x)))
+        Err(format!("{name} = {} {unit}: must be a number from {lo} to {hi} {unit}", crate::checks::num(x)))
     }
 }
 
@@ -334,7 +334,7 @@ pub(crate) fn check_steady(side: &str, inputs: &str, values: &[(&str, f64)]) -> 
         None => Ok(()),
         Some((name, x)) => Err(format!(
             "the {side} steady state at {inputs} has {name} = {}: the parameters or the operating point are outside what the model can represent",
-            crate::validate::num(*x)
+            crate::checks::num(*x)
         )),
     }
 }

@@ -8,8 +8,8 @@
 use super::generator_side::{GeneratorSideParams, LOAD_RANGE_A, OMEGA_RANGE_RAD_S, V_FD_RANGE_V};
 use super::motor_side::{MotorSideParams, TORQUE_RANGE_NM};
 use super::{bode_frequencies, load_params, LinearReport, LinearSystem, Margins, BODE_HZ_RANGE, MAX_BODE_POINTS};
+use crate::checks::{check_finite, num};
 use crate::params::{ParamMeta, Section};
-use crate::validate::{check_finite, num};
 use serde::{Deserialize, Serialize};
 
 crate::params! {
@@ -58,7 +58,7 @@ crate::params! {
 }
 
 impl crate::params::CrossCheck for OperatingPoint {
-    fn cross_check(&self, v: &mut crate::validate::Validator) {
+    fn cross_check(&self, v: &mut crate::checks::Validator) {
         if self.to_hz <= self.from_hz {
             v.fail("to_hz", num(self.to_hz), format!("must be above {}", v.path("from_hz")));
         }
@@ -84,7 +84,7 @@ impl Side {
         match name {
             "motor" => Ok(Side::Motor),
             "generator" => Ok(Side::Generator),
-            other => Err(format!("side = '{}': use 'generator' or 'motor'", crate::validate::shorten(other))),
+            other => Err(format!("side = '{}': use 'generator' or 'motor'", crate::checks::shorten(other))),
         }
     }
 }
@@ -336,7 +336,7 @@ mod tests {
                     "points" => r.point.points = x.max(0.0) as usize,
                     p => panic!("{p} not tried"),
                 }
-                let mut v = crate::validate::Validator::new();
+                let mut v = crate::checks::Validator::new();
                 r.point.check_fields(&mut v);
                 assert!(v.finish().is_err(), "{} = {x}: the registry accepts it", m.path);
                 let e = run(&r).unwrap_err();
@@ -352,7 +352,7 @@ mod tests {
                 }
             }
         }
-        let mut v = crate::validate::Validator::new();
+        let mut v = crate::checks::Validator::new();
         OperatingPoint::default().check_fields(&mut v);
         assert!(v.finish().is_ok());
         for side in [Side::Motor, Side::Generator] {
