@@ -74,7 +74,7 @@ crate::params! {
     #[serde(deny_unknown_fields, default)]
     pub struct MonteCarloParams {
         pub trials: u64 = 100 => {
-            label: "Monte Carlo trials", unit: "-", range: 1.0..=1.0e7, source: "our choice (the thesis: 1000)", group: "sea",
+            label: "Monte Carlo trials", unit: "-", range: 1.0..=1.0e7, source: "ch. 5.4: 100 trials (189 for the arrival times)", group: "sea",
             help: "For the Monte Carlo button (ch. 5.4): trials, each with its own sea.",
         },
         pub envelope_signals: Vec<String> = vec!["im_power_pu".into(), "h_over_r".into(), "prop_rpm".into()] => {

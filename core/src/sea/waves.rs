@@ -285,7 +285,7 @@ crate::params! {
             help: "Exponent h of cos^h about the mean direction; 0: long-crested.",
         },
         pub amplitude_m: f64 = 0.6096 => {
-            label: "Regular wave amplitude", unit: "m", range: 0.0..=10.0, source: "ch. 5.2.4: 2 ft", group: "sea",
+            label: "Regular wave amplitude", unit: "m", range: 0.0..=10.0, source: "our choice: 2 ft, within Fig. 5-12's 1 to 5 ft", group: "sea",
             help: "1 ft = 0.3048 m.",
         },
         pub omega_rad_s: f64 = 0.6 => {
