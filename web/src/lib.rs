@@ -324,7 +324,8 @@ pub fn rao_json(json: &str, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -
     Ok(v.to_string())
 }
 
-/// The fuel study of ch. 5.2.4 (Fig. 5-12) from a scenario: JSON rows as `aes-sim fuel` prints.
+/// The fuel study of ch. 5.2.4 (Fig. 5-12) from a scenario: JSON rows as `aes-sim fuel` prints (no
+/// frequencies: Fig. 5-12's).
 #[wasm_bindgen(js_name = fuelStudy)]
 pub fn fuel_study(json: &str, omegas: Vec<f64>) -> Result<String, JsError> {
     let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;

@@ -155,8 +155,7 @@ export const SUMMARY_ROWS = ['ship_speed_kn', 'prop_rpm', 'turbine_speed_pu', 'b
 
 // After a run in waves: RAOs over wave length / Lpp, in head and bow seas.
 export const RAO = { lambdaFrom: 0.3, lambdaStep: 0.045, points: 60, headings: [[180, 'head'], [135, 'bow']] };
-// After a run in a regular sea: the fuel study (Fig. 5-12) at these wave frequencies [rad/s].
-export const FUEL_OMEGAS = Array.from({ length: 13 }, (_, i) => 0.3 + 0.1 * i);
+// After a run in a regular sea: the fuel study (Fig. 5-12; its wave frequencies come from the wasm).
 export const FUEL_COLORS = ['#1f618d', '#117a65', '#a04000', '#6c3483', '#1b1b1b'];
 
 // Monte Carlo in the page: trial limit, at most this many workers, the periodogram's upper

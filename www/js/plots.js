@@ -3,7 +3,7 @@
 // pageConstants), a kept run drawn muted under the new one, and the extra plots after a run in waves.
 import { choiceLabel } from './registry.js';
 import uPlot from '../vendor/uPlot.esm.js';
-import { PLOTS, DEFAULT_PLOTS, LEVEL_COLORS, BAND_FILL, BAND_EDGE, SURFACE_FILL, EVENT_COLOR, KEPT_STYLE, TRACK_MARK_S, TRACK_MIN_SPAN_M, RAO, FUEL_OMEGAS, FUEL_COLORS } from './config.js';
+import { PLOTS, DEFAULT_PLOTS, LEVEL_COLORS, BAND_FILL, BAND_EDGE, SURFACE_FILL, EVENT_COLOR, KEPT_STYLE, TRACK_MARK_S, TRACK_MIN_SPAN_M, RAO, FUEL_COLORS } from './config.js';
 import { el, fmt, downloadUrl } from './dom.js';
 import { quantity, withPrefix } from './units.js';
 import { REQUEST } from './protocol.js';
@@ -448,17 +448,19 @@ export function drawSeaExtras(box, client, scenario, cols, constants, onError) {
     }, () => { /* a cancelled or failed RAO leaves the run's plots as they are */ });
   }
   if (scenario.sea.kind !== 'regular') return;
-  client.request(REQUEST.fuel, { scenario: JSON.stringify(scenario), omegas: FUEL_OMEGAS }).then(({ rows }) => {
+  // No frequencies given: the wasm takes Fig. 5-12's; the plot's axis is what the rows hold.
+  client.request(REQUEST.fuel, { scenario: JSON.stringify(scenario), omegas: [] }).then(({ rows }) => {
     const { unit, factor } = withPrefix('W', 'M');
+    const omegas = [...new Set(rows.map((r) => r.omega_rad_s))].sort((a, b) => a - b);
     const amplitudes = [...new Set(rows.map((r) => r.amplitude_ft))].sort((a, b) => a - b);
     for (const heading of [...new Set(rows.map((r) => r.heading))]) {
       const series = amplitudes.map((ft, j) => ({
-        data: FUEL_OMEGAS.map((w) => { const r = rows.find((x) => x.heading === heading && x.amplitude_ft === ft && Math.abs(x.omega_rad_s - w) < 1e-9); return r ? r.fuel_power_w * factor : null; }),
+        data: omegas.map((w) => { const r = rows.find((x) => x.heading === heading && x.amplitude_ft === ft && x.omega_rad_s === w); return r ? r.fuel_power_w * factor : null; }),
         label: `${ft} ft`, color: FUEL_COLORS[j % FUEL_COLORS.length],
       }));
       const range = amplitudes.length ? `${amplitudes[0]} to ${amplitudes[amplitudes.length - 1]} ft` : 'no amplitudes';
       box.line(`Fuel power of one prime mover [${unit}], ${heading} seas, ${range} (Fig. 5-12)`,
-        { data: FUEL_OMEGAS, label: 'wave frequency [rad/s]' }, series, [{ scale: 'y', label: `fuel power [${unit}]` }], { generation });
+        { data: omegas, label: 'wave frequency [rad/s]' }, series, [{ scale: 'y', label: `fuel power [${unit}]` }], { generation });
     }
   }, (e) => { if (!e.cancelled) onError(e); });
 }

@@ -18,8 +18,7 @@ pub struct Args {
 
 pub fn run(Args { file, omega, sets }: Args) -> Result<(), Failure> {
     let sc = load(&file, &sets)?;
-    let omegas = if omega.is_empty() { aes_core::studies::fuel::fig_5_12_omegas() } else { omega };
-    let rows = aes_core::studies::fuel::run(&sc, &omegas)?;
+    let rows = aes_core::studies::fuel::run(&sc, &omega)?;
     let extrapolated = rows.iter().any(|r| r.extrapolated);
     let out = serde_json::json!({
         "speed_kn": sc.commands.first().and_then(|c| c.speed_kn),

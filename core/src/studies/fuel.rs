@@ -46,8 +46,11 @@ pub struct FuelPoint {
 /// scenario's first ordered speed with the mean added resistance alpha^2 R_aw(omega, U, beta) of the
 /// RAO table, and the shaft and fuel power of one prime mover. Quasi-static: the wave-frequency
 /// load swings average out over a turbine's response; the mean added resistance is what costs fuel.
-/// The frequencies are checked first ([`check_omegas`]).
+/// The frequencies are checked first ([`check_omegas`]); none given: Fig. 5-12's.
 pub fn run(sc: &crate::Scenario, omegas: &[f64]) -> Result<Vec<FuelPoint>, String> {
+    // None given: Fig. 5-12's (what the page and `aes-sim fuel` without --omega ask for).
+    let fig = fig_5_12_omegas();
+    let omegas = if omegas.is_empty() { fig.as_slice() } else { omegas };
     check_omegas(omegas)?;
     let curve = part_load_curve();
     let speed_kn = sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(25.0);
