@@ -7,17 +7,24 @@ use crate::params::{ParamMeta, Section};
 
 /// Every parameter of the scenario, in the order of its JSON.
 pub fn all() -> Vec<ParamMeta> {
-    let mut out = Vec::new();
-    let d = crate::Scenario::default();
-    <crate::Scenario as Section>::describe_fields("", &d, &mut out);
-    out
+    list().to_vec()
+}
+
+/// The same list, made once: every scenario read and write consults it (conflicts, excluded
+/// fields), and making it serializes the whole default scenario.
+fn list() -> &'static [ParamMeta] {
+    static LIST: std::sync::OnceLock<Vec<ParamMeta>> = std::sync::OnceLock::new();
+    LIST.get_or_init(|| {
+        let mut out = Vec::new();
+        <crate::Scenario as Section>::describe_fields("", &crate::Scenario::default(), &mut out);
+        out
+    })
 }
 
 /// The parameter at a dotted path (`commands.3.t_s` finds `commands.N.t_s`; a pair's element
 /// `ship.hull.shaft_y_m.1` finds the pair).
 pub fn find(path: &str) -> Option<ParamMeta> {
-    static ALL: std::sync::OnceLock<Vec<ParamMeta>> = std::sync::OnceLock::new();
-    let all = ALL.get_or_init(all);
+    let all = list();
     let generic = generic(path);
     all.iter()
         .find(|m| m.path == generic || m.path == path)
@@ -47,7 +54,7 @@ fn is_set(m: &ParamMeta, v: Option<&serde_json::Value>) -> bool {
 /// silently.
 pub fn conflicts(root: &serde_json::Value) -> Vec<crate::checks::FieldError> {
     let mut out: Vec<crate::checks::FieldError> = Vec::new();
-    for m in all().iter().filter(|m| !m.excludes.is_empty() && is_set(m, at(root, &m.path))) {
+    for m in list().iter().filter(|m| !m.excludes.is_empty() && is_set(m, at(root, &m.path))) {
         for ex in m.excludes {
             let Some(v) = at(root, ex) else { continue };
             if out.iter().any(|e| e.path == *ex) {
@@ -68,7 +75,7 @@ pub fn conflicts(root: &serde_json::Value) -> Vec<crate::checks::FieldError> {
 /// a sea of its own height and frequency carries no sea state), so that it reads back.
 pub fn drop_excluded(root: &mut serde_json::Value) {
     let drop: Vec<&'static str> =
-        all().iter().filter(|m| is_set(m, at(root, &m.path))).flat_map(|m| m.excludes.iter().copied()).collect();
+        list().iter().filter(|m| is_set(m, at(root, &m.path))).flat_map(|m| m.excludes.iter().copied()).collect();
     for ex in drop {
         if let Some((parent, key)) = ex.rsplit_once('.') {
             if let Some(serde_json::Value::Object(map)) = parent.split('.').try_fold(&mut *root, |v, k| v.get_mut(k)) {
@@ -83,8 +90,8 @@ pub fn drop_excluded(root: &mut serde_json::Value) {
 pub fn closest(path: &str) -> Option<String> {
     let generic = generic(path);
     let (parent, name) = generic.rsplit_once('.').unwrap_or(("", generic.as_str()));
-    all()
-        .into_iter()
+    list()
+        .iter()
         .filter_map(|m| {
             let (p, n) = m.path.rsplit_once('.').unwrap_or(("", m.path.as_str()));
             (p == parent).then(|| (edit_distance(n, name), m.path.clone()))
