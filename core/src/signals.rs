@@ -53,7 +53,7 @@ macro_rules! for_each_signal {
                 "Motor phase voltage per unit of its rated value.", |r| r.mean_shaft(|s| r.motor_voltage_pu(s));
             SlipSpeedRadS, "slip_speed_rad_s", "rad/s", "slip speed", "Commanded slip speed of the volts-per-hertz control.",
                 |r| r.mean_shaft(|s| r.slip(s));
-            ImPowerPu, "im_power_pu", "pu", "motor power", "Motor shaft power per unit of its rating, mean of the two motors.",
+            ImPowerPu, "im_power_pu", "pu", "motor power, each motor", "Motor shaft power per unit of its rating, mean of the two motors.",
                 |r| r.motor_power_pu();
             ImTorqueKnm, "im_torque_knm", "kN m", "motor torque", "Motor torque, mean of the two motors.",
                 |r| r.mean_shaft(|s| r.motor_torque(s)) / 1e3;
@@ -76,13 +76,13 @@ macro_rules! for_each_signal {
             YawRateDegS, "yaw_rate_deg_s", "deg/s", "yaw rate", "Rate of turn.", |r| r.yaw_rate_deg_s();
             BrakePowerW, "brake_power_w", "W", "brake resistor power", "Power burnt in the brake resistors.",
                 |r| r.brake_power();
-            PTurbineW, "p_turbine_w", "W", "turbine power", "Shaft power of the four gas turbines (Table 5.6).",
+            PTurbineW, "p_turbine_w", "W", "turbine power, all four", "Shaft power of the four gas turbines (Table 5.6).",
                 |r| r.p_turbine;
-            PGeneratorW, "p_generator_w", "W", "generator power", "Electrical output of the four generators (Table 5.6).",
+            PGeneratorW, "p_generator_w", "W", "generator power, all four", "Electrical output of the four generators (Table 5.6).",
                 |r| r.p_generator();
-            PInverterW, "p_inverter_w", "W", "inverter power", "Power into the two motors (Table 5.6).",
+            PInverterW, "p_inverter_w", "W", "inverter power, both", "Power into the two motors (Table 5.6).",
                 |r| r.p_inverter();
-            PMotorW, "p_motor_w", "W", "motor power", "Shaft power of the two motors (Table 5.6).", |r| r.p_motor;
+            PMotorW, "p_motor_w", "W", "motor power, both motors", "Shaft power of the two motors (Table 5.6).", |r| r.p_motor;
             PShipW, "p_ship_w", "W", "ship power", "Resistance times speed, the useful power (Table 5.6).",
                 |r| r.p_ship();
             WaveSternM, "wave_stern_m", "m", "wave at the stern", "Wave elevation at the port propeller (eq. 2.56).",

@@ -172,6 +172,10 @@ fn wigley() -> Embedded {
     }
 }
 
+/// What a custom hull must be given (an embedded one has its own loading).
+const NEEDS_LOADING: &str = "a custom hull needs its draft_m or mass_kg";
+const NEEDS_KG: &str = "a custom hull needs its centre of gravity above the baseline";
+
 fn embedded(name: &str) -> Option<Embedded> {
     match name {
         "dtmb5415" => Some(dtmb5415()),
@@ -287,7 +291,7 @@ impl HullSpec {
             (None, Some(m), _) => draft_for_mass(&offsets, m, rho, bottom, top)?,
             (None, None, Some(e)) => e.draft_m,
             (None, None, None) => {
-                return Err(("draft_m".into(), "a custom hull needs its draft_m or mass_kg".into()));
+                return Err(("draft_m".into(), NEEDS_LOADING.into()));
             }
         };
         let hs = offsets.hydrostatics(draft).map_err(|e| ("draft_m".to_string(), e))?;
@@ -300,9 +304,7 @@ impl HullSpec {
         let kg = match (self.kg_m, &emb) {
             (Some(k), _) => k,
             (None, Some(e)) => e.kg_m,
-            (None, None) => {
-                return Err(("kg_m".into(), "a custom hull needs its centre of gravity above the baseline".into()))
-            }
+            (None, None) => return Err(("kg_m".into(), NEEDS_KG.into())),
         };
         let ek = emb.as_ref().map(|e| e.k_m);
         let mass_props = MassProperties {
@@ -344,6 +346,20 @@ impl HullSpec {
     /// Checks the section (with water density `rho`): the hull must resolve, float upright and
     /// carry its appendages within reach of the hull.
     pub fn validate(&self, v: &mut Validator, rho: f64) {
+        // A custom hull names every value it lacks at once (the loading has no defaults to fall
+        // back on), rather than one per try; a file that does not parse is named first, below.
+        if embedded(&self.name).is_none() && self.offsets().is_ok() {
+            let lacks_loading = self.draft_m.is_none() && self.mass_kg.is_none();
+            if lacks_loading {
+                v.fail("draft_m", "null", NEEDS_LOADING);
+            }
+            if self.kg_m.is_none() {
+                v.fail("kg_m", "null", NEEDS_KG);
+            }
+            if lacks_loading || self.kg_m.is_none() {
+                return;
+            }
+        }
         let h = match self.resolve(rho) {
             Ok(h) => h,
             Err((field, msg)) => {
@@ -618,6 +634,9 @@ mod tests {
             ..Default::default()
         });
         assert!(e.contains("ship.hull.kg_m"), "{e}");
+        // Both missing values at once, not one per try.
+        let e = check(HullSpec { name: "custom".into(), offsets_csv: DTMB5415_OFFSETS.into(), ..Default::default() });
+        assert!(e.contains("ship.hull.draft_m") && e.contains("ship.hull.kg_m"), "{e}");
         let e = check(HullSpec { draft_m: Some(40.0), ..Default::default() });
         assert!(e.contains("ship.hull.draft_m = 40") && e.contains("up to 9.225"), "{e}");
         let e = check(HullSpec { draft_m: Some(6.15), mass_kg: Some(7e6), ..Default::default() });
