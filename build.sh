@@ -139,6 +139,8 @@ run_tests() {
     sleep 0.1
   done
   node tests/e2e/e2e.mjs "http://127.0.0.1:$port/" "$shots" 2>&1 | tee -a "$log"
+  say "browser test: one state for inputs, results and the address bar; labels; layout (issue 29)"
+  node tests/e2e/consistency.mjs "http://127.0.0.1:$port/" "$shots" 2>&1 | tee -a "$log"
   kill "$server" 2>/dev/null || true
   trap - EXIT
   # One closing line for the whole suite (pipefail has already stopped us on any failure).

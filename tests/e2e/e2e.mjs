@@ -1,48 +1,20 @@
 // Browser end-to-end test of the page in headless Chromium (Debian's chromium + playwright-core).
 // Usage: node tests/e2e/e2e.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR
-import { chromium } from 'playwright-core';
 import { existsSync, mkdirSync, readFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
-import { createRequire } from 'node:module';
+import { assert, axeFindings, checker, launch, openPage, setField } from './lib.mjs';
 
-const axeSource = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
 
 const base = process.argv[2];
 const shots = process.argv[3];
 mkdirSync(shots, { recursive: true });
 console.log(`screenshots in ${shots}`);
-let passed = 0, failed = 0;
-async function check(name, fn) {
-  // E2E_ONLY=regex runs only the matching checks (while working on one; CI runs all).
-  if (process.env.E2E_ONLY && !new RegExp(process.env.E2E_ONLY).test(name)) return;
-  try { await fn(); passed++; console.log(`ok   ${name}`); } catch (e) { failed++; console.log(`FAIL ${name}: ${e.message}`); }
-}
-function assert(c, msg) { if (!c) throw new Error(msg); }
-
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-});
+const { check, counts } = checker();
+const browser = await launch();
 const context = await browser.newContext({ viewport: { width: 1300, height: 1100 } });
 const consoleErrors = [];
-async function open(url, ctx = context) {
-  const page = await ctx.newPage();
-  page.on('console', (m) => { if (m.type() === 'error') consoleErrors.push(`${url}: ${m.text()}`); });
-  page.on('pageerror', (e) => consoleErrors.push(`${url}: ${e}`));
-  page.on('request', (r) => { if (!r.url().startsWith(base) && !r.url().startsWith('data:') && !r.url().startsWith('blob:')) consoleErrors.push(`request left the origin: ${r.url()}`); });
-  await page.goto(url);
-  await page.waitForFunction(() => !document.getElementById('run').disabled, null, { timeout: 30000 });
-  return page;
-}
-async function setField(page, path, value) {
-  const sel = '#f-' + path.replace(/\./g, '-');
-  // A field the study does not show on top: open the folds it is in.
-  await page.$eval(sel, (e) => { for (let d = e.closest('details'); d; d = d.parentElement.closest('details')) d.open = true; });
-  if ((await page.$eval(sel, (e) => e.tagName)) === 'SELECT') await page.selectOption(sel, String(value));
-  else await page.fill(sel, String(value));
-  await page.dispatchEvent(sel, 'change');
-}
+const open = (url, ctx = context) => openPage(ctx, url, base, consoleErrors);
 async function runAndWait(page) {
   await page.click('#run');
   await page.waitForFunction(() => /^Done|^Cancel/.test(document.getElementById('status').textContent) || document.getElementById('status').className === 'error', null, { timeout: 60000 });
@@ -543,12 +515,7 @@ const assertLayout = (l, where) => {
 // Every axis of every drawn uPlot names a unit in brackets.
 const axesWithoutUnit = (p) => p.evaluate(() => [...document.querySelectorAll('.chart')].filter((c) => c.getClientRects().length && c.uplot)
   .flatMap((c) => c.uplot.axes.filter((a) => a.show !== false && !/\[[^\]]+\]/.test(a.label || '')).map((a) => `${c.closest('.plot').querySelector('h3')?.textContent}: "${a.label}"`)));
-const axeSerious = async (p) => {
-  await p.addScriptTag({ content: axeSource });
-  const v = await p.evaluate(async () => (await window.axe.run(document, { resultTypes: ['violations'] })).violations
-    .filter((x) => x.impact === 'serious' || x.impact === 'critical').map((x) => `${x.id} (${x.impact}): ${x.nodes.slice(0, 2).map((n) => n.target.join(' ')).join('; ')}`));
-  return v;
-};
+const axeSerious = (p) => axeFindings(p);
 for (const [w, h] of SIZES) {
   await check(`at ${w}x${h}: no horizontal overflow, no overlapping plots, units on every axis, no serious axe violation`, async () => {
     await wide.setDefaultTimeout(30000);
@@ -861,5 +828,5 @@ await check('no console errors and no request left the page', async () => {
   assert(consoleErrors.length === 0, consoleErrors.join('\n'));
 });
 await browser.close();
-console.log(`e2e: ${passed} passed, ${failed} failed`);
-process.exit(failed ? 1 : 0);
+console.log(`e2e: ${counts.passed} passed, ${counts.failed} failed`);
+process.exit(counts.failed ? 1 : 0);

@@ -115,20 +115,22 @@ export const DEFAULT_PLOTS = ['speed', 'rpm', 'bus', 'motor', 'track'];
 // Key figures of the comparison of a kept run with the new one: a statistic of a signal's summary
 // ('swing' is max - min) or an energy of the summary, named by `text` ({} is the signal's label);
 // units from signalMeta (a statistic in seconds, `_s`, is in s), with an optional metric prefix.
+// `better`: which way is better for the plant ('higher' or 'lower'); without it the difference is
+// shown neutral (a figure whose good direction depends on the study, like the final speed).
 export const KEY_FIGURES = [
   { text: 'peak {}', signal: 'im_power_pu', stat: 'max' },
   { text: 'lowest {}', signal: 'im_power_pu', stat: 'min' },
-  { text: 'lowest {} (dip)', signal: 'bus_voltage_pu', stat: 'min' },
-  { text: 'lowest {} (dip)', signal: 'turbine_speed_pu', stat: 'min' },
-  { text: 'highest {}', signal: 'turbine_speed_pu', stat: 'max' },
-  { text: 'peak {}', signal: 'fuel_power_w', stat: 'max', prefix: 'M' },
+  { text: 'lowest {} (dip)', signal: 'bus_voltage_pu', stat: 'min', better: 'higher' },
+  { text: 'lowest {} (dip)', signal: 'turbine_speed_pu', stat: 'min', better: 'higher' },
+  { text: 'highest {}', signal: 'turbine_speed_pu', stat: 'max', better: 'lower' },
+  { text: 'peak {}', signal: 'fuel_power_w', stat: 'max', prefix: 'M', better: 'lower' },
   { text: 'final {}', signal: 'ship_speed_kn', stat: 'final' },
-  { text: '{} settles after', signal: 'ship_speed_kn', stat: 'settling_time_s' },
-  { text: '{} settles after', signal: 'bus_voltage_pu', stat: 'settling_time_s' },
-  { text: '{} settles after', signal: 'turbine_speed_pu', stat: 'settling_time_s' },
-  { text: '{} swing', signal: 'prop_rpm', stat: 'swing' },
-  { text: 'lowest {}', signal: 'h_over_r', stat: 'min' },
-  { text: 'mean {}', signal: 'fuel_power_w', stat: 'mean', prefix: 'M' },
+  { text: '{} settles after', signal: 'ship_speed_kn', stat: 'settling_time_s', better: 'lower' },
+  { text: '{} settles after', signal: 'bus_voltage_pu', stat: 'settling_time_s', better: 'lower' },
+  { text: '{} settles after', signal: 'turbine_speed_pu', stat: 'settling_time_s', better: 'lower' },
+  { text: '{} swing', signal: 'prop_rpm', stat: 'swing', better: 'lower' },
+  { text: 'lowest {}', signal: 'h_over_r', stat: 'min', better: 'higher' },
+  { text: 'mean {}', signal: 'fuel_power_w', stat: 'mean', prefix: 'M', better: 'lower' },
   { text: 'turbine energy', energy: 'turbine', prefix: 'M' },
   { text: 'energy burnt in the brake', energy: 'brake', prefix: 'M' },
 ];
@@ -172,6 +174,8 @@ export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, ons
     ['median', 'table_5_8.rice.median_s', 'table_5_8.monte_carlo.median_s'],
     ['mode', 'table_5_8.rice.mode_s', 'table_5_8.monte_carlo.mode_s']],
   calmWater: ['ch_5_4_1.excess_energy_mean_mj', 'ch_5_4_1.excess_energy_std_mj'],
+  // The studies that are the thesis' own (its numbers are shown beside them only).
+  thesisStudies: { table58: ['mc-arrival'], calmWater: ['mc-excess-energy'] },
   riceNote: 'Rice\'s rate counts up-crossings of a stationary Gaussian response and treats them as rare, independent events, so that arrival times are exponential. That holds for a level many standard deviations away; at this study\'s level crossings are not rare and come in clusters on wave groups, and each trial is cut off, so the Monte Carlo skewness and kurtosis fall short of the exponential\'s 2 and 9 (as in the thesis) while the means stay close.',
   excessNote: 'Two excess energies: against the same sea with surface losses switched off (the submerged counterpart: what ventilation and emergence alone cost), and against calm water (which adds the added resistance of the waves; this is the thesis\' figure).' };
 

@@ -8,6 +8,8 @@ import { $, el } from './dom.js';
 import { REQUEST } from './protocol.js';
 import { drawPoleMap, poleCells, numberBoxError, markStale } from './stability.js';
 
+// The tuning kept across a reload (the address carries it too).
+const STORE = 'aes-sim/design/v1';
 const db = (x) => 20 * Math.log10(Math.max(x, 1e-12));
 const CURVES = ['#0b5cad', '#c2410c'];
 const INPUTS = ['throttle', 'field voltage'];
@@ -24,7 +26,12 @@ export class DesignTab {
     this.baseScenario = baseScenario;
     this.timer = null;
     this.ok = false;
-    for (const id of ['design-mu', 'design-q', 'design-omega', 'design-speed', 'design-weight']) $(id).addEventListener('input', () => this.update());
+    this.defaults = null;
+    this.onChange = () => {}; // after the user moves a control (the page follows it in the address)
+    for (const id of ['design-mu', 'design-q', 'design-omega', 'design-speed', 'design-weight']) {
+      $(id).addEventListener('input', () => this.update());
+      $(id).addEventListener('change', () => { this.store(); this.onChange(); });
+    }
     $('design-run').addEventListener('click', () => { if (this.ok) onRun(this.tuning()); });
   }
 
@@ -47,6 +54,36 @@ export class DesignTab {
       input.title = m.help;
     }
     this.readouts();
+    this.defaults = this.tuning();
+  }
+
+  // The tuning when it differs from the declared defaults (for the address and the store), else null.
+  changed() {
+    if (!this.defaults) return null;
+    const t = this.tuning();
+    return Object.keys(t).some((k) => t[k] !== this.defaults[k]) ? t : null;
+  }
+
+  // The controls set to a tuning (from a link, or kept from the last visit when t is null); a value
+  // outside a control's range is left at the control's own.
+  restore(t) {
+    if (!this.defaults) return;
+    if (t === null) { try { t = JSON.parse(localStorage.getItem(STORE) || 'null'); } catch (_) { t = null; } }
+    const want = { ...this.defaults, ...(t && typeof t === 'object' ? t : {}) };
+    for (const [id, field, log] of DESIGN_CONTROLS) {
+      const v = want[field];
+      if (typeof v !== 'number' || !Number.isFinite(v) || (log && v <= 0)) continue;
+      const x = log ? Math.log10(v) : v;
+      const input = $(id);
+      if (input.type === 'range' && (x < Number(input.min) || x > Number(input.max))) continue;
+      input.value = String(x);
+    }
+    this.readouts();
+    this.store();
+  }
+
+  store() {
+    try { const t = this.changed(); if (t) localStorage.setItem(STORE, JSON.stringify(t)); else localStorage.removeItem(STORE); } catch (_) { /* storage blocked */ }
   }
 
   // controllers.lqg_ltr as the controls set it (mu and q on log sliders).

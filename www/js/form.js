@@ -5,6 +5,7 @@ import { FORM_PLACES, CHAPTERS, STUDIES, studyTitle, STORE_KEY } from './config.
 import { $, el } from './dom.js';
 import { migrate } from './registry.js';
 import { fieldLine } from './protocol.js';
+import { diff } from './link.js';
 
 function getPath(obj, path) { return path.split('.').reduce((o, k) => (o == null ? undefined : o[k]), obj); }
 export function setPath(obj, path, value) {
@@ -52,6 +53,7 @@ export class ScenarioForm {
     this.name = null;
     this.scenario = null;
     this.invalid = new Set();
+    this.edits = new Map(); // study -> its edited scenario, kept while the page is open (and stored)
     this.home = new Map(); // field div -> its fieldset in the full form
     const listed = new Set(CHAPTERS.flatMap(([, names]) => names));
     const groups = CHAPTERS.map(([chapter, names]) => el('optgroup', { label: chapter },
@@ -209,9 +211,13 @@ export class ScenarioForm {
   }
 
   select(name, scenario) {
+    // A field still being typed in is committed to the study it was typed for: moving it (below)
+    // would blur it and its change would land in the new study.
+    const active = document.activeElement;
+    if (active && active.dataset && active.dataset.path && $('controls').contains(active)) active.blur();
     this.name = name;
     $('preset').value = name;
-    this.scenario = scenario || this.preset(name);
+    this.scenario = scenario || (this.edits.has(name) ? JSON.parse(JSON.stringify(this.edits.get(name))) : this.preset(name));
     const study = STUDIES[name] || {};
     $('about').textContent = study.about || this.preset(name).description;
     $('watch').replaceChildren(...(study.watch ? [el('strong', { textContent: 'What to watch' }), study.watch] : []),
@@ -220,17 +226,54 @@ export class ScenarioForm {
     this.fill();
     this.markErrors([]);
     this.markLinked([]);
+    this.showModified();
     this.onSelect(name);
   }
 
-  save() {
-    try { localStorage.setItem(STORE_KEY, JSON.stringify({ preset: this.name, scenario: this.scenario })); } catch (_) { /* storage full or blocked */ }
+  // Back to the study's own values: its kept edits go, every error goes with them.
+  reset() {
+    this.edits.delete(this.name);
+    this.select(this.name, this.preset(this.name));
+    this.save();
   }
 
-  // The edits of the last visit, {preset, scenario}, if any (not yet validated).
+  // The paths where the scenario differs from its study's values.
+  modified() {
+    const d = diff(this.preset(), this.scenario);
+    return d === undefined ? [] : leafPaths(d);
+  }
+
+  // A visible mark of what differs from the study: beside the picker (with Reset at hand), on
+  // each changed field, and in the picker for every study edited in this visit.
+  showModified() {
+    const paths = this.modified();
+    const box = $('modified');
+    box.hidden = paths.length === 0;
+    box.textContent = paths.length ? `Modified: ${paths.length} value${paths.length > 1 ? 's' : ''} differ${paths.length > 1 ? '' : 's'} from the study's (marked "changed"). Reset brings the study's values back.` : '';
+    for (const d of document.querySelectorAll('.field.edited')) d.classList.remove('edited');
+    for (const p of paths) { const d = $(fieldId(p) + '-field'); if (d) d.classList.add('edited'); }
+    for (const o of $('preset').options) {
+      const title = o.dataset.title || (o.dataset.title = o.text);
+      o.text = this.edits.has(o.value) ? `${title} (modified)` : title;
+    }
+  }
+
+  save() {
+    if (this.modified().length) this.edits.set(this.name, JSON.parse(JSON.stringify(this.scenario))); else this.edits.delete(this.name);
+    this.showModified();
+    try {
+      localStorage.setItem(STORE_KEY, JSON.stringify({ preset: this.name, scenario: this.scenario, edits: Object.fromEntries(this.edits) }));
+    } catch (_) { /* storage full or blocked */ }
+  }
+
+  // The edits of the last visit, {preset, scenario}, if any (not yet validated); the other
+  // studies' edits of that visit are kept again (each is checked when its study is opened).
   saved() {
     try {
       const s = JSON.parse(localStorage.getItem(STORE_KEY) || 'null');
+      if (s && s.edits && typeof s.edits === 'object') {
+        for (const [name, sc] of Object.entries(s.edits)) if (this.has(name) && sc && typeof sc === 'object') this.edits.set(name, migrate(sc));
+      }
       return s && this.has(s.preset) && s.scenario ? { ...s, scenario: migrate(s.scenario) } : null;
     } catch (_) { return null; }
   }

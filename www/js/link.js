@@ -1,5 +1,7 @@
-// Share links: #v=2&preset=NAME&d=BASE64URL(JSON of what differs from the preset), optionally
-// &at=SECONDS&speed=X: where the live views stand and how fast they play (a link opens the run there). Reading a link
+// Share links and the address bar: #v=2&preset=NAME&d=BASE64URL(JSON of what differs from the
+// preset), optionally &mode=mc (the study's Monte Carlo view rather than one run), &tab=design|ips
+// (the tab shown), &design=BASE64URL(JSON of the design tab's tuning) and &at=SECONDS&speed=X
+// (where the live views stand and how fast they play: a link opens the run there). Reading a link
 // refuses, with a reason a person can act on, anything too long, too deep, damaged, from a newer
 // page or naming an unknown study. Pure functions: no DOM, no worker (the caller validates).
 
@@ -60,14 +62,33 @@ export function b64urlDecode(s) {
   return new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(bin, (c) => c.charCodeAt(0)));
 }
 
+export const MODES = ['run', 'mc'];
+export const TABS = ['sim', 'design', 'ips'];
+
 // The hash of a link to `scenario`, edited from preset `name` (whose scenario is `preset`);
-// view: {at, speed} of the live views, or null.
-export function linkHash(name, preset, scenario, view = null) {
+// view: {at, speed} of the live views, or null; mode: 'run' or 'mc'; tab: one of TABS; design:
+// the design tab's tuning when it differs from the declared defaults, else null.
+export function linkHash(name, preset, scenario, { view = null, mode = 'run', tab = 'sim', design = null } = {}) {
   const d = diff(preset, scenario);
   let hash = `#v=${LINK_VERSION}&preset=${encodeURIComponent(name)}`;
   if (d !== undefined) hash += `&d=${b64urlEncode(JSON.stringify(d))}`;
+  if (mode !== 'run') hash += `&mode=${mode}`;
+  if (tab !== 'sim') hash += `&tab=${tab}`;
+  if (design) hash += `&design=${b64urlEncode(JSON.stringify(design))}`;
   if (view) hash += `&at=${Number(view.at.toFixed(3))}&speed=${view.speed}`;
   return hash;
+}
+
+// The design tab's tuning in a link: an object of finite numbers (the tab checks their ranges),
+// or null when absent or damaged (a bad part only loses the tuning, never the scenario).
+function readDesign(params) {
+  const d = params.get('design');
+  if (!d || d.length > 2000) return null;
+  try {
+    const t = JSON.parse(b64urlDecode(d));
+    if (!isObject(t) || !Object.values(t).every((x) => typeof x === 'number' && Number.isFinite(x))) return null;
+    return t;
+  } catch (_) { return null; }
 }
 
 // The live views' place in a link: {at, speed} when both are sensible numbers, else null (a bad
@@ -102,5 +123,7 @@ export function readLink(hash, presets) {
     if (!isObject(parsed)) return refuse('its scenario part is not an object');
     scenario = merge(scenario, v < 2 ? migrate(parsed) : parsed);
   }
-  return { name, scenario, view: readView(params) };
+  const mode = MODES.includes(params.get('mode')) ? params.get('mode') : 'run';
+  const tab = TABS.includes(params.get('tab')) ? params.get('tab') : 'sim';
+  return { name, scenario, view: readView(params), mode, tab, design: readDesign(params) };
 }

@@ -11,7 +11,7 @@ import { LIVE } from './config.js';
 import { el } from './dom.js';
 import { TrainView } from './live/drivetrain.js';
 import { PlanView } from './live/plan.js';
-import { hubText, mw, pct, rowAt, signed } from './live/shared.js';
+import { fixed, hubText, mw, pct, rowAt, signed } from './live/shared.js';
 import { SternView } from './live/stern.js';
 
 // The page's own copy of the wasm, for pictures only (the worker runs the simulations).
@@ -244,7 +244,7 @@ export class LiveViews {
     const parts = [`At ${this.t.toFixed(1)} s: turbines ${mw(v('p_turbine_w') / 4)} each at ${v('turbine_speed_pu').toFixed(3)} pu speed${v('turbine_speed_pu') > w.turbine_overspeed_pu ? ' (OVERSPEED)' : ''}`,
       `generators ${mw(v('p_generator_w') / 4)} each`, `buses at ${v('bus_voltage_pu').toFixed(3)} pu (${(v('bus_voltage_v') / 1e3).toFixed(2)} kV)`,
       `motors ${mw(v('p_motor_w') / 2)} each (${v('im_power_pu').toFixed(2)} pu)`, `propellers ${v('prop_rpm_1').toFixed(0)} and ${v('prop_rpm_2').toFixed(0)} rpm`,
-      `ship ${v('ship_speed_kn').toFixed(1)} kn, heading ${v('heading_deg').toFixed(0)}°, rudder ${v('rudder_deg').toFixed(1)}°${v('rudder_deg') > 0.05 ? ' (to port)' : v('rudder_deg') < -0.05 ? ' (to starboard)' : ''}`];
+      `ship ${v('ship_speed_kn').toFixed(1)} kn, heading ${fixed(v('heading_deg'), 0)}°, rudder ${v('rudder_deg').toFixed(1)}°${v('rudder_deg') > 0.05 ? ' (to port)' : v('rudder_deg') < -0.05 ? ' (to starboard)' : ''}`];
     if (v('brake_power_w') > 0) parts.push(`brake resistors ${mw(v('brake_power_w'))}`);
     if (this.inWaves) parts.push(`wave at the stern ${signed(v('wave_stern_m'))} m, ${hubText(v('hub_depth_m'))}, h/R ${v('h_over_r').toFixed(2)} (${this.discState().text}), thrust kept ${pct(v('beta_t'))}`);
     return parts.join('; ') + '.';
@@ -256,7 +256,10 @@ export class LiveViews {
     const hr = this.v('h_over_r'), bt = this.v('beta_t'), lv = this.k.h_over_r_levels.map((l) => l.value);
     if (hr <= Math.min(...lv)) return { text: 'disc out of the water', loud: true };
     if (hr < Math.max(...lv)) return { text: 'disc breaks the surface', loud: true };
-    if (bt < 1) return { text: 'ventilating', loud: true };
+    // Ventilation ends above the hysteresis band's top; the thrust then comes back over a few
+    // turns of the shaft (a rate-limited recovery), so beta_T < 1 above the band is recovery.
+    const ends = Math.max(...this.k.h_over_r_bands.map((b) => b.to));
+    if (bt < 1) return hr > ends ? { text: `thrust recovering after ventilation (ended above h/R ${ends})`, loud: true } : { text: 'ventilating', loud: true };
     return { text: 'submerged', loud: false };
   }
 

@@ -25,6 +25,15 @@ let signals = null;
 let thesis = []; // the thesis' numbers we compare with (the worker's thesisValues)
 let kept = null; // a kept run: {name, columns, summary}
 let hullPicker = null;
+// One state (issue 29): the address bar says which tab, study, values and kind of result (one run
+// or its Monte Carlo) the page shows; every result drawn is kept under the key of the state it
+// belongs to, so Back and Forward restore inputs and results together, and a result is never
+// drawn under another study's inputs.
+let mode = 'run';
+let shown = null; // the key of the drawn result, or null
+const drawn = new Map(); // key -> {key, state, study, redraw()}: the last few results, for Back/Forward
+const DRAWN_MAX = 6;
+const stateKey = (m = mode) => `${m}|${form.name}|${JSON.stringify(form.scenario)}`;
 // The hull panel; its sheet also gives the loading fields their placeholders (the hull's own
 // values) and the hub height its h0.
 const hullPanel = new HullPanel($('hull-box'), () => client, {
@@ -40,7 +49,8 @@ function refreshHull() {
   if (hullPicker) hullPicker.sync(sc);
   hullPanel.update(sc, hullPicker ? hullPicker.fileOf(sc) : null);
 }
-const stability = new StabilityTab(() => client, new PlotBox($('ips-plots')));
+// The Bode magnitude and phase share one cursor (as the run's plots do).
+const stability = new StabilityTab(() => client, new PlotBox($('ips-plots'), { sync: 'ips' }));
 // The design tab's "run next to the PI loops": the acceleration with the PI loops, kept, then
 // again with this LQG/LTR tuning, drawn over it.
 const design = new DesignTab(() => client, new PlotBox($('design-plots')), () => form.preset(DESIGN.basePreset), (tuning) => {
@@ -51,6 +61,7 @@ const design = new DesignTab(() => client, new PlotBox($('design-plots')), () =>
   for (const [k, v] of Object.entries(tuning)) set[`controllers.lqg_ltr.${k}`] = v;
   compareWith({ set });
 });
+design.onChange = () => { if (form) follow(false); };
 
 function startWorker() {
   setPhase('loading');
@@ -62,12 +73,58 @@ function startWorker() {
 
 const validate = (sc) => client.request(REQUEST.validate, { scenario: JSON.stringify(sc) });
 
-// The address follows the study: '#v=1&preset=NAME' (a copied link adds the edits).
-const studyHash = (name) => linkHash(name, form.preset(name), form.preset(name));
-function follow(name, push) {
-  const h = studyHash(name);
-  if (location.hash === h) return;
-  history[push ? 'pushState' : 'replaceState'](null, '', h);
+// The address follows the state: study, edits, mode, tab and the design tab's tuning (a copied
+// link adds where the live views stand). An edit replaces the current entry unless that entry
+// shows a result of other values: then it pushes, so Back returns to those values and their
+// result. A study, tab or mode change pushes.
+const hereHash = (view = null) => linkHash(form.name, form.preset(), form.scenario, { mode, tab: currentTab(), design: design.changed(), view });
+const current = () => Boolean(shown) && drawn.has(shown) && drawn.get(shown).state === stateKey();
+function follow(push) {
+  const h = hereHash();
+  const st = history.state || {};
+  const owner = st.shown && drawn.get(st.shown);
+  if (!push && owner && owner.state !== stateKey() && location.hash !== h) push = true;
+  history[push ? 'pushState' : 'replaceState']({ shown: current() ? shown : null }, '', h);
+}
+// After a run or a Monte Carlo study: the entry of these inputs owns what is drawn (a new entry
+// when the mode changed, so Back returns to the other view).
+function settle() {
+  const h = hereHash();
+  history[location.hash === h ? 'replaceState' : 'pushState']({ shown }, '', h);
+}
+
+// key: unique per result; state: the stateKey of the inputs it belongs to (a replayed Monte Carlo
+// trial belongs to its study's Monte Carlo state).
+function remember(key, state, redraw) {
+  drawn.delete(key);
+  drawn.set(key, { key, state, study: state.split('|')[1], redraw });
+  while (drawn.size > DRAWN_MAX) drawn.delete(drawn.keys().next().value);
+  shown = key;
+}
+// The result of a state: its own run or study first, else a trial replayed from it.
+const resultOf = (state) => drawn.get(state) || [...drawn.values()].reverse().find((r) => r.state === state);
+
+// Nothing drawn: no summary, plots, live views or exports of another state.
+function clearResults() {
+  plots.clear();
+  live.hide();
+  $('summary-box').hidden = true;
+  $('compare-box').hidden = true;
+  setResult(null);
+  shown = null;
+  showStale();
+}
+
+// After any change of the inputs: results of other values of this study stay, marked stale with a
+// Run at hand; results of another study go (Back brings them back).
+function showStale() {
+  const box = $('stale');
+  const r = shown && drawn.get(shown);
+  if (r && r.study !== form.name) { clearResults(); return; }
+  const stale = Boolean(r) && r.state !== stateKey();
+  box.hidden = !stale;
+  document.getElementById('results').classList.toggle('stale', stale);
+  if (stale) $('stale-text').textContent = `These results are of other values of this study than the form's now (${r.state.startsWith('mc|') ? 'its Monte Carlo study' : 'one run'}). Press ${mode === 'mc' ? 'Monte Carlo' : 'Run'} to see the form's values.`;
 }
 
 // The scenario of a hash: null without one, {refused: true} (after saying why) when it cannot be
@@ -101,17 +158,23 @@ async function onReady(m) {
     form, validate, say: status, busy: isBusy,
     // An accepted hull or scenario file: into the form (a scenario file may name its study).
     commit: (sc, { name } = {}) => {
-      if (name && name !== form.name) { form.select(name, sc); follow(name, true); } else { form.scenario = sc; form.fill(); }
+      const other = name && name !== form.name;
+      if (other) form.select(name, sc); else { form.scenario = sc; form.fill(); }
       form.save();
-      onEdit();
+      onEdit(other);
     },
   });
   const linked = await openLink(location.hash.slice(1));
-  if (linked && !linked.refused && (linked.edited.length || linked.view)) {
+  design.restore(linked && !linked.refused ? linked.design : null);
+  if (linked && !linked.refused && linked.tab !== 'sim') selectTab(`tab-${linked.tab}`, false, false);
+  if (linked && !linked.refused && (linked.edited.length || linked.view || linked.mode === 'mc')) {
     form.select(linked.name, linked.scenario);
     form.markLinked(linked.edited);
+    mode = linked.mode;
+    follow(false);
     setPhase('idle');
     if (linked.edited.length) status(`This link changed ${linked.edited.length} value(s) of the study (marked in the form).`);
+    if (linked.mode === 'mc') { await runMonteCarlo(); return; }
     await run({ focus: false });
     if (linked.view) live.place(linked.view);
     return;
@@ -127,7 +190,7 @@ async function onReady(m) {
     } catch (_) { /* stale edits: start from the preset */ }
   }
   if (!restored) form.select(want || DEFAULT_PRESET);
-  follow(form.name, false);
+  follow(false);
   setPhase('idle');
   status(restored ? 'Your last edits are back.' : 'Ready. Choose a study and press Run.');
 }
@@ -135,9 +198,10 @@ async function onReady(m) {
 // After an accepted edit: the scenario is checked at once (errors at the field, Run waits), and
 // a page opened from a link now shows the study, not the link's values.
 let validating = 0;
-async function onEdit() {
-  follow(form.name, false);
+async function onEdit(push = false) {
+  follow(push);
   forgetLink();
+  showStale();
   const mine = ++validating;
   try {
     await validate(form.current());
@@ -155,21 +219,44 @@ function forgetLink() {
   $('share-too-long').hidden = true;
 }
 
+// Another study: its own edits of this visit come back with it (the picker marks them), and what
+// was drawn for it last comes back too, else nothing is drawn.
 function selectStudy(name, push = true) {
+  validating++; // a check still on its way belongs to the study left
   form.select(name);
   form.save();
-  follow(name, push);
+  mode = 'run';
+  const last = [...drawn.values()].reverse().find((r) => r.study === name);
+  if (last) { last.redraw(); shown = last.key; mode = last.state.split('|')[0]; } else clearResults();
+  follow(push);
+  showStale();
 }
 
-// Back/Forward and a hand-edited address: show the study of the address.
+// Back/Forward and a hand-edited address: the tab, study, values and mode of the address, with
+// their result when the page still has it; else nothing is drawn and the status says what to press.
 async function route() {
-  if (!form) return;
+  if (!form || isBusy()) return;
   const link = await openLink(location.hash.slice(1));
   if (!link || link.refused) return;
-  if (link.name === form.name && !link.edited.length) return;
+  validating++;
+  selectTab(`tab-${link.tab}`, false, false);
+  design.restore(link.design);
   form.select(link.name, link.scenario);
+  form.save();
   form.markLinked(link.edited);
-  status(`${studyTitle(link.name)}: press Run.`);
+  mode = link.mode;
+  const key = stateKey();
+  const r = resultOf(key);
+  if (r) {
+    if (shown !== r.key) r.redraw();
+    shown = r.key;
+    status(`${studyTitle(link.name)}: the result of these values is back.`);
+  } else {
+    clearResults();
+    status(`${studyTitle(link.name)}${link.edited.length ? `, ${link.edited.length} value(s) changed` : ''}: press ${mode === 'mc' ? 'Monte Carlo' : 'Run'} to see its result.`);
+  }
+  showStale();
+  history.replaceState({ shown: current() ? shown : null }, '', location.hash);
 }
 
 function showSummary(s, constants) {
@@ -177,12 +264,21 @@ function showSummary(s, constants) {
     const v = s.signals[name];
     return row(signals.labelWithUnit(name, constants), [v.final, v.min, v.max].map((x) => Number(x).toPrecision(4)));
   }));
-  // Tables 5.6 and 5.7: each stage's power at the end and the efficiency of the stage.
-  const inv = s.power_inventory_w || {}, eff = s.efficiency || {};
-  const stages = [['turbine', 'gas turbines, shaft', null], ['generator', 'generators, electrical', 'generator'], ['inverter', 'into the motors', 'power_electronics'], ['motor', 'motors, shaft', 'motor'], ['ship', 'ship, resistance x speed', 'propeller']];
+  // Tables 5.6 and 5.7: each stage's power at the end and what it passes on of the power it
+  // takes, now and over the whole run (energies). A ratio of powers in a transient is not an
+  // efficiency: a stage that gives up stored energy passes on more than it takes.
+  const inv = s.power_inventory_w || {}, en = s.energy_j || {};
+  const stages = [['turbine', 'gas turbines, shaft'], ['generator', 'generators, electrical'], ['inverter', 'into the motors'], ['motor', 'motors, shaft'], ['ship', 'ship, resistance x speed']]
+    .filter(([k]) => k in inv);
+  const ratio = (out, into) => (into > 0 && out >= 0 ? `${(100 * out / into).toFixed(1)} %` : '–');
   const body = $('inventory').querySelector('tbody');
-  body.replaceChildren(el('tr', {}, ...['stage', 'power [MW]', 'efficiency of the stage'].map((h) => el('th', { scope: 'col', textContent: h }))),
-    ...stages.filter(([k]) => k in inv).map(([k, label, e]) => row(label, [fmt(inv[k] / 1e6), e && e in eff ? `${(eff[e] * 100).toFixed(1)} %` : '–'])));
+  body.replaceChildren(el('tr', {}, ...['stage', 'power now [MW]', 'out / in now', 'energy, whole run [MJ]', 'out / in, whole run'].map((h) => el('th', { scope: 'col', textContent: h }))),
+    ...stages.map(([k, label], i) => {
+      const prev = i > 0 ? stages[i - 1][0] : null;
+      return row(label, [fmt(inv[k] / 1e6), prev ? ratio(inv[k], inv[prev]) : '–', k in en ? fmt(en[k] / 1e6) : '–', prev && k in en ? ratio(en[k], en[prev]) : '–']);
+    }));
+  const over = stages.some(([k], i) => i > 0 && inv[stages[i - 1][0]] > 0 && inv[k] > inv[stages[i - 1][0]]);
+  $('inventory-over').hidden = !over;
   $('warnings').replaceChildren(...(s.warnings || []).map((w) => el('li', { textContent: w })));
   $('summary-box').hidden = false;
 }
@@ -198,7 +294,7 @@ function keyFigure(fig) {
   const stat = (x) => (fig.stat === 'swing' ? x.max - x.min : x[fig.stat]);
   return {
     label: `${fig.text.replace('{}', signals.label(fig.signal))} [${shown}]`,
-    f: (s) => stat(s.signals[fig.signal]) * (fig.stat.endsWith('_s') ? 1 : factor),
+    f: (s) => { const x = stat(s.signals[fig.signal]); return x === null || x === undefined ? null : x * (fig.stat.endsWith('_s') ? 1 : factor); },
   };
 }
 
@@ -211,14 +307,17 @@ function showComparison(now) {
     const { label, f } = keyFigure(fig);
     let a, b;
     try { a = f(kept.summary); b = f(now.summary); } catch (_) { continue; }
-    if (!Number.isFinite(a) || !Number.isFinite(b) || (a === 0 && b === 0)) continue;
+    // A figure that one run lacks (a signal that never settles has no settling time) is not compared.
+    if (a === null || b === null || !Number.isFinite(a) || !Number.isFinite(b) || (a === 0 && b === 0)) continue;
     const d = b - a;
-    const cell = el('td', { textContent: `${d >= 0 ? '+' : ''}${fmt(d, 3)}`, className: d > 0 ? 'up' : d < 0 ? 'down' : '' });
+    // Coloured and worded by better or worse where the figure has a good direction, else neutral.
+    const good = fig.better && d !== 0 ? (d > 0) === (fig.better === 'higher') : null;
+    const cell = el('td', { textContent: `${d >= 0 ? '+' : ''}${fmt(d, 3)}${good === null ? '' : good ? ' (better)' : ' (worse)'}`, className: good === null ? '' : good ? 'better' : 'worse' });
     rows.push(el('tr', {}, el('th', { scope: 'row', textContent: label }), el('td', { textContent: fmt(a) }), el('td', { textContent: fmt(b) }), cell));
   }
   const head = el('tr', {}, ...['key figure', `kept: ${kept.name}`, `this run: ${now.name}`, 'difference'].map((h) => el('th', { scope: 'col', textContent: h })));
   box.replaceChildren(el('h2', { textContent: 'Compared with the kept run (dashed, muted in every plot)' }),
-    el('div', { className: 'scroll' }, el('table', { id: 'compare-table' }, el('thead', {}, head), el('tbody', {}, ...rows))));
+    el('div', { className: 'scroll', tabIndex: 0, attrs: { role: 'region', 'aria-label': 'Key figures compared' } }, el('table', { id: 'compare-table' }, el('thead', {}, head), el('tbody', {}, ...rows))));
   box.hidden = false;
 }
 
@@ -245,6 +344,8 @@ async function run({ focus = true, trial = null } = {}) {
   if (isBusy() || !form || form.invalid.size) return;
   const text = trial ? trial.text : JSON.stringify(form.current());
   const sc = trial ? JSON.parse(trial.text) : form.current(); // (its seed only for display)
+  // The inputs this result will belong to, taken now (the form may change while it runs).
+  const state = stateKey(trial ? 'mc' : 'run'), study = form.name;
   setPhase('running');
   status('Running...');
   const started = performance.now();
@@ -259,14 +360,22 @@ async function run({ focus = true, trial = null } = {}) {
   progress(1);
   const seed = trial ? (trial.text.match(/"seed":\s*(\d+)/) || [])[1] : null;
   const name = trial ? `${studyTitle(form.name)}, Monte Carlo trial ${trial.i} (sea seed ${seed})` : runName(sc);
-  setResult({ summary: m.summary, csv: m.csv, scenario: sc, text, columns: m.columns, name });
   setPhase('idle');
-  showSummary(m.summary, m.constants);
-  showComparison({ summary: m.summary, name });
-  const order = (STUDIES[form.name] && STUDIES[form.name].plots) || DEFAULT_PLOTS;
-  const { markers } = drawRun(plots, m.columns, signals, m.constants, sc, { order, kept });
-  if (sc.sea.kind !== 'calm') drawSeaExtras(plots, c, sc, m.columns, m.constants, (e) => status(e.message, true));
-  live.show(m.columns, m.constants, sc, text).catch((e) => status(`The live views failed: ${e.message}`, true));
+  const draw = () => {
+    setResult({ summary: m.summary, csv: m.csv, scenario: sc, text, columns: m.columns, name, study });
+    showSummary(m.summary, m.constants);
+    showComparison({ summary: m.summary, name });
+    const order = (STUDIES[study] && STUDIES[study].plots) || DEFAULT_PLOTS;
+    const { markers } = drawRun(plots, m.columns, signals, m.constants, sc, { order, kept });
+    if (sc.sea.kind !== 'calm') drawSeaExtras(plots, client, sc, m.columns, m.constants, (e) => status(e.message, true));
+    live.show(m.columns, m.constants, sc, text).catch((e) => status(`The live views failed: ${e.message}`, true));
+    return markers;
+  };
+  if (!trial) mode = 'run';
+  const markers = draw();
+  remember(trial ? `trial ${trial.i}|${state}` : state, state, draw);
+  settle();
+  showStale();
   const t = m.summary.final_time_s, wall = m.wall_ms / 1000;
   const events = sc.sea.kind === 'calm' ? '' : ` Surface losses started ${markers.length} time(s).`;
   status(`Done${trial ? ` (${name})` : ''}: ${t} s simulated in ${wall.toFixed(2)} s (${(t / wall).toFixed(0)} times real time).${events}`);
@@ -279,6 +388,7 @@ async function runMonteCarlo() {
   const why = MonteCarlo.refusal(sc);
   if (why) { status(why, true); return; }
   const n = Number(sc.monte_carlo.trials);
+  const state = stateKey('mc'), study = form.name;
   setPhase('montecarlo');
   live.hide();
   const started = performance.now();
@@ -290,11 +400,19 @@ async function runMonteCarlo() {
       progress(done / n, secs > 0.5 ? `${done} of ${n} trials, about ${((secs * (n - done)) / done).toFixed(1)} s left` : '');
     });
   } catch (e) { failed(e); return; }
-  setResult({ summary: out.summary, csv: '', scenario: sc });
   setPhase('idle');
-  $('summary-box').hidden = true;
-  $('compare-box').hidden = true;
-  showMonteCarlo(plots, out.summary, signals, out.constants, { onReplay: replayTrial, onPickBar: replayFromBar, thesis });
+  const draw = () => {
+    setResult({ summary: out.summary, csv: '', scenario: sc, study, name: `${studyTitle(study)}, Monte Carlo` });
+    live.hide();
+    $('summary-box').hidden = true;
+    $('compare-box').hidden = true;
+    showMonteCarlo(plots, out.summary, signals, out.constants, { onReplay: replayTrial, onPickBar: replayFromBar, thesis, study });
+  };
+  mode = 'mc';
+  draw();
+  remember(state, state, draw);
+  settle();
+  showStale();
   status(`Monte Carlo done: ${n} trials in ${((performance.now() - started) / 1000).toFixed(1)} s.`);
   $('results').focus();
 }
@@ -366,7 +484,10 @@ function cancel() {
 // Tabs (ARIA pattern): click, or arrow keys / Home / End on the tab list.
 const TABS = [['tab-sim', 'panel-sim'], ['tab-design', 'panel-design'], ['tab-ips', 'panel-ips']];
 const SKIP_TARGETS = { 'tab-sim': '#results', 'tab-ips': '#ips-plots', 'tab-design': '#design-plots' };
-function selectTab(id, focus = false) {
+const currentTab = () => (TABS.find(([t]) => $(t).getAttribute('aria-selected') === 'true') || TABS[0])[0].slice(4);
+// push: a tab the user picked is a step in the history (Back returns to the tab before).
+function selectTab(id, focus = false, push = true) {
+  const changed = currentTab() !== id.slice(4);
   for (const [tab, panel] of TABS) {
     const on = tab === id;
     $(tab).setAttribute('aria-selected', String(on));
@@ -378,6 +499,7 @@ function selectTab(id, focus = false) {
   document.querySelector('a.skip').setAttribute('href', SKIP_TARGETS[id]);
   if (id === 'tab-ips') stability.update();
   if (id === 'tab-design') design.update();
+  if (changed && push && form) follow(true);
 }
 for (const [tab] of TABS) $(tab).addEventListener('click', () => selectTab(tab));
 $('tabs').addEventListener('keydown', (e) => {
@@ -410,16 +532,17 @@ $('keep').addEventListener('click', keep);
 $('unkeep').addEventListener('click', () => { kept = null; $('unkeep').hidden = true; $('compare-box').hidden = true; status('The kept run is forgotten.'); });
 $('reset').addEventListener('click', () => {
   if (!form) return;
-  form.select(form.name);
-  form.save();
-  follow(form.name, false);
+  validating++; // a check of the values left behind must not mark the study's own
+  form.reset();
+  onEdit();
   status('Back to the study\'s values.');
 });
+$('stale-run').addEventListener('click', () => (mode === 'mc' ? runMonteCarlo() : run()));
 $('share').addEventListener('click', async () => {
   if (!form) return;
   const r = getResult();
   const view = r && r.columns && JSON.stringify(r.scenario) === JSON.stringify(form.scenario) ? live.view() : null;
-  const url = location.origin + location.pathname + linkHash(form.name, form.preset(), form.scenario, view);
+  const url = location.origin + location.pathname + hereHash(view);
   // A custom hull's offsets can make the link longer than browsers, chat programs and mail keep:
   // then the page offers the scenario as a file instead of a link that would break.
   const tooLong = url.length > HULL.maxLinkChars;
@@ -449,5 +572,4 @@ $('export-json').addEventListener('click', () => {
   if (r) download(`${r.scenario.name}-summary.json`, `{"scenario": ${r.text || JSON.stringify(r.scenario)},\n"summary": ${JSON.stringify(r.summary, null, 1)}}`, 'application/json');
 });
 window.addEventListener('popstate', route);
-window.addEventListener('hashchange', route);
 startWorker();

@@ -87,23 +87,26 @@ function thesisPrinted(thesis, key) {
 // The study's summary: tables, then envelopes, histograms, onset and periodogram plots.
 // onReplay(i): replay trial i as a single run in the live views; onPickBar(hist, bin): replay a
 // trial from a histogram bar; thesis: the worker's thesisValues rows (the reference columns).
-export function showMonteCarlo(box, s, signals, constants, { onReplay = null, onPickBar = null, thesis = [] } = {}) {
+export function showMonteCarlo(box, s, signals, constants, { onReplay = null, onPickBar = null, thesis = [], study = null } = {}) {
   box.clear();
+  // The thesis' numbers stand only beside the thesis' own study (not beside a Wigley hull's).
+  const own = (which) => MC.thesisStudies[which].includes(study);
   const a = s.arrival_time_s, r = s.rice, e = s.excess_energy_mj;
   const th = (key) => thesisPrinted(thesis, key);
   const rows = [['Trials', s.trials], ['Seed', s.seed]];
   const [calmMean, calmStd] = MC.calmWater.map(th);
-  if (e) rows.push(['Excess energy vs submerged counterpart [MJ]', `${fmt(e.mean)} ± ${fmt(e.std)}`], [`Excess energy vs calm water [MJ] (thesis: ${calmMean} ± ${calmStd})`, `${fmt(e.vs_calm_water.mean)} ± ${fmt(e.vs_calm_water.std)}`]);
+  if (e) rows.push(['Excess energy vs submerged counterpart [MJ]', `${fmt(e.mean)} ± ${fmt(e.std)}`], [`Excess energy vs calm water [MJ]${own('calmWater') ? ` (thesis: ${calmMean} ± ${calmStd})` : ''}`, `${fmt(e.vs_calm_water.mean)} ± ${fmt(e.vs_calm_water.std)}`]);
   rows.push(['First surface effects / censored', `${a.events} / ${a.censored} (cap ${a.cap_s} s)`]);
-  const info = box.panel(null, box.generation, false, table('Monte Carlo summary', rows));
+  // An h2 before the plots' h3 titles (the run's summary, which has one, is hidden here).
+  const info = box.panel(null, box.generation, false, el('h2', { textContent: `Monte Carlo: ${s.trials} trials` }), table('Monte Carlo summary', rows));
   if (r) {
     info.append(
       // One row a statistic, ours beside the thesis': narrow enough for a phone.
-      el('div', { className: 'scroll' }, table('Arrival time of the first surface effect [s] (Table 5.8)',
+      el('div', { className: 'scroll', tabIndex: 0, attrs: { role: 'region', 'aria-label': 'Table 5.8' } }, table('Arrival time of the first surface effect [s] (Table 5.8)',
         (() => {
           const rice = exponentialMoments(r.rate_per_s), mc = [a.mean, a.std, a.skewness, a.kurtosis, a.median, a.mode];
-          return MC.table58.map(([name, riceKey, mcKey], k) => [name, fmt(rice[k]), fmt(mc[k]), th(riceKey), th(mcKey)]);
-        })(), ['', 'Rice', 'Monte Carlo', 'thesis: Rice', 'thesis: Monte Carlo'])),
+          return MC.table58.map(([name, riceKey, mcKey], k) => [name, fmt(rice[k]), fmt(mc[k]), ...(own('table58') ? [th(riceKey), th(mcKey)] : [])]);
+        })(), ['statistic', 'Rice', 'Monte Carlo', ...(own('table58') ? ['thesis: Rice', 'thesis: Monte Carlo'] : [])])),
       el('p', { className: 'about', textContent: `Rice: the level Z = ${fmt(r.z_m, 3)} m, crossed at ${fmt(r.rate_per_s, 3)} per second (exponential arrivals).` }),
       el('p', { className: 'about', textContent: `Censored at ${a.cap_s} s alike: Monte Carlo mean of min(T, cap) ${fmt(a.mean_censored)} s, Rice ${fmt(r.mean_censored_s)} s.` }),
       el('p', { className: 'about', textContent: MC.riceNote }));
@@ -146,12 +149,13 @@ export function showMonteCarlo(box, s, signals, constants, { onReplay = null, on
   }
   const ht = s.histogram_at_t;
   const pick = (hist) => (onPickBar ? (bin) => onPickBar(hist, bin) : null);
-  if (ht.n > 0) box.histogram(`${signals.labelWithUnit(ht.signal, constants)} at t = ${ht.t_s} s (Fig. 5-21), skewness ${fmt(ht.skewness, 3)}`, ht.histogram, signals.labelWithUnit(ht.signal, constants), null, undefined, pick('at_time'));
+  if (ht.n > 0) box.histogram(`${signals.labelWithUnit(ht.signal, constants)} at t = ${ht.t_s} s (Fig. 5-21), skewness ${fmt(ht.skewness, 3)}${ht.n < s.trials ? `, from the ${ht.n} of ${s.trials} trials still running then` : ''}`, ht.histogram, signals.labelWithUnit(ht.signal, constants), null, undefined, pick('at_time'));
   if (e) box.histogram(`Excess energy per trial vs the submerged counterpart [MJ] (Fig. 5-22): ${fmt(e.mean)} ± ${fmt(e.std)}`, e.histogram, 'excess energy [MJ]', null, undefined, pick('excess'));
   if (a.events > 0) {
     const h = a.histogram, w = (h.hi - h.lo) / h.counts.length, total = s.trials;
     const overlay = r ? { label: `exponential, Rice rate ${fmt(r.rate_per_s, 3)}/s`, values: h.counts.map((_, i) => total * (Math.exp(-r.rate_per_s * (h.lo + i * w)) - Math.exp(-r.rate_per_s * (h.lo + (i + 1) * w)))) } : null;
-    box.histogram('Arrival time of the first surface effect [s] (Fig. 5-24)', h, time, overlay, undefined, pick('arrival'));
+    const from = a.events < total ? `, from the ${a.events} of ${total} trials that had one (the other ${total - a.events} ended without, at ${a.cap_s} s)` : '';
+    box.histogram(`Arrival time of the first surface effect [s] (Fig. 5-24)${from}`, h, time, overlay, undefined, pick('arrival'));
   }
   if (s.onset && s.onset.t_s.length > 1) {
     const o = s.onset;

@@ -193,7 +193,9 @@ export class PlotBox {
       legend: { live: false },
       // No horizontal cursor line: parked at mid-height by the live views' cursor, it read as a
       // threshold.
-      cursor: time && this.sync ? { y: false, sync: { key: this.sync, setSeries: false } } : { y: false },
+      // One cursor across the box's time plots, and across any other plots that share their x
+      // axis (the Bode magnitude and phase); zoom is linked on time plots only.
+      cursor: this.sync ? { y: false, sync: { key: time ? this.sync : `${this.sync}:${x.label}`, setSeries: false } } : { y: false },
       hooks: { drawClear: [overlay], draw: [levelLabels], ...(time && this.sync ? { setScale: [(u, key) => this.linkZoom(u, key)] } : {}) },
     };
     const u = new uPlot(opts, [x.data, ...series.map((s) => s.data)], chart);
@@ -237,7 +239,7 @@ export class PlotBox {
     const table = el('table', {}, el('caption', { textContent: `${title}: over ${x.label}` }),
       el('thead', {}, el('tr', {}, ...['line', 'first', 'lowest', 'highest', 'last'].map((h) => el('th', { scope: 'col', textContent: h })))),
       el('tbody', {}, ...rows));
-    const details = el('details', {}, el('summary', { textContent: 'Numbers' }), el('div', { className: 'scroll' }, table));
+    const details = el('details', {}, el('summary', { textContent: 'Numbers' }), el('div', { className: 'scroll', tabIndex: 0, attrs: { role: 'region', 'aria-label': 'Numbers' } }, table));
     return el('div', { className: 'tools' }, ...(key ? [el('span', { className: 'key' }, ...key)] : []), png, details);
   }
 

@@ -3,7 +3,7 @@
 // are trace values at the playback time; the waterline comes from the wasm's hullProfile and the
 // wave field from the run's own wave components summed in Rust (Sea). No physics here.
 import { LIVE } from '../config.js';
-import { C, View, rowAt } from './shared.js';
+import { C, View, fixed, rowAt } from './shared.js';
 
 export class PlanView extends View {
   constructor(onResize) {
@@ -80,7 +80,7 @@ export class PlanView extends View {
       g.fillStyle = 'rgba(255, 255, 255, 0.88)'; g.fillRect(align === 'left' ? x - 3 : x - tw - 3, y - 2, tw + 6, fs + 4);
       g.fillStyle = C.text; g.fillText(text, x, y);
     };
-    label(`heading ${v('heading_deg').toFixed(0)}°, ${v('ship_speed_kn').toFixed(1)} kn`, 8, 6);
+    label(`heading ${fixed(v('heading_deg'), 0)}°, ${v('ship_speed_kn').toFixed(1)} kn`, 8, 6);
     label(`rudder ${Math.abs(v('rudder_deg')).toFixed(1)}°${v('rudder_deg') > 0.05 ? ' to port' : v('rudder_deg') < -0.05 ? ' to starboard' : ''} (drawn ×3)`, 8, 10 + fs);
     label(`drift ${v('drift_angle_deg').toFixed(1)}° (dashed: course over ground)`, 8, 14 + 2 * fs);
     label('N ↑', w - 8, 6, 'right');

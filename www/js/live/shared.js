@@ -15,6 +15,8 @@ export function rowAt(ts, t) {
   return lo;
 }
 
+// x to d decimals, never "-0" (a heading of -0.2 deg reads 0).
+export const fixed = (x, d) => { const t = x.toFixed(d); return /^-0(\.0*)?$/.test(t) ? t.slice(1) : t; };
 export const mw = (w) => `${(w / 1e6).toFixed(1)} MW`;
 export const pct = (x) => (Number.isFinite(x) ? `${(100 * x).toFixed(1)} %` : '–');
 // The hub's place against the local surface (eq. 2.57 as printed can put it above).

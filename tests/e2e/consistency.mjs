@@ -1,0 +1,236 @@
+// Browser test: the page never contradicts itself (issue 29). One state for inputs, results and
+// the address bar (Reset, Back/Forward, edits kept per study, Monte Carlo and design-tab links),
+// labels that match their numbers, and the layout and accessibility leftovers, at the three
+// sizes a class meets. Usage: node tests/e2e/consistency.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR
+import { mkdirSync } from 'node:fs';
+import { assert, axeFindings, checker, launch, openPage, pressAndWait, setField } from './lib.mjs';
+
+const base = process.argv[2];
+const shots = process.argv[3];
+mkdirSync(shots, { recursive: true });
+const { check, counts } = checker();
+const errors = [];
+const browser = await launch();
+// bypassCSP: axe-core is injected as an inline script (the page's own policy forbids those).
+const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 }, bypassCSP: true });
+const open = (url, c = ctx) => openPage(c, url, base, errors);
+const summaryText = (p) => p.$eval('#summary tbody', (t) => t.textContent);
+const preset = (p) => p.$eval('#preset', (s) => s.value);
+const link = (name) => `${base}#v=2&preset=${name}`;
+
+await check('Reset right after an out-of-range value clears its error and Run is back', async () => {
+  const p = await open(link('head-seas-ss6'));
+  const study = await p.inputValue('#f-sea-sea_state');
+  await setField(p, 'sea.sea_state', 1);
+  await p.click('#reset'); // before the check of the value has answered
+  await p.waitForTimeout(1500);
+  assert((await p.inputValue('#f-sea-sea_state')) === study, 'the field did not return to the study value');
+  assert((await p.getAttribute('#f-sea-sea_state', 'aria-invalid')) === null, 'the field keeps its error after Reset');
+  assert((await p.textContent('#f-sea-sea_state-err')) === '', 'the error text stays after Reset');
+  assert(!(await p.$eval('#run', (b) => b.disabled)) && !(await p.$eval('#mc-run', (b) => b.disabled)), 'Run or Monte Carlo stays disabled');
+  await p.close();
+});
+
+await check('edits are kept per study while the page is open, marked, and Reset brings the study back', async () => {
+  const p = await open(link('head-seas-ss6'));
+  const study = { ss: await p.inputValue('#f-sea-sea_state'), seed: await p.inputValue('#f-sim-seed') };
+  await setField(p, 'sea.sea_state', 5);
+  await setField(p, 'sim.seed', 3);
+  await p.selectOption('#preset', 'startup');
+  assert(await p.$eval('#modified', (m) => m.hidden), 'start-up is marked modified');
+  await p.selectOption('#preset', 'head-seas-ss6');
+  assert((await p.inputValue('#f-sea-sea_state')) === '5' && (await p.inputValue('#f-sim-seed')) === '3', 'the edits were lost on the way back');
+  assert(!(await p.$eval('#modified', (m) => m.hidden)), 'no visible modified mark');
+  assert(/2 values/.test(await p.textContent('#modified')), `mark: ${await p.textContent('#modified')}`);
+  assert((await p.$eval('#preset', (s) => s.selectedOptions[0].text)).includes('(modified)'), 'the picker does not say modified');
+  assert(await p.$eval('#f-sea-sea_state-field', (d) => d.classList.contains('edited')), 'the changed field is not marked');
+  await p.click('#reset');
+  await p.waitForTimeout(300);
+  assert((await p.inputValue('#f-sea-sea_state')) === study.ss && (await p.inputValue('#f-sim-seed')) === study.seed, 'Reset did not restore the study');
+  assert(await p.$eval('#modified', (m) => m.hidden), 'still marked modified after Reset');
+  await p.close();
+});
+
+await check('Back and Forward restore inputs and results together; exports are named for what they hold; the tabs are steps too', async () => {
+  const p = await open(link('turn-90'));
+  await pressAndWait(p);
+  const turn = await summaryText(p);
+  await p.selectOption('#preset', 'ac-braking');
+  assert(await p.$eval('#summary-box', (e) => e.hidden), "the 90 deg turn's summary stays under the braking study");
+  assert((await p.$$eval('#plots .uplot', (e) => e.length)) === 0, "the 90 deg turn's plots stay under the braking study");
+  await pressAndWait(p);
+  const brake = await summaryText(p);
+  assert(brake !== turn, 'same summaries');
+  await p.goBack();
+  await p.waitForFunction(() => document.getElementById('preset').value === 'turn-90', null, { timeout: 10000 });
+  await p.waitForFunction((t) => document.querySelector('#summary tbody').textContent === t, turn, { timeout: 10000 });
+  assert(/turn/i.test(await p.textContent('#watch')), 'What to watch is not the turn\'s');
+  const [dl] = await Promise.all([p.waitForEvent('download'), p.click('#export-csv')]);
+  assert(dl.suggestedFilename().includes('turn-90'), `export named ${dl.suggestedFilename()} under turn-90`);
+  await p.goForward();
+  await p.waitForFunction(() => document.getElementById('preset').value === 'ac-braking', null, { timeout: 10000 });
+  await p.waitForFunction((t) => document.querySelector('#summary tbody').textContent === t, brake, { timeout: 10000 });
+  await p.click('#tab-ips');
+  await p.waitForTimeout(300);
+  assert((await p.evaluate(() => location.hash)).includes('tab=ips'), 'the address does not say the tab');
+  await p.goBack();
+  await p.waitForFunction(() => document.getElementById('tab-sim').getAttribute('aria-selected') === 'true', null, { timeout: 10000 });
+  assert((await preset(p)) === 'ac-braking', `Back on the stability tab changed the study to ${await preset(p)}`);
+  assert((await summaryText(p)) === brake, 'Back from the stability tab lost the result');
+  await p.close();
+});
+
+await check('an edit after a run marks the results stale, and Back returns to the run values with their result', async () => {
+  const p = await open(link('startup'));
+  await setField(p, 'sim.duration_s', 60);
+  await pressAndWait(p);
+  const first = await summaryText(p);
+  await setField(p, 'ship.drag_coeff', 0.004);
+  await p.waitForTimeout(300);
+  assert(!(await p.$eval('#stale', (e) => e.hidden)), 'results of other values are not marked stale');
+  await p.click('#stale-run');
+  await p.waitForFunction(() => /^Done/.test(document.getElementById('status').textContent), null, { timeout: 60000 });
+  assert(await p.$eval('#stale', (e) => e.hidden), 'still marked stale after running');
+  await p.goBack();
+  await p.waitForFunction((t) => document.querySelector('#summary tbody').textContent === t, first, { timeout: 10000 });
+  assert((await p.inputValue('#f-ship-drag_coeff')) !== '0.004', 'Back did not restore the earlier value');
+  assert(await p.$eval('#stale', (e) => e.hidden), 'stale mark after Back to the matching result');
+  await p.close();
+});
+
+const mcTable = (p) => p.$$eval('#plots table', (t) => t.map((x) => x.textContent).join('|'));
+await check('a Monte Carlo link opens the Monte Carlo view and reruns it to the same numbers', async () => {
+  const c = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  const p = await open(link('mc-arrival'), c);
+  await setField(p, 'monte_carlo.trials', 6);
+  const st = await pressAndWait(p, '#mc-run');
+  assert(st.startsWith('Monte Carlo done'), st);
+  const mine = await mcTable(p);
+  await p.click('#share');
+  const url = await p.inputValue('#share-url');
+  assert(url.includes('mode=mc'), url);
+  const other = await open(url, c);
+  await other.waitForFunction(() => document.getElementById('status').textContent.startsWith('Monte Carlo done'), null, { timeout: 120000 });
+  assert((await mcTable(other)) === mine, 'the linked Monte Carlo gave other numbers');
+  await c.close();
+});
+
+await check("the thesis' Table 5.8 columns stand only beside the thesis' own study; a histogram of some trials says how many", async () => {
+  const c = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  const p = await open(link('mc-wigley'), c);
+  await setField(p, 'monte_carlo.trials', 6);
+  await pressAndWait(p, '#mc-run');
+  const heads = await p.$$eval('#plots th', (t) => t.map((x) => x.textContent));
+  assert(!heads.some((h) => /thesis/.test(h)), `thesis columns beside the Wigley study: ${heads.join(', ')}`);
+  assert(!heads.some((h) => h.trim() === ''), 'an empty table header');
+  const p2 = await open(link('mc-arrival'), c);
+  await setField(p2, 'monte_carlo.trials', 6);
+  await pressAndWait(p2, '#mc-run');
+  assert((await p2.$$eval('#plots th', (t) => t.map((x) => x.textContent))).includes('thesis: Rice'), 'no thesis column beside the thesis study');
+  const titles = await p2.$$eval('#plots h3', (h) => h.map((x) => x.textContent));
+  const arrival = titles.find((t) => t.startsWith('Arrival time'));
+  const events = Number((await p2.textContent('#plots')).match(/First surface effects \/ censored(\d+) \//)?.[1]);
+  if (arrival && events < 6) assert(arrival.includes(`${events} of 6 trials`), `histogram title: ${arrival}`);
+  await c.close();
+});
+
+await check("the design tab's settings are in the address and survive a reload", async () => {
+  const c = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  const p = await open(base, c);
+  await p.click('#tab-design');
+  await p.waitForFunction(() => document.getElementById('design-status').textContent.length > 0, null, { timeout: 30000 });
+  const want = await p.$eval('#design-q', (e) => {
+    e.value = String(Number(e.min) + 1);
+    e.dispatchEvent(new Event('input'));
+    e.dispatchEvent(new Event('change'));
+    return e.value;
+  });
+  await p.waitForTimeout(300);
+  const hash = await p.evaluate(() => location.hash);
+  assert(hash.includes('tab=design') && hash.includes('design='), `address: ${hash}`);
+  await p.reload();
+  await p.waitForFunction(() => !document.getElementById('run').disabled, null, { timeout: 30000 });
+  assert((await p.getAttribute('#tab-design', 'aria-selected')) === 'true', 'the reload left the design tab');
+  assert((await p.inputValue('#design-q')) === want, `q after reload ${await p.inputValue('#design-q')} (want ${want})`);
+  // The same tuning from the address alone, in a fresh page.
+  const q = await open(base + hash, await browser.newContext({ viewport: { width: 1366, height: 768 } }));
+  assert((await q.inputValue('#design-q')) === want, 'a link did not carry the tuning');
+  await c.close();
+});
+
+await check('the Bode magnitude and phase share one cursor', async () => {
+  const p = await open(base);
+  await p.click('#tab-ips');
+  await p.waitForFunction(() => document.querySelectorAll('#ips-plots .chart').length >= 2, null, { timeout: 30000 });
+  const keys = await p.$$eval('#ips-plots .chart', (c) => c.filter((x) => x.uplot).map((x) => x.uplot.cursor.sync && x.uplot.cursor.sync.key));
+  assert(keys.length >= 2 && keys.every((k) => k && k === keys[0]), `cursor sync keys: ${keys}`);
+  await p.close();
+});
+
+await check('power ratios are named for what they are, headings never read -0, compare colours mean better or worse', async () => {
+  const p = await open(link('acceleration'));
+  await pressAndWait(p);
+  const heads = await p.$$eval('#inventory th[scope=col]', (t) => t.map((x) => x.textContent));
+  assert(!heads.some((h) => /efficiency/i.test(h)) && heads.includes('out / in now'), `inventory columns: ${heads}`);
+  assert((await p.evaluate(async () => (await import('./js/live/shared.js')).fixed(-0.2, 0))) === '0', 'a heading of -0.2 deg reads -0');
+  assert(!/heading -0°/.test(await p.textContent('#live')), 'the live text says heading -0');
+  await p.click('#compare-with button');
+  await p.waitForFunction(() => document.getElementById('preset').value === 'acceleration-high-gains' && /^Done/.test(document.getElementById('status').textContent), null, { timeout: 60000 });
+  const cells = await p.$$eval('#compare-table tbody tr', (rows) => rows.map((r) => ({ label: r.cells[0].textContent, text: r.cells[3].textContent, cls: r.cells[3].className })));
+  assert(cells.length > 3, `${cells.length} compared figures`);
+  for (const c of cells) {
+    assert(['', 'better', 'worse'].includes(c.cls), `${c.label}: class ${c.cls}`);
+    assert((c.cls === 'better') === c.text.includes('(better)') && (c.cls === 'worse') === c.text.includes('(worse)'), `${c.label}: "${c.text}" coloured ${c.cls}`);
+  }
+  const dip = cells.find((c) => c.label.startsWith('lowest bus voltage'));
+  assert(dip && (dip.text.startsWith('+') ? dip.cls === 'better' : dip.cls !== 'better'), `bus dip: ${JSON.stringify(dip)}`);
+  const peak = cells.find((c) => c.label.startsWith('peak motor power'));
+  assert(!peak || peak.cls === '', 'a figure with no good direction is coloured');
+  await p.close();
+});
+
+// Where things are: Run above the fold at 1366x768, the plots up in presentation mode and on the
+// phone, one main landmark, and axe after a run and after a Monte Carlo study at every size.
+const SIZES = [[1366, 768], [1920, 1080], [390, 844]];
+const RULES = ['heading-order', 'empty-table-header', 'landmark-one-main', 'scrollable-region-focusable', 'landmark-no-duplicate-main'];
+for (const [w, h] of SIZES) {
+  await check(`at ${w}x${h}: Run in view on load, the plots come up, one main landmark, axe clean after a run and a Monte Carlo study (screenshots)`, async () => {
+    const c = await browser.newContext({ viewport: { width: w, height: h }, bypassCSP: true });
+    const p = await open(link('head-seas-ss6'), c);
+    const run = await p.$eval('#run', (b) => b.getBoundingClientRect().bottom);
+    if (w >= 1366) assert(run <= h, `Run is ${Math.round(run)} px down a ${h} px screen`);
+    assert((await p.$$eval('main', (m) => m.length)) === 1 && (await p.$$eval('main[role=tabpanel]', (m) => m.length)) === 0, 'not one main landmark');
+    await setField(p, 'sim.duration_s', 120);
+    await pressAndWait(p);
+    await p.waitForTimeout(300);
+    let v = await axeFindings(p, { rules: RULES });
+    assert(!v.length, `after a run: ${v.join(' | ')}`);
+    await p.screenshot({ path: `${shots}/consistency-run-${w}x${h}.png` });
+    const top = (sel) => p.$eval(sel, (e) => e.getBoundingClientRect().top + window.scrollY);
+    if (w < 600) assert((await top('#plots')) < (await top('#live')), 'on the phone the plots come after the live views');
+    await p.click('#present');
+    await p.waitForTimeout(500);
+    assert(await p.isVisible('#watch'), 'presentation hides What to watch');
+    const firstPlot = await top('#plots .plot'), live = await top('#live');
+    if (w >= 1366) assert(live < h && firstPlot < 2 * h, `presenting: live views at ${Math.round(live)} px, first plot at ${Math.round(firstPlot)} px`);
+    await p.screenshot({ path: `${shots}/consistency-presenting-${w}x${h}.png` });
+    v = await axeFindings(p, { rules: RULES });
+    assert(!v.length, `presenting: ${v.join(' | ')}`);
+    await p.click('#present');
+    await p.selectOption('#preset', 'mc-arrival');
+    await setField(p, 'monte_carlo.trials', 6);
+    await pressAndWait(p, '#mc-run');
+    await p.waitForTimeout(300);
+    v = await axeFindings(p, { rules: RULES });
+    assert(!v.length, `after a Monte Carlo study: ${v.join(' | ')}`);
+    await p.screenshot({ path: `${shots}/consistency-mc-${w}x${h}.png` });
+    await c.close();
+  });
+}
+
+await check('no console errors and no request left the page', async () => {
+  assert(errors.length === 0, errors.join('\n'));
+});
+await browser.close();
+console.log(`e2e: ${counts.passed} passed, ${counts.failed} failed`);
+process.exit(counts.failed ? 1 : 0);

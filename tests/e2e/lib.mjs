@@ -1,0 +1,62 @@
+// What the browser tests share: the browser, a page opened and ready, fields set as a person
+// sets them, a run waited for, named checks with a closing count, and axe-core's findings.
+import { chromium } from 'playwright-core';
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+
+const axeSource = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+
+export function assert(c, msg) { if (!c) throw new Error(msg); }
+
+// Named checks; E2E_ONLY=regex runs only the matching ones (while working on one; CI runs all).
+export function checker() {
+  const counts = { passed: 0, failed: 0 };
+  const check = async (name, fn) => {
+    if (process.env.E2E_ONLY && !new RegExp(process.env.E2E_ONLY).test(name)) return;
+    try { await fn(); counts.passed++; console.log(`ok   ${name}`); } catch (e) { counts.failed++; console.log(`FAIL ${name}: ${e.message}`); }
+  };
+  return { check, counts };
+}
+
+export function launch() {
+  return chromium.launch({
+    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+  });
+}
+
+// A page of `ctx` at `url`, once the simulator is ready (Run enabled); console errors and
+// requests that leave `base` go to `errors`.
+export async function openPage(ctx, url, base, errors) {
+  const page = await ctx.newPage();
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(`${url}: ${m.text()}`); });
+  page.on('pageerror', (e) => errors.push(`${url}: ${e}`));
+  page.on('request', (r) => { if (!r.url().startsWith(base) && !r.url().startsWith('data:') && !r.url().startsWith('blob:')) errors.push(`request left the origin: ${r.url()}`); });
+  await page.goto(url);
+  await page.waitForFunction(() => !document.getElementById('run').disabled, null, { timeout: 30000 });
+  return page;
+}
+
+export async function setField(page, path, value) {
+  const sel = '#f-' + path.replace(/\./g, '-');
+  // A field the study does not show on top: open the folds it is in.
+  await page.$eval(sel, (e) => { for (let d = e.closest('details'); d; d = d.parentElement.closest('details')) d.open = true; });
+  if ((await page.$eval(sel, (e) => e.tagName)) === 'SELECT') await page.selectOption(sel, String(value));
+  else await page.fill(sel, String(value));
+  await page.dispatchEvent(sel, 'change');
+}
+
+// Presses `button` (Run or Monte Carlo) and waits for the status to say it ended.
+export async function pressAndWait(page, button = '#run') {
+  await page.click(button);
+  await page.waitForFunction(() => /^Done|^Monte Carlo done|^Cancel/.test(document.getElementById('status').textContent) || document.getElementById('status').className === 'error', null, { timeout: 120000 });
+  return page.textContent('#status');
+}
+
+// axe-core's violations of the given impacts (or of the given rule ids), as short lines.
+export async function axeFindings(page, { impacts = ['serious', 'critical'], rules = [] } = {}) {
+  await page.addScriptTag({ content: axeSource });
+  return page.evaluate(async ({ impacts, rules }) => (await window.axe.run(document, { resultTypes: ['violations'] })).violations
+    .filter((x) => impacts.includes(x.impact) || rules.includes(x.id))
+    .map((x) => `${x.id} (${x.impact}): ${x.nodes.slice(0, 2).map((n) => n.target.join(' ')).join('; ')}`), { impacts, rules });
+}
