@@ -167,6 +167,17 @@ async function onReady(m) {
   const linked = await openLink(location.hash.slice(1));
   design.restore(linked && !linked.refused ? linked.design : null);
   if (linked && !linked.refused && linked.tab !== 'sim') selectTab(`tab-${linked.tab}`, false, false);
+  // A reload shows the address's state again without running it (a link opened afresh runs).
+  const reloaded = (performance.getEntriesByType('navigation')[0] || {}).type === 'reload';
+  if (linked && !linked.refused && reloaded) {
+    form.select(linked.name, linked.scenario);
+    form.save();
+    mode = linked.mode;
+    follow(false);
+    setPhase('idle');
+    status(`Your edits are back${linked.edited.length ? ` (${linked.edited.length} value(s) changed from the study)` : ''}: press ${mode === 'mc' ? 'Monte Carlo' : 'Run'}.`);
+    return;
+  }
   if (linked && !linked.refused && (linked.edited.length || linked.view || linked.mode === 'mc')) {
     form.select(linked.name, linked.scenario);
     form.markLinked(linked.edited);
