@@ -14,6 +14,7 @@ import { StabilityTab } from './stability.js';
 import { DesignTab } from './design.js';
 import { LiveViews } from './live.js';
 import { HullPanel, HullPicker, num } from './hull.js';
+import { LessonView, readLessonHash, controlPath } from './lessons/view.js';
 
 const plots = new PlotBox($('plots'), { more: $('more-plots'), moreBox: $('more-plots-box'), sync: 'run' });
 const monteCarlo = new MonteCarlo();
@@ -33,6 +34,10 @@ let mode = 'run';
 let shown = null; // the key of the drawn result, or null
 const drawn = new Map(); // key -> {key, state, study, redraw()}: the last few results, for Back/Forward
 const DRAWN_MAX = 6;
+// Lessons (issue 30): the simulator's own runs, plots and live views behind a few controls.
+let lessons = null; // the LessonView, once the registry is there
+let lesson = null; // {def, scenario0} while a lesson is open (scenario0: the study with the lesson's settings)
+let lessonPending = false; // a control moved while a run was in flight: run again after it
 const stateKey = (m = mode) => `${m}|${form.name}|${JSON.stringify(form.scenario)}`;
 // The hull panel; its sheet also gives the loading fields their placeholders (the hull's own
 // values) and the hub height its h0.
@@ -77,7 +82,7 @@ const validate = (sc) => client.request(REQUEST.validate, { scenario: JSON.strin
 // link adds where the live views stand). An edit replaces the current entry unless that entry
 // shows a result of other values: then it pushes, so Back returns to those values and their
 // result. A study, tab or mode change pushes.
-const hereHash = (view = null) => linkHash(form.name, form.preset(), form.scenario, { mode, tab: currentTab(), design: design.changed(), view });
+const hereHash = (view = null) => (lesson ? lessons.hash(lesson.scenario0) : linkHash(form.name, form.preset(), form.scenario, { mode, tab: currentTab(), design: design.changed(), view }));
 const current = () => Boolean(shown) && drawn.has(shown) && drawn.get(shown).state === stateKey();
 function follow(push) {
   const h = hereHash();
@@ -146,6 +151,72 @@ async function openLink(hash) {
   return { ...link, edited: d === undefined ? [] : leafPaths(d) };
 }
 
+// The lesson's study with its settings, as the lesson starts from it.
+function lessonScenario(def) {
+  const sc = form.preset(def.preset);
+  for (const [p, v] of Object.entries(def.set)) setPath(sc, p, v);
+  return sc;
+}
+const labHref = () => linkHash(form.name, form.preset(), form.scenario);
+
+// Shows the lessons' index or one lesson (parsed: readLessonHash's answer).
+function openLesson(parsed) {
+  selectTab('tab-sim', false, false);
+  document.body.classList.add('lesson');
+  kept = null;
+  lessonPending = false;
+  validating++;
+  if (parsed.index) {
+    lesson = null;
+    document.body.dataset.lessonView = '';
+    lessons.showIndex(parsed.unknown);
+    clearResults();
+    status(parsed.unknown ? 'No such lesson: pick one.' : 'Pick a lesson.');
+    return;
+  }
+  const def = parsed.def;
+  const sc0 = lessonScenario(def);
+  const sc = JSON.parse(JSON.stringify(sc0));
+  for (const c of def.controls) {
+    const p = controlPath(c), v = lessons.value(c, parsed.values[p], sc0);
+    setPath(sc, p, v);
+    for (const [q, x] of Object.entries(lessons.also(c, v))) setPath(sc, q, x);
+  }
+  lesson = { def, scenario0: sc0 };
+  form.select(def.preset, sc);
+  mode = 'run';
+  clearResults();
+  document.body.dataset.lessonView = def.view;
+  lessons.open(def, sc, labHref());
+  history.replaceState(history.state, '', lessons.hash(sc0));
+  status(`${def.title}: answer the question (or "Just run it") to run.`);
+}
+function leaveLesson() {
+  lesson = null;
+  kept = null;
+  document.body.classList.remove('lesson');
+  $('lesson-box').replaceChildren();
+  $('lesson-explain').replaceChildren();
+}
+
+// A lesson's run: the one before stays drawn faintly; at most one in flight, the last asked wins.
+async function lessonRun() {
+  if (!lesson) return;
+  if (isBusy()) { lessonPending = true; return; }
+  const r = getResult();
+  kept = r && r.columns ? { name: 'the run before', columns: r.columns, summary: r.summary } : null;
+  const asked = performance.now();
+  await run({ focus: false, order: lesson.def.plots });
+  const res = getResult();
+  if (lesson && res && res.columns && res.study === lesson.def.preset) {
+    window.__lessonLatencyMs = performance.now() - asked; // for the browser test: control to plot
+    lessons.explain(res.summary, res.markers || []);
+    live.place({ at: lesson.def.at, speed: 2 });
+  }
+  if ($('lesson-lab')) $('lesson-lab').href = labHref();
+  if (lessonPending) { lessonPending = false; lessonRun(); }
+}
+
 async function onReady(m) {
   if (form) { setPhase('idle'); return; } // a fresh worker after a cancel: the page stays as it is
   signals = new Signals(m.signals);
@@ -154,6 +225,17 @@ async function onReady(m) {
   thesis = m.thesis || [];
   stability.setMeta(m.ips);
   form = new ScenarioForm(m.presets, m.params, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); } });
+  lessons = new LessonView(m.params, {
+    onChange: (path, v, also = {}) => {
+      setPath(form.scenario, path, v);
+      for (const [q, x] of Object.entries(also)) setPath(form.scenario, q, x);
+      history.replaceState(history.state, '', lessons.hash(lesson.scenario0));
+      lessonRun();
+    },
+    onAnswer: () => lessonRun(),
+  });
+  // For the browser test: the scenario a lesson runs, as text.
+  window.__scenarioText = () => JSON.stringify(form.current());
   hullPicker = new HullPicker(m.hulls || [], {
     form, validate, say: status, busy: isBusy,
     // An accepted hull or scenario file: into the form (a scenario file may name its study).
@@ -164,6 +246,13 @@ async function onReady(m) {
       onEdit(other);
     },
   });
+  const lessonLink = readLessonHash(location.hash.slice(1));
+  if (lessonLink) {
+    form.select(DEFAULT_PRESET);
+    setPhase('idle');
+    openLesson(lessonLink);
+    return;
+  }
   const linked = await openLink(location.hash.slice(1));
   design.restore(linked && !linked.refused ? linked.design : null);
   if (linked && !linked.refused && linked.tab !== 'sim') selectTab(`tab-${linked.tab}`, false, false);
@@ -247,6 +336,9 @@ function selectStudy(name, push = true) {
 // their result when the page still has it; else nothing is drawn and the status says what to press.
 async function route() {
   if (!form || isBusy()) return;
+  const lessonLink = readLessonHash(location.hash.slice(1));
+  if (lessonLink) { openLesson(lessonLink); return; }
+  if (document.body.classList.contains('lesson')) leaveLesson();
   const link = await openLink(location.hash.slice(1));
   if (!link || link.refused) return;
   validating++;
@@ -351,7 +443,8 @@ function failed(e) {
 }
 
 // trial: {i, text} replays Monte Carlo trial i from its scenario text (exact 64-bit seed).
-async function run({ focus = true, trial = null } = {}) {
+// order: the plots to draw first (a lesson's), else the study's.
+async function run({ focus = true, trial = null, order: plotOrder = null } = {}) {
   if (isBusy() || !form || form.invalid.size) return;
   const text = trial ? trial.text : JSON.stringify(form.current());
   const sc = trial ? JSON.parse(trial.text) : form.current(); // (its seed only for display)
@@ -376,9 +469,12 @@ async function run({ focus = true, trial = null } = {}) {
     setResult({ summary: m.summary, csv: m.csv, scenario: sc, text, columns: m.columns, name, study });
     showSummary(m.summary, m.constants);
     showComparison({ summary: m.summary, name });
-    const order = (STUDIES[study] && STUDIES[study].plots) || DEFAULT_PLOTS;
+    const order = plotOrder || (STUDIES[study] && STUDIES[study].plots) || DEFAULT_PLOTS;
     const { markers } = drawRun(plots, m.columns, signals, m.constants, sc, { order, kept });
-    if (sc.sea.kind !== 'calm') drawSeaExtras(plots, client, sc, m.columns, m.constants, (e) => status(e.message, true));
+    getResult().markers = markers;
+    // (Not in a lesson: its RAO and fuel plots are folded away, and the worker would compute them
+    // before the next run a slider asks for.)
+    if (sc.sea.kind !== 'calm' && !lesson) drawSeaExtras(plots, client, sc, m.columns, m.constants, (e) => status(e.message, true));
     live.show(m.columns, m.constants, sc, text).catch((e) => status(`The live views failed: ${e.message}`, true));
     return markers;
   };

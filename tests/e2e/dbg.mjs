@@ -1,0 +1,17 @@
+import { launch, openPage } from './lib.mjs';
+const b = await launch();
+const c = await b.newContext({ viewport: { width: 1366, height: 768 } });
+const e = [];
+const base = 'http://127.0.0.1:8765/';
+const p = await openPage(c, base + '#lessons', base, e);
+await p.goto(base + '#lesson=braking');
+await p.waitForTimeout(3000);
+console.log(await p.textContent('#status'), await p.evaluate(() => location.hash), e);
+await p.click('#lesson-a0').catch((x) => console.log('click', x.message));
+await p.waitForTimeout(4000);
+console.log(await p.textContent('#status'));
+await p.$eval('#lesson-plant-dc_link-brake_resistor_ohm', (e) => { e.selectedIndex = 1; e.dispatchEvent(new Event('change')); });
+await p.waitForTimeout(5000);
+console.log(await p.textContent('#status'), await p.evaluate(() => location.hash));
+await p.screenshot({ path: '/tmp/l1.png' });
+await b.close();
