@@ -86,6 +86,22 @@ for (const [w, h] of SIZES) {
   });
 }
 
+await check('a lesson in presentation mode at 1920x1080 keeps its controls, plots and live view on one screen (screenshot)', async () => {
+  const ctx = await browser.newContext({ viewport: { width: 1920, height: 1080 }, bypassCSP: true });
+  const p = await openPage(ctx, `${base}#lesson=waves`, base, errors);
+  await p.click('#lesson-a1');
+  await done(p);
+  await p.click('#present');
+  await p.waitForTimeout(800);
+  const ctl = await box(p, '#lesson-box'), plots = await p.$$eval('#plots .plot', (ps) => ps.map((x) => x.getBoundingClientRect().bottom + window.scrollY)), views = await liveBox(p);
+  const bottom = Math.max(ctl.bottom, ...plots, views[0].bottom);
+  assert(bottom <= 1080, `presenting: controls, plots and live view end at ${Math.round(bottom)} px`);
+  await p.screenshot({ path: `${shots}/lesson-presenting-1920x1080.png` });
+  const v = await axeFindings(p);
+  assert(!v.length, v.join(' | '));
+  await ctx.close();
+});
+
 await check('from a control to the new plot: at most 1.5 x the native run of the same scenario + 150 ms (measured side by side)', async () => {
   assert(existsSync(native), `no native ${native}`);
   const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 } });
