@@ -115,6 +115,8 @@ export const DEFAULT_PLOTS = ['speed', 'rpm', 'bus', 'motor', 'track'];
 // Key figures of the comparison of a kept run with the new one: a statistic of a signal's summary
 // ('swing' is max - min) or an energy of the summary, named by `text` ({} is the signal's label);
 // units from signalMeta (a statistic in seconds, `_s`, is in s), with an optional metric prefix.
+// `none`: the words for a statistic the summary leaves undefined (null): a settling time exists
+// only for a signal that left its order's band and came back to stay (core's summary.rs).
 export const KEY_FIGURES = [
   { text: 'peak {}', signal: 'im_power_pu', stat: 'max' },
   { text: 'lowest {}', signal: 'im_power_pu', stat: 'min' },
@@ -123,9 +125,9 @@ export const KEY_FIGURES = [
   { text: 'highest {}', signal: 'turbine_speed_pu', stat: 'max' },
   { text: 'peak {}', signal: 'fuel_power_w', stat: 'max', prefix: 'M' },
   { text: 'final {}', signal: 'ship_speed_kn', stat: 'final' },
-  { text: '{} settles after', signal: 'ship_speed_kn', stat: 'settling_time_s' },
-  { text: '{} settles after', signal: 'bus_voltage_pu', stat: 'settling_time_s' },
-  { text: '{} settles after', signal: 'turbine_speed_pu', stat: 'settling_time_s' },
+  { text: '{} settles after', signal: 'ship_speed_kn', stat: 'settling_time_s', none: 'no settling time' },
+  { text: '{} settles after', signal: 'bus_voltage_pu', stat: 'settling_time_s', none: 'no settling time' },
+  { text: '{} settles after', signal: 'turbine_speed_pu', stat: 'settling_time_s', none: 'no settling time' },
   { text: '{} swing', signal: 'prop_rpm', stat: 'swing' },
   { text: 'lowest {}', signal: 'h_over_r', stat: 'min' },
   { text: 'mean {}', signal: 'fuel_power_w', stat: 'mean', prefix: 'M' },

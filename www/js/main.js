@@ -183,7 +183,9 @@ function showSummary(s, constants) {
   const body = $('inventory').querySelector('tbody');
   body.replaceChildren(el('tr', {}, ...['stage', 'power [MW]', 'efficiency of the stage'].map((h) => el('th', { scope: 'col', textContent: h }))),
     ...stages.filter(([k]) => k in inv).map(([k, label, e]) => row(label, [fmt(inv[k] / 1e6), e && e in eff ? `${(eff[e] * 100).toFixed(1)} %` : '–'])));
+  // The summary's warnings (core's health checks and the model's range), above the tables.
   $('warnings').replaceChildren(...(s.warnings || []).map((w) => el('li', { textContent: w })));
+  $('warnings-box').hidden = !(s.warnings || []).length;
   $('summary-box').hidden = false;
 }
 
@@ -198,7 +200,8 @@ function keyFigure(fig) {
   const stat = (x) => (fig.stat === 'swing' ? x.max - x.min : x[fig.stat]);
   return {
     label: `${fig.text.replace('{}', signals.label(fig.signal))} [${shown}]`,
-    f: (s) => stat(s.signals[fig.signal]) * (fig.stat.endsWith('_s') ? 1 : factor),
+    // null: a statistic the summary leaves undefined (a settling time of a signal that does not settle).
+    f: (s) => { const x = stat(s.signals[fig.signal]); return x === null ? null : x * (fig.stat.endsWith('_s') ? 1 : factor); },
   };
 }
 
@@ -211,6 +214,13 @@ function showComparison(now) {
     const { label, f } = keyFigure(fig);
     let a, b;
     try { a = f(kept.summary); b = f(now.summary); } catch (_) { continue; }
+    if (fig.none && (a === null || b === null)) {
+      // Undefined on one side or both: said in words (config.js), no difference.
+      if (a === null && b === null) continue;
+      const say = (x) => (x === null ? fig.none : fmt(x));
+      rows.push(el('tr', {}, el('th', { scope: 'row', textContent: label }), el('td', { textContent: say(a) }), el('td', { textContent: say(b) }), el('td', { textContent: '–' })));
+      continue;
+    }
     if (!Number.isFinite(a) || !Number.isFinite(b) || (a === 0 && b === 0)) continue;
     const d = b - a;
     const cell = el('td', { textContent: `${d >= 0 ? '+' : ''}${fmt(d, 3)}`, className: d > 0 ? 'up' : d < 0 ? 'down' : '' });
