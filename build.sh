@@ -11,7 +11,8 @@
 #   ./build.sh bench      simulated seconds per wall second of the start-up preset
 #   ./build.sh fuzz       the property tests of every entry point (tests/fuzz.rs) with many more
 #                         cases (AES_FUZZ_CASES, default 20000; a few minutes), before releases
-#   ./build.sh docs       regenerate the README's table of scenario parameters from the registry
+#   ./build.sh docs       regenerate the README's tables of scenario parameters (from the registry)
+#                         and of the plant's health checks (from core/src/sim/health.rs)
 #   ./build.sh golden     regenerate the golden records of every preset (tests/golden/) after a
 #                         deliberate physics change; review the diff before committing
 #
@@ -183,12 +184,14 @@ case "${1:-serve}" in
     build_native
     python3 - <<'PY'
 import subprocess
-table = subprocess.check_output(["./target/release/aes-sim", "params", "--markdown"], text=True).rstrip("\n") + "\n"
 text = open("README.md").read()
-begin, end = "<!-- params:begin -->\n", "<!-- params:end -->"
-a = text.index(begin) + len(begin)
-b = text.index(end, a)
-open("README.md", "w").write(text[:a] + table + text[b:])
+for marker, cmd in (("params", "params"), ("health", "health")):
+    table = subprocess.check_output(["./target/release/aes-sim", cmd, "--markdown"], text=True).rstrip("\n") + "\n"
+    begin, end = f"<!-- {marker}:begin -->\n", f"<!-- {marker}:end -->"
+    a = text.index(begin) + len(begin)
+    b = text.index(end, a)
+    text = text[:a] + table + text[b:]
+open("README.md", "w").write(text)
 PY
     git --no-pager diff --stat -- README.md || true
     ;;

@@ -72,14 +72,32 @@ fn a_stale_path_is_caught() {
     assert!(registry::find("sea.wave_height_m").is_none());
 }
 
+/// The README's text between its `<!-- NAME:begin -->` and `<!-- NAME:end -->` markers.
+fn readme_between(name: &str) -> String {
+    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md")).unwrap();
+    let (begin, end) = (format!("<!-- {name}:begin -->\n"), format!("<!-- {name}:end -->"));
+    let a = readme.find(&begin).unwrap_or_else(|| panic!("README has no {name}:begin marker")) + begin.len();
+    let b = readme[a..].find(&end).unwrap_or_else(|| panic!("README has no {name}:end marker")) + a;
+    readme[a..b].to_string()
+}
+
 /// The README's scenario table is `aes-sim params --markdown` (regenerate with `./build.sh docs`).
 #[test]
 fn the_readme_table_is_the_registry() {
-    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md")).unwrap();
-    let (begin, end) = ("<!-- params:begin -->\n", "<!-- params:end -->");
-    let a = readme.find(begin).expect("README has no params:begin marker") + begin.len();
-    let b = readme[a..].find(end).expect("README has no params:end marker") + a;
-    assert!(readme[a..b] == registry::markdown_table(), "README's scenario table is stale: run ./build.sh docs");
+    assert!(
+        readme_between("params") == registry::markdown_table(),
+        "README's scenario table is stale: run ./build.sh docs"
+    );
+}
+
+/// The README's list of health checks is `aes-sim health --markdown` (regenerate with
+/// `./build.sh docs`).
+#[test]
+fn the_readme_health_checks_are_cores() {
+    assert!(
+        readme_between("health") == aes_core::sim::health::markdown(),
+        "README's health checks are stale: run ./build.sh docs"
+    );
 }
 
 /// Scenario files written before the time step, its method and the sample periods moved into

@@ -30,6 +30,9 @@ enum Cmd {
     /// for the full declarations: help, source, page group, per-unit base; `--markdown` for the
     /// README's table).
     Params(cmd::params::Args),
+    /// List the plant's health checks each run's summary applies (its `warnings`): what, the
+    /// threshold and why (`--markdown` for the README's table).
+    Health(cmd::health::Args),
     /// Print a preset scenario as JSON (a starting point for your own).
     Preset(cmd::presets::Args),
     /// Run a scenario file (or `-` for standard input, or `preset:NAME`); prints a JSON summary.
@@ -74,6 +77,7 @@ fn real_main() -> Result<(), Failure> {
         Cmd::Presets => cmd::presets::list(),
         Cmd::Signals(a) => cmd::signals::run(a),
         Cmd::Params(a) => cmd::params::run(a),
+        Cmd::Health(a) => cmd::health::run(a),
         Cmd::Preset(a) => cmd::presets::print(a),
         Cmd::Run(a) => cmd::run::run(a),
         Cmd::Design { command } => cmd::design::run(command),

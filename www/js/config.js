@@ -117,6 +117,8 @@ export const DEFAULT_PLOTS = ['speed', 'rpm', 'bus', 'motor', 'track'];
 // units from signalMeta (a statistic in seconds, `_s`, is in s), with an optional metric prefix.
 // `better`: which way is better for the plant ('higher' or 'lower'); without it the difference is
 // shown neutral (a figure whose good direction depends on the study, like the final speed).
+// `none`: the words for a statistic the summary leaves undefined (null): a settling time exists
+// only for a signal that left its order's band and came back to stay (core's summary.rs).
 export const KEY_FIGURES = [
   { text: 'peak {}', signal: 'im_power_pu', stat: 'max' },
   { text: 'lowest {}', signal: 'im_power_pu', stat: 'min' },
@@ -125,9 +127,9 @@ export const KEY_FIGURES = [
   { text: 'highest {}', signal: 'turbine_speed_pu', stat: 'max', better: 'lower' },
   { text: 'peak {}', signal: 'fuel_power_w', stat: 'max', prefix: 'M', better: 'lower' },
   { text: 'final {}', signal: 'ship_speed_kn', stat: 'final' },
-  { text: '{} settles after', signal: 'ship_speed_kn', stat: 'settling_time_s', better: 'lower' },
-  { text: '{} settles after', signal: 'bus_voltage_pu', stat: 'settling_time_s', better: 'lower' },
-  { text: '{} settles after', signal: 'turbine_speed_pu', stat: 'settling_time_s', better: 'lower' },
+  { text: '{} settles after', signal: 'ship_speed_kn', stat: 'settling_time_s', better: 'lower', none: 'no settling time' },
+  { text: '{} settles after', signal: 'bus_voltage_pu', stat: 'settling_time_s', better: 'lower', none: 'no settling time' },
+  { text: '{} settles after', signal: 'turbine_speed_pu', stat: 'settling_time_s', better: 'lower', none: 'no settling time' },
   { text: '{} swing', signal: 'prop_rpm', stat: 'swing', better: 'lower' },
   { text: 'lowest {}', signal: 'h_over_r', stat: 'min', better: 'higher' },
   { text: 'mean {}', signal: 'fuel_power_w', stat: 'mean', prefix: 'M', better: 'lower' },

@@ -382,7 +382,9 @@ function showSummary(s, constants) {
     }));
   const over = stages.some(([k], i) => i > 0 && inv[stages[i - 1][0]] > 0 && inv[k] > inv[stages[i - 1][0]]);
   $('inventory-over').hidden = !over;
+  // The summary's warnings (core's health checks and the model's range), above the tables.
   $('warnings').replaceChildren(...(s.warnings || []).map((w) => el('li', { textContent: w })));
+  $('warnings-box').hidden = !(s.warnings || []).length;
   $('summary-box').hidden = false;
 }
 
@@ -397,6 +399,7 @@ function keyFigure(fig) {
   const stat = (x) => (fig.stat === 'swing' ? x.max - x.min : x[fig.stat]);
   return {
     label: `${fig.text.replace('{}', signals.label(fig.signal))} [${shown}]`,
+    // null: a statistic the summary leaves undefined (a settling time of a signal that does not settle).
     f: (s) => { const x = stat(s.signals[fig.signal]); return x === null || x === undefined ? null : x * (fig.stat.endsWith('_s') ? 1 : factor); },
   };
 }
@@ -410,7 +413,13 @@ function showComparison(now) {
     const { label, f } = keyFigure(fig);
     let a, b;
     try { a = f(kept.summary); b = f(now.summary); } catch (_) { continue; }
-    // A figure that one run lacks (a signal that never settles has no settling time) is not compared.
+    if (fig.none && (a === null || b === null)) {
+      // Undefined on one side or both: said in words (config.js), no difference.
+      if (a === null && b === null) continue;
+      const say = (x) => (x === null ? fig.none : fmt(x));
+      rows.push(el('tr', {}, el('th', { scope: 'row', textContent: label }), el('td', { textContent: say(a) }), el('td', { textContent: say(b) }), el('td', { textContent: '–' })));
+      continue;
+    }
     if (a === null || b === null || !Number.isFinite(a) || !Number.isFinite(b) || (a === 0 && b === 0)) continue;
     const d = b - a;
     // Coloured and worded by better or worse where the figure has a good direction, else neutral.

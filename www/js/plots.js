@@ -284,10 +284,12 @@ export function sizedCanvas(cv, height) {
   return { g, w, h: height };
 }
 
-// Times where surface losses start: beta_T leaves 1 (read from the trace, not computed).
-export function lossStarts(cols) {
+// Times where surface losses start: beta_T leaves its submerged value (the propeller's fixed
+// factor, 1 by default; read from the trace, not computed). A run whose propellers start under
+// losses (a hub too shallow for the sea) has its first onset at its first row.
+export function lossStarts(cols, submerged = 1) {
   const b = cols.beta_t, t = cols.t_s, out = [];
-  for (let i = 1; i < b.length; i++) if (b[i] < 1 && b[i - 1] >= 1) out.push(t[i]);
+  for (let i = 0; i < b.length; i++) if (b[i] < submerged && (i === 0 || b[i - 1] >= submerged)) out.push(t[i]);
   return out;
 }
 
@@ -363,7 +365,7 @@ function runPlot(box, spec, cols, signals, constants, kept, more, markers) {
 export function drawRun(box, cols, signals, constants, scenario, { order = DEFAULT_PLOTS, kept = null } = {}) {
   box.clear();
   const inWaves = cols.h_over_r.some((v) => v !== cols.h_over_r[0]);
-  const markers = inWaves ? lossStarts(cols) : [];
+  const markers = inWaves ? lossStarts(cols, scenario.propeller.beta_t) : [];
   const drawn = {};
   const shown = (id) => order.includes(id);
   const track = (more) => {

@@ -4,6 +4,7 @@
 use crate::plant::propeller_losses::{DISK_AT_SURFACE_H_OVER_R, DISK_OUT_H_OVER_R, HUB_AT_SURFACE_H_OVER_R};
 use crate::scenario::Scenario;
 use crate::signals::Signal;
+use crate::sim::health;
 use serde::Serialize;
 
 /// A horizontal level on a plot of one signal.
@@ -60,16 +61,17 @@ pub struct PuBase {
     pub unit: &'static str,
 }
 
-/// Levels at which the live drive-train view marks a block (display levels, not model limits:
-/// the model runs on past them and says so in the trace).
+/// Levels at which the live drive-train view marks a block: the health checks' thresholds
+/// (`sim::health`, where each is declared with its reason), drawn instant by instant; the
+/// summary's warnings add how long a level was passed.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct WarningLevels {
-    /// Turbine overspeed [pu of the governor set point]: an LM2500 trips near 1.1 (the same
-    /// figure as `sim::limits`' note); our display level.
+    /// Turbine speed below which a set is stalled [pu of the governor set point].
+    pub turbine_min_running_pu: f64,
+    /// Turbine overspeed [pu of the governor set point].
     pub turbine_overspeed_pu: f64,
-    /// Bus voltage band [pu of the set point]: below the low level the inverters lose torque
-    /// ("dynamic saturation", ch. 2.2.3; 0.9 is our display choice); above the high level the
-    /// brake chopper starts (`plant.dc_link.brake_on_pu`).
+    /// Bus voltage band [pu of the set point]: below the low level the inverters lose torque,
+    /// above the high level the brake chopper is not holding the bus.
     pub bus_voltage_low_pu: f64,
     pub bus_voltage_high_pu: f64,
     /// Motor power limit [pu of rated]: the slip controller holds the motor to its rating.
@@ -243,9 +245,10 @@ impl PageConstants {
             propeller_radius_m: 0.5 * sc.propeller.diameter_m,
             prop_x_aft_m: hull.prop_x_aft_m,
             warnings: WarningLevels {
-                turbine_overspeed_pu: 1.1,
-                bus_voltage_low_pu: 0.9,
-                bus_voltage_high_pu: sc.plant.dc_link.brake_on_pu,
+                turbine_min_running_pu: health::TURBINE_MIN_RUNNING_PU,
+                turbine_overspeed_pu: health::TURBINE_OVERSPEED_PU,
+                bus_voltage_low_pu: health::BUS_LOW_PU,
+                bus_voltage_high_pu: health::bus_high_pu(sc),
                 motor_power_limit_pu: 1.0,
             },
             pu_bases: vec![

@@ -2,6 +2,7 @@
 //! divergence detection. `Simulation` can be advanced in chunks (the browser reports progress
 //! and honours cancel between chunks); `run` does it in one go.
 
+pub mod health;
 pub mod linearize;
 pub mod lqg;
 pub mod plant;
@@ -130,6 +131,8 @@ struct Controllers {
     heading_rate: f64,
     autopilot: Autopilot,
     held: Held,
+    /// What the health checks need that the trace does not show (the motors at their slip limit).
+    tracked: health::Tracked,
 }
 
 /// Divergence limits: a state outside them means the run has left the physics the model
@@ -300,6 +303,7 @@ impl Simulation {
                 heading_rate: 0.0,
                 autopilot: Autopilot::new(&scenario.controllers.autopilot, &scenario.rudder),
                 held: Held::default(),
+                tracked: health::Tracked::default(),
             },
             plant,
             out: Outputs::default(),
@@ -426,7 +430,7 @@ impl Simulation {
 
     /// One sample of every discrete controller.
     fn control(&mut self) {
-        let ts = self.ts;
+        let (ts, t_now) = (self.ts, self.t);
         let now = self.multi.state_now(&self.x, self.step, self.dt);
         let x: &State = &now;
         let max_turn_rate = self.max_turn_rate_at(x);
@@ -477,6 +481,7 @@ impl Simulation {
                 0.0
             };
             c.held.slip[s] = c.slip[s].update(err, lower, limit, ts);
+            c.tracked.slip_limit[s].sample(c.held.slip[s] >= limit, t_now, ts);
         }
         // Heading: the reference ramps to the target; the autopilot steers the rudder.
         if matches!(p.hull, plant::Hull::Maneuvering { .. }) {
@@ -789,6 +794,8 @@ impl Simulation {
                 rad_to_deg(self.max_heading_lag)
             ));
         }
+        let health = health::assess(&self.scenario, &self.trace, &self.ctl.tracked);
+        self.warnings.extend(health);
         let summary = Summary::build(
             &self.scenario,
             &self.trace,

@@ -16,25 +16,54 @@ pub struct TraceStats {
     pub min: f64,
     pub max: f64,
     pub mean: f64,
-    /// Settling time [s]: the time of the last recorded row outside the band of
-    /// `SETTLING_BAND` times the signal's range (max - min) around its final value; 0 for a
-    /// signal that never leaves it (a constant one). Meaningful for runs that end settled.
-    pub settling_time_s: f64,
+    /// Settling time [s] (see [`settling_time`]): only for a signal that has an order or a nominal
+    /// value ([`settling_target`]), moved away from it and came back to stay; None (JSON null)
+    /// otherwise: a signal without an order, one that never left the band (nothing settled) and
+    /// one that ends outside it or leaves it again too late (it does not settle).
+    pub settling_time_s: Option<f64>,
 }
 
-/// Half-width of the settling band, as a fraction of the signal's range over the run: 2 %, the
-/// usual control-engineering choice.
+/// Half-width of the settling band, as a fraction of the order or nominal value (2 %, the usual
+/// control-engineering choice): 0.02 pu of bus voltage or turbine speed, 0.5 kn of a 25 kn order.
 pub const SETTLING_BAND: f64 = 0.02;
 
-/// The settling time of a column recorded at times `t` (see [`TraceStats::settling_time_s`]).
-pub fn settling_time(t: &[f64], col: &[f64], min: f64, max: f64) -> f64 {
-    let Some(&last) = col.last() else { return 0.0 };
-    let band = SETTLING_BAND * (max - min);
-    match col.iter().rposition(|v| (v - last).abs() > band) {
-        // The signal settles between this row and the next one.
-        Some(i) => t.get(i + 1).or(t.last()).copied().unwrap_or(0.0),
-        None => t.first().copied().unwrap_or(0.0),
+/// Share of the run at its end a signal must stay in the band for to be called settled: in a
+/// seaway a signal that leaves the band again and again has a last exit, but that is not settling.
+pub const SETTLED_HOLD_SHARE: f64 = 0.1;
+
+/// The value a signal is meant to settle at, when it has one: the last order of the ship speed,
+/// the shaft speeds and the heading (their reference columns' final values), and the nominal
+/// 1 pu of the turbine speed (governor set point) and of the bus voltage (field controller set
+/// point). None for every other signal (powers, thrust, motions): they follow from the orders
+/// and have no value of their own to settle at.
+pub fn settling_target(signal: Signal, trace: &Trace) -> Option<f64> {
+    let last = |s: Signal| trace.get(s).last().copied();
+    match signal {
+        Signal::ShipSpeedKn => last(Signal::SpeedCmdKn),
+        Signal::PropRpm | Signal::PropRpm1 | Signal::PropRpm2 => last(Signal::PropRpmRef),
+        Signal::HeadingDeg => last(Signal::HeadingRefDeg),
+        Signal::TurbineSpeedPu | Signal::BusVoltagePu => Some(1.0),
+        _ => None,
     }
+}
+
+/// The settling time of a column recorded at times `t` towards `target`: the band is
+/// `SETTLING_BAND` times |target| (or times the largest |value| when the target is 0) around the
+/// target; the settling time is the time of the first row after the last row outside it. It is
+/// None unless (1) some row was outside the band (the signal moved), (2) the final row is inside
+/// (the signal ends at its order), and (3) it stays inside over at least the last
+/// `SETTLED_HOLD_SHARE` of the run.
+pub fn settling_time(t: &[f64], col: &[f64], target: f64) -> Option<f64> {
+    let (&last, &t_end, &t0) = (col.last()?, t.last()?, t.first()?);
+    let scale = if target != 0.0 { target.abs() } else { col.iter().fold(0.0, |a: f64, v| a.max(v.abs())) };
+    let band = SETTLING_BAND * scale;
+    let outside = |v: f64| v.is_nan() || (v - target).abs() > band;
+    if outside(last) {
+        return None;
+    }
+    let i = col.iter().rposition(|&v| outside(v))?;
+    let settled = t.get(i + 1).copied()?;
+    (t_end - settled >= SETTLED_HOLD_SHARE * (t_end - t0)).then_some(settled)
 }
 
 /// Table 5.6 power inventory [W], sums over machines.
@@ -126,7 +155,9 @@ impl Summary {
             let min = col.iter().copied().fold(f64::INFINITY, f64::min);
             let max = col.iter().copied().fold(f64::NEG_INFINITY, f64::max);
             let mean = col.iter().sum::<f64>() / col.len() as f64;
-            let settling_time_s = settling_time(trace.get(Signal::TS), col, min, max);
+            let settling_time_s = Signal::from_name(name)
+                .and_then(|sig| settling_target(sig, trace))
+                .and_then(|target| settling_time(trace.get(Signal::TS), col, target));
             signals
                 .insert(name.to_string(), TraceStats { final_: col[col.len() - 1], min, max, mean, settling_time_s });
         }
@@ -188,17 +219,23 @@ impl Summary {
 mod tests {
     use super::*;
 
-    /// A first-order step x = 1 - e^(-t/tau) sampled every 0.1 s settles within 2 % of its range
-    /// at t = tau ln(50) (3.91 tau), to the sample.
+    /// A first-order step x = 1 - e^(-t/tau) towards its order 1, sampled every 0.1 s, settles
+    /// within 2 % of the order at t = tau ln(50) (3.91 tau), to the sample. A signal that stays at
+    /// its order has nothing to settle, one that ends away from it does not settle, and one that
+    /// comes into the band only near the end (the last 10 % of the run) does not either.
     #[test]
     fn settling_time_of_a_first_order_step() {
         let tau = 2.0;
         let t: Vec<f64> = (0..=400).map(|i| i as f64 * 0.1).collect();
         let x: Vec<f64> = t.iter().map(|t| 1.0 - libm::exp(-t / tau)).collect();
-        let (min, max) = (x[0], x[400]);
-        let ts = settling_time(&t, &x, min, max);
-        // The band is 2 % of the range actually reached (1 - e^-20), final value likewise.
+        let ts = settling_time(&t, &x, 1.0).unwrap();
         assert!((ts - tau * libm::log(50.0)).abs() <= 0.1 + 1e-9, "{ts}");
-        assert_eq!(settling_time(&t, &vec![3.0; 401], 3.0, 3.0), 0.0);
+        assert_eq!(settling_time(&t, &vec![1.0; 401], 1.0), None);
+        // Stalled at 0.4 of the order: no settling, whatever its own final value.
+        let stall: Vec<f64> = x.iter().map(|v| 1.0 - 0.6 * v).collect();
+        assert_eq!(settling_time(&t, &stall, 1.0), None);
+        // tau = 9.5 s: within 2 % after 37.2 s of a 40 s run, less than 10 % of it before the end.
+        let slow: Vec<f64> = t.iter().map(|t| 1.0 - libm::exp(-t / 9.5)).collect();
+        assert_eq!(settling_time(&t, &slow, 1.0), None);
     }
 }

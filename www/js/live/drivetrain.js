@@ -86,7 +86,7 @@ export class TrainView extends View {
     const setRating = k.motor_rated_power_w / 2, plantRating = k.motor_rated_power_w;
     const speedPu = v('turbine_speed_pu'), busPu = v('bus_voltage_pu'), imPu = v('im_power_pu'), brake = v('brake_power_w');
     const warn = {
-      turbine: speedPu > lv.turbine_overspeed_pu ? 'OVERSPEED' : null,
+      turbine: speedPu > lv.turbine_overspeed_pu ? 'OVERSPEED' : speedPu < lv.turbine_min_running_pu ? 'STALLED' : null,
       bus: busPu < lv.bus_voltage_low_pu ? 'LOW' : busPu > lv.bus_voltage_high_pu ? 'HIGH' : null,
       motor: imPu >= lv.motor_power_limit_pu * 0.999 ? 'AT RATING' : null,
       brake: brake > 0 ? 'BRAKE ON' : null,
@@ -105,7 +105,10 @@ export class TrainView extends View {
     }
     for (let s = 0; s < 4; s++) {
       d.turbineEdge = box(0, setLn(s), bl, [`${short ? 'GT' : 'Gas turbine'} ${s + 1}`, mw(pT), `${speedPu.toFixed(3)} pu`], warn.turbine);
-      box(1, setLn(s), bl, [`${short ? 'Gen.' : 'Generator'} ${s + 1}`, mw(pG), keeps(v('p_generator_w'), v('p_turbine_w'))], null);
+      // A stalled set: the generator turns with its turbine, far below its frequency; what it
+      // keeps of a stalled turbine's power says nothing.
+      const stalled = warn.turbine === 'STALLED';
+      box(1, setLn(s), bl, [`${short ? 'Gen.' : 'Generator'} ${s + 1}`, mw(pG), stalled ? 'set stalled' : keeps(v('p_generator_w'), v('p_turbine_w'))], stalled ? 'STALLED' : null);
     }
     const wide = Math.min(2 * lane * 0.9, bl * 1.6);
     for (let p = 0; p < 2; p++) {
