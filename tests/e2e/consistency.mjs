@@ -173,6 +173,8 @@ await check('power ratios are named for what they are, headings never read -0, c
   const heads = await p.$$eval('#inventory th[scope=col]', (t) => t.map((x) => x.textContent));
   assert(!heads.some((h) => /efficiency/i.test(h)) && heads.includes('out / in now'), `inventory columns: ${heads}`);
   assert((await p.evaluate(async () => (await import('./js/live/shared.js')).fixed(-0.2, 0))) === '0', 'a heading of -0.2 deg reads -0');
+  const words = await p.evaluate(async () => { const { keeps } = await import('./js/live/drivetrain.js'); return [keeps(130.5, 100), keeps(95, 100)]; });
+  assert(words[0] === 'out/in 130.5 %' && words[1] === 'keeps 95.0 %', `the drive train says ${words}`);
   assert(!/heading -0°/.test(await p.textContent('#live')), 'the live text says heading -0');
   await p.click('#compare-with button');
   await p.waitForFunction(() => document.getElementById('preset').value === 'acceleration-high-gains' && /^Done/.test(document.getElementById('status').textContent), null, { timeout: 60000 });

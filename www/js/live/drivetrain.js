@@ -7,7 +7,10 @@ import { C, View, mw, pct } from './shared.js';
 
 // What a stage keeps of the power through it: out/in flowing forward, in/out flowing back (a
 // braking motor passes the shaft's power to the bus); none while the flow turns round.
-const keeps = (out, into) => (into > 0 && out >= 0 ? `keeps ${pct(out / into)}` : into < 0 && out < 0 ? `keeps ${pct(into / out)}` : 'flow turning');
+// A stage passing on more than it takes is giving up stored energy (a transient): its ratio is
+// shown as out/in, never as what it "keeps".
+const ratioText = (r) => (r > 1 ? `out/in ${pct(r)}` : `keeps ${pct(r)}`);
+export const keeps = (out, into) => (into > 0 && out >= 0 ? ratioText(out / into) : into < 0 && out < 0 ? ratioText(into / out) : 'flow turning');
 // The ship's share: above 100 % only while the ship slows (resistance above thrust; no propeller
 // turns as much as 90 % of its shaft power into thrust power), its momentum then paying the rest.
 const shipShare = (out, into) => (into > 0 && out > into ? `slows: ${pct(out / into)}` : keeps(out, into));
