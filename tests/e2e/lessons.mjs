@@ -59,6 +59,8 @@ for (const [w, h] of SIZES) {
       assert(/\d/.test(await p.textContent('#lesson-observe')), `${lesson.name}: no explanation with numbers`);
       const ctl = await box(p, '#lesson-box'), plot = await box(p, '#plots .plot'), views = await liveBox(p);
       assert(views.length === 1, `${lesson.name}: ${views.length} live views shown`);
+      const n = await p.$$eval('#lesson-controls [data-path]', (e) => e.length);
+      assert(n >= 2 && n <= 4, `${lesson.name}: ${n} controls`);
       if (w >= 1366) {
         const bottom = Math.max(ctl.bottom, plot.bottom, views[0].bottom);
         assert(bottom <= h, `${lesson.name} at ${w}x${h}: controls, plot and live view end at ${Math.round(bottom)} px`);

@@ -64,13 +64,14 @@ export const LESSONS = [
     // Without the resistor the rectifiers must pass power back to the generators (Fig. 5-8's plant):
     // a diode rectifier with nowhere for the energy to go drives the bus voltage away.
     controls: [{ path: 'plant.dc_link.brake_resistor_ohm', values: [1, 0], labels: ['with a brake resistor', 'no brake resistor'],
-      also: [{ 'plant.dc_link.rectifier': 'diode' }, { 'plant.dc_link.rectifier': 'reversible' }] }],
+      also: [{ 'plant.dc_link.rectifier': 'diode' }, { 'plant.dc_link.rectifier': 'reversible' }] },
+    { path: 'initial.speed_kn', step: 1, span: [10, 30] }],
     question: 'The ship stops from 25 knots. Without a brake resistor, where does its kinetic energy go?',
     answers: ['back into the gas turbines, which speed up', 'it simply disappears', 'into the bus, which holds its voltage'],
     right: () => 0,
     explain: ({ s }) => {
       const t = sig(s, 'turbine_speed_pu'), b = sig(s, 'bus_voltage_pu');
-      return `The water drives the propellers and the motors brake as generators. The brake resistor burnt ${f(s.energy_j.brake / 1e6, 1)} MJ; `
+      return `From ${f(sig(s, 'ship_speed_kn').max, 1)} knots the water drives the propellers and the motors brake as generators. The brake resistor burnt ${f(s.energy_j.brake / 1e6, 1)} MJ; `
         + `the turbines reached ${f(t.max, 3)} pu of their speed and the bus ${f(b.max, 3)} pu of its voltage. Energy does not disappear: without the resistor it flows back and speeds up the turbines.`;
     },
     next: 'Switch the resistor off and watch the turbine speed and the bus voltage rise.',
@@ -92,7 +93,8 @@ export const LESSONS = [
   {
     name: 'sign', title: 'One sign in one equation', preset: 'head-seas-ss6', set: { 'sim.duration_s': 60 },
     plots: ['hr'], view: 'stern', at: 3,
-    controls: [{ path: 'seakeeping.stern_motion', values: ['consistent', 'thesis_eq_2_57'], labels: ['the stern follows the waves (consistent)', 'eq. 2.57 as printed'] }],
+    controls: [{ path: 'seakeeping.stern_motion', values: ['consistent', 'thesis_eq_2_57'], labels: ['the stern follows the waves (consistent)', 'eq. 2.57 as printed'] },
+      { path: 'sea.sea_state', step: 1 }],
     question: 'The thesis prints the hub depth with the stern\'s motion added to the wave. If that sign is right, the propeller breaks the surface...',
     answers: ['more often than with the stern following the waves', 'less often', 'as often'],
     explain: ({ s, markers, values }) => `With ${values['seakeeping.stern_motion'] === 'thesis_eq_2_57' ? 'eq. 2.57 as printed' : 'the consistent sign'} h/R went down to ${f(sig(s, 'h_over_r').min)} and surface losses started ${markers.length} time(s). `
