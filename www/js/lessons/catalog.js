@@ -45,8 +45,8 @@ export const LESSONS = [
     next: 'Set the sea state to 3: the waves are much lower and the propeller stays deep.',
   },
   {
-    name: 'turn', title: 'A turn costs power', preset: 'turn-90', set: { 'sim.duration_s': 120 },
-    plots: ['motor', 'speed'], view: 'plan', at: 40,
+    name: 'turn', title: 'A turn costs power', preset: 'turn-90', set: { 'sim.duration_s': 240 },
+    plots: ['motor', 'speed'], view: 'plan', at: 90,
     controls: [{ path: 'commands.N.heading_deg', order: 1, step: 15, span: [15, 180] }, { path: 'initial.speed_kn', step: 1, span: [10, 30] }],
     question: 'The speed order stays the same through the turn. What do the motors need while the ship turns?',
     answers: ['more power', 'the same power', 'less power'],
