@@ -170,10 +170,7 @@ impl Partial {
             if x.n > max_n || x.clamped > x.n {
                 return Err(format!("{name}: n = {}, clamped = {}: at most {max_n} samples", x.n, x.clamped));
             }
-            if x.n > 0 && !(x.min.is_finite() && x.max.is_finite() && x.min <= x.max) {
-                return Err(format!("{name}: min = {}, max = {}: need finite min <= max", x.min, x.max));
-            }
-            Ok(())
+            x.check_consistent().map_err(|e| format!("{name}: {e}"))
         };
         let hist = |name: &str, h: &Histogram, want: &Histogram, max_n: u64| -> Result<(), String> {
             if h.lo != want.lo || h.hi != want.hi || h.counts.len() != want.counts.len() {
@@ -209,6 +206,42 @@ impl Partial {
                 self.censored, self.arrival.n, self.exposure.n
             ));
         }
+        // Each histogram counts what its moments count, and the values that are not finite
+        // (which the moments count as clamped only).
+        for (name, h, x) in [
+            ("at_time_hist", &self.at_time_hist, &self.at_time),
+            ("excess_hist", &self.excess_hist, &self.excess_energy_mj),
+            ("excess_vs_calm_hist", &self.excess_vs_calm_hist, &self.excess_vs_calm_mj),
+            ("arrival_hist", &self.arrival_hist, &self.arrival),
+        ] {
+            let total = h.total();
+            if total < x.n || total > x.n.saturating_add(x.clamped) {
+                return Err(format!(
+                    "{name}: {total} counts beside n = {}, clamped = {}: the histogram counts the same trials",
+                    x.n, x.clamped
+                ));
+            }
+        }
+        if !sc.monte_carlo.excess_energy && (self.excess_energy_mj.n > 0 || self.excess_vs_calm_mj.n > 0) {
+            return Err("excess_energy_mj: samples, but the scenario's monte_carlo.excess_energy is off".into());
+        }
+        let cap = sc.sim.duration_s;
+        if self.arrival.n > 0 && (self.arrival.min < 0.0 || self.arrival.max > cap + sc.sim.record_interval_s) {
+            return Err(format!(
+                "arrival: min = {}, max = {}: events happen within the run, 0 to {} s",
+                crate::checks::num(self.arrival.min),
+                crate::checks::num(self.arrival.max),
+                crate::checks::num(cap)
+            ));
+        }
+        if self.exposure.n > 0 && (self.exposure.min < 0.0 || self.exposure.max > cap) {
+            return Err(format!(
+                "exposure: min = {}, max = {}: within 0 to {} s",
+                crate::checks::num(self.exposure.min),
+                crate::checks::num(self.exposure.max),
+                crate::checks::num(cap)
+            ));
+        }
         let dt = sc.sim.record_interval_s;
         let max_rows = (sc.sim.duration_s / dt) as usize + 2;
         let rows = |name: &str, r: &[ExactMoments], max: usize| -> Result<(), String> {
@@ -216,7 +249,18 @@ impl Partial {
                 return Err(format!("{name}: {} rows, at most {max}", r.len()));
             }
             let want = ExactMoments::new(ENV_BITS, 2);
-            r.iter().enumerate().try_for_each(|(i, x)| moments(&format!("{name}.{i}"), x, &want, trials))
+            r.iter().enumerate().try_for_each(|(i, x)| moments(&format!("{name}.{i}"), x, &want, trials))?;
+            // A trial gives a prefix of the rows (a run that stops early gives fewer): the
+            // counts never grow along the rows.
+            match r.windows(2).position(|w| w[1].n > w[0].n) {
+                Some(i) => Err(format!(
+                    "{name}.{}: n = {} after n = {} in the row before: a row counts no more trials than the one before",
+                    i + 1,
+                    r[i + 1].n,
+                    r[i].n
+                )),
+                None => Ok(()),
+            }
         };
         if self.envelopes.len() != sc.monte_carlo.envelope_signals.len()
             || self.envelopes.iter().zip(&sc.monte_carlo.envelope_signals).any(|(a, b)| &a.signal != b)
@@ -227,7 +271,19 @@ impl Partial {
             rows(&format!("envelopes.{}", env.signal), &env.rows, max_rows)?;
         }
         rows("onset", &self.onset, (sc.monte_carlo.onset_window_s / dt) as usize + 2)?;
+        if let Some(x) = self.onset.first().filter(|x| x.n > self.arrival.n) {
+            return Err(format!(
+                "onset.0: n = {} with {} events (arrival.n): the onset is counted only over trials with an event",
+                x.n, self.arrival.n
+            ));
+        }
         rows("periodogram", &self.periodogram, max_rows)?;
+        if let Some((i, x)) = self.periodogram.iter().enumerate().find(|(_, x)| x.n > 0 && x.min < 0.0) {
+            return Err(format!(
+                "periodogram.{i}: min = {}: a power spectral density is never negative",
+                crate::checks::num(x.min)
+            ));
+        }
         if !self.periodogram.is_empty() && self.periodogram_hz.len() != self.periodogram.len()
             || self.periodogram_hz.iter().any(|f| !f.is_finite())
         {
@@ -240,8 +296,15 @@ impl Partial {
                 sc.monte_carlo.keep_traces
             ));
         }
+        if let Some(w) = self.traces.windows(2).find(|w| w[1].trial <= w[0].trial) {
+            return Err(format!(
+                "traces: trial {} after trial {}: kept traces are sorted and distinct",
+                w[1].trial, w[0].trial
+            ));
+        }
         for t in &self.traces {
             if !self.ranges.iter().any(|&(a, b)| (a..b).contains(&t.trial))
+                || t.trial >= sc.monte_carlo.keep_traces as u64
                 || t.t_s.len() > max_rows
                 || t.columns.iter().any(|(_, c)| c.len() != t.t_s.len())
                 || t.t_s.iter().chain(t.columns.iter().flat_map(|(_, c)| c)).any(|x| !x.is_finite())
