@@ -1,6 +1,6 @@
 //! `aes-sim mc`: a Monte Carlo study, whole or one shard of it (ch. 5.4).
 
-use crate::common::{check_writable, emit_json, load, shorten, Failure};
+use crate::common::{emit_json, load, shorten, Failure, OutFile};
 use std::io::Write;
 use std::time::Instant;
 
@@ -56,9 +56,7 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
     if trial_range.is_some() && partial.is_none() {
         return Err("--trial-range needs --partial FILE (merge the shards with `aes-sim merge`)".into());
     }
-    if let Some(path) = &partial {
-        check_writable(path, "--partial")?;
-    }
+    let partial = partial.map(|path| OutFile::check(&path, "--partial", &[&file])).transpose()?;
     // At most the machine's parallelism: more threads only cost time and memory.
     let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
     let threads = match threads {
@@ -109,9 +107,8 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
     if trial_range.is_none() {
         emit_json(&aes_core::studies::montecarlo::study_summary(&result)?)?;
     }
-    if let Some(path) = &partial {
-        let text = serde_json::to_string(&result).map_err(|e| e.to_string())?;
-        std::fs::write(path, text).map_err(|e| format!("cannot write '{}': {e}", shorten(path)))?;
+    if let Some(out) = &partial {
+        out.write(serde_json::to_string(&result).map_err(|e| e.to_string())?.as_bytes())?;
     }
     Ok(())
 }
