@@ -411,3 +411,43 @@ fn class9_messages_are_escaped_and_bounded() {
     assert!(o.err.len() < 5000, "{} bytes of stderr", o.err.len());
     assert!(o.err.contains("more problems (10000 in all)"), "{}", &o.err[o.err.len().saturating_sub(300)..]);
 }
+
+/// Issue 34: every study's size is bounded before it starts, with a message saying what to
+/// reduce: the issue's 7.6 GB Monte Carlo study (refused within a second, measured 10 ms),
+/// 1e7 trials of a 90 s run, `bench --repeat 4294967295`, 30,000 fuel frequencies (the cap is
+/// fuel::MAX_OMEGAS = 200), `validate --trials 100000`.
+#[test]
+fn class10_studies_are_bounded_before_they_start() {
+    let dir = scratch("harden10");
+    let signals: Vec<String> = run(&["signals", "--json"], b"")
+        .out
+        .split("\"name\": \"")
+        .skip(1)
+        .take(20)
+        .map(|s| format!("\"{}\"", &s[..s.find('"').unwrap()]))
+        .collect();
+    assert_eq!(signals.len(), 20);
+    let sc = format!(
+        r#"{{"sim":{{"duration_s":1020,"record_interval_s":0.005}},"monte_carlo":{{"trials":10,"keep_traces":10,"envelope_signals":[{}]}}}}"#,
+        signals.join(",")
+    );
+    let t0 = Instant::now();
+    refused(&["mc", "-"], sc.as_bytes(), "this study keeps about 833 MB");
+    refused(&["mc", "-"], sc.as_bytes(), "at most 64 MB: record less often (sim.record_interval_s = 0.005)");
+    let shard = dir.join("shard.json");
+    refused(
+        &["mc", "-", "--trial-range", "0..1", "--partial", shard.to_str().unwrap()],
+        sc.as_bytes(),
+        "at most 64 MB",
+    );
+    assert!(!shard.exists());
+    assert!(t0.elapsed() < Duration::from_secs(2), "{:?}", t0.elapsed());
+    refused(&["mc", "preset:mc-arrival", "--trials", "10000000"], b"", "monte_carlo.trials = 10000000: with");
+    refused(&["bench", "--repeat", "4294967295"], b"", "--repeat = 4294967295: must be a whole number from 1 to 100");
+    refused(&["bench", "--repeat", "0"], b"", "from 1 to 100");
+    // One argument holds at most 128 kB: 30,000 frequencies (the issue gave 120,000).
+    let omegas = vec!["1"; 30_000].join(",");
+    refused(&["fuel", "--omega", &omegas], b"", "30000 wave frequencies: give 1 to 200");
+    refused(&["validate", "--trials", "100000"], b"", "--trials = 100000: must be a whole number from 1 to 10000");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -41,6 +41,8 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
         sc.sim.seed = s;
     }
     sc.validate().map_err(|e| format!("{}: {e}", shorten(&file)))?;
+    // What the study keeps and the work it asks for, before anything runs.
+    aes_core::studies::montecarlo::check_study(&sc).map_err(|e| format!("{}: {e}", shorten(&file)))?;
     let n = sc.monte_carlo.trials;
     let (a, b) = match &trial_range {
         None => (0, n),
@@ -70,6 +72,17 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
         }
         Some(n) => n,
     };
+    // A long study says so up front (the progress then shows the time left as measured).
+    let estimate_s = (b - a) as f64 * sc.work() / aes_core::scenario::WORK_PER_S / threads as f64;
+    if estimate_s > 60.0 && !quiet {
+        let _ = writeln!(
+            std::io::stderr(),
+            "aes-sim mc: {} trials of {:.3e} units of work each: roughly {:.0} min on {threads} thread(s) (Ctrl-C stops it)",
+            b - a,
+            sc.work(),
+            estimate_s / 60.0
+        );
+    }
     // The seakeeping tables first (once, shared by every trial): a line on stderr if they
     // take more than a second (a fine grid), so a long silence is explained.
     if sc.sea.kind != aes_core::scenario::SeaKind::Calm {
