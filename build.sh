@@ -176,8 +176,8 @@ case "${1:-serve}" in
   validate)
     setup
     build_native
-    ./target/release/aes-sim validate --out docs/validation.md
-    git --no-pager diff --stat -- docs/validation.md || true
+    ./target/release/aes-sim validate --out docs/validation.md --figures docs/validation
+    git --no-pager diff --stat -- docs/validation.md docs/validation || true
     ;;
   docs)
     # The README's scenario table, from the parameter registry (tests/registry.rs checks it).

@@ -170,6 +170,53 @@ fn mutated_partials_fail_cleanly_or_merge_finitely() {
         .unwrap();
 }
 
+/// The browser's binary partials with bytes overwritten in their moment rows (issue 34: 127 of
+/// 1,500 such were accepted): refused, or every row's numbers are possible, a mean within
+/// [min, max] and a std no larger than values in [min, max] allow ((max - min) / 2 times
+/// sqrt(n / (n - 1)), plus 1e-6 of it and a grid step for the rounding).
+#[test]
+fn corrupted_binary_partials_are_refused_or_possible() {
+    let sc = preset("mc-arrival").unwrap().with_override("sim.duration_s", "2").unwrap();
+    let sc = sc.with_override("monte_carlo.trials", "4").unwrap();
+    let good = aes_core::studies::montecarlo::run_range(&sc, 0, 3).unwrap();
+    let bytes = good.to_bytes().unwrap();
+    let head = 16 + u64::from_le_bytes(bytes[8..16].try_into().unwrap()) as usize;
+    let body = bytes.len() - head;
+    assert!(body > 1000, "the case has moment rows to damage: {body} bytes");
+    let strategy = prop::collection::vec((0..body, any::<u8>()), 1..6);
+    runner(5)
+        .run(&strategy, |changes| {
+            let mut b = bytes.clone();
+            for &(at, v) in &changes {
+                b[head + at] = v;
+            }
+            if let Ok(p) = Partial::from_bytes(&b) {
+                let s = aes_core::studies::montecarlo::study_summary(&p).unwrap();
+                prop_assert!(check_finite(&s).is_ok(), "{changes:?}");
+                for (name, r) in &s.envelopes {
+                    for i in 0..r.n.len() {
+                        if let (Some(mean), Some(lo), Some(hi)) = (r.mean[i], r.min[i], r.max[i]) {
+                            prop_assert!(
+                                lo <= mean && mean <= hi,
+                                "{changes:?}: {name}.{i} mean {mean} in [{lo}, {hi}]"
+                            );
+                            if let (Some(std), true) = (r.std[i], r.n[i] >= 2) {
+                                let n = r.n[i] as f64;
+                                let most = (hi - lo) / 2.0 * (n / (n - 1.0)).sqrt();
+                                prop_assert!(
+                                    std <= most * (1.0 + 1e-6) + 1.0 / 65536.0,
+                                    "{changes:?}: {name}.{i} std {std} beyond {most}"
+                                );
+                            }
+                        }
+                    }
+                }
+            }
+            Ok(())
+        })
+        .unwrap();
+}
+
 /// The ch. 4 tool at any operating point and parameter: an error, or finite poles and Bode.
 #[test]
 fn ips_parameters_fail_cleanly_or_stay_finite() {

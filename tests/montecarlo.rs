@@ -180,3 +180,72 @@ fn trial_bins_add_up_to_the_histograms() {
     assert_eq!(count(&|b| b.at_time, s.histogram_at_t.histogram.counts.len()), s.histogram_at_t.histogram.counts);
     assert!(e.histogram.counts.iter().sum::<u64>() > 0, "no trial met a surface effect");
 }
+
+/// Issue 34: a partial whose numbers cannot come from any trials is refused before it is merged,
+/// in JSON (aes-sim merge) and in the browser's binary form alike (one check, in core): a std far
+/// beyond what min and max allow, a negative sum of squares, onset rows without events, a row
+/// or a periodogram bin with n = 0 beside non-zero sums, counts that grow along the rows, a
+/// histogram that counts other trials than its moments. The undamaged partial passes both ways.
+#[test]
+fn impossible_partials_are_refused_in_both_forms() {
+    let mut sc = preset("mc-excess-energy").unwrap();
+    sc.sim.duration_s = 10.0;
+    sc.monte_carlo.trials = 3;
+    sc.monte_carlo.histogram_time_s = 5.0;
+    sc.monte_carlo.periodogram_segment_s = 4.0;
+    let good = run_range(&sc, 0, 3).unwrap();
+    assert!(
+        good.arrival.n == 2 && !good.onset.is_empty() && !good.periodogram.is_empty() && good.at_time.n == 3,
+        "the case changed: {} events, {} bins, {} at the time",
+        good.arrival.n,
+        good.periodogram.len(),
+        good.at_time.n
+    );
+    let refused = |p: &Partial, want: &str| {
+        let json = Partial::from_json(&serde_json::to_string(p).unwrap()).unwrap_err();
+        let bin = Partial::from_bytes(&p.to_bytes().unwrap()).unwrap_err();
+        assert!(json.contains(want), "JSON: {json} (wanted {want})");
+        assert_eq!(json, bin, "the same check in both forms");
+    };
+    assert_eq!(Partial::from_json(&serde_json::to_string(&good).unwrap()).unwrap(), good);
+    assert_eq!(Partial::from_bytes(&good.to_bytes().unwrap()).unwrap(), good);
+    // The issue's case: std 9,272 where min and max are 2 apart (the sum of squares inflated).
+    let mut p = good.clone();
+    let q = |x: f64| (x * 4096.0).round() as i128;
+    p.at_time.sums[1] += 3 * q(9272.0) * q(9272.0);
+    refused(&p, "at_time: n = 3");
+    let mut p = good.clone();
+    p.envelopes[0].rows[5].sums[1] = -1;
+    refused(&p, "sum of squares");
+    // Onset rows though no trial had an event (the events taken out, the rest consistent).
+    let mut p = good.clone();
+    p.arrival = aes_core::studies::stats::ExactMoments::new(12, 4);
+    p.arrival_hist.counts.iter_mut().for_each(|c| *c = 0);
+    p.censored = 3;
+    refused(&p, "onset.0: n = 2 with 0 events");
+    let mut row = good.envelopes[0].rows[0].clone();
+    // n = 0 beside non-zero sums, in an envelope row and in a periodogram bin.
+    row.n = 0;
+    row.min = f64::NAN;
+    row.max = f64::NAN;
+    let mut p = good.clone();
+    let last = p.envelopes[0].rows.len() - 1;
+    p.envelopes[0].rows[last] = row.clone();
+    refused(&p, "n = 0 beside non-zero sums");
+    let mut p = good.clone();
+    p.periodogram[1] = row.clone();
+    refused(&p, "periodogram.1: n = 0 beside non-zero sums");
+    // A row counting more trials than the row before it.
+    let mut p = good.clone();
+    p.envelopes[0].rows[0] = aes_core::studies::stats::ExactMoments::new(16, 2);
+    refused(&p, "a row counts no more trials than the one before");
+    // A histogram of other trials than its moments.
+    let mut p = good.clone();
+    let h = &mut p.at_time_hist;
+    match h.counts.iter_mut().find(|c| **c > 0) {
+        Some(c) => *c -= 1,
+        None if h.below > 0 => h.below -= 1,
+        None => h.above -= 1,
+    }
+    refused(&p, "at_time_hist: 2 counts beside n = 3");
+}

@@ -62,16 +62,73 @@ pub fn read_bounded(file: &str, limit: u64, what: &str) -> Result<String, String
     String::from_utf8(buf).map_err(|e| format!("{name}: not UTF-8 text (byte {})", e.utf8_error().valid_up_to()))
 }
 
-/// Checks before a long computation that `path` can be written (created or truncated now, so a
-/// bad directory or permission is found before the run, not after).
-pub fn check_writable(path: &str, flag: &str) -> Result<(), String> {
-    std::fs::OpenOptions::new()
-        .write(true)
-        .create(true)
-        .truncate(true)
-        .open(path)
-        .map(|_| ())
-        .map_err(|e| format!("{flag} '{}': cannot write: {e}", shorten(path)))
+/// An output file named on the command line, checked before the computation and written only
+/// on success: to a temporary file in the same folder, renamed into place, so a failed or
+/// interrupted command leaves what was there before untouched.
+pub struct OutFile {
+    path: std::path::PathBuf,
+    flag: &'static str,
+}
+
+impl OutFile {
+    /// Checks `path` (given as `flag`) before anything is computed: not one of the command's
+    /// `inputs` (files, `-` and `preset:` names are skipped), not a folder, in a folder where a
+    /// file can be made now. Nothing that exists is touched.
+    pub fn check(path: &str, flag: &'static str, inputs: &[&str]) -> Result<OutFile, String> {
+        let name = || format!("{flag} '{}'", shorten(path));
+        let p = std::path::PathBuf::from(path);
+        if path.is_empty() || p.file_name().is_none() || p.is_dir() {
+            return Err(format!("{}: not a file name", name()));
+        }
+        let out = OutFile { path: p, flag };
+        for input in inputs {
+            out.refuse_input(input)?;
+        }
+        let probe = out.temp_path();
+        std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&probe)
+            .map_err(|e| format!("{}: cannot write in its folder: {e}", name()))?;
+        let _ = std::fs::remove_file(&probe);
+        Ok(out)
+    }
+
+    /// Refuses an `input` of the command (a file name; `-` and `preset:` names are not files)
+    /// that is this output file, under whatever name.
+    pub fn refuse_input(&self, input: &str) -> Result<(), String> {
+        if input == "-" || input.starts_with("preset:") {
+            return Ok(());
+        }
+        match (std::fs::canonicalize(&self.path), std::fs::canonicalize(input)) {
+            (Ok(out), Ok(i)) if out == i => Err(format!(
+                "{} '{}': is also an input of this command ('{}'); writing it would destroy it: name another file",
+                self.flag,
+                shorten(&self.path.to_string_lossy()),
+                shorten(input)
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    /// A name beside the file for the text being written (hidden, with this process's id).
+    fn temp_path(&self) -> std::path::PathBuf {
+        let file = self.path.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default();
+        self.path.with_file_name(format!(".{file}.{}.aes-sim-tmp", std::process::id()))
+    }
+
+    /// Writes `bytes` whole to the temporary file, then renames it over the file; on an error the
+    /// temporary file is removed and the file is as it was.
+    pub fn write(&self, bytes: &[u8]) -> Result<(), String> {
+        let tmp = self.temp_path();
+        let r = std::fs::File::create(&tmp)
+            .and_then(|mut f| f.write_all(bytes).and_then(|()| f.sync_all()))
+            .and_then(|()| std::fs::rename(&tmp, &self.path));
+        r.map_err(|e| {
+            let _ = std::fs::remove_file(&tmp);
+            format!("{} '{}': cannot write: {e}", self.flag, shorten(&self.path.to_string_lossy()))
+        })
+    }
 }
 
 /// A user's text cut short for a message.

@@ -126,7 +126,8 @@ fn main() -> ExitCode {
     match real_main() {
         Ok(()) | Err(Failure::PipeClosed) => ExitCode::SUCCESS,
         Err(Failure::Msg(e)) => {
-            let _ = writeln!(std::io::stderr(), "aes-sim: {e}");
+            // The last guard: no control character of a value or a file name reaches the terminal.
+            let _ = writeln!(std::io::stderr(), "aes-sim: {}", aes_core::checks::escape_controls(&e, true));
             ExitCode::FAILURE
         }
     }

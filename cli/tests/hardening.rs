@@ -303,3 +303,151 @@ fn class7_unwritable_out_is_found_first_and_the_summary_kept() {
     assert!(t0.elapsed() < Duration::from_secs(2));
     refused(&["mc", "preset:mc-arrival", "--partial", "/nonexistent-dir/p.json"], b"", "--partial");
 }
+
+/// A fresh folder for one test's files.
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("aes-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Issue 34: nothing a user made is lost. An output is written only when the command succeeds
+/// (through a temporary file renamed into place), never when it is also an input, and `validate`
+/// writes only the file --out names.
+#[test]
+fn class8_no_output_destroys_what_was_there() {
+    let dir = scratch("harden8");
+    let path = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    // A run that fails at set-up leaves the old trace as it was.
+    let old = path("old.csv");
+    std::fs::write(&old, "my own data\n").unwrap();
+    refused(
+        &["run", "preset:turn-45", "--set", "plant.motor.rated_voltage_ll_v=498", "--out", &old],
+        b"",
+        "the motor cannot carry",
+    );
+    assert_eq!(std::fs::read_to_string(&old).unwrap(), "my own data\n");
+    // A successful run replaces it whole, and leaves no temporary file behind.
+    let o = run(&["run", "preset:startup", "--set", "sim.duration_s=1", "--out", &old], b"");
+    assert_eq!(o.code, Some(0), "{}", o.err);
+    assert!(std::fs::read_to_string(&old).unwrap().starts_with("t_s,"));
+    // An output that is an input is refused before anything is read or written.
+    let a = partial_text(&dir, "0..2");
+    let b = partial_text(&dir, "2..4");
+    let (pa, pb) = (path("p0_2.json"), path("p2_4.json"));
+    let before = std::fs::read(&pa).unwrap();
+    refused(&["merge", &pa, &pb, "--partial", &pa], b"", "is also an input of this command");
+    // Under another name of the same file too.
+    let other_name = format!("{}/./p0_2.json", dir.to_str().unwrap());
+    refused(&["merge", &pa, &pb, "--partial", &other_name], b"", "is also an input");
+    let list = path("list.txt");
+    std::fs::write(&list, format!("{pa}\n{pb}\n")).unwrap();
+    refused(&["merge", "--files-from", &list, "--partial", &list], b"", "is also an input");
+    // A shard the list names is an input as well.
+    refused(&["merge", "--files-from", &list, "--partial", &pb], b"", "is also an input");
+    assert_eq!(std::fs::read(&pa).unwrap(), before);
+    assert_eq!(std::fs::read_to_string(&list).unwrap(), format!("{pa}\n{pb}\n"));
+    assert_eq!(serde_json::from_slice::<serde_json::Value>(&std::fs::read(&pb).unwrap()).unwrap(), b);
+    assert_eq!(serde_json::from_slice::<serde_json::Value>(&before).unwrap(), a);
+    let merged = path("merged.json");
+    let o = run(&["merge", "--files-from", &list, "--partial", &merged], b"");
+    assert_eq!(o.code, Some(0), "{}", o.err);
+    let leftovers: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.contains("aes-sim-tmp"))
+        .collect();
+    assert!(leftovers.is_empty(), "temporary files left: {leftovers:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 34: `validate --out DIR/report.md` writes DIR/report.md and nothing else: a user's own
+/// figures in DIR/validation/ stay, and no figure lands there. A bad --out is found before the
+/// report is computed (about 13 s with one trial; refused here within a second).
+#[test]
+fn class8_validate_writes_only_where_out_says() {
+    let dir = scratch("harden8v");
+    let t0 = Instant::now();
+    refused(&["validate", "--out", dir.join("missing/report.md").to_str().unwrap()], b"", "--out '");
+    refused(&["validate", "--out", dir.to_str().unwrap()], b"", "not a file name");
+    let long = format!("{}/{}/r.md", dir.to_str().unwrap(), "d".repeat(120_000));
+    refused(&["validate", "--out", &long], b"", "cannot write in its folder");
+    assert!(t0.elapsed() < Duration::from_secs(1), "{:?}", t0.elapsed());
+    std::fs::create_dir_all(dir.join("validation")).unwrap();
+    std::fs::write(dir.join("validation/own.svg"), "<svg/>").unwrap();
+    let report = dir.join("report.md");
+    // Rows may leave their tolerance with one trial (exit 1): the report is written either way.
+    let o = Command::new(env!("CARGO_BIN_EXE_aes-sim"))
+        .args(["validate", "--trials", "1", "--out", report.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(matches!(o.status.code(), Some(0 | 1)), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(std::fs::read_to_string(&report).unwrap().contains("validation/"));
+    let mut names: Vec<String> = std::fs::read_dir(dir.join("validation"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["own.svg"]);
+    assert_eq!(std::fs::read_to_string(dir.join("validation/own.svg")).unwrap(), "<svg/>");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 34: control characters of values and file names are escaped before they reach the
+/// terminal, and a scenario with thousands of problems lists the first few and counts the rest.
+#[test]
+fn class9_messages_are_escaped_and_bounded() {
+    let o = run(&["run", "bad\u{1b}[2J\u{7}\nname.json"], b"");
+    assert_eq!(o.code, Some(1));
+    assert!(!o.err.contains('\u{1b}') && !o.err.contains('\u{7}'), "{:?}", o.err);
+    assert!(o.err.contains("bad\\u{1b}[2J\\u{7}\\nname.json"), "{:?}", o.err);
+    let o = run(&["run", "preset:startup", "--set", "name=a\u{1b}]0;owned\u{7}"], b"");
+    assert!(!o.err.contains('\u{1b}') && !o.out.contains('\u{1b}'), "{:?}", o.err);
+    let commands: Vec<String> = (0..10_000).map(|i| format!(r#"{{"t_s": {i}, "speed_kn": 1e9}}"#)).collect();
+    let sc = format!(r#"{{"commands": [{}]}}"#, commands.join(","));
+    let o = run(&["run", "-"], sc.as_bytes());
+    assert_eq!(o.code, Some(1));
+    assert!(o.err.len() < 5000, "{} bytes of stderr", o.err.len());
+    assert!(o.err.contains("more problems (10000 in all)"), "{}", &o.err[o.err.len().saturating_sub(300)..]);
+}
+
+/// Issue 34: every study's size is bounded before it starts, with a message saying what to
+/// reduce: the issue's 7.6 GB Monte Carlo study (refused within a second, measured 10 ms),
+/// 1e7 trials of a 90 s run, `bench --repeat 4294967295`, 30,000 fuel frequencies (the cap is
+/// fuel::MAX_OMEGAS = 200), `validate --trials 100000`.
+#[test]
+fn class10_studies_are_bounded_before_they_start() {
+    let dir = scratch("harden10");
+    let signals: Vec<String> = run(&["signals", "--json"], b"")
+        .out
+        .split("\"name\": \"")
+        .skip(1)
+        .take(20)
+        .map(|s| format!("\"{}\"", &s[..s.find('"').unwrap()]))
+        .collect();
+    assert_eq!(signals.len(), 20);
+    let sc = format!(
+        r#"{{"sim":{{"duration_s":1020,"record_interval_s":0.005}},"monte_carlo":{{"trials":10,"keep_traces":10,"envelope_signals":[{}]}}}}"#,
+        signals.join(",")
+    );
+    let t0 = Instant::now();
+    refused(&["mc", "-"], sc.as_bytes(), "this study keeps about 833 MB");
+    refused(&["mc", "-"], sc.as_bytes(), "at most 64 MB: record less often (sim.record_interval_s = 0.005)");
+    let shard = dir.join("shard.json");
+    refused(
+        &["mc", "-", "--trial-range", "0..1", "--partial", shard.to_str().unwrap()],
+        sc.as_bytes(),
+        "at most 64 MB",
+    );
+    assert!(!shard.exists());
+    assert!(t0.elapsed() < Duration::from_secs(2), "{:?}", t0.elapsed());
+    refused(&["mc", "preset:mc-arrival", "--trials", "10000000"], b"", "monte_carlo.trials = 10000000: with");
+    refused(&["bench", "--repeat", "4294967295"], b"", "--repeat = 4294967295: must be a whole number from 1 to 100");
+    refused(&["bench", "--repeat", "0"], b"", "from 1 to 100");
+    // One argument holds at most 128 kB: 30,000 frequencies (the issue gave 120,000).
+    let omegas = vec!["1"; 30_000].join(",");
+    refused(&["fuel", "--omega", &omegas], b"", "30000 wave frequencies: give 1 to 200");
+    refused(&["validate", "--trials", "100000"], b"", "--trials = 100000: must be a whole number from 1 to 10000");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -31,11 +31,14 @@ pub struct ScenarioError(pub Vec<FieldError>);
 
 impl fmt::Display for ScenarioError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (i, e) in self.0.iter().enumerate() {
+        for (i, e) in self.0.iter().take(MAX_ERRORS_SHOWN).enumerate() {
             if i > 0 {
                 writeln!(f)?;
             }
             write!(f, "{e}")?;
+        }
+        if self.0.len() > MAX_ERRORS_SHOWN {
+            write!(f, "\n... and {} more problems ({} in all)", self.0.len() - MAX_ERRORS_SHOWN, self.0.len())?;
         }
         Ok(())
     }
@@ -46,15 +49,37 @@ impl std::error::Error for ScenarioError {}
 /// Longest value echoed in a message [characters]; longer values are cut with an ellipsis.
 pub const MAX_VALUE_CHARS: usize = 60;
 
-/// A value as text for a message, cut to [`MAX_VALUE_CHARS`].
+/// Most problems of one scenario a message lists; the rest are counted in a last line.
+pub const MAX_ERRORS_SHOWN: usize = 20;
+
+/// A value as text for a message, its control characters escaped (ESC, BEL, newline: a value
+/// or a file name never reaches the terminal raw) and cut to [`MAX_VALUE_CHARS`].
 pub fn shorten(text: &str) -> String {
+    let text = escape_controls(text, false);
     if text.chars().count() <= MAX_VALUE_CHARS {
-        text.to_string()
+        text
     } else {
         let mut s: String = text.chars().take(MAX_VALUE_CHARS).collect();
         s.push_str("...");
         s
     }
+}
+
+/// `text` with every control character written as its Rust escape (`\u{1b}`, `\n`); newlines
+/// kept as they are when `keep_newlines` (a message of several lines).
+pub fn escape_controls(text: &str, keep_newlines: bool) -> String {
+    if !text.chars().any(char::is_control) {
+        return text.to_string();
+    }
+    text.chars()
+        .map(|c| {
+            if c.is_control() && !(keep_newlines && c == '\n') {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
 }
 
 /// A message from a parser, with every quoted or backticked stretch longer than
@@ -85,10 +110,12 @@ pub fn shorten_message(msg: &str) -> String {
     shorten_long(&out)
 }
 
-/// Any text cut to 400 characters (a message's last guard).
+/// Any text, control characters but newlines escaped, cut to 400 characters (a message's last
+/// guard).
 fn shorten_long(text: &str) -> String {
+    let text = escape_controls(text, true);
     if text.chars().count() <= 400 {
-        text.to_string()
+        text
     } else {
         let mut s: String = text.chars().take(400).collect();
         s.push_str("...");

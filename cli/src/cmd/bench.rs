@@ -25,6 +25,10 @@ pub struct Args {
 }
 
 pub fn run(Args { name, repeat, hull, sets }: Args) -> Result<(), Failure> {
+    let most = aes_core::scenario::MAX_BENCH_REPEAT;
+    if !(1..=most).contains(&repeat) {
+        return Err(format!("--repeat = {repeat}: must be a whole number from 1 to {most}").into());
+    }
     if name == "seakeeping" {
         seakeeping(repeat, hull, sets)
     } else {

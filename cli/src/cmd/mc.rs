@@ -1,6 +1,6 @@
 //! `aes-sim mc`: a Monte Carlo study, whole or one shard of it (ch. 5.4).
 
-use crate::common::{check_writable, emit_json, load, shorten, Failure};
+use crate::common::{emit_json, load, shorten, Failure, OutFile};
 use std::io::Write;
 use std::time::Instant;
 
@@ -41,6 +41,8 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
         sc.sim.seed = s;
     }
     sc.validate().map_err(|e| format!("{}: {e}", shorten(&file)))?;
+    // What the study keeps and the work it asks for, before anything runs.
+    aes_core::studies::montecarlo::check_study(&sc).map_err(|e| format!("{}: {e}", shorten(&file)))?;
     let n = sc.monte_carlo.trials;
     let (a, b) = match &trial_range {
         None => (0, n),
@@ -56,9 +58,7 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
     if trial_range.is_some() && partial.is_none() {
         return Err("--trial-range needs --partial FILE (merge the shards with `aes-sim merge`)".into());
     }
-    if let Some(path) = &partial {
-        check_writable(path, "--partial")?;
-    }
+    let partial = partial.map(|path| OutFile::check(&path, "--partial", &[&file])).transpose()?;
     // At most the machine's parallelism: more threads only cost time and memory.
     let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
     let threads = match threads {
@@ -72,6 +72,17 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
         }
         Some(n) => n,
     };
+    // A long study says so up front (the progress then shows the time left as measured).
+    let estimate_s = (b - a) as f64 * sc.work() / aes_core::scenario::WORK_PER_S / threads as f64;
+    if estimate_s > 60.0 && !quiet {
+        let _ = writeln!(
+            std::io::stderr(),
+            "aes-sim mc: {} trials of {:.3e} units of work each: roughly {:.0} min on {threads} thread(s) (Ctrl-C stops it)",
+            b - a,
+            sc.work(),
+            estimate_s / 60.0
+        );
+    }
     // The seakeeping tables first (once, shared by every trial): a line on stderr if they
     // take more than a second (a fine grid), so a long silence is explained.
     if sc.sea.kind != aes_core::scenario::SeaKind::Calm {
@@ -109,9 +120,8 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
     if trial_range.is_none() {
         emit_json(&aes_core::studies::montecarlo::study_summary(&result)?)?;
     }
-    if let Some(path) = &partial {
-        let text = serde_json::to_string(&result).map_err(|e| e.to_string())?;
-        std::fs::write(path, text).map_err(|e| format!("cannot write '{}': {e}", shorten(path)))?;
+    if let Some(out) = &partial {
+        out.write(serde_json::to_string(&result).map_err(|e| e.to_string())?.as_bytes())?;
     }
     Ok(())
 }

@@ -1,6 +1,6 @@
 //! `aes-sim merge`: Monte Carlo shards into the study's summary.
 
-use crate::common::{check_writable, emit_json, read_bounded, shorten, Failure};
+use crate::common::{emit_json, read_bounded, shorten, Failure, OutFile};
 
 /// Largest Monte Carlo partial file [bytes].
 const MAX_PARTIAL_BYTES: u64 = 512 << 20;
@@ -21,9 +21,10 @@ pub struct Args {
 }
 
 pub fn run(Args { files, files_from, partial }: Args) -> Result<(), Failure> {
-    if let Some(path) = &partial {
-        check_writable(path, "--partial")?;
-    }
+    // The output may not be one of the inputs (the shard would be lost): the named partials,
+    // the list, and (below) every partial the list names. Written only at the end.
+    let inputs: Vec<&str> = files.iter().map(String::as_str).chain(files_from.as_deref()).collect();
+    let partial = partial.map(|path| OutFile::check(&path, "--partial", &inputs)).transpose()?;
     // The listed names are read line by line as they are merged (never all at once).
     let listed: Box<dyn Iterator<Item = std::io::Result<String>>> = match files_from.as_deref() {
         None => Box::new(std::iter::empty()),
@@ -39,6 +40,9 @@ pub fn run(Args { files, files_from, partial }: Args) -> Result<(), Failure> {
         let f = f.map_err(|e| format!("--files-from: {e}"))?;
         if f.trim().is_empty() {
             continue;
+        }
+        if let Some(out) = &partial {
+            out.refuse_input(&f)?;
         }
         let text = read_bounded(&f, MAX_PARTIAL_BYTES, "a Monte Carlo partial")?;
         let p =
@@ -61,9 +65,8 @@ pub fn run(Args { files, files_from, partial }: Args) -> Result<(), Failure> {
         );
     }
     emit_json(&summary)?;
-    if let Some(path) = &partial {
-        let text = serde_json::to_string(&acc).map_err(|e| e.to_string())?;
-        std::fs::write(path, text).map_err(|e| format!("cannot write '{}': {e}", shorten(path)))?;
+    if let Some(out) = &partial {
+        out.write(serde_json::to_string(&acc).map_err(|e| e.to_string())?.as_bytes())?;
     }
     Ok(())
 }

@@ -1,6 +1,6 @@
 //! `aes-sim run`: one scenario to its end.
 
-use crate::common::{check_writable, emit_json, load, shorten, Failure};
+use crate::common::{emit_json, load, Failure, OutFile};
 use aes_core::Simulation;
 
 // The command line of `aes-sim run`.
@@ -17,15 +17,13 @@ pub struct Args {
 }
 
 pub fn run(Args { file, out, sets }: Args) -> Result<(), Failure> {
+    // The output is checked before anything is read or computed, and written only at the end.
+    let out = out.map(|path| OutFile::check(&path, "--out", &[&file])).transpose()?;
     let sc = load(&file, &sets)?;
-    if let Some(path) = &out {
-        check_writable(path, "--out")?;
-    }
     let mut sim = Simulation::new(&sc).map_err(|e| e.to_string())?;
     let write = |trace: &aes_core::sim::Trace| -> Result<(), String> {
         match &out {
-            Some(path) => std::fs::write(path, trace.to_csv())
-                .map_err(|e| format!("cannot write the trace to '{}': {e}", shorten(path))),
+            Some(out) => out.write(trace.to_csv().as_bytes()),
             None => Ok(()),
         }
     };

@@ -280,6 +280,11 @@ pub const STATE_SIZE: usize = 33;
 /// size, plus in waves the wave components summed per step). 2e9 is about a minute natively and
 /// two in a browser; the presets need at most 1.7e7.
 pub const MAX_WORK: f64 = 2.0e9;
+/// Work done natively in a second on one core, roughly (the rate [`MAX_WORK`]'s minute states):
+/// for an estimate before a long study, never for a result.
+pub const WORK_PER_S: f64 = MAX_WORK / 60.0;
+/// How many times `aes-sim bench` may repeat its runs (each within [`MAX_WORK`]).
+pub const MAX_BENCH_REPEAT: u32 = 100;
 /// How many commands a scenario may hold.
 pub const MAX_COMMANDS: usize = crate::params::MAX_LIST_ITEMS;
 /// How many signals a Monte Carlo study may keep envelopes of.

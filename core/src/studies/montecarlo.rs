@@ -33,6 +33,17 @@ pub const VERSION: u32 = 1;
 /// Most trial ranges one partial may list.
 pub const MAX_RANGES: usize = 1_000_000;
 
+/// Most memory one accumulator of a study may take [bytes]: its moment rows (envelopes, onset,
+/// periodogram) and kept traces, estimated by [`study_bytes`] and checked by [`check_study`]
+/// before the study starts (a native study holds about two per thread; its summary's JSON is
+/// about 1.5 times the rows' share). The presets keep at most 2.6 MB.
+pub const MAX_STUDY_BYTES: f64 = 64.0e6;
+
+/// Most simulated work a whole study may ask for: trials times [`Scenario::work`] of one trial
+/// (a minute natively is about [`crate::scenario::MAX_WORK`]; 1e12 is about 8 hours on one
+/// core).
+pub const MAX_STUDY_WORK: f64 = 1.0e12;
+
 /// Envelope quantum (2^-16 of the unit; values to 2^29) and scalar quantum (2^-12; values to 4096).
 const ENV_BITS: i32 = 16;
 const SCALAR_BITS: i32 = 12;
@@ -137,6 +148,7 @@ impl Partial {
         }
         self.scenario.validate().map_err(|e| format!("its scenario is not valid: {e}"))?;
         let sc = &self.scenario;
+        check_study(sc)?;
         let max_trials = sc.monte_carlo.trials;
         let mut last_end = 0u64;
         for (k, &(a, b)) in self.ranges.iter().enumerate() {
@@ -170,10 +182,7 @@ impl Partial {
             if x.n > max_n || x.clamped > x.n {
                 return Err(format!("{name}: n = {}, clamped = {}: at most {max_n} samples", x.n, x.clamped));
             }
-            if x.n > 0 && !(x.min.is_finite() && x.max.is_finite() && x.min <= x.max) {
-                return Err(format!("{name}: min = {}, max = {}: need finite min <= max", x.min, x.max));
-            }
-            Ok(())
+            x.check_consistent().map_err(|e| format!("{name}: {e}"))
         };
         let hist = |name: &str, h: &Histogram, want: &Histogram, max_n: u64| -> Result<(), String> {
             if h.lo != want.lo || h.hi != want.hi || h.counts.len() != want.counts.len() {
@@ -209,6 +218,42 @@ impl Partial {
                 self.censored, self.arrival.n, self.exposure.n
             ));
         }
+        // Each histogram counts what its moments count, and the values that are not finite
+        // (which the moments count as clamped only).
+        for (name, h, x) in [
+            ("at_time_hist", &self.at_time_hist, &self.at_time),
+            ("excess_hist", &self.excess_hist, &self.excess_energy_mj),
+            ("excess_vs_calm_hist", &self.excess_vs_calm_hist, &self.excess_vs_calm_mj),
+            ("arrival_hist", &self.arrival_hist, &self.arrival),
+        ] {
+            let total = h.total();
+            if total < x.n || total > x.n.saturating_add(x.clamped) {
+                return Err(format!(
+                    "{name}: {total} counts beside n = {}, clamped = {}: the histogram counts the same trials",
+                    x.n, x.clamped
+                ));
+            }
+        }
+        if !sc.monte_carlo.excess_energy && (self.excess_energy_mj.n > 0 || self.excess_vs_calm_mj.n > 0) {
+            return Err("excess_energy_mj: samples, but the scenario's monte_carlo.excess_energy is off".into());
+        }
+        let cap = sc.sim.duration_s;
+        if self.arrival.n > 0 && (self.arrival.min < 0.0 || self.arrival.max > cap + sc.sim.record_interval_s) {
+            return Err(format!(
+                "arrival: min = {}, max = {}: events happen within the run, 0 to {} s",
+                crate::checks::num(self.arrival.min),
+                crate::checks::num(self.arrival.max),
+                crate::checks::num(cap)
+            ));
+        }
+        if self.exposure.n > 0 && (self.exposure.min < 0.0 || self.exposure.max > cap) {
+            return Err(format!(
+                "exposure: min = {}, max = {}: within 0 to {} s",
+                crate::checks::num(self.exposure.min),
+                crate::checks::num(self.exposure.max),
+                crate::checks::num(cap)
+            ));
+        }
         let dt = sc.sim.record_interval_s;
         let max_rows = (sc.sim.duration_s / dt) as usize + 2;
         let rows = |name: &str, r: &[ExactMoments], max: usize| -> Result<(), String> {
@@ -216,7 +261,18 @@ impl Partial {
                 return Err(format!("{name}: {} rows, at most {max}", r.len()));
             }
             let want = ExactMoments::new(ENV_BITS, 2);
-            r.iter().enumerate().try_for_each(|(i, x)| moments(&format!("{name}.{i}"), x, &want, trials))
+            r.iter().enumerate().try_for_each(|(i, x)| moments(&format!("{name}.{i}"), x, &want, trials))?;
+            // A trial gives a prefix of the rows (a run that stops early gives fewer): the
+            // counts never grow along the rows.
+            match r.windows(2).position(|w| w[1].n > w[0].n) {
+                Some(i) => Err(format!(
+                    "{name}.{}: n = {} after n = {} in the row before: a row counts no more trials than the one before",
+                    i + 1,
+                    r[i + 1].n,
+                    r[i].n
+                )),
+                None => Ok(()),
+            }
         };
         if self.envelopes.len() != sc.monte_carlo.envelope_signals.len()
             || self.envelopes.iter().zip(&sc.monte_carlo.envelope_signals).any(|(a, b)| &a.signal != b)
@@ -227,7 +283,19 @@ impl Partial {
             rows(&format!("envelopes.{}", env.signal), &env.rows, max_rows)?;
         }
         rows("onset", &self.onset, (sc.monte_carlo.onset_window_s / dt) as usize + 2)?;
+        if let Some(x) = self.onset.first().filter(|x| x.n > self.arrival.n) {
+            return Err(format!(
+                "onset.0: n = {} with {} events (arrival.n): the onset is counted only over trials with an event",
+                x.n, self.arrival.n
+            ));
+        }
         rows("periodogram", &self.periodogram, max_rows)?;
+        if let Some((i, x)) = self.periodogram.iter().enumerate().find(|(_, x)| x.n > 0 && x.min < 0.0) {
+            return Err(format!(
+                "periodogram.{i}: min = {}: a power spectral density is never negative",
+                crate::checks::num(x.min)
+            ));
+        }
         if !self.periodogram.is_empty() && self.periodogram_hz.len() != self.periodogram.len()
             || self.periodogram_hz.iter().any(|f| !f.is_finite())
         {
@@ -240,8 +308,15 @@ impl Partial {
                 sc.monte_carlo.keep_traces
             ));
         }
+        if let Some(w) = self.traces.windows(2).find(|w| w[1].trial <= w[0].trial) {
+            return Err(format!(
+                "traces: trial {} after trial {}: kept traces are sorted and distinct",
+                w[1].trial, w[0].trial
+            ));
+        }
         for t in &self.traces {
             if !self.ranges.iter().any(|&(a, b)| (a..b).contains(&t.trial))
+                || t.trial >= sc.monte_carlo.keep_traces as u64
                 || t.t_s.len() > max_rows
                 || t.columns.iter().any(|(_, c)| c.len() != t.t_s.len())
                 || t.t_s.iter().chain(t.columns.iter().flat_map(|(_, c)| c)).any(|x| !x.is_finite())
@@ -564,12 +639,7 @@ fn run_trial_from(
     }
     if i < m.keep_traces as u64 {
         let t = result.trace.get(Signal::TS).to_vec();
-        let mut names: Vec<String> = m.envelope_signals.clone();
-        for extra in [Signal::HOverR, Signal::BetaT, Signal::ImPowerPu] {
-            if !names.iter().any(|n| n == extra.name()) {
-                names.push(extra.name().into());
-            }
-        }
+        let names = trace_columns(m);
         p.traces = vec![KeptTrace {
             trial: i,
             seed: s.sim.seed,
@@ -580,12 +650,72 @@ fn run_trial_from(
     Ok(p)
 }
 
-/// Checks a shard of the study `sc`, trials `a..b`: a < b <= monte_carlo.trials. The error says
+/// What one accumulator of the study `sc` keeps: (moment rows, kept trace values, bytes).
+pub fn study_bytes(sc: &Scenario) -> (f64, f64, f64) {
+    let m = &sc.monte_carlo;
+    let dt = sc.sim.record_interval_s;
+    let rows = libm::floor(sc.sim.duration_s / dt) + 1.0;
+    let onset = libm::round(m.onset_window_s / dt) + 1.0;
+    let bins = libm::round(m.periodogram_segment_s / dt) / 2.0 + 1.0;
+    let moments = m.envelope_signals.len() as f64 * rows + onset.min(rows) + bins;
+    let columns = trace_columns(m).len() as f64 + 1.0;
+    let traces = (m.keep_traces as u64).min(m.trials) as f64 * rows * columns;
+    let bytes = moments * std::mem::size_of::<ExactMoments>() as f64 + traces * 8.0;
+    (moments, traces, bytes)
+}
+
+/// The columns of a kept trace: the envelope signals, then those the page draws beside them.
+fn trace_columns(m: &crate::scenario::MonteCarloParams) -> Vec<String> {
+    let mut names: Vec<String> = m.envelope_signals.clone();
+    for extra in [Signal::HOverR, Signal::BetaT, Signal::ImPowerPu] {
+        if !names.iter().any(|n| n == extra.name()) {
+            names.push(extra.name().into());
+        }
+    }
+    names
+}
+
+/// Checks before a study starts that what it keeps fits [`MAX_STUDY_BYTES`] and its work
+/// [`MAX_STUDY_WORK`]; the error says what the study would take and what to reduce.
+pub fn check_study(sc: &Scenario) -> Result<(), String> {
+    let m = &sc.monte_carlo;
+    let (moments, traces, bytes) = study_bytes(sc);
+    if bytes > MAX_STUDY_BYTES {
+        return Err(format!(
+            "monte_carlo: this study keeps about {:.0} MB ({} envelope signals x {:.0} rows and {:.0} more moment rows, \
+             {} kept traces of {:.3e} values); at most {:.0} MB: record less often (sim.record_interval_s = {}), \
+             shorten the run (sim.duration_s = {}), or keep fewer monte_carlo.envelope_signals or monte_carlo.keep_traces",
+            bytes / 1e6,
+            m.envelope_signals.len(),
+            libm::floor(sc.sim.duration_s / sc.sim.record_interval_s) + 1.0,
+            moments - m.envelope_signals.len() as f64 * (libm::floor(sc.sim.duration_s / sc.sim.record_interval_s) + 1.0),
+            (m.keep_traces as u64).min(m.trials),
+            traces,
+            MAX_STUDY_BYTES / 1e6,
+            crate::checks::num(sc.sim.record_interval_s),
+            crate::checks::num(sc.sim.duration_s)
+        ));
+    }
+    let work = m.trials as f64 * sc.work();
+    if work > MAX_STUDY_WORK {
+        return Err(format!(
+            "monte_carlo.trials = {}: with {:.3e} units of work a trial this study is {work:.3e}; at most {MAX_STUDY_WORK:e} \
+             (about 8 hours on one core): fewer trials, or a shorter run (sim.duration_s = {})",
+            m.trials,
+            sc.work(),
+            crate::checks::num(sc.sim.duration_s)
+        ));
+    }
+    Ok(())
+}
+
+/// Checks a shard of the study `sc`, trials `a..b`: a < b <= monte_carlo.trials, and the study
+/// within its budgets ([`check_study`]). The error says
 /// what is needed; the caller names the range as its user gave it (`--trial-range 3..9: ...`).
 pub fn check_shard(sc: &Scenario, a: u64, b: u64) -> Result<(), String> {
     let n = sc.monte_carlo.trials;
     if a < b && b <= n {
-        Ok(())
+        check_study(sc)
     } else {
         Err(format!("need a < b <= monte_carlo.trials = {n}"))
     }
@@ -934,6 +1064,42 @@ mod tests {
     use super::*;
 
     /// A shard is a < b <= trials; merging needs one partial, and one merged alone is itself.
+    /// Issue 34: what a study keeps is bounded before it starts. The issue's valid 4.9 kB
+    /// scenario (calm, 1,020 s recorded every 5 ms, 20 envelope signals, 10 kept traces, 10
+    /// trials; it took 7.6 GB) is refused with a message naming what to reduce, in every way a
+    /// study starts (a shard, a range as the browser runs it, a partial naming it); every
+    /// preset's study fits with room (at most 2.6 MB, the budget 64 MB), and 1e7 trials of a
+    /// 1,000 s run are over the work budget.
+    #[test]
+    fn a_study_keeps_what_its_budget_allows() {
+        for name in crate::scenario::presets::PRESET_NAMES {
+            let sc = crate::scenario::presets::preset(name).unwrap();
+            let (_, _, bytes) = study_bytes(&sc);
+            assert!(bytes <= 2.6e6, "{name}: {bytes} bytes");
+            assert!(check_study(&sc).is_ok(), "{name}: {:?}", check_study(&sc));
+        }
+        let mut sc = Scenario::default();
+        sc.sim.duration_s = 1020.0;
+        sc.sim.record_interval_s = 0.005;
+        sc.monte_carlo.trials = 10;
+        sc.monte_carlo.keep_traces = 10;
+        sc.monte_carlo.envelope_signals = signal_names().take(20).map(String::from).collect();
+        assert!(sc.validate().is_ok(), "{:?}", sc.validate());
+        assert!(sc.to_json().len() < 8000, "{} bytes", sc.to_json().len());
+        let e = check_shard(&sc, 0, 10).unwrap_err();
+        assert!(e.starts_with("monte_carlo: this study keeps about 833 MB (20 envelope signals x 204001 rows"), "{e}");
+        assert!(e.contains("at most 64 MB: record less often (sim.record_interval_s = 0.005)"), "{e}");
+        assert!(run_range(&sc, 0, 1).unwrap_err().contains("this study keeps about"));
+        let mut p = Partial::empty(&sc);
+        p.ranges = vec![(0, 1)];
+        assert!(p.validate().unwrap_err().contains("this study keeps about"));
+        let mut long = Scenario::default();
+        long.sim.duration_s = 1000.0;
+        long.monte_carlo.trials = 10_000_000;
+        let e = check_study(&long).unwrap_err();
+        assert!(e.starts_with("monte_carlo.trials = 10000000: with"), "{e}");
+    }
+
     #[test]
     fn shards_are_checked_and_merged() {
         let mut sc = Scenario::default();

@@ -200,6 +200,81 @@ impl ExactMoments {
         Ok(())
     }
 
+    /// Checks that the counts and sums could come from `n` values between `min` and `max`
+    /// (quantised as [`ExactMoments::push`] does): no sums without samples, every power sum
+    /// within n times the extremes' powers, S2 at least S1^2 / n (Cauchy-Schwarz) and the
+    /// variance at most (max - min)^2 / 4 (Popoviciu), S4 at least S2^2 / n, no sums above the
+    /// order kept. The bounds are exact on the integers; the f64 comparisons allow 1e-9 of the
+    /// magnitudes and one quantum for rounding. The error says what is impossible.
+    pub fn check_consistent(&self) -> Result<(), String> {
+        let order = self.order.min(4) as usize;
+        if let Some(k) = (order..4).find(|&k| self.sums[k] != 0) {
+            return Err(format!("sum {} = {}: this accumulator keeps {} sums", k + 1, self.sums[k], order));
+        }
+        if self.n == 0 {
+            if self.sums.iter().any(|&s| s != 0) || self.min.is_finite() || self.max.is_finite() {
+                return Err("n = 0 beside non-zero sums or finite extremes".to_string());
+            }
+            return Ok(());
+        }
+        if !(self.min.is_finite() && self.max.is_finite() && self.min <= self.max) {
+            return Err(format!("min = {}, max = {}: need finite min <= max", self.min, self.max));
+        }
+        let lim = self.limit();
+        let q = |x: f64| libm::round(x * self.scale()).clamp(-lim, lim);
+        let (lo, hi) = (q(self.min), q(self.max));
+        let n = self.n as f64;
+        let s: Vec<f64> = self.sums.iter().map(|&v| v as f64).collect();
+        let slack = |bound: f64| 1e-9 * bound.abs() + 1.0;
+        let big = lo.abs().max(hi.abs());
+        let mut bad = Vec::new();
+        if s[0] < n * lo - slack(n * lo) || s[0] > n * hi + slack(n * hi) {
+            bad.push("the sum lies outside n x [min, max]");
+        }
+        if order >= 2 {
+            let top = n * big * big;
+            if s[1] < 0.0 || s[1] > top + slack(top) {
+                bad.push("the sum of squares lies outside [0, n max(|min|, |max|)^2]");
+            }
+            let mean = s[0] / n;
+            let var = s[1] / n - mean * mean;
+            let spread = (hi - lo) * (hi - lo) / 4.0;
+            let tol = slack(s[1] / n);
+            if var < -tol {
+                bad.push("the sum of squares is below the square of the sum over n");
+            } else if var > spread + tol {
+                bad.push("the variance exceeds (max - min)^2 / 4, the most values in [min, max] can have");
+            }
+        }
+        if order >= 3 {
+            let top = n * big * big * big;
+            if s[2].abs() > top + slack(top) {
+                bad.push("the sum of cubes exceeds n max(|min|, |max|)^3");
+            }
+        }
+        if order >= 4 {
+            let top = n * big * big * big * big;
+            if s[3] < 0.0 || s[3] > top + slack(top) {
+                bad.push("the sum of fourth powers lies outside [0, n max(|min|, |max|)^4]");
+            } else if s[3] * n < s[1] * s[1] - slack(s[1] * s[1]) {
+                bad.push("the sum of fourth powers is below the square of the sum of squares over n");
+            }
+        }
+        match bad.first() {
+            None => Ok(()),
+            Some(why) => Err(format!(
+                "n = {}, min = {}, max = {}, sums = [{}, {}, {}, {}]: {why}",
+                self.n,
+                crate::checks::num(self.min),
+                crate::checks::num(self.max),
+                self.sums[0],
+                self.sums[1],
+                self.sums[2],
+                self.sums[3]
+            )),
+        }
+    }
+
     /// Raw moment E[x^k] (k = 1..4).
     fn raw(&self, k: usize) -> f64 {
         self.sums[k - 1] as f64 / self.n.max(1) as f64 / libm::pow(self.scale(), k as f64)

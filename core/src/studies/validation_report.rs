@@ -244,6 +244,10 @@ fn explained(
     Row { verdict: if r.verdict == Verdict::Open { Verdict::Explained } else { r.verdict }, ..r }
 }
 
+/// Most Monte Carlo trials per study a report may ask for (200, the default, take seconds;
+/// 10,000 about 6 minutes).
+pub const MAX_TRIALS: u64 = 10_000;
+
 /// How large a run of the report is.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Size {

@@ -53,8 +53,34 @@ crate::params! {
     }
 }
 
+/// Most points of an RAO table (frequencies x speeds x headings; the default has 3,120): about
+/// 40 MB of table.
+pub const MAX_RAO_POINTS: usize = 200_000;
+
+/// Most work of building an RAO table: grid points times the hull's strips (the DTMB 5415 on the
+/// default grid: 3,120 x 29 = 9.0e4, 0.2 s natively; 1.5e7 is about 30 s). Checked before the
+/// build starts.
+pub const MAX_RAO_WORK: f64 = 1.5e7;
+
+/// Largest real or imaginary part of an RAO in a table [m/m or rad/m], and magnitude of a mean force or moment per
+/// wave amplitude squared [N/m^2, N m/m^2]: far above any ship's (the 5415's heave RAO is at
+/// most about 1.2, its drift forces about 1e5), far below what breaks a run.
+pub const MAX_RAO_MAGNITUDE: f64 = 1.0e3;
+pub const MAX_DRIFT_MAGNITUDE: f64 = 1.0e12;
+
 impl crate::params::CrossCheck for SeakeepingGrid {
     fn cross_check(&self, v: &mut crate::checks::Validator) {
+        let points = self.n_omega.saturating_mul(self.n_speed).saturating_mul(self.n_heading);
+        if points > MAX_RAO_POINTS {
+            v.fail(
+                "n_omega",
+                self.n_omega,
+                format!(
+                    "with n_speed = {} and n_heading = {} the table has {points} points; at most {MAX_RAO_POINTS}: fewer frequencies, speeds or headings",
+                    self.n_speed, self.n_heading
+                ),
+            );
+        }
         if self.omega_max < self.omega_min + 0.01 {
             v.fail(
                 "omega_max",
@@ -139,8 +165,18 @@ impl RaoTable {
     /// `compute` with the strip-theory switches of `printed` (Appendix A, eq. 2.47).
     pub fn compute_as(ship: &Ship, grid: &SeakeepingGrid, printed: &AsPrintedParams) -> Result<RaoTable, String> {
         grid.validate()?;
+        let points = grid.n_omega * grid.n_speed * grid.n_heading;
+        let work = points as f64 * ship.strips.len() as f64;
+        if work > MAX_RAO_WORK {
+            return Err(format!(
+                "seakeeping.grid: {points} points x {} strips of the hull = {work:.3e} units of work to build the RAO table; at most {MAX_RAO_WORK:e} (about 30 s): fewer grid points (n_omega, n_speed, n_heading) or fewer hull stations",
+                ship.strips.len()
+            ));
+        }
         let rad = ship.radiation_table(&default_omega_grid());
-        Ok(Self::from_radiation_as(ship, &rad, grid, printed))
+        let t = Self::from_radiation_as(ship, &rad, grid, printed);
+        t.check().map_err(|e| format!("the RAO table of this hull: {e}"))?;
+        Ok(t)
     }
 
     pub fn from_radiation(ship: &Ship, rad: &RadiationTable, grid: &SeakeepingGrid) -> RaoTable {
@@ -218,7 +254,55 @@ impl RaoTable {
                 drift_moment: v[18],
             })
             .collect();
-        Ok(RaoTable { grid: *grid, omegas, speeds, heading_cs: cos_sin(&headings), headings, data })
+        let t = RaoTable { grid: *grid, omegas, speeds, heading_cs: cos_sin(&headings), headings, data };
+        t.check().map_err(|e| format!("RAO table values: {e}"))?;
+        Ok(t)
+    }
+
+    /// What every table must hold, computed here or loaded from another worker: each point's
+    /// wave frequency is its grid's, its encounter frequency and wave number positive and within
+    /// what the grid allows, its RAOs' parts within [`MAX_RAO_MAGNITUDE`], its mean forces and moments
+    /// within [`MAX_DRIFT_MAGNITUDE`], every number finite.
+    pub fn check(&self) -> Result<(), String> {
+        let (ns, nh) = (self.speeds.len(), self.headings.len());
+        let u_max = self.speeds.last().copied().unwrap_or(0.0);
+        for (at, r) in self.data.iter().enumerate() {
+            let w = self.omegas[at / (ns * nh)];
+            // omega_e = |omega0 - k U cos(beta)|, k = omega0^2 / g: at most omega0 + omega0^2 U / 9.
+            let we_max = w + w * w * u_max / 9.0 + 1.0;
+            let rao = [r.sway, r.heave, r.roll, r.pitch, r.yaw]
+                .iter()
+                .map(|c| c.re.abs().max(c.im.abs()))
+                .fold(0.0, f64::max);
+            let drift =
+                [r.f_add, r.added_resistance, r.drift_force, r.added_resistance_gb, r.b44_viscous, r.drift_moment]
+                    .iter()
+                    .map(|x| x.abs())
+                    .fold(0.0, f64::max);
+            let finite = [r.omega0, r.omega_e, r.k, rao, drift].iter().all(|x| x.is_finite());
+            let why = if !finite {
+                Some("a number that is not finite".to_string())
+            } else if r.omega0 != w {
+                Some(format!("omega0 = {}: the grid's frequency there is {w}", crate::checks::num(r.omega0)))
+            } else if !(r.omega_e > 0.0 && r.omega_e <= we_max) {
+                Some(format!("omega_e = {}: must be in (0, {we_max:.3}]", crate::checks::num(r.omega_e)))
+            } else if !(r.k > 0.0 && r.k <= w * w / 9.0) {
+                Some(format!("k = {}: must be omega0^2 / g", crate::checks::num(r.k)))
+            } else if rao > MAX_RAO_MAGNITUDE {
+                Some(format!("an RAO part of {}: at most {MAX_RAO_MAGNITUDE:e}", crate::checks::num(rao)))
+            } else if drift > MAX_DRIFT_MAGNITUDE {
+                Some(format!(
+                    "a mean force or moment of {}: at most {MAX_DRIFT_MAGNITUDE:e}",
+                    crate::checks::num(drift)
+                ))
+            } else {
+                None
+            };
+            if let Some(why) = why {
+                return Err(format!("point {at} (of {}): {why}", self.data.len()));
+            }
+        }
+        Ok(())
     }
 
     /// Trilinear interpolation (complex RAOs component-wise) at wave frequency `omega0` [rad/s],
@@ -532,6 +616,39 @@ mod tests {
         let back = RaoTable::from_values(&grid, &v).unwrap();
         assert_eq!(back.values(), v);
         assert_eq!(back.interpolate(w, u, 2.0).mz, tab.interpolate(w, u, 2.0).mz);
+    }
+
+    /// Issue 34: an RAO table is built within a work budget, checked before the build starts
+    /// (the grid's maximum with a custom hull took 7 min and 297 MB), and a table loaded from
+    /// another worker is checked as a computed one is: the 5415's default table passes, one
+    /// with a value of 1e308, a wrong frequency or a NaN does not.
+    #[test]
+    fn tables_are_built_within_a_budget_and_checked() {
+        let most = SeakeepingGrid { n_omega: 400, n_speed: 60, n_heading: 73, ..Default::default() };
+        let e = most.validate().unwrap_err();
+        assert!(e.contains("seakeeping.grid.n_omega = 400: with n_speed = 60 and n_heading = 73 the table has 1752000 points; at most 200000"), "{e}");
+        let mut ship = Ship::dtmb5415();
+        let extra: Vec<_> = ship.strips.iter().cycle().take(171).cloned().collect();
+        ship.strips.extend(extra);
+        let big = SeakeepingGrid { n_omega: 400, n_speed: 20, n_heading: 20, ..Default::default() };
+        let t0 = std::time::Instant::now();
+        let e = RaoTable::compute(&ship, &big).unwrap_err();
+        assert!(e.contains("160000 points x 200 strips of the hull = 3.200e7 units of work"), "{e}");
+        assert!(t0.elapsed().as_secs_f64() < 0.1, "refused before the build: {:?}", t0.elapsed());
+        let grid = SeakeepingGrid::default();
+        let good = RaoTable::compute(&Ship::dtmb5415(), &grid).unwrap().values();
+        assert!(RaoTable::from_values(&grid, &good).is_ok());
+        let n = RaoTable::VALUES_PER_POINT;
+        for (at, v, want) in [
+            (n + 5, 1e308, "point 1 (of 3120): an RAO part of 1e308"),
+            (n * 7, 0.5, "omega0 = 0.5"),
+            (14, 1e300, "a mean force"),
+        ] {
+            let mut bad = good.clone();
+            bad[at] = v;
+            let e = RaoTable::from_values(&grid, &bad).unwrap_err();
+            assert!(e.contains(want), "{e}");
+        }
     }
 
     #[test]
