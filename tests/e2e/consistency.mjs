@@ -158,12 +158,15 @@ await check("the design tab's settings are in the address and survive a reload",
   await c.close();
 });
 
-await check('the Bode magnitude and phase share one cursor', async () => {
+await check('the Bode magnitude and phase share one cursor and line up', async () => {
   const p = await open(base);
   await p.click('#tab-ips');
   await p.waitForFunction(() => document.querySelectorAll('#ips-plots .chart').length >= 2, null, { timeout: 30000 });
   const keys = await p.$$eval('#ips-plots .chart', (c) => c.filter((x) => x.uplot).map((x) => x.uplot.cursor.sync && x.uplot.cursor.sync.key));
   assert(keys.length >= 2 && keys.every((k) => k && k === keys[0]), `cursor sync keys: ${keys}`);
+  // The magnitude stands above the phase with its plot area in line (same left edge and width).
+  const boxes = await p.$$eval('#ips-plots .chart', (c) => c.filter((x) => x.uplot).map((x) => { const r = x.getBoundingClientRect(); return [Math.round(r.left + x.uplot.bbox.left / devicePixelRatio), Math.round(x.uplot.bbox.width / devicePixelRatio), Math.round(r.top)]; }));
+  assert(boxes.length === 2 && boxes[0][0] === boxes[1][0] && boxes[0][1] === boxes[1][1] && boxes[1][2] > boxes[0][2], `Bode plot areas not in line: ${JSON.stringify(boxes)}`);
   await p.close();
 });
 

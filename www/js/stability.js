@@ -85,13 +85,14 @@ export class StabilityTab {
     $('ips-steady').querySelector('tbody').replaceChildren(...rows);
     $('ips-poles').querySelector('tbody').replaceChildren(...r.linear.poles.map((p) => el('tr', {}, ...poleCells(p))));
     this.box.clear();
-    this.poleMap(r.linear.poles);
     const what = TRANSFER[a.closed ? 'closed' : 'open'][a.side];
     const curves = { magnitude_db: r.bode.magnitude_db, phase_deg: unwrapDeg(r.bode.phase_deg) };
     for (const [key, label] of [['magnitude_db', 'magnitude [dB]'], ['phase_deg', 'phase [deg]']]) {
       this.box.line(`Bode ${label}: ${what}`, { data: r.bode.frequency_hz, label: 'frequency [Hz]', distr: 3 },
         [{ data: curves[key], label, color: '#0b5cad' }], [{ scale: 'y', label }]);
     }
+    // After the Bode pair, which stands one above the other (one column: their frequency axes line up).
+    this.poleMap(r.linear.poles);
   }
 
   poleMap(poles) { drawPoleMap(this.box, poles, IPS.poleMapMax); }
