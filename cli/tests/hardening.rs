@@ -332,6 +332,9 @@ fn class8_no_output_destroys_what_was_there() {
     let o = run(&["run", "preset:startup", "--set", "sim.duration_s=1", "--out", &old], b"");
     assert_eq!(o.code, Some(0), "{}", o.err);
     assert!(std::fs::read_to_string(&old).unwrap().starts_with("t_s,"));
+    // A device is written to as before (nothing to replace there).
+    let o = run(&["run", "preset:startup", "--set", "sim.duration_s=1", "--out", "/dev/null"], b"");
+    assert_eq!(o.code, Some(0), "{}", o.err);
     // An output that is an input is refused before anything is read or written.
     let a = partial_text(&dir, "0..2");
     let b = partial_text(&dir, "2..4");
