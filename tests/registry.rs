@@ -100,6 +100,45 @@ fn the_readme_health_checks_are_cores() {
     );
 }
 
+/// The README's paragraph on limits states issue 34's limits as core's constants hold them (a
+/// changed constant fails here until the README says so).
+#[test]
+fn the_readme_states_the_limits_as_core_holds_them() {
+    use aes_core::sea::seakeeping::tables;
+    use aes_core::studies::montecarlo;
+    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md")).unwrap();
+    let text = readme.split_whitespace().collect::<Vec<_>>().join(" ");
+    let thousands = |n: u64| {
+        let s = n.to_string();
+        let mut out = String::new();
+        for (i, c) in s.chars().enumerate() {
+            if i > 0 && (s.len() - i) % 3 == 0 {
+                out.push(',');
+            }
+            out.push(c);
+        }
+        out
+    };
+    for want in [
+        format!("problems are listed up to {}", aes_core::checks::MAX_ERRORS_SHOWN),
+        format!("cut to {} characters", aes_core::checks::MAX_VALUE_CHARS),
+        format!("at most {} MB", montecarlo::MAX_STUDY_BYTES / 1e6),
+        format!("at most {:e}", montecarlo::MAX_STUDY_WORK),
+        format!("grid has at most {} points", thousands(tables::MAX_RAO_POINTS as u64)),
+        format!("at most {:.1e} units of work", tables::MAX_RAO_WORK),
+        format!(
+            "RAO parts within {:e} and mean forces within {:e}",
+            tables::MAX_RAO_MAGNITUDE,
+            tables::MAX_DRIFT_MAGNITUDE
+        ),
+        format!("takes at most {} frequencies", aes_core::studies::fuel::MAX_OMEGAS),
+        format!("`bench --repeat` 1 to {}", aes_core::scenario::MAX_BENCH_REPEAT),
+        format!("`validate --trials` 1 to {}", thousands(aes_core::studies::validation_report::MAX_TRIALS)),
+    ] {
+        assert!(text.contains(&want), "README does not say: {want}");
+    }
+}
+
 /// Scenario files written before the time step, its method and the sample periods moved into
 /// `stepping` (two presets as `aes-sim preset` printed them then) read as those presets do now;
 /// an old name given beside its new one is refused; `--set` takes the old name too.

@@ -68,6 +68,9 @@ pub fn read_bounded(file: &str, limit: u64, what: &str) -> Result<String, String
 pub struct OutFile {
     path: std::path::PathBuf,
     flag: &'static str,
+    /// A device or a pipe (`/dev/null`, `/dev/stdout`, a fifo): written to directly, there is
+    /// nothing to replace.
+    direct: bool,
 }
 
 impl OutFile {
@@ -80,9 +83,13 @@ impl OutFile {
         if path.is_empty() || p.file_name().is_none() || p.is_dir() {
             return Err(format!("{}: not a file name", name()));
         }
-        let out = OutFile { path: p, flag };
+        let direct = std::fs::metadata(&p).is_ok_and(|m| !m.is_file());
+        let out = OutFile { path: p, flag, direct };
         for input in inputs {
             out.refuse_input(input)?;
+        }
+        if direct {
+            return Ok(out);
         }
         let probe = out.temp_path();
         std::fs::OpenOptions::new()
@@ -120,6 +127,10 @@ impl OutFile {
     /// Writes `bytes` whole to the temporary file, then renames it over the file; on an error the
     /// temporary file is removed and the file is as it was.
     pub fn write(&self, bytes: &[u8]) -> Result<(), String> {
+        if self.direct {
+            return std::fs::write(&self.path, bytes)
+                .map_err(|e| format!("{} '{}': cannot write: {e}", self.flag, shorten(&self.path.to_string_lossy())));
+        }
         let tmp = self.temp_path();
         let r = std::fs::File::create(&tmp)
             .and_then(|mut f| f.write_all(bytes).and_then(|()| f.sync_all()))

@@ -332,6 +332,9 @@ fn class8_no_output_destroys_what_was_there() {
     let o = run(&["run", "preset:startup", "--set", "sim.duration_s=1", "--out", &old], b"");
     assert_eq!(o.code, Some(0), "{}", o.err);
     assert!(std::fs::read_to_string(&old).unwrap().starts_with("t_s,"));
+    // A device is written to as before (nothing to replace there).
+    let o = run(&["run", "preset:startup", "--set", "sim.duration_s=1", "--out", "/dev/null"], b"");
+    assert_eq!(o.code, Some(0), "{}", o.err);
     // An output that is an input is refused before anything is read or written.
     let a = partial_text(&dir, "0..2");
     let b = partial_text(&dir, "2..4");
@@ -373,6 +376,12 @@ fn class8_validate_writes_only_where_out_says() {
     refused(&["validate", "--out", dir.to_str().unwrap()], b"", "not a file name");
     let long = format!("{}/{}/r.md", dir.to_str().unwrap(), "d".repeat(120_000));
     refused(&["validate", "--out", &long], b"", "cannot write in its folder");
+    let file = dir.join("a-file");
+    std::fs::write(&file, "mine").unwrap();
+    refused(&["validate", "--figures", file.to_str().unwrap()], b"", "not a folder");
+    refused(&["validate", "--check", "docs/validation.md", "--out", "x.md"], b"", "give one or the other");
+    refused(&["validate", "--check", file.to_str().unwrap(), "--figures", "x"], b"", "give one or the other");
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "mine");
     assert!(t0.elapsed() < Duration::from_secs(1), "{:?}", t0.elapsed());
     std::fs::create_dir_all(dir.join("validation")).unwrap();
     std::fs::write(dir.join("validation/own.svg"), "<svg/>").unwrap();

@@ -7,6 +7,15 @@ use aes_core::scenario::presets::{preset, PRESET_NAMES};
 use aes_core::{Scenario, Simulation};
 use wasm_bindgen::prelude::*;
 
+/// A text argument from JavaScript, refused by name when it is not a string (a number or an
+/// object given for a `&str` trapped with "memory access out of bounds", issue 34).
+fn text(v: &JsValue, what: &str) -> Result<String, JsError> {
+    v.as_string().ok_or_else(|| {
+        let kind = v.js_typeof().as_string().unwrap_or_default();
+        JsError::new(&format!("{what}: expected a string, got a value of type {kind}"))
+    })
+}
+
 /// Names of the preset scenarios.
 #[wasm_bindgen(js_name = presetNames)]
 pub fn preset_names() -> Vec<String> {
@@ -15,14 +24,17 @@ pub fn preset_names() -> Vec<String> {
 
 /// A preset scenario as JSON text.
 #[wasm_bindgen(js_name = presetJson)]
-pub fn preset_json(name: &str) -> Result<String, JsError> {
-    preset(name).map(|s| s.to_json()).ok_or_else(|| JsError::new(&format!("no preset named '{name}'")))
+pub fn preset_json(name: JsValue) -> Result<String, JsError> {
+    let name = text(&name, "the preset's name")?;
+    preset(&name)
+        .map(|s| s.to_json())
+        .ok_or_else(|| JsError::new(&format!("no preset named '{}'", aes_core::checks::shorten(&name))))
 }
 
 /// Checks a scenario; returns every problem as a list of `{path, value, message}` (empty when valid).
 #[wasm_bindgen(js_name = validateScenario)]
-pub fn validate_scenario(json: &str) -> Result<JsValue, JsError> {
-    let errors = match Scenario::from_json(json) {
+pub fn validate_scenario(json: JsValue) -> Result<JsValue, JsError> {
+    let errors = match Scenario::from_json(&text(&json, "the scenario JSON")?) {
         Ok(_) => Vec::new(),
         Err(e) => e.0,
     };
@@ -63,8 +75,8 @@ pub fn thesis_values() -> String {
 /// The model's levels and ratings the page draws (bands, reference lines, per-unit bases), for a
 /// scenario, as JSON. The page copies none of these numbers.
 #[wasm_bindgen(js_name = pageConstants)]
-pub fn page_constants(json: &str) -> Result<String, JsError> {
-    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn page_constants(json: JsValue) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let c = aes_core::output::presentation::PageConstants::of(&sc).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&c).map_err(|e| JsError::new(&e.to_string()))
 }
@@ -88,8 +100,8 @@ pub struct Run {
 impl Run {
     /// Builds a run from scenario JSON; the error names every bad field.
     #[wasm_bindgen(constructor)]
-    pub fn new(json: &str) -> Result<Run, JsError> {
-        let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    pub fn new(json: JsValue) -> Result<Run, JsError> {
+        let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
         let sim = Simulation::new(&sc).map_err(|e| JsError::new(&e.to_string()))?;
         Ok(Run { sim: Some(sim), summary_json: String::new(), trace_csv: String::new(), columns: Vec::new() })
     }
@@ -132,8 +144,8 @@ impl Run {
     }
 
     /// One trace column as a Float64Array (after the run has finished).
-    pub fn column(&self, name: &str) -> Result<js_sys::Float64Array, JsError> {
-        let s = signal(name)?;
+    pub fn column(&self, name: JsValue) -> Result<js_sys::Float64Array, JsError> {
+        let s = signal(&text(&name, "the signal's name")?)?;
         let col = self.columns.get(s.index()).ok_or_else(|| JsError::new("the run has not finished"))?;
         Ok(js_sys::Float64Array::from(col.as_slice()))
     }
@@ -151,8 +163,8 @@ impl Run {
 
     /// Rows `from..` of one trace column recorded so far (the page follows a run as it goes).
     #[wasm_bindgen(js_name = columnFrom)]
-    pub fn column_from(&self, name: &str, from: usize) -> Result<js_sys::Float64Array, JsError> {
-        let s = signal(name)?;
+    pub fn column_from(&self, name: JsValue, from: usize) -> Result<js_sys::Float64Array, JsError> {
+        let s = signal(&text(&name, "the signal's name")?)?;
         let col = match &self.sim {
             Some(sim) => sim.trace().get(s),
             None => self.columns.get(s.index()).map(|c| c.as_slice()).unwrap_or_default(),
@@ -163,8 +175,8 @@ impl Run {
 
 /// Runs a scenario to the end and returns its summary JSON.
 #[wasm_bindgen(js_name = runSummary)]
-pub fn run_summary(json: &str) -> Result<String, JsError> {
-    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn run_summary(json: JsValue) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let r = aes_core::run(&sc).map_err(|e| JsError::new(&e.to_string()))?;
     Ok(serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default())
 }
@@ -177,7 +189,7 @@ pub fn run_summary(json: &str) -> Result<String, JsError> {
 #[wasm_bindgen(js_name = ipsAnalysis)]
 #[allow(clippy::too_many_arguments)]
 pub fn ips_analysis(
-    side: &str,
+    side: JsValue,
     omega: f64,
     v_fd: f64,
     i_load: f64,
@@ -189,7 +201,7 @@ pub fn ips_analysis(
 ) -> Result<String, JsError> {
     use aes_core::studies::ips::study::{self, Analysis, IpsRequest, OperatingPoint, Side};
     let request = IpsRequest {
-        side: Side::from_name(side).map_err(|e| JsError::new(&e))?,
+        side: Side::from_name(&text(&side, "side")?).map_err(|e| JsError::new(&e))?,
         analysis: Analysis::Bode,
         closed,
         point: OperatingPoint {
@@ -220,8 +232,8 @@ pub fn ips_meta() -> String {
 /// tuning, with its singular values, closed-loop poles and input margins, as JSON (the format of
 /// `aes-sim design lqg-ltr --plant aes`).
 #[wasm_bindgen(js_name = designLqgLtr)]
-pub fn design_lqg_ltr(json: &str) -> Result<String, JsError> {
-    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn design_lqg_ltr(json: JsValue) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let d = aes_core::sim::lqg::analyse(&sc).map_err(|e| JsError::new(&e))?;
     aes_core::checks::check_finite(&d).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&d).map_err(|e| JsError::new(&e.to_string()))
@@ -231,8 +243,8 @@ pub fn design_lqg_ltr(json: &str) -> Result<String, JsError> {
 /// `excess_vs_calm`, `arrival`: a bin index or null), as JSON: the page finds a trial to replay
 /// from a histogram bar with it.
 #[wasm_bindgen(js_name = trialBins)]
-pub fn trial_bins(json: &str, i: u32) -> Result<String, JsError> {
-    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn trial_bins(json: JsValue, i: u32) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     if i as u64 >= sc.monte_carlo.trials {
         return Err(JsError::new(&format!("trial {i}: the study has {} trials", sc.monte_carlo.trials)));
     }
@@ -244,8 +256,8 @@ pub fn trial_bins(json: &str, i: u32) -> Result<String, JsError> {
 /// partial statistics in binary form (`Partial::to_bytes`: the exact moments packed as they are,
 /// no JSON for the bulk), to be merged with the other workers' by `mcSummary`.
 #[wasm_bindgen(js_name = mcRange)]
-pub fn mc_range(json: &str, a: u32, b: u32) -> Result<Vec<u8>, JsError> {
-    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn mc_range(json: JsValue, a: u32, b: u32) -> Result<Vec<u8>, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let p = aes_core::studies::montecarlo::run_range(&sc, a as u64, b as u64).map_err(|e| JsError::new(&e))?;
     p.to_bytes().map_err(|e| JsError::new(&e))
 }
@@ -254,8 +266,8 @@ pub fn mc_range(json: &str, a: u32, b: u32) -> Result<Vec<u8>, JsError> {
 /// seed `trial_seed(sim.seed, i)`, which reproduces the trial as a single run. Text, because the
 /// seed uses all 64 bits and a JavaScript number keeps 53.
 #[wasm_bindgen(js_name = trialScenario)]
-pub fn trial_scenario(json: &str, i: u32) -> Result<String, JsError> {
-    let mut sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn trial_scenario(json: JsValue, i: u32) -> Result<String, JsError> {
+    let mut sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     if i as u64 >= sc.monte_carlo.trials {
         return Err(JsError::new(&format!(
             "trial {i}: the study has trials 0 to {}",
@@ -286,16 +298,16 @@ pub fn mc_summary(partials: Vec<js_sys::Uint8Array>) -> Result<String, JsError> 
 /// this worker's cache): the page builds it in one worker and hands it to the Monte Carlo workers
 /// (`raoTableLoad`), so no worker builds it again.
 #[wasm_bindgen(js_name = raoTableValues)]
-pub fn rao_table_values(json: &str) -> Result<Vec<f64>, JsError> {
-    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn rao_table_values(json: JsValue) -> Result<Vec<f64>, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let t = sc.rao_table().map_err(|e| JsError::new(&e))?;
     Ok(t.values())
 }
 
 /// Puts the table of `raoTableValues` (from another worker) into this worker's cache.
 #[wasm_bindgen(js_name = raoTableLoad)]
-pub fn rao_table_load(json: &str, values: &[f64]) -> Result<(), JsError> {
-    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn rao_table_load(json: JsValue, values: &[f64]) -> Result<(), JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let hull = sc.ship_hull().map_err(|e| JsError::new(&e))?;
     aes_core::sea::rao_cache::insert_rao_table(&hull, &sc.seakeeping.grid, &sc.as_printed, values)
         .map_err(|e| JsError::new(&e))
@@ -304,8 +316,8 @@ pub fn rao_table_load(json: &str, values: &[f64]) -> Result<(), JsError> {
 /// RAOs of a scenario's hull (`aes-sim rao`'s JSON) at `speed_kn` and `heading_deg` over
 /// `omegas` [rad/s].
 #[wasm_bindgen(js_name = raoJson)]
-pub fn rao_json(json: &str, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -> Result<String, JsError> {
-    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn rao_json(json: JsValue, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     if omegas.is_empty() || omegas.len() > 400 || omegas.iter().any(|w| !(w.is_finite() && (0.05..=10.0).contains(w))) {
         return Err(JsError::new("RAOs: 1 to 400 frequencies from 0.05 to 10 rad/s"));
     }
@@ -327,8 +339,8 @@ pub fn rao_json(json: &str, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -
 /// The fuel study of ch. 5.2.4 (Fig. 5-12) from a scenario: JSON rows as `aes-sim fuel` prints (no
 /// frequencies: Fig. 5-12's).
 #[wasm_bindgen(js_name = fuelStudy)]
-pub fn fuel_study(json: &str, omegas: Vec<f64>) -> Result<String, JsError> {
-    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn fuel_study(json: JsValue, omegas: Vec<f64>) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let rows = aes_core::studies::fuel::run(&sc, &omegas).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
 }
@@ -336,8 +348,8 @@ pub fn fuel_study(json: &str, omegas: Vec<f64>) -> Result<String, JsError> {
 /// The side profile and waterline of the hull a run in waves uses, as JSON (the live stern and
 /// plan views draw it; positions from the aft perpendicular, heights from the calm waterline).
 #[wasm_bindgen(js_name = hullProfile)]
-pub fn hull_profile(json: &str) -> Result<String, JsError> {
-    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn hull_profile(json: JsValue) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let p = aes_core::output::presentation::HullProfile::of(&sc).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
 }
@@ -345,8 +357,8 @@ pub fn hull_profile(json: &str) -> Result<String, JsError> {
 /// The hull panel of a scenario's hull as JSON: body plan (every station's offsets), profile,
 /// appendages and hydrostatics at its loading (`presentation::HullSheet`).
 #[wasm_bindgen(js_name = hullSheet)]
-pub fn hull_sheet(json: &str) -> Result<String, JsError> {
-    let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+pub fn hull_sheet(json: JsValue) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let p = aes_core::output::presentation::HullSheet::of(&sc).map_err(|e| JsError::new(&e))?;
     serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
 }
@@ -369,8 +381,8 @@ pub struct Sea {
 impl Sea {
     /// The sea of a scenario (no components in calm water).
     #[wasm_bindgen(constructor)]
-    pub fn new(json: &str) -> Result<Sea, JsError> {
-        let sc = Scenario::from_json(json).map_err(|e| JsError::new(&e.to_string()))?;
+    pub fn new(json: JsValue) -> Result<Sea, JsError> {
+        let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
         Ok(Sea { comps: aes_core::sim::seaway::wave_components(&sc), out: Vec::new() })
     }
 
@@ -383,6 +395,9 @@ impl Sea {
     /// Surface elevation [m, up] at the points (xs[i] north, ys[i] east) [m] at time t [s]
     /// (eq. 2.55's superposition; at most 20,000 points a call).
     pub fn elevations(&mut self, t: f64, xs: &[f64], ys: &[f64]) -> Result<js_sys::Float64Array, JsError> {
+        if !t.is_finite() {
+            return Err(JsError::new(&format!("elevations: t = {}: the time must be a finite number of seconds", t)));
+        }
         if xs.len() != ys.len() || xs.len() > 20_000 {
             return Err(JsError::new("elevations: xs and ys of equal length, at most 20000 points"));
         }

@@ -2,6 +2,7 @@
 #![cfg(target_arch = "wasm32")]
 
 use aes_web::*;
+use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
 #[wasm_bindgen_test]
@@ -9,15 +10,15 @@ fn presets_are_listed_and_valid() {
     let names = preset_names();
     assert!(names.iter().any(|n| n == "startup"));
     for n in &names {
-        let json = preset_json(n).unwrap();
-        let errs = validate_scenario(&json).unwrap();
+        let json = preset_json(JsValue::from(n)).unwrap();
+        let errs = validate_scenario(JsValue::from(&json)).unwrap();
         assert_eq!(js_sys::Array::from(&errs).length(), 0, "{n}");
     }
 }
 
 #[wasm_bindgen_test]
 fn bad_scenario_names_the_field() {
-    let errs = validate_scenario(r#"{"ship": {"wetted_area_m2": -1}}"#).unwrap();
+    let errs = validate_scenario(JsValue::from(r#"{"ship": {"wetted_area_m2": -1}}"#)).unwrap();
     let arr = js_sys::Array::from(&errs);
     assert_eq!(arr.length(), 1);
     let path = js_sys::Reflect::get(&arr.get(0), &"path".into()).unwrap();
@@ -27,63 +28,66 @@ fn bad_scenario_names_the_field() {
 /// A 60 s start-up in wasm, in chunks, gives the same summary as in one go, and moves the ship.
 #[wasm_bindgen_test]
 fn startup_runs_in_chunks() {
-    let mut sc: serde_json::Value = serde_json::from_str(&preset_json("startup").unwrap()).unwrap();
+    let mut sc: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("startup")).unwrap()).unwrap();
     sc["sim"]["duration_s"] = serde_json::json!(60.0);
     let json = sc.to_string();
-    let mut run = Run::new(&json).unwrap();
+    let mut run = Run::new(JsValue::from(&json)).unwrap();
     let mut progress = 0.0;
     while progress < 1.0 {
         progress = run.advance(5000).unwrap();
     }
     let chunked = run.summary_json();
-    assert_eq!(chunked, run_summary(&json).unwrap());
+    assert_eq!(chunked, run_summary(JsValue::from(&json)).unwrap());
     let s: serde_json::Value = serde_json::from_str(&chunked).unwrap();
     let kn = s["signals"]["ship_speed_kn"]["final"].as_f64().unwrap();
     assert!(kn > 15.0 && kn < 30.0, "{kn}");
     let rel = s["energy_j"]["relative_residual"].as_f64().unwrap();
     // The books close to round-off, as natively (measured -1.5e-13 for this 60 s run).
     assert!(rel.abs() < 1e-9, "{rel}");
-    assert_eq!(run.column("t_s").unwrap().length(), 601);
+    assert_eq!(run.column(JsValue::from("t_s")).unwrap().length(), 601);
 }
 
 /// The stability tool answers in wasm as natively: Table 4.2's stator current at 100 N m.
 #[wasm_bindgen_test]
 fn stability_tool_in_wasm() {
-    let out = ips_analysis("motor", 377.0, 28.5, 45.0, 100.0, false, 0.1, 100.0, 10).unwrap();
+    let out = ips_analysis(JsValue::from("motor"), 377.0, 28.5, 45.0, 100.0, false, 0.1, 100.0, 10).unwrap();
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let i = v["steady_state"]["i_s_mag"].as_f64().unwrap();
     // Within 1e-4 as natively (measured 5.5e-5, core's table_4_2).
     let table_4_2 = aes_core::studies::thesis_values::value("table_4_2.steady_state.i_s_mag_a").unwrap();
     assert!((i - table_4_2).abs() < 1e-4 * table_4_2, "{i}");
     assert_eq!(v["bode"]["magnitude_db"].as_array().unwrap().len(), 10);
-    assert!(ips_analysis("rotor", 0.0, 0.0, 0.0, 0.0, false, 0.1, 1.0, 3).is_err());
+    assert!(ips_analysis(JsValue::from("rotor"), 0.0, 0.0, 0.0, 0.0, false, 0.1, 1.0, 3).is_err());
 }
 
 /// Determinism across platforms: the same scenarios run in wasm give the summaries the native build
 /// computed at build time (web/build.rs), bit for bit (every number printed with full precision).
 #[wasm_bindgen_test]
 fn wasm_matches_native_bit_for_bit() {
-    let mut s: serde_json::Value = serde_json::from_str(&preset_json("startup").unwrap()).unwrap();
+    let mut s: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("startup")).unwrap()).unwrap();
     s["sim"]["duration_s"] = serde_json::json!(60.0);
     assert_eq!(
-        run_summary(&s.to_string()).unwrap(),
+        run_summary(JsValue::from(&s.to_string())).unwrap(),
         include_str!(concat!(env!("OUT_DIR"), "/native_startup_60s.json"))
     );
-    let mut t: serde_json::Value = serde_json::from_str(&preset_json("turn-90").unwrap()).unwrap();
+    let mut t: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("turn-90")).unwrap()).unwrap();
     t["sim"]["duration_s"] = serde_json::json!(40.0);
-    assert_eq!(run_summary(&t.to_string()).unwrap(), include_str!(concat!(env!("OUT_DIR"), "/native_turn90_40s.json")));
+    assert_eq!(
+        run_summary(JsValue::from(&t.to_string())).unwrap(),
+        include_str!(concat!(env!("OUT_DIR"), "/native_turn90_40s.json"))
+    );
     // Waves: 200 components, the RAO table built in wasm, ventilation switching (eq. 2.57 as printed).
-    let mut h: serde_json::Value = serde_json::from_str(&preset_json("head-seas-ss6").unwrap()).unwrap();
+    let mut h: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("head-seas-ss6")).unwrap()).unwrap();
     h["sim"]["duration_s"] = serde_json::json!(10.0);
     h["seakeeping"]["stern_motion"] = serde_json::json!("thesis_eq_2_57");
     assert_eq!(
-        run_summary(&h.to_string()).unwrap(),
+        run_summary(JsValue::from(&h.to_string())).unwrap(),
         include_str!(concat!(env!("OUT_DIR"), "/native_head_seas_10s.json"))
     );
     // The multi-rate hull step (stepping.hull_substeps = 4) too.
     h["sim"]["hull_substeps"] = serde_json::json!(4);
     assert_eq!(
-        run_summary(&h.to_string()).unwrap(),
+        run_summary(JsValue::from(&h.to_string())).unwrap(),
         include_str!(concat!(env!("OUT_DIR"), "/native_head_seas_10s_multirate.json"))
     );
 }
@@ -91,25 +95,31 @@ fn wasm_matches_native_bit_for_bit() {
 /// Monte Carlo in wasm: two ranges merged give the summary of the whole range.
 #[wasm_bindgen_test]
 fn monte_carlo_in_wasm() {
-    let mut s: serde_json::Value = serde_json::from_str(&preset_json("mc-excess-energy").unwrap()).unwrap();
+    let mut s: serde_json::Value =
+        serde_json::from_str(&preset_json(JsValue::from("mc-excess-energy")).unwrap()).unwrap();
     s["monte_carlo"]["trials"] = serde_json::json!(3);
     s["monte_carlo"]["histogram_time_s"] = serde_json::json!(4.0);
     s["monte_carlo"]["periodogram_segment_s"] = serde_json::json!(2.0);
     s["sim"]["duration_s"] = serde_json::json!(6.0);
     let j = s.to_string();
     let bytes = |v: Vec<u8>| js_sys::Uint8Array::from(&v[..]);
-    let whole = mc_summary(vec![bytes(mc_range(&j, 0, 3).unwrap())]).unwrap();
-    let split = mc_summary(vec![bytes(mc_range(&j, 2, 3).unwrap()), bytes(mc_range(&j, 0, 2).unwrap())]).unwrap();
+    let whole = mc_summary(vec![bytes(mc_range(JsValue::from(&j), 0, 3).unwrap())]).unwrap();
+    let split = mc_summary(vec![
+        bytes(mc_range(JsValue::from(&j), 2, 3).unwrap()),
+        bytes(mc_range(JsValue::from(&j), 0, 2).unwrap()),
+    ])
+    .unwrap();
     assert_eq!(whole, split);
     // A table handed over from another worker gives the same numbers as one built here.
-    let values = rao_table_values(&j).unwrap();
-    rao_table_load(&j, &values).unwrap();
-    assert_eq!(mc_summary(vec![bytes(mc_range(&j, 0, 3).unwrap())]).unwrap(), whole);
-    assert!(rao_table_load(&j, &values[1..]).is_err());
+    let values = rao_table_values(JsValue::from(&j)).unwrap();
+    rao_table_load(JsValue::from(&j), &values).unwrap();
+    assert_eq!(mc_summary(vec![bytes(mc_range(JsValue::from(&j), 0, 3).unwrap())]).unwrap(), whole);
+    assert!(rao_table_load(JsValue::from(&j), &values[1..]).is_err());
     let v: serde_json::Value = serde_json::from_str(&whole).unwrap();
     assert_eq!(v["trials"], 3);
-    assert!(mc_range(&j, 2, 9).is_err());
-    let r: serde_json::Value = serde_json::from_str(&rao_json(&j, 20.0, 180.0, vec![0.12, 0.6]).unwrap()).unwrap();
+    assert!(mc_range(JsValue::from(&j), 2, 9).is_err());
+    let r: serde_json::Value =
+        serde_json::from_str(&rao_json(JsValue::from(&j), 20.0, 180.0, vec![0.12, 0.6]).unwrap()).unwrap();
     assert!((r["heave"]["amp"][0].as_f64().unwrap() - 1.0).abs() < 0.03);
 }
 
@@ -119,13 +129,13 @@ fn monte_carlo_in_wasm() {
 #[wasm_bindgen_test]
 fn hull_sheet_in_wasm() {
     let j = r#"{"ship": {"hull": {"name": "wigley"}}}"#;
-    let h: serde_json::Value = serde_json::from_str(&hull_sheet(j).unwrap()).unwrap();
+    let h: serde_json::Value = serde_json::from_str(&hull_sheet(JsValue::from(j)).unwrap()).unwrap();
     let exact = 4.0 / 9.0 * 100.0 * 10.0 * 6.25;
     assert!((h["volume_m3"].as_f64().unwrap() / exact - 1.0).abs() < 0.006, "{}", h["volume_m3"]);
     assert!(hull_names().contains(&"wigley".to_string()));
     let bad = r#"{"ship": {"hull": {"name": "custom", "draft_m": 1, "kg_m": 1, "offsets_csv": "station_index,x_m,z_m,half_breadth_m\n0,0,0,x\n"}}}"#;
-    assert!(hull_sheet(bad).is_err());
-    let errs = js_sys::Array::from(&validate_scenario(bad).unwrap());
+    assert!(hull_sheet(JsValue::from(bad)).is_err());
+    let errs = js_sys::Array::from(&validate_scenario(JsValue::from(bad)).unwrap());
     let e = errs.get(0);
     let msg = js_sys::Reflect::get(&e, &"message".into()).unwrap().as_string().unwrap();
     assert!(msg.contains("line 2"), "{msg}");
@@ -184,28 +194,29 @@ fn message(e: wasm_bindgen::JsError) -> String {
 /// stability worker froze on the first), and nothing non-finite comes back.
 #[wasm_bindgen_test]
 fn extreme_inputs_end_with_named_errors() {
-    let e = ips_analysis("motor", 377.0, 28.5, 45.0, 1e300, false, 0.01, 1000.0, 200).unwrap_err();
+    let e = ips_analysis(JsValue::from("motor"), 377.0, 28.5, 45.0, 1e300, false, 0.01, 1000.0, 200).unwrap_err();
     assert!(message(e).contains("torque command T* = 1e300 N m"));
     for (omega, vfd, load) in [(1e300, 28.5, 45.0), (377.0, f64::NAN, 45.0), (377.0, 28.5, 1e-300)] {
-        assert!(ips_analysis("generator", omega, vfd, load, 100.0, true, 0.01, 1000.0, 200).is_err());
+        assert!(ips_analysis(JsValue::from("generator"), omega, vfd, load, 100.0, true, 0.01, 1000.0, 200).is_err());
     }
-    assert!(ips_analysis("motor", 377.0, 28.5, 45.0, 100.0, false, 0.0, 1000.0, 200).is_err());
-    assert!(ips_analysis("motor", 377.0, 28.5, 45.0, 100.0, false, 0.01, 1000.0, 1_000_000).is_err());
-    let ok = ips_analysis("motor", 377.0, 28.5, 45.0, 10_000.0, true, 1e-6, 1e7, 50).unwrap();
+    assert!(ips_analysis(JsValue::from("motor"), 377.0, 28.5, 45.0, 100.0, false, 0.0, 1000.0, 200).is_err());
+    assert!(ips_analysis(JsValue::from("motor"), 377.0, 28.5, 45.0, 100.0, false, 0.01, 1000.0, 1_000_000).is_err());
+    let ok = ips_analysis(JsValue::from("motor"), 377.0, 28.5, 45.0, 10_000.0, true, 1e-6, 1e7, 50).unwrap();
     assert!(!ok.contains("null"), "{ok}");
     // A run recording 2e6 rows is refused before it starts (it took 2.8 GB).
     let big = r#"{"sim": {"duration_s": 20000, "dt_s": 0.01, "record_interval_s": 0.01}}"#;
-    assert!(message(Run::new(big).err().unwrap()).contains("sim.record_interval_s"));
+    assert!(message(Run::new(JsValue::from(big)).err().unwrap()).contains("sim.record_interval_s"));
     let long = r#"{"sim": {"duration_s": 1000000, "dt_s": 0.001}}"#;
-    assert!(message(Run::new(long).err().unwrap()).contains("sim.duration_s"));
-    let errs =
-        js_sys::Array::from(&validate_scenario(r#"{"ship": {"wetted_area_m2": 7e3, "wetted_area_m2": 8e3}}"#).unwrap());
+    assert!(message(Run::new(JsValue::from(long)).err().unwrap()).contains("sim.duration_s"));
+    let errs = js_sys::Array::from(
+        &validate_scenario(JsValue::from(r#"{"ship": {"wetted_area_m2": 7e3, "wetted_area_m2": 8e3}}"#)).unwrap(),
+    );
     let msg = js_sys::Reflect::get(&errs.get(0), &"message".into()).unwrap().as_string().unwrap();
     assert!(msg.contains("duplicate key ship.wetted_area_m2"), "{msg}");
     // A partial with a reversed range is refused by mcSummary.
-    let mut sc: serde_json::Value = serde_json::from_str(&preset_json("mc-arrival").unwrap()).unwrap();
+    let mut sc: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("mc-arrival")).unwrap()).unwrap();
     sc["sim"]["duration_s"] = serde_json::json!(2.0);
-    let p = mc_range(&sc.to_string(), 0, 1).unwrap();
+    let p = mc_range(JsValue::from(&sc.to_string()), 0, 1).unwrap();
     let mut bad = aes_core::studies::montecarlo::Partial::from_bytes(&p).unwrap();
     bad.ranges = vec![(2, 0)];
     let bad = js_sys::Uint8Array::from(&bad.to_bytes().unwrap()[..]);
@@ -216,22 +227,23 @@ fn extreme_inputs_end_with_named_errors() {
 /// sea picture sums the run's own components; a trial's scenario carries its exact seed.
 #[wasm_bindgen_test]
 fn live_view_exports() {
-    let mut sc: serde_json::Value = serde_json::from_str(&preset_json("head-seas-ss6").unwrap()).unwrap();
+    let mut sc: serde_json::Value =
+        serde_json::from_str(&preset_json(JsValue::from("head-seas-ss6")).unwrap()).unwrap();
     sc["sim"]["duration_s"] = serde_json::json!(6.0);
     let json = sc.to_string();
-    let mut run = Run::new(&json).unwrap();
+    let mut run = Run::new(JsValue::from(&json)).unwrap();
     let mut streamed: Vec<f64> = Vec::new();
     let mut progress = 0.0;
     while progress < 1.0 {
         progress = run.advance(400).unwrap();
-        streamed.extend(run.column_from("h_over_r", streamed.len()).unwrap().to_vec());
+        streamed.extend(run.column_from(JsValue::from("h_over_r"), streamed.len()).unwrap().to_vec());
     }
-    assert_eq!(streamed, run.column("h_over_r").unwrap().to_vec());
+    assert_eq!(streamed, run.column(JsValue::from("h_over_r")).unwrap().to_vec());
     assert_eq!(run.rows(), streamed.len());
 
     let parsed = aes_core::Scenario::from_json(&json).unwrap();
     let comps = aes_core::sim::seaway::wave_components(&parsed);
-    let mut sea = Sea::new(&json).unwrap();
+    let mut sea = Sea::new(JsValue::from(&json)).unwrap();
     assert_eq!(sea.components(), comps.len());
     let (xs, ys) = ([10.0, -62.0], [0.0, 5.0]);
     let got = sea.elevations(3.5, &xs, &ys).unwrap().to_vec();
@@ -240,13 +252,13 @@ fn live_view_exports() {
         // The same terms in the same order (measured: equal to the last bit).
         assert!((got[i] - want).abs() <= 1e-12 * (1.0 + want.abs()), "{} vs {want}", got[i]);
     }
-    let hull: serde_json::Value = serde_json::from_str(&hull_profile(&json).unwrap()).unwrap();
+    let hull: serde_json::Value = serde_json::from_str(&hull_profile(JsValue::from(&json)).unwrap()).unwrap();
     assert!(hull["x_m"].as_array().unwrap().len() > 20);
 
-    let trial: serde_json::Value = serde_json::from_str(&trial_scenario(&json, 2).unwrap()).unwrap();
+    let trial: serde_json::Value = serde_json::from_str(&trial_scenario(JsValue::from(&json), 2).unwrap()).unwrap();
     let seed = sc["sim"]["seed"].as_u64().unwrap();
     assert_eq!(trial["sim"]["seed"].as_u64(), Some(aes_core::studies::stats::trial_seed(seed, 2)));
-    assert!(trial_scenario(&json, 1_000_000).is_err());
+    assert!(trial_scenario(JsValue::from(&json), 1_000_000).is_err());
 }
 
 /// The thesis' numbers reach the page as the file prints them (Table 5.8's "1.00", not 1).
@@ -259,4 +271,48 @@ fn thesis_values_as_printed() {
     assert_eq!((r["printed"].as_str(), r["value"].as_f64(), r["unit"].as_str()), (Some("1.00"), Some(1.0), Some("-")));
     assert_eq!(row("ch_5_4_1.excess_energy_mean_mj")["printed"], "94.1");
     assert_eq!(row("table_5_8.rice.mean_s")["where"], "Table 5.8, analytic row (sec. 5.4.2)");
+}
+
+/// Issue 34 through the wasm exports: an argument of the wrong type is refused by name (it
+/// trapped with "memory access out of bounds"), a non-finite time for the sea is refused, a
+/// loaded RAO table of 1e308 values is refused as a computed one would be, a Monte Carlo study
+/// over its memory budget is refused before it starts, and a binary partial with impossible
+/// numbers is refused by mcSummary as merge refuses it.
+#[wasm_bindgen_test]
+fn boundary_checks_in_wasm() {
+    for v in [JsValue::from(3.0), JsValue::NULL, JsValue::UNDEFINED, js_sys::Object::new().into()] {
+        assert!(message(preset_json(v.clone()).unwrap_err()).contains("expected a string"));
+        assert!(message(run_summary(v.clone()).unwrap_err()).contains("the scenario JSON: expected a string"));
+        assert!(message(Run::new(v.clone()).err().unwrap()).contains("expected a string"));
+        assert!(message(mc_range(v.clone(), 0, 1).unwrap_err()).contains("expected a string"));
+        assert!(message(Sea::new(v).err().unwrap()).contains("expected a string"));
+    }
+    let storm = preset_json(JsValue::from("mc-arrival")).unwrap();
+    let mut sea = Sea::new(JsValue::from(&storm)).unwrap();
+    for t in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        assert!(message(sea.elevations(t, &[0.0], &[0.0]).unwrap_err()).contains("the time must be a finite number"));
+    }
+    let z = sea.elevations(10.0, &[0.0, 5.0], &[0.0, 5.0]).unwrap().to_vec();
+    assert!(z.iter().all(|v| v.is_finite()), "{z:?}");
+    let values = rao_table_values(JsValue::from(&storm)).unwrap();
+    let huge = vec![1e308; values.len()];
+    assert!(message(rao_table_load(JsValue::from(&storm), &huge).unwrap_err()).contains("RAO table values: point 0"));
+    let mut big: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("startup")).unwrap()).unwrap();
+    big["sim"]["duration_s"] = serde_json::json!(1020.0);
+    big["sim"]["record_interval_s"] = serde_json::json!(0.005);
+    big["monte_carlo"]["trials"] = serde_json::json!(10);
+    big["monte_carlo"]["keep_traces"] = serde_json::json!(10);
+    big["monte_carlo"]["envelope_signals"] =
+        serde_json::json!(Run::signal_names().into_iter().take(20).collect::<Vec<_>>());
+    let e = message(mc_range(JsValue::from(&big.to_string()), 0, 1).unwrap_err());
+    assert!(e.contains("this study keeps about") && e.contains("at most 64 MB"), "{e}");
+    let mut s: serde_json::Value = serde_json::from_str(&storm).unwrap();
+    s["monte_carlo"]["trials"] = serde_json::json!(2);
+    s["sim"]["duration_s"] = serde_json::json!(2.0);
+    let j = s.to_string();
+    let good = mc_range(JsValue::from(&j), 0, 2).unwrap();
+    let mut p = aes_core::studies::montecarlo::Partial::from_bytes(&good).unwrap();
+    p.envelopes[0].rows[3].sums[1] = -1;
+    let bad = js_sys::Uint8Array::from(&p.to_bytes().unwrap()[..]);
+    assert!(message(mc_summary(vec![bad]).unwrap_err()).contains("sum of squares"));
 }
