@@ -174,7 +174,8 @@ export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, ons
     ['median', 'table_5_8.rice.median_s', 'table_5_8.monte_carlo.median_s'],
     ['mode', 'table_5_8.rice.mode_s', 'table_5_8.monte_carlo.mode_s']],
   calmWater: ['ch_5_4_1.excess_energy_mean_mj', 'ch_5_4_1.excess_energy_std_mj'],
-  riceNote: 'Rice\'s rate counts up-crossings of a stationary Gaussian response and treats them as rare, independent events, so that arrival times are exponential. That holds for a level many standard deviations away; at this study\'s level crossings are not rare and come in clusters on wave groups, and each trial is cut off, so the Monte Carlo skewness and kurtosis fall short of the exponential\'s 2 and 9 (as in the thesis) while the means stay close.',
+  // The fixed part of the Rice note; montecarlo.js adds what the numbers it compares say.
+  riceNote: 'Rice\'s rate counts up-crossings of a stationary Gaussian response and treats them as rare, independent events, so that arrival times are exponential: that holds for a level many standard deviations away; nearer, crossings come in clusters on wave groups.',
   excessNote: 'Two excess energies: against the same sea with surface losses switched off (the submerged counterpart: what ventilation and emergence alone cost), and against calm water (which adds the added resistance of the waves; this is the thesis\' figure).' };
 
 // Stability tab: presentation only. The operating point's defaults, ranges, labels and units, the
