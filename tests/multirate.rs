@@ -212,12 +212,15 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
             // speed 9.6e-4 / 2.0e-3 kn, energy residual 1.4e-7 / 3.7e-7 from the 1 ms run's (RK4 at 5
             // ms: 0.035 / 0.115 rpm, 1.2e-3 / 3.8e-3 of peak power, 2e-8 / 3e-8 residual). The as-printed
             // run's propeller emerges: a ventilation switch a step later moves the trace after it.
-            assert!(d.rpm_max < tol(0.05, 0.15), "{name}: rpm {}", d.rpm_max);
-            assert!(d.rpm_mean < tol(6e-3, 8e-3), "{name}: rpm mean {}", d.rpm_mean);
+            // Since the added resistance sums both signs' components (sim/seaway.rs) the as-printed
+            // run, whose doubled Doppler shift mixes them, measures rpm max 0.149, mean 9.3e-3, bus
+            // 1.26e-2 pu (before: 0.115, 6.0e-3, 2.7e-3).
+            assert!(d.rpm_max < tol(0.05, 0.2), "{name}: rpm {}", d.rpm_max);
+            assert!(d.rpm_mean < tol(6e-3, 1.2e-2), "{name}: rpm mean {}", d.rpm_mean);
             assert!(d.motor_power_mean_rel < tol(1e-5, 4e-4), "{name}: motor power {}", d.motor_power_mean_rel);
             assert!(d.motor_power_max_of_peak < tol(2e-3, 5e-3), "{name}: {} of peak", d.motor_power_max_of_peak);
             assert!(d.min_h_over_r < tol(3e-4, 3e-3), "{name}: min h/R {}", d.min_h_over_r);
-            assert!(d.bus_pu_max < 5e-3, "{name}: bus {} pu", d.bus_pu_max);
+            assert!(d.bus_pu_max < tol(5e-3, 1.6e-2), "{name}: bus {} pu", d.bus_pu_max);
             assert!(d.speed_kn_max < tol(2e-3, 3e-3), "{name}: ship speed {} kn", d.speed_kn_max);
             let residual = (d.residual_run - d.residual_reference).abs();
             assert!(residual < tol(2e-7, 5e-7), "{name}: residual {residual}");

@@ -92,6 +92,7 @@ export const studyTitle = (name) => (STUDIES[name] && STUDIES[name].title) || na
 // units go on a left and a right axis, and so does a series with `axis: 'right'` (a small angle
 // beside a large one). `sea`: only in waves. `hOverR`: the ventilation band and the levels of
 // pageConstants. `events`: markers where surface losses start. `only`: drawn when it holds.
+// `key`: a line under the plot saying what its numbers mean.
 // Colours: distinct and >= 3:1 against white; a reference (order) is grey and dashed.
 const REF = { color: '#6b6b6b', dash: [6, 4] };
 export const PLOTS = [
@@ -106,7 +107,7 @@ export const PLOTS = [
   { id: 'wave', title: 'Wave at the stern and hub depth', sea: true, series: [{ signal: 'wave_stern_m', color: '#0b5cad' }, { signal: 'hub_depth_m', color: '#1b1b1b', dash: [6, 3] }] },
   { id: 'heave', title: 'Heave', sea: true, series: [{ signal: 'heave_m', label: 'heave (up)', color: '#117a65' }] },
   { id: 'pitch', title: 'Pitch and roll', sea: true, series: [{ signal: 'pitch_deg', label: 'pitch (bow down)', color: '#a04000' }, { signal: 'roll_deg', label: 'roll (starboard down)', color: '#5b2c6f', dash: [6, 3] }] },
-  { id: 'force', title: 'Second-order wave force', sea: true, prefix: 'k', series: [{ signal: 'added_resistance_n', color: '#b03a2e' }, { signal: 'drift_force_n', label: 'drift force (to starboard)', color: '#0b5cad', dash: [6, 3] }] },
+  { id: 'force', title: 'Second-order wave force', sea: true, prefix: 'k', key: 'The slowly varying force of wave groups (Newman\'s approximation of the mean drift force, Salvesen\'s method): it peaks when a group passes, at any time, the start too. Below zero is physics: waves from abaft the beam push the ship on (negative added resistance), as in a turn out of head seas.', series: [{ signal: 'added_resistance_n', color: '#b03a2e' }, { signal: 'drift_force_n', label: 'drift force (to starboard)', color: '#0b5cad', dash: [6, 3] }] },
   { id: 'fuel', title: 'Fuel power, four turbines', prefix: 'M', series: [{ signal: 'fuel_power_w', color: '#6e2c00' }] },
   { id: 'brake', title: 'Brake resistor power', prefix: 'M', series: [{ signal: 'brake_power_w', color: '#b03a2e' }], only: (c) => c.brake_power_w.some((v) => v > 0) },
 ];
@@ -178,7 +179,8 @@ export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, ons
   calmWater: ['ch_5_4_1.excess_energy_mean_mj', 'ch_5_4_1.excess_energy_std_mj'],
   // The studies that are the thesis' own (its numbers are shown beside them only).
   thesisStudies: { table58: ['mc-arrival'], calmWater: ['mc-excess-energy'] },
-  riceNote: 'Rice\'s rate counts up-crossings of a stationary Gaussian response and treats them as rare, independent events, so that arrival times are exponential. That holds for a level many standard deviations away; at this study\'s level crossings are not rare and come in clusters on wave groups, and each trial is cut off, so the Monte Carlo skewness and kurtosis fall short of the exponential\'s 2 and 9 (as in the thesis) while the means stay close.',
+  // The fixed part of the Rice note; montecarlo.js adds what the numbers it compares say.
+  riceNote: 'Rice\'s rate counts up-crossings of a stationary Gaussian response and treats them as rare, independent events, so that arrival times are exponential: that holds for a level many standard deviations away; nearer, crossings come in clusters on wave groups.',
   excessNote: 'Two excess energies: against the same sea with surface losses switched off (the submerged counterpart: what ventilation and emergence alone cost), and against calm water (which adds the added resistance of the waves; this is the thesis\' figure).' };
 
 // Stability tab: presentation only. The operating point's defaults, ranges, labels and units, the

@@ -61,6 +61,22 @@ export class MonteCarlo {
 // mean, std, skewness, kurtosis, median, mode.
 function exponentialMoments(lam) { return [1 / lam, 1 / lam, 2, 9, Math.LN2 / lam, 0]; }
 
+// Rice against the trials in words computed from the numbers compared: the mean of min(T, cap),
+// Rice's counting the trials that start past the level at 0, against the Monte Carlo's within
+// two of its standard errors; the shape of the arrival times against the exponential's.
+export function riceComparison(a, r, trials) {
+  const mc = a.mean_censored, rice = r.mean_censored_with_start_s;
+  if (mc == null || !trials) return MC.riceNote;
+  const se = a.std_censored == null ? NaN : a.std_censored / Math.sqrt(trials);
+  const d = mc - rice, k = Math.abs(d) / se;
+  const means = Number.isFinite(k) && k <= 2
+    ? `The means of min(T, cap) agree: they differ by ${fmt(Math.abs(d), 2)} s, ${fmt(k, 2)} standard errors of the Monte Carlo (${fmt(se, 2)} s).`
+    : `The means of min(T, cap) differ by ${fmt(Math.abs(d), 2)} s, ${Number.isFinite(k) ? `${fmt(k, 2)} standard errors of the Monte Carlo (${fmt(se, 2)} s)` : 'with no standard error (one trial)'}: the Monte Carlo's first surface effect comes ${d < 0 ? 'sooner' : 'later'} than Poisson arrivals at Rice's rate.`;
+  const word = (x, ref) => (x == null ? 'undefined' : x < ref ? `${fmt(x, 2)}, short of the exponential's ${ref}` : `${fmt(x, 2)}, above the exponential's ${ref}`);
+  const shape = a.events > 2 ? ` Skewness ${word(a.skewness, 2)}; kurtosis ${word(a.kurtosis, 9)} (each trial is cut off at ${a.cap_s} s).` : '';
+  return `${MC.riceNote} ${means}${shape}`;
+}
+
 function table(caption, rows, head) {
   const t = el('table');
   t.createCaption().textContent = caption;
@@ -107,9 +123,9 @@ export function showMonteCarlo(box, s, signals, constants, { onReplay = null, on
           const rice = exponentialMoments(r.rate_per_s), mc = [a.mean, a.std, a.skewness, a.kurtosis, a.median, a.mode];
           return MC.table58.map(([name, riceKey, mcKey], k) => [name, fmt(rice[k]), fmt(mc[k]), ...(own('table58') ? [th(riceKey), th(mcKey)] : [])]);
         })(), ['statistic', 'Rice', 'Monte Carlo', ...(own('table58') ? ['thesis: Rice', 'thesis: Monte Carlo'] : [])])),
-      el('p', { className: 'about', textContent: `Rice: the level Z = ${fmt(r.z_m, 3)} m, crossed at ${fmt(r.rate_per_s, 3)} per second (exponential arrivals).` }),
-      el('p', { className: 'about', textContent: `Censored at ${a.cap_s} s alike: Monte Carlo mean of min(T, cap) ${fmt(a.mean_censored)} s, Rice ${fmt(r.mean_censored_s)} s.` }),
-      el('p', { className: 'about', textContent: MC.riceNote }));
+      el('p', { className: 'about', textContent: `Rice: the level Z = ${fmt(r.z_m, 3)} m. The trials count the first surface effect on either shaft: Rice's rate of that event is ${fmt(r.rate_per_s, 3)} per second, the union of the two hubs' up-crossings from their joint statistics (each hub alone ${r.hubs.map((h) => `${h.shaft} ${fmt(h.rate_per_s, 3)}`).join(', ')} per second, correlation ${fmt(r.hub_correlation, 3)}; their sum, an upper bound, ${fmt(r.sum_bound_rate_per_s, 3)}).` }),
+      el('p', { className: 'about', textContent: `Censored at ${a.cap_s} s alike: Monte Carlo mean of min(T, cap) ${fmt(a.mean_censored)} s, Rice ${fmt(r.mean_censored_with_start_s)} s (with the ${fmt(100 * r.start_past_level_probability, 2)} % of trials that start with a hub past the level counted at 0).` }),
+      el('p', { className: 'about', id: 'rice-note', textContent: riceComparison(a, r, s.trials) }));
   }
   if (e) info.append(el('p', { className: 'about', textContent: MC.excessNote }));
   if (onReplay) {

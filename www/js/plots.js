@@ -356,6 +356,8 @@ function runPlot(box, spec, cols, signals, constants, kept, more, markers) {
     opts.scales = { [axes[0].scale]: { range: (u, min, max) => [Math.min(min, lo - 0.2), Math.max(max, 2)] } };
   } else if (spec.events && markers.length) {
     opts.key = [`▼ surface losses start (${markers.length}×)`];
+  } else if (spec.key) {
+    opts.key = [spec.key];
   }
   return box.line(title, { data: x, label: `time [${signals.meta('t_s').unit}]` }, series, axes, opts);
 }

@@ -31,7 +31,7 @@ use crate::numerics::interp::{bracket, bracket_from};
 use crate::scenario::{Scenario, SeaKind};
 use crate::sea::seakeeping::params::{HubPlace, SternMotion};
 use crate::sea::seakeeping::tables::RaoTable;
-use crate::sea::waves::{newman_force, newman_sign, newman_weight, SeaSampling, WaveComponent, G};
+use crate::sea::waves::{newman_sign, newman_weight, SeaSampling, WaveComponent, G};
 use crate::ship::hull::N_SHAFTS;
 use num_complex::Complex64 as C;
 use std::f64::consts::PI;
@@ -204,15 +204,16 @@ pub struct Seaway {
     extra_t: Option<f64>,
     /// Refreshed per component: the transfers times the amplitude (see [`N_TRANSFER`]; the lateral
     /// modes signed for the side the waves come from and turned to starboard-positive axes), real
-    /// and imaginary parts; Newman weights for x, y and the yaw moment with their signs.
+    /// and imaginary parts; Newman weights for x, y and the yaw moment of the components whose
+    /// mean force is positive (`wx`, ...) and of those whose mean force is negative (`wxn`, ...).
     h_re: [Vec<f64>; N_TRANSFER],
     h_im: [Vec<f64>; N_TRANSFER],
     wx: Vec<f64>,
     wy: Vec<f64>,
     wz: Vec<f64>,
-    sign_x: f64,
-    sign_y: f64,
-    sign_z: f64,
+    wxn: Vec<f64>,
+    wyn: Vec<f64>,
+    wzn: Vec<f64>,
     /// The wave's phase at each hub relative to G at the last refresh [rad] and its phasor
     /// (cos, sin), per shaft and component, turned by the small change at the next refresh;
     /// refreshes since the last exact one.
@@ -383,9 +384,9 @@ impl Seaway {
             wx: vec![0.0; np],
             wy: vec![0.0; np],
             wz: vec![0.0; np],
-            sign_x: 1.0,
-            sign_y: 1.0,
-            sign_z: 1.0,
+            wxn: vec![0.0; np],
+            wyn: vec![0.0; np],
+            wzn: vec![0.0; np],
             hub_ph: std::array::from_fn(|_| vec![0.0; np]),
             hub_c: std::array::from_fn(|_| vec![1.0; np]),
             hub_s: std::array::from_fn(|_| vec![0.0; np]),
@@ -570,24 +571,35 @@ impl Seaway {
         for v in self.h_re.iter_mut().chain(self.h_im.iter_mut()).chain([&mut self.wx, &mut self.wy, &mut self.wz]) {
             v[n..].fill(0.0);
         }
-        // Newman: one sign per direction for the whole set (the components' own signs agree for a
-        // sea from one side; where they do not, the weaker side is dropped). The sums in
-        // component order.
-        let (mut sx, mut sy, mut sz) = (0.0, 0.0, 0.0);
+        // Newman's approximation F_ij = sqrt(F_i F_j) holds for pairs of one sign. Along the ship
+        // (added resistance) the components pushing it back and those pushing it on are two sums,
+        // the force their difference (a pair of opposite signs adds nothing to the slowly varying
+        // part): its mean is sum a_i^2 F_i over every component, and a component whose F_i passes
+        // 0 (a wave abeam as the ship turns) leaves its sum continuously. (One sign for the whole
+        // set, the weaker side dropped, flipped the force by up to 110 kN from one sample to the
+        // next when the mean changed sign near beam seas.) Sideways and in yaw one sign per
+        // direction for the whole set, that of the mean, the weaker side dropped (waves from both
+        // sides in a spread sea mix the signs there; not yet split). By lanes (the padding's
+        // weights stay 0: amplitude 0).
+        let (mut sy, mut sz) = (0.0, 0.0);
         for i in 0..n {
             let a2 = self.amplitude[i] * self.amplitude[i];
-            sx += a2 * self.wx[i];
             sy += a2 * self.wy[i];
             sz += a2 * self.wz[i];
         }
-        self.sign_x = newman_sign(sx);
-        self.sign_y = newman_sign(sy);
-        self.sign_z = newman_sign(sz);
-        // By lanes (the padding's weights stay 0: amplitude 0).
-        for (w, sign) in [(&mut self.wx, self.sign_x), (&mut self.wy, self.sign_y), (&mut self.wz, self.sign_z)] {
-            for (w, a) in w.chunks_exact_mut(LANES).zip(self.amplitude.chunks_exact(LANES)) {
+        let (wx, wy, wz) = (&mut self.wx, &mut self.wy, &mut self.wz);
+        let (wxn, wyn, wzn) = (&mut self.wxn, &mut self.wyn, &mut self.wzn);
+        for (w, wn, one_sign) in [(wx, wxn, None), (wy, wyn, Some(newman_sign(sy))), (wz, wzn, Some(newman_sign(sz)))] {
+            for ((w, wn), a) in
+                w.chunks_exact_mut(LANES).zip(wn.chunks_exact_mut(LANES)).zip(self.amplitude.chunks_exact(LANES))
+            {
                 for l in 0..LANES {
-                    w[l] = newman_weight(a[l], w[l], sign);
+                    let (pos, neg) = (newman_weight(a[l], w[l], 1.0), newman_weight(a[l], w[l], -1.0));
+                    (w[l], wn[l]) = match one_sign {
+                        None => (pos, neg),
+                        Some(sign) if sign > 0.0 => (pos, 0.0),
+                        Some(_) => (0.0, neg),
+                    };
                 }
             }
         }
@@ -662,7 +674,7 @@ impl Seaway {
         let mut re = [[0.0; LANES]; N_TRANSFER];
         let mut hub_rate = [[0.0; LANES]; N_SHAFTS];
         let mut hub_accel = [[0.0; LANES]; N_SHAFTS];
-        let mut newman = [[0.0; LANES]; 6];
+        let mut newman = [[0.0; LANES]; 12];
         for c in (0..np).step_by(LANES) {
             let lane = |v: &[f64]| -> [f64; LANES] { std::array::from_fn(|l| v[c + l]) };
             let (ci, si, r) = (lane(cs), lane(sn), lane(rate));
@@ -679,7 +691,7 @@ impl Seaway {
                     hub_accel[s][l] -= r[l] * r[l] * (hr[l] * ci[l] - hi[l] * si[l]);
                 }
             }
-            for (q, w) in [&self.wx, &self.wy, &self.wz].into_iter().enumerate() {
+            for (q, w) in [&self.wx, &self.wy, &self.wz, &self.wxn, &self.wyn, &self.wzn].into_iter().enumerate() {
                 let w = lane(w);
                 for l in 0..LANES {
                     newman[2 * q][l] += w[l] * ci[l];
@@ -690,7 +702,7 @@ impl Seaway {
         const _: () = assert!(LANES == 4, "the lanes' fixed order of addition below is written for four");
         let total = |v: &[f64; LANES]| (v[0] + v[1]) + (v[2] + v[3]);
         let re: [f64; N_TRANSFER] = std::array::from_fn(|j| total(&re[j]));
-        let nm: [f64; 6] = std::array::from_fn(|j| total(&newman[j]));
+        let nm: [f64; 12] = std::array::from_fn(|j| total(&newman[j]));
         let mut s = SeaSample {
             t,
             hub: [self.hub0 + re[PORT_HUB], self.hub0 + re[STBD_HUB]],
@@ -705,9 +717,14 @@ impl Seaway {
             ..SeaSample::default()
         };
         if self.second_order {
-            s.fx = newman_force(self.sign_x, nm[0], nm[1]);
-            s.fy = newman_force(self.sign_y, nm[2], nm[3]);
-            s.mz = newman_force(self.sign_z, nm[4], nm[5]);
+            // Each direction q: the positive set's sums at 2q, 2q + 1, the negative set's at 6 + 2q, 7 + 2q.
+            let force = |q: usize| {
+                (nm[2 * q] * nm[2 * q] + nm[2 * q + 1] * nm[2 * q + 1])
+                    - (nm[6 + 2 * q] * nm[6 + 2 * q] + nm[7 + 2 * q] * nm[7 + 2 * q])
+            };
+            s.fx = force(0);
+            s.fy = force(1);
+            s.mz = force(2);
         }
         self.last = s;
         s
@@ -716,15 +733,14 @@ impl Seaway {
     /// Mean second-order force per the first term of eq. 2.60, sum a_i^2 F_i, ship axes [N]
     /// (for tests: the time average of `fx`, `fy`).
     pub fn mean_force(&self) -> (f64, f64) {
-        let fx: f64 = self.wx.iter().map(|w| w * w).sum::<f64>() * self.sign_x;
-        let fy: f64 = self.wy.iter().map(|w| w * w).sum::<f64>() * self.sign_y;
-        (fx, fy)
+        let sq = |w: &[f64]| w.iter().map(|w| w * w).sum::<f64>();
+        (sq(&self.wx) - sq(&self.wxn), sq(&self.wy) - sq(&self.wyn))
     }
 
     /// Mean second-order yaw moment sum a_i^2 M_i, bow to starboard [N m] (the time average of
     /// `mz`).
     pub fn mean_moment(&self) -> f64 {
-        self.wz.iter().map(|w| w * w).sum::<f64>() * self.sign_z
+        self.wz.iter().map(|w| w * w).sum::<f64>() - self.wzn.iter().map(|w| w * w).sum::<f64>()
     }
 }
 

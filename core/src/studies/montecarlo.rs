@@ -754,14 +754,14 @@ impl Merged {
     }
 }
 
-/// Rice's prediction (eqs. 5.1-5.3) for the study's sea, speed and hub: Z [m], M0 [m^2],
-/// M2 [m^2/s^2], rate [1/s], mean arrival 1/rate [s], and the mean of min(arrival, cap) an
-/// exponential arrival at that rate gives when censored at the run's duration.
+/// Rice's prediction (eqs. 5.1-5.3) for the study's sea, speed and hubs (see [`RiceSummary`]).
 pub fn rice(sc: &Scenario) -> Result<Value, String> {
     serde_json::to_value(rice_summary(sc)?).map_err(|e| e.to_string())
 }
 
-/// Rice's prediction, None unless the sea is random.
+/// Rice's prediction, None unless the sea is random: for each hub its own spectrum's moments and
+/// up-crossing rate, and for the event the trials count, the first surface effect on either
+/// shaft, the rate at which either hub crosses (the union from the two hubs' joint statistics).
 pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
     if sc.sea.kind != SeaKind::Random {
         return Ok(None);
@@ -769,9 +769,7 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
     let k = &sc.seakeeping;
     let hull = sc.ship_hull()?;
     let table = sc.rao_table()?;
-    // The port shaft's hub; in head and following seas the starboard one moves alike, in oblique
-    // seas the first event on either shaft comes no later than this one's.
-    let at = HubPlace { x_aft: hull.prop_x_aft_m, y: hull.shaft_y_m[0] };
+    let hubs = hull.shaft_y_m.map(|y| HubPlace { x_aft: hull.prop_x_aft_m, y });
     let (h, wn) = sc.sea.spectrum();
     let (w_lo, w_hi) = if sc.sea.omega_min_rad_s > 0.0 && sc.sea.omega_max_rad_s > 0.0 {
         (sc.sea.omega_min_rad_s, sc.sea.omega_max_rad_s)
@@ -797,36 +795,72 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
     } else {
         vec![(0.0, 1.0)]
     };
-    let (mut m0, mut m2) = (0.0, 0.0);
+    // Each hub's moments, and the cross terms: cov(y1, y2) = sum Re(H1 H2*) S and
+    // cov(y1', y2) = -sum omega_e Im(H1 H2*) S, omega_e the signed encounter frequency (the rate
+    // of the component's phase in the seaway: omega - k U cos beta).
+    let (mut m0, mut m2, mut c, mut d) = ([0.0; 2], [0.0; 2], 0.0, 0.0);
     for i in 0..nw {
         let w = w_lo + (i as f64 + 0.5) * dw;
         let s = crate::sea::waves::bretschneider(w, h, wn);
         let kw = w * w / crate::sea::waves::G;
-        for &(d, wt) in &dirs {
-            let beta = psi - (mu0 + d);
+        for &(dir, wt) in &dirs {
+            let beta = psi - (mu0 + dir);
             let r = table.interpolate(w, u, beta);
             let (cos_beta, sin_beta) = (libm::cos(beta), libm::sin(beta));
-            let wave = k.stern_motion.hub_wave(kw, at, cos_beta, sin_beta);
-            let hp = k.stern_motion.hub_transfer(wave, r.heave, r.roll, r.pitch, at);
-            let sy = hp.norm_sqr() * s * wt * dw;
-            let we = (w - kw * u * cos_beta).abs();
-            m0 += sy;
-            m2 += sy * we * we;
+            let hp = hubs.map(|at| {
+                let wave = k.stern_motion.hub_wave(kw, at, cos_beta, sin_beta);
+                k.stern_motion.hub_transfer(wave, r.heave, r.roll, r.pitch, at)
+            });
+            let we = w - kw * u * cos_beta;
+            for j in 0..2 {
+                let sy = hp[j].norm_sqr() * s * wt * dw;
+                m0[j] += sy;
+                m2[j] += sy * we * we;
+            }
+            let cross = hp[0] * hp[1].conj();
+            c += cross.re * s * wt * dw;
+            d -= we * cross.im * s * wt * dw;
         }
     }
     let radius = 0.5 * sc.propeller.diameter_m;
     let z = hull.hub_depth_m - k.ventilation_on_h_over_r * radius;
-    let rate = rice_upcrossing_rate(m0, m2, z);
     let cap = sc.sim.duration_s;
+    let censored = |rate: f64| (1.0 - libm::exp(-rate * cap)) / rate;
+    let pair = crate::studies::stats::GaussianPair { m0, m2, c, d };
+    let per_hub: [RiceHub; 2] = std::array::from_fn(|j| {
+        let rate = rice_upcrossing_rate(m0[j], m2[j], z);
+        RiceHub {
+            shaft: ["port", "starboard"][j],
+            y_m: hubs[j].y,
+            m0: m0[j],
+            m2: m2[j],
+            rate_per_s: rate,
+            mean_arrival_s: 1.0 / rate,
+            mean_censored_s: censored(rate),
+        }
+    });
+    // The hub depth drops below the level when its motion y rises above Z: the union of the
+    // two up-crossings (the signs of y and y' flip together, the joint statistics do not).
+    let rate = pair.union_upcrossing_rate(z);
+    let p0 = pair.either_above(z);
+    let sum_bound = per_hub[0].rate_per_s + per_hub[1].rate_per_s;
     Ok(Some(RiceSummary {
         z_m: z,
         threshold_h_over_r: k.ventilation_on_h_over_r,
-        m0,
-        m2,
+        event: "the first surface effect on either shaft (what the trials count)",
+        method: "union of the two hubs' up-crossings from their joint Gaussian statistics (Rice's formula with the \
+                 other hub below the level), Poisson arrivals at that rate; sum_bound_rate_per_s is the upper \
+                 bound by the sum of the two hubs' rates",
         rate_per_s: rate,
         mean_arrival_s: 1.0 / rate,
-        mean_censored_s: (1.0 - libm::exp(-rate * cap)) / rate,
+        mean_censored_s: censored(rate),
         cap_s: cap,
+        sum_bound_rate_per_s: sum_bound,
+        sum_bound_mean_censored_s: censored(sum_bound),
+        hub_correlation: pair.correlation(),
+        start_past_level_probability: p0,
+        mean_censored_with_start_s: (1.0 - p0) * censored(rate),
+        hubs: per_hub,
     }))
 }
 
@@ -916,17 +950,47 @@ pub struct ArrivalTimes {
     pub rate_per_s: Option<f64>,
 }
 
-/// Rice's prediction (eqs. 5.1-5.3).
+/// Rice's prediction (eqs. 5.1-5.3) of the first surface effect on either shaft: the level Z [m]
+/// the hubs' motion must rise above (h/R below `threshold_h_over_r`), the rate [1/s] of the
+/// union of the two hubs' up-crossings, its mean arrival 1/rate [s] and the mean of
+/// min(arrival, cap) an exponential arrival gives censored at the run's duration [s]; the upper
+/// bound by the sum of the two rates; and each hub's own prediction.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RiceSummary {
     pub z_m: f64,
     pub threshold_h_over_r: f64,
+    /// What the rate predicts, and how.
+    pub event: &'static str,
+    pub method: &'static str,
+    pub rate_per_s: f64,
+    pub mean_arrival_s: f64,
+    pub mean_censored_s: f64,
+    pub cap_s: f64,
+    pub sum_bound_rate_per_s: f64,
+    pub sum_bound_mean_censored_s: f64,
+    /// Correlation of the two hubs' depths (1: they move alike).
+    pub hub_correlation: f64,
+    /// Probability that a trial starts with either hub already past the level (its first event
+    /// at t = 0, which Poisson arrivals from t = 0 do not count).
+    pub start_past_level_probability: f64,
+    /// The mean of min(arrival, cap) with those trials' arrivals at 0 and the others' exponential
+    /// at `rate_per_s`: (1 - p0) `mean_censored_s` [s]; what the trials' `mean_censored` estimates.
+    pub mean_censored_with_start_s: f64,
+    pub hubs: [RiceHub; 2],
+}
+
+/// Rice's prediction for one hub alone: its offset to port [m], its depth spectrum's moments
+/// M0 [m^2] and M2 [m^2/s^2] (in the encounter frequency), the up-crossing rate of eq. 5.3 [1/s],
+/// 1/rate and the censored mean [s].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RiceHub {
+    pub shaft: &'static str,
+    pub y_m: f64,
     pub m0: f64,
     pub m2: f64,
     pub rate_per_s: f64,
     pub mean_arrival_s: f64,
     pub mean_censored_s: f64,
-    pub cap_s: f64,
 }
 
 /// The histogram of one signal at one time over trials.

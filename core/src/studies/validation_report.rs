@@ -1112,12 +1112,12 @@ fn table_5_8(size: Size) -> Result<Section, String> {
     let radius = 0.5 * sc.propeller.diameter_m;
     let h0 = sc.ship_hull()?.hub_depth_m;
     let on = sc.seakeeping.ventilation_on_h_over_r;
-    let sigma = rice.m0.sqrt();
+    let sigma = rice.hubs[0].m0.sqrt();
     // Zero-crossing rate of the hub-depth process (eq. 5.3 at Z = 0) [1/s].
-    let nu0 = (rice.m2 / rice.m0).sqrt() / (2.0 * std::f64::consts::PI);
+    let nu0 = (rice.hubs[0].m2 / rice.hubs[0].m0).sqrt() / (2.0 * std::f64::consts::PI);
     // Our spectrum at the thesis' level, and the standard deviation the thesis' pair (Z, rate)
     // needs at our zero-crossing rate (eq. 5.3 solved for M0).
-    let rate_at_thesis_z = crate::studies::stats::rice_upcrossing_rate(rice.m0, rice.m2, thesis_z);
+    let rate_at_thesis_z = crate::studies::stats::rice_upcrossing_rate(rice.hubs[0].m0, rice.hubs[0].m2, thesis_z);
     let sigma_implied = thesis_z / libm::sqrt(2.0 * libm::log(nu0 / thesis_rate));
     // Rice (no trials) for the same study in a long-crested sea and with the consistent sign.
     let variant = |f: &dyn Fn(&mut Scenario)| -> Result<crate::studies::montecarlo::RiceSummary, String> {
@@ -1128,7 +1128,7 @@ fn table_5_8(size: Size) -> Result<Section, String> {
     let long = variant(&|c| c.sea.spreading = 0.0)?;
     let cons = variant(&|c| c.seakeeping.stern_motion = SternMotion::Consistent)?;
     let rate_at = |r: &crate::studies::montecarlo::RiceSummary, z: f64| {
-        crate::studies::stats::rice_upcrossing_rate(r.m0, r.m2, z)
+        crate::studies::stats::rice_upcrossing_rate(r.hubs[0].m0, r.hubs[0].m2, z)
     };
     // The same study with the hub lowered so that the level lies `z` below the calm hub: the
     // RAOs and so M0, M2 do not depend on the hub's height, only Z does.
@@ -1138,7 +1138,7 @@ fn table_5_8(size: Size) -> Result<Section, String> {
         Ok((z + on * radius, mc(&c, size.trials)?))
     };
     // Where our Rice rate is the thesis' 0.044 1/s, and where the level is 2 sigma deep.
-    let z44 = libm::sqrt(2.0 * rice.m0 * libm::log(nu0 / thesis_rate));
+    let z44 = libm::sqrt(2.0 * rice.hubs[0].m0 * libm::log(nu0 / thesis_rate));
     let (h44, s44) = at_level(z44)?;
     let (h2, s2) = at_level(2.0 * sigma)?;
     let (a44, a2) = (&s44.arrival_time_s, &s2.arrival_time_s);
@@ -1173,14 +1173,14 @@ fn table_5_8(size: Size) -> Result<Section, String> {
          than with the consistent sign (sigma {:.2} m, {:.1e} 1/s at {z_text} m). A long-crested sea raises ours \
          ({:.4} 1/s at {z_text} m). The thesis prints neither M0 nor M2 (its RAOs are its own strip theory), so which \
          of its inputs makes the smaller motion is not shown: open",
-        rice.m0,
+        rice.hubs[0].m0,
         rice.z_m,
         rice.rate_per_s,
         1.0 / rate_at_thesis_z,
         rate_at_thesis_z / thesis_rate,
         sigma_implied * sigma_implied,
         100.0 * (1.0 - sigma_implied / sigma),
-        cons.m0.sqrt(),
+        cons.hubs[0].m0.sqrt(),
         rate_at(&cons, thesis_z),
         rate_at(&long, thesis_z),
     );
