@@ -194,6 +194,51 @@ await check('power ratios are named for what they are, headings never read -0, c
   await p.close();
 });
 
+const withEdits = (name, d) => `${base}#v=2&preset=${name}&d=${Buffer.from(JSON.stringify(d)).toString('base64url')}`;
+const waitDone = (p) => p.waitForFunction(() => /^Done/.test(document.getElementById('status').textContent) && !document.getElementById('run').disabled, null, { timeout: 90000 });
+await check('a stalled plant is called stalled: the summary warns and the live drive train draws the set as stalled', async () => {
+  const p = await open(withEdits('acceleration', { controllers: { field: { kp: 5 } } }));
+  await waitDone(p);
+  assert(!(await p.$eval('#warnings-box', (b) => b.hidden)), 'no warnings box beside the results');
+  assert(/stall/i.test(await p.textContent('#warnings')), `warnings: ${await p.textContent('#warnings')}`);
+  await p.waitForFunction(() => window.__liveViews && window.__liveViews.cols, null, { timeout: 20000 });
+  await p.evaluate(() => window.__liveViews.seek(100));
+  await p.waitForTimeout(200);
+  const warn = await p.evaluate(() => window.__liveViews.drawn.train && window.__liveViews.drawn.train.warn);
+  assert(warn && warn.turbine === 'STALLED', `drive train at 100 s: ${JSON.stringify(warn)}`);
+  await p.close();
+});
+await check('a propeller out of the water all run is counted and warned about (h0 = 0.15 m)', async () => {
+  const p = await open(withEdits('head-seas-ss6', { sim: { duration_s: 40 }, ship: { hull: { hub_above_base_m: 6.0 } } }));
+  await waitDone(p);
+  const st = await p.textContent('#status');
+  const n = Number((st.match(/Surface losses started (\d+) time/) || [])[1]);
+  assert(n >= 1, `status: ${st}`);
+  assert(/out of the water/i.test(await p.textContent('#warnings')), `warnings: ${await p.textContent('#warnings')}`);
+  await p.close();
+});
+await check('a signal that does not settle gets no settling time in the comparison', async () => {
+  const p = await open(link('turn-90'));
+  await setField(p, 'sim.duration_s', 120);
+  await pressAndWait(p);
+  await p.click('#keep');
+  await pressAndWait(p);
+  const rows = await p.$$eval('#compare-table tbody tr', (r) => r.map((x) => [x.cells[0].textContent, x.cells[1].textContent, x.cells[2].textContent]));
+  const turbine = rows.find(([l]) => /turbine speed settles/.test(l));
+  assert(!turbine || (turbine[1] === 'no settling time' && turbine[2] === 'no settling time'), `turbine speed, flat at 1 pu: ${JSON.stringify(turbine)}`);
+  await p.close();
+});
+await check("the Monte Carlo's Rice note is computed from the numbers it compares", async () => {
+  const c = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  const p = await open(link('mc-excess-energy'), c);
+  await setField(p, 'monte_carlo.trials', 8);
+  await pressAndWait(p, '#mc-run');
+  const note = await p.textContent('#rice-note');
+  assert(!/the means stay close/.test(note) && /standard error/.test(note), `note: ${note}`);
+  assert(/either shaft/.test(await p.textContent('#plots')), 'the Rice line does not say which event it predicts');
+  await c.close();
+});
+
 // Where things are: Run above the fold at 1366x768, the plots up in presentation mode and on the
 // phone, one main landmark, and axe after a run and after a Monte Carlo study at every size.
 const SIZES = [[1366, 768], [1920, 1080], [390, 844]];
