@@ -2,7 +2,7 @@
 // explanation in the run's own numbers and one thing to try next. Words only: every number shown
 // comes from the run (its summary) and every control's label, unit and range from the registry
 // (paramMeta); `span` narrows a slider inside the declared range, for the lesson's story.
-// A control is a slider (`path`, `step`, optional `span`) or a toggle (`path`, `values` [on, off]
+// A control is a slider (`path`, `step`, optional `span`; `log`: in decades, `step` in decades) or a toggle (`path`, `values` [on, off]
 // with `labels`, and `also`: settings that go with each value). `order` gives the index of a maneuver order (paths commands.N.*).
 // explain({s, markers, values, before}) -> text: s is the run's summary, markers the surface-loss
 // starts, values the controls' values, before the previous run's summary (or null).
@@ -79,12 +79,14 @@ export const LESSONS = [
   {
     name: 'bus', title: 'How the bus voltage is held', preset: 'acceleration', set: {},
     plots: ['bus'], view: 'train', at: 12,
-    controls: [{ path: 'controllers.field.kp', step: 0.05, span: [0.05, 5] }, { path: 'controllers.field.ki', step: 0.5, span: [0, 20] }],
+    // The study's gains are small (1e-4, 5e-4) and the stall comes at 5: sliders in decades.
+    controls: [{ path: 'controllers.field.kp', log: true, step: 0.1, span: [1e-5, 10] }, { path: 'controllers.field.ki', log: true, step: 0.1, span: [1e-5, 10] }],
     question: 'The motors suddenly take full power. If the generators\' field controller reacts more strongly (a larger gain), the bus voltage will...',
     answers: ['dip less and recover sooner', 'dip more', 'not change'],
     explain: ({ s }) => {
       const b = sig(s, 'bus_voltage_pu'), t = sig(s, 'turbine_speed_pu');
-      const warn = (s.warnings || []).length ? ` Warning: ${s.warnings[0]}` : '';
+      const health = (s.warnings || []).find((w) => /stall|bus|overspeed/i.test(w));
+      const warn = health ? ` Warning: ${health}` : '';
       return `pu means "per unit": a fraction of the rated value. The bus dipped to ${f(b.min, 3)} pu and ended at ${f(b.final, 3)} pu; the turbines dipped to ${f(t.min, 3)} pu. `
         + `The field controller raises the generators' field current when the voltage falls; too strong a reaction can overshoot, or ask the turbines for more than they can give.${warn}`;
     },

@@ -116,12 +116,15 @@ export class LessonView {
       return el('div', { className: 'lesson-control' }, el('label', { htmlFor: id, textContent: m.label }), sel);
     }
     const [lo, hi] = this.range(c);
+    // A slider in decades moves log10 of the value; the value is rounded to 3 digits.
+    const to = c.log ? (x) => Math.log10(x) : (x) => x;
+    const from = c.log ? (x) => Number((10 ** x).toPrecision(3)) : (x) => x;
     const out = el('output', { id: `${id}-out`, htmlFor: id, textContent: `${show(v)}${unit}` });
-    const input = el('input', { type: 'range', id, min: String(lo), max: String(hi), step: String(c.step), value: String(v), attrs: { 'aria-valuetext': `${show(v)}${unit}` } });
+    const input = el('input', { type: 'range', id, min: String(to(lo)), max: String(to(hi)), step: String(c.step), value: String(to(v)), attrs: { 'aria-valuetext': `${show(v)}${unit}` } });
     input.dataset.path = p;
     input.title = m.help;
-    input.addEventListener('input', () => { out.textContent = `${show(Number(input.value))}${unit}`; input.setAttribute('aria-valuetext', out.textContent); });
-    input.addEventListener('change', () => { this.current[p] = Number(input.value); this.onChange(p, this.current[p]); });
+    input.addEventListener('input', () => { out.textContent = `${show(from(Number(input.value)))}${unit}`; input.setAttribute('aria-valuetext', out.textContent); });
+    input.addEventListener('change', () => { this.current[p] = from(Number(input.value)); this.onChange(p, this.current[p]); });
     return el('div', { className: 'lesson-control' }, el('label', { htmlFor: id, textContent: `${m.label}${unit ? ` [${unit.trim()}]` : ''}` }), input, out);
   }
 
