@@ -15,7 +15,17 @@ export function checker() {
     if (process.env.E2E_ONLY && !new RegExp(process.env.E2E_ONLY).test(name)) return;
     try { await fn(); counts.passed++; console.log(`ok   ${name}`); } catch (e) { counts.failed++; console.log(`FAIL ${name}: ${e.message}`); }
   };
-  return { check, counts };
+  // The last check (no console errors, no request off the page), then the closing count line and
+  // the exit code.
+  const finish = async (browser, errors) => {
+    await check('no console errors and no request left the page', async () => {
+      assert(errors.length === 0, errors.join('\n'));
+    });
+    await browser.close();
+    console.log(`e2e: ${counts.passed} passed, ${counts.failed} failed`);
+    process.exit(counts.failed ? 1 : 0);
+  };
+  return { check, counts, finish };
 }
 
 export function launch() {
