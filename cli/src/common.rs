@@ -171,3 +171,14 @@ pub fn load(file: &str, sets: &[String]) -> Result<Scenario, String> {
     }
     Ok(sc)
 }
+
+/// Runs the independent parts of a core computation (an RAO table's strips and rows) on rayon's
+/// threads: the same parts as one after another, so the same bits.
+pub struct Threads;
+
+impl aes_core::sea::seakeeping::tables::ForEach for Threads {
+    fn for_each(&self, n: usize, f: &(dyn Fn(usize) + Sync)) {
+        use rayon::prelude::*;
+        (0..n).into_par_iter().for_each(f)
+    }
+}

@@ -55,6 +55,11 @@ enum Cmd {
     Rao(cmd::rao::Args),
     /// A Monte Carlo study of a scenario (thesis ch. 5.4); prints the summary JSON.
     Mc(cmd::mc::Args),
+    /// The operability polar of the scenario's ship: for each speed and wave heading the
+    /// highest sea in which every seakeeping criterion holds (motions, accelerations, slamming,
+    /// deck wetness, propeller ventilation and emergence), the criterion that limits it, and the
+    /// operable share of a wave scatter diagram; JSON on standard output.
+    Operability(cmd::operability::Args),
     /// Merges Monte Carlo shards (`aes-sim mc ... --partial`) into the study's summary. Reads one
     /// shard at a time: memory does not grow with their number.
     Merge(cmd::merge::Args),
@@ -85,6 +90,7 @@ fn real_main() -> Result<(), Failure> {
         Cmd::Section(a) => cmd::section::run(a),
         Cmd::Rao(a) => cmd::rao::run(a),
         Cmd::Mc(a) => cmd::mc::run(a),
+        Cmd::Operability(a) => cmd::operability::run(a),
         Cmd::Merge(a) => cmd::merge::run(a),
         Cmd::Fuel(a) => cmd::fuel::run(a),
         Cmd::Validate(a) => cmd::validate::run(a),

@@ -304,6 +304,56 @@ pub fn rao_table_values(json: JsValue) -> Result<Vec<f64>, JsError> {
     Ok(t.values())
 }
 
+/// The operability polar (`aes-sim operability`) for the speeds `from..to` of `request` (a
+/// `PolarRequest` as JSON): each speed's cells and scatter shares as JSON, so a worker can report
+/// progress speed by speed; `operabilityAssemble` joins them.
+#[wasm_bindgen(js_name = operabilityPart)]
+pub fn operability_part(json: JsValue, request: JsValue, from: u32, to: u32) -> Result<String, JsError> {
+    let (sc, req) = operability_inputs(&json, &request)?;
+    let (spec, scatter) = req.resolve().map_err(|e| JsError::new(&e))?;
+    let setup =
+        aes_core::studies::operability::PolarSetup::new(&sc, spec, scatter.as_ref()).map_err(|e| JsError::new(&e))?;
+    let n = setup.spec.speeds_kn.len();
+    let (a, b) = (from as usize, to as usize);
+    if !(a < b && b <= n) {
+        return Err(JsError::new(&format!("operability: speeds {a}..{b}: need from < to <= {n}")));
+    }
+    let rows: Vec<_> = (a..b).map(|j| setup.speed(j, scatter.as_ref())).collect();
+    serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The polar's JSON from every speed's `operabilityPart` rows, in order (a JSON list of them).
+#[wasm_bindgen(js_name = operabilityAssemble)]
+pub fn operability_assemble(json: JsValue, request: JsValue, rows: JsValue) -> Result<String, JsError> {
+    let (sc, req) = operability_inputs(&json, &request)?;
+    let (spec, scatter) = req.resolve().map_err(|e| JsError::new(&e))?;
+    let setup =
+        aes_core::studies::operability::PolarSetup::new(&sc, spec, scatter.as_ref()).map_err(|e| JsError::new(&e))?;
+    type Rows = Vec<(Vec<aes_core::studies::operability::Cell>, Vec<f64>)>;
+    let rows: Rows = serde_json::from_str(&text(&rows, "the rows JSON")?)
+        .map_err(|e| JsError::new(&format!("operability rows: {e}")))?;
+    if rows.len() != setup.spec.speeds_kn.len() {
+        return Err(JsError::new(&format!(
+            "operability: {} rows for {} speeds",
+            rows.len(),
+            setup.spec.speeds_kn.len()
+        )));
+    }
+    let polar =
+        aes_core::studies::operability::assemble(&sc, &setup, rows, scatter.as_ref()).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&polar).map_err(|e| JsError::new(&e.to_string()))
+}
+
+fn operability_inputs(
+    json: &JsValue,
+    request: &JsValue,
+) -> Result<(Scenario, aes_core::studies::operability::PolarRequest), JsError> {
+    let sc = Scenario::from_json(&text(json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let req = serde_json::from_str(&text(request, "the polar request JSON")?)
+        .map_err(|e| JsError::new(&format!("operability request: {}", aes_core::checks::shorten(&e.to_string()))))?;
+    Ok((sc, req))
+}
+
 /// Puts the table of `raoTableValues` (from another worker) into this worker's cache.
 #[wasm_bindgen(js_name = raoTableLoad)]
 pub fn rao_table_load(json: JsValue, values: &[f64]) -> Result<(), JsError> {

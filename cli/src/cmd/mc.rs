@@ -85,14 +85,14 @@ pub fn run(Args { file, trials, seed, threads, trial_range, partial, sets, quiet
     }
     // The seakeeping tables first (once, shared by every trial): a line on stderr if they
     // take more than a second (a fine grid), so a long silence is explained.
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
     if sc.sea.kind != aes_core::scenario::SeaKind::Calm {
         let note = SlowNote::start("aes-sim mc: building the seakeeping (RAO) tables", quiet);
-        sc.rao_table()?;
+        pool.install(|| sc.rao_table_with(&crate::common::Threads))?;
         note.finish();
     }
     // What the trials share is built once, not per trial.
     let trials = aes_core::studies::montecarlo::Trials::new(&sc);
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
     let t0 = Instant::now();
     let progress = Progress::start(b - a, "aes-sim mc", quiet);
     let result = pool.install(|| {

@@ -7,6 +7,7 @@ pub mod health;
 pub mod ips;
 pub mod mc;
 pub mod merge;
+pub mod operability;
 pub mod params;
 pub mod presets;
 pub mod rao;

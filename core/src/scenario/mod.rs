@@ -26,6 +26,7 @@ pub use crate::plant::motor::{MotorParams, SlipControlParams};
 pub use crate::plant::prime_mover::{GovernorParams, TurbineParams};
 pub use crate::plant::propeller::{PropellerModelKind, PropellerParams};
 pub use crate::scenario::as_printed::AsPrintedParams;
+pub use crate::sea::operability::OperabilityParams;
 pub use crate::sea::seakeeping::params::{SeakeepingParams, SternMotion};
 pub use crate::sea::waves::{SeaKind, SeaParams};
 pub use crate::ship::maneuvering::{AbkowitzCoefficients, HullModelKind, HullParams};
@@ -61,6 +62,9 @@ crate::params! {
         /// What a Monte Carlo study of this scenario collects (`aes-sim mc`, the page's Monte Carlo
         /// tab); a single run ignores it.
         pub monte_carlo: MonteCarloParams = MonteCarloParams::default() => {},
+        /// Where on the ship motions are judged and the seakeeping criteria (`aes-sim
+        /// operability`, the page's Operability tab); a single run ignores it.
+        pub operability: OperabilityParams = OperabilityParams::default() => {},
         /// The thesis' equations as printed where we chose a corrected form (all off by default;
         /// `core/src/scenario/as_printed.rs`).
         pub as_printed: AsPrintedParams = AsPrintedParams::default() => {},
@@ -397,6 +401,15 @@ impl Scenario {
     /// The RAO table of this scenario's hull, grid and strip-theory switches (built once, shared).
     pub fn rao_table(&self) -> Result<std::sync::Arc<crate::sea::seakeeping::tables::RaoTable>, String> {
         crate::sea::rao_cache::rao_table(&self.ship_hull()?, &self.seakeeping.grid, &self.as_printed)
+    }
+
+    /// [`Self::rao_table`] with the build's parts run by `each` (side by side on the command
+    /// line's threads; the same table to the bit).
+    pub fn rao_table_with(
+        &self,
+        each: &dyn crate::sea::seakeeping::tables::ForEach,
+    ) -> Result<std::sync::Arc<crate::sea::seakeeping::tables::RaoTable>, String> {
+        crate::sea::rao_cache::rao_table_with(&self.ship_hull()?, &self.seakeeping.grid, &self.as_printed, each)
     }
 
     /// The bus voltage set point the field control holds [V]: `controllers.field.bus_voltage_ref_v`,

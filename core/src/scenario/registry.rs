@@ -179,12 +179,15 @@ mod tests {
         let mut leaves = Vec::new();
         fn walk(v: &serde_json::Value, p: &str, out: &mut Vec<String>) {
             match v {
-                serde_json::Value::Object(m) if p != "commands.N" || !m.is_empty() => {
+                serde_json::Value::Object(m) if !p.ends_with(".N") || !m.is_empty() => {
                     for (k, x) in m {
                         walk(x, &join(p, k), out)
                     }
                 }
-                serde_json::Value::Array(items) if p == "commands" => walk(&items[0], "commands.N", out),
+                // A list of records (the commands, operability's points and criteria).
+                serde_json::Value::Array(items) if items.first().is_some_and(|x| x.is_object()) => {
+                    walk(&items[0], &format!("{p}.N"), out)
+                }
                 _ => out.push(p.to_string()),
             }
         }
@@ -289,8 +292,10 @@ mod tests {
                 continue;
             }
             let outside = if m.kind == "integer" { hi + 1.0 } else { hi + (hi - lo).abs().max(1.0) };
-            let e = base.with_override(&m.path, &num(outside)).unwrap_err();
-            assert!(e.0.iter().any(|f| f.path == m.path && f.message == m.message()), "{} = {outside}: {e}", m.path);
+            // A list's field at its first item.
+            let path = m.path.replace(".N.", ".0.");
+            let e = base.with_override(&path, &num(outside)).unwrap_err();
+            assert!(e.0.iter().any(|f| f.path == path && f.message == m.message()), "{path} = {outside}: {e}");
             checked += 1;
         }
         assert!(checked > 120, "{checked}");

@@ -2,7 +2,7 @@
 //! (runs in waves, Monte Carlo trials, the fuel study, repeated runs in the browser).
 
 use crate::scenario::as_printed::AsPrintedParams;
-use crate::sea::seakeeping::tables::{RaoTable, SeakeepingGrid};
+use crate::sea::seakeeping::tables::{ForEach, RaoTable, SeakeepingGrid, Serial};
 use crate::ship::hull::ShipHull;
 use std::sync::{Arc, Mutex, OnceLock};
 
@@ -33,6 +33,16 @@ fn keep(k: Key, t: Arc<RaoTable>) {
 /// The RAO table of `hull` on `grid` with the strip-theory switches of `printed` (the others do
 /// not change the table), computed on first use.
 pub fn rao_table(hull: &ShipHull, grid: &SeakeepingGrid, printed: &AsPrintedParams) -> Result<Arc<RaoTable>, String> {
+    rao_table_with(hull, grid, printed, &Serial)
+}
+
+/// [`rao_table`] with the build's parts run by `each` (the command line's threads).
+pub fn rao_table_with(
+    hull: &ShipHull,
+    grid: &SeakeepingGrid,
+    printed: &AsPrintedParams,
+    each: &dyn ForEach,
+) -> Result<Arc<RaoTable>, String> {
     let k = key(hull, grid, printed);
     let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
     if let Ok(c) = cache.lock() {
@@ -41,7 +51,7 @@ pub fn rao_table(hull: &ShipHull, grid: &SeakeepingGrid, printed: &AsPrintedPara
         }
     }
     let ship = hull.strip_ship()?;
-    let t = Arc::new(RaoTable::compute_as(&ship, grid, &k.2)?);
+    let t = Arc::new(RaoTable::compute_with(&ship, grid, &k.2, each)?);
     keep(k, t.clone());
     Ok(t)
 }

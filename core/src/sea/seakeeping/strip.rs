@@ -190,19 +190,17 @@ impl Ship {
     /// Sectional radiation coefficients of every strip on the encounter-frequency grid `omegas`
     /// [rad/s, increasing].
     pub fn radiation_table(&self, omegas: &[f64]) -> RadiationTable {
-        let data = self
-            .strips
-            .iter()
-            .map(|s| {
-                omegas
-                    .iter()
-                    .map(|&w| {
-                        solve(&s.map, &s.contour, w, self.rho, self.g, default_multipoles(w * w / self.g, &s.map))
-                    })
-                    .collect()
-            })
-            .collect();
+        let data = (0..self.strips.len()).map(|i| self.strip_radiation(i, omegas)).collect();
         RadiationTable { omegas: omegas.to_vec(), data }
+    }
+
+    /// Strip `i`'s sectional coefficients on `omegas` (one part of [`Self::radiation_table`]).
+    pub fn strip_radiation(&self, i: usize, omegas: &[f64]) -> Vec<Radiation2d> {
+        let s = &self.strips[i];
+        omegas
+            .iter()
+            .map(|&w| solve(&s.map, &s.contour, w, self.rho, self.g, default_multipoles(w * w / self.g, &s.map)))
+            .collect()
     }
 }
 

@@ -119,6 +119,34 @@ fn lin(a: f64, b: f64, n: usize) -> Vec<f64> {
     (0..n).map(|i| a + (b - a) * i as f64 / (n - 1) as f64).collect()
 }
 
+/// Runs `f(i)` for every i in 0..n, in any order, side by side where it can: core has no
+/// threads ([`Serial`] is a loop), the command line passes one that spreads the parts over its
+/// threads.
+pub trait ForEach: Sync {
+    fn for_each(&self, n: usize, f: &(dyn Fn(usize) + Sync));
+}
+
+/// One part after another.
+pub struct Serial;
+
+impl ForEach for Serial {
+    fn for_each(&self, n: usize, f: &(dyn Fn(usize) + Sync)) {
+        (0..n).for_each(f)
+    }
+}
+
+/// `f(i)` for i in 0..n by `each`, in the order of i.
+fn collect<T: Send>(each: &dyn ForEach, n: usize, f: &(dyn Fn(usize) -> T + Sync)) -> Vec<T> {
+    let slots: Vec<std::sync::Mutex<Option<T>>> = (0..n).map(|_| std::sync::Mutex::new(None)).collect();
+    each.for_each(n, &|i| {
+        let v = f(i);
+        if let Ok(mut s) = slots[i].lock() {
+            *s = Some(v);
+        }
+    });
+    slots.into_iter().filter_map(|s| s.into_inner().ok().flatten()).collect()
+}
+
 /// Interpolated response at one (omega0, U, beta).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Rao {
@@ -164,6 +192,18 @@ impl RaoTable {
 
     /// `compute` with the strip-theory switches of `printed` (Appendix A, eq. 2.47).
     pub fn compute_as(ship: &Ship, grid: &SeakeepingGrid, printed: &AsPrintedParams) -> Result<RaoTable, String> {
+        Self::compute_with(ship, grid, printed, &Serial)
+    }
+
+    /// `compute_as` with its independent parts (each strip's sectional coefficients, then each
+    /// wave frequency's row of the grid) run by `each`, side by side where it can: the same
+    /// arithmetic part by part, so the same bits as one after another.
+    pub fn compute_with(
+        ship: &Ship,
+        grid: &SeakeepingGrid,
+        printed: &AsPrintedParams,
+        each: &dyn ForEach,
+    ) -> Result<RaoTable, String> {
         grid.validate()?;
         let points = grid.n_omega * grid.n_speed * grid.n_heading;
         let work = points as f64 * ship.strips.len() as f64;
@@ -173,8 +213,21 @@ impl RaoTable {
                 ship.strips.len()
             ));
         }
-        let rad = ship.radiation_table(&default_omega_grid());
-        let t = Self::from_radiation_as(ship, &rad, grid, printed);
+        let omegas_e = default_omega_grid();
+        let strips = collect(each, ship.strips.len(), &|i| ship.strip_radiation(i, &omegas_e));
+        let rad = RadiationTable { omegas: omegas_e, data: strips };
+        let (omegas, speeds, headings) = (grid.omegas(), grid.speeds(), grid.headings());
+        let rows = collect(each, omegas.len(), &|i| {
+            let mut row = Vec::with_capacity(speeds.len() * headings.len());
+            for &u in &speeds {
+                for &b in &headings {
+                    row.push(response_as(ship, &rad, omegas[i], u, b, grid.roll_wave_amplitude_m, printed));
+                }
+            }
+            row
+        });
+        let data = rows.into_iter().flatten().collect();
+        let t = RaoTable { grid: *grid, omegas, speeds, heading_cs: cos_sin(&headings), headings, data };
         t.check().map_err(|e| format!("the RAO table of this hull: {e}"))?;
         Ok(t)
     }

@@ -1,0 +1,97 @@
+//! `aes-sim operability`: the operability polar of a scenario's ship (speed x heading x sea),
+//! with the limiting criterion of every cell and the operable share of a wave scatter diagram.
+
+use crate::common::{emit_json, load, read_bounded, shorten, Failure, Threads};
+use aes_core::studies::operability::scatter::{Scatter, MAX_SCATTER_BYTES};
+use aes_core::studies::operability::{assemble, table_2_4, PolarSetup, PolarSpec, SeaSpec};
+
+// The command line of `aes-sim operability`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Scenario (file, `-` or `preset:NAME`): its hull, loading, hub depth, spreading
+    /// (sea.spreading), hub-depth formula and `operability` section (points, criteria).
+    #[arg(default_value = "preset:startup")]
+    file: String,
+    /// Ship speeds [kn], comma separated (default 0 to 30 in 3 kn steps).
+    #[arg(long, value_delimiter = ',')]
+    speeds: Vec<f64>,
+    /// Wave headings relative to the ship [deg], comma separated: 180 head seas, 90 waves from
+    /// starboard, 0 following (default 0 to 345 in 15 deg steps).
+    #[arg(long, value_delimiter = ',')]
+    headings: Vec<f64>,
+    /// Sea states of Table 2.4 (2 to 6), comma separated (default all five).
+    #[arg(long = "sea-states", value_delimiter = ',')]
+    sea_states: Vec<u32>,
+    /// Seas of one's own instead, as H_1/3:T_p pairs [m:s], comma separated (e.g. 2:8,4:10,6:12).
+    #[arg(long, value_delimiter = ',', conflicts_with = "sea_states")]
+    seas: Vec<String>,
+    /// Wave scatter diagram CSV (the layout of core/data/iacs_rec34_north_atlantic.csv), or
+    /// `none`; default: the IACS Rec. 34 North Atlantic.
+    #[arg(long)]
+    scatter: Option<String>,
+    /// Worker threads (default: all cores). The numbers do not depend on it.
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Override one parameter (repeatable).
+    #[arg(long = "set", value_name = "PATH=VALUE")]
+    sets: Vec<String>,
+}
+
+/// `--seas` pairs H:Tp.
+fn own_seas(pairs: &[String]) -> Result<Vec<SeaSpec>, String> {
+    pairs
+        .iter()
+        .map(|p| {
+            let bad = || format!("--seas '{}': expected H_1/3:T_p in m:s, e.g. 4:10", shorten(p));
+            let (h, t) = p.split_once(':').ok_or_else(bad)?;
+            let h: f64 = h.trim().parse().map_err(|_| bad())?;
+            let t: f64 = t.trim().parse().map_err(|_| bad())?;
+            if !(t.is_finite() && t > 0.0) {
+                return Err(format!("--seas '{}': T_p must be a positive number of seconds", shorten(p)));
+            }
+            Ok(SeaSpec::new(format!("H {h} m, Tp {t} s"), h, 2.0 * std::f64::consts::PI / t))
+        })
+        .collect()
+}
+
+pub fn run(Args { file, speeds, headings, sea_states, seas, scatter, threads, sets }: Args) -> Result<(), Failure> {
+    let sc = load(&file, &sets)?;
+    sc.validate().map_err(|e| format!("{}: {e}", shorten(&file)))?;
+    let mut spec = PolarSpec::default();
+    if !speeds.is_empty() {
+        spec.speeds_kn = speeds;
+    }
+    if !headings.is_empty() {
+        spec.headings_deg = headings;
+    }
+    if !sea_states.is_empty() {
+        spec.seas = table_2_4(&sea_states).map_err(|e| format!("--sea-states: {e}"))?;
+    }
+    if !seas.is_empty() {
+        spec.seas = own_seas(&seas)?;
+        spec.seas.sort_by(|a, b| a.h_sig_m.total_cmp(&b.h_sig_m));
+    }
+    let scatter = match scatter.as_deref() {
+        None => Some(Scatter::north_atlantic()),
+        Some("none") => None,
+        Some(path) => {
+            let text = read_bounded(path, MAX_SCATTER_BYTES as u64, "a scatter diagram")?;
+            Some(Scatter::parse(&text, path).map_err(|e| format!("--scatter {}: {e}", shorten(path)))?)
+        }
+    };
+    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
+    let threads = threads.unwrap_or(cores).clamp(1, cores);
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
+    let polar = pool.install(|| -> Result<_, String> {
+        use rayon::prelude::*;
+        // The RAO table's parts side by side, then one speed per task.
+        sc.rao_table_with(&Threads)?;
+        let setup = PolarSetup::new(&sc, spec, scatter.as_ref())?;
+        let rows: Vec<_> =
+            (0..setup.spec.speeds_kn.len()).into_par_iter().map(|j| setup.speed(j, scatter.as_ref())).collect();
+        assemble(&sc, &setup, rows, scatter.as_ref())
+    })?;
+    aes_core::checks::check_finite(&polar)?;
+    emit_json(&polar)?;
+    Ok(())
+}
