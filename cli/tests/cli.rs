@@ -451,3 +451,57 @@ fn merge_names_the_missing_trials() {
     assert!(err.contains("8 of the study's 12 trials merged; missing 4..8"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `aes-sim operability`: the polar of the requested speeds, headings and seas, the same numbers
+/// on one thread as on all (speeds spread over threads), every cell's values per sea and
+/// criterion, the scatter diagram's shares; a criterion changed with --set moves the limit; bad
+/// lists, seas and scatter files are refused by name.
+#[test]
+fn operability_polar() {
+    let args =
+        ["operability", "preset:startup", "--speeds", "0,12,24", "--headings", "0,90,180,270", "--sea-states", "4,5,6"];
+    let (ok, out, err) = aes_sim(&[&args[..], &["--threads", "1"]].concat());
+    assert!(ok, "{err}");
+    let (ok, out2, _) = aes_sim(&args);
+    assert!(ok);
+    assert_eq!(out, out2, "threads change the polar");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let cells = v["cells"].as_array().unwrap();
+    assert_eq!(cells.len(), 12);
+    let criteria = v["criteria"].as_array().unwrap().len();
+    assert!(criteria >= 8 && v["criteria"][0]["source"].as_str().unwrap().contains("NORDFORSK"));
+    for c in cells {
+        assert_eq!(c["values"].as_array().unwrap().len(), 3);
+        assert_eq!(c["values"][0].as_array().unwrap().len(), criteria);
+        assert!(c["limiting_hs_m"].as_f64().is_some_and(|h| h > 0.0), "{c}");
+    }
+    let shares = &v["scatter"]["per_speed"];
+    assert!((0..3).all(|j| shares[j].as_f64().is_some_and(|s| (0.0..=1.0).contains(&s))));
+    // Beam seas at 0 kn are limited by the bridge's lateral acceleration (0.1 g); at twice the
+    // limit the cell's limit rises.
+    let beam = &cells[1];
+    assert_eq!(
+        v["criteria"][beam["limiting_criterion"].as_u64().unwrap() as usize]["quantity"],
+        "lateral_acceleration_rms_g"
+    );
+    let (ok, out3, err) = aes_sim(&[&args[..], &["--set", "operability.criteria.4.limit=0.2"]].concat());
+    assert!(ok, "{err}");
+    let w: serde_json::Value = serde_json::from_str(&out3).unwrap();
+    assert!(w["cells"][1]["limiting_hs_m"].as_f64().unwrap() > beam["limiting_hs_m"].as_f64().unwrap());
+    for (extra, want) in [
+        (vec!["--speeds", "50"], "speeds: 50 kn is outside 0 to 35 kn"),
+        (vec!["--sea-states", "9"], "--sea-states: sea state 9: Table 2.4 has sea states 2 to 6"),
+        (vec!["--seas", "4:x"], "--seas '4:x': expected H_1/3:T_p in m:s"),
+        (vec!["--scatter", "/nonexistent/scatter.csv"], "scatter"),
+        (vec!["--set", "operability.criteria.0.point=mast"], "operability.criteria.0.point = \"mast\""),
+    ] {
+        let (ok, _, err) = aes_sim(
+            &["operability", "preset:startup", "--speeds", "10", "--headings", "180"]
+                .iter()
+                .copied()
+                .chain(extra)
+                .collect::<Vec<_>>(),
+        );
+        assert!(!ok && err.contains(want), "{want}: {err}");
+    }
+}

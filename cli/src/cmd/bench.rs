@@ -1,6 +1,6 @@
 //! `aes-sim bench`: realtime factor of a preset, or the time to build the RAO tables.
 
-use crate::common::{emit_json, load, read_bounded, shorten, Failure};
+use crate::common::{emit_json, load, read_bounded, shorten, Failure, Threads};
 use aes_core::sea::seakeeping::strip::{default_omega_grid, Ship};
 use aes_core::sea::seakeeping::tables::{RaoTable, SeakeepingGrid};
 use aes_core::Simulation;
@@ -87,11 +87,46 @@ fn seakeeping(repeat: u32, hull: Option<String>, sets: Vec<String>) -> Result<()
             best_other = (best_other.0.min(t.0), best_other.1.min(t.1));
         }
     }
+    // Issue 31: the same table built part by part on all threads (the command line's way), and
+    // the default operability polar on it, side by side with the one-thread build above.
+    let printed = aes_core::scenario::AsPrintedParams::default();
+    let (mut parallel, mut polar) = (f64::INFINITY, f64::INFINITY);
+    let mut same_bits = true;
+    let serial = RaoTable::compute_as(&five, &grid, &printed)?.values();
+    let sc = aes_core::Scenario::default();
+    sc.rao_table_with(&Threads)?;
+    let scatter = aes_core::studies::operability::scatter::Scatter::north_atlantic();
+    for _ in 0..repeat.max(1) {
+        let t0 = Instant::now();
+        let t = RaoTable::compute_with(&five, &grid, &printed, &Threads)?;
+        parallel = parallel.min(t0.elapsed().as_secs_f64());
+        same_bits &= t.values() == serial;
+        let t0 = Instant::now();
+        let setup = aes_core::studies::operability::PolarSetup::new(
+            &sc,
+            aes_core::studies::operability::PolarSpec::default(),
+            Some(&scatter),
+        )?;
+        let rows: Vec<_> = {
+            use rayon::prelude::*;
+            (0..setup.spec.speeds_kn.len()).into_par_iter().map(|j| setup.speed(j, Some(&scatter))).collect()
+        };
+        std::hint::black_box(aes_core::studies::operability::assemble(&sc, &setup, rows, Some(&scatter))?);
+        polar = polar.min(t0.elapsed().as_secs_f64());
+    }
+    let one_thread = best.0 + best.1;
     let mut out = serde_json::json!({
         "workload": format!("DTMB 5415: sectional coefficients of {} strips at 48 encounter frequencies, then RAOs and drift on the 40 x 6 x 13 grid", five.strips.len()),
         "sections_s": best.0,
         "rao_grid_s": best.1,
-        "total_s": best.0 + best.1,
+        "total_s": one_thread,
+        "threads": rayon::current_num_threads(),
+        "table_on_all_threads_s": parallel,
+        "table_speed_up": one_thread / parallel,
+        "table_same_bits": same_bits,
+        "operability_polar": "the default polar (11 speeds x 24 headings x sea states 2-6, and the IACS North Atlantic scatter diagram) on the built table, all threads",
+        "operability_polar_s": polar,
+        "polar_over_one_table_build": polar / one_thread,
     });
     if let Some(o) = &other {
         out["hull"] = serde_json::json!({

@@ -190,7 +190,7 @@ crate::params! {
         },
         pub spreading_step_deg: f64 = 5.0 => {
             label: "Spreading quadrature step", unit: "deg", range: 1.0..=45.0,
-            source: "our choice: cos^2 spreading summed over 35 directions",
+            source: "our choice: the spreading summed over 36 directions",
             help: "Step of the sum over wave directions about the mean heading.",
         },
     }

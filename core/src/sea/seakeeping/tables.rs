@@ -704,6 +704,24 @@ mod tests {
         }
     }
 
+    /// Issue 31: a table built part by part in another order (as threads finish them) is the
+    /// one-after-another table to the bit.
+    #[test]
+    fn parts_in_any_order_give_the_same_table() {
+        struct Reversed;
+        impl ForEach for Reversed {
+            fn for_each(&self, n: usize, f: &(dyn Fn(usize) + Sync)) {
+                (0..n).rev().for_each(f)
+            }
+        }
+        let ship = Ship::dtmb5415();
+        let grid = SeakeepingGrid { n_omega: 7, n_speed: 3, n_heading: 5, ..Default::default() };
+        let printed = AsPrintedParams::default();
+        let a = RaoTable::compute_as(&ship, &grid, &printed).unwrap().values();
+        let b = RaoTable::compute_with(&ship, &grid, &printed, &Reversed).unwrap().values();
+        assert!(a.iter().zip(&b).all(|(x, y)| x.to_bits() == y.to_bits()) && a.len() == b.len());
+    }
+
     #[test]
     fn bad_grid_names_the_field() {
         let g = SeakeepingGrid { n_omega: 0, ..Default::default() };
