@@ -144,6 +144,8 @@ run_tests() {
   node tests/e2e/consistency.mjs "http://127.0.0.1:$port/" "$shots" 2>&1 | tee -a "$log"
   say "browser test: the lessons (issue 30)"
   node tests/e2e/lessons.mjs "http://127.0.0.1:$port/" "$shots" target/release/aes-sim 2>&1 | tee -a "$log"
+  say "browser test: the operability polar (issue 31)"
+  node tests/e2e/operability.mjs "http://127.0.0.1:$port/" "$shots" target/release/aes-sim 2>&1 | tee -a "$log"
   kill "$server" 2>/dev/null || true
   trap - EXIT
   # One closing line for the whole suite (pipefail has already stopped us on any failure).

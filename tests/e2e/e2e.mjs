@@ -607,8 +607,11 @@ await check('the tabs follow the ARIA pattern: arrow keys move between them', as
   assert((await p.getAttribute('#tab-design', 'aria-selected')) === 'true', 'ArrowRight did not select the design tab');
   assert(await p.evaluate(() => document.activeElement.id === 'tab-design'), 'focus did not follow');
   await p.keyboard.press('End');
-  assert((await p.getAttribute('#tab-ips', 'aria-selected')) === 'true', 'End did not select the stability tab');
+  assert((await p.getAttribute('#tab-operability', 'aria-selected')) === 'true', 'End did not select the last tab (operability)');
   // "Skip to the results" goes to the shown tab's results.
+  assert((await p.getAttribute('a.skip', 'href')) === '#op-results', 'the skip link does not lead to the operability results');
+  await p.keyboard.press('ArrowLeft');
+  assert((await p.getAttribute('#tab-ips', 'aria-selected')) === 'true', 'ArrowLeft did not select the stability tab');
   assert((await p.getAttribute('a.skip', 'href')) === '#ips-plots', 'the skip link does not lead to the stability results');
   await p.keyboard.press('Home');
   assert((await p.getAttribute('a.skip', 'href')) === '#results', 'the skip link did not come back');

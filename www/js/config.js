@@ -238,3 +238,24 @@ export const HULL = {
   minDrawPx: 150,
   colors: { hull: '#1f3a5f', fill: 'rgba(93, 109, 126, 0.18)', water: '#0b5cad', waterFill: 'rgba(46, 134, 193, 0.12)', prop: '#b03a2e', rudder: '#a04000', axis: '#4a4a4a', grid: '#d5d8dc', text: '#1b1b1b' },
 };
+
+// The operability tab (issue 31): the grid the page asks the polar for (the command line's
+// defaults: `aes-sim operability` with no options gives the same cells), speeds above the scenario's
+// RAO table (seakeeping.grid.speed_max_kn) left out; the polar's seas, criteria, scatter diagram
+// and every number come from the wasm (operabilityPart, operabilityAssemble). At most this many
+// workers; the colour scale's steps [m] and colours (dark: limited in low seas; light: in high seas,
+// monotonic in lightness so the scale reads in grey too); the colour of cells that pass every
+// listed sea, drawn hatched as well.
+export const OPERABILITY = {
+  speedsKn: Array.from({ length: 11 }, (_, i) => 3 * i),
+  headingsDeg: Array.from({ length: 24 }, (_, i) => 15 * i),
+  seaStates: [2, 3, 4, 5, 6],
+  maxWorkers: 4,
+  // The colour bins: the smallest step that covers the limits that occur in at most maxBins colours.
+  steps: [0.05, 0.1, 0.25, 0.5, 1, 2], maxBins: 10,
+  ramp: ['#67001f', '#b2182b', '#d6604d', '#f4a582', '#fddbc7', '#fff7bc'],
+  beyond: { fill: '#d9f0d3', hatch: '#1b7837' },
+  edge: 'rgba(0, 0, 0, 0.28)',
+  headingTicksDeg: 30, // degrees marked around the polar
+  kept: 6, // polars kept for Back and Forward
+};

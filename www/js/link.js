@@ -1,5 +1,5 @@
 // Share links and the address bar: #v=2&preset=NAME&d=BASE64URL(JSON of what differs from the
-// preset), optionally &mode=mc (the study's Monte Carlo view rather than one run), &tab=design|ips
+// preset), optionally &mode=mc (the study's Monte Carlo view rather than one run), &tab=design|ips|operability
 // (the tab shown), &design=BASE64URL(JSON of the design tab's tuning) and &at=SECONDS&speed=X
 // (where the live views stand and how fast they play: a link opens the run there). Reading a link
 // refuses, with a reason a person can act on, anything too long, too deep, damaged, from a newer
@@ -63,7 +63,7 @@ export function b64urlDecode(s) {
 }
 
 export const MODES = ['run', 'mc'];
-export const TABS = ['sim', 'design', 'ips'];
+export const TABS = ['sim', 'design', 'ips', 'operability'];
 
 // The hash of a link to `scenario`, edited from preset `name` (whose scenario is `preset`);
 // view: {at, speed} of the live views, or null; mode: 'run' or 'mc'; tab: one of TABS; design:

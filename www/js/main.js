@@ -1,17 +1,18 @@
 // The page: wires the study picker and form, the worker, the plots, kept runs, share links and the
-// address bar, exports, presentation mode and the stability tab.
+// address bar, exports, presentation mode, the stability tab and the operability tab.
 import { DESIGN, DEFAULT_PRESET, SUMMARY_ROWS, STUDIES, DEFAULT_PLOTS, KEY_FIGURES, HULL, studyTitle } from './config.js';
 import { $, el, row, download, fmt } from './dom.js';
 import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
 import { setPhase, isBusy, setResult, getResult, progress, status, notice, etaText, setFormValid } from './state.js';
 import { linkHash, readLink, diff } from './link.js';
-import { ScenarioForm, setPath, leafPaths } from './form.js';
+import { ScenarioForm, setPath, deletePath, leafPaths } from './form.js';
 import { Signals, withPrefix } from './units.js';
 import { setRegistry } from './registry.js';
 import { PlotBox, drawRun, drawSeaExtras, presentPlots } from './plots.js';
 import { MonteCarlo, showMonteCarlo } from './montecarlo.js';
 import { StabilityTab } from './stability.js';
 import { DesignTab } from './design.js';
+import { OperabilityTab } from './operability.js';
 import { LiveViews } from './live.js';
 import { HullPanel, HullPicker, num } from './hull.js';
 import { LessonView, readLessonHash, controlPath } from './lessons/view.js';
@@ -67,6 +68,11 @@ const design = new DesignTab(() => client, new PlotBox($('design-plots')), () =>
   compareWith({ set });
 });
 design.onChange = () => { if (form) follow(false); };
+// The operability tab judges the form's study as it stands; a cell opens the simulator there.
+const operability = new OperabilityTab({
+  inputs: () => (form && form.scenario ? { study: form.name, title: studyTitle(form.name), scenario: form.current(), invalid: form.invalid.size > 0 } : null),
+  onOpenCell: openCell,
+});
 
 function startWorker() {
   setPhase('loading');
@@ -123,6 +129,7 @@ function clearResults() {
 // After any change of the inputs: results of other values of this study stay, marked stale with a
 // Run at hand; results of another study go (Back brings them back).
 function showStale() {
+  operability.sync();
   const box = $('stale');
   const r = shown && drawn.get(shown);
   if (r && r.study !== form.name) { clearResults(); return; }
@@ -224,7 +231,7 @@ async function onReady(m) {
   design.configure(m.params);
   thesis = m.thesis || [];
   stability.setMeta(m.ips);
-  form = new ScenarioForm(m.presets, m.params, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: setFormValid, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); } });
+  form = new ScenarioForm(m.presets, m.params, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: (v) => { setFormValid(v); operability.sync(); }, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); operability.sync(); } });
   lessons = new LessonView(m.params, {
     onChange: (path, v, also = {}) => {
       setPath(form.scenario, path, v);
@@ -275,6 +282,7 @@ async function onReady(m) {
     setPhase('idle');
     if (linked.edited.length) status(`This link changed ${linked.edited.length} value(s) of the study (marked in the form).`);
     if (linked.mode === 'mc') { await runMonteCarlo(); return; }
+    if (linked.tab === 'operability') { operability.compute(); return; }
     await run({ focus: false });
     if (linked.view) live.place(linked.view);
     return;
@@ -293,6 +301,8 @@ async function onReady(m) {
   follow(false);
   setPhase('idle');
   status(restored ? 'Your last edits are back.' : 'Ready. Choose a study and press Run.');
+  // A link to the operability tab computes its polar (as a link to a run runs it).
+  if (linked && !linked.refused && linked.tab === 'operability') operability.compute();
 }
 
 // After an accepted edit: the scenario is checked at once (errors at the field, Run waits), and
@@ -581,6 +591,25 @@ async function compareWith(c) {
   await run();
 }
 
+// A cell of the operability polar: the simulator at its speed (the first order's), sea and wave
+// heading, through the form (the address, the "(changed)" marks and the stored edits follow), then
+// the Simulator tab (a step in the history: Back returns to the polar). Returns why it cannot.
+function openCell({ speed_kn, set, words }) {
+  if (!form) return 'The simulator is still loading.';
+  if (isBusy()) return 'A run is in progress on the Simulator tab: wait for it or cancel it first.';
+  const sc = form.scenario;
+  if (!Array.isArray(sc.commands) || !sc.commands.length) sc.commands = [{ t_s: 0 }];
+  sc.commands[0].speed_kn = speed_kn;
+  for (const [path, v] of Object.entries(set)) { if (v === undefined) deletePath(sc, path); else setPath(sc, path, v); }
+  form.fill();
+  form.save();
+  selectTab('tab-sim');
+  onEdit(false);
+  status(`From the operability polar: ${words}. Press Run.`);
+  $('run').focus();
+  return null;
+}
+
 function showCompareButtons() {
   const study = STUDIES[form.name] || {};
   $('compare-with').replaceChildren(...(study.compare || []).map((c) => {
@@ -598,8 +627,8 @@ function cancel() {
 }
 
 // Tabs (ARIA pattern): click, or arrow keys / Home / End on the tab list.
-const TABS = [['tab-sim', 'panel-sim'], ['tab-design', 'panel-design'], ['tab-ips', 'panel-ips']];
-const SKIP_TARGETS = { 'tab-sim': '#results', 'tab-ips': '#ips-plots', 'tab-design': '#design-plots' };
+const TABS = [['tab-sim', 'panel-sim'], ['tab-design', 'panel-design'], ['tab-ips', 'panel-ips'], ['tab-operability', 'panel-operability']];
+const SKIP_TARGETS = { 'tab-sim': '#results', 'tab-ips': '#ips-plots', 'tab-design': '#design-plots', 'tab-operability': '#op-results' };
 const currentTab = () => (TABS.find(([t]) => $(t).getAttribute('aria-selected') === 'true') || TABS[0])[0].slice(4);
 // push: a tab the user picked is a step in the history (Back returns to the tab before).
 function selectTab(id, focus = false, push = true) {
@@ -615,6 +644,7 @@ function selectTab(id, focus = false, push = true) {
   document.querySelector('a.skip').setAttribute('href', SKIP_TARGETS[id]);
   if (id === 'tab-ips') stability.update();
   if (id === 'tab-design') design.update();
+  if (id === 'tab-operability') { operability.sync(); operability.draw(); }
   if (changed && push && form) follow(true);
 }
 for (const [tab] of TABS) $(tab).addEventListener('click', () => selectTab(tab));

@@ -32,6 +32,13 @@ export const REQUEST = {
   // -> done {result} (the JSON of `aes-sim ips bode`)
   ips: 'ips',
   design: 'design', // {scenario} -> done {result} (LQG/LTR design and analysis, ch. 3.1)
+  // The operability polar, a few speeds at a time (the page spreads the speeds over its workers):
+  // {scenario, request, from, to} -> done {rows}: the rows of speeds from..to (operabilityPart);
+  // request: the polar request as JSON text ({speeds_kn, headings_deg, sea_states, ...}).
+  operability: 'operability',
+  // {scenario, request, rows} -> done {polar}: every speed's row, in order, joined into the polar
+  // (operabilityAssemble: the JSON of `aes-sim operability`).
+  operabilityAssemble: 'operability-assemble',
 };
 
 export function messageOf(e) {

@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, operabilityPart, operabilityAssemble } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -102,6 +102,10 @@ const handlers = {
   [REQUEST.rao]: (m) => ({ result: JSON.parse(raoJson(checked(m.scenario), m.speed_kn, m.heading_deg, new Float64Array(m.omegas))) }),
 
   [REQUEST.hullSheet]: (m) => ({ sheet: JSON.parse(hullSheet(checked(m.scenario))) }),
+
+  // The RAO table is built by the first request of a worker and kept in its cache for the others.
+  [REQUEST.operability]: (m) => ({ rows: JSON.parse(operabilityPart(checked(m.scenario), m.request, m.from, m.to)) }),
+  [REQUEST.operabilityAssemble]: (m) => ({ polar: JSON.parse(operabilityAssemble(checked(m.scenario), m.request, JSON.stringify(m.rows))) }),
 
   [REQUEST.design]: (m) => ({ result: JSON.parse(designLqgLtr(checked(m.scenario))) }),
   [REQUEST.ips]: (m) => {
