@@ -60,6 +60,11 @@ enum Cmd {
     /// deck wetness, propeller ventilation and emergence), the criterion that limits it, and the
     /// operable share of a wave scatter diagram; JSON on standard output.
     Operability(cmd::operability::Args),
+    /// How often, and how bad: the consequences of a rare propeller surface event (ventilation
+    /// onset, emergence, or a level of h/R on one shaft) by conditioned simulation: every
+    /// trial's random sea is made to bring the event at a chosen time; the event's rate per hour
+    /// and each consequence's quantiles and rates past thresholds, with 95 % intervals; JSON.
+    Rare(cmd::rare::Args),
     /// Merges Monte Carlo shards (`aes-sim mc ... --partial`) into the study's summary. Reads one
     /// shard at a time: memory does not grow with their number.
     Merge(cmd::merge::Args),
@@ -91,6 +96,7 @@ fn real_main() -> Result<(), Failure> {
         Cmd::Rao(a) => cmd::rao::run(a),
         Cmd::Mc(a) => cmd::mc::run(a),
         Cmd::Operability(a) => cmd::operability::run(a),
+        Cmd::Rare(a) => cmd::rare::run(a),
         Cmd::Merge(a) => cmd::merge::run(a),
         Cmd::Fuel(a) => cmd::fuel::run(a),
         Cmd::Validate(a) => cmd::validate::run(a),

@@ -344,6 +344,55 @@ pub fn operability_assemble(json: JsValue, request: JsValue, rows: JsValue) -> R
     serde_json::to_string(&polar).map_err(|e| JsError::new(&e.to_string()))
 }
 
+/// The scenario every trial of a rare-event study runs (`rare_event` set, the ship's place at
+/// the event from a run in waves; `aes-sim rare`'s `replay_sets`), as JSON: the page runs it
+/// with `rare_event.shape = "most_likely"` to show the most likely wave group, or with a trial's
+/// seed to replay that trial.
+#[wasm_bindgen(js_name = rareScenario)]
+pub fn rare_scenario(json: JsValue) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let t = aes_core::studies::rare::trial_scenario(&sc).map_err(|e| JsError::new(&e))?;
+    Ok(t.to_json())
+}
+
+/// Trials `a..b` of the rare-event study of a scenario from `rareScenario` (`aes-sim rare`'s
+/// trials, one after another), as the JSON of a shard.
+#[wasm_bindgen(js_name = rareRange)]
+pub fn rare_range(json: JsValue, a: u32, b: u32) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let p = aes_core::studies::rare::run_range(&sc, a as u64, b as u64).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The summary (`aes-sim rare`'s JSON) of shards from `rareRange` (a JSON list of them) with
+/// `thresholds` (a JSON object: consequence name -> list of thresholds).
+#[wasm_bindgen(js_name = rareSummary)]
+pub fn rare_summary(json: JsValue, shards: JsValue, thresholds: JsValue) -> Result<String, JsError> {
+    use aes_core::studies::rare::{RarePartial, CONSEQUENCES};
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let shards: Vec<RarePartial> = serde_json::from_str(&text(&shards, "the shards JSON")?)
+        .map_err(|e| JsError::new(&format!("rare-event shards: {}", aes_core::checks::shorten(&e.to_string()))))?;
+    let asked: std::collections::BTreeMap<String, Vec<f64>> =
+        serde_json::from_str(&text(&thresholds, "the thresholds JSON")?)
+            .map_err(|e| JsError::new(&format!("thresholds: {}", aes_core::checks::shorten(&e.to_string()))))?;
+    let mut th: [Vec<f64>; 5] = Default::default();
+    for (name, v) in asked {
+        let k = CONSEQUENCES.iter().position(|c| c.name == name).ok_or_else(|| {
+            JsError::new(&format!("thresholds: no consequence named {}", aes_core::checks::shorten(&name)))
+        })?;
+        if v.iter().any(|x| !x.is_finite()) || v.len() > 20 {
+            return Err(JsError::new("thresholds: at most 20 finite numbers per consequence"));
+        }
+        th[k] = v;
+    }
+    let mut all = RarePartial::default();
+    for p in shards {
+        all.merge(p).map_err(|e| JsError::new(&e))?;
+    }
+    let s = aes_core::studies::rare::summary(&sc, &all, &th).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&s).map_err(|e| JsError::new(&e.to_string()))
+}
+
 fn operability_inputs(
     json: &JsValue,
     request: &JsValue,

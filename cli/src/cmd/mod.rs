@@ -11,6 +11,7 @@ pub mod operability;
 pub mod params;
 pub mod presets;
 pub mod rao;
+pub mod rare;
 pub mod run;
 pub mod section;
 pub mod signals;

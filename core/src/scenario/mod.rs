@@ -26,6 +26,7 @@ pub use crate::plant::motor::{MotorParams, SlipControlParams};
 pub use crate::plant::prime_mover::{GovernorParams, TurbineParams};
 pub use crate::plant::propeller::{PropellerModelKind, PropellerParams};
 pub use crate::scenario::as_printed::AsPrintedParams;
+pub use crate::sea::conditioning::RareEventParams;
 pub use crate::sea::operability::OperabilityParams;
 pub use crate::sea::seakeeping::params::{SeakeepingParams, SternMotion};
 pub use crate::sea::waves::{SeaKind, SeaParams};
@@ -65,6 +66,9 @@ crate::params! {
         /// Where on the ship motions are judged and the seakeeping criteria (`aes-sim
         /// operability`, the page's Operability tab); a single run ignores it.
         pub operability: OperabilityParams = OperabilityParams::default() => {},
+        /// A sea conditioned on a propeller surface event, and the rare-event study's window
+        /// (`aes-sim rare`); off unless `rare_event.level_h_over_r` is set.
+        pub rare_event: RareEventParams = RareEventParams::default() => {},
         /// The thesis' equations as printed where we chose a corrected form (all off by default;
         /// `core/src/scenario/as_printed.rs`).
         pub as_printed: AsPrintedParams = AsPrintedParams::default() => {},

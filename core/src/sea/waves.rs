@@ -280,6 +280,13 @@ crate::params! {
             label: "Highest wave frequency", unit: "rad/s", range: 0.06..=6.0, empty: "4 times the modal frequency",
             help: "Upper bound of the sampled spectrum.",
         },
+        /// Each amplitude sqrt(2 S d omega) times a Rayleigh factor: the sum of the components is
+        /// then a Gaussian process for any number of them (the sea a conditioned sea is made
+        /// from, `rare_event`; always on there).
+        pub gaussian: bool = false => {
+            label: "Gaussian sea (random amplitudes)", source: "our choice: off, the thesis' fixed amplitudes (ch. 2.5.4)",
+            help: "Random Rayleigh amplitudes instead of sqrt(2 S dw): a Gaussian sea for any number of components.",
+        },
         pub spreading: f64 = 2.0 => {
             label: "Directional spreading", unit: "-", range: 0.0..=100.0, source: "our choice: cos² spreading, usual for wind seas",
             help: "Exponent h of cos^h about the mean direction; 0: long-crested.",

@@ -2,6 +2,7 @@
 //! divergence detection. `Simulation` can be advanced in chunks (the browser reports progress
 //! and honours cancel between chunks); `run` does it in one go.
 
+pub mod conditioned;
 pub mod health;
 pub mod linearize;
 pub mod lqg;

@@ -27,6 +27,7 @@
 //! runs still add in the same order; the RAO table's values at each component's frequency are
 //! looked up per grid point (speed, heading) the first time a refresh needs them.
 
+use super::conditioned::{self, Conditioned};
 use crate::numerics::interp::{bracket, bracket_from};
 use crate::scenario::{Scenario, SeaKind};
 use crate::sea::seakeeping::params::{HubPlace, SternMotion};
@@ -38,21 +39,32 @@ use std::f64::consts::PI;
 
 /// The wave components of a scenario's sea (eqs. 2.55, 2.58: the seeded sample of the spectrum,
 /// or the one regular wave); none in calm water. The seaway and the page's wave picture share it.
+/// A sea that cannot be made (a conditioned sea on a hull without one) gives none here;
+/// [`sea_of`] says why.
 pub fn wave_components(sc: &Scenario) -> Vec<WaveComponent> {
+    sea_of(sc).map(|(c, _)| c).unwrap_or_default()
+}
+
+/// The wave components of a scenario's sea, with what conditioning them gave
+/// (`rare_event`, `sim::conditioned`): the seaway's sea.
+pub fn sea_of(sc: &Scenario) -> Result<(Vec<WaveComponent>, Option<Conditioned>), String> {
     let sea = &sc.sea;
     if sea.kind == SeaKind::Calm {
-        return Vec::new();
+        return Ok((Vec::new(), None));
     }
     // Direction of travel: opposite to where the waves come from.
     let mu = (sea.from_deg + 180.0).to_radians();
     match sea.kind {
-        SeaKind::Regular => vec![WaveComponent {
-            amplitude: sea.amplitude_m,
-            omega: sea.omega_rad_s,
-            k: sea.omega_rad_s * sea.omega_rad_s / G,
-            direction: mu,
-            phase: 0.0,
-        }],
+        SeaKind::Regular => Ok((
+            vec![WaveComponent {
+                amplitude: sea.amplitude_m,
+                omega: sea.omega_rad_s,
+                k: sea.omega_rad_s * sea.omega_rad_s / G,
+                direction: mu,
+                phase: 0.0,
+            }],
+            None,
+        )),
         _ => {
             let (h, wn) = sea.spectrum();
             let mut s = SeaSampling::new(h, wn, mu);
@@ -62,7 +74,17 @@ pub fn wave_components(sc: &Scenario) -> Vec<WaveComponent> {
                 s.omega_max = sea.omega_max_rad_s;
             }
             s.spreading = sea.spreading;
-            s.sample(sc.sim.seed)
+            let mut comps = s.sample(sc.sim.seed);
+            if !(sea.gaussian || sc.rare_event.active()) {
+                return Ok((comps, None));
+            }
+            let nominal: Vec<f64> = comps.iter().map(|c| c.amplitude).collect();
+            conditioned::make_gaussian(&mut comps, sc.sim.seed);
+            if !sc.rare_event.active() {
+                return Ok((comps, None));
+            }
+            let c = conditioned::condition(sc, &comps, &nominal)?;
+            Ok((c.components.clone(), Some(c)))
         }
     }
 }
@@ -329,7 +351,7 @@ impl Seaway {
         if sc.sea.kind == SeaKind::Calm {
             return Ok(None);
         }
-        let waves = wave_components(sc);
+        let (waves, _) = sea_of(sc)?;
         let k = &sc.seakeeping;
         let hull = sc.ship_hull()?;
         let table = sc.rao_table()?;

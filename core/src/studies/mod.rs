@@ -7,6 +7,7 @@ pub mod fuel;
 pub mod ips;
 pub mod montecarlo;
 pub mod operability;
+pub mod rare;
 pub mod regression;
 pub mod stats;
 pub mod thesis_values;

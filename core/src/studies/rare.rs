@@ -1,0 +1,458 @@
+//! How often, and how bad (issue 32): the consequences of rare propeller surface events by
+//! conditioned simulation.
+//!
+//! Brute-force Monte Carlo waits for an event; at the thesis' hub depth (h0 = 6 m, SS6, 25 kn) it
+//! waits days. Here every trial makes one: its sea is a Gaussian random sea conditioned on the
+//! chosen hub falling through the chosen h/R at `rare_event.time_s` (`sim::conditioned`:
+//! Slepian's model, exact for the linear seaway), and the full nonlinear model (surface losses
+//! with their hysteresis, motors, controllers, buses, turbines) runs through it. Of the methods
+//! for rare events in ship dynamics (importance sampling, splitting, the split-time method,
+//! conditioned episodes), conditioning fits here because the trigger is linear in the waves: no
+//! weights to tune, no level-by-level restarts, and every trial costs one short run whatever the
+//! event's rarity; the nonlinearity is all downstream of the event, where the model runs
+//! unchanged.
+//!
+//! Trial j's sea is seed s_j's (frequencies and directions of the scenario's sampler, Gaussian
+//! amplitudes) conditioned on one of its crossings; seeds' spectra differ a little, so seed s_j's
+//! crossing rate nu_j (its own Rice rate) is trial j's weight. The rate of events is
+//! E[nu] (estimated by the mean of nu_j, with its 95 % interval), the rate of events whose
+//! consequence exceeds a threshold E[nu 1{c > threshold}] (the mean of nu_j 1_j, with its
+//! interval), and the distribution of a consequence given the event is weighted by nu_j.
+//! Rice's rate from the continuous spectrum stands beside them.
+
+use crate::scenario::Scenario;
+use crate::signals::Signal;
+use crate::sim::RunResult;
+use crate::studies::stats::trial_seed;
+use serde::{Deserialize, Serialize};
+
+/// Runs to the event that correct the ship's place in a trial's own sea before the trial.
+pub const CORRECTIONS: usize = 1;
+
+/// Most trials of one rare-event study (each is a run of `time_s + window_s`).
+pub const MAX_TRIALS: u64 = 100_000;
+
+/// A consequence of the event: its name (with its unit), label, and whether larger is worse.
+pub struct Consequence {
+    pub name: &'static str,
+    pub label: &'static str,
+    pub larger_is_worse: bool,
+}
+
+/// The consequences measured from the event to `window_s` after it.
+pub const CONSEQUENCES: [Consequence; 5] = [
+    Consequence {
+        name: "min_bus_voltage_pu",
+        label: "lowest bus voltage (mean of the two buses)",
+        larger_is_worse: false,
+    },
+    Consequence {
+        name: "peak_turbine_speed_pu",
+        label: "highest gas turbine speed (mean of the four)",
+        larger_is_worse: true,
+    },
+    Consequence {
+        name: "shaft_speed_swing_rpm",
+        label: "the event's shaft: highest minus lowest speed",
+        larger_is_worse: true,
+    },
+    Consequence {
+        name: "motor_power_drop_mw",
+        label: "motor power (both motors) at the event minus its lowest after",
+        larger_is_worse: true,
+    },
+    Consequence { name: "brake_energy_mj", label: "energy burnt in the brake resistors", larger_is_worse: true },
+];
+
+/// The consequences in `trace` of an event of shaft `shaft` at time `t` [s], over `[t, t + window]`,
+/// and h/R there: the one measure of a conditioned trial and of an event counted in a long run.
+pub fn consequences_at(r: &RunResult, shaft: usize, t: f64, window: f64) -> Option<([f64; 5], f64)> {
+    let tr = &r.trace;
+    let ts = tr.get(Signal::TS);
+    let i0 = ts.partition_point(|&x| x < t - 1e-9);
+    let i1 = ts.partition_point(|&x| x <= t + window + 1e-9);
+    if i0 >= ts.len() || i1 <= i0 + 1 || ts[i1 - 1] < t + window - 1e-6 {
+        return None;
+    }
+    let col = |s: Signal| &tr.get(s)[i0..i1];
+    let min = |x: &[f64]| x.iter().copied().fold(f64::INFINITY, f64::min);
+    let max = |x: &[f64]| x.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let rpm = col([Signal::PropRpm1, Signal::PropRpm2][shaft]);
+    let pm = col(Signal::PMotorW);
+    let dt = if ts.len() > 1 { ts[1] - ts[0] } else { 0.0 };
+    let brake: f64 = col(Signal::BrakePowerW).iter().sum::<f64>() * dt;
+    let h_r = tr.get([Signal::HOverR, Signal::HOverRStbd][shaft])[i0];
+    Some((
+        [
+            min(col(Signal::BusVoltagePu)),
+            max(col(Signal::TurbineSpeedPu)),
+            max(rpm) - min(rpm),
+            (pm[0] - min(pm)) / 1e6,
+            brake / 1e6,
+        ],
+        h_r,
+    ))
+}
+
+/// One conditioned trial.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct TrialRecord {
+    pub trial: u64,
+    /// The sea's seed: `aes-sim run` with this `sim.seed` and the study's scenario replays it.
+    pub seed: u64,
+    /// This sea's crossing rate of the level [1/s] (the trial's weight).
+    pub crossing_rate_per_s: f64,
+    /// h/R of the hub at the event's time as the run recorded it (the level, up to the ship's
+    /// small departure from its ordered track).
+    pub h_over_r_at_event: f64,
+    /// The ship's place and speed the sea was conditioned on (`rare_event.ship_x_m`,
+    /// `ship_speed_kn` of its replay).
+    pub ship_x_m: f64,
+    pub ship_speed_kn: f64,
+    /// The consequences in the order of [`CONSEQUENCES`].
+    pub values: [f64; 5],
+}
+
+/// Trials of a study (a shard's, or merged), in trial order.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct RarePartial {
+    pub trials: Vec<TrialRecord>,
+}
+
+impl RarePartial {
+    /// Merges another shard's trials (none may repeat).
+    pub fn merge(&mut self, other: RarePartial) -> Result<(), String> {
+        self.trials.extend(other.trials);
+        self.trials.sort_by_key(|t| t.trial);
+        if let Some(w) = self.trials.windows(2).find(|w| w[0].trial == w[1].trial) {
+            return Err(format!("trial {} is in two shards", w[0].trial));
+        }
+        Ok(())
+    }
+}
+
+/// Checks a study before it runs: the conditioning is on, the sea random, the trials in range.
+pub fn check_study(sc: &Scenario, trials: u64) -> Result<(), String> {
+    if sc.sea.kind != crate::scenario::SeaKind::Random {
+        return Err(format!("sea.kind must be \"random\" for a rare-event study (got {:?})", sc.sea.kind));
+    }
+    if !sc.rare_event.active() {
+        return Err(
+            "rare_event.level_h_over_r: set the h/R the hub falls through (e.g. 1.1 for ventilation, 1 for emergence)"
+                .into(),
+        );
+    }
+    if !(1..=MAX_TRIALS).contains(&trials) {
+        return Err(format!("trials = {trials}: must be from 1 to {MAX_TRIALS}"));
+    }
+    let need = sc.rare_event.time_s + sc.rare_event.window_s;
+    if sc.sim.duration_s + 1e-9 < need {
+        return Err(format!(
+            "sim.duration_s = {}: a trial runs to rare_event.time_s + window_s = {need} s",
+            crate::checks::num(sc.sim.duration_s)
+        ));
+    }
+    Ok(())
+}
+
+/// The study's scenario as each trial runs it: the run ends with the window, and unless the
+/// scenario says where the ship is at the event (`rare_event.ship_x_m`, `ship_speed_kn`), they
+/// are taken from a run of the scenario to the event in its unconditioned (Gaussian) sea of
+/// `sim.seed`: the ship slows in waves, and the sea is conditioned where the ship is.
+pub fn trial_scenario(sc: &Scenario) -> Result<Scenario, String> {
+    let mut s = sc.clone();
+    let ev = &sc.rare_event;
+    s.sim.duration_s = ev.time_s + ev.window_s;
+    if ev.ship_x_m == 0.0 || ev.ship_speed_kn == 0.0 {
+        let mut pilot = s.clone();
+        pilot.rare_event.level_h_over_r = 0.0;
+        pilot.sea.gaussian = true;
+        pilot.sim.duration_s = ev.time_s.max(pilot.sim.record_interval_s);
+        let r = crate::sim::run(&pilot).map_err(|e| format!("the run to the event's place: {e}"))?;
+        let ts = r.trace.get(Signal::TS);
+        let i = ts.partition_point(|&t| t < ev.time_s - 1e-9).min(ts.len() - 1);
+        if ev.ship_x_m == 0.0 {
+            s.rare_event.ship_x_m = r.trace.get(Signal::XM)[i].max(1e-3);
+        }
+        if ev.ship_speed_kn == 0.0 {
+            s.rare_event.ship_speed_kn = r.trace.get(Signal::ShipSpeedKn)[i].max(0.01);
+        }
+    }
+    Ok(s)
+}
+
+/// Trials `a..b` (run one after another; the command line spreads them over threads).
+pub struct Trials {
+    /// The scenario each trial runs ([`trial_scenario`]): replay trial i with `aes-sim run` of
+    /// it with `sim.seed` = the trial's seed.
+    pub sc: Scenario,
+}
+
+impl Trials {
+    pub fn new(sc: &Scenario) -> Result<Trials, String> {
+        let s = trial_scenario(sc)?;
+        Ok(Trials { sc: s })
+    }
+
+    /// Trial `i`: the sea of seed `trial_seed(sim.seed, i)` conditioned on the event.
+    pub fn run(&self, i: u64) -> Result<TrialRecord, String> {
+        let seed = trial_seed(self.sc.sim.seed, i);
+        let fail = |e: String| format!("trial {i} (sea seed {seed}): {e}");
+        let mut s = self.sc.clone();
+        s.sim.seed = seed;
+        let ev = &self.sc.rare_event;
+        // The ship's place and speed at the event in this sea: the study's estimate, corrected
+        // by runs to the event in the sea conditioned on them (each pass moves them less).
+        for _ in 0..CORRECTIONS {
+            let mut to_event = s.clone();
+            to_event.sim.duration_s = ev.time_s;
+            let r = crate::sim::run(&to_event).map_err(|e| fail(e.to_string()))?;
+            let last = r.trace.get(Signal::TS).len() - 1;
+            s.rare_event.ship_x_m = r.trace.get(Signal::XM)[last].max(1e-3);
+            s.rare_event.ship_speed_kn = r.trace.get(Signal::ShipSpeedKn)[last].max(0.01);
+        }
+        let (_, cond) = crate::sim::seaway::sea_of(&s).map_err(fail)?;
+        let cond = cond.ok_or_else(|| fail("the sea is not conditioned".into()))?;
+        let r = crate::sim::run(&s).map_err(|e| fail(e.to_string()))?;
+        let (values, h_r) = consequences_at(&r, ev.shaft.index(), ev.time_s, ev.window_s)
+            .ok_or_else(|| fail("the run ended before the window".into()))?;
+        Ok(TrialRecord {
+            trial: i,
+            seed,
+            crossing_rate_per_s: cond.crossing_rate_per_s,
+            h_over_r_at_event: h_r,
+            ship_x_m: s.rare_event.ship_x_m,
+            ship_speed_kn: s.rare_event.ship_speed_kn,
+            values,
+        })
+    }
+}
+
+/// Runs trials `a..b` one after another.
+pub fn run_range(sc: &Scenario, a: u64, b: u64) -> Result<RarePartial, String> {
+    check_study(sc, b.max(1))?;
+    let t = Trials::new(sc)?;
+    Ok(RarePartial { trials: (a..b).map(|i| t.run(i)).collect::<Result<_, _>>()? })
+}
+
+/// A rate per hour with its 95 % interval.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Rate {
+    pub per_hour: f64,
+    pub low_per_hour: f64,
+    pub high_per_hour: f64,
+    /// Once every so many hours (1 / per_hour; null when the rate is 0).
+    pub once_every_hours: Option<f64>,
+}
+
+impl Rate {
+    /// The mean of `x` [1/s] with the normal 95 % interval of its standard error; with no
+    /// non-zero sample, [0, the mean rate times 3 / n] (the rule of three).
+    fn of(x: &[f64], scale_if_none: f64) -> Rate {
+        let n = x.len() as f64;
+        let mean = x.iter().sum::<f64>() / n;
+        let var = x.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / (n - 1.0).max(1.0);
+        let se = (var / n).sqrt();
+        let (lo, hi) = if x.iter().any(|&v| v > 0.0) {
+            ((mean - 1.96 * se).max(0.0), mean + 1.96 * se)
+        } else {
+            (0.0, scale_if_none * 3.0 / n)
+        };
+        let h = 3600.0;
+        Rate {
+            per_hour: mean * h,
+            low_per_hour: lo * h,
+            high_per_hour: hi * h,
+            once_every_hours: (mean > 0.0).then(|| 1.0 / (mean * h)),
+        }
+    }
+}
+
+/// One consequence's distribution given the event, and its rates beyond the thresholds asked.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ConsequenceSummary {
+    pub name: &'static str,
+    pub label: &'static str,
+    /// Weighted quantiles given the event: 5, 50, 95, 99 %.
+    pub q05: f64,
+    pub q50: f64,
+    pub q95: f64,
+    pub q99: f64,
+    pub min: f64,
+    pub max: f64,
+    /// Beyond each threshold (past it in the worse direction): the rate of such events.
+    pub beyond: Vec<Beyond>,
+    /// The trials' values in trial order (for histograms).
+    pub values: Vec<f64>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Beyond {
+    pub threshold: f64,
+    pub trials: usize,
+    pub rate: Rate,
+}
+
+/// The JSON of `aes-sim rare`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RareSummary {
+    pub scenario: String,
+    pub event: String,
+    pub shaft: &'static str,
+    pub level_h_over_r: f64,
+    pub hub_depth_m: f64,
+    pub speed_kn: f64,
+    pub wave_heading_deg: f64,
+    pub trials: usize,
+    /// Simulated seconds of all the trials.
+    pub simulated_s: f64,
+    /// The event's rate: the mean of the trials' seas' crossing rates, with its interval.
+    pub rate: Rate,
+    /// Rice's rate from the continuous spectrum (eq. 5.3) for the hub's depth swing [1/h].
+    pub rice_per_hour: f64,
+    /// The hub's depth swing, standard deviation [m], and the level's depth below the calm hub
+    /// in standard deviations.
+    pub hub_sigma_m: f64,
+    pub level_sigmas: f64,
+    /// h/R at the event's time as the runs recorded it: mean and largest departure from the
+    /// level.
+    pub h_over_r_at_event_mean: f64,
+    pub h_over_r_at_event_worst: f64,
+    pub consequences: Vec<ConsequenceSummary>,
+    /// The overrides that make the study's scenario the one every trial ran: with `--set
+    /// sim.seed=SEED` of a trial, `aes-sim run` replays it exactly.
+    pub replay_sets: Vec<String>,
+    /// The trials whose consequences were worst (per consequence, up to 3): replay one with
+    /// `aes-sim run` on the scenario with `sim.seed` set to its seed.
+    pub worst: Vec<Worst>,
+    pub method: &'static str,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Worst {
+    pub consequence: &'static str,
+    pub trial: u64,
+    pub seed: u64,
+    pub value: f64,
+}
+
+/// Weighted quantile q of `(value, weight)` pairs (the value where the weight below reaches q).
+fn quantile(sorted: &[(f64, f64)], q: f64) -> f64 {
+    let total: f64 = sorted.iter().map(|x| x.1).sum();
+    let mut acc = 0.0;
+    for &(v, w) in sorted {
+        acc += w;
+        if acc >= q * total {
+            return v;
+        }
+    }
+    sorted.last().map(|x| x.0).unwrap_or(f64::NAN)
+}
+
+/// The summary of a study's trials; `thresholds[k]` are consequence k's thresholds.
+pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Result<RareSummary, String> {
+    if p.trials.is_empty() {
+        return Err("no trials".into());
+    }
+    let ev = &sc.rare_event;
+    let hull = sc.ship_hull()?;
+    let ordered = sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(0.0);
+    let speed_kn = if ev.ship_speed_kn > 0.0 { ev.ship_speed_kn } else { ordered };
+    let heading = 180.0 - sc.sea.from_deg;
+    let m = crate::studies::operability::scenario_moments(sc, speed_kn, heading)?;
+    let hub = m.0[crate::studies::operability::response::HUB[ev.shaft.index()]];
+    let radius = 0.5 * sc.propeller.diameter_m;
+    let level = ev.level_h_over_r * radius - hull.hub_depth_m;
+    let rice = crate::studies::stats::rice_upcrossing_rate(hub[0], hub[1], level) * 3600.0;
+    let nu: Vec<f64> = p.trials.iter().map(|t| t.crossing_rate_per_s).collect();
+    let mean_nu = nu.iter().sum::<f64>() / nu.len() as f64;
+    let consequences = CONSEQUENCES
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            let mut pairs: Vec<(f64, f64)> = p.trials.iter().map(|t| (t.values[k], t.crossing_rate_per_s)).collect();
+            pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let beyond = thresholds[k]
+                .iter()
+                .map(|&th| {
+                    let past = |v: f64| if c.larger_is_worse { v > th } else { v < th };
+                    let x: Vec<f64> =
+                        p.trials.iter().map(|t| if past(t.values[k]) { t.crossing_rate_per_s } else { 0.0 }).collect();
+                    Beyond {
+                        threshold: th,
+                        trials: x.iter().filter(|&&v| v > 0.0).count(),
+                        rate: Rate::of(&x, mean_nu),
+                    }
+                })
+                .collect();
+            ConsequenceSummary {
+                name: c.name,
+                label: c.label,
+                q05: quantile(&pairs, 0.05),
+                q50: quantile(&pairs, 0.5),
+                q95: quantile(&pairs, 0.95),
+                q99: quantile(&pairs, 0.99),
+                min: pairs[0].0,
+                max: pairs[pairs.len() - 1].0,
+                beyond,
+                values: p.trials.iter().map(|t| t.values[k]).collect(),
+            }
+        })
+        .collect();
+    let worst = CONSEQUENCES
+        .iter()
+        .enumerate()
+        .flat_map(|(k, c)| {
+            let mut t: Vec<&TrialRecord> = p.trials.iter().collect();
+            t.sort_by(|a, b| {
+                let o = a.values[k].total_cmp(&b.values[k]);
+                if c.larger_is_worse {
+                    o.reverse()
+                } else {
+                    o
+                }
+            });
+            t.into_iter().take(3).map(move |t| Worst {
+                consequence: c.name,
+                trial: t.trial,
+                seed: t.seed,
+                value: t.values[k],
+            })
+        })
+        .collect();
+    let hr: Vec<f64> = p.trials.iter().map(|t| t.h_over_r_at_event).collect();
+    Ok(RareSummary {
+        scenario: sc.name.clone(),
+        event: format!(
+            "the {} hub falls through h/R = {} ({})",
+            ["port", "starboard"][ev.shaft.index()],
+            ev.level_h_over_r,
+            if ev.level_h_over_r <= 1.0 { "emergence" } else { "ventilation onset" }
+        ),
+        shaft: ["port", "starboard"][ev.shaft.index()],
+        level_h_over_r: ev.level_h_over_r,
+        hub_depth_m: hull.hub_depth_m,
+        speed_kn,
+        wave_heading_deg: heading,
+        trials: p.trials.len(),
+        simulated_s: p.trials.len() as f64 * (ev.time_s + ev.window_s),
+        rate: Rate::of(&nu, mean_nu),
+        rice_per_hour: rice,
+        hub_sigma_m: hub[0].sqrt(),
+        level_sigmas: -level / hub[0].sqrt(),
+        h_over_r_at_event_mean: hr.iter().sum::<f64>() / hr.len() as f64,
+        h_over_r_at_event_worst: hr.iter().map(|h| (h - ev.level_h_over_r).abs()).fold(0.0, f64::max),
+        consequences,
+        replay_sets: vec![
+            format!("rare_event.level_h_over_r={}", ev.level_h_over_r),
+            format!("rare_event.shaft={}", serde_json::to_string(&ev.shaft).unwrap_or_default()),
+            format!("rare_event.ship_x_m={}", ev.ship_x_m),
+            format!("rare_event.ship_speed_kn={}", ev.ship_speed_kn),
+            format!("sim.duration_s={}", sc.sim.duration_s),
+        ],
+        worst,
+        method: "conditioned Gaussian seas (Slepian model): each trial's sea is made to put the hub at the level at \
+                 rare_event.time_s, falling; rates are means over trials of the sea's crossing rate (times 1 if the \
+                 consequence is past its threshold), with normal 95 % intervals (rule of three when no trial is past)",
+    })
+}
