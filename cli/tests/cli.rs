@@ -505,3 +505,64 @@ fn operability_polar() {
         assert!(!ok && err.contains(want), "{want}: {err}");
     }
 }
+
+/// `aes-sim rare`: a study's summary is the same whole and as two shards merged, and on one
+/// thread as on all; a trial's replay (`replay_sets` and its seed) reruns its sea (the hub at the
+/// level at the event); bad options are refused by name.
+#[test]
+fn rare_events_whole_sharded_and_replayed() {
+    let dir = std::env::temp_dir().join(format!("aes-rare-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let base = ["rare", "preset:head-seas-ss6", "--trials", "6", "--threshold", "min_bus_voltage_pu=0.9"];
+    let (ok, whole, err) = aes_sim(&[&base[..], &["--threads", "1"]].concat());
+    assert!(ok, "{err}");
+    let (ok, again, _) = aes_sim(&base);
+    assert!(ok && again == whole, "threads change the study");
+    let (a, b) = (dir.join("a.json"), dir.join("b.json"));
+    for (range, file) in [("0..4", &a), ("4..6", &b)] {
+        let (ok, _, err) =
+            aes_sim(&[&base[..], &["--trial-range", range, "--partial", file.to_str().unwrap()]].concat());
+        assert!(ok, "{err}");
+    }
+    let (ok, merged, err) = aes_sim(&[&base[..], &["--merge", a.to_str().unwrap(), b.to_str().unwrap()]].concat());
+    assert!(ok, "{err}");
+    assert_eq!(merged, whole);
+    let v: serde_json::Value = serde_json::from_str(&whole).unwrap();
+    assert_eq!(v["trials"], 6);
+    assert!(v["rate"]["per_hour"].as_f64().unwrap() > 100.0 && v["consequences"].as_array().unwrap().len() == 5);
+    // Replay the worst trial: the hub at the level at the event.
+    let seed = v["worst"][0]["seed"].as_u64().unwrap();
+    let trace = dir.join("replay.csv");
+    let mut args: Vec<String> = vec!["run".into(), "preset:head-seas-ss6".into()];
+    for s in v["replay_sets"].as_array().unwrap() {
+        args.extend(["--set".into(), s.as_str().unwrap().into()]);
+    }
+    args.extend(["--set".into(), format!("sim.seed={seed}"), "--out".into(), trace.to_str().unwrap().into()]);
+    let (ok, _, err) = aes_sim(&args.iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(ok, "{err}");
+    let text = std::fs::read_to_string(&trace).unwrap();
+    let head: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let (ti, hi) =
+        (head.iter().position(|c| *c == "t_s").unwrap(), head.iter().position(|c| *c == "h_over_r").unwrap());
+    let at = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .find(|c| c[ti].parse::<f64>().unwrap() >= 30.0 - 1e-9)
+        .unwrap();
+    let h: f64 = at[hi].parse().unwrap();
+    assert!((h - 1.1).abs() < 0.1, "replayed h/R at the event {h}");
+    for (extra, want) in [
+        (vec!["--event", "sideways"], "--event 'sideways': one of ventilation, emergence, level"),
+        (vec!["--shaft", "middle"], "--shaft 'middle': port or starboard"),
+        (vec!["--threshold", "nothing=1"], "--threshold 'nothing=1': expected NAME=VALUE"),
+        (vec!["--trials", "0"], "trials = 0: must be from 1 to 100000"),
+        (vec!["--trial-range", "0..3"], "--trial-range needs --partial FILE"),
+    ] {
+        let (ok, _, err) = aes_sim(&["rare", "preset:head-seas-ss6"].iter().copied().chain(extra).collect::<Vec<_>>());
+        assert!(!ok && err.contains(want), "{want}: {err}");
+    }
+    let (ok, _, err) = aes_sim(&["rare", "preset:startup"]);
+    assert!(!ok && err.contains("sea.kind must be \"random\""), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}

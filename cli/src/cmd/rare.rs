@@ -43,6 +43,11 @@ pub struct Args {
     /// Summarise these shards' files (of the same scenario and options) instead of running.
     #[arg(long, num_args = 1.., value_name = "FILE")]
     merge: Vec<String>,
+    /// Also count events in this many hours of unconditioned Gaussian seas (runs of 1,200 s),
+    /// and compare: each rate by both methods, and the simulated seconds each needs for the
+    /// same 95 % interval width (the benchmark of the method).
+    #[arg(long = "brute-force", value_name = "HOURS")]
+    brute_force: Option<f64>,
     /// Override one parameter (repeatable).
     #[arg(long = "set", value_name = "PATH=VALUE")]
     sets: Vec<String>,
@@ -122,11 +127,56 @@ pub fn run(a: Args) -> Result<(), Failure> {
         let records = (lo..hi).into_par_iter().map(|i| trials.run(i)).collect::<Result<Vec<_>, _>>()?;
         Ok((trials.sc, RarePartial { trials: records }))
     })?;
-    match out {
-        Some(o) => o.write(serde_json::to_string(&partial).map_err(|e| e.to_string())?.as_bytes())?,
-        None => emit_json(&rare::summary(&trial_sc, &partial, &thresholds)?)?,
+    if let Some(o) = out {
+        return Ok(o.write(serde_json::to_string(&partial).map_err(|e| e.to_string())?.as_bytes())?);
     }
-    Ok(())
+    let summary = rare::summary(&trial_sc, &partial, &thresholds)?;
+    let Some(hours) = a.brute_force else {
+        return emit_json(&summary);
+    };
+    if !(hours.is_finite() && (0.1..=10_000.0).contains(&hours)) {
+        return Err(format!("--brute-force {hours}: from 0.1 to 10000 hours").into());
+    }
+    let run_s = 1200.0;
+    let usable = (run_s - trial_sc.rare_event.time_s - trial_sc.rare_event.window_s) / 3600.0;
+    let runs = (hours / usable).ceil().max(2.0) as u64;
+    let brute = pool.install(|| -> Result<rare::BruteForce, String> {
+        use rayon::prelude::*;
+        let parts = (0..runs)
+            .into_par_iter()
+            .map(|i| rare::BruteForce::run(&trial_sc, run_s, i, i + 1))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(rare::BruteForce { runs: parts.into_iter().flat_map(|b| b.runs).collect() })
+    })?;
+    let brute_s = runs as f64 * run_s;
+    let compare = |name: String, c: rare::Rate, b: rare::Rate| {
+        let w = |r: rare::Rate| r.high_per_hour - r.low_per_hour;
+        serde_json::json!({
+            "rate": name,
+            "conditioned_per_hour": [c.per_hour, c.low_per_hour, c.high_per_hour],
+            "brute_force_per_hour": [b.per_hour, b.low_per_hour, b.high_per_hour],
+            "joint_standard_errors": (c.per_hour - b.per_hour) / ((w(c) * w(c) + w(b) * w(b)) / (3.92 * 3.92)).sqrt(),
+            // Simulated seconds for the conditioned interval's width, by brute force, over the
+            // conditioned study's: an interval's width goes as one over the root of the time.
+            "brute_force_seconds_for_the_same_width_over_conditioned": brute_s * (w(b) / w(c)) * (w(b) / w(c)) / summary.simulated_s,
+        })
+    };
+    let mut rows = vec![compare("event".into(), summary.rate, brute.rate(None))];
+    for (k, c) in summary.consequences.iter().enumerate() {
+        for b in &c.beyond {
+            rows.push(compare(format!("{} past {}", c.name, b.threshold), b.rate, brute.rate(Some((k, b.threshold)))));
+        }
+    }
+    emit_json(&serde_json::json!({
+        "summary": summary,
+        "brute_force": {
+            "runs": runs,
+            "simulated_s": brute_s,
+            "events": brute.runs.iter().map(|r| r.1.len()).sum::<usize>(),
+            "conditioned_simulated_s": summary.simulated_s,
+            "compare": rows,
+        },
+    }))
 }
 
 fn names() -> String {

@@ -66,6 +66,14 @@ crate::params! {
             empty: "the ordered speed times the event's time",
             help: "How far north of its start the ship is at the event.",
         },
+        pub ship_y_m: f64 = 0.0 => {
+            label: "Conditioned: ship's place east at the event", unit: "m", range: -1.0e7..=1.0e7,
+            help: "How far east of its start the ship is at the event (it drifts sideways in waves).",
+        },
+        pub ship_heading_deg: f64 = 0.0 => {
+            label: "Conditioned: ship's heading at the event", unit: "deg", range: -3600.0..=3600.0,
+            help: "Heading at the event, clockwise from north (the waves' heading relative to the ship follows).",
+        },
         pub ship_speed_kn: f64 = 0.0 => {
             label: "Conditioned: ship's speed at the event", unit: "kn", range: 0.01..=40.0, empty: "the ordered speed",
             help: "Speed through the water at the event (the RAOs are taken there).",

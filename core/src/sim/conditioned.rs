@@ -16,8 +16,8 @@
 //! wave group that makes the event (Lindgren; Taylor's NewWave). The full nonlinear model then
 //! runs through the sea as in any trial.
 //!
-//! The ship is taken on its initial heading (north) at the place and speed `rare_event.ship_x_m`
-//! and `ship_speed_kn` say (by default its ordered speed from the start, as Rice's prediction
+//! The ship is taken at the place, heading and speed `rare_event.ship_x_m`, `ship_y_m`,
+//! `ship_heading_deg` and `ship_speed_kn` say (by default its ordered speed from the start, as Rice's prediction
 //! takes it; the rare-event study sets them from a run in waves, since the ship slows there).
 
 use crate::scenario::Scenario;
@@ -73,6 +73,7 @@ pub fn condition(sc: &Scenario, components: &[WaveComponent], nominal: &[f64]) -
     let u = crate::numerics::units::kn_to_m_s(if ev.ship_speed_kn > 0.0 { ev.ship_speed_kn } else { ordered });
     let t0 = ev.time_s;
     let x0 = if ev.ship_x_m > 0.0 { ev.ship_x_m } else { crate::numerics::units::kn_to_m_s(ordered) * t0 };
+    let (y0, psi) = (ev.ship_y_m, ev.ship_heading_deg.to_radians());
     let radius = 0.5 * sc.propeller.diameter_m;
     let level = ev.level_h_over_r * radius - hull.hub_depth_m;
     // Per component: variance of each part, and d r / d(A, B), d r' / d(A, B) at t0.
@@ -81,12 +82,12 @@ pub fn condition(sc: &Scenario, components: &[WaveComponent], nominal: &[f64]) -
         (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let (mut m0, mut m2, mut r0, mut r1) = (0.0, 0.0, 0.0, 0.0);
     for (i, c) in components.iter().enumerate() {
-        let beta = -c.direction; // heading 0 (north): beta = psi - mu
+        let beta = psi - c.direction;
         let (cb, sb) = (libm::cos(beta), libm::sin(beta));
         let rao = table.interpolate(c.omega, u, beta);
         let h =
             k.stern_motion.hub_transfer(k.stern_motion.hub_wave(c.k, at, cb, sb), rao.heave, rao.roll, rao.pitch, at);
-        let theta = c.omega * t0 - c.k * x0 * libm::cos(c.direction);
+        let theta = c.omega * t0 - c.k * (x0 * libm::cos(c.direction) + y0 * libm::sin(c.direction));
         let p = h * C::new(libm::cos(theta), libm::sin(theta));
         let we = c.omega - c.k * u * cb;
         var[i] = 0.5 * nominal[i] * nominal[i];
