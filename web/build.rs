@@ -1,4 +1,4 @@
-//! Runs a short start-up, a turn and a run in head seas natively at build time and stores its summary, so the wasm tests can check
+//! Runs a short start-up, a turn, a run in head seas, a small operability polar and a rare-event study natively at build time and stores their summaries, so the wasm tests can check
 //! that the browser computes the same numbers bit for bit; and lists the golden record of every preset
 //! (tests/golden/NAME.json, from the preset list itself) for the wasm golden test.
 fn main() {
@@ -15,7 +15,29 @@ fn main() {
     // The same with the multi-rate hull step (stepping.hull_substeps = 4: 10 ms).
     h.stepping.hull_substeps = 4;
     let multirate = aes_core::run(&h).map(|r| r.summary.to_json_value().to_string()).unwrap_or_default();
+    // Issue 31 and 32: a small operability polar and a rare-event study of three trials.
+    let mut r = aes_core::scenario::presets::preset("head-seas-ss6").unwrap_or_default();
+    r.rare_event.level_h_over_r = 1.1;
+    r.sim.duration_s = 45.0;
+    let rare = aes_core::studies::rare::trial_scenario(&r)
+        .and_then(|t| {
+            let p = aes_core::studies::rare::run_range(&t, 0, 3)?;
+            aes_core::studies::rare::summary(&t, &p, &Default::default())
+        })
+        .map(|s| serde_json::to_string(&s).unwrap_or_default())
+        .unwrap_or_default();
+    let spec = aes_core::studies::operability::PolarSpec {
+        speeds_kn: vec![0.0, 20.0],
+        headings_deg: vec![0.0, 90.0, 180.0, 225.0],
+        ..Default::default()
+    };
+    let scatter = aes_core::studies::operability::scatter::Scatter::north_atlantic();
+    let polar = aes_core::studies::operability::polar(&r, spec, Some(&scatter))
+        .map(|p| serde_json::to_string(&p).unwrap_or_default())
+        .unwrap_or_default();
     let out = std::env::var("OUT_DIR").unwrap_or_else(|_| ".".into());
+    let _ = std::fs::write(format!("{out}/native_rare.json"), rare);
+    let _ = std::fs::write(format!("{out}/native_operability.json"), polar);
     let _ = std::fs::write(format!("{out}/native_head_seas_10s.json"), seas);
     let _ = std::fs::write(format!("{out}/native_head_seas_10s_multirate.json"), multirate);
     let _ = std::fs::write(format!("{out}/native_startup_60s.json"), summary);

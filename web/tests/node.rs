@@ -92,6 +92,32 @@ fn wasm_matches_native_bit_for_bit() {
     );
 }
 
+/// Issues 31 and 32 in wasm, bit for bit against the native build (web/build.rs): the operability
+/// polar of the head-seas study at 2 speeds x 4 headings (its speeds as two parts, joined), and a
+/// rare-event study of three conditioned trials (its trial scenario from a run in waves, the
+/// trials as two shards).
+#[wasm_bindgen_test]
+fn operability_and_rare_events_match_native() {
+    let mut s: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("head-seas-ss6")).unwrap()).unwrap();
+    s["rare_event"]["level_h_over_r"] = serde_json::json!(1.1);
+    s["sim"]["duration_s"] = serde_json::json!(45.0);
+    let j = JsValue::from(&s.to_string());
+    let req = JsValue::from(r#"{"speeds_kn": [0, 20], "headings_deg": [0, 90, 180, 225]}"#);
+    let a: serde_json::Value = serde_json::from_str(&operability_part(j.clone(), req.clone(), 0, 1).unwrap()).unwrap();
+    let b: serde_json::Value = serde_json::from_str(&operability_part(j.clone(), req.clone(), 1, 2).unwrap()).unwrap();
+    let rows = serde_json::Value::Array(vec![a[0].clone(), b[0].clone()]).to_string();
+    assert_eq!(
+        operability_assemble(j.clone(), req, JsValue::from(&rows)).unwrap(),
+        include_str!(concat!(env!("OUT_DIR"), "/native_operability.json"))
+    );
+    let t = JsValue::from(&rare_scenario(j).unwrap());
+    let shards = format!("[{},{}]", rare_range(t.clone(), 2, 3).unwrap(), rare_range(t.clone(), 0, 2).unwrap());
+    assert_eq!(
+        rare_summary(t, JsValue::from(&shards), JsValue::from("{}")).unwrap(),
+        include_str!(concat!(env!("OUT_DIR"), "/native_rare.json"))
+    );
+}
+
 /// Monte Carlo in wasm: two ranges merged give the summary of the whole range.
 #[wasm_bindgen_test]
 fn monte_carlo_in_wasm() {
