@@ -149,7 +149,7 @@ export class OperabilityTab {
   }
 
   // Computes the polar of the form's values: the speeds go one at a time to up to
-  // OPERABILITY.maxWorkers workers (each keeps its RAO table for the next), then one worker joins
+  // OPERABILITY.maxWorkers workers (the first builds the RAO table and hands it to the others), then one worker joins
   // the rows into the polar.
   async compute() {
     const inp = this.inputs();
@@ -175,11 +175,17 @@ export class OperabilityTab {
     this.progress(0, n, started);
     this.status(`Computing the polar: ${n} speeds x ${req.headings_deg.length} headings x ${req.sea_states.length} seas on ${k} worker${k > 1 ? 's' : ''}...`);
     try {
-      await Promise.all(this.workers.map(async (w) => {
+      // The RAO table is built once, by the first worker, and handed to the others (each keeps it
+      // for the speeds it takes): k workers do not build it k times.
+      await this.workers[0].ready;
+      const { values } = await this.workers[0].request(REQUEST.raoTable, { scenario });
+      await Promise.all(this.workers.map(async (w, i) => {
         await w.ready;
+        let raoTable = i > 0 ? values : null;
         while (queue.length) {
           const j = queue.shift();
-          const r = await w.request(REQUEST.operability, { scenario, request, from: j, to: j + 1 });
+          const r = await w.request(REQUEST.operability, { scenario, request, from: j, to: j + 1, raoTable });
+          raoTable = null;
           rows[j] = r.rows[0];
           done++;
           this.progress(done, n, started);

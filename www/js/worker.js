@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, operabilityPart, operabilityAssemble } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, operabilityPart, operabilityAssemble, rareScenario, rareRange, rareSummary } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -20,6 +20,10 @@ function checked(scenario) {
 }
 
 const constantsOf = (scenario) => JSON.parse(pageConstants(scenario));
+
+// Where the ship is at a rare event: rare_event's fields, the trace column each is read from, and
+// the least value each may take (core's studies::rare places each trial's ship the same way).
+const RARE_PLACE = [['ship_x_m', 'x_m', 1e-3], ['ship_speed_kn', 'ship_speed_kn', 0.01], ['ship_y_m', 'y_m', -Infinity], ['ship_heading_deg', 'heading_deg', -Infinity]];
 
 const handlers = {
   [REQUEST.validate]: (m) => { checked(m.scenario); return {}; },
@@ -103,9 +107,45 @@ const handlers = {
 
   [REQUEST.hullSheet]: (m) => ({ sheet: JSON.parse(hullSheet(checked(m.scenario))) }),
 
-  // The RAO table is built by the first request of a worker and kept in its cache for the others.
-  [REQUEST.operability]: (m) => ({ rows: JSON.parse(operabilityPart(checked(m.scenario), m.request, m.from, m.to)) }),
+  // The RAO table comes from the page's first worker (built once) with a worker's first speed,
+  // and stays in its cache for the next.
+  [REQUEST.operability]: (m) => {
+    checked(m.scenario);
+    if (m.raoTable) raoTableLoad(m.scenario, m.raoTable);
+    return { rows: JSON.parse(operabilityPart(m.scenario, m.request, m.from, m.to)) };
+  },
   [REQUEST.operabilityAssemble]: (m) => ({ polar: JSON.parse(operabilityAssemble(checked(m.scenario), m.request, JSON.stringify(m.rows))) }),
+
+  // Rare events: the RAO table comes from the page's first rare worker (built once), as for the
+  // Monte Carlo; seeds are 64-bit integers, kept exact as strings of digits.
+  [REQUEST.rareScenario]: (m) => {
+    if (m.raoTable) raoTableLoad(m.scenario, m.raoTable);
+    return { scenario: rareScenario(checked(m.scenario)) };
+  },
+  [REQUEST.rare]: (m) => {
+    if (m.raoTable) raoTableLoad(m.scenario, m.raoTable);
+    return { shard: rareRange(m.scenario, m.a, m.b) };
+  },
+  [REQUEST.rareSummary]: (m) => ({ summary: JSON.parse(rareSummary(m.scenario, `[${m.shards.join(',')}]`, JSON.stringify(m.thresholds)).replace(/"seed":(\d+)/g, '"seed":"$1"')) }),
+
+  [REQUEST.rarePlace]: (m) => {
+    const sc = JSON.parse(m.scenario);
+    for (let k = 0; k < m.passes; k++) {
+      const run = new Run(checked(JSON.stringify({ ...sc, sim: { ...sc.sim, duration_s: sc.rare_event.time_s } })));
+      try {
+        while (run.advance(RUN_CHUNK_STEPS) < 1);
+        // The fields of rare_event the scenario has, from the last recorded row (as core's trials).
+        for (const [field, column, floor] of RARE_PLACE) {
+          if (!(field in sc.rare_event)) continue;
+          const c = run.column(column);
+          sc.rare_event[field] = Math.max(c[c.length - 1], floor);
+        }
+      } finally {
+        run.free();
+      }
+    }
+    return { scenario: JSON.stringify(sc) };
+  },
 
   [REQUEST.design]: (m) => ({ result: JSON.parse(designLqgLtr(checked(m.scenario))) }),
   [REQUEST.ips]: (m) => {
