@@ -531,13 +531,15 @@ fn rare_events_whole_sharded_and_replayed() {
     assert_eq!(v["trials"], 6);
     assert!(v["rate"]["per_hour"].as_f64().unwrap() > 100.0 && v["consequences"].as_array().unwrap().len() == 5);
     // Replay the worst trial: the hub at the level at the event.
-    let seed = v["worst"][0]["seed"].as_u64().unwrap();
     let trace = dir.join("replay.csv");
     let mut args: Vec<String> = vec!["run".into(), "preset:head-seas-ss6".into()];
     for s in v["replay_sets"].as_array().unwrap() {
         args.extend(["--set".into(), s.as_str().unwrap().into()]);
     }
-    args.extend(["--set".into(), format!("sim.seed={seed}"), "--out".into(), trace.to_str().unwrap().into()]);
+    for s in v["worst"][0]["sets"].as_array().unwrap() {
+        args.extend(["--set".into(), s.as_str().unwrap().into()]);
+    }
+    args.extend(["--out".into(), trace.to_str().unwrap().into()]);
     let (ok, _, err) = aes_sim(&args.iter().map(String::as_str).collect::<Vec<_>>());
     assert!(ok, "{err}");
     let text = std::fs::read_to_string(&trace).unwrap();
@@ -551,6 +553,18 @@ fn rare_events_whole_sharded_and_replayed() {
         .find(|c| c[ti].parse::<f64>().unwrap() >= 30.0 - 1e-9)
         .unwrap();
     let h: f64 = at[hi].parse().unwrap();
+    // The trial's own: its lowest bus voltage over the window, as the summary has it.
+    let bi = head.iter().position(|c| *c == "bus_voltage_pu").unwrap();
+    let low = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .filter(|c| c[ti].parse::<f64>().unwrap() >= 30.0 - 1e-9)
+        .map(|c| c[bi].parse::<f64>().unwrap())
+        .fold(f64::INFINITY, f64::min);
+    let worst = &v["worst"][0];
+    assert_eq!(worst["consequence"], "min_bus_voltage_pu");
+    assert_eq!(low, worst["value"].as_f64().unwrap(), "the replay is not the trial");
     assert!((h - 1.1).abs() < 0.1, "replayed h/R at the event {h}");
     for (extra, want) in [
         (vec!["--event", "sideways"], "--event 'sideways': one of ventilation, emergence, level"),

@@ -355,6 +355,19 @@ pub fn rare_scenario(json: JsValue) -> Result<String, JsError> {
     Ok(t.to_json())
 }
 
+/// The scenario with the ship placed at the event (`rare_event.ship_*`) by `passes` runs to it in
+/// the scenario's own conditioned sea: the most likely wave group (`rare_event.shape =
+/// "most_likely"`) slows the ship less than a random sea, so its place is found in it.
+#[wasm_bindgen(js_name = rarePlace)]
+pub fn rare_place(json: JsValue, passes: u32) -> Result<String, JsError> {
+    let mut sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    if passes > 5 {
+        return Err(JsError::new("rarePlace: at most 5 passes"));
+    }
+    aes_core::studies::rare::place_ship(&mut sc, passes as usize).map_err(|e| JsError::new(&e))?;
+    Ok(sc.to_json())
+}
+
 /// Trials `a..b` of the rare-event study of a scenario from `rareScenario` (`aes-sim rare`'s
 /// trials, one after another), as the JSON of a shard.
 #[wasm_bindgen(js_name = rareRange)]

@@ -259,3 +259,18 @@ export const OPERABILITY = {
   headingTicksDeg: 30, // degrees marked around the polar
   kept: 6, // polars kept for Back and Forward
 };
+
+// Rare events (issue 32): the page's defaults and limits, and presentation only; the event's level
+// (seakeeping.ventilation_on_h_over_r, or 1 for emergence), the trials, their consequences and
+// every number come from the wasm (rareScenario, rareRange, rareSummary). The unit of a
+// consequence is its name's suffix; `short` names its histogram's axis. Thresholds: the rate per
+// hour past each (null: none asked until one is typed).
+export const RARE = {
+  trials: 200, maxTrials: 1000, h0Min: 3, h0Max: 7, maxWorkers: 4, kept: 6,
+  placePasses: 2, // runs to the event that place the ship in the most likely wave group
+  units: { pu: 'pu', rpm: 'rpm', mw: 'MW', mj: 'MJ' },
+  short: { min_bus_voltage_pu: 'lowest bus voltage', peak_turbine_speed_pu: 'highest turbine speed', shaft_speed_swing_rpm: 'shaft speed swing', motor_power_drop_mw: 'motor power drop', brake_energy_mj: 'brake energy' },
+  thresholds: { min_bus_voltage_pu: 0.9, peak_turbine_speed_pu: 1.1, shaft_speed_swing_rpm: null, motor_power_drop_mw: 10, brake_energy_mj: null },
+  // The quantiles drawn on each histogram: the summary's key, label, colour and dash (>= 3:1 on white).
+  quantiles: [['q05', '5 %', '#117a65', [6, 3]], ['q50', '50 %', '#b03a2e', []], ['q95', '95 %', '#6c3483', [6, 3]], ['q99', '99 %', '#1b1b1b', [2, 3]]],
+};

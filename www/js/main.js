@@ -13,6 +13,7 @@ import { MonteCarlo, showMonteCarlo } from './montecarlo.js';
 import { StabilityTab } from './stability.js';
 import { DesignTab } from './design.js';
 import { OperabilityTab } from './operability.js';
+import { RareView } from './rare.js';
 import { LiveViews } from './live.js';
 import { HullPanel, HullPicker, num } from './hull.js';
 import { LessonView, readLessonHash, controlPath } from './lessons/view.js';
@@ -73,6 +74,13 @@ const operability = new OperabilityTab({
   inputs: () => (form && form.scenario ? { study: form.name, title: studyTitle(form.name), scenario: form.current(), invalid: form.invalid.size > 0 } : null),
   onOpenCell: openCell,
 });
+// Rare events (in the simulator's results): the form's study as it stands; its replays run here.
+const rareView = new RareView({
+  inputs: () => (form && form.scenario && !lesson ? { study: form.name, title: studyTitle(form.name), scenario: form.current(), invalid: form.invalid.size > 0 } : null),
+  sheet: (sc) => client.request(REQUEST.hullSheet, { scenario: JSON.stringify(sc) }),
+  onRun: runRare,
+});
+rareView.setPlots(new PlotBox($('rare-plots')));
 
 function startWorker() {
   setPhase('loading');
@@ -106,9 +114,10 @@ function settle() {
 
 // key: unique per result; state: the stateKey of the inputs it belongs to (a replayed Monte Carlo
 // trial belongs to its study's Monte Carlo state).
-function remember(key, state, redraw) {
+// extra: {isCurrent()} for a result that belongs to something else than the form's values alone.
+function remember(key, state, redraw, extra = {}) {
   drawn.delete(key);
-  drawn.set(key, { key, state, study: state.split('|')[1], redraw });
+  drawn.set(key, { key, state, study: state.split('|')[1], redraw, ...extra });
   while (drawn.size > DRAWN_MAX) drawn.delete(drawn.keys().next().value);
   shown = key;
 }
@@ -119,6 +128,7 @@ const resultOf = (state) => drawn.get(state) || [...drawn.values()].reverse().fi
 function clearResults() {
   plots.clear();
   live.hide();
+  $('shown-what').hidden = true;
   $('summary-box').hidden = true;
   $('compare-box').hidden = true;
   setResult(null);
@@ -130,10 +140,19 @@ function clearResults() {
 // Run at hand; results of another study go (Back brings them back).
 function showStale() {
   operability.sync();
+  rareView.sync();
   const box = $('stale');
   const r = shown && drawn.get(shown);
   if (r && r.study !== form.name) { clearResults(); return; }
-  const stale = Boolean(r) && r.state !== stateKey();
+  // A rare-event run belongs to the rare-event result it came from (the form's values and the
+  // rare controls); every other result to the form's values in its mode.
+  const stale = Boolean(r) && (r.isCurrent ? !r.isCurrent() : r.state !== stateKey());
+  if (stale && r.isCurrent) {
+    box.hidden = false;
+    document.getElementById('results').classList.add('stale');
+    $('stale-text').textContent = 'This run is a rare-event trial of other values than the form\'s and the rare-event controls\' now. Press Run to see the form\'s values, or compute the rare events again.';
+    return;
+  }
   box.hidden = !stale;
   document.getElementById('results').classList.toggle('stale', stale);
   if (stale) $('stale-text').textContent = `These results are of other values of this study than the form's now (${r.state.startsWith('mc|') ? 'its Monte Carlo study' : 'one run'}). Press ${mode === 'mc' ? 'Monte Carlo' : 'Run'} to see the form's values.`;
@@ -231,7 +250,7 @@ async function onReady(m) {
   design.configure(m.params);
   thesis = m.thesis || [];
   stability.setMeta(m.ips);
-  form = new ScenarioForm(m.presets, m.params, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: (v) => { setFormValid(v); operability.sync(); }, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); operability.sync(); } });
+  form = new ScenarioForm(m.presets, m.params, { onLooseErrors: (text) => status(text, true), onEdit, onValidity: (v) => { setFormValid(v); operability.sync(); rareView.sync(); }, onSelect: () => { showCompareButtons(); refreshHull(); forgetLink(); operability.sync(); rareView.sync(); } });
   lessons = new LessonView(m.params, {
     onChange: (path, v, also = {}) => {
       setPath(form.scenario, path, v);
@@ -462,15 +481,18 @@ function failed(e) {
 }
 
 // trial: {i, text} replays Monte Carlo trial i from its scenario text (exact 64-bit seed).
+// replay: {text, name, words, state, isCurrent, at}: a rare-event scenario (its trial's or the
+// most likely wave group's), said in words, shown with the live views at its event (at).
 // order: the plots to draw first (a lesson's), else the study's.
-async function run({ focus = true, trial = null, order: plotOrder = null } = {}) {
+async function run({ focus = true, trial = null, replay = null, order: plotOrder = null } = {}) {
   if (isBusy() || !form || form.invalid.size) return;
-  const text = trial ? trial.text : JSON.stringify(form.current());
-  const sc = trial ? JSON.parse(trial.text) : form.current(); // (its seed only for display)
+  const given = trial || replay;
+  const text = given ? given.text : JSON.stringify(form.current());
+  const sc = given ? JSON.parse(given.text) : form.current(); // (its seed only for display)
   // The inputs this result will belong to, taken now (the form may change while it runs).
-  const state = stateKey(trial ? 'mc' : 'run'), study = form.name;
+  const state = replay ? replay.state : stateKey(trial ? 'mc' : 'run'), study = form.name;
   setPhase('running');
-  status('Running...');
+  status(replay ? `Running ${replay.words}...` : 'Running...');
   const started = performance.now();
   const c = client;
   let m;
@@ -482,10 +504,13 @@ async function run({ focus = true, trial = null, order: plotOrder = null } = {})
   } catch (e) { failed(e); return; }
   progress(1);
   const seed = trial ? (trial.text.match(/"seed":\s*(\d+)/) || [])[1] : null;
-  const name = trial ? `${studyTitle(form.name)}, Monte Carlo trial ${trial.i} (sea seed ${seed})` : runName(sc);
+  const name = trial ? `${studyTitle(form.name)}, Monte Carlo trial ${trial.i} (sea seed ${seed})` : replay ? replay.name : runName(sc);
   setPhase('idle');
   const draw = () => {
     setResult({ summary: m.summary, csv: m.csv, scenario: sc, text, columns: m.columns, name, study });
+    // A rare-event run says above its views what it is (a run of the form's values needs no line).
+    $('shown-what').hidden = !replay;
+    $('shown-what').textContent = replay ? `Shown: ${replay.words}. The ${replay.shaft} hub's h/R at the event (t = ${replay.at} s): ${hrAt(m.columns, replay)}.` : '';
     showSummary(m.summary, m.constants);
     showComparison({ summary: m.summary, name });
     const order = plotOrder || (STUDIES[study] && STUDIES[study].plots) || DEFAULT_PLOTS;
@@ -497,13 +522,20 @@ async function run({ focus = true, trial = null, order: plotOrder = null } = {})
     live.show(m.columns, m.constants, sc, text).catch((e) => status(`The live views failed: ${e.message}`, true));
     return markers;
   };
-  if (!trial) mode = 'run';
+  if (!given) mode = 'run';
   const markers = draw();
-  remember(trial ? `trial ${trial.i}|${state}` : state, state, draw);
+  remember(trial ? `trial ${trial.i}|${state}` : replay ? `${replay.name}|${state}` : state, state, draw, replay ? { isCurrent: replay.isCurrent } : {});
   settle();
   showStale();
   const t = m.summary.final_time_s, wall = m.wall_ms / 1000;
   const events = sc.sea.kind === 'calm' ? '' : ` Surface losses started ${markers.length} time(s).`;
+  if (replay) {
+    // The views stand at the event, in view; the line says what they show.
+    const hr = ` The ${replay.shaft} hub's h/R at the event: ${hrAt(m.columns, replay)}.`;
+    status(`Done: showing ${replay.words}; ${t} s simulated in ${wall.toFixed(2)} s.${events}${hr} The live views stand at the event (t = ${replay.at} s): press Play.`);
+    live.place({ at: replay.at, speed: 1 }).then(() => $('shown-what').scrollIntoView({ block: 'start' }));
+    return;
+  }
   status(`Done${trial ? ` (${name})` : ''}: ${t} s simulated in ${wall.toFixed(2)} s (${(t / wall).toFixed(0)} times real time).${events}`);
   if (focus) $('results').focus();
 }
@@ -532,6 +564,7 @@ async function runMonteCarlo() {
     live.hide();
     $('summary-box').hidden = true;
     $('compare-box').hidden = true;
+    $('shown-what').hidden = true;
     showMonteCarlo(plots, out.summary, signals, out.constants, { onReplay: replayTrial, onPickBar: replayFromBar, thesis, study });
   };
   mode = 'mc';
@@ -607,6 +640,21 @@ function openCell({ speed_kn, set, words }) {
   onEdit(false);
   status(`From the operability polar: ${words}. Press Run.`);
   $('run').focus();
+  return null;
+}
+
+// h/R of a rare event's hub at the event, read from the run's own trace.
+function hrAt(cols, { at, hr }) {
+  const i = cols.t_s.findIndex((x) => x >= at - 1e-9);
+  return i >= 0 ? cols[hr][i].toFixed(3) : '–';
+}
+
+// A rare-event scenario through the page's run (plots and live views). Returns why it cannot.
+function runRare({ text, name, words, key, at, hr, shaft }) {
+  if (!form) return 'The simulator is still loading.';
+  if (isBusy()) return 'A run is in progress: wait for it or cancel it first.';
+  if (form.invalid.size) return 'A value of the form is refused (marked at its field): correct it first.';
+  run({ focus: false, replay: { text, name, words, at, hr, shaft, state: `rare|${key}`, isCurrent: () => rareView.currentKey() === key } });
   return null;
 }
 

@@ -115,10 +115,12 @@ export class PlotBox {
   }
 
   // A line plot. series: [{data, label, color, scale?, ...uPlot series options}]; axes: the
-  // y axes [{scale, label}] (a second one goes on the right); x: {data, label, distr?}.
+  // y axes [{scale, label}] (a second one goes on the right); x: {data, label, distr?, range?}
+  // (range: [min, max] of the x axis, else the data's).
   // hbands: [{from, to, fill, edge?}] shaded across the plot; levels: [{value, label, color}];
   // markers: x values of events; key: a line under the plot saying what the shading means.
-  line(title, x, series, axes, { generation, scales = {}, more = false, hbands = [], levels = [], markers = [], key = null, time = false } = {}) {
+  // vlines: [{x, label, color, dash}] dashed vertical lines labelled at the top (quantiles).
+  line(title, x, series, axes, { generation, scales = {}, more = false, hbands = [], levels = [], markers = [], vlines = [], key = null, time = false } = {}) {
     const div = this.panel(title, generation, more);
     if (!div) return null;
     const chart = el('div', { className: 'chart' });
@@ -147,12 +149,44 @@ export class PlotBox {
         ctx.beginPath(); ctx.moveTo(left, y); ctx.lineTo(left + width, y); ctx.stroke();
         ctx.setLineDash([]);
       }
+      for (const v of vlines) {
+        const X = u.valToPos(v.x, 'x', true);
+        ctx.strokeStyle = v.color; ctx.lineWidth = 2 * dpr; ctx.setLineDash((v.dash || []).map((d) => d * dpr));
+        ctx.beginPath(); ctx.moveTo(X, top); ctx.lineTo(X, top + height); ctx.stroke();
+        ctx.setLineDash([]);
+      }
       ctx.strokeStyle = EVENT_COLOR; ctx.lineWidth = 1.5 * dpr;
       for (const t of markers) {
         const X = u.valToPos(t, 'x', true);
         ctx.beginPath(); ctx.moveTo(X, top); ctx.lineTo(X, top + height); ctx.stroke();
         ctx.fillStyle = EVENT_COLOR;
         ctx.beginPath(); ctx.moveTo(X - 5 * dpr, top); ctx.lineTo(X + 5 * dpr, top); ctx.lineTo(X, top + 8 * dpr); ctx.fill();
+      }
+      ctx.restore();
+    };
+    // The vertical lines' labels, on a light backdrop, one row lower where they would overprint.
+    const vlineLabels = (u) => {
+      if (!vlines.length) return;
+      const { ctx } = u;
+      const { left, top, width, height } = u.bbox;
+      const dpr = devicePixelRatio || 1;
+      ctx.save();
+      ctx.beginPath(); ctx.rect(left, top, width, height); ctx.clip();
+      ctx.font = `${Math.round(11 * dpr)}px system-ui, sans-serif`;
+      ctx.textAlign = 'left'; ctx.textBaseline = 'top';
+      const placed = [];
+      for (const v of vlines) {
+        const X = u.valToPos(v.x, 'x', true);
+        const tw = ctx.measureText(v.label).width, th = 13 * dpr;
+        const x0 = Math.min(X + 2 * dpr, left + width - tw - 4 * dpr);
+        let row = 0;
+        while (placed.some((p) => p.row === row && x0 < p.x1 && p.x0 < x0 + tw + 4 * dpr)) row++;
+        placed.push({ row, x0, x1: x0 + tw + 4 * dpr });
+        const y = top + 2 * dpr + row * (th + 2 * dpr);
+        ctx.fillStyle = 'rgba(255, 255, 255, 0.85)';
+        ctx.fillRect(x0, y, tw + 4 * dpr, th);
+        ctx.fillStyle = v.color;
+        ctx.fillText(v.label, x0 + 2 * dpr, y + dpr);
       }
       ctx.restore();
     };
@@ -187,7 +221,7 @@ export class PlotBox {
     const opts = {
       width: Math.max(200, Math.floor(chart.clientWidth || 440)),
       height: plotHeight(),
-      scales: { x: { time: false, ...(x.distr ? { distr: x.distr } : {}) }, ...yScales },
+      scales: { x: { time: false, ...(x.distr ? { distr: x.distr } : {}), ...(x.range ? { range: () => x.range } : {}) }, ...yScales },
       axes: [{ label: x.label, values: ticks }, ...axes.map((a, i) => ({ scale: a.scale, label: a.label, values: ticks, size: 60, ...(i ? { side: 1, grid: { show: false } } : {}) }))],
       series: [{ label: x.label }, ...series.map(({ data, color, ...rest }) => ({ stroke: color, width: 1.8, scale: axes[0].scale, spanGaps: true, ...rest }))],
       legend: { live: false },
@@ -196,7 +230,7 @@ export class PlotBox {
       // One cursor across the box's time plots, and across any other plots that share their x
       // axis (the Bode magnitude and phase); zoom is linked on time plots only.
       cursor: this.sync ? { y: false, sync: { key: time ? this.sync : `${this.sync}:${x.label}`, setSeries: false } } : { y: false },
-      hooks: { drawClear: [overlay], draw: [levelLabels], ...(time && this.sync ? { setScale: [(u, key) => this.linkZoom(u, key)] } : {}) },
+      hooks: { drawClear: [overlay], draw: [levelLabels, vlineLabels], ...(time && this.sync ? { setScale: [(u, key) => this.linkZoom(u, key)] } : {}) },
     };
     const u = new uPlot(opts, [x.data, ...series.map((s) => s.data)], chart);
     ALL_PLOTS.add(u);
@@ -245,13 +279,15 @@ export class PlotBox {
 
   // A histogram {lo, hi, counts} as bars, with an optional overlay {label, values}.
   // onPick(bin): a click on a non-empty bar (the bar under the cursor).
-  histogram(title, h, xLabel, overlay, generation, onPick = null) {
+  // vlines and key: as line()'s (a key replaces the line about clicking a bar).
+  // edges: the x axis spans the bins' edges (lo to hi), not only their centres.
+  histogram(title, h, xLabel, overlay, generation, onPick = null, { vlines = [], key: note = null, edges = false } = {}) {
     const w = (h.hi - h.lo) / h.counts.length;
     const centres = h.counts.map((_, i) => h.lo + (i + 0.5) * w);
     const series = [{ data: h.counts, label: 'trials', color: '#1f618d', paths: uPlot.paths.bars({ size: [0.9, 100] }), fill: '#aed6f1', points: { show: false } }];
     if (overlay) series.push({ data: overlay.values, label: overlay.label, color: '#b03a2e', points: { show: false } });
-    const key = onPick ? ['Click a bar to replay one of its trials in the live views.'] : null;
-    const u = this.line(title, { data: centres, label: xLabel }, series, [{ scale: 'y', label: 'trials per bin [count]' }], { generation, key });
+    const key = note || (onPick ? ['Click a bar to replay one of its trials in the live views.'] : null);
+    const u = this.line(title, { data: centres, label: xLabel, ...(edges ? { range: [h.lo, h.hi] } : {}) }, series, [{ scale: 'y', label: 'trials per bin [count]' }], { generation, key, vlines });
     if (u && onPick) {
       u.over.style.cursor = 'pointer';
       u.over.addEventListener('click', () => {

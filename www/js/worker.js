@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, operabilityPart, operabilityAssemble, rareScenario, rareRange, rareSummary } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, operabilityPart, operabilityAssemble, rareScenario, rareRange, rareSummary, rarePlace } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -20,10 +20,6 @@ function checked(scenario) {
 }
 
 const constantsOf = (scenario) => JSON.parse(pageConstants(scenario));
-
-// Where the ship is at a rare event: rare_event's fields, the trace column each is read from, and
-// the least value each may take (core's studies::rare places each trial's ship the same way).
-const RARE_PLACE = [['ship_x_m', 'x_m', 1e-3], ['ship_speed_kn', 'ship_speed_kn', 0.01], ['ship_y_m', 'y_m', -Infinity], ['ship_heading_deg', 'heading_deg', -Infinity]];
 
 const handlers = {
   [REQUEST.validate]: (m) => { checked(m.scenario); return {}; },
@@ -128,24 +124,8 @@ const handlers = {
   },
   [REQUEST.rareSummary]: (m) => ({ summary: JSON.parse(rareSummary(m.scenario, `[${m.shards.join(',')}]`, JSON.stringify(m.thresholds)).replace(/"seed":(\d+)/g, '"seed":"$1"')) }),
 
-  [REQUEST.rarePlace]: (m) => {
-    const sc = JSON.parse(m.scenario);
-    for (let k = 0; k < m.passes; k++) {
-      const run = new Run(checked(JSON.stringify({ ...sc, sim: { ...sc.sim, duration_s: sc.rare_event.time_s } })));
-      try {
-        while (run.advance(RUN_CHUNK_STEPS) < 1);
-        // The fields of rare_event the scenario has, from the last recorded row (as core's trials).
-        for (const [field, column, floor] of RARE_PLACE) {
-          if (!(field in sc.rare_event)) continue;
-          const c = run.column(column);
-          sc.rare_event[field] = Math.max(c[c.length - 1], floor);
-        }
-      } finally {
-        run.free();
-      }
-    }
-    return { scenario: JSON.stringify(sc) };
-  },
+  // The ship placed at the event in the scenario's own conditioned sea (core's rare::place_ship).
+  [REQUEST.rarePlace]: (m) => ({ scenario: rarePlace(checked(m.scenario), m.passes) }),
 
   [REQUEST.design]: (m) => ({ result: JSON.parse(designLqgLtr(checked(m.scenario))) }),
   [REQUEST.ips]: (m) => {

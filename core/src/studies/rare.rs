@@ -202,19 +202,9 @@ impl Trials {
         let fail = |e: String| format!("trial {i} (sea seed {seed}): {e}");
         let mut s = self.sc.clone();
         s.sim.seed = seed;
-        let ev = &self.sc.rare_event;
         // The ship's place and speed at the event in this sea: the study's estimate, corrected
-        // by runs to the event in the sea conditioned on them (each pass moves them less).
-        for _ in 0..CORRECTIONS {
-            let mut to_event = s.clone();
-            to_event.sim.duration_s = ev.time_s;
-            let r = crate::sim::run(&to_event).map_err(|e| fail(e.to_string()))?;
-            let last = r.trace.get(Signal::TS).len() - 1;
-            s.rare_event.ship_x_m = r.trace.get(Signal::XM)[last].max(1e-3);
-            s.rare_event.ship_y_m = r.trace.get(Signal::YM)[last];
-            s.rare_event.ship_heading_deg = r.trace.get(Signal::HeadingDeg)[last];
-            s.rare_event.ship_speed_kn = r.trace.get(Signal::ShipSpeedKn)[last].max(0.01);
-        }
+        // by a run to the event in the sea conditioned on them.
+        place_ship(&mut s, CORRECTIONS).map_err(fail)?;
         // The trial's weight: its sea's crossing rate on the study's track. On the track of the
         // correction the ship has already met the conditioned wave group (slowed by it), and at
         // 5 sigma the rate's sensitivity to the speed biased the weights by a fifth.
@@ -223,6 +213,7 @@ impl Trials {
         let (_, cond) = crate::sim::seaway::sea_of(&nominal).map_err(fail)?;
         let cond = cond.ok_or_else(|| fail("the sea is not conditioned".into()))?;
         let r = crate::sim::run(&s).map_err(|e| fail(e.to_string()))?;
+        let ev = &self.sc.rare_event;
         let (values, h_r) = consequences_at(&r, ev.shaft.index(), ev.time_s, ev.window_s)
             .ok_or_else(|| fail("the run ended before the window".into()))?;
         Ok(TrialRecord {
@@ -237,6 +228,26 @@ impl Trials {
             values,
         })
     }
+}
+
+/// Corrects where the ship is at the event (`rare_event.ship_x_m`, `ship_y_m`,
+/// `ship_heading_deg`, `ship_speed_kn`) by `passes` runs to the event in the sea conditioned on
+/// the last estimate: the ship's track depends a little on the sea it meets (each trial's own, or
+/// the most likely wave group's, where the ship slows less than in a random sea).
+pub fn place_ship(s: &mut Scenario, passes: usize) -> Result<(), String> {
+    let t0 = s.rare_event.time_s;
+    for _ in 0..passes {
+        let mut to_event = s.clone();
+        to_event.sim.duration_s = t0.max(to_event.sim.record_interval_s);
+        let r = crate::sim::run(&to_event).map_err(|e| e.to_string())?;
+        let last = r.trace.get(Signal::TS).len() - 1;
+        let ev = &mut s.rare_event;
+        ev.ship_x_m = r.trace.get(Signal::XM)[last].max(1e-3);
+        ev.ship_y_m = r.trace.get(Signal::YM)[last];
+        ev.ship_heading_deg = r.trace.get(Signal::HeadingDeg)[last];
+        ev.ship_speed_kn = r.trace.get(Signal::ShipSpeedKn)[last].max(0.01);
+    }
+    Ok(())
 }
 
 /// Runs trials `a..b` one after another.
@@ -333,8 +344,8 @@ pub struct RareSummary {
     pub h_over_r_at_event_median_departure: f64,
     pub h_over_r_at_event_within_0_1: f64,
     pub consequences: Vec<ConsequenceSummary>,
-    /// The overrides that make the study's scenario the one every trial ran: with `--set
-    /// sim.seed=SEED` of a trial, `aes-sim run` replays it exactly.
+    /// The overrides that make the study's scenario the one every trial ran: with a worst trial's
+    /// own `sets` (its seed and the ship's place at its event), `aes-sim run` replays it exactly.
     pub replay_sets: Vec<String>,
     /// The trials whose consequences were worst (per consequence, up to 3): replay one with
     /// `aes-sim run` on the scenario with `sim.seed` set to its seed.
@@ -348,6 +359,9 @@ pub struct Worst {
     pub trial: u64,
     pub seed: u64,
     pub value: f64,
+    /// The overrides, besides `replay_sets`, that replay this trial: its seed and where its ship
+    /// was at the event.
+    pub sets: Vec<String>,
 }
 
 /// Weighted quantile q of `(value, weight)` pairs (the value where the weight below reaches q).
@@ -431,6 +445,13 @@ pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Re
                 trial: t.trial,
                 seed: t.seed,
                 value: t.values[k],
+                sets: vec![
+                    format!("sim.seed={}", t.seed),
+                    format!("rare_event.ship_x_m={}", t.ship_x_m),
+                    format!("rare_event.ship_y_m={}", t.ship_y_m),
+                    format!("rare_event.ship_heading_deg={}", t.ship_heading_deg),
+                    format!("rare_event.ship_speed_kn={}", t.ship_speed_kn),
+                ],
             })
         })
         .collect();
