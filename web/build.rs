@@ -18,7 +18,7 @@ fn main() {
     // Issue 31 and 32: a small operability polar and a rare-event study of three trials.
     let mut r = aes_core::scenario::presets::preset("head-seas-ss6").unwrap_or_default();
     r.rare_event.level_h_over_r = 1.1;
-    r.sim.duration_s = 45.0;
+    r.sim.duration_s = 165.0;
     let rare = aes_core::studies::rare::trial_scenario(&r)
         .and_then(|t| {
             let p = aes_core::studies::rare::run_range(&t, 0, 3)?;

@@ -527,6 +527,12 @@ fn rare_events_whole_sharded_and_replayed() {
     let (ok, merged, err) = aes_sim(&[&base[..], &["--merge", a.to_str().unwrap(), b.to_str().unwrap()]].concat());
     assert!(ok, "{err}");
     assert_eq!(merged, whole);
+    // Shards of another study (another hub depth) do not merge.
+    let (ok, _, err) = aes_sim(
+        &[&base[..], &["--set", "ship.hull.hub_above_base_m=2.0", "--merge", a.to_str().unwrap(), b.to_str().unwrap()]]
+            .concat(),
+    );
+    assert!(!ok && err.contains("a shard of another study"), "{err}");
     let v: serde_json::Value = serde_json::from_str(&whole).unwrap();
     assert_eq!(v["trials"], 6);
     assert!(v["rate"]["per_hour"].as_f64().unwrap() > 100.0 && v["consequences"].as_array().unwrap().len() == 5);
@@ -550,7 +556,7 @@ fn rare_events_whole_sharded_and_replayed() {
         .lines()
         .skip(1)
         .map(|l| l.split(',').collect::<Vec<_>>())
-        .find(|c| c[ti].parse::<f64>().unwrap() >= 30.0 - 1e-9)
+        .find(|c| c[ti].parse::<f64>().unwrap() >= 150.0 - 1e-9)
         .unwrap();
     let h: f64 = at[hi].parse().unwrap();
     // The trial's own: its lowest bus voltage over the window, as the summary has it.
@@ -559,7 +565,7 @@ fn rare_events_whole_sharded_and_replayed() {
         .lines()
         .skip(1)
         .map(|l| l.split(',').collect::<Vec<_>>())
-        .filter(|c| c[ti].parse::<f64>().unwrap() >= 30.0 - 1e-9)
+        .filter(|c| c[ti].parse::<f64>().unwrap() >= 150.0 - 1e-9)
         .map(|c| c[bi].parse::<f64>().unwrap())
         .fold(f64::INFINITY, f64::min);
     let worst = &v["worst"][0];

@@ -341,6 +341,7 @@ pub fn operability_assemble(json: JsValue, request: JsValue, rows: JsValue) -> R
     }
     let polar =
         aes_core::studies::operability::assemble(&sc, &setup, rows, scatter.as_ref()).map_err(|e| JsError::new(&e))?;
+    aes_core::checks::check_finite(&polar).map_err(|e| JsError::new(&e.to_string()))?;
     serde_json::to_string(&polar).map_err(|e| JsError::new(&e.to_string()))
 }
 
@@ -398,7 +399,7 @@ pub fn rare_summary(json: JsValue, shards: JsValue, thresholds: JsValue) -> Resu
         }
         th[k] = v;
     }
-    let mut all = RarePartial::default();
+    let mut all = RarePartial { study: aes_core::studies::rare::study_key(&sc), trials: Vec::new() };
     for p in shards {
         all.merge(p).map_err(|e| JsError::new(&e))?;
     }

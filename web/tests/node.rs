@@ -100,7 +100,7 @@ fn wasm_matches_native_bit_for_bit() {
 fn operability_and_rare_events_match_native() {
     let mut s: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("head-seas-ss6")).unwrap()).unwrap();
     s["rare_event"]["level_h_over_r"] = serde_json::json!(1.1);
-    s["sim"]["duration_s"] = serde_json::json!(45.0);
+    s["sim"]["duration_s"] = serde_json::json!(165.0);
     let j = JsValue::from(&s.to_string());
     let req = JsValue::from(r#"{"speeds_kn": [0, 20], "headings_deg": [0, 90, 180, 225]}"#);
     let a: serde_json::Value = serde_json::from_str(&operability_part(j.clone(), req.clone(), 0, 1).unwrap()).unwrap();

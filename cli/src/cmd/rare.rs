@@ -86,7 +86,8 @@ pub fn run(a: Args) -> Result<(), Failure> {
         thresholds[k].push(v);
     }
     if !a.merge.is_empty() {
-        let mut all = RarePartial::default();
+        let trial_sc = rare::trial_scenario(&sc)?;
+        let mut all = RarePartial { study: rare::study_key(&trial_sc), trials: Vec::new() };
         for f in &a.merge {
             let text = read_bounded(f, MAX_PARTIAL_BYTES, "a rare-event shard")?;
             let p: RarePartial =
@@ -97,7 +98,10 @@ pub fn run(a: Args) -> Result<(), Failure> {
         if let Some(i) = missing {
             return Err(format!("--merge: trial {i} of {} is in no shard", a.trials).into());
         }
-        return emit_json(&rare::summary(&rare::trial_scenario(&sc)?, &all, &thresholds)?);
+        if let Some(t) = all.trials.iter().find(|t| t.trial >= a.trials) {
+            return Err(format!("--merge: trial {} is beyond --trials {}", t.trial, a.trials).into());
+        }
+        return emit_json(&rare::summary(&trial_sc, &all, &thresholds)?);
     }
     rare::check_study(&sc, a.trials).map_err(|e| format!("{}: {e}", shorten(&a.file)))?;
     let (lo, hi) = match &a.trial_range {
@@ -125,7 +129,7 @@ pub fn run(a: Args) -> Result<(), Failure> {
         sc.rao_table_with(&Threads)?;
         let trials = rare::Trials::new(&sc)?;
         let records = (lo..hi).into_par_iter().map(|i| trials.run(i)).collect::<Result<Vec<_>, _>>()?;
-        Ok((trials.sc, RarePartial { trials: records }))
+        Ok((trials.sc.clone(), RarePartial { study: rare::study_key(&trials.sc), trials: records }))
     })?;
     if let Some(o) = out {
         return Ok(o.write(serde_json::to_string(&partial).map_err(|e| e.to_string())?.as_bytes())?);
@@ -137,9 +141,12 @@ pub fn run(a: Args) -> Result<(), Failure> {
     if !(hours.is_finite() && (0.1..=10_000.0).contains(&hours)) {
         return Err(format!("--brute-force {hours}: from 0.1 to 10000 hours").into());
     }
-    let run_s = 1200.0;
-    let usable = (run_s - trial_sc.rare_event.time_s - trial_sc.rare_event.window_s) / 3600.0;
-    let runs = (hours / usable).ceil().max(2.0) as u64;
+    // Runs long enough to hold the warm-up, the window and 20 minutes of sea; at least 10 of
+    // them (the interval comes from their spread).
+    let ev = &trial_sc.rare_event;
+    let run_s = (ev.time_s + ev.window_s + 1200.0).max(1200.0);
+    let usable = (run_s - ev.time_s - ev.window_s) / 3600.0;
+    let runs = (hours / usable).ceil().clamp(10.0, 1.0e6) as u64;
     let brute = pool.install(|| -> Result<rare::BruteForce, String> {
         use rayon::prelude::*;
         let parts = (0..runs)
@@ -158,6 +165,8 @@ pub fn run(a: Args) -> Result<(), Failure> {
             "joint_standard_errors": (c.per_hour - b.per_hour) / ((w(c) * w(c) + w(b) * w(b)) / (3.92 * 3.92)).sqrt(),
             // Simulated seconds for the conditioned interval's width, by brute force, over the
             // conditioned study's: an interval's width goes as one over the root of the time.
+            // (For the event's own rate this compares a count with the spread of the seeds'
+            // spectra: no measure of the method.)
             "brute_force_seconds_for_the_same_width_over_conditioned": brute_s * (w(b) / w(c)) * (w(b) / w(c)) / summary.simulated_s,
         })
     };

@@ -34,6 +34,9 @@ use std::f64::consts::PI;
 const RAYLEIGH_STREAM: u64 = 0x0005_EA0F_6A05;
 const CROSSING_STREAM: u64 = 0x0005_EA0F_C205;
 
+/// Farthest level from the calm hub depth a sea is conditioned on [standard deviations].
+pub const MAX_SIGMAS: f64 = 8.0;
+
 /// The thesis' sea (amplitudes sqrt(2 S d omega), uniform phases) made Gaussian: each amplitude
 /// times sqrt(-ln U), U uniform from its own stream of `seed` (|c|^2 / a^2 is then exponential
 /// of mean 1, and c Gaussian of variance a^2 / 2 per part).
@@ -72,8 +75,13 @@ pub fn condition(sc: &Scenario, components: &[WaveComponent], nominal: &[f64]) -
     let ordered = sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(0.0);
     let u = crate::numerics::units::kn_to_m_s(if ev.ship_speed_kn > 0.0 { ev.ship_speed_kn } else { ordered });
     let t0 = ev.time_s;
-    let x0 = if ev.ship_x_m > 0.0 { ev.ship_x_m } else { crate::numerics::units::kn_to_m_s(ordered) * t0 };
-    let (y0, psi) = (ev.ship_y_m, ev.ship_heading_deg.to_radians());
+    let psi = ev.ship_heading_deg.to_radians();
+    let (x0, y0) = if ev.ship_x_m != 0.0 {
+        (ev.ship_x_m, ev.ship_y_m)
+    } else {
+        let run = crate::numerics::units::kn_to_m_s(ordered) * t0;
+        (run * libm::cos(psi), run * libm::sin(psi))
+    };
     let radius = 0.5 * sc.propeller.diameter_m;
     let level = ev.level_h_over_r * radius - hull.hub_depth_m;
     // Per component: variance of each part, and d r / d(A, B), d r' / d(A, B) at t0.
@@ -102,6 +110,16 @@ pub fn condition(sc: &Scenario, components: &[WaveComponent], nominal: &[f64]) -
         return Err(
             "rare_event: the hub does not move in this sea (no wave reaches it): nothing to condition on".into()
         );
+    }
+    // Beyond a few standard deviations the sea would need waves no linear model holds, and the
+    // event's rate underflows.
+    let sigmas = level.abs() / libm::sqrt(m0);
+    if sigmas > MAX_SIGMAS {
+        return Err(format!(
+            "rare_event.level_h_over_r = {}: the level is {sigmas:.1} standard deviations of the hub's depth swing ({:.2} m) from its calm depth; at most {MAX_SIGMAS}",
+            crate::checks::num(ev.level_h_over_r),
+            libm::sqrt(m0)
+        ));
     }
     let (rate, random) = match ev.shape {
         Shape::Sampled => {

@@ -26,8 +26,13 @@ use crate::sim::RunResult;
 use crate::studies::stats::trial_seed;
 use serde::{Deserialize, Serialize};
 
-/// Runs to the event that correct the ship's place in a trial's own sea before the trial.
-pub const CORRECTIONS: usize = 1;
+/// The pilot run's speed is averaged over this long before the event [s].
+const SPEED_AVERAGE_S: f64 = 60.0;
+
+/// Runs to the event that correct the ship's place in a trial's own sea before the trial (with
+/// the event at 150 s, one pass left h/R at the event 0.108 off at worst in 20 trials at h0 =
+/// 4.5 m, two passes 0.061).
+pub const CORRECTIONS: usize = 2;
 
 /// Most trials of one rare-event study (each is a run of `time_s + window_s`).
 pub const MAX_TRIALS: u64 = 100_000;
@@ -38,6 +43,9 @@ pub struct Consequence {
     pub label: &'static str,
     pub larger_is_worse: bool,
 }
+
+/// The motor power before an event is its mean over this long [s].
+pub const PRE_EVENT_S: f64 = 5.0;
 
 /// The consequences measured from the event to `window_s` after it.
 pub const CONSEQUENCES: [Consequence; 5] = [
@@ -58,7 +66,7 @@ pub const CONSEQUENCES: [Consequence; 5] = [
     },
     Consequence {
         name: "motor_power_drop_mw",
-        label: "motor power (both motors) at the event minus its lowest after",
+        label: "motor power (both motors): its mean over the 5 s before the event minus its lowest after",
         larger_is_worse: true,
     },
     Consequence { name: "brake_energy_mj", label: "energy burnt in the brake resistors", larger_is_worse: true },
@@ -79,6 +87,11 @@ pub fn consequences_at(r: &RunResult, shaft: usize, t: f64, window: f64) -> Opti
     let max = |x: &[f64]| x.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let rpm = col([Signal::PropRpm1, Signal::PropRpm2][shaft]);
     let pm = col(Signal::PMotorW);
+    // The power before the event: its mean over the 5 s before, not its value at one row (it
+    // swings at the encounter frequency, and a row 0.1 s later moved the rate of drops past
+    // 9.5 MW by 40 %).
+    let before = &tr.get(Signal::PMotorW)[ts.partition_point(|&x| x < t - PRE_EVENT_S - 1e-9)..=i0];
+    let p_before = before.iter().sum::<f64>() / before.len() as f64;
     let dt = if ts.len() > 1 { ts[1] - ts[0] } else { 0.0 };
     let brake: f64 = col(Signal::BrakePowerW).iter().sum::<f64>() * dt;
     let h_r = tr.get([Signal::HOverR, Signal::HOverRStbd][shaft])[i0];
@@ -87,7 +100,7 @@ pub fn consequences_at(r: &RunResult, shaft: usize, t: f64, window: f64) -> Opti
             min(col(Signal::BusVoltagePu)),
             max(col(Signal::TurbineSpeedPu)),
             max(rpm) - min(rpm),
-            (pm[0] - min(pm)) / 1e6,
+            (p_before - min(pm)) / 1e6,
             brake / 1e6,
         ],
         h_r,
@@ -115,15 +128,31 @@ pub struct TrialRecord {
     pub values: [f64; 5],
 }
 
-/// Trials of a study (a shard's, or merged), in trial order.
+/// Trials of a study (a shard's, or merged), in trial order, with the key of the scenario they
+/// ran ([`study_key`]): shards of other studies do not merge.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct RarePartial {
+    #[serde(default)]
+    pub study: String,
     pub trials: Vec<TrialRecord>,
 }
 
+/// The key of a study: a 64-bit FNV-1a hash of the trial scenario's JSON (its seed, level,
+/// shaft, sea, ship and the ship's place at the event), in hex.
+pub fn study_key(trial_sc: &Scenario) -> String {
+    let h =
+        trial_sc.to_json().bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| (h ^ b as u64).wrapping_mul(0x0100_0000_01b3));
+    format!("{h:016x}")
+}
+
 impl RarePartial {
-    /// Merges another shard's trials (none may repeat).
+    /// Merges another shard's trials (none may repeat; the same study).
     pub fn merge(&mut self, other: RarePartial) -> Result<(), String> {
+        if self.trials.is_empty() && self.study.is_empty() {
+            self.study = other.study.clone();
+        } else if other.study != self.study {
+            return Err(format!("a shard of another study (key {} against {})", other.study, self.study));
+        }
         self.trials.extend(other.trials);
         self.trials.sort_by_key(|t| t.trial);
         if let Some(w) = self.trials.windows(2).find(|w| w[0].trial == w[1].trial) {
@@ -174,10 +203,16 @@ pub fn trial_scenario(sc: &Scenario) -> Result<Scenario, String> {
         let ts = r.trace.get(Signal::TS);
         let i = ts.partition_point(|&t| t < ev.time_s - 1e-9).min(ts.len() - 1);
         if ev.ship_x_m == 0.0 {
-            s.rare_event.ship_x_m = r.trace.get(Signal::XM)[i].max(1e-3);
+            s.rare_event.ship_x_m = r.trace.get(Signal::XM)[i];
+            s.rare_event.ship_y_m = r.trace.get(Signal::YM)[i];
+            s.rare_event.ship_heading_deg = r.trace.get(Signal::HeadingDeg)[i];
         }
         if ev.ship_speed_kn == 0.0 {
-            s.rare_event.ship_speed_kn = r.trace.get(Signal::ShipSpeedKn)[i].max(0.01);
+            // The speed of the trials' weights: its mean over the last minute before the event
+            // (the ship's speed swings by +-0.7 kn with the wave groups in SS6).
+            let j = ts.partition_point(|&t| t < ev.time_s - SPEED_AVERAGE_S).min(i);
+            let v = &r.trace.get(Signal::ShipSpeedKn)[j..=i];
+            s.rare_event.ship_speed_kn = (v.iter().sum::<f64>() / v.len() as f64).max(0.01);
         }
     }
     Ok(s)
@@ -242,7 +277,7 @@ pub fn place_ship(s: &mut Scenario, passes: usize) -> Result<(), String> {
         let r = crate::sim::run(&to_event).map_err(|e| e.to_string())?;
         let last = r.trace.get(Signal::TS).len() - 1;
         let ev = &mut s.rare_event;
-        ev.ship_x_m = r.trace.get(Signal::XM)[last].max(1e-3);
+        ev.ship_x_m = r.trace.get(Signal::XM)[last];
         ev.ship_y_m = r.trace.get(Signal::YM)[last];
         ev.ship_heading_deg = r.trace.get(Signal::HeadingDeg)[last];
         ev.ship_speed_kn = r.trace.get(Signal::ShipSpeedKn)[last].max(0.01);
@@ -254,7 +289,7 @@ pub fn place_ship(s: &mut Scenario, passes: usize) -> Result<(), String> {
 pub fn run_range(sc: &Scenario, a: u64, b: u64) -> Result<RarePartial, String> {
     check_study(sc, b.max(1))?;
     let t = Trials::new(sc)?;
-    Ok(RarePartial { trials: (a..b).map(|i| t.run(i)).collect::<Result<_, _>>()? })
+    Ok(RarePartial { study: study_key(&t.sc), trials: (a..b).map(|i| t.run(i)).collect::<Result<_, _>>()? })
 }
 
 /// A rate per hour with its 95 % interval.
@@ -268,18 +303,7 @@ pub struct Rate {
 }
 
 impl Rate {
-    /// The mean of `x` [1/s] with the normal 95 % interval of its standard error; with no
-    /// non-zero sample, [0, the mean rate times 3 / n] (the rule of three).
-    fn of(x: &[f64], scale_if_none: f64) -> Rate {
-        let n = x.len() as f64;
-        let mean = x.iter().sum::<f64>() / n;
-        let var = x.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / (n - 1.0).max(1.0);
-        let se = (var / n).sqrt();
-        let (lo, hi) = if x.iter().any(|&v| v > 0.0) {
-            ((mean - 1.96 * se).max(0.0), mean + 1.96 * se)
-        } else {
-            (0.0, scale_if_none * 3.0 / n)
-        };
+    fn per_hour(mean: f64, lo: f64, hi: f64) -> Rate {
         let h = 3600.0;
         Rate {
             per_hour: mean * h,
@@ -287,6 +311,31 @@ impl Rate {
             high_per_hour: hi * h,
             once_every_hours: (mean > 0.0).then(|| 1.0 / (mean * h)),
         }
+    }
+
+    /// The mean of `x` [1/s] with the normal 95 % interval of its standard error (the event's
+    /// rate: the seeds' crossing rates differ only through the sampled spectrum).
+    fn mean_of(x: &[f64]) -> Rate {
+        let n = x.len() as f64;
+        let mean = x.iter().sum::<f64>() / n;
+        let var = x.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / (n - 1.0).max(1.0);
+        let se = (var / n).sqrt();
+        Rate::per_hour(mean, (mean - 1.96 * se).max(0.0), mean + 1.96 * se)
+    }
+
+    /// The rate of events past a threshold, sum_j nu_j 1_j / n [1/s], with the event's mean rate
+    /// `nu` times Wilson's 95 % score interval of the share k of n trials past it: right for few
+    /// trials past it as for many (for k = 0 its top is 3.84 / (n + 3.84), the rule of three's
+    /// kin).
+    fn past(x: &[f64], nu: f64) -> Rate {
+        let n = x.len() as f64;
+        let k = x.iter().filter(|&&v| v > 0.0).count() as f64;
+        let mean = x.iter().sum::<f64>() / n;
+        let (z, p) = (1.96, k / n);
+        let centre = (p + z * z / (2.0 * n)) / (1.0 + z * z / n);
+        let half = z / (1.0 + z * z / n) * (p * (1.0 - p) / n + z * z / (4.0 * n * n)).sqrt();
+        let (lo, hi) = (nu * (centre - half).max(0.0), nu * (centre + half).min(1.0));
+        Rate::per_hour(mean, lo.min(mean), hi.max(mean))
     }
 }
 
@@ -328,7 +377,10 @@ pub struct RareSummary {
     pub trials: usize,
     /// Simulated seconds of all the trials (with the runs to the event that place the ship).
     pub simulated_s: f64,
-    /// The event's rate: the mean of the trials' seas' crossing rates, with its interval.
+    /// The event's rate: the mean of the trials' seas' crossing rates (Rice for each seed's
+    /// sampled spectrum). Its interval is the spread of that mean over the seeds' spectra (the
+    /// sampled frequencies and directions of `sea.components` waves), not a count's: no trial
+    /// waits for an event.
     pub rate: Rate,
     /// Rice's rate from the continuous spectrum (eq. 5.3) for the hub's depth swing [1/h].
     pub rice_per_hour: f64,
@@ -386,7 +438,8 @@ pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Re
     let hull = sc.ship_hull()?;
     let ordered = sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(0.0);
     let speed_kn = if ev.ship_speed_kn > 0.0 { ev.ship_speed_kn } else { ordered };
-    let heading = 180.0 - sc.sea.from_deg;
+    // The waves' heading relative to the ship at the event (180: head seas).
+    let heading = (180.0 - sc.sea.from_deg + ev.ship_heading_deg).rem_euclid(360.0);
     let m = crate::studies::operability::scenario_moments(sc, speed_kn, heading)?;
     let hub = m.0[crate::studies::operability::response::HUB[ev.shaft.index()]];
     let radius = 0.5 * sc.propeller.diameter_m;
@@ -409,7 +462,7 @@ pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Re
                     Beyond {
                         threshold: th,
                         trials: x.iter().filter(|&&v| v > 0.0).count(),
-                        rate: Rate::of(&x, mean_nu),
+                        rate: Rate::past(&x, mean_nu),
                     }
                 })
                 .collect();
@@ -462,7 +515,13 @@ pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Re
             "the {} hub falls through h/R = {} ({})",
             ["port", "starboard"][ev.shaft.index()],
             ev.level_h_over_r,
-            if ev.level_h_over_r <= 1.0 { "emergence" } else { "ventilation onset" }
+            if ev.level_h_over_r == sc.seakeeping.ventilation_on_h_over_r {
+                "ventilation onset"
+            } else if ev.level_h_over_r == 1.0 {
+                "emergence: the disc reaches the surface"
+            } else {
+                "a level of h/R"
+            }
         ),
         shaft: ["port", "starboard"][ev.shaft.index()],
         level_h_over_r: ev.level_h_over_r,
@@ -471,7 +530,7 @@ pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Re
         wave_heading_deg: heading,
         trials: p.trials.len(),
         simulated_s: p.trials.len() as f64 * (ev.time_s * (1 + CORRECTIONS) as f64 + ev.window_s),
-        rate: Rate::of(&nu, mean_nu),
+        rate: Rate::mean_of(&nu),
         rice_per_hour: rice,
         hub_sigma_m: hub[0].sqrt(),
         level_sigmas: -level / hub[0].sqrt(),
@@ -529,7 +588,9 @@ impl BruteForce {
                 .filter(|&k| {
                     ts[k] >= ev.time_s && ts[k] <= last && h[k - 1] >= ev.level_h_over_r && h[k] < ev.level_h_over_r
                 })
-                .filter_map(|k| consequences_at(&r, ev.shaft.index(), ts[k], ev.window_s).map(|(v, _)| v))
+                // From the last row before the crossing: a row after it may already hold some of
+                // the drop (the conditioned trials start exactly at the crossing).
+                .filter_map(|k| consequences_at(&r, ev.shaft.index(), ts[k - 1], ev.window_s).map(|(v, _)| v))
                 .collect();
             runs.push(((last - ev.time_s).max(0.0) / 3600.0, events));
         }
@@ -560,6 +621,9 @@ impl BruteForce {
             .collect();
         let hours: Vec<f64> = self.runs.iter().map(|r| r.0).collect();
         let (n, total_h) = (counts.len() as f64, hours.iter().sum::<f64>());
+        if total_h.is_nan() || total_h <= 0.0 {
+            return Rate::per_hour(0.0, 0.0, 0.0);
+        }
         let rate = counts.iter().sum::<f64>() / total_h;
         // Ratio estimator's variance over runs.
         let var =
@@ -588,35 +652,40 @@ mod tests {
         let mut sc = preset("head-seas-ss6").unwrap();
         sc.set_hub_depth_m(h0);
         sc.rare_event.level_h_over_r = 1.1;
-        sc.sim.duration_s = 45.0;
+        sc.sim.duration_s = 165.0;
         sc
     }
 
     /// The conditioned sea puts the hub at the level, falling, at the event's time: in the seaway
     /// itself (the ship on the track it was conditioned on) to rounding (measured 1e-13 m,
     /// asserted 1e-9 m) with the rate imposed; in full runs, where the ship's own track moves it
-    /// a little, h/R at the event is the level on average (measured 1.0977 against 1.1 over 20
-    /// trials, asserted within 0.01) and at worst 0.034 off (asserted 0.06). Away from the event
-    /// the sea is the unconditioned one: over 300 seeds the hub swing's mean square 300 s after
-    /// it is the spectrum's m0 (measured ratio 0.98, asserted within 12 %, about 2.5 standard
-    /// errors), while at the event it is the level squared. The most likely wave group puts the
+    /// a little, h/R at the event is the level on average (measured 1.1000 against 1.1 over 20
+    /// trials, asserted within 0.01) and at worst 0.061 off (asserted 0.1). Away from the event
+    /// the sea is the unconditioned one: over 1,500 seeds the hub swing's mean square 300 s after
+    /// it is the seeds' mean m0 (measured ratio 1.012; the mean square of 1,500 Gaussian samples has
+    /// a standard error of 3.7 %, asserted within 11 %, 3 standard errors), while at the event it
+    /// is the level squared. The most likely wave group puts the
     /// hub at the level with zero rate and never deeper than it (|r(t)| <= |level|, to 1e-9).
     #[test]
     fn the_conditioned_sea_makes_the_event_and_nothing_else() {
         let base = trial_scenario(&study(4.5)).unwrap();
         let ev = base.rare_event.clone();
         let u = crate::numerics::units::kn_to_m_s(ev.ship_speed_kn);
-        let (mut far, mut at, mut m0_mean, n) = (0.0, 0.0, 0.0, 300);
+        let psi = ev.ship_heading_deg.to_radians();
+        let (ux, uy) = (u * libm::cos(psi), u * libm::sin(psi));
+        // The ship on the track the sea was conditioned on.
+        let at_time = |t: f64| (ev.ship_x_m + ux * (t - ev.time_s), ev.ship_y_m + uy * (t - ev.time_s));
+        let (mut far, mut at, mut m0_mean, n) = (0.0, 0.0, 0.0, 1500);
         for seed in 0..n {
             let mut s = base.clone();
             s.sim.seed = seed;
             let (_, c) = crate::sim::seaway::sea_of(&s).unwrap();
             let c = c.unwrap();
             let mut sea = crate::sim::seaway::Seaway::new(&s).unwrap().unwrap();
-            sea.refresh(u, 0.0);
+            sea.refresh(u, psi);
             let h0 = s.ship_hull().unwrap().hub_depth_m;
-            let x = |t: f64| ev.ship_x_m + u * (t - ev.time_s);
-            let now = sea.sample(ev.time_s, x(ev.time_s), 0.0, u, 0.0);
+            let (x, y) = at_time(ev.time_s);
+            let now = sea.sample(ev.time_s, x, y, ux, uy);
             let r = now.hub[0] - h0;
             assert!((r - c.level_m).abs() < 1e-9, "seed {seed}: {r} against {}", c.level_m);
             assert!(
@@ -626,7 +695,8 @@ mod tests {
                 c.rate_m_s
             );
             at += r * r / n as f64;
-            let later = sea.sample(ev.time_s + 300.0, x(ev.time_s + 300.0), 0.0, u, 0.0).hub[0] - h0;
+            let (x, y) = at_time(ev.time_s + 300.0);
+            let later = sea.sample(ev.time_s + 300.0, x, y, ux, uy).hub[0] - h0;
             far += later * later / n as f64;
             m0_mean += c.m0 / n as f64;
         }
@@ -634,18 +704,19 @@ mod tests {
             "mean square at the event {at:.4} (level^2), 300 s later {far:.4}, m0 {m0_mean:.4}, ratio {:.3}",
             far / m0_mean
         );
-        assert!((far / m0_mean - 1.0).abs() < 0.12);
+        assert!((far / m0_mean - 1.0).abs() < 0.11);
         // The most likely wave group.
         let mut s = base.clone();
         s.rare_event.shape = crate::sea::conditioning::Shape::MostLikely;
         let (_, c) = crate::sim::seaway::sea_of(&s).unwrap();
         let c = c.unwrap();
         let mut sea = crate::sim::seaway::Seaway::new(&s).unwrap().unwrap();
-        sea.refresh(u, 0.0);
+        sea.refresh(u, psi);
         let h0 = s.ship_hull().unwrap().hub_depth_m;
         for k in 0..600 {
             let t = ev.time_s - 30.0 + 0.1 * k as f64;
-            let now = sea.sample(t, ev.ship_x_m + u * (t - ev.time_s), 0.0, u, 0.0);
+            let (x, y) = at_time(t);
+            let now = sea.sample(t, x, y, ux, uy);
             assert!((now.hub[0] - h0).abs() <= c.level_m.abs() + 1e-9, "t {t}: {}", now.hub[0] - h0);
             if k == 300 {
                 assert!((now.hub[0] - h0 - c.level_m).abs() < 1e-9 && now.hub_rate[0].abs() < 1e-9);
@@ -657,14 +728,14 @@ mod tests {
         let mean = h.iter().sum::<f64>() / h.len() as f64;
         let worst = h.iter().map(|x| (x - 1.1).abs()).fold(0.0, f64::max);
         println!("h/R at the event: mean {mean:.4}, worst departure {worst:.3}");
-        assert!((mean - 1.1).abs() < 0.01 && worst < 0.06);
+        assert!((mean - 1.1).abs() < 0.01 && worst < 0.1);
     }
 
     /// Conditioned trials against brute force where brute force sees many events (h0 = 4.5 m,
     /// ventilation onset h/R 1.1 on the port hub, about 16 an hour): the event's rate, and the
     /// rate of events whose motor power drop exceeds 9.5 MW (about half of them), agree within
-    /// 2.5 joint standard errors (measured -1.44 and 0.20). Brute force: 60 runs of 1,200 s (19.5 usable
-    /// hours); conditioned: 160 trials. The simulated seconds each needs for the same interval
+    /// 2.5 joint standard errors (measured -0.37 and -0.71). Brute force: 60 runs of 1,200 s (17.3
+    /// usable hours after the 150 s warm-up, 318 events); conditioned: 160 trials. The simulated seconds each needs for the same interval
     /// width are printed; at this depth, where events come every few minutes, brute force is as
     /// cheap; the gain grows as the event gets rarer (the benchmark `aes-sim rare --brute-force`
     /// measures it at h0 = 5 m, README).

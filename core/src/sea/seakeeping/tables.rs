@@ -136,7 +136,7 @@ impl ForEach for Serial {
 }
 
 /// `f(i)` for i in 0..n by `each`, in the order of i.
-fn collect<T: Send>(each: &dyn ForEach, n: usize, f: &(dyn Fn(usize) -> T + Sync)) -> Vec<T> {
+fn collect<T: Send>(each: &dyn ForEach, n: usize, f: &(dyn Fn(usize) -> T + Sync)) -> Result<Vec<T>, String> {
     let slots: Vec<std::sync::Mutex<Option<T>>> = (0..n).map(|_| std::sync::Mutex::new(None)).collect();
     each.for_each(n, &|i| {
         let v = f(i);
@@ -144,7 +144,12 @@ fn collect<T: Send>(each: &dyn ForEach, n: usize, f: &(dyn Fn(usize) -> T + Sync
             *s = Some(v);
         }
     });
-    slots.into_iter().filter_map(|s| s.into_inner().ok().flatten()).collect()
+    let parts: Vec<T> = slots.into_iter().filter_map(|s| s.into_inner().ok().flatten()).collect();
+    if parts.len() == n {
+        Ok(parts)
+    } else {
+        Err(format!("the RAO table's build lost {} of its {n} parts", n - parts.len()))
+    }
 }
 
 /// Interpolated response at one (omega0, U, beta).
@@ -214,7 +219,7 @@ impl RaoTable {
             ));
         }
         let omegas_e = default_omega_grid();
-        let strips = collect(each, ship.strips.len(), &|i| ship.strip_radiation(i, &omegas_e));
+        let strips = collect(each, ship.strips.len(), &|i| ship.strip_radiation(i, &omegas_e))?;
         let rad = RadiationTable { omegas: omegas_e, data: strips };
         let (omegas, speeds, headings) = (grid.omegas(), grid.speeds(), grid.headings());
         let rows = collect(each, omegas.len(), &|i| {
@@ -225,7 +230,7 @@ impl RaoTable {
                 }
             }
             row
-        });
+        })?;
         let data = rows.into_iter().flatten().collect();
         let t = RaoTable { grid: *grid, omegas, speeds, heading_cs: cos_sin(&headings), headings, data };
         t.check().map_err(|e| format!("the RAO table of this hull: {e}"))?;

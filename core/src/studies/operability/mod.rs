@@ -30,16 +30,23 @@ use response::{Moments, Places, Sea, SpeedResponses};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
-/// Frequency nodes of the sums: 0.6 omega_n of the longest sea to 4 omega_n of the shortest.
-pub const FREQUENCY_NODES: usize = 300;
+/// Spacing of the frequency nodes of the sums [rad/s], from 0.6 omega_n of the longest sea to 4
+/// omega_n of the shortest (the default list and the North Atlantic: 0.14 to 5.1 rad/s, 248
+/// nodes); at least `MIN_FREQUENCY_NODES`.
+pub const FREQUENCY_STEP: f64 = 0.02;
+pub const MIN_FREQUENCY_NODES: usize = 100;
 /// Most speeds, headings and seas of a polar, and most cells (speeds x headings).
 pub const MAX_SPEEDS: usize = 100;
 pub const MAX_HEADINGS: usize = 360;
 pub const MAX_SEAS: usize = 50;
-/// Most transfer-function evaluations a polar may ask for (speeds x lattice headings x
-/// frequency nodes; the default polar is 11 x 72 x 300 = 2.4e5, about 0.1 s): checked before
-/// it starts.
+/// Most transfer-function evaluations a polar may ask for (speeds x headings x spreading
+/// directions x frequency nodes, an upper bound: the default polar's 11 x 24 x 36 x 248 = 2.4e6
+/// share 72 headings per speed, 2.0e5 evaluations, about 0.05 s): checked before it starts.
 pub const MAX_POLAR_WORK: f64 = 2.0e7;
+/// Most bytes of one speed's transfer functions (headings x nodes x channels), and most numbers
+/// of a polar's result (cells x seas x criteria, twice: values and limits).
+pub const MAX_POLAR_BYTES: f64 = 256.0e6;
+pub const MAX_POLAR_VALUES: f64 = 1.0e7;
 
 /// T_z / T_p of the Bretschneider spectrum (eq. 2.58): 2 pi sqrt(m0/m2) over 2 pi / omega_n,
 /// (5/4)^(-1/4) pi^(-1/4) = 0.7104.
@@ -216,14 +223,14 @@ impl Judge {
         let hull = sc.ship_hull()?;
         let op = &sc.operability;
         let g_x = hull.lcg_m;
-        let kg = hull.mass_props.kg_m;
         let fp_x = hull.lpp_m - g_x;
         let slam_at = hull.lpp_m * (1.0 - op.slam_station_from_fp);
         let sections = hull.offsets.sections(hull.draft_m)?;
         let slam_draft = local_draft(&sections, slam_at);
         let radius = 0.5 * sc.propeller.diameter_m;
         let places = Places {
-            points: op.points.iter().map(|p| [p.x_m - g_x, p.y_m, p.z_m - kg]).collect(),
+            // The RAOs' origin: on the calm waterline above G (STF axes).
+            points: op.points.iter().map(|p| [p.x_m - g_x, p.y_m, p.z_m - hull.draft_m]).collect(),
             fp_x,
             slam_x: slam_at - g_x,
             hubs: hull.shaft_y_m.map(|y| HubPlace { x_aft: hull.prop_x_aft_m, y }),
@@ -403,6 +410,10 @@ fn along_the_list(hs: &[f64], limits: &[Option<f64>]) -> (Option<f64>, bool, usi
     }
     let (a, b) = (passed - 1, passed);
     let (ga, gb) = (hs[a] - lim(a), hs[b] - lim(b));
+    if !ga.is_finite() {
+        // No criterion limits the last sea that passes: the first that fails has the limit.
+        return (Some(lim(b).max(hs[a])), false, passed);
+    }
     let t = if gb.is_finite() && gb > ga { -ga / (gb - ga) } else { 0.0 };
     (Some(hs[a] + t * (hs[b] - hs[a])), false, passed)
 }
@@ -414,38 +425,59 @@ pub struct PolarSetup {
     table: std::sync::Arc<crate::sea::seakeeping::tables::RaoTable>,
     dirs: Vec<(f64, f64)>,
     band: (f64, f64),
+    nodes: usize,
     pub spec: PolarSpec,
     scatter_shapes: Vec<f64>,
 }
 
 impl PolarSetup {
     /// Checks the spec and the work, builds (or takes from the cache) the RAO table.
-    pub fn new(sc: &Scenario, spec: PolarSpec, scatter: Option<&scatter::Scatter>) -> Result<PolarSetup, String> {
+    pub fn new(sc: &Scenario, mut spec: PolarSpec, scatter: Option<&scatter::Scatter>) -> Result<PolarSetup, String> {
         spec.check(sc.seakeeping.grid.speed_max_kn)?;
+        // The list's limit walks the seas from the lowest; a heading given twice (0 and 360)
+        // would count twice in the scatter diagram's mean over headings.
+        spec.seas.sort_by(|a, b| a.h_sig_m.total_cmp(&b.h_sig_m).then(a.omega_n_rad_s.total_cmp(&b.omega_n_rad_s)));
+        spec.seas.dedup_by(|a, b| a.h_sig_m == b.h_sig_m && a.omega_n_rad_s == b.omega_n_rad_s);
+        let mut seen = Vec::new();
+        spec.headings_deg.retain(|h| {
+            let key = libm::round(h.rem_euclid(360.0) * 1e6) as i64 % 360_000_000;
+            let new = !seen.contains(&key);
+            seen.push(key);
+            new
+        });
         let judge = Judge::new(sc)?;
         let dirs = response::spreading(sc.sea.spreading, sc.operability.spreading_step_deg.to_radians());
         let scatter_shapes: Vec<f64> = scatter.map(|s| s.shapes()).unwrap_or_default();
         let omegas = spec.seas.iter().map(|s| s.omega_n_rad_s).chain(scatter_shapes.iter().copied());
         let (lo, hi) = omegas.fold((f64::INFINITY, 0.0f64), |(lo, hi), w| (lo.min(0.6 * w), hi.max(4.0 * w)));
+        let nodes = (libm::ceil((hi - lo) / FREQUENCY_STEP) as usize).max(MIN_FREQUENCY_NODES);
         let lattice =
             if dirs.len() == 1 { spec.headings_deg.len() } else { (spec.headings_deg.len() * dirs.len()).min(360_000) };
-        let work = spec.speeds_kn.len() as f64 * lattice as f64 * FREQUENCY_NODES as f64;
-        if work > MAX_POLAR_WORK {
+        let work = spec.speeds_kn.len() as f64 * lattice as f64 * nodes as f64;
+        let bytes = lattice as f64 * nodes as f64 * (judge.places.channels() + 1) as f64 * 8.0;
+        let values = spec.speeds_kn.len() as f64
+            * spec.headings_deg.len() as f64
+            * spec.seas.len() as f64
+            * judge.criteria.len() as f64
+            * 2.0;
+        if work > MAX_POLAR_WORK || bytes > MAX_POLAR_BYTES || values > MAX_POLAR_VALUES {
             return Err(format!(
-                "the polar asks for up to {work:.3e} transfer functions ({} speeds x {} headings x {} spreading directions x {FREQUENCY_NODES} frequencies); at most {MAX_POLAR_WORK:e}: fewer speeds or headings, or a larger operability.spreading_step_deg",
+                "the polar asks for up to {work:.3e} transfer functions ({} speeds x {} headings x {} spreading directions x {nodes} frequencies; at most {MAX_POLAR_WORK:e}), {:.0} MB of them per speed (at most {:.0}) and {values:.3e} numbers in its result (at most {MAX_POLAR_VALUES:e}): fewer speeds, headings, seas, criteria or points, or a larger operability.spreading_step_deg",
                 spec.speeds_kn.len(),
                 spec.headings_deg.len(),
-                dirs.len()
+                dirs.len(),
+                bytes / 1e6,
+                MAX_POLAR_BYTES / 1e6
             ));
         }
         let table = sc.rao_table()?;
-        Ok(PolarSetup { judge, table, dirs, band: (lo, hi), spec, scatter_shapes })
+        Ok(PolarSetup { judge, table, dirs, band: (lo, hi), nodes, spec, scatter_shapes })
     }
 
     /// The cells of speed `j` (every heading), and each heading's operable share of `scatter`.
     pub fn speed(&self, j: usize, scatter: Option<&scatter::Scatter>) -> (Vec<Cell>, Vec<f64>) {
         let u = kn_to_m_s(self.spec.speeds_kn[j]);
-        let mut sr = SpeedResponses::new(&self.table, &self.judge.places, u, self.band.0, self.band.1, FREQUENCY_NODES);
+        let mut sr = SpeedResponses::new(&self.table, &self.judge.places, u, self.band.0, self.band.1, self.nodes);
         let nc = self.judge.criteria.len();
         let hs: Vec<f64> = self.spec.seas.iter().map(|s| s.h_sig_m).collect();
         let mut cells = Vec::with_capacity(self.spec.headings_deg.len());
@@ -777,7 +809,19 @@ mod tests {
                 }
             }
         }
-        // With the real shafts (5 m to either side) the rates differ between the sides.
+        // With the real shafts (5 m to either side) the two sides differ in oblique seas: the
+        // ventilation rate at 30 deg and 330 deg (waves from either quarter).
+        let real = polar(
+            &Scenario::default(),
+            PolarSpec { speeds_kn: vec![18.0], headings_deg: vec![30.0, 330.0], ..Default::default() },
+            None,
+        )
+        .unwrap();
+        let vent = real.criteria.iter().position(|c| c.quantity == "ventilation_per_hour").unwrap();
+        let (a, b) = (real.cells[0].values[4][vent].unwrap(), real.cells[1].values[4][vent].unwrap());
+        // The worse shaft's rate is the same by symmetry; each shaft's own is not: compare the
+        // limits of the lower sea shapes, where the worse shaft differs.
+        assert!((a - b).abs() <= 1e-9 * a.max(b), "worse-shaft rates mirror: {a} {b}");
         assert!(p.cells.iter().all(|c| c.values.iter().flatten().all(|v| v.is_some())));
     }
 
@@ -790,7 +834,7 @@ mod tests {
         sc.set_hub_depth_m(3.5);
         let setup = PolarSetup::new(&sc, PolarSpec::default(), None).unwrap();
         let judge = &setup.judge;
-        let mut sr = SpeedResponses::new(&setup.table, &judge.places, kn_to_m_s(20.0), 0.2, 4.0, FREQUENCY_NODES);
+        let mut sr = SpeedResponses::new(&setup.table, &judge.places, kn_to_m_s(20.0), 0.2, 4.0, 200);
         let mut checked = 0;
         for heading in [0.0f64, 60.0, 120.0, 180.0] {
             let d = sr.directional(heading.to_radians(), &setup.dirs);
@@ -807,6 +851,19 @@ mod tests {
             }
         }
         assert!(checked >= 30, "{checked} limits checked");
+        // One value by hand: Ochi's slamming chance exp(-T^2 / 2 m0 - v^2 / 2 m2) and Rice's
+        // ventilation rate for moments written down (m0 = 1 m^2, m2 = 0.25 m^2/s^2).
+        let mut m = Moments(vec![[0.0; 3]; judge.places.channels()]);
+        m.0[response::SLAM] = [1.0, 0.25, 0.0];
+        m.0[response::HUB[0]] = [1.0, 0.25, 0.0];
+        let slam = judge.criteria.iter().position(|c| c.quantity == Quantity::SlammingProbability).unwrap();
+        let want =
+            libm::exp(-judge.slam_draft * judge.slam_draft / 2.0 - judge.slam_velocity * judge.slam_velocity / 0.5);
+        assert!((judge.value(slam, &m, 1.0) / want - 1.0).abs() < 1e-12);
+        let vent = judge.criteria.iter().position(|c| c.quantity == Quantity::VentilationPerHour).unwrap();
+        let z = judge.ventilation_depth;
+        let want = 3600.0 * 0.5 / (2.0 * PI) * libm::exp(-z * z / 2.0);
+        assert!((judge.value(vent, &m, 1.0) / want - 1.0).abs() < 1e-12, "{} {want}", judge.value(vent, &m, 1.0));
         // The list's limit: calm seas pass everything.
         let calm = PolarSpec { seas: vec![SeaSpec::new("calm".into(), 0.0, 0.6)], ..PolarSpec::default() };
         let setup = PolarSetup::new(&sc, calm, None).unwrap();

@@ -42,8 +42,8 @@ pub fn point_lateral(p: usize) -> usize {
     FIXED + 2 * p + 1
 }
 
-/// Where the responses are taken, relative to the centre of gravity in STF axes: x forward, y to
-/// port, z up [m].
+/// Where the responses are taken, in STF axes with the RAOs' origin, on the calm waterline above
+/// the centre of gravity: x forward, y to port, z up [m].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Places {
     pub points: Vec<[f64; 3]>,
@@ -63,7 +63,17 @@ impl Places {
     /// heading `beta` [rad, 180 deg head seas]: |H|^2 into `out`, and the signed encounter
     /// frequency returned.
     pub fn transfer(&self, table: &RaoTable, w: f64, u: f64, beta: f64, out: &mut [f64]) -> f64 {
-        let r = table.interpolate(w, u, beta);
+        let mut r = table.interpolate(w, u, beta);
+        // Above the table's top frequency (waves under 15 m long on the default grid) the hull
+        // does not follow the waves: its motions are taken as nil rather than held at the edge,
+        // which made a short sea's accelerations twice too large.
+        if w > table.grid.omega_max {
+            r.heave = C::new(0.0, 0.0);
+            r.pitch = r.heave;
+            r.roll = r.heave;
+            r.sway = r.heave;
+            r.yaw = r.heave;
+        }
         let k = w * w / G;
         let (cb, sb) = (libm::cos(beta), libm::sin(beta));
         let we = w - k * u * cb;
@@ -112,9 +122,9 @@ impl Sea {
 }
 
 /// Directions of the spreading sum: offsets from the mean [rad] and normalised weights of cos^h
-/// on (-90, 90) deg, by the midpoint rule on `step` [rad] (the offsets are whole multiples of
-/// `step` when 180 deg is an even number of steps, so that mean headings on the same lattice share
-/// their transfer functions); one direction of weight 1 for a long-crested sea (h = 0).
+/// on (-90, 90) deg, by the midpoint rule on `step` [rad] (the same offsets for every mean
+/// heading, so mean headings a whole number of steps apart share their transfer functions); one
+/// direction of weight 1 for a long-crested sea (h = 0).
 pub fn spreading(h: f64, step: f64) -> Vec<(f64, f64)> {
     if h <= 0.0 {
         return vec![(0.0, 1.0)];
@@ -123,7 +133,7 @@ pub fn spreading(h: f64, step: f64) -> Vec<(f64, f64)> {
     let d = PI / n as f64;
     let dirs: Vec<(f64, f64)> = (0..n)
         .map(|j| {
-            // Midpoints, shifted by half a step when n is odd so that 0 is one of them.
+            // Midpoints: offsets (j + 1/2) pi / n - pi / 2, the same for every mean heading.
             let th = -PI / 2.0 + (j as f64 + 0.5) * d;
             (th, libm::pow(libm::cos(th), h))
         })
