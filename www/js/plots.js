@@ -164,59 +164,57 @@ export class PlotBox {
       }
       ctx.restore();
     };
-    // The vertical lines' labels, on a light backdrop, one row lower where they would overprint.
-    const vlineLabels = (u) => {
-      if (!vlines.length) return;
+    // Labels drawn over the plot area, on top of the traces (after them), each on a light
+    // backdrop so a trace passing over it never hides it: clipped to the plot, 11 px type, text
+    // alignment set (uPlot leaves its axis alignment on the context).
+    const labels = (u, baseline, draw) => {
       const { ctx } = u;
-      const { left, top, width, height } = u.bbox;
       const dpr = devicePixelRatio || 1;
+      const { left, top, width, height } = u.bbox;
       ctx.save();
       ctx.beginPath(); ctx.rect(left, top, width, height); ctx.clip();
       ctx.font = `${Math.round(11 * dpr)}px system-ui, sans-serif`;
-      ctx.textAlign = 'left'; ctx.textBaseline = 'top';
-      const placed = [];
-      for (const v of vlines) {
-        const X = u.valToPos(v.x, 'x', true);
-        const tw = ctx.measureText(v.label).width, th = 13 * dpr;
-        const x0 = Math.min(X + 2 * dpr, left + width - tw - 4 * dpr);
-        let row = 0;
-        while (placed.some((p) => p.row === row && x0 < p.x1 && p.x0 < x0 + tw + 4 * dpr)) row++;
-        placed.push({ row, x0, x1: x0 + tw + 4 * dpr });
-        const y = top + 2 * dpr + row * (th + 2 * dpr);
+      ctx.textAlign = 'left'; ctx.textBaseline = baseline;
+      const backed = (text, x, y, color) => {
+        const tw = ctx.measureText(text).width, th = 13 * dpr;
         ctx.fillStyle = 'rgba(255, 255, 255, 0.85)';
-        ctx.fillRect(x0, y, tw + 4 * dpr, th);
-        ctx.fillStyle = v.color;
-        ctx.fillText(v.label, x0 + 2 * dpr, y + dpr);
-      }
+        ctx.fillRect(x, baseline === 'top' ? y : y - th, tw + 4 * dpr, th);
+        ctx.fillStyle = color;
+        ctx.fillText(text, x + 2 * dpr, baseline === 'top' ? y + dpr : y);
+      };
+      draw(ctx, { left, top, width, dpr, th: 13 * dpr, backed });
       ctx.restore();
     };
-    // The levels' labels go on top of the traces (drawn after them), each on a light backdrop,
-    // so a trace passing over a label never hides it.
+    // The vertical lines' labels at the top, one row lower where they would overprint.
+    const vlineLabels = (u) => {
+      if (!vlines.length) return;
+      labels(u, 'top', (ctx, { left, top, width, dpr, th, backed }) => {
+        const placed = [];
+        for (const v of vlines) {
+          const X = u.valToPos(v.x, 'x', true);
+          const tw = ctx.measureText(v.label).width;
+          const x0 = Math.min(X + 2 * dpr, left + width - tw - 4 * dpr);
+          let row = 0;
+          while (placed.some((p) => p.row === row && x0 < p.x1 && p.x0 < x0 + tw + 4 * dpr)) row++;
+          placed.push({ row, x0, x1: x0 + tw + 4 * dpr });
+          backed(v.label, x0, top + 2 * dpr + row * (th + 2 * dpr), v.color);
+        }
+      });
+    };
+    // The levels' labels above their lines. Labels whose lines lie closer than a label's height
+    // (a wide y range) would overprint: the lines are all drawn, the crowded labels left to the
+    // key under the plot.
     const levelLabels = (u) => {
       if (!levels.length) return;
-      const { ctx } = u;
-      const { left, top, width, height } = u.bbox;
-      const dpr = devicePixelRatio || 1;
-      ctx.save();
-      ctx.beginPath(); ctx.rect(left, top, width, height); ctx.clip();
-      ctx.font = `${Math.round(11 * dpr)}px system-ui, sans-serif`;
-      // uPlot leaves its axis text alignment on the context: set ours.
-      ctx.textAlign = 'left'; ctx.textBaseline = 'bottom';
-      // Labels whose lines lie closer than a label's height (a wide y range) would overprint:
-      // the lines are all drawn, the crowded labels left to the key under the plot.
-      const labelled = [];
-      for (const l of levels) {
-        const y = u.valToPos(l.value, axes[0].scale, true);
-        const text = `${l.label} (${l.value})`;
-        const tw = ctx.measureText(text).width, th = 13 * dpr;
-        if (labelled.some((y0) => Math.abs(y0 - y) < th + 2 * dpr)) continue;
-        labelled.push(y);
-        ctx.fillStyle = 'rgba(255, 255, 255, 0.85)';
-        ctx.fillRect(left + 2 * dpr, y - 3 * dpr - th, tw + 4 * dpr, th);
-        ctx.fillStyle = l.color;
-        ctx.fillText(text, left + 4 * dpr, y - 3 * dpr);
-      }
-      ctx.restore();
+      labels(u, 'bottom', (ctx, { left, dpr, th, backed }) => {
+        const labelled = [];
+        for (const l of levels) {
+          const y = u.valToPos(l.value, axes[0].scale, true);
+          if (labelled.some((y0) => Math.abs(y0 - y) < th + 2 * dpr)) continue;
+          labelled.push(y);
+          backed(`${l.label} (${l.value})`, left + 2 * dpr, y - 3 * dpr, l.color);
+        }
+      });
     };
     const opts = {
       width: Math.max(200, Math.floor(chart.clientWidth || 440)),
@@ -280,14 +278,15 @@ export class PlotBox {
   // A histogram {lo, hi, counts} as bars, with an optional overlay {label, values}.
   // onPick(bin): a click on a non-empty bar (the bar under the cursor).
   // vlines and key: as line()'s (a key replaces the line about clicking a bar).
-  // edges: the x axis spans the bins' edges (lo to hi), not only their centres.
+  // edges: the x axis spans the bins' edges (lo to hi), not only their centres. The count axis
+  // starts at 0 (uPlot's own range cut the lowest bars off).
   histogram(title, h, xLabel, overlay, generation, onPick = null, { vlines = [], key: note = null, edges = false } = {}) {
     const w = (h.hi - h.lo) / h.counts.length;
     const centres = h.counts.map((_, i) => h.lo + (i + 0.5) * w);
     const series = [{ data: h.counts, label: 'trials', color: '#1f618d', paths: uPlot.paths.bars({ size: [0.9, 100] }), fill: '#aed6f1', points: { show: false } }];
     if (overlay) series.push({ data: overlay.values, label: overlay.label, color: '#b03a2e', points: { show: false } });
     const key = note || (onPick ? ['Click a bar to replay one of its trials in the live views.'] : null);
-    const u = this.line(title, { data: centres, label: xLabel, ...(edges ? { range: [h.lo, h.hi] } : {}) }, series, [{ scale: 'y', label: 'trials per bin [count]' }], { generation, key, vlines });
+    const u = this.line(title, { data: centres, label: xLabel, ...(edges ? { range: [h.lo, h.hi] } : {}) }, series, [{ scale: 'y', label: 'trials per bin [count]' }], { generation, key, vlines, scales: { y: { range: (_, __, max) => [0, max > 0 ? max * 1.05 : 1] } } });
     if (u && onPick) {
       u.over.style.cursor = 'pointer';
       u.over.addEventListener('click', () => {
