@@ -553,8 +553,9 @@ pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Re
         ],
         worst,
         method: "conditioned Gaussian seas (Slepian model): each trial's sea is made to put the hub at the level at \
-                 rare_event.time_s, falling; rates are means over trials of the sea's crossing rate (times 1 if the \
-                 consequence is past its threshold), with normal 95 % intervals (rule of three when no trial is past)",
+                 rare_event.time_s, falling; the event's rate is the mean of the trials' seas' crossing rates (its interval \
+                 the spread of the seeds' sampled spectra); a rate past a threshold is that rate times the share of \
+                 trials past it, with Wilson's 95 % interval of the share",
     })
 }
 
