@@ -239,6 +239,85 @@ await check("the Monte Carlo's Rice note is computed from the numbers it compare
   await c.close();
 });
 
+// The words that compare numbers come from the numbers: the page's own routines, given two means
+// 40 % apart and two equal ones, say "differ" and "agree" (and which way), in the page itself.
+await check('Monte Carlo and rare-event words: two means 40 % apart are never called agreeing, equal ones are', async () => {
+  const c = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  const p = await open(link('mc-arrival'), c);
+  const out = await p.evaluate(async () => {
+    const mc = await import('./js/montecarlo.js');
+    const rare = await import('./js/rare.js');
+    const arrival = (mean, meanCensored) => ({ mean, std: 10, mean_censored: meanCensored, std_censored: 10, events: 200, cap_s: 90, skewness: 2, kurtosis: 9 });
+    const rice = (meanCensored) => ({ mean_censored_with_start_s: meanCensored, rate_per_s: 1 / 20 });
+    const th = (v) => (key) => ({ 'table_5_8.rice.mean_s': 20, 'table_5_8.monte_carlo.mean_s': v, 'table_5_8.monte_carlo.std_s': 10, 'table_5_8.monte_carlo.trials': 189 })[key] ?? null;
+    const excess = (calm) => ({ mean: -5, std: 7, vs_calm_water: { mean: calm, std: 57 } });
+    return {
+      apart: mc.meanWords(14, 0.5, 10, 0.5, 's'), same: mc.meanWords(10, 0.5, 10, 0.5, 's'), within: mc.meanWords(10.5, 0.5, 10, 0, 's'),
+      noSpread: mc.meanWords(14, 0, 10, 0, 's'), oneTrial: mc.meanWords(14, NaN, 10, 0, 's'),
+      riceApart: mc.riceComparison(arrival(14, 14), rice(10), 200), riceSame: mc.riceComparison(arrival(10, 10), rice(10), 200),
+      riceFlat: mc.riceComparison({ ...arrival(90, 90), std_censored: 0 }, rice(89.97), 2),
+      thesisApart: mc.table58Comparison(arrival(14, 14), rice(10), th(10)), thesisSame: mc.table58Comparison(arrival(10, 10), { rate_per_s: 1 / 20 }, th(10)),
+      excessApart: mc.excessComparison(excess(140), 100, { mean: 100, std: 33 }), excessSame: mc.excessComparison(excess(100), 100, { mean: 100, std: 33, printedMean: '100', printedStd: '33' }),
+      rareIn: rare.riceWords({ per_hour: 100, low_per_hour: 95, high_per_hour: 105 }, 100), rareOut: rare.riceWords({ per_hour: 100, low_per_hour: 95, high_per_hour: 105 }, 140),
+    };
+  });
+  const says = (name, re) => assert(re.test(typeof out[name] === 'string' ? out[name] : out[name].text), `${name}: ${JSON.stringify(out[name])}`);
+  const never = (name, re) => assert(!re.test(typeof out[name] === 'string' ? out[name] : out[name].text), `${name}: ${JSON.stringify(out[name])}`);
+  assert(!out.apart.agree && out.same.agree && out.within.agree && !out.noSpread.agree && !out.oneTrial.agree, JSON.stringify(out));
+  says('apart', /^differ: ours is 4\.0 s \(40 %\) above/); never('apart', /agree|close|similar/);
+  says('same', /^agree/); says('noSpread', /no spread/); says('oneTrial', /one trial/);
+  says('riceApart', /differ by 4\.0 s.*later than Poisson/); never('riceApart', /agree|stay close/);
+  says('riceSame', /The means of min\(T, cap\) agree/);
+  says('riceFlat', /no spread between the 2 trials/); never('riceFlat', /one trial|agree/);
+  says('thesisApart', /Monte Carlo means .* differ: ours is 4\.0 s \(40 %\) above/); never('thesisApart', /Monte Carlo means \([^)]*\) agree/);
+  says('thesisSame', /Monte Carlo means .* agree.*Rice's means .* agree within 1 %/);
+  says('excessApart', /one motor draws 5\.000 MJ less/); says('excessApart', /differ: ours is 40 MJ \(40 %\) above.*1\.40 times the thesis'/); never('excessApart', /thesis' [^.]*agree/);
+  says('excessSame', /calm water and the thesis' 100 ± 33 MJ .*agree/);
+  says('rareIn', /^within the trials' 95 % interval/); says('rareOut', /^outside the trials' 95 % interval: 40 % above/);
+  await c.close();
+});
+
+// At the studies' own trials, the texts beside the numbers: the words follow what the tables show
+// (an excess energy's sign, ours against the thesis' Table 5.8 and ch. 5.4.1), and no stale figure
+// or claim of the old texts is left.
+await check("at their own trials, the Monte Carlo studies' texts say what their numbers show", async () => {
+  const c = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  const stale = /stay close|million times|this is the thesis' figure|alone cost|over (100|200|50) random seas/;
+  const cells = (p) => p.$$eval('#plots table', (ts) => ts.filter((t) => t.caption).map((t) => [t.caption.textContent, [...t.tBodies[0].rows].map((r) => [...r.cells].map((x) => x.textContent))]));
+  const ratioWords = (text, ours, theirs) => {
+    const rel = Math.abs(ours - theirs) / theirs;
+    assert(Number.isFinite(rel), `not numbers: ${ours}, ${theirs}`);
+    if (rel > 0.2) assert(/differ/.test(text) && !/\) agree/.test(text), `${ours} against ${theirs} (${Math.round(100 * rel)} % apart) in: ${text}`);
+  };
+  const p = await open(link('mc-arrival'), c);
+  await pressAndWait(p, '#mc-run');
+  let text = `${await p.textContent('#about')} ${await p.textContent('#watch')} ${await p.textContent('#plots')}`;
+  assert(!stale.test(text), `stale text: ${(text.match(stale) || [])[0]}`);
+  const t58 = (await cells(p)).find(([cap]) => /Table 5\.8/.test(cap))[1];
+  const mean = t58.find(([n]) => n === 'mean').map(Number);
+  const note = await p.textContent('#thesis-note');
+  ratioWords(note.split(';')[0], mean[2], mean[4]);
+  ratioWords(note.split(';')[1], mean[1], mean[3]);
+  assert(/below/.test(note.split(';')[0]) === mean[2] < mean[4], `which way: ${note}`);
+  const rice = await p.textContent('#rice-note');
+  const [, mcCens, riceCens] = (await p.textContent('#plots')).match(/mean of min\(T, cap\) ([\d.]+) s, Rice ([\d.]+) s/).map(Number);
+  if (Math.abs(mcCens - riceCens) / riceCens > 0.2) assert(!/agree/.test(rice), `${mcCens} s against ${riceCens} s called agreeing: ${rice}`);
+  const p2 = await open(link('mc-excess-energy'), c);
+  await pressAndWait(p2, '#mc-run');
+  text = `${await p2.textContent('#about')} ${await p2.textContent('#watch')} ${await p2.textContent('#plots')}`;
+  assert(!stale.test(text), `stale text: ${(text.match(stale) || [])[0]}`);
+  const summary = (await cells(p2)).find(([cap]) => cap === 'Monte Carlo summary')[1];
+  const vsSub = Number(summary.find(([n]) => /submerged/.test(n))[1].split(' ± ')[0]);
+  const calmRow = summary.find(([n]) => /calm water/.test(n));
+  const vsCalm = Number(calmRow[1].split(' ± ')[0]), thesisCalm = Number(calmRow[0].match(/thesis: ([\d.]+)/)[1]);
+  const excess = await p2.textContent('#excess-note');
+  assert(excess.includes(`draws ${Math.abs(vsSub).toPrecision(4)} MJ ${vsSub < 0 ? 'less' : 'more'}`) || /tell from nil/.test(excess), `excess ${vsSub} MJ in: ${excess}`);
+  ratioWords(excess.slice(excess.indexOf('Ours against calm water')), vsCalm, thesisCalm);
+  const titles = await p2.$$eval('#plots h3', (h) => h.map((x) => x.textContent));
+  assert(titles.filter((t) => /Fig\. 5-22/.test(t)).every((t) => /calm water/.test(t)), `Fig. 5-22 beside another excess: ${titles.join(' | ')}`);
+  await c.close();
+});
+
 // Where things are: Run above the fold at 1366x768, the plots up in presentation mode and on the
 // phone, one main landmark, and axe after a run and after a Monte Carlo study at every size.
 const SIZES = [[1366, 768], [1920, 1080], [390, 844]];

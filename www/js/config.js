@@ -73,16 +73,17 @@ export const STUDIES = {
     watch: 'Heave and pitch are strong in head seas and weak in following seas (Figs. 5-16 to 5-19). The arrow on the track shows where the waves come from.',
     compare: [{ label: 'calm water', preset: 'turn-360' }] },
   'mc-excess-energy': { title: 'Monte Carlo: excess energy', plots: ['motor', 'hr', 'speed'], params: ['monte_carlo.trials', 'ship.hull.hub_above_base_m', 'seakeeping.stern_motion'],
-    about: 'Monte Carlo over 100 random seas of 80 s at 25 knots in head seas SS6, with a 4.8 m propeller only 4 m deep (thesis ch. 5.4.1, Figs. 5-20 to 5-23): how much extra energy the motors draw because of surface effects, and how their power spreads over the trials.',
-    watch: 'Press Monte Carlo (Run shows one trial): the envelope of motor power, the excess energy per trial and its histogram (Figs. 5-20 to 5-23).' },
+    about: 'Monte Carlo over random seas of 80 s at 25 knots in head seas SS6, with a 4.8 m propeller only 4 m deep (thesis ch. 5.4.1, Figs. 5-20 to 5-23): the energy one motor draws over the run against the same sea without surface losses and against calm water, and how its power spreads over the trials. The summary says which way each difference goes and how it stands beside the thesis\' figure.',
+    watch: 'Press Monte Carlo (Run shows one trial): the envelope of motor power, the excess energy per trial and its histograms (Figs. 5-20 to 5-23).' },
   'mc-arrival': { title: 'Monte Carlo: when the first surface effect arrives', plots: ['hr', 'motor', 'beta'], params: ['monte_carlo.trials', 'ship.hull.hub_above_base_m', 'seakeeping.stern_motion'],
+    about: 'Monte Carlo at 25 knots in head seas SS6 with a 4.8 m propeller 6 m deep, each trial stopped 12 s after its first surface effect or at 90 s (thesis ch. 5.4.2, Table 5.8, Figs. 5-24 and 5-25): the arrival times against Rice\'s up-crossing rate. Uses the hub depth of eq. 2.57 as printed, as the thesis did; with the consistent sign (seakeeping.stern_motion) such events are far rarer: switch it and press Monte Carlo to see Rice\'s rate for each.',
     watch: 'Press Monte Carlo (Run shows one trial): the arrival times of the first surface effect against Rice\'s prediction (Table 5.8, Fig. 5-24).' },
 };
 STUDIES['wigley-head-seas'] = { title: 'The Wigley hull in head seas', plots: ['heave', 'pitch', 'hr', 'motor', 'rpm'], params: ['ship.hull.hub_above_base_m', 'sea.sea_state', 'sim.seed'],
   watch: 'The same plant on the Wigley hull, the classic seakeeping test hull (L 100 m): at 20 knots the energetic waves of sea state 5 meet it near its heave and pitch resonance, so it heaves and pitches far more than the destroyer would. The hull panel under the plots draws its body plan and gives its hydrostatics; the hull picker above Run loads offsets of your own.',
   compare: [{ label: 'the destroyer (DTMB 5415)', set: { 'ship.hull.name': 'dtmb5415' } }] };
 STUDIES['mc-wigley'] = { title: 'Monte Carlo on the Wigley hull', plots: ['motor', 'hr', 'rpm'], params: ['monte_carlo.trials', 'ship.hull.hub_above_base_m', 'sim.seed'],
-  watch: 'Press Monte Carlo (Run shows one trial): how motor power, hub depth and shaft speed spread over 50 random seas on a hull other than the thesis\' destroyer.' };
+  watch: 'Press Monte Carlo (Run shows one trial): how motor power, hub depth and shaft speed spread over random seas on a hull other than the thesis\' destroyer.' };
 // What the page calls a study it has no entry for (a new preset): its name.
 export const studyTitle = (name) => (STUDIES[name] && STUDIES[name].title) || name;
 
@@ -181,7 +182,9 @@ export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, ons
   thesisStudies: { table58: ['mc-arrival'], calmWater: ['mc-excess-energy'] },
   // The fixed part of the Rice note; montecarlo.js adds what the numbers it compares say.
   riceNote: 'Rice\'s rate counts up-crossings of a stationary Gaussian response and treats them as rare, independent events, so that arrival times are exponential: that holds for a level many standard deviations away; nearer, crossings come in clusters on wave groups.',
-  excessNote: 'Two excess energies: against the same sea with surface losses switched off (the submerged counterpart: what ventilation and emergence alone cost), and against calm water (which adds the added resistance of the waves; this is the thesis\' figure).' };
+  // The fixed part of the excess-energy note; montecarlo.js adds what the numbers say (their sign,
+  // and how ours stands beside the thesis').
+  excessNote: 'Two excess energies of one motor over the run: against the same sea with surface losses switched off (the submerged counterpart: what ventilation and emergence alone change), and against calm water (which adds the added resistance of the waves and the speed control\'s work in them; the thesis\' figure is of this kind, though it does not print its reference).' };
 
 // Stability tab: presentation only. The operating point's defaults, ranges, labels and units, the
 // synchronous speed and the Bode range come from the wasm (ipsMeta); here the controls' steps (by

@@ -61,20 +61,83 @@ export class MonteCarlo {
 // mean, std, skewness, kurtosis, median, mode.
 function exponentialMoments(lam) { return [1 / lam, 1 / lam, 2, 9, Math.LN2 / lam, 0]; }
 
+// A share as a person reads it: "71 %", "106 %", "4.6 %".
+const percent = (x) => `${100 * x >= 10 ? Math.round(100 * x) : fmt(100 * x, 2)} %`;
+
+// Two means in words computed from their numbers: `ours` with its standard error `se` against
+// `ref` with its own (`refSe`, 0 for a number without one, like an analytic value): they agree
+// within two joint standard errors; otherwise how far apart, in the unit, in per cent of `ref` and
+// in joint standard errors, and which way. Without a spread to judge by (one trial, or trials all
+// equal) it says so and claims no agreement. `unit` follows each number ('' for none).
+export function meanWords(ours, se, ref, refSe = 0, unit = '') {
+  const u = unit ? ` ${unit}` : '';
+  const d = ours - ref, joint = Math.hypot(Number.isFinite(se) ? se : NaN, Number.isFinite(refSe) ? refSe : 0);
+  const k = Math.abs(d) / joint;
+  if (d === 0) return { agree: true, text: `agree: they are equal` };
+  const pct = ref !== 0 ? ` (${percent(Math.abs(d) / Math.abs(ref))})` : '';
+  const seWords = `${refSe > 0 ? 'joint ' : ''}standard error${Math.abs(k - 1) < 1e-9 ? '' : 's'} (${fmt(joint, 2)}${u})`;
+  if (Number.isFinite(k) && k <= 2) return { agree: true, text: `agree: they differ by ${fmt(Math.abs(d), 2)}${u}, ${fmt(k, 2)} ${seWords}` };
+  const way = d < 0 ? 'below' : 'above';
+  const why = Number.isFinite(k) ? `${fmt(k, 2)} ${seWords}` : joint === 0 && Number.isFinite(se) ? 'with no spread between the trials to judge by' : 'with no standard error (one trial)';
+  return { agree: false, text: `differ: ours is ${fmt(Math.abs(d), 2)}${u}${pct} ${way}, ${why}` };
+}
+
 // Rice against the trials in words computed from the numbers compared: the mean of min(T, cap),
 // Rice's counting the trials that start past the level at 0, against the Monte Carlo's within
 // two of its standard errors; the shape of the arrival times against the exponential's.
 export function riceComparison(a, r, trials) {
   const mc = a.mean_censored, rice = r.mean_censored_with_start_s;
   if (mc == null || !trials) return MC.riceNote;
-  const se = a.std_censored == null ? NaN : a.std_censored / Math.sqrt(trials);
+  const se = a.std_censored == null || trials < 2 ? NaN : a.std_censored / Math.sqrt(trials);
   const d = mc - rice, k = Math.abs(d) / se;
+  const why = Number.isFinite(k) ? `${fmt(k, 2)} standard errors of the Monte Carlo (${fmt(se, 2)} s)`
+    : trials < 2 ? 'with no standard error (one trial)' : `with no spread between the ${trials} trials to judge by`;
   const means = Number.isFinite(k) && k <= 2
-    ? `The means of min(T, cap) agree: they differ by ${fmt(Math.abs(d), 2)} s, ${fmt(k, 2)} standard errors of the Monte Carlo (${fmt(se, 2)} s).`
-    : `The means of min(T, cap) differ by ${fmt(Math.abs(d), 2)} s, ${Number.isFinite(k) ? `${fmt(k, 2)} standard errors of the Monte Carlo (${fmt(se, 2)} s)` : 'with no standard error (one trial)'}: the Monte Carlo's first surface effect comes ${d < 0 ? 'sooner' : 'later'} than Poisson arrivals at Rice's rate.`;
+    ? `The means of min(T, cap) agree: they differ by ${fmt(Math.abs(d), 2)} s, ${why}.`
+    : d === 0 ? `The means of min(T, cap) are equal, ${why}.`
+      : `The means of min(T, cap) differ by ${fmt(Math.abs(d), 2)} s, ${why}: the Monte Carlo's first surface effect comes ${d < 0 ? 'sooner' : 'later'} than Poisson arrivals at Rice's rate${Number.isFinite(k) ? '' : ' (too few trials to tell)'}.`;
   const word = (x, ref) => (x == null ? 'undefined' : x < ref ? `${fmt(x, 2)}, short of the exponential's ${ref}` : `${fmt(x, 2)}, above the exponential's ${ref}`);
   const shape = a.events > 2 ? ` Skewness ${word(a.skewness, 2)}; kurtosis ${word(a.kurtosis, 9)} (each trial is cut off at ${a.cap_s} s).` : '';
   return `${MC.riceNote} ${means}${shape}`;
+}
+
+// Ours against the thesis' Table 5.8 in words from the numbers of the table: the Monte Carlo mean
+// arrival time (standard errors of both, the thesis' from its trials) and Rice's mean (analytic on
+// both sides: within 1 % or how far and which way). `th(key)` gives a thesis row's value (null
+// when missing).
+export function table58Comparison(a, r, th) {
+  const [thRice, thMc, thStd, thTrials] = ['table_5_8.rice.mean_s', 'table_5_8.monte_carlo.mean_s', 'table_5_8.monte_carlo.std_s', 'table_5_8.monte_carlo.trials'].map(th);
+  const parts = [];
+  if (a.mean != null && thMc != null) {
+    const w = meanWords(a.mean, a.events > 1 ? a.std / Math.sqrt(a.events) : NaN, thMc, thStd != null && thTrials ? thStd / Math.sqrt(thTrials) : 0, 's');
+    parts.push(`the Monte Carlo means (ours ${fmt(a.mean)} s from ${a.events} events, the thesis' ${fmt(thMc)} s from ${thTrials || 'its'} trials) ${w.text}`);
+  }
+  if (r && r.rate_per_s > 0 && thRice != null) {
+    const ours = 1 / r.rate_per_s, rel = (ours - thRice) / thRice;
+    parts.push(`Rice's means (ours ${fmt(ours)} s, the thesis' ${fmt(thRice)} s) ${Math.abs(rel) <= 0.01 ? 'agree within 1 %' : `differ: ours is ${percent(Math.abs(rel))} ${rel < 0 ? 'shorter' : 'longer'}`}`);
+  }
+  return parts.length ? `Against the thesis' Table 5.8: ${parts.join('; ')}. docs/validation.md (Table 5.8) gives what is known of the causes.` : '';
+}
+
+// The excess energy in words from its numbers: against the submerged counterpart (its sign and
+// whether it is distinguishable from nil), and against calm water beside the thesis' figure of the
+// same kind when there is one (`thesis`: {mean, std}; its trials are not in the thesis' numbers,
+// so only our standard error counts).
+export function excessComparison(e, trials, thesis = null) {
+  const se = (m) => (trials > 1 && m.std != null ? m.std / Math.sqrt(trials) : NaN);
+  const sub = se(e), calm = se(e.vs_calm_water);
+  const zero = meanWords(e.mean, sub, 0, 0, 'MJ');
+  const vsSub = zero.agree
+    ? `Against the same sea without surface losses, ${fmt(e.mean)} ± ${fmt(sub, 2)} MJ (mean ± standard error): no difference the trials can tell from nil (${fmt(Math.abs(e.mean) / sub, 2)} standard errors).`
+    : `Against the same sea without surface losses, one motor draws ${fmt(Math.abs(e.mean))} MJ ${e.mean < 0 ? 'less' : 'more'} over the run (± ${fmt(sub, 2)} MJ, standard error${Number.isFinite(sub) && sub > 0 ? `; ${fmt(Math.abs(e.mean) / sub, 2)} standard errors from nil` : ''}): surface effects ${e.mean < 0 ? 'shed load (the motor works less)' : 'cost energy'}.`;
+  const c = e.vs_calm_water;
+  let vsCalm = `Against calm water: ${fmt(c.mean)} ± ${fmt(calm, 2)} MJ (mean ± standard error).`;
+  if (thesis && thesis.mean != null) {
+    const w = meanWords(c.mean, calm, thesis.mean, 0, 'MJ');
+    const printed = `${thesis.printedMean || fmt(thesis.mean)}${thesis.std != null ? ` ± ${thesis.printedStd || fmt(thesis.std)}` : ''} MJ`;
+    vsCalm += ` Ours against calm water and the thesis' ${printed} (against a reference it does not print) ${w.text}${w.agree || !(thesis.mean > 0) ? '' : `, ${fmt(c.mean / thesis.mean, 3)} times the thesis'`}. docs/validation.md (ch. 5.4.1) gives what is known of the causes.`;
+  }
+  return `${MC.excessNote} ${vsSub} ${vsCalm}`;
 }
 
 function table(caption, rows, head) {
@@ -99,6 +162,11 @@ function thesisPrinted(thesis, key) {
   const row = (thesis || []).find((t) => t.key === key);
   return row ? row.printed : 'missing';
 }
+// The same row's value as a number (null when missing).
+function thesisValue(thesis, key) {
+  const row = (thesis || []).find((t) => t.key === key);
+  return row && Number.isFinite(Number(row.value)) ? Number(row.value) : null;
+}
 
 // The study's summary: tables, then envelopes, histograms, onset and periodogram plots.
 // onReplay(i): replay trial i as a single run in the live views; onPickBar(hist, bin): replay a
@@ -111,7 +179,7 @@ export function showMonteCarlo(box, s, signals, constants, { onReplay = null, on
   const th = (key) => thesisPrinted(thesis, key);
   const rows = [['Trials', s.trials], ['Seed', s.seed]];
   const [calmMean, calmStd] = MC.calmWater.map(th);
-  if (e) rows.push(['Excess energy vs submerged counterpart [MJ]', `${fmt(e.mean)} ± ${fmt(e.std)}`], [`Excess energy vs calm water [MJ]${own('calmWater') ? ` (thesis: ${calmMean} ± ${calmStd})` : ''}`, `${fmt(e.vs_calm_water.mean)} ± ${fmt(e.vs_calm_water.std)}`]);
+  if (e) rows.push(['Excess energy vs submerged counterpart [MJ], mean ± std', `${fmt(e.mean)} ± ${fmt(e.std)}`], [`Excess energy vs calm water [MJ], mean ± std${own('calmWater') ? ` (thesis: ${calmMean} ± ${calmStd})` : ''}`, `${fmt(e.vs_calm_water.mean)} ± ${fmt(e.vs_calm_water.std)}`]);
   rows.push(['First surface effects / censored', `${a.events} / ${a.censored} (cap ${a.cap_s} s)`]);
   // An h2 before the plots' h3 titles (the run's summary, which has one, is hidden here).
   const info = box.panel(null, box.generation, false, el('h2', { textContent: `Monte Carlo: ${s.trials} trials` }), table('Monte Carlo summary', rows));
@@ -126,8 +194,12 @@ export function showMonteCarlo(box, s, signals, constants, { onReplay = null, on
       el('p', { className: 'about', textContent: `Rice: the level Z = ${fmt(r.z_m, 3)} m. The trials count the first surface effect on either shaft: Rice's rate of that event is ${fmt(r.rate_per_s, 3)} per second, the union of the two hubs' up-crossings from their joint statistics (each hub alone ${r.hubs.map((h) => `${h.shaft} ${fmt(h.rate_per_s, 3)}`).join(', ')} per second, correlation ${fmt(r.hub_correlation, 3)}; their sum, an upper bound, ${fmt(r.sum_bound_rate_per_s, 3)}).` }),
       el('p', { className: 'about', textContent: `Censored at ${a.cap_s} s alike: Monte Carlo mean of min(T, cap) ${fmt(a.mean_censored)} s, Rice ${fmt(r.mean_censored_with_start_s)} s (with the ${fmt(100 * r.start_past_level_probability, 2)} % of trials that start with a hub past the level counted at 0).` }),
       el('p', { className: 'about', id: 'rice-note', textContent: riceComparison(a, r, s.trials) }));
+    if (own('table58')) info.append(el('p', { className: 'about', id: 'thesis-note', textContent: table58Comparison(a, r, (key) => thesisValue(thesis, key)) }));
   }
-  if (e) info.append(el('p', { className: 'about', textContent: MC.excessNote }));
+  if (e) {
+    const [mean, std] = MC.calmWater.map((key) => thesisValue(thesis, key));
+    info.append(el('p', { className: 'about', id: 'excess-note', textContent: excessComparison(e, s.trials, own('calmWater') ? { mean, std, printedMean: calmMean, printedStd: calmStd } : null) }));
+  }
   if (onReplay) {
     // Any trial replays as a single run: its seed, trial_seed(seed, i), reproduces it.
     const first = (s.traces || [])[0];
@@ -166,7 +238,12 @@ export function showMonteCarlo(box, s, signals, constants, { onReplay = null, on
   const ht = s.histogram_at_t;
   const pick = (hist) => (onPickBar ? (bin) => onPickBar(hist, bin) : null);
   if (ht.n > 0) box.histogram(`${signals.labelWithUnit(ht.signal, constants)} at t = ${ht.t_s} s (Fig. 5-21), skewness ${fmt(ht.skewness, 3)}${ht.n < s.trials ? `, from the ${ht.n} of ${s.trials} trials still running then` : ''}`, ht.histogram, signals.labelWithUnit(ht.signal, constants), null, undefined, pick('at_time'));
-  if (e) box.histogram(`Excess energy per trial vs the submerged counterpart [MJ] (Fig. 5-22): ${fmt(e.mean)} ± ${fmt(e.std)}`, e.histogram, 'excess energy [MJ]', null, undefined, pick('excess'));
+  // Fig. 5-22's kind is the excess against calm water (the thesis' reference is not printed; against
+  // the submerged counterpart the sign can differ): each caption says which it is.
+  if (e) {
+    box.histogram(`Excess energy per trial vs calm water [MJ] (ch. 5.4.1's kind, Fig. 5-22): mean ${fmt(e.vs_calm_water.mean)}, std ${fmt(e.vs_calm_water.std)}`, e.vs_calm_water.histogram, 'excess energy vs calm water [MJ]', null, undefined, pick('excess_vs_calm'));
+    box.histogram(`Excess energy per trial vs the submerged counterpart [MJ] (surface losses alone): mean ${fmt(e.mean)}, std ${fmt(e.std)}`, e.histogram, 'excess energy vs submerged [MJ]', null, undefined, pick('excess'));
+  }
   if (a.events > 0) {
     const h = a.histogram, w = (h.hi - h.lo) / h.counts.length, total = s.trials;
     const overlay = r ? { label: `exponential, Rice rate ${fmt(r.rate_per_s, 3)}/s`, values: h.counts.map((_, i) => total * (Math.exp(-r.rate_per_s * (h.lo + i * w)) - Math.exp(-r.rate_per_s * (h.lo + (i + 1) * w)))) } : null;

@@ -23,6 +23,14 @@ function hoursWords(h) {
   return `${fmt(h, 3)} hours${plain ? ` (${plain})` : ''}`;
 }
 const perHour = (x) => `${fmt(x, 4)} per hour`;
+// Rice's rate beside the trials' in words from the numbers: inside their 95 % interval, or how far
+// outside and which way.
+export function riceWords(r, rice) {
+  if (!Number.isFinite(rice) || !(r.per_hour > 0)) return 'with no rate from the trials to set it against';
+  if (rice >= r.low_per_hour && rice <= r.high_per_hour) return 'within the trials\' 95 % interval';
+  const rel = Math.abs(rice - r.per_hour) / r.per_hour;
+  return `outside the trials' 95 % interval: ${rel >= 0.1 ? Math.round(100 * rel) : fmt(100 * rel, 2)} % ${rice < r.per_hour ? 'below' : 'above'} their rate`;
+}
 
 export class RareView {
   // inputs(): {study, title, scenario, invalid} of the simulator's form, or null while it loads;
@@ -263,7 +271,7 @@ export class RareView {
       : `No event in ${s.trials} trials`;
     $('rare-event-line').textContent = `The event: ${s.event}, at ${fmt(r.per_hour, 4)} per hour.`;
     const simulated = s.simulated_s >= 3600 ? `${fmt(s.simulated_s / 3600, 3)} h` : `${fmt(s.simulated_s / 60, 3)} min`;
-    $('rare-facts').textContent = `Crossing rate ${perHour(r.per_hour)} (95 %: ${fmt(r.low_per_hour, 4)} to ${fmt(r.high_per_hour, 4)}), from ${s.trials} trials (${simulated} simulated); Rice's formula for the hub's depth swing gives ${perHour(s.rice_per_hour)}. Hub ${fmt(s.hub_depth_m, 3)} m below the calm surface, ship at ${fmt(s.speed_kn, 3)} kn; the hub's depth swings with a standard deviation of ${fmt(s.hub_sigma_m, 3)} m, and the level h/R = ${s.level_h_over_r} lies ${fmt(s.level_sigmas, 3)} standard deviations from the calm hub depth.`;
+    $('rare-facts').textContent = `Crossing rate ${perHour(r.per_hour)} (95 %: ${fmt(r.low_per_hour, 4)} to ${fmt(r.high_per_hour, 4)}), from ${s.trials} trials (${simulated} simulated); Rice's formula for the hub's depth swing gives ${perHour(s.rice_per_hour)}, ${riceWords(r, s.rice_per_hour)}. Hub ${fmt(s.hub_depth_m, 3)} m below the calm surface, ship at ${fmt(s.speed_kn, 3)} kn; the hub's depth swings with a standard deviation of ${fmt(s.hub_sigma_m, 3)} m, and the level h/R = ${s.level_h_over_r} lies ${fmt(s.level_sigmas, 3)} standard deviations from the calm hub depth.`;
     $('rare-method').textContent = `Method: ${s.method}. h/R at the event as the runs recorded it: mean ${fmt(s.h_over_r_at_event_mean, 4)}, at most ${fmt(s.h_over_r_at_event_worst, 2)} from the level.`;
     $('rare-wave').textContent = 'Show the most likely wave group';
     this.histograms(s);
