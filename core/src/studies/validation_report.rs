@@ -2559,6 +2559,57 @@ mod tests {
         assert!(md.contains("| q | - - | s | 1 |") && md.contains("missing reference"), "{md}");
     }
 
+    /// The opening counts each kind of row apart: an as-printed row or a calibration never adds to
+    /// the thesis comparisons' passes, and a failing row is counted under its own kind.
+    #[test]
+    fn the_opening_counts_each_kind_apart() {
+        let pass = row("a", "s", 1.0, 1.0, "-", Tolerance::Abs(0.1), "");
+        let rows = vec![
+            pass.clone(),
+            pass.clone().chosen("a rate".into()),
+            row("b", "s", 1.0, 2.0, "-", Tolerance::Abs(0.1), "").kind(Kind::Analytic),
+            explained("c", "s", 1.0, 3.0, "-", "").shown(Kind::AsPrinted),
+            calibrated("d", "s", 1.0, 1.0, "-", Tolerance::Abs(0.1), "").kind(Kind::Copied),
+            pass.kind(Kind::Experiment),
+        ];
+        let sec = Section { finding: "A finding.".into(), title: "t", note: String::new(), rows, figures: Vec::new() };
+        let md = markdown(&[sec], Size::default());
+        assert!(md.contains("A finding."), "{md}");
+        assert!(md.contains("Of 6 rows, 2 compare our model with a number the thesis gives for the same case; 2 of those pass independently (1 of them only at an input chosen for it"), "{md}");
+        assert!(md.contains("| 2 | 2 pass, 0 fail, 0 explained, 0 open |"), "{md}");
+        assert!(
+            md.contains("(closed forms, limits, energy books) | 1 | 0 pass, 1 fail, 0 explained, 0 open |"),
+            "{md}"
+        );
+        assert!(md.contains("(a sensitivity, not a comparison) | 1 | 1 shown |"), "{md}");
+        assert!(md.contains("a thesis number copied into a parameter | 1 | 1 within |"), "{md}");
+        assert!(md.contains("(Journee 1992, Wigley III) | 1 | 1 pass"), "{md}");
+        assert!(md.contains("1 row(s) fail"), "{md}");
+        assert!(md.contains("| pass, at a chosen input | chosen input: a rate |"), "{md}");
+    }
+
+    /// A row over seeds takes the median as ours and is judged by it; the spread counts the seeds
+    /// within the tolerance and the table shows the range.
+    #[test]
+    fn a_row_over_seeds_is_judged_by_its_median() {
+        let values: Vec<f64> = SEEDS.map(|s| s as f64).collect();
+        let r = seeded(row("q", "s", 5.0, 0.0, "-", Tolerance::Abs(1.0), ""), values.clone());
+        assert_eq!((r.ours, r.verdict), (5.5, Verdict::Pass));
+        assert_eq!(r.spread.as_ref().and_then(|s| s.within), Some(3));
+        assert_eq!(r.spread.as_ref().map(Spread::range), Some((1.0, 10.0)));
+        let far = seeded(row("q", "s", 9.0, 9.0, "-", Tolerance::Abs(1.0), ""), values.clone());
+        assert_eq!((far.verdict, far.spread.as_ref().and_then(|s| s.within)), (Verdict::Fail, Some(3)));
+        let o = seeded(open("q", "s", 9.0, 0.0, "-", ""), values);
+        assert_eq!((o.verdict, o.spread.as_ref().and_then(|s| s.within)), (Verdict::Open, None));
+        let sec =
+            Section { finding: String::new(), title: "t", note: String::new(), rows: vec![r], figures: Vec::new() };
+        let md = markdown(&[sec], Size::default());
+        assert!(
+            md.contains("| 5.5 (median; 1 to 10 over 10 seeds) |") && md.contains("| pass (3 of 10 seeds within) |"),
+            "{md}"
+        );
+    }
+
     /// A key the file has gives its printed number (a percentage as a fraction), and the row
     /// compares with it.
     #[test]
