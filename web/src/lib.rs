@@ -422,7 +422,8 @@ fn operability_inputs(
 pub fn rao_table_load(json: JsValue, values: &[f64]) -> Result<(), JsError> {
     let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let hull = sc.ship_hull().map_err(|e| JsError::new(&e))?;
-    aes_core::sea::rao_cache::insert_rao_table(&hull, &sc.seakeeping.grid, &sc.as_printed, values)
+    let sk = &sc.seakeeping;
+    aes_core::sea::rao_cache::insert_rao_table(&hull, &sk.grid, &sc.as_printed, sk.aft_end_terms, values)
         .map_err(|e| JsError::new(&e))
 }
 
@@ -437,7 +438,8 @@ pub fn rao_json(json: JsValue, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>
     if !(speed_kn.is_finite() && (0.0..=40.0).contains(&speed_kn) && heading_deg.is_finite()) {
         return Err(JsError::new("RAOs: speed 0 to 40 kn and a finite heading"));
     }
-    let ship = sc.ship_hull().and_then(|h| h.strip_ship()).map_err(|e| JsError::new(&e))?;
+    let mut ship = sc.ship_hull().and_then(|h| h.strip_ship()).map_err(|e| JsError::new(&e))?;
+    ship.aft_end_terms = sc.seakeeping.aft_end_terms;
     let v = aes_core::sea::seakeeping::tables::rao_json(
         &ship,
         speed_kn * aes_core::numerics::units::KNOT_M_S,

@@ -11,7 +11,7 @@ pub struct Args {
     #[arg(long)]
     hull: Option<String>,
     /// Take the hull and its loading from this scenario's `ship.hull` (file, `-` or
-    /// `preset:NAME`): the RAOs its runs use.
+    /// `preset:NAME`), and its `seakeeping.aft_end_terms`: the RAOs its runs use.
     #[arg(long)]
     scenario: Option<String>,
     /// Waterline above the baseline [m] (default: the hull's design draft).
@@ -51,9 +51,12 @@ pub fn run(
     if !(roll_wave_amplitude.is_finite() && (0.01..=20.0).contains(&roll_wave_amplitude)) {
         return Err(format!("--roll-wave-amplitude = {roll_wave_amplitude} is outside [0.01, 20]").into());
     }
-    let mut ship = match &scenario {
-        Some(path) => load(path, &[])?.ship,
-        None => aes_core::scenario::ShipParams::default(),
+    let (mut ship, aft_end_terms) = match &scenario {
+        Some(path) => {
+            let sc = load(path, &[])?;
+            (sc.ship, sc.seakeeping.aft_end_terms)
+        }
+        None => (aes_core::scenario::ShipParams::default(), true),
     };
     let spec = &mut ship.hull;
     if let Some(h) = &hull {
@@ -83,7 +86,8 @@ pub fn run(
         )
     })?;
     let resolved = ship.hull.resolve(ship.water_density_kg_m3).map_err(|(f, e)| format!("hull.{f}: {e}"))?;
-    let strips = resolved.strip_ship()?;
+    let mut strips = resolved.strip_ship()?;
+    strips.aft_end_terms = aft_end_terms;
     let v = rao_json(
         &strips,
         speed_kn * aes_core::numerics::units::KNOT_M_S,

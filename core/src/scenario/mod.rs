@@ -402,9 +402,11 @@ impl Scenario {
         }
     }
 
-    /// The RAO table of this scenario's hull, grid and strip-theory switches (built once, shared).
+    /// The RAO table of this scenario's hull, grid and strip-theory switches (`as_printed`'s and
+    /// `seakeeping.aft_end_terms`; built once, shared).
     pub fn rao_table(&self) -> Result<std::sync::Arc<crate::sea::seakeeping::tables::RaoTable>, String> {
-        crate::sea::rao_cache::rao_table(&self.ship_hull()?, &self.seakeeping.grid, &self.as_printed)
+        let sk = &self.seakeeping;
+        crate::sea::rao_cache::rao_table(&self.ship_hull()?, &sk.grid, &self.as_printed, sk.aft_end_terms)
     }
 
     /// [`Self::rao_table`] with the build's parts run by `each` (side by side on the command
@@ -413,7 +415,8 @@ impl Scenario {
         &self,
         each: &dyn crate::sea::seakeeping::tables::ForEach,
     ) -> Result<std::sync::Arc<crate::sea::seakeeping::tables::RaoTable>, String> {
-        crate::sea::rao_cache::rao_table_with(&self.ship_hull()?, &self.seakeeping.grid, &self.as_printed, each)
+        let sk = &self.seakeeping;
+        crate::sea::rao_cache::rao_table_with(&self.ship_hull()?, &sk.grid, &self.as_printed, sk.aft_end_terms, each)
     }
 
     /// The bus voltage set point the field control holds [V]: `controllers.field.bus_voltage_ref_v`,

@@ -6,17 +6,17 @@ use crate::sea::seakeeping::tables::{ForEach, RaoTable, SeakeepingGrid, Serial};
 use crate::ship::hull::ShipHull;
 use std::sync::{Arc, Mutex, OnceLock};
 
-/// A table is keyed by its hull (`ShipHull::table_key`), its grid and the strip-theory switches
-/// of `as_printed`.
-type Key = (Arc<str>, SeakeepingGrid, AsPrintedParams);
+/// A table is keyed by its hull (`ShipHull::table_key`), its grid, the strip-theory switches
+/// of `as_printed` and `seakeeping.aft_end_terms`.
+type Key = (Arc<str>, SeakeepingGrid, AsPrintedParams, bool);
 type Cache = Mutex<Vec<(Key, Arc<RaoTable>)>>;
 /// The tables made so far (at most `MAX_TABLES`, the oldest dropped first).
 static CACHE: OnceLock<Cache> = OnceLock::new();
 /// Tables kept (a table of the default grid is 0.4 MB).
 const MAX_TABLES: usize = 4;
 
-fn key(hull: &ShipHull, grid: &SeakeepingGrid, printed: &AsPrintedParams) -> Key {
-    (hull.table_key(), *grid, printed.strip_theory())
+fn key(hull: &ShipHull, grid: &SeakeepingGrid, printed: &AsPrintedParams, aft_end_terms: bool) -> Key {
+    (hull.table_key(), *grid, printed.strip_theory(), aft_end_terms)
 }
 
 fn keep(k: Key, t: Arc<RaoTable>) {
@@ -31,9 +31,15 @@ fn keep(k: Key, t: Arc<RaoTable>) {
 }
 
 /// The RAO table of `hull` on `grid` with the strip-theory switches of `printed` (the others do
-/// not change the table), computed on first use.
-pub fn rao_table(hull: &ShipHull, grid: &SeakeepingGrid, printed: &AsPrintedParams) -> Result<Arc<RaoTable>, String> {
-    rao_table_with(hull, grid, printed, &Serial)
+/// not change the table) and STF's aft-end terms or not (`seakeeping.aft_end_terms`), computed on
+/// first use.
+pub fn rao_table(
+    hull: &ShipHull,
+    grid: &SeakeepingGrid,
+    printed: &AsPrintedParams,
+    aft_end_terms: bool,
+) -> Result<Arc<RaoTable>, String> {
+    rao_table_with(hull, grid, printed, aft_end_terms, &Serial)
 }
 
 /// [`rao_table`] with the build's parts run by `each` (the command line's threads).
@@ -41,16 +47,18 @@ pub fn rao_table_with(
     hull: &ShipHull,
     grid: &SeakeepingGrid,
     printed: &AsPrintedParams,
+    aft_end_terms: bool,
     each: &dyn ForEach,
 ) -> Result<Arc<RaoTable>, String> {
-    let k = key(hull, grid, printed);
+    let k = key(hull, grid, printed, aft_end_terms);
     let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
     if let Ok(c) = cache.lock() {
         if let Some((_, t)) = c.iter().find(|(g, _)| *g == k) {
             return Ok(t.clone());
         }
     }
-    let ship = hull.strip_ship()?;
+    let mut ship = hull.strip_ship()?;
+    ship.aft_end_terms = aft_end_terms;
     let t = Arc::new(RaoTable::compute_with(&ship, grid, &k.2, each)?);
     keep(k, t.clone());
     Ok(t)
@@ -62,9 +70,10 @@ pub fn insert_rao_table(
     hull: &ShipHull,
     grid: &SeakeepingGrid,
     printed: &AsPrintedParams,
+    aft_end_terms: bool,
     values: &[f64],
 ) -> Result<(), String> {
     let t = Arc::new(RaoTable::from_values(grid, values)?);
-    keep(key(hull, grid, printed), t);
+    keep(key(hull, grid, printed, aft_end_terms), t);
     Ok(())
 }

@@ -200,13 +200,27 @@ impl HullOffsets {
     /// from the keel (z = 0) to the waterline (z = draft), then wall-sided (the waterline's
     /// half-breadth) in steps of draft/8 up to 1.5 draft.
     pub fn wigley_sized(lpp: f64, beam: f64, draft: f64, stations: usize, rows: usize) -> HullOffsets {
+        HullOffsets::wigley_form(lpp, beam, draft, stations, rows, 0.0)
+    }
+
+    /// Journee's (1992) Wigley III hull, y = (B/2)(1 - zeta^2)(1 - xi^2)(1 + 0.2 xi^2) with
+    /// xi = 2x'/L, x' from midship, and zeta = depth / draft: the Wigley hull with fuller ends
+    /// (CB 0.4622, Cm 2/3, Cwp 0.6933), stations and rows as in [`HullOffsets::wigley_sized`].
+    /// Journee's model: L 3 m, B 0.3 m, d 0.1875 m.
+    pub fn wigley_iii(lpp: f64, beam: f64, draft: f64, stations: usize, rows: usize) -> HullOffsets {
+        HullOffsets::wigley_form(lpp, beam, draft, stations, rows, 0.2)
+    }
+
+    /// The Wigley family y = (B/2)(1 - zeta^2)(1 - xi^2)(1 + `c2` xi^2): `c2` = 0 is the classic
+    /// Wigley ([`HullOffsets::wigley_sized`]), 0.2 Journee's Wigley III.
+    pub fn wigley_form(lpp: f64, beam: f64, draft: f64, stations: usize, rows: usize, c2: f64) -> HullOffsets {
         let n = stations.max(3);
         let rows = rows.max(2);
         let stations = (0..n)
             .map(|i| {
                 let x = 0.5 * lpp * (1.0 - libm::cos(PI * i as f64 / (n - 1) as f64));
                 let xi = 2.0 * x / lpp - 1.0;
-                let long = (1.0 - xi * xi).max(0.0);
+                let long = (1.0 - xi * xi).max(0.0) * (1.0 + c2 * xi * xi);
                 let mut z: Vec<f64> = (0..=rows).map(|j| draft * j as f64 / rows as f64).collect();
                 z.extend((1..=4).map(|j| draft * (1.0 + j as f64 / 8.0)));
                 let half_breadth = z

@@ -2,6 +2,7 @@
 //! hull sections, 2-D radiation by multipoles, Salvesen-Tuck-Faltinsen strip theory, roll damping,
 //! second-order mean forces, and the tables the time-domain simulation interpolates.
 
+pub mod aft_end;
 pub mod complex;
 pub mod conformal;
 pub mod params;

@@ -14,6 +14,18 @@ crate::params! {
     #[serde(deny_unknown_fields, default)]
     pub struct SeakeepingParams {
         pub grid: crate::sea::seakeeping::tables::SeakeepingGrid = Default::default() => {},
+        /// Salvesen-Tuck-Faltinsen (1970) as printed keeps the terms of the aft end (superscript
+        /// A: the aftmost strip with beam) in every coefficient and exciting force at speed, e.g.
+        /// U a22^A, U a24^A and U a44^A in B22, B24 and B44 (Appendix A eqs. 13, 14, 18). A hull
+        /// ending in a deep, thin stern (a Wigley hull) keeps sway and roll added mass there
+        /// however small its beam, and these terms add roll damping as speed rises
+        /// (`aft_end::aft_end_roll_peaks`). Off: every aft-end term is zero, as in codes that
+        /// keep end terms only for a transom. Part of the RAO table's cache key.
+        pub aft_end_terms: bool = true => {
+            label: "Strip theory's aft-end terms",
+            source: "STF (1970) as printed: on",
+            help: "STF's terms of the aft end at speed (U a44^A in B44 and the rest), which add roll damping as speed rises. Off drops them, as codes that keep end terms only for a transom do (a Wigley hull has none).",
+        },
         /// See `propeller_losses` for why 1.1 starts and 1.3 ends the loop.
         pub ventilation_on_h_over_r: f64 = LossParams::default().ventilation_on => {
             label: "Ventilation starts below h/R", unit: "-", range: -1.0..=5.0, source: "ch. 2.3",

@@ -95,6 +95,13 @@ pub struct Ship {
     pub roll: RollHull,
     pub rho: f64,
     pub g: f64,
+    /// STF's aft-end terms (superscript A: the coefficients and exciting forces of the aftmost
+    /// strip times U). `true` (STF as printed) unless the scenario's
+    /// `seakeeping.aft_end_terms` turns them off.
+    pub aft_end_terms: bool,
+    /// The viscous roll damping by components (`roll_damping`); `false` leaves the potential
+    /// damping of the strips alone (the comparisons of `aft_end`).
+    pub viscous_roll_damping: bool,
 }
 
 impl Ship {
@@ -184,6 +191,8 @@ impl Ship {
             approximated,
             rho,
             g,
+            aft_end_terms: true,
+            viscous_roll_damping: true,
         })
     }
 
@@ -438,7 +447,7 @@ fn response_parts(
     beta: f64,
     roll_wave_amplitude: f64,
     printed: &AsPrintedParams,
-) -> (Response, f64) {
+) -> (Response, f64, HeavePitchSystem) {
     let (rho, g) = (ship.rho, ship.g);
     let k = omega0 * omega0 / g;
     let (sb, cb) = (libm::sin(beta), libm::cos(beta));
@@ -458,7 +467,20 @@ fn response_parts(
     let (a33_0, b33_0) = (int(&|i| secs[i].a33), int(&|i| secs[i].b33));
     let (a22_0, b22_0) = (int(&|i| secs[i].a22), int(&|i| secs[i].b22));
     let (a24_0, b24_0) = (int(&|i| secs[i].a24), int(&|i| secs[i].b24));
-    let sa = &secs[a];
+    // The aft end's sectional values and U / (i omega_e) for its exciting forces; both zero
+    // without the aft-end terms (`Ship::aft_end_terms`), which removes every superscript-A term.
+    let no_end = Sect {
+        a22: 0.0,
+        a33: 0.0,
+        a44: 0.0,
+        a24: 0.0,
+        b22: 0.0,
+        b33: 0.0,
+        b44: 0.0,
+        b24: 0.0,
+        psi: [Vec::new(), Vec::new(), Vec::new()],
+    };
+    let sa = if ship.aft_end_terms { &secs[a] } else { &no_end };
     let w2 = we * we;
     // Heave-pitch (Appendix A eqs. 4, 5, 8, 9, 16, 17, 20, 21 and 31, 32, 34).
     let a33 = a33_0 - u / w2 * sa.b33;
@@ -517,15 +539,16 @@ fn response_parts(
         hh[i] = hhs.map(|v| v * ph.conj());
     }
     let ui = C::new(u, 0.0) / iw;
+    let ue = if ship.aft_end_terms { ui } else { C::new(0.0, 0.0) };
     // Forces per unit wave amplitude, [FK, diffraction] for sway, heave, roll, pitch, yaw.
     let forces = |h: &Vec<[C; 3]>| -> [C; 5] {
-        let d = |j: usize| intc(&|i| h[i][j]) * rho + ui * h[a][j] * rho;
+        let d = |j: usize| intc(&|i| h[i][j]) * rho + ue * h[a][j] * rho;
         [
             d(0),
             d(1),
             d(2),
-            -(intc(&|i| h[i][1] * xi(i) + ui * h[i][1]) + ui * h[a][1] * xa) * rho,
-            (intc(&|i| h[i][0] * xi(i) + ui * h[i][0]) + ui * h[a][0] * xa) * rho,
+            -(intc(&|i| h[i][1] * xi(i) + ui * h[i][1]) + ue * h[a][1] * xa) * rho,
+            (intc(&|i| h[i][0] * xi(i) + ui * h[i][0]) + ue * h[a][0] * xa) * rho,
         ]
     };
     let fk = [
@@ -556,7 +579,7 @@ fn response_parts(
     let mut srt = [C::new(0.0, 0.0); 3];
     for _ in 0..50 {
         let c = components(&ship.roll, phi_a, we, u, rho, g);
-        bv = c.iter().sum::<f64>();
+        bv = if ship.viscous_roll_damping { c.iter().sum::<f64>() } else { 0.0 };
         srt = solve_small(
             [
                 [z(m + a22, b22, 0.0), z(a24 + mz, b24, 0.0), z(a26, b26, 0.0)],
@@ -609,7 +632,7 @@ fn response_parts(
     };
     let transom = {
         let ha = hh[a];
-        (ik2 * cj(ui) * ((h2 + h6 * xa) * cj(ha[0]) + (h3 - h5 * xa) * cj(ha[1]) + h4 * cj(ha[2]))).re
+        (ik2 * cj(ue) * ((h2 + h6 * xa) * cj(ha[0]) + (h3 - h5 * xa) * cj(ha[1]) + h4 * cj(ha[2]))).re
     };
     let unit_lever = int(&share) + transom;
     let drift_moment = sb * (int(&|i| xi(i) * share(i)) + xa * transom);
@@ -647,7 +670,27 @@ fn response_parts(
         added_resistance_gb: gb,
         b44_viscous: bv,
     };
-    (r, unit_lever)
+    let system = HeavePitchSystem {
+        omega_e: we,
+        mass: m,
+        i55: i5,
+        a33,
+        b33,
+        a35,
+        b35,
+        a53,
+        b53,
+        a55,
+        b55,
+        c33,
+        c35,
+        c55,
+        x3_fk: fk[1],
+        x3_d: fd[1],
+        x5_fk: fk[3],
+        x5_d: fd[3],
+    };
+    (r, unit_lever, system)
 }
 
 /// Zero-speed natural periods of heave and pitch [s] from the computed coefficients:
@@ -669,6 +712,40 @@ pub fn natural_periods(ship: &Ship, table: &RadiationTable) -> (f64, f64) {
         w5 = (c55 / (i5 + a55)).sqrt();
     }
     (2.0 * std::f64::consts::PI / w3, 2.0 * std::f64::consts::PI / w5)
+}
+
+/// The heave-pitch equations of motion at one wave (unit amplitude): mass, the STF coefficients
+/// at forward speed (Appendix A eqs. 4, 5, 8, 9, 16, 17, 20, 21, 31, 32, 34, without the printed
+/// typos), the restoring coefficients, and the exciting force and moment on the restrained ship
+/// (Froude-Krylov plus diffraction with its speed term), as [`response`] assembles them. SI units,
+/// per metre of wave amplitude for the excitation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HeavePitchSystem {
+    pub omega_e: f64,
+    pub mass: f64,
+    pub i55: f64,
+    pub a33: f64,
+    pub b33: f64,
+    pub a35: f64,
+    pub b35: f64,
+    pub a53: f64,
+    pub b53: f64,
+    pub a55: f64,
+    pub b55: f64,
+    pub c33: f64,
+    pub c35: f64,
+    pub c55: f64,
+    /// Exciting heave force [N/m] and pitch moment [N m/m]: Froude-Krylov and diffraction parts.
+    pub x3_fk: C,
+    pub x3_d: C,
+    pub x5_fk: C,
+    pub x5_d: C,
+}
+
+/// [`HeavePitchSystem`] for the wave of frequency `omega0` at speed `u` and heading `beta`: the
+/// coefficients and forces `response` solves, from the same computation.
+pub fn heave_pitch_system(ship: &Ship, table: &RadiationTable, omega0: f64, u: f64, beta: f64) -> HeavePitchSystem {
+    response_parts(ship, table, omega0, u, beta, 1.0, &AsPrintedParams::default()).2
 }
 
 #[cfg(test)]
@@ -897,7 +974,7 @@ mod tests {
         let mut worst: f64 = 0.0;
         for p in [AsPrintedParams::default(), printed] {
             for (w, u, b) in [(0.5, 0.0, 135.0f64), (0.7, fn028(), 150.0), (0.9, fn028(), 60.0), (0.4, 5.0, 100.0)] {
-                let (r, unit) = response_parts(ship, t, w, u, b.to_radians(), 1.0, &p);
+                let (r, unit, _) = response_parts(ship, t, w, u, b.to_radians(), 1.0, &p);
                 let e = (unit - r.f_add).abs() / r.f_add.abs();
                 worst = worst.max(e);
                 assert!(e < 1e-9, "omega {w} U {u} beta {b}: {unit} vs F_add {}", r.f_add);
