@@ -120,6 +120,19 @@ pub struct Row {
     pub spread: Option<Spread>,
     /// A pass that rests on an input chosen for it (the thesis does not give it): what and why.
     pub chosen_input: Option<String>,
+    /// An explained difference whose explanation gives a number of its own: the thesis' number
+    /// reproduced by the model with the explanation's change. The row fails when it leaves its
+    /// tolerance, so an explanation can be wrong.
+    pub explanation: Option<Explanation>,
+}
+
+/// The number an explanation gives, against the thesis' (see [`Row::explanation`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Explanation {
+    /// What was changed, e.g. "1.6 times Table 5.1's resistance".
+    pub change: String,
+    pub value: f64,
+    pub tolerance: Tolerance,
 }
 
 impl Row {
@@ -133,10 +146,17 @@ impl Row {
         let verdict = if self.verdict == Verdict::Fail { Verdict::Fail } else { Verdict::Shown };
         Row { kind, verdict, tolerance: None, ..self }
     }
-
     /// The same row, noting the chosen input its verdict rests on.
     fn chosen(self, input: String) -> Row {
         Row { chosen_input: Some(input), ..self }
+    }
+
+    /// The same explained row, with the number its explanation gives: it fails when that number
+    /// is not within `tolerance` of the thesis'.
+    fn because(self, change: String, value: f64, tolerance: Tolerance) -> Row {
+        let holds = within(tolerance, self.thesis, value);
+        let verdict = if holds || self.verdict == Verdict::Fail { self.verdict } else { Verdict::Fail };
+        Row { verdict, explanation: Some(Explanation { change, value, tolerance }), ..self }
     }
 }
 
@@ -258,6 +278,7 @@ fn missing_reference(quantity: &str, source: &str, ours: f64, unit: &'static str
         kind: Kind::Thesis,
         spread: None,
         chosen_input: None,
+        explanation: None,
     }
 }
 
@@ -287,6 +308,7 @@ fn row(
         kind: Kind::Thesis,
         spread: None,
         chosen_input: None,
+        explanation: None,
     }
 }
 
@@ -354,6 +376,7 @@ fn open(quantity: &str, source: &str, thesis: impl Into<Thesis>, ours: f64, unit
         kind: Kind::Thesis,
         spread: None,
         chosen_input: None,
+        explanation: None,
     }
 }
 
@@ -455,6 +478,8 @@ pub fn sections(size: Size) -> Result<Vec<Section>, String> {
         excess_energy(size)?,
         analytic,
         second_order_and_fuel(&hs_base)?,
+        wigley_iii_experiments()?,
+        pdstrip_rows()?,
         printed,
     ])
 }
@@ -713,16 +738,31 @@ fn table_5_7(st25: &crate::RunResult) -> Result<Section, String> {
             Tolerance::Abs(0.01),
             "friction mu_2 chosen as the constant loss these three numbers imply (not independent)",
         ));
-        rows.push(explained(
-            &format!("power electronics efficiency at {kn} kn"),
-            &src,
-            reference(want[1]),
-            got[1],
-            "-",
-            "the notching (Table 5.4) and stator (Table 5.3) resistances lose 1-3 % at the currents of a 5.6 kV \
-             bus; with E_a read line to line (as_printed.ea_line_to_line) the bus is 9.7 kV, the currents and \
-             losses smaller, and the efficiency 0.994 at 25 kn, as the thesis prints",
-        ));
+        let mut line = startup_to(kn);
+        line.as_printed.ea_line_to_line = true;
+        let pe_line = run(&line)?.summary.efficiency.power_electronics;
+        rows.push(
+            explained(
+                &format!("power electronics efficiency at {kn} kn"),
+                &src,
+                reference(want[1]),
+                got[1],
+                "-",
+                &format!(
+                    "the notching (Table 5.4) and stator (Table 5.3) resistances lose 1-3 % at the currents of a \
+                     5.6 kV bus; with E_a read line to line (as_printed.ea_line_to_line) the bus is 9.7 kV, the \
+                     currents and losses smaller, and the efficiency {pe_line:.4}; at 20 kn the corrected reading is \
+                     the nearer (its losses fall with the current), at 25 and 30 kn the line-to-line one"
+                ),
+            )
+            // 0.006: the reading's 0.9968 at 20 kn is the farthest of the three from the thesis
+            // (0.991, to which our corrected 0.9905 is nearer); at 25 and 30 kn it is within 0.002.
+            .because(
+                "E_a read line to line (as_printed.ea_line_to_line)".into(),
+                pe_line,
+                Tolerance::Abs(0.006),
+            ),
+        );
         rows.push(row(
             &format!("motor efficiency at {kn} kn"),
             &src,
@@ -766,20 +806,23 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         Ok(sig(&run(&sc)?, "prop_rpm").final_)
     };
     let (rpm125, rpm160) = (rpm_at(1.25)?, rpm_at(1.6)?);
-    rows.push(explained(
-        "propeller speed at 25 kn",
-        "Fig. 5-1",
-        reference("ch_5_1.prop_rpm_25kn"),
-        sig(st, "prop_rpm").final_,
-        "rpm",
-        &format!(
+    rows.push(
+        explained(
+            "propeller speed at 25 kn",
+            "Fig. 5-1",
+            reference("ch_5_1.prop_rpm_25kn"),
+            sig(st, "prop_rpm").final_,
+            "rpm",
+            &format!(
             "the thrust balance 2 kT rho n^2 D^4 = R_sp(u) with Table 5.1's resistance fixes {:.0} rpm; {rpm_fig_5_1} \
              rpm needs about 1.6 times that resistance ({rpm160:.1} rpm; 1.25 times gives {rpm125:.1} rpm), the factor \
              between Table 5.1's resistance and Table 2.3's on the thesis' 180 m ship (row 'Table 2.3's straight-line \
              resistance' under As printed)",
             sig(st, "prop_rpm").final_
         ),
-    ));
+        )
+        .because("1.6 times Table 5.1's resistance".into(), rpm160, Tolerance::Rel(0.01)),
+    );
     let acc = run(&preset("acceleration").ok_or("no preset")?)?;
     let mut acc_t5 = preset("acceleration").ok_or("no preset")?;
     acc_t5.as_printed.table_5_ship = true;
@@ -789,19 +832,22 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         |r: &crate::RunResult| r.trace.column("im_power_pu").and_then(|c| c.first().copied()).unwrap_or(f64::NAN);
     let (p25, p25_t5) = (start_power(&acc), start_power(&acc_t5));
     let step = sig(&acc, "im_power_pu").max - p25;
-    rows.push(explained(
-        "turbine speed loss in the acceleration",
-        &format!("ch. 5.2.1 text (\"approximately {} %\")", thesis_text("ch_5_2_1.turbine_speed_loss")),
-        reference_pct("ch_5_2_1.turbine_speed_loss"),
-        1.0 - sig(&acc, "turbine_speed_pu").min,
-        "pu",
-        &format!(
+    rows.push(
+        explained(
+            "turbine speed loss in the acceleration",
+            &format!("ch. 5.2.1 text (\"approximately {} %\")", thesis_text("ch_5_2_1.turbine_speed_loss")),
+            reference_pct("ch_5_2_1.turbine_speed_loss"),
+            1.0 - sig(&acc, "turbine_speed_pu").min,
+            "pu",
+            &format!(
             "on the hull's own ship the maneuvering model's straight-line resistance is eq. 2.15's (Table 5.1): the \
              motors run at {p25:.2} pu at 25 kn, and the step to full ahead is {step:.2} pu. With the thesis' ship \
              (as_printed.table_5_ship: L = 180 m, Table 2.3's own resistance curve, 1.6 times Table 5.1's at 25 kn) \
              they start at {p25_t5:.2} pu and the dip is {dip_t5:.3} pu"
         ),
-    ));
+        )
+        .because("the thesis' ship (as_printed.table_5_ship)".into(), dip_t5, Tolerance::Abs(0.03)),
+    );
     let (t, w) = (acc.trace.column("t_s").ok_or("no t_s")?, acc.trace.column("turbine_speed_pu").ok_or("no column")?);
     let below: Vec<f64> = t.iter().zip(w).filter(|(_, &w)| w < 0.99).map(|(&t, _)| t).collect();
     let away = below.last().copied().unwrap_or(0.0) - below.first().copied().unwrap_or(0.0);
@@ -914,27 +960,34 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         )),
     );
     let rud_max = preset("turn-90").ok_or("no preset")?.rudder.max_angle_deg;
-    rows.push(explained(
-        "motor power rise in a 90 deg turn",
-        src,
-        reference_pct("ch_5_2_3.power_rise_90deg"),
-        r90,
-        "-",
-        &format!(
-            "the rise grows with the rate of the order, which ch. 5.2.3 does not give: at the preset's 0.5 deg/s \
+    rows.push(
+        explained(
+            "motor power rise in a 90 deg turn",
+            src,
+            reference_pct("ch_5_2_3.power_rise_90deg"),
+            r90,
+            "-",
+            &format!(
+                "the rise grows with the rate of the order, which ch. 5.2.3 does not give: at the preset's 0.5 deg/s \
              both turns reach the same gentle steady turn and rise alike ({:.1} % and {:.1} %); ordered as ch. \
              5.3.2 orders its turn, a ramp that takes the rudder to its limit (r' = {full_order}, rudder {rud90:.1} \
              of {rud_max:.0} deg), the 90 deg turn rises {:.1} %, the thesis' {} %. The same order makes the 45 deg \
              turn rise {:.1} % (thesis {} %): no one order gives both of the thesis' rises, so the 45 deg row is \
              checked at the preset's rate",
-            100.0 * r45,
-            100.0 * r90,
-            100.0 * f90,
-            thesis_text("ch_5_2_3.power_rise_90deg"),
-            100.0 * f45,
-            thesis_text("ch_5_2_3.power_rise_45deg"),
+                100.0 * r45,
+                100.0 * r90,
+                100.0 * f90,
+                thesis_text("ch_5_2_3.power_rise_90deg"),
+                100.0 * f45,
+                thesis_text("ch_5_2_3.power_rise_45deg"),
+            ),
+        )
+        .because(
+            format!("the order of ch. 5.3.2 (r' = {full_order}, the rudder at its limit)"),
+            f90,
+            Tolerance::Abs(0.01),
         ),
-    ));
+    );
     let sc360 = preset("turn-360").ok_or("no preset")?;
     let t360 = run(&sc360)?;
     let len = sc360.ship_hull()?.rigid_body(&sc360.as_printed).length_m;
@@ -1863,10 +1916,8 @@ fn second_order_and_fuel(base: &crate::RunResult) -> Result<Section, String> {
         explained(
         "thermal efficiency of one prime mover, 25 kn, 1 ft regular head sea at 0.6 rad/s (beside the rated \
          efficiency)",
-        &format!(
-            "thesis column: the rated efficiency of ch. 5.1, for scale; ch. 5.2.4 and Fig. 5-12 give no number for \
-             this case, only \"the efficiency of each turbine is low\""
-        ),
+        "thesis column: the rated efficiency of ch. 5.1, for scale; ch. 5.2.4 and Fig. 5-12 give no number for \
+         this case, only \"the efficiency of each turbine is low\"",
         reference_pct(rated_key),
         e1,
         "-",
@@ -2262,8 +2313,8 @@ fn seakeeping_limits() -> Vec<Row> {
 }
 
 /// The Wigley hull (L 100 m, B 10 m, T 6.25 m, generated in code): hydrostatics against the closed
-/// forms, heave and pitch in long head waves, and the Fn 0.3 heave resonance. No published RAO is
-/// compared yet: core/data/wigley_journee1992_head_seas.csv awaits Journee's (1992) points.
+/// forms, heave and pitch in long head waves, and the Fn 0.3 heave resonance. Measurements are
+/// compared on the Wigley III model ([`wigley_iii_experiments`]).
 fn wigley_rows() -> Vec<Row> {
     use crate::sea::seakeeping::strip::{default_omega_grid, natural_periods, Ship};
     use crate::sea::seakeeping::wigley_check::heave_pitch;
@@ -2325,12 +2376,342 @@ fn wigley_rows() -> Vec<Row> {
 }
 
 /// The report as Markdown.
+/// Journee's (1992) model experiments on the Wigley III hull in head waves
+/// (core/data/journee1992_wigley_iii.csv) against our strip theory at the same conditions and in
+/// the same normalisations, split so that a difference can be placed: radiation (A33, B33),
+/// excitation on the restrained model (X3, X5), motions, added resistance.
+fn wigley_iii_experiments() -> Result<Section, String> {
+    use crate::sea::seakeeping::strip::response;
+    use crate::sea::seakeeping::wigley_check::{
+        journee_points, model_omega_grid, raw_peak, wigley_iii_model, WIGLEY_III_B, WIGLEY_III_L, WIGLEY_III_STATIONS,
+    };
+    let ship = wigley_iii_model(WIGLEY_III_B, WIGLEY_III_STATIONS)?;
+    let table = ship.radiation_table(&model_omega_grid(ship.lpp, ship.g));
+    let points = journee_points(&ship, &table)?;
+    let src = "Journee 1992, Delft report 909 (Wigley III, head waves)";
+    const A33: &str = "7-11 % low at every frequency: with no transom STF's speed terms leave A33 at its zero-speed \
+                       value, while at tau = omega_e U / g of 0.7-1.3 the measured added mass changes with speed \
+                       (waves swept along the hull, sinkage, trim and the bow wave, none of them in strip theory)";
+    const B33: &str = "2-D strips overestimate the damping at low frequency (13 % at the lowest), where the radiated \
+                       waves of neighbouring strips interfere along a hull they are as long as";
+    const X5: &str = "7-12 % high: our moment at rest is within 2-4 % of these, so the excess is STF's speed term \
+                      U/(i omega_e) in the diffraction moment (X3 has none, and agrees to 6 %)";
+    const SHORT: &str = "short waves at rest: the heave force passes through zero near lambda/L = 0.75 (both find \
+                         the minimum there) and the motions are small differences of large terms, so a per cent \
+                         means little; the measured pitch 0.51 at lambda/L 0.5, between 0.12 and 0.14, looks like a \
+                         reading error of the transcription";
+    const HEAVE: &str = "strip theory's motions; our Fn 0.3 resonance (1.69 at lambda/L 1.09) lies below Journee's \
+                         shortest wave there, 1.25";
+    const PITCH: &str = "8-13 % low in long waves at rest while heave is 5-10 % high; the data have no excitation at \
+                         rest to place it (the assumed k_yy = 0.25 L and the ends' 3-D relief are candidates): open \
+                         in kind";
+    const RAW: &str = "the peak follows our heave-pitch resonance, lightly damped in strip theory (heave at the peak \
+                       1.67 at Fn 0.3, 2.53 at Fn 0.4), so it grows with speed where Journee's stays near 20-28; \
+                       Gerritsma-Beukelman's radiated energy on the same motions is 25-45 % higher still. See the \
+                       note on beam";
+    let mut rows = Vec::new();
+    for p in &points {
+        let at = match p.table {
+            "a33" | "b33" => format!("omega_e sqrt(L/g) = {}", p.x),
+            "raw_peak" => format!("peak over lambda/L (ours at {:.2})", p.x),
+            _ => format!("lambda/L = {}", p.x),
+        };
+        let (what, unit) = match p.table {
+            "heave" => ("heave z_a / zeta_a", "-"),
+            "pitch" => ("pitch theta_a L / (2 pi zeta_a)", "-"),
+            "a33" => ("radiation: heave added mass A33 / (rho V)", "-"),
+            "b33" => ("radiation: heave damping B33 / (rho V) sqrt(L/g)", "-"),
+            "x3" => ("excitation: heave force |X3| / (C33 zeta_a), restrained", "-"),
+            "x5" => ("excitation: pitch moment |X5| / (k C55 zeta_a), restrained", "-"),
+            _ => ("added resistance R_aw / (rho g zeta_a^2 B^2 / L), Salvesen 1978", "-"),
+        };
+        let quantity = format!("{what}, Fn {}, {at}", p.fn_);
+        // How far each kind of point is claimed to agree, or why it is not.
+        enum Judge {
+            Within(f64, &'static str),
+            Explained(&'static str),
+            Open(&'static str),
+        }
+        let short = if p.table == "heave" { 1.0 } else { 0.75 };
+        let judge = match p.table {
+            "a33" => Judge::Within(0.12, A33),
+            "b33" => Judge::Within(0.14, B33),
+            "x3" => Judge::Within(0.065, "Froude-Krylov plus STF's diffraction"),
+            "x5" => Judge::Within(0.125, X5),
+            "heave" | "pitch" if p.fn_ == 0.0 && p.x < short => Judge::Explained(SHORT),
+            "heave" => Judge::Within(0.10, HEAVE),
+            "pitch" => Judge::Within(0.14, PITCH),
+            _ => Judge::Open(RAW),
+        };
+        let r = match judge {
+            Judge::Within(tol, why) => row(&quantity, src, p.measured, p.ours, unit, Tolerance::Rel(tol), why),
+            Judge::Explained(why) => explained(&quantity, src, p.measured, p.ours, unit, why),
+            Judge::Open(why) => open(&quantity, src, p.measured, p.ours, unit, why),
+        };
+        rows.push(r.kind(Kind::Experiment));
+    }
+    // Salvesen's added resistance against beam: Wigley III forms of 2 and 1.5 times the beam at
+    // the same length, draft and loading, at Fn 0.3.
+    let fr = 0.3;
+    let beam_study = |b_over_l: f64| -> Result<(f64, f64, f64), String> {
+        let s = wigley_iii_model(b_over_l * WIGLEY_III_L, WIGLEY_III_STATIONS)?;
+        let t = s.radiation_table(&model_omega_grid(s.lpp, s.g));
+        let (peak, lam) = raw_peak(&s, &t, fr);
+        let u = fr * libm::sqrt(s.g * s.lpp);
+        let omega = libm::sqrt(s.g * 2.0 * std::f64::consts::PI / (lam * s.lpp));
+        let r = response(&s, &t, omega, u, std::f64::consts::PI, 1.0);
+        Ok((peak, lam, r.added_resistance / r.added_resistance_gb))
+    };
+    let (p10, l10, g10) = beam_study(0.1)?;
+    let (p15, _, g15) = beam_study(0.15)?;
+    let (p20, l20, g20) = beam_study(0.2)?;
+    let expo = libm::log(p20 * 4.0 / p10) / libm::log(2.0);
+    let note = format!(
+        "Our strip theory at Journee's model scale (L {} m, B {} m, d 0.1875 m, the (1 + 0.2 xi^2) form, {} \
+         stations, fresh water; KG 0.15 m where Journee's 0.17 m gives a negative GM_T, which reaches head-sea \
+         heave and pitch only through C55, +0.5 %). Measured values as transcribed in the data file (its header \
+         gives the reading uncertainty). Radiation, excitation and the motions at speed agree within 6-14 %; \
+         the misses are short waves at rest and the added resistance. Beam: on Wigley III forms at the same \
+         length, draft and loading, our nondimensional peak at Fn {fr} falls from {p10:.1} (B/L 0.10, at \
+         lambda/L {l10:.2}) to {p15:.1} (0.15) and {p20:.1} (0.20, at {l20:.2}): the dimensional peak grows as \
+         B^{expo:.2}, not B^2, because at a fixed draft the damping grows faster than the mass and restoring and \
+         the resonance flattens; Salvesen over Gerritsma-Beukelman at the peak stays {g10:.2}, {g15:.2}, \
+         {g20:.2}, so the formula is not mis-scaled with beam: it inherits the motions.",
+        WIGLEY_III_L, WIGLEY_III_B, WIGLEY_III_STATIONS
+    );
+    let misses: Vec<f64> =
+        points.iter().filter(|p| p.table == "raw_peak").map(|p| 100.0 * (p.ours / p.measured - 1.0)).collect();
+    let (lo, hi) = misses.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
+    let passed = rows.iter().filter(|r| r.verdict == Verdict::Pass).count();
+    let finding = format!(
+        "**Seakeeping against measurements.** On Journee's Wigley III model experiments our strip theory's \
+         radiation, excitation and motions agree within their stated 6.5-14 % at {passed} of {} points; short \
+         waves at rest are explained, and the added-resistance peaks miss by {lo:+.0} % to {hi:+.0} % (open: they \
+         follow strip theory's lightly damped resonance). Against PDStrip, a second strip code run on our hulls, \
+         roll in beam seas agrees within 10 % and the relative motion at the propeller hub within 8 %.",
+        rows.len()
+    );
+    Ok(Section {
+        finding,
+        title: "Wigley III against Journee's model experiments (1992)",
+        note,
+        rows,
+        figures: Vec::new(),
+    })
+}
+
+/// PDStrip's RAOs (core/data/pdstrip_raos.csv, regenerated by validation/pdstrip/regenerate.py).
+const PDSTRIP_RAOS: &str = include_str!("../../data/pdstrip_raos.csv");
+
+/// One PDStrip series: a quantity of a hull at a Froude number and heading, over frequency.
+struct PeerSeries {
+    hull: String,
+    froude: f64,
+    heading_deg: f64,
+    quantity: String,
+    /// (omega [rad/s], amplitude), by frequency.
+    points: Vec<(f64, f64)>,
+}
+
+fn pdstrip_series() -> Result<Vec<PeerSeries>, String> {
+    let mut out: Vec<PeerSeries> = Vec::new();
+    let mut header = false;
+    for line in PDSTRIP_RAOS.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with('#')) {
+        if !header {
+            header = true;
+            continue;
+        }
+        let f: Vec<&str> = line.split(',').collect();
+        let num = |i: usize| -> Result<f64, String> {
+            f.get(i).and_then(|x| x.parse::<f64>().ok()).ok_or_else(|| format!("pdstrip_raos.csv: bad line '{line}'"))
+        };
+        let (froude, heading_deg, omega, amp) = (num(1)?, num(2)?, num(3)?, num(5)?);
+        let (hull, quantity) = (f[0].to_string(), f[4].to_string());
+        match out
+            .iter_mut()
+            .find(|s| s.hull == hull && s.froude == froude && s.heading_deg == heading_deg && s.quantity == quantity)
+        {
+            Some(s) => s.points.push((omega, amp)),
+            None => out.push(PeerSeries { hull, froude, heading_deg, quantity, points: vec![(omega, amp)] }),
+        }
+    }
+    Ok(out)
+}
+
+/// Our strip theory against PDStrip (a second, independent strip code, run by us on the same
+/// hulls and loading with potential damping only): roll in beam seas at Fn 0 and 0.2, sway, roll
+/// and yaw in bow-oblique seas at speed, and the relative motion at the propeller hub in head seas.
+fn pdstrip_rows() -> Result<Section, String> {
+    use crate::sea::seakeeping::complex::cabs;
+    use crate::sea::seakeeping::params::{HubPlace, SternMotion as Sm};
+    use crate::sea::seakeeping::strip::{default_omega_grid, response};
+    let rho = 1025.0;
+    let mut ships = Vec::new();
+    for name in ["dtmb5415", "wigley"] {
+        let hull = crate::ship::hull::HullSpec { name: name.into(), ..Default::default() }
+            .resolve(rho)
+            .map_err(|(f, e)| format!("hull.{f}: {e}"))?;
+        let mut ship = hull.strip_ship()?;
+        // PDStrip was run with potential damping only: our viscous (Ikeda) roll damping off.
+        ship.viscous_roll_damping = false;
+        let table = ship.radiation_table(&default_omega_grid());
+        ships.push((name, ship, table, HubPlace { x_aft: hull.prop_x_aft_m, y: 0.0 }));
+    }
+    let src = "PDStrip (Soeding), commit bb895d4, validation/pdstrip/";
+    let why_beam = "beam seas, potential damping in both codes: the resonances are narrow (their heights move \
+                    with the frequency grid); the fall of the peak with speed is the aft-end terms' (rows below)";
+    let why_hub = "head seas: the wave at the hub less the stern's rise (heave and pitch, eq. 2.57 with the \
+                   consistent sign); near 1 where the hull barely moves, small where it follows the wave";
+    let why_oblique = "bow-oblique seas at speed: both codes take STF's omega0 omega_e in the diffraction force, \
+                       but PDStrip's speed correction of it is U/omega0 (solved at the wave frequency) where STF's is \
+                       U/(i omega_e) on the radiation potential; 25 % claimed at and below the peak";
+    let why_above = "above the peak at speed the two diffraction speed corrections part (PDStrip's is 1.5-1.9 times \
+                     STF's over 0.5-1.0 rad/s here); which is nearer a measurement is not shown: open";
+    let mut rows = Vec::new();
+    for s in pdstrip_series()? {
+        // The series this section compares (the CSV also holds sway in beam seas and heave and
+        // pitch in head seas, which the rows of other sections cover).
+        let wanted = matches!(
+            (s.heading_deg as i64, s.quantity.as_str()),
+            (90, "roll_rad_per_m") | (135, _) | (180, "rel_motion_stern_m_per_m")
+        );
+        if !wanted {
+            continue;
+        }
+        let Some((name, ship, table, hub)) = ships.iter().find(|x| x.0 == s.hull) else { continue };
+        let u = s.froude * libm::sqrt(ship.g * ship.lpp);
+        let beta = s.heading_deg.to_radians();
+        let ours = |w: f64| -> f64 {
+            let r = response(ship, table, w, u, beta, 1.0);
+            match s.quantity.as_str() {
+                "sway_m_per_m" => cabs(r.sway),
+                "roll_rad_per_m" => cabs(r.roll),
+                "yaw_rad_per_m" => cabs(r.yaw),
+                "heave_m_per_m" => cabs(r.heave),
+                "pitch_rad_per_m" => cabs(r.pitch),
+                _ => {
+                    let (cb, sb) = (libm::cos(beta), libm::sin(beta));
+                    let k = w * w / ship.g;
+                    let wave = Sm::Consistent.hub_wave(k, *hub, cb, sb);
+                    cabs(Sm::Consistent.hub_transfer(wave, r.heave, r.roll, r.pitch, *hub))
+                }
+            }
+        };
+        // PDStrip's peak, and a frequency below and above it (PDStrip's below 0.3 rad/s are not
+        // trusted: its encounter frequency reaches its 2U/L floor).
+        let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| p.0 >= 0.3).collect();
+        let Some(&(wp, _)) = pts.iter().max_by(|a, b| a.1.total_cmp(&b.1)) else { continue };
+        let near =
+            |target: f64| pts.iter().copied().min_by(|a, b| (a.0 - target).abs().total_cmp(&(b.0 - target).abs()));
+        let mut chosen: Vec<(&str, (f64, f64))> = Vec::new();
+        for (label, target) in [("below the peak", 0.8 * wp), ("at PDStrip's peak", wp), ("above the peak", 1.4 * wp)] {
+            if let Some(p) = near(target) {
+                if !chosen.iter().any(|c| c.1 .0 == p.0) {
+                    chosen.push((label, p));
+                }
+            }
+        }
+        let what = match s.quantity.as_str() {
+            "sway_m_per_m" => ("sway", "m/m"),
+            "roll_rad_per_m" => ("roll", "rad/m"),
+            "yaw_rad_per_m" => ("yaw", "rad/m"),
+            _ => ("relative motion at the propeller hub (eq. 2.57, consistent)", "m/m"),
+        };
+        for (label, (w, amp)) in chosen {
+            let quantity = format!(
+                "{name} {}, heading {} deg, Fn {:.2}, omega {w} rad/s ({label})",
+                what.0, s.heading_deg, s.froude
+            );
+            let r = match (s.heading_deg as i64, label) {
+                (90, _) => row(&quantity, src, amp, ours(w), what.1, Tolerance::Rel(0.10), why_beam),
+                (180, _) => row(&quantity, src, amp, ours(w), what.1, Tolerance::Rel(0.08), why_hub),
+                (_, "above the peak") => open(&quantity, src, amp, ours(w), what.1, why_above),
+                _ => row(&quantity, src, amp, ours(w), what.1, Tolerance::Rel(0.25), why_oblique),
+            };
+            rows.push(r.kind(Kind::PeerCode));
+        }
+    }
+    // STF's aft-end terms (seakeeping.aft_end_terms) and the fall of the Wigley's beam-sea roll
+    // peak with speed (potential damping only), against PDStrip's fall on its frequency grid.
+    let ae = crate::sea::seakeeping::aft_end::aft_end_roll_peaks()?;
+    let peak_of = |froude: f64| {
+        pdstrip_series().ok().and_then(|all| {
+            all.into_iter()
+                .find(|x| {
+                    x.hull == "wigley" && x.heading_deg == 90.0 && x.froude == froude && x.quantity == "roll_rad_per_m"
+                })
+                .map(|x| x.points.iter().map(|p| p.1).fold(0.0, f64::max))
+        })
+    };
+    let fall_pdstrip = match (peak_of(0.0), peak_of(0.2)) {
+        (Some(a), Some(b)) if a > 0.0 => 1.0 - b / a,
+        _ => f64::NAN,
+    };
+    let what = format!(
+        "fall of the beam-sea roll peak from Fn 0 to Fn 0.2 of the {} (GM_T {:.2} m, potential damping)",
+        ae.hull, ae.gm_t_m
+    );
+    rows.push(
+        row(
+            &format!("{what}, STF's aft-end terms on (seakeeping.aft_end_terms)"),
+            &format!("{src} (its peaks on a 0.005 rad/s grid)"),
+            fall_pdstrip,
+            -ae.change_with_terms_pct() / 100.0,
+            "-",
+            Tolerance::Abs(0.03),
+            &format!(
+                "roll per wave slope {:.2} at {:.3} rad/s at rest, {:.2} at {:.3} rad/s at Fn 0.2: a deep, thin stern \
+                 keeps sway and roll added mass at the aftmost station with beam, and STF's terms U a22^A, U a24^A \
+                 and U a44^A (Appendix A eqs. 13, 14, 18) turn it into damping as speed rises; PDStrip keeps the \
+                 same end terms",
+                ae.with_terms[0].roll_per_slope,
+                ae.with_terms[0].omega_rad_s,
+                ae.with_terms[1].roll_per_slope,
+                ae.with_terms[1].omega_rad_s
+            ),
+        )
+        .kind(Kind::PeerCode),
+    );
+    rows.push(
+        explained(
+            &format!("{what}, aft-end terms off"),
+            &format!("{src} (its peaks on a 0.005 rad/s grid)"),
+            fall_pdstrip,
+            -ae.change_without_terms_pct() / 100.0,
+            "-",
+            &format!(
+                "the switch shows the cause: with every aft-end term set to zero, as codes do that keep end terms \
+                 only for a transom, the peak does not fall ({:.2} at rest, {:.2} at Fn 0.2)",
+                ae.without_terms[0].roll_per_slope, ae.without_terms[1].roll_per_slope
+            ),
+        )
+        .shown(Kind::PeerCode),
+    );
+    Ok(Section {
+        finding: String::new(),
+        title: "Roll, oblique seas and the hub's relative motion against a second strip code (PDStrip)",
+        note: "PDStrip (H. Soeding's public strip method, source commit bb895d445186575c886bf900352795e88c245d8b) \
+               was built with gfortran and run by us on the same hulls and loading (validation/pdstrip/: inputs, \
+               outputs and regenerate.py; core/data/pdstrip_raos.csv), with potential damping only; ours is run \
+               with its viscous (Ikeda) roll damping off to match. Conventions converted to STF's (the CSV's \
+               header). Each series is compared below, at and above PDStrip's peak; its frequencies under 0.3 \
+               rad/s are left out (its encounter frequency reaches its floor of 2U/L there)."
+            .into(),
+        rows,
+        figures: Vec::new(),
+    })
+}
+
 pub fn markdown(sections: &[Section], size: Size) -> String {
     let (rated, half) = (thesis_text("ch_5_1.turbine_efficiency_rated"), thesis_text("ch_5_1.turbine_efficiency_half"));
-    let mut s = format!(
+    let mut s = String::from(
         "# Validation report\n\n\
          Generated by `aes-sim validate` (`./build.sh validate`); do not edit by hand. `./build.sh test` \
-         regenerates it and fails when a row leaves its tolerance or this file is stale.\n\n\
+         regenerates it and fails when a row leaves its tolerance or this file is stale.\n\n",
+    );
+    s.push_str(&opening(sections, size));
+    s.push_str(&format!(
+        "## Sources\n\n\
          The thesis: Kyle Schmitt, *Modeling and Simulation of an All Electric Ship in Random Seas*, S.M. thesis, \
          Massachusetts Institute of Technology, 2010 (supervisor: Michael S. Triantafyllou). Table, figure and \
          equation numbers below are the thesis' own.\n\n\
@@ -2340,10 +2721,10 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
          from the navaltoolbox-lib test mesh); the gas-turbine part-load curve (TransiEnt library, anchored to the \
          thesis' {rated} % and {half} %); the Purdue MVDC testbed parameters (our reconstruction from the thesis' own \
          Tables 4.1 and 4.2, core/data/purdue_testbed_params.md); the Wigley hull (Wigley 1934's parabolic \
-         form at L/B 10, B/T 1.6, the Wigley I of Journee 1992, Delft report 909, generated in code at L = 100 m; \
-         checked against its closed-form hydrostatics, Journee's measured RAOs not yet compared).\n\n",
-    );
-    s.push_str(&opening(sections, size));
+         form at L/B 10, B/T 1.6, generated in code at L = 100 m; checked against its closed-form hydrostatics); \
+         Journee's (1992) model experiments on the Wigley III (Delft report 909, core/data/journee1992_wigley_iii.csv); \
+         PDStrip, a second strip code we run ourselves (validation/pdstrip/).\n\n",
+    ));
     let num = |x: f64| {
         if !x.is_finite() {
             "-".to_string()
@@ -2358,7 +2739,7 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
         if !sec.note.is_empty() {
             s.push_str(&format!("{}\n\n", sec.note));
         }
-        s.push_str("| quantity | thesis | where | ours | difference | tolerance | kind | verdict | reason |\n");
+        s.push_str("| quantity | reference | where | ours | difference | tolerance | kind | verdict | reason |\n");
         s.push_str("|---|---|---|---|---|---|---|---|---|\n");
         for r in &sec.rows {
             let tol = match r.tolerance {
@@ -2389,6 +2770,14 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
                 verdict.push_str(&format!(" ({k} of {} seeds within)", sp.values.len()));
             }
             let mut reason = r.reason.clone();
+            if let Some(e) = &r.explanation {
+                let tol = match e.tolerance {
+                    Tolerance::Abs(x) => format!("+- {}", num(x)),
+                    Tolerance::Rel(x) => format!("+- {} %", num(100.0 * x)),
+                };
+                verdict.push_str(&format!(" (the explanation reproduces the thesis' number within {tol})"));
+                reason = format!("reproduced: {} gives {}; {reason}", e.change, num(e.value));
+            }
             if let Some(c) = &r.chosen_input {
                 verdict.push_str(", at a chosen input");
                 reason = if reason.is_empty() {
@@ -2456,24 +2845,31 @@ fn opening(sections: &[Section], size: Size) -> String {
         .count();
     let fails = rows.iter().filter(|r| r.verdict == Verdict::Fail).count();
     let compared = |k: Kind| {
+        let shown = n(k, Some(Verdict::Shown));
+        let shown = if shown > 0 { format!(", {shown} shown") } else { String::new() };
+        let reproduced =
+            rows.iter().filter(|r| r.kind == k && r.verdict == Verdict::Explained && r.explanation.is_some()).count();
         format!(
-            "{} pass, {} fail, {} explained, {} open",
+            "{} pass, {} fail, {} explained{}, {} open",
             n(k, Some(Verdict::Pass)),
             n(k, Some(Verdict::Fail)),
             n(k, Some(Verdict::Explained)),
+            if reproduced > 0 {
+                format!(" ({reproduced} reproduced by the explanation's change)")
+            } else {
+                String::new()
+            },
             n(k, Some(Verdict::Open))
-        )
+        ) + &shown
     };
     let mut s = String::from("## The picture in numbers\n\n");
-    for f in sections.iter().map(|x| x.finding.as_str()).filter(|f| !f.is_empty()) {
-        s.push_str(f);
-        s.push_str("\n\n");
-    }
     s.push_str(&format!(
         "Of {} rows, {} compare our model with a number the thesis gives for the same case; {} of those pass \
          independently ({chosen} of them only at an input chosen for it, said beside the verdict), and the rest \
          differ for a reason written beside them (explained) or still under investigation (open). Explained and \
-         open rows claim no tolerance, so they cannot fail: they are differences, not agreements. Calibrations \
+         open rows are differences, not agreements: an open row claims no tolerance and cannot fail; an explained \
+         row can only where its explanation gives a number of its own (the thesis' number, reproduced by the \
+         model with the explanation's change within a stated tolerance). Calibrations \
          agree by construction. Analytic checks test the numerics against closed forms, not the thesis. Rows that \
          depend on the random sea give the median over {} seeds with the range, and are judged by the median \
          (how many seeds fall within is beside the verdict). {fails} row(s) fail.\n\n",
@@ -2523,7 +2919,12 @@ fn opening(sections: &[Section], size: Size) -> String {
             if failed > 0 && !verdicts.contains("fail") { format!("{verdicts}, {failed} **fail**") } else { verdicts };
         s.push_str(&format!("| {what} | {} | {verdicts} |\n", n(k, None)));
     }
-    s.push_str(&format!("\nMonte Carlo rows use {} trials.\n\n", size.trials));
+    s.push('\n');
+    for f in sections.iter().map(|x| x.finding.as_str()).filter(|f| !f.is_empty()) {
+        s.push_str(f);
+        s.push_str("\n\n");
+    }
+    s.push_str(&format!("Monte Carlo rows use {} trials.\n\n", size.trials));
     s
 }
 
