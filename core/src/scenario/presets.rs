@@ -310,15 +310,15 @@ pub fn mc_excess_energy() -> Scenario {
 /// Ch. 5.4.2 (Table 5.8, Figs. 5-24, 5-25): arrival time of the first surface effect with a 4.8 m
 /// propeller at h0 = 6.0 m, 200 trials stopped 12 s after their first event, 90 s cap; compared with
 /// Rice's rate. With the consistent hub depth (eq. 2.57 corrected) surface effects at h0 = 6 m are
-/// about ten thousand times rarer (Rice: of the order of 1e-5 per second against 0.09), so this
-/// study uses eq. 2.57 as printed, as the thesis did.
+/// more than ten thousand times rarer (Rice: a few 1e-6 per second per hub against 0.09), so
+/// this study uses eq. 2.57 as printed, as the thesis did.
 pub fn mc_arrival() -> Scenario {
     let mut s = head_seas_thesis_depth();
     s.name = "mc-arrival".into();
     s.description = "Monte Carlo, 200 trials at 25 knots in head seas SS6 with a 4.8 m propeller 6 m deep, each \
         stopped 12 s after its first surface effect or at 90 s (thesis ch. 5.4.2, Table 5.8, Figs. 5-24 and \
         5-25): the arrival times against Rice's up-crossing rate. Uses the hub depth of eq. 2.57 as printed, as \
-        the thesis did; with the corrected sign such events are about ten thousand times rarer."
+        the thesis did; with the corrected sign such events are more than ten thousand times rarer."
         .into();
     s.propeller.diameter_m = 4.8;
     s.set_hub_depth_m(6.0);

@@ -143,17 +143,29 @@ impl Row {
 
     /// The same row, shown and not compared (an as-printed switch, or another case's number).
     fn shown(self, kind: Kind) -> Row {
-        let verdict = if self.verdict == Verdict::Fail { Verdict::Fail } else { Verdict::Shown };
-        Row { kind, verdict, tolerance: None, ..self }
+        // Only a number that could not be had fails (a missing reference, a NaN of ours).
+        let broken = self.thesis.is_nan() || !self.ours.is_finite();
+        let verdict = if broken { Verdict::Fail } else { Verdict::Shown };
+        let spread = self.spread.map(|sp| Spread { within: None, ..sp });
+        Row { kind, verdict, tolerance: None, spread, ..self }
     }
+
     /// The same row, noting the chosen input its verdict rests on.
     fn chosen(self, input: String) -> Row {
         Row { chosen_input: Some(input), ..self }
     }
 
     /// The same explained row, with the number its explanation gives: it fails when that number
-    /// is not within `tolerance` of the thesis'.
+    /// is not within `tolerance` of the thesis'. An explanation that does not bring the number
+    /// nearer the thesis' than ours is no reproduction: the row then says so and claims none.
     fn because(self, change: String, value: f64, tolerance: Tolerance) -> Row {
+        if (value - self.thesis).abs() >= (self.ours - self.thesis).abs() {
+            let reason = format!(
+                "{}; {change} gives {value:.4}, no nearer the thesis' number than ours, so it is not claimed here",
+                self.reason
+            );
+            return Row { reason, ..self };
+        }
         let holds = within(tolerance, self.thesis, value);
         let verdict = if holds || self.verdict == Verdict::Fail { self.verdict } else { Verdict::Fail };
         Row { verdict, explanation: Some(Explanation { change, value, tolerance }), ..self }
@@ -325,20 +337,29 @@ fn within(tol: Tolerance, thesis: f64, ours: f64) -> bool {
 /// sea: its phases and directions).
 const SEEDS: std::ops::RangeInclusive<u64> = 1..=10;
 
-/// Runs `sc` with each of [`SEEDS`] and measures each run with `f`.
-fn over_seeds(sc: &Scenario, f: impl Fn(&crate::RunResult) -> Result<f64, String>) -> Result<Vec<f64>, String> {
+/// `sc` run with each of [`SEEDS`].
+fn seed_runs(sc: &Scenario) -> Result<Vec<crate::RunResult>, String> {
     SEEDS
         .map(|seed| {
             let mut c = sc.clone();
             c.sim.seed = seed;
-            f(&run(&c)?)
+            run(&c)
         })
         .collect()
 }
 
+/// Each run measured with `f`.
+fn measure(
+    runs: &[crate::RunResult],
+    f: impl Fn(&crate::RunResult) -> Result<f64, String>,
+) -> Result<Vec<f64>, String> {
+    runs.iter().map(f).collect()
+}
+
 /// A row whose number depends on the random sea, from its values over [`SEEDS`]: ours is their
-/// median and a compared row's verdict is the median's; the spread counts the seeds within the
-/// tolerance.
+/// median, and a compared row is judged on the distribution: the thesis shows one realisation,
+/// which passes when it lies within the middle 80 % of ours (from the second smallest to the
+/// second largest of ten seeds). The spread also counts the seeds within the row's tolerance.
 fn seeded(r: Row, values: Vec<f64>) -> Row {
     let sp = Spread {
         seeds: SEEDS.collect(),
@@ -346,15 +367,17 @@ fn seeded(r: Row, values: Vec<f64>) -> Row {
         values,
     };
     let ours = sp.median();
-    let verdict = match (r.verdict, r.tolerance) {
-        (Verdict::Pass | Verdict::Fail, Some(t)) if !r.thesis.is_nan() => {
-            if within(t, r.thesis, ours) {
+    let sorted = sp.sorted();
+    let typical = sorted.len() >= 5 && (sorted[1]..=sorted[sorted.len() - 2]).contains(&r.thesis);
+    let verdict = match r.verdict {
+        Verdict::Pass | Verdict::Fail if !r.thesis.is_nan() => {
+            if typical && ours.is_finite() {
                 Verdict::Pass
             } else {
                 Verdict::Fail
             }
         }
-        (v, _) => v,
+        v => v,
     };
     Row { ours, verdict, spread: Some(sp), ..r }
 }
@@ -438,6 +461,28 @@ fn head_seas(ap: crate::scenario::as_printed::AsPrintedParams, stern: SternMotio
     run(&sc)
 }
 
+/// Table 2.3's maneuvering model on the hull's ship, or with `as_printed.table_5_ship` on the
+/// thesis' (L = 180 m): its straight-line resistance and surge mass.
+fn table_2_3_model(
+    ap: &crate::scenario::as_printed::AsPrintedParams,
+) -> Result<crate::ship::maneuvering::Abkowitz, String> {
+    let hull = Scenario::default().ship_hull()?;
+    let b = hull.rigid_body(ap);
+    let h = crate::scenario::HullParams::default();
+    let u0 = crate::numerics::units::kn_to_m_s(h.linearization_speed_kn);
+    Ok(crate::ship::maneuvering::Abkowitz::new(&h.abkowitz, h.symmetric_hull, u0, b.length_m, 1025.0))
+}
+
+/// Table 2.3's straight-line resistance at 25 kn on the thesis' ship over the hull's (eq. 2.15's,
+/// Table 5.1's): the factor between the thesis' two resistances.
+fn table_5_resistance_ratio() -> Result<f64, String> {
+    use crate::scenario::as_printed::AsPrintedParams;
+    let u25 = crate::numerics::units::kn_to_m_s(25.0);
+    let t5 = table_2_3_model(&AsPrintedParams { table_5_ship: true, ..Default::default() })?;
+    let own = table_2_3_model(&AsPrintedParams::default())?;
+    Ok(t5.forces(u25, 0.0, 0.0).x / own.forces(u25, 0.0, 0.0).x)
+}
+
 fn startup_to(kn: f64) -> Scenario {
     let mut s = crate::scenario::presets::startup();
     s.commands[0].speed_kn = Some(kn);
@@ -451,19 +496,10 @@ pub fn sections(size: Size) -> Result<Vec<Section>, String> {
     let st25 = run(&startup_to(25.0))?;
     // The corrected ch. 5.3 run at the thesis' depth serves two.
     let hs_base = head_seas(Default::default(), SternMotion::Consistent)?;
-    let ch5 = chapter_5(&st25)?;
+    // Chapter 5 hands its part of the eq. 2.57 paragraph (Fig. 5-15's swing) to Table 5.8's.
+    let mut ch5 = chapter_5(&st25)?;
     let mut t58 = table_5_8(size)?;
-    if let Some(r) = ch5.rows.iter().find(|r| r.quantity.starts_with("motor power swing in SS6 head seas")) {
-        t58.finding.push_str(&format!(
-            ", and the motor power swing of Fig. 5-15 {:.1} times the thesis' ({:.2}, the median over {} seeds, \
-             against {:.2} of the 25 kn power). The thesis' Table 5.8 level and rate are not reproduced from its own inputs either (its rows \
-             below).",
-            r.ours / r.thesis,
-            r.ours,
-            SEEDS.count(),
-            r.thesis
-        ));
-    }
+    t58.finding.push_str(&std::mem::take(&mut ch5.finding));
     let analytic = analytic(size, &st25)?;
     let analytic = Section { rows: analytic.rows.into_iter().map(|r| r.kind(Kind::Analytic)).collect(), ..analytic };
     let printed = as_printed(&hs_base)?;
@@ -748,29 +784,36 @@ fn table_5_7(st25: &crate::RunResult) -> Result<Section, String> {
                 reference(want[1]),
                 got[1],
                 "-",
-                &format!(
-                    "the notching (Table 5.4) and stator (Table 5.3) resistances lose 1-3 % at the currents of a \
-                     5.6 kV bus; with E_a read line to line (as_printed.ea_line_to_line) the bus is 9.7 kV, the \
-                     currents and losses smaller, and the efficiency {pe_line:.4}; at 20 kn the corrected reading is \
-                     the nearer (its losses fall with the current), at 25 and 30 kn the line-to-line one"
-                ),
+                "the notching (Table 5.4) and stator (Table 5.3) resistances lose 1-3 % at the currents of a 5.6 kV \
+                 bus; with E_a read line to line (as_printed.ea_line_to_line) the bus is 9.7 kV, the currents and \
+                 losses smaller",
             )
-            // 0.006: the reading's 0.9968 at 20 kn is the farthest of the three from the thesis
-            // (0.991, to which our corrected 0.9905 is nearer); at 25 and 30 kn it is within 0.002.
+            // Two units of the printed third digit.
             .because(
                 "E_a read line to line (as_printed.ea_line_to_line)".into(),
                 pe_line,
-                Tolerance::Abs(0.006),
+                Tolerance::Abs(0.002),
             ),
         );
-        rows.push(row(
-            &format!("motor efficiency at {kn} kn"),
+        // The losses, not the efficiency: a tolerance on an efficiency near 1 would be larger than
+        // the loss it judges.
+        let thesis_loss = match thesis_f64(want[2]) {
+            x if x.is_nan() => reference(want[2]),
+            x => Thesis::Computed(1.0 - x),
+        };
+        rows.push(open(
+            &format!("motor losses at {kn} kn, 1 - efficiency"),
             &src,
-            reference(want[2]),
-            got[2],
+            thesis_loss,
+            1.0 - got[2],
             "-",
-            Tolerance::Abs(0.01),
-            "copper losses of Table 2.1 and eta_m = 0.998",
+            &format!(
+                "ours: the copper losses at Table 2.1's resistances and eta_m = {} (our choice, its {:.1} % of the power); the \
+                 thesis' losses are smaller, and it prints neither its currents nor what its efficiency counts \
+                 (reading E_a line to line does not change the motor's: it is fed at the same volts per hertz)",
+                crate::plant::motor::MotorParams::default().efficiency,
+                100.0 * (1.0 - crate::plant::motor::MotorParams::default().efficiency)
+            ),
         ));
         rows.push(explained(
             &format!("propeller efficiency at {kn} kn"),
@@ -781,7 +824,7 @@ fn table_5_7(st25: &crate::RunResult) -> Result<Section, String> {
             &format!(
                 "Table 5.6's definition gives eta_0 eta_R / (1 - w) = 0.677 x 0.98 / 0.9 = 0.737 for the B-series at \
                  P/D = 1; the thesis' {} needs eta_R = 0.935 or no wake factor",
-                thesis_text("table_5_7.propeller.25kn")
+                thesis_text(want[3])
             ),
         ));
     }
@@ -805,7 +848,8 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         sc.ship.drag_coeff *= factor;
         Ok(sig(&run(&sc)?, "prop_rpm").final_)
     };
-    let (rpm125, rpm160) = (rpm_at(1.25)?, rpm_at(1.6)?);
+    let ratio = table_5_resistance_ratio()?;
+    let (rpm125, rpm_ratio) = (rpm_at(1.25)?, rpm_at(ratio)?);
     rows.push(
         explained(
             "propeller speed at 25 kn",
@@ -815,13 +859,14 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
             "rpm",
             &format!(
             "the thrust balance 2 kT rho n^2 D^4 = R_sp(u) with Table 5.1's resistance fixes {:.0} rpm; {rpm_fig_5_1} \
-             rpm needs about 1.6 times that resistance ({rpm160:.1} rpm; 1.25 times gives {rpm125:.1} rpm), the factor \
-             between Table 5.1's resistance and Table 2.3's on the thesis' 180 m ship (row 'Table 2.3's straight-line \
-             resistance' under As printed)",
+             rpm needs about 1.6 times that resistance (1.25 times gives {rpm125:.1} rpm), which is the factor, \
+             {ratio:.2}, between Table 2.3's resistance on the thesis' 180 m ship and Table 5.1's (As printed, \
+             as_printed.table_5_ship)",
             sig(st, "prop_rpm").final_
         ),
         )
-        .because("1.6 times Table 5.1's resistance".into(), rpm160, Tolerance::Rel(0.01)),
+        // Fig. 5-1 read to +-3 rpm.
+        .because(format!("{ratio:.2} times Table 5.1's resistance"), rpm_ratio, Tolerance::Abs(3.0)),
     );
     let acc = run(&preset("acceleration").ok_or("no preset")?)?;
     let mut acc_t5 = preset("acceleration").ok_or("no preset")?;
@@ -846,6 +891,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
              they start at {p25_t5:.2} pu and the dip is {dip_t5:.3} pu"
         ),
         )
+        // "approximately 20 %" read as 17 to 23 %.
         .because("the thesis' ship (as_printed.table_5_ship)".into(), dip_t5, Tolerance::Abs(0.03)),
     );
     let (t, w) = (acc.trace.column("t_s").ok_or("no t_s")?, acc.trace.column("turbine_speed_pu").ok_or("no column")?);
@@ -960,34 +1006,27 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         )),
     );
     let rud_max = preset("turn-90").ok_or("no preset")?.rudder.max_angle_deg;
-    rows.push(
-        explained(
-            "motor power rise in a 90 deg turn",
-            src,
-            reference_pct("ch_5_2_3.power_rise_90deg"),
-            r90,
-            "-",
-            &format!(
-                "the rise grows with the rate of the order, which ch. 5.2.3 does not give: at the preset's 0.5 deg/s \
+    rows.push(explained(
+        "motor power rise in a 90 deg turn",
+        src,
+        reference_pct("ch_5_2_3.power_rise_90deg"),
+        r90,
+        "-",
+        &format!(
+            "the rise grows with the rate of the order, which ch. 5.2.3 does not give: at the preset's 0.5 deg/s \
              both turns reach the same gentle steady turn and rise alike ({:.1} % and {:.1} %); ordered as ch. \
              5.3.2 orders its turn, a ramp that takes the rudder to its limit (r' = {full_order}, rudder {rud90:.1} \
              of {rud_max:.0} deg), the 90 deg turn rises {:.1} %, the thesis' {} %. The same order makes the 45 deg \
              turn rise {:.1} % (thesis {} %): no one order gives both of the thesis' rises, so the 45 deg row is \
              checked at the preset's rate",
-                100.0 * r45,
-                100.0 * r90,
-                100.0 * f90,
-                thesis_text("ch_5_2_3.power_rise_90deg"),
-                100.0 * f45,
-                thesis_text("ch_5_2_3.power_rise_45deg"),
-            ),
-        )
-        .because(
-            format!("the order of ch. 5.3.2 (r' = {full_order}, the rudder at its limit)"),
-            f90,
-            Tolerance::Abs(0.01),
+            100.0 * r45,
+            100.0 * r90,
+            100.0 * f90,
+            thesis_text("ch_5_2_3.power_rise_90deg"),
+            100.0 * f45,
+            thesis_text("ch_5_2_3.power_rise_45deg"),
         ),
-    );
+    ));
     let sc360 = preset("turn-360").ok_or("no preset")?;
     let t360 = run(&sc360)?;
     let len = sc360.ship_hull()?.rigid_body(&sc360.as_printed).length_m;
@@ -1161,7 +1200,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
         thesis_f64("ch_5_3_2.prop_rpm_turn") / thesis_f64("ch_5_1.prop_rpm_25kn"),
         p5 / p0,
     );
-    let sc_ss6 = preset("turn-360-ss6").ok_or("no preset")?;
+    let ss6_runs = seed_runs(&preset("turn-360-ss6").ok_or("no preset")?)?;
     rows.push(seeded(
         open(
             "shaft speed holding 25 kn in the 360 deg turn (SS6, mean over the turn)",
@@ -1171,7 +1210,7 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
             "rpm",
             &why_power,
         ),
-        over_seeds(&sc_ss6, |r| turn_mean(r, "prop_rpm"))?,
+        measure(&ss6_runs, |r| turn_mean(r, "prop_rpm"))?,
     ));
     rows.push(seeded(
         open(
@@ -1182,13 +1221,16 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
             "-",
             &why_power,
         ),
-        over_seeds(&sc_ss6, |r| Ok(turn_mean(r, "im_power_pu")? / p0))?,
+        measure(&ss6_runs, |r| Ok(turn_mean(r, "im_power_pu")? / p0))?,
     ));
     // The thesis' own ship (Tables 5.1/5.5) with eq. 2.57 as printed: the model of its Fig. 5-15.
     let mut sc_hs = preset("head-seas-ss6").ok_or("no preset")?;
     sc_hs.set_hub_depth_m(6.0);
     sc_hs.seakeeping.stern_motion = SternMotion::ThesisEq257;
     sc_hs.as_printed.table_5_ship = true;
+    let hs_runs = seed_runs(&sc_hs)?;
+    let mut consistent = sc_hs.clone();
+    consistent.seakeeping.stern_motion = SternMotion::Consistent;
     let hs = run(&sc_hs)?;
     let rpm = sig(&hs, "prop_rpm");
     let swing = |r: &crate::RunResult| {
@@ -1203,10 +1245,15 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
             rpm.max - rpm.min,
             "rpm",
             Tolerance::Rel(0.25),
-            "the thesis shows one 80 s realisation; ours over seeds: the swing depends on the wave groups a run \
-             meets",
+            &format!(
+                "the thesis shows one 80 s realisation, judged among ours over seeds (the swing depends on the wave \
+                 groups a run meets); it passes with the thesis' conditions as printed, eq. 2.57's sign and Tables \
+                 5.1/5.5's ship: with the consistent sign the median swing is {:.1} rpm",
+                Spread { seeds: SEEDS.collect(), values: measure(&seed_runs(&consistent)?, swing)?, within: None }
+                    .median()
+            ),
         ),
-        over_seeds(&sc_hs, swing)?,
+        measure(&hs_runs, swing)?,
     ));
     // Fig. 5-15's unit is "the IM power that gives steady 25 knots with a fully submerged
     // propeller": the run's calm-water start, not the 38 MW rating of `im_power_pu`.
@@ -1243,10 +1290,22 @@ fn chapter_5(st: &crate::RunResult) -> Result<Section, String> {
             "-",
             &why,
         ),
-        over_seeds(&sc_hs, power_swing)?,
+        measure(&hs_runs, power_swing)?,
     ));
+    // The opening's part (see `sections`): Fig. 5-15's swing against the thesis'.
+    let finding = rows.last().map_or(String::new(), |r| {
+        format!(
+            ", and the motor power swing of Fig. 5-15 {:.1} times the thesis' ({:.2}, the median over {} seeds, \
+             against {:.2} of the 25 kn power). The thesis' Table 5.8 level and rate are not reproduced from its own \
+             inputs either (its rows below).",
+            r.ours / r.thesis,
+            r.ours,
+            SEEDS.count(),
+            r.thesis
+        )
+    });
     let figures = vec![startup_figure(st)?, acceleration_figure(&acc, away)?, braking_figure(&brk, order, t10)?];
-    Ok(Section { finding: String::new(), title: "Chapter 5: quoted figures", note: String::new(), rows, figures })
+    Ok(Section { finding, title: "Chapter 5: quoted figures", note: String::new(), rows, figures })
 }
 
 /// The 25-knot start-up (Figs. 5-1, 5-2): shaft and ship speed, turbine speed, bus voltage.
@@ -1823,32 +1882,37 @@ fn second_order_and_fuel(base: &crate::RunResult) -> Result<Section, String> {
     sc6_base.set_hub_depth_m(6.0);
     sc6_base.seakeeping.stern_motion = SternMotion::Consistent;
     sc6_base.as_printed = Default::default();
-    rows.push(seeded(
-        row(
-            "mean second-order force over calm-water resistance, head seas SS6, 25 kn, h0 = 6 m, 80 s",
-            src,
-            middle,
-            s6,
-            "-",
-            Tolerance::Abs((hi - lo) / 200.0),
-            &format!(
-                "the thesis' range read as {} +- {}; a general figure for rough seas, not a result for this hull: \
+    // Shown, not judged: the thesis' 20-30 % is a general statement, as the SS3 row below says.
+    rows.push(
+        seeded(
+            row(
+                "mean second-order force over calm-water resistance, head seas SS6, 25 kn, h0 = 6 m, 80 s (beside the \
+             thesis' general figure for rough seas)",
+                &format!("{src}; a general statement, not a result for this ship or sea"),
+                middle,
+                s6,
+                "-",
+                Tolerance::Abs((hi - lo) / 200.0),
+                &format!(
+                    "the thesis' range read as {} +- {}; a general figure for rough seas, not a result for this hull: \
                  ours is each realisation's mean added resistance over R_sp at its mean speed (seed 1: {:.0} kN \
                  over {:.0} kN)",
-                (lo + hi) / 200.0,
-                (hi - lo) / 200.0,
-                sig(base, "added_resistance_n").mean / 1e3,
-                r6 / 1e3
+                    (lo + hi) / 200.0,
+                    (hi - lo) / 200.0,
+                    sig(base, "added_resistance_n").mean / 1e3,
+                    r6 / 1e3
+                ),
             ),
-        ),
-        over_seeds(&sc6_base, |r| Ok(share(r, &sc6_base).0))?,
-    ));
+            measure(&seed_runs(&sc6_base)?, |r| Ok(share(r, &sc6_base).0))?,
+        )
+        .shown(Kind::Context),
+    );
     let mut sc3 = sc6.clone();
     sc3.sea.sea_state = 3;
     sc3.set_hub_depth_m(6.0);
     let ss3 = run(&sc3)?;
     let (s3, _) = share(&ss3, &sc3);
-    let s3_seeds = over_seeds(&sc3, |r| Ok(share(r, &sc3).0))?;
+    let s3_seeds = measure(&seed_runs(&sc3)?, |r| Ok(share(r, &sc3).0))?;
     rows.push(seeded(
         explained(
             "mean second-order force over calm-water resistance, head seas SS3, 25 kn, 80 s (beside the thesis' \
@@ -2145,15 +2209,8 @@ fn as_printed(base: &crate::RunResult) -> Result<Section, String> {
                    its rudder 67 m aft of G and 8.6e6 kg. Table 2.3 scaled by 142 m gives the 5415's mass plus 10 % \
                    and Table 5.1's resistance at 25 kn; scaled by 180 m, 2.75 times the mass and 1.6 times the \
                    resistance";
-        let hull = crate::Scenario::default().ship_hull()?;
         let t5 = AsPrintedParams { table_5_ship: true, ..Default::default() };
-        let abk = |ap: &AsPrintedParams| {
-            let b = hull.rigid_body(ap);
-            let h = crate::scenario::HullParams::default();
-            let u0 = crate::numerics::units::kn_to_m_s(h.linearization_speed_kn);
-            crate::ship::maneuvering::Abkowitz::new(&h.abkowitz, h.symmetric_hull, u0, b.length_m, 1025.0)
-        };
-        let (a5, a0) = (abk(&t5), abk(&AsPrintedParams::default()));
+        let (a5, a0) = (table_2_3_model(&t5)?, table_2_3_model(&AsPrintedParams::default())?);
         add("maneuvering surge mass m - X_udot".into(), sw, a5.m11 / 1e3, a0.m11 / 1e3, "t", why);
         let u25 = crate::numerics::units::kn_to_m_s(25.0);
         add(
@@ -2375,7 +2432,6 @@ fn wigley_rows() -> Vec<Row> {
     rows
 }
 
-/// The report as Markdown.
 /// Journee's (1992) model experiments on the Wigley III hull in head waves
 /// (core/data/journee1992_wigley_iii.csv) against our strip theory at the same conditions and in
 /// the same normalisations, split so that a difference can be placed: radiation (A33, B33),
@@ -2383,32 +2439,60 @@ fn wigley_rows() -> Vec<Row> {
 fn wigley_iii_experiments() -> Result<Section, String> {
     use crate::sea::seakeeping::strip::response;
     use crate::sea::seakeeping::wigley_check::{
-        journee_points, model_omega_grid, raw_peak, wigley_iii_model, WIGLEY_III_B, WIGLEY_III_L, WIGLEY_III_STATIONS,
+        journee_points, model_omega_grid, raw_peak, wigley_iii_model, JourneePoint, WIGLEY_III_B, WIGLEY_III_L,
+        WIGLEY_III_STATIONS,
     };
     let ship = wigley_iii_model(WIGLEY_III_B, WIGLEY_III_STATIONS)?;
     let table = ship.radiation_table(&model_omega_grid(ship.lpp, ship.g));
     let points = journee_points(&ship, &table)?;
     let src = "Journee 1992, Delft report 909 (Wigley III, head waves)";
-    const A33: &str = "7-11 % low at every frequency: with no transom STF's speed terms leave A33 at its zero-speed \
-                       value, while at tau = omega_e U / g of 0.7-1.3 the measured added mass changes with speed \
-                       (waves swept along the hull, sinkage, trim and the bow wave, none of them in strip theory)";
-    const B33: &str = "2-D strips overestimate the damping at low frequency (13 % at the lowest), where the radiated \
-                       waves of neighbouring strips interfere along a hull they are as long as";
-    const X5: &str = "7-12 % high: our moment at rest is within 2-4 % of these, so the excess is STF's speed term \
-                      U/(i omega_e) in the diffraction moment (X3 has none, and agrees to 6 %)";
-    const SHORT: &str = "short waves at rest: the heave force passes through zero near lambda/L = 0.75 (both find \
-                         the minimum there) and the motions are small differences of large terms, so a per cent \
-                         means little; the measured pitch 0.51 at lambda/L 0.5, between 0.12 and 0.14, looks like a \
-                         reading error of the transcription";
-    const HEAVE: &str = "strip theory's motions; our Fn 0.3 resonance (1.69 at lambda/L 1.09) lies below Journee's \
-                         shortest wave there, 1.25";
-    const PITCH: &str = "8-13 % low in long waves at rest while heave is 5-10 % high; the data have no excitation at \
-                         rest to place it (the assumed k_yy = 0.25 L and the ends' 3-D relief are candidates): open \
-                         in kind";
-    const RAW: &str = "the peak follows our heave-pitch resonance, lightly damped in strip theory (heave at the peak \
-                       1.67 at Fn 0.3, 2.53 at Fn 0.4), so it grows with speed where Journee's stays near 20-28; \
-                       Gerritsma-Beukelman's radiated energy on the same motions is 25-45 % higher still. See the \
-                       note on beam";
+    // Short waves at rest (lambda/L < 1): the heave force passes through zero near 0.75 and the
+    // motions are small differences of large terms, for heave and pitch alike.
+    let short = |p: &JourneePoint| p.fn_ == 0.0 && p.x < 1.0 && (p.table == "heave" || p.table == "pitch");
+    // The range of ours over measured, in per cent, of the points of a table that are judged.
+    let range = |table: &str, at_rest: Option<bool>| -> (f64, f64) {
+        points
+            .iter()
+            .filter(|p| p.table == table && !short(p) && at_rest.is_none_or(|r| (p.fn_ == 0.0) == r))
+            .map(|p| 100.0 * (p.ours / p.measured - 1.0))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)))
+    };
+    let pct = |(a, b): (f64, f64)| format!("{a:+.0} % to {b:+.0} %");
+    let a33 = format!(
+        "{} at every frequency: with no transom STF's speed terms leave A33 at its zero-speed value, while at \
+         tau = omega_e U / g of 0.7-1.3 the measured added mass changes with speed (waves swept along the hull, \
+         sinkage, trim and the bow wave, none of them in strip theory)",
+        pct(range("a33", None))
+    );
+    let b33 = format!(
+        "{}, falling with frequency: 2-D strips overestimate the damping at low frequency, where the radiated \
+         waves of neighbouring strips interfere along a hull they are as long as",
+        pct(range("b33", None))
+    );
+    let x3 = format!("{}: Froude-Krylov plus STF's diffraction", pct(range("x3", None)));
+    let x5 = format!(
+        "{}: STF's speed term U/(i omega_e) in the diffraction moment raises it (X3 has none); the data have no \
+         restrained moment at rest to confirm it",
+        pct(range("x5", None))
+    );
+    let heave = format!(
+        "{} at rest in long waves, {} at speed; our Fn 0.3 resonance (lambda/L about 1.1) lies below Journee's \
+         shortest wave there, 1.25",
+        pct(range("heave", Some(true))),
+        pct(range("heave", Some(false)))
+    );
+    let pitch = format!(
+        "{} at rest in long waves, while heave is high: the data have no excitation at rest to place it (the \
+         assumed k_yy = 0.25 L and the ends' 3-D relief are candidates); no pitch at speed was measured",
+        pct(range("pitch", Some(true)))
+    );
+    let short_why = "short waves at rest (lambda/L < 1): the heave force passes through zero near lambda/L = 0.75 \
+                     (both find the minimum there) and the motions are small differences of large terms, so a per \
+                     cent means little; the measured pitch 0.51 at lambda/L 0.5, between 0.12 and 0.14, looks like \
+                     a reading error of the transcription";
+    let raw = "open: above Fn 0.2 the peak follows our heave-pitch resonance, lightly damped in strip theory, and \
+               grows with speed where Journee's stays near 20-28; at Fn 0.2 it is low, which the resonance does \
+               not explain. See the note on beam";
     let mut rows = Vec::new();
     for p in &points {
         let at = match p.table {
@@ -2416,41 +2500,32 @@ fn wigley_iii_experiments() -> Result<Section, String> {
             "raw_peak" => format!("peak over lambda/L (ours at {:.2})", p.x),
             _ => format!("lambda/L = {}", p.x),
         };
-        let (what, unit) = match p.table {
-            "heave" => ("heave z_a / zeta_a", "-"),
-            "pitch" => ("pitch theta_a L / (2 pi zeta_a)", "-"),
-            "a33" => ("radiation: heave added mass A33 / (rho V)", "-"),
-            "b33" => ("radiation: heave damping B33 / (rho V) sqrt(L/g)", "-"),
-            "x3" => ("excitation: heave force |X3| / (C33 zeta_a), restrained", "-"),
-            "x5" => ("excitation: pitch moment |X5| / (k C55 zeta_a), restrained", "-"),
-            _ => ("added resistance R_aw / (rho g zeta_a^2 B^2 / L), Salvesen 1978", "-"),
+        let what = match p.table {
+            "heave" => "heave z_a / zeta_a",
+            "pitch" => "pitch theta_a L / (2 pi zeta_a)",
+            "a33" => "radiation: heave added mass A33 / (rho V)",
+            "b33" => "radiation: heave damping B33 / (rho V) sqrt(L/g)",
+            "x3" => "excitation: heave force |X3| / (C33 zeta_a), restrained",
+            "x5" => "excitation: pitch moment |X5| / (k C55 zeta_a), restrained",
+            _ => "added resistance R_aw / (rho g zeta_a^2 B^2 / L), Salvesen 1978",
         };
         let quantity = format!("{what}, Fn {}, {at}", p.fn_);
-        // How far each kind of point is claimed to agree, or why it is not.
-        enum Judge {
-            Within(f64, &'static str),
-            Explained(&'static str),
-            Open(&'static str),
-        }
-        let short = if p.table == "heave" { 1.0 } else { 0.75 };
-        let judge = match p.table {
-            "a33" => Judge::Within(0.12, A33),
-            "b33" => Judge::Within(0.14, B33),
-            "x3" => Judge::Within(0.065, "Froude-Krylov plus STF's diffraction"),
-            "x5" => Judge::Within(0.125, X5),
-            "heave" | "pitch" if p.fn_ == 0.0 && p.x < short => Judge::Explained(SHORT),
-            "heave" => Judge::Within(0.10, HEAVE),
-            "pitch" => Judge::Within(0.14, PITCH),
-            _ => Judge::Open(RAW),
-        };
-        let r = match judge {
-            Judge::Within(tol, why) => row(&quantity, src, p.measured, p.ours, unit, Tolerance::Rel(tol), why),
-            Judge::Explained(why) => explained(&quantity, src, p.measured, p.ours, unit, why),
-            Judge::Open(why) => open(&quantity, src, p.measured, p.ours, unit, why),
+        // Each tolerance is what the code reaches, rounded up: a change that makes the agreement
+        // worse fails the build.
+        let judged = |tol: f64, why: &str| row(&quantity, src, p.measured, p.ours, "-", Tolerance::Rel(tol), why);
+        let r = match p.table {
+            _ if short(p) => explained(&quantity, src, p.measured, p.ours, "-", short_why),
+            "a33" => judged(0.12, &a33),
+            "b33" => judged(0.14, &b33),
+            "x3" => judged(0.065, &x3),
+            "x5" => judged(0.125, &x5),
+            "heave" => judged(0.10, &heave),
+            "pitch" => judged(0.14, &pitch),
+            _ => open(&quantity, src, p.measured, p.ours, "-", raw),
         };
         rows.push(r.kind(Kind::Experiment));
     }
-    // Salvesen's added resistance against beam: Wigley III forms of 2 and 1.5 times the beam at
+    // Salvesen's added resistance against beam: Wigley III forms of 1.5 and 2 times the beam at
     // the same length, draft and loading, at Fn 0.3.
     let fr = 0.3;
     let beam_study = |b_over_l: f64| -> Result<(f64, f64, f64), String> {
@@ -2466,30 +2541,38 @@ fn wigley_iii_experiments() -> Result<Section, String> {
     let (p15, _, g15) = beam_study(0.15)?;
     let (p20, l20, g20) = beam_study(0.2)?;
     let expo = libm::log(p20 * 4.0 / p10) / libm::log(2.0);
+    let judged: Vec<&Row> = rows.iter().filter(|r| r.tolerance.is_some()).collect();
+    let claims = judged.iter().filter_map(|r| match r.tolerance {
+        Some(Tolerance::Rel(x)) => Some(100.0 * x),
+        _ => None,
+    });
+    let (tmin, tmax) = claims.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
     let note = format!(
         "Our strip theory at Journee's model scale (L {} m, B {} m, d 0.1875 m, the (1 + 0.2 xi^2) form, {} \
          stations, fresh water; KG 0.15 m where Journee's 0.17 m gives a negative GM_T, which reaches head-sea \
          heave and pitch only through C55, +0.5 %). Measured values as transcribed in the data file (its header \
-         gives the reading uncertainty). Radiation, excitation and the motions at speed agree within 6-14 %; \
-         the misses are short waves at rest and the added resistance. Beam: on Wigley III forms at the same \
-         length, draft and loading, our nondimensional peak at Fn {fr} falls from {p10:.1} (B/L 0.10, at \
-         lambda/L {l10:.2}) to {p15:.1} (0.15) and {p20:.1} (0.20, at {l20:.2}): the dimensional peak grows as \
-         B^{expo:.2}, not B^2, because at a fixed draft the damping grows faster than the mass and restoring and \
-         the resonance flattens; Salvesen over Gerritsma-Beukelman at the peak stays {g10:.2}, {g15:.2}, \
-         {g20:.2}, so the formula is not mis-scaled with beam: it inherits the motions.",
+         gives the reading uncertainty). Each tolerance is what our code reaches, rounded up, so that a change \
+         for the worse fails. Beam: on Wigley III forms at the same length, draft and loading, our \
+         nondimensional peak at Fn {fr} falls from {p10:.1} (B/L 0.10, at lambda/L {l10:.2}) to {p15:.1} (0.15) \
+         and {p20:.1} (0.20, at {l20:.2}): the dimensional peak grows as B^{expo:.2}, not B^2, because at a \
+         fixed draft the damping grows faster than the mass and restoring and our resonance flattens. Salvesen \
+         over Gerritsma-Beukelman at the peak stays {g10:.2}, {g15:.2}, {g20:.2}: both formulas scale alike on \
+         the same motions, so neither mis-scales with beam on its own; whether our motions' dependence on beam \
+         is right needs measurements on a wider hull (Journee's Wigley II and IV, L/B 5), which our data file \
+         does not hold.",
         WIGLEY_III_L, WIGLEY_III_B, WIGLEY_III_STATIONS
     );
     let misses: Vec<f64> =
         points.iter().filter(|p| p.table == "raw_peak").map(|p| 100.0 * (p.ours / p.measured - 1.0)).collect();
     let (lo, hi) = misses.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
-    let passed = rows.iter().filter(|r| r.verdict == Verdict::Pass).count();
+    let passed = judged.iter().filter(|r| r.verdict == Verdict::Pass).count();
     let finding = format!(
         "**Seakeeping against measurements.** On Journee's Wigley III model experiments our strip theory's \
-         radiation, excitation and motions agree within their stated 6.5-14 % at {passed} of {} points; short \
-         waves at rest are explained, and the added-resistance peaks miss by {lo:+.0} % to {hi:+.0} % (open: they \
-         follow strip theory's lightly damped resonance). Against PDStrip, a second strip code run on our hulls, \
-         roll in beam seas agrees within 10 % and the relative motion at the propeller hub within 8 %.",
-        rows.len()
+         radiation, excitation and motions pass {passed} of the {} points where a tolerance is claimed, within \
+         {tmin:.1}-{tmax:.0} % (each kind's tolerance is what the code reaches); of the other {}, short waves at \
+         rest are explained, and the added-resistance peaks miss by {lo:+.0} % to {hi:+.0} % (open).",
+        judged.len(),
+        rows.len() - judged.len()
     );
     Ok(Section {
         finding,
@@ -2513,14 +2596,16 @@ struct PeerSeries {
     points: Vec<(f64, f64)>,
 }
 
+/// The columns of core/data/pdstrip_raos.csv, in order.
+const PDSTRIP_HEADER: &str = "hull,fn,heading_deg,omega_rad_s,quantity,amplitude,phase_deg";
+
 fn pdstrip_series() -> Result<Vec<PeerSeries>, String> {
     let mut out: Vec<PeerSeries> = Vec::new();
-    let mut header = false;
-    for line in PDSTRIP_RAOS.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with('#')) {
-        if !header {
-            header = true;
-            continue;
-        }
+    let mut lines = PDSTRIP_RAOS.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with('#'));
+    if lines.next() != Some(PDSTRIP_HEADER) {
+        return Err(format!("pdstrip_raos.csv: the header is not '{PDSTRIP_HEADER}'"));
+    }
+    for line in lines {
         let f: Vec<&str> = line.split(',').collect();
         let num = |i: usize| -> Result<f64, String> {
             f.get(i).and_then(|x| x.parse::<f64>().ok()).ok_or_else(|| format!("pdstrip_raos.csv: bad line '{line}'"))
@@ -2540,13 +2625,14 @@ fn pdstrip_series() -> Result<Vec<PeerSeries>, String> {
 
 /// Our strip theory against PDStrip (a second, independent strip code, run by us on the same
 /// hulls and loading with potential damping only): roll in beam seas at Fn 0 and 0.2, sway, roll
-/// and yaw in bow-oblique seas at speed, and the relative motion at the propeller hub in head seas.
+/// and yaw in bow-oblique seas at speed, heave, pitch and the relative motion at the propeller
+/// hub in head seas, and the aft-end terms' share of the roll's fall with speed.
 fn pdstrip_rows() -> Result<Section, String> {
     use crate::sea::seakeeping::complex::cabs;
     use crate::sea::seakeeping::params::{HubPlace, SternMotion as Sm};
-    use crate::sea::seakeeping::strip::{default_omega_grid, response};
+    use crate::sea::seakeeping::strip::{default_omega_grid, response, RadiationTable, Ship};
     let rho = 1025.0;
-    let mut ships = Vec::new();
+    let mut ships: Vec<(&str, Ship, RadiationTable, HubPlace)> = Vec::new();
     for name in ["dtmb5415", "wigley"] {
         let hull = crate::ship::hull::HullSpec { name: name.into(), ..Default::default() }
             .resolve(rho)
@@ -2557,54 +2643,65 @@ fn pdstrip_rows() -> Result<Section, String> {
         let table = ship.radiation_table(&default_omega_grid());
         ships.push((name, ship, table, HubPlace { x_aft: hull.prop_x_aft_m, y: 0.0 }));
     }
+    // Ours for one PDStrip quantity at wave frequency `w`.
+    let ours = |ship: &Ship, table: &RadiationTable, hub: HubPlace, s: &PeerSeries, w: f64| -> f64 {
+        let u = s.froude * libm::sqrt(ship.g * ship.lpp);
+        let beta = s.heading_deg.to_radians();
+        let r = response(ship, table, w, u, beta, 1.0);
+        match s.quantity.as_str() {
+            "sway_m_per_m" => cabs(r.sway),
+            "roll_rad_per_m" => cabs(r.roll),
+            "yaw_rad_per_m" => cabs(r.yaw),
+            "heave_m_per_m" => cabs(r.heave),
+            "pitch_rad_per_m" => cabs(r.pitch),
+            _ => {
+                let (cb, sb) = (libm::cos(beta), libm::sin(beta));
+                let wave = Sm::Consistent.hub_wave(w * w / ship.g, hub, cb, sb);
+                cabs(Sm::Consistent.hub_transfer(wave, r.heave, r.roll, r.pitch, hub))
+            }
+        }
+    };
     let src = "PDStrip (Soeding), commit bb895d4, validation/pdstrip/";
+    // What is claimed, series by series (each tolerance what the code reaches, rounded up).
+    let (beam_tol, rest_tol, oblique_tol) = (0.10, 0.08, 0.25);
     let why_beam = "beam seas, potential damping in both codes: the resonances are narrow (their heights move \
                     with the frequency grid); the fall of the peak with speed is the aft-end terms' (rows below)";
-    let why_hub = "head seas: the wave at the hub less the stern's rise (heave and pitch, eq. 2.57 with the \
-                   consistent sign); near 1 where the hull barely moves, small where it follows the wave";
+    let why_rest = "head seas at rest: heave, pitch and the relative motion at the hub (the wave there less the \
+                    stern's rise, eq. 2.57 with the consistent sign)";
+    let why_speed = "head seas at 25 kn, in the band of SS6's waves: near the heave-pitch resonance the codes' \
+                     heave and pitch differ by up to a tenth and their phases by 10-25 deg, and the hub's relative \
+                     motion is a small difference of the wave and the stern's rise, so it differs more; the \
+                     diffraction's speed correction differs between the codes (U/(i omega_e) on STF's radiation \
+                     potential, U/omega0 in PDStrip at the wave frequency): open";
     let why_oblique = "bow-oblique seas at speed: both codes take STF's omega0 omega_e in the diffraction force, \
                        but PDStrip's speed correction of it is U/omega0 (solved at the wave frequency) where STF's is \
-                       U/(i omega_e) on the radiation potential; 25 % claimed at and below the peak";
-    let why_above = "above the peak at speed the two diffraction speed corrections part (PDStrip's is 1.5-1.9 times \
-                     STF's over 0.5-1.0 rad/s here); which is nearer a measurement is not shown: open";
+                       U/(i omega_e) on the radiation potential; claimed at and below the peak";
+    let why_above = "above the peak at speed the two diffraction speed corrections part, PDStrip's growing against \
+                     STF's with omega_e / omega0; which is nearer a measurement is not shown: open";
     let mut rows = Vec::new();
     for s in pdstrip_series()? {
-        // The series this section compares (the CSV also holds sway in beam seas and heave and
-        // pitch in head seas, which the rows of other sections cover).
-        let wanted = matches!(
-            (s.heading_deg as i64, s.quantity.as_str()),
-            (90, "roll_rad_per_m") | (135, _) | (180, "rel_motion_stern_m_per_m")
-        );
+        // The series compared here (the CSV also holds sway in beam seas, shown by its script).
+        let head = s.heading_deg == 180.0;
+        let wanted = head || s.heading_deg == 135.0 || (s.heading_deg == 90.0 && s.quantity == "roll_rad_per_m");
+        let Some((name, ship, table, hub)) = ships.iter().find(|x| x.0 == s.hull) else { continue };
         if !wanted {
             continue;
         }
-        let Some((name, ship, table, hub)) = ships.iter().find(|x| x.0 == s.hull) else { continue };
-        let u = s.froude * libm::sqrt(ship.g * ship.lpp);
-        let beta = s.heading_deg.to_radians();
-        let ours = |w: f64| -> f64 {
-            let r = response(ship, table, w, u, beta, 1.0);
-            match s.quantity.as_str() {
-                "sway_m_per_m" => cabs(r.sway),
-                "roll_rad_per_m" => cabs(r.roll),
-                "yaw_rad_per_m" => cabs(r.yaw),
-                "heave_m_per_m" => cabs(r.heave),
-                "pitch_rad_per_m" => cabs(r.pitch),
-                _ => {
-                    let (cb, sb) = (libm::cos(beta), libm::sin(beta));
-                    let k = w * w / ship.g;
-                    let wave = Sm::Consistent.hub_wave(k, *hub, cb, sb);
-                    cabs(Sm::Consistent.hub_transfer(wave, r.heave, r.roll, r.pitch, *hub))
-                }
-            }
-        };
-        // PDStrip's peak, and a frequency below and above it (PDStrip's below 0.3 rad/s are not
-        // trusted: its encounter frequency reaches its 2U/L floor).
+        // PDStrip's frequencies under 0.3 rad/s are not trusted: its encounter frequency reaches
+        // its 2U/L floor there.
         let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| p.0 >= 0.3).collect();
-        let Some(&(wp, _)) = pts.iter().max_by(|a, b| a.1.total_cmp(&b.1)) else { continue };
         let near =
             |target: f64| pts.iter().copied().min_by(|a, b| (a.0 - target).abs().total_cmp(&(b.0 - target).abs()));
+        // In head seas the band of SS6's waves (its peak 0.507 rad/s to twice it); elsewhere
+        // PDStrip's peak with a frequency below and above it.
+        let targets: Vec<(&str, f64)> = if head {
+            vec![("SS6 band", 0.45), ("SS6 band", 0.6), ("SS6 band", 0.7), ("SS6 band", 0.85)]
+        } else {
+            let Some(&(wp, _)) = pts.iter().max_by(|a, b| a.1.total_cmp(&b.1)) else { continue };
+            vec![("below the peak", 0.8 * wp), ("at PDStrip's peak", wp), ("above the peak", 1.4 * wp)]
+        };
         let mut chosen: Vec<(&str, (f64, f64))> = Vec::new();
-        for (label, target) in [("below the peak", 0.8 * wp), ("at PDStrip's peak", wp), ("above the peak", 1.4 * wp)] {
+        for (label, target) in targets {
             if let Some(p) = near(target) {
                 if !chosen.iter().any(|c| c.1 .0 == p.0) {
                     chosen.push((label, p));
@@ -2615,6 +2712,8 @@ fn pdstrip_rows() -> Result<Section, String> {
             "sway_m_per_m" => ("sway", "m/m"),
             "roll_rad_per_m" => ("roll", "rad/m"),
             "yaw_rad_per_m" => ("yaw", "rad/m"),
+            "heave_m_per_m" => ("heave", "m/m"),
+            "pitch_rad_per_m" => ("pitch", "rad/m"),
             _ => ("relative motion at the propeller hub (eq. 2.57, consistent)", "m/m"),
         };
         for (label, (w, amp)) in chosen {
@@ -2622,52 +2721,62 @@ fn pdstrip_rows() -> Result<Section, String> {
                 "{name} {}, heading {} deg, Fn {:.2}, omega {w} rad/s ({label})",
                 what.0, s.heading_deg, s.froude
             );
+            let v = ours(ship, table, *hub, &s, w);
             let r = match (s.heading_deg as i64, label) {
-                (90, _) => row(&quantity, src, amp, ours(w), what.1, Tolerance::Rel(0.10), why_beam),
-                (180, _) => row(&quantity, src, amp, ours(w), what.1, Tolerance::Rel(0.08), why_hub),
-                (_, "above the peak") => open(&quantity, src, amp, ours(w), what.1, why_above),
-                _ => row(&quantity, src, amp, ours(w), what.1, Tolerance::Rel(0.25), why_oblique),
+                (90, _) => row(&quantity, src, amp, v, what.1, Tolerance::Rel(beam_tol), why_beam),
+                (180, _) if s.froude == 0.0 => row(&quantity, src, amp, v, what.1, Tolerance::Rel(rest_tol), why_rest),
+                (180, _) => open(&quantity, src, amp, v, what.1, why_speed),
+                (_, "above the peak") => open(&quantity, src, amp, v, what.1, why_above),
+                _ => row(&quantity, src, amp, v, what.1, Tolerance::Rel(oblique_tol), why_oblique),
             };
             rows.push(r.kind(Kind::PeerCode));
         }
     }
     // STF's aft-end terms (seakeeping.aft_end_terms) and the fall of the Wigley's beam-sea roll
-    // peak with speed (potential damping only), against PDStrip's fall on its frequency grid.
+    // peak from Fn 0 to 0.2 (potential damping only), both codes on PDStrip's frequency grid.
     let ae = crate::sea::seakeeping::aft_end::aft_end_roll_peaks()?;
-    let peak_of = |froude: f64| {
-        pdstrip_series().ok().and_then(|all| {
-            all.into_iter()
-                .find(|x| {
-                    x.hull == "wigley" && x.heading_deg == 90.0 && x.froude == froude && x.quantity == "roll_rad_per_m"
-                })
-                .map(|x| x.points.iter().map(|p| p.1).fold(0.0, f64::max))
-        })
+    let series = pdstrip_series()?;
+    let roll_series = |froude: f64| {
+        series
+            .iter()
+            .find(|x| {
+                x.hull == "wigley" && x.heading_deg == 90.0 && x.froude == froude && x.quantity == "roll_rad_per_m"
+            })
+            .ok_or_else(|| format!("pdstrip_raos.csv: no Wigley beam-sea roll at Fn {froude}"))
     };
-    let fall_pdstrip = match (peak_of(0.0), peak_of(0.2)) {
-        (Some(a), Some(b)) if a > 0.0 => 1.0 - b / a,
-        _ => f64::NAN,
+    let (rest, speed) = (roll_series(0.0)?, roll_series(0.2)?);
+    let pdstrip_peak = |s: &PeerSeries| s.points.iter().map(|p| p.1).fold(0.0, f64::max);
+    let fall_pdstrip = 1.0 - pdstrip_peak(speed) / pdstrip_peak(rest);
+    let (_, wigley, wtable, whub) = ships.iter().find(|x| x.0 == "wigley").ok_or("no Wigley")?;
+    let fall_ours = |terms: bool| -> Result<f64, String> {
+        let mut ship = wigley.clone();
+        ship.aft_end_terms = terms;
+        let peak = |s: &PeerSeries| s.points.iter().map(|p| ours(&ship, wtable, *whub, s, p.0)).fold(0.0, f64::max);
+        Ok(1.0 - peak(speed) / peak(rest))
     };
     let what = format!(
-        "fall of the beam-sea roll peak from Fn 0 to Fn 0.2 of the {} (GM_T {:.2} m, potential damping)",
+        "fall of the beam-sea roll peak from Fn 0 to Fn 0.2 of the {} (GM_T {:.2} m, potential damping, peaks \
+         on PDStrip's 0.005 rad/s grid)",
         ae.hull, ae.gm_t_m
     );
     rows.push(
         row(
             &format!("{what}, STF's aft-end terms on (seakeeping.aft_end_terms)"),
-            &format!("{src} (its peaks on a 0.005 rad/s grid)"),
+            src,
             fall_pdstrip,
-            -ae.change_with_terms_pct() / 100.0,
+            fall_ours(true)?,
             "-",
-            Tolerance::Abs(0.03),
+            Tolerance::Abs(0.05),
             &format!(
-                "roll per wave slope {:.2} at {:.3} rad/s at rest, {:.2} at {:.3} rad/s at Fn 0.2: a deep, thin stern \
-                 keeps sway and roll added mass at the aftmost station with beam, and STF's terms U a22^A, U a24^A \
-                 and U a44^A (Appendix A eqs. 13, 14, 18) turn it into damping as speed rises; PDStrip keeps the \
-                 same end terms",
+                "between grid points the peaks are {:.2} and {:.2} per wave slope at {:.3} and {:.3} rad/s \
+                 ({:.1} % fall): a deep, thin stern keeps sway and roll added mass at the aftmost station with \
+                 beam, and STF's terms U a22^A, U a24^A and U a44^A (Appendix A eqs. 13, 14, 18) turn it into \
+                 damping as speed rises; PDStrip keeps the same end terms",
                 ae.with_terms[0].roll_per_slope,
-                ae.with_terms[0].omega_rad_s,
                 ae.with_terms[1].roll_per_slope,
-                ae.with_terms[1].omega_rad_s
+                ae.with_terms[0].omega_rad_s,
+                ae.with_terms[1].omega_rad_s,
+                -ae.change_with_terms_pct()
             ),
         )
         .kind(Kind::PeerCode),
@@ -2675,33 +2784,44 @@ fn pdstrip_rows() -> Result<Section, String> {
     rows.push(
         explained(
             &format!("{what}, aft-end terms off"),
-            &format!("{src} (its peaks on a 0.005 rad/s grid)"),
+            src,
             fall_pdstrip,
-            -ae.change_without_terms_pct() / 100.0,
+            fall_ours(false)?,
             "-",
             &format!(
                 "the switch shows the cause: with every aft-end term set to zero, as codes do that keep end terms \
-                 only for a transom, the peak does not fall ({:.2} at rest, {:.2} at Fn 0.2)",
+                 only for a transom, the peak does not fall ({:.2} at rest, {:.2} at Fn 0.2 per wave slope)",
                 ae.without_terms[0].roll_per_slope, ae.without_terms[1].roll_per_slope
             ),
         )
         .shown(Kind::PeerCode),
     );
+    let finding = format!(
+        "**Against a second strip code.** PDStrip, built and run by us on the same hulls, agrees with ours within \
+         {:.0} % for roll in beam seas at Fn 0 and 0.2 and within {:.0} % in head seas at rest; in bow-oblique seas \
+         at speed within {:.0} % at and below the peak and not above it, and in head seas at 25 kn the hub's \
+         relative motion in SS6's band differs by more (open), which bears on the eq. 2.57 rates above.",
+        100.0 * beam_tol,
+        100.0 * rest_tol,
+        100.0 * oblique_tol
+    );
     Ok(Section {
-        finding: String::new(),
+        finding,
         title: "Roll, oblique seas and the hub's relative motion against a second strip code (PDStrip)",
         note: "PDStrip (H. Soeding's public strip method, source commit bb895d445186575c886bf900352795e88c245d8b) \
                was built with gfortran and run by us on the same hulls and loading (validation/pdstrip/: inputs, \
                outputs and regenerate.py; core/data/pdstrip_raos.csv), with potential damping only; ours is run \
                with its viscous (Ikeda) roll damping off to match. Conventions converted to STF's (the CSV's \
-               header). Each series is compared below, at and above PDStrip's peak; its frequencies under 0.3 \
-               rad/s are left out (its encounter frequency reaches its floor of 2U/L there)."
+               header). Each series is compared below, at and above PDStrip's peak, or in head seas across the \
+               band of SS6's waves; PDStrip's frequencies under 0.3 rad/s are left out (its encounter frequency \
+               reaches its floor of 2U/L there). Each tolerance is what our code reaches, rounded up."
             .into(),
         rows,
         figures: Vec::new(),
     })
 }
 
+/// The report as Markdown.
 pub fn markdown(sections: &[Section], size: Size) -> String {
     let (rated, half) = (thesis_text("ch_5_1.turbine_efficiency_rated"), thesis_text("ch_5_1.turbine_efficiency_half"));
     let mut s = String::from(
@@ -2718,8 +2838,8 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
          Other sources of numbers: the Table 2.3 maneuvering coefficients (Stettler's kayak tests, via the thesis); \
          the Wageningen B-series polynomials (Oosterveld and van Oossanen 1975); the B4-70 four-quadrant series \
          (van Lammeren et al. 1969, as quoted by Smogeli 2006); the DTMB 5415 offsets (SIMMAN benchmark hull, sliced \
-         from the navaltoolbox-lib test mesh); the gas-turbine part-load curve (TransiEnt library, anchored to the \
-         thesis' {rated} % and {half} %); the Purdue MVDC testbed parameters (our reconstruction from the thesis' own \
+         from the navaltoolbox-lib test mesh); the gas-turbine part-load curve (TransiEnt library, scaled to the \
+         thesis' {rated} % at rated power; its {half} % at half power is checked, not fitted); the Purdue MVDC testbed parameters (our reconstruction from the thesis' own \
          Tables 4.1 and 4.2, core/data/purdue_testbed_params.md); the Wigley hull (Wigley 1934's parabolic \
          form at L/B 10, B/T 1.6, generated in code at L = 100 m; checked against its closed-form hydrostatics); \
          Journee's (1992) model experiments on the Wigley III (Delft report 909, core/data/journee1992_wigley_iii.csv); \
@@ -2871,8 +2991,9 @@ fn opening(sections: &[Section], size: Size) -> String {
          row can only where its explanation gives a number of its own (the thesis' number, reproduced by the \
          model with the explanation's change within a stated tolerance). Calibrations \
          agree by construction. Analytic checks test the numerics against closed forms, not the thesis. Rows that \
-         depend on the random sea give the median over {} seeds with the range, and are judged by the median \
-         (how many seeds fall within is beside the verdict). {fails} row(s) fail.\n\n",
+         depend on the random sea give the median over {} seeds with the range; the thesis shows one realisation, \
+         which passes when it lies within the middle 80 % of ours (how many seeds fall within the row's tolerance \
+         is beside the verdict). {fails} row(s) fail.\n\n",
         rows.len(),
         n(Kind::Thesis, None),
         n(Kind::Thesis, Some(Verdict::Pass)),
@@ -2989,17 +3110,21 @@ mod tests {
         assert!(md.contains("| pass, at a chosen input | chosen input: a rate |"), "{md}");
     }
 
-    /// A row over seeds takes the median as ours and is judged by it; the spread counts the seeds
-    /// within the tolerance and the table shows the range.
+    /// A row over seeds takes the median as ours and is judged by where the thesis' one
+    /// realisation falls among the seeds (within the middle 80 %: the second smallest to the
+    /// second largest of ten); the spread counts the seeds within the tolerance and the table shows
+    /// the range.
     #[test]
-    fn a_row_over_seeds_is_judged_by_its_median() {
+    fn a_row_over_seeds_is_judged_by_where_the_thesis_falls() {
         let values: Vec<f64> = SEEDS.map(|s| s as f64).collect();
         let r = seeded(row("q", "s", 5.0, 0.0, "-", Tolerance::Abs(1.0), ""), values.clone());
         assert_eq!((r.ours, r.verdict), (5.5, Verdict::Pass));
         assert_eq!(r.spread.as_ref().and_then(|s| s.within), Some(3));
         assert_eq!(r.spread.as_ref().map(Spread::range), Some((1.0, 10.0)));
-        let far = seeded(row("q", "s", 9.0, 9.0, "-", Tolerance::Abs(1.0), ""), values.clone());
-        assert_eq!((far.verdict, far.spread.as_ref().and_then(|s| s.within)), (Verdict::Fail, Some(3)));
+        let edge = seeded(row("q", "s", 9.0, 9.0, "-", Tolerance::Abs(1.0), ""), values.clone());
+        assert_eq!(edge.verdict, Verdict::Pass);
+        let far = seeded(row("q", "s", 9.5, 9.0, "-", Tolerance::Abs(1.0), ""), values.clone());
+        assert_eq!((far.verdict, far.spread.as_ref().and_then(|s| s.within)), (Verdict::Fail, Some(2)));
         let o = seeded(open("q", "s", 9.0, 0.0, "-", ""), values);
         assert_eq!((o.verdict, o.spread.as_ref().and_then(|s| s.within)), (Verdict::Open, None));
         let sec =
@@ -3009,6 +3134,21 @@ mod tests {
             md.contains("| 5.5 (median; 1 to 10 over 10 seeds) |") && md.contains("| pass (3 of 10 seeds within) |"),
             "{md}"
         );
+    }
+
+    /// An explanation's own number is checked: within its tolerance the row stays explained and
+    /// says so, outside it fails, and one that lands no nearer the thesis' number than ours is not
+    /// claimed.
+    #[test]
+    fn an_explanation_can_fail() {
+        let base = || explained("q", "s", 10.0, 7.0, "-", "why");
+        let held = base().because("a change".into(), 9.9, Tolerance::Abs(0.2));
+        assert_eq!((held.verdict, held.explanation.is_some()), (Verdict::Explained, true));
+        let wrong = base().because("a change".into(), 9.5, Tolerance::Abs(0.2));
+        assert_eq!(wrong.verdict, Verdict::Fail);
+        let farther = base().because("a change".into(), 13.5, Tolerance::Abs(0.2));
+        assert_eq!((farther.verdict, farther.explanation.is_none()), (Verdict::Explained, true));
+        assert!(farther.reason.contains("no nearer"), "{}", farther.reason);
     }
 
     /// A key the file has gives its printed number (a percentage as a fraction), and the row
