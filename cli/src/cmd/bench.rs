@@ -116,7 +116,7 @@ fn seakeeping(repeat: u32, hull: Option<String>, sets: Vec<String>) -> Result<()
     }
     let one_thread = best.0 + best.1;
     let mut out = serde_json::json!({
-        "workload": format!("DTMB 5415: sectional coefficients of {} strips at 48 encounter frequencies, then RAOs and drift on the 40 x 6 x 13 grid", five.strips.len()),
+        "workload": format!("DTMB 5415: sectional coefficients of {} strips at 48 encounter frequencies, then RAOs and drift on the default 40 x 8 x 13 grid", five.strips.len()),
         "sections_s": best.0,
         "rao_grid_s": best.1,
         "total_s": one_thread,

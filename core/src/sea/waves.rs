@@ -330,6 +330,18 @@ impl crate::params::CrossCheck for SeaParams {
 }
 
 impl SeaParams {
+    /// The band of wave frequencies [rad/s] the random sea is sampled over and its statistics
+    /// integrated over: the scenario's bounds, or 0.6 and 4 times the modal frequency
+    /// ([`SeaSampling::new`]'s default).
+    pub fn band(&self) -> (f64, f64) {
+        if self.omega_min_rad_s > 0.0 && self.omega_max_rad_s > 0.0 {
+            (self.omega_min_rad_s, self.omega_max_rad_s)
+        } else {
+            let d = SeaSampling::new(1.0, self.spectrum().1, 0.0);
+            (d.omega_min, d.omega_max)
+        }
+    }
+
     /// (H_1/3 [m], modal frequency [rad/s]) of the random sea.
     pub fn spectrum(&self) -> (f64, f64) {
         if self.h_sig_m > 0.0 && self.omega_n_rad_s > 0.0 {

@@ -69,10 +69,7 @@ pub fn sea_of(sc: &Scenario) -> Result<(Vec<WaveComponent>, Option<Conditioned>)
             let (h, wn) = sea.spectrum();
             let mut s = SeaSampling::new(h, wn, mu);
             s.components = sea.components as usize;
-            if sea.omega_min_rad_s > 0.0 && sea.omega_max_rad_s > 0.0 {
-                s.omega_min = sea.omega_min_rad_s;
-                s.omega_max = sea.omega_max_rad_s;
-            }
+            (s.omega_min, s.omega_max) = sea.band();
             s.spreading = sea.spreading;
             let mut comps = s.sample(sc.sim.seed);
             if !(sea.gaussian || sc.rare_event.active()) {

@@ -771,11 +771,7 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
     let table = sc.rao_table()?;
     let hubs = hull.shaft_y_m.map(|y| HubPlace { x_aft: hull.prop_x_aft_m, y });
     let (h, wn) = sc.sea.spectrum();
-    let (w_lo, w_hi) = if sc.sea.omega_min_rad_s > 0.0 && sc.sea.omega_max_rad_s > 0.0 {
-        (sc.sea.omega_min_rad_s, sc.sea.omega_max_rad_s)
-    } else {
-        (0.6 * wn, 4.0 * wn)
-    };
+    let (w_lo, w_hi) = sc.sea.band();
     let u = crate::numerics::units::kn_to_m_s(sc.commands.first().and_then(|c| c.speed_kn).unwrap_or(25.0));
     let psi = 0.0;
     let mu0 = (sc.sea.from_deg + 180.0).to_radians();

@@ -54,7 +54,7 @@ crate::params! {
         },
         /// A due look-up is skipped while the ship's speed through the water and its heading are
         /// both within these of the last look-up's: it would give nearly the same values (the
-        /// table's grid steps are 3.6 m/s and 15 deg). Chosen by measurement (tests/multirate.rs,
+        /// table's grid steps are 2.6 m/s and 15 deg). Chosen by measurement (tests/multirate.rs,
         /// `skipped_rao_look_ups_change_little`): with 0.02 m/s and 0.01 deg the propeller speed
         /// moves less than the 0.25 s look-up interval itself moves it (against a look-up at every
         /// sample), and the other traces about as much; 0.1 deg moved a quarter turn in SS6 by 0.18

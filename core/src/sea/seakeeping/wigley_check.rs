@@ -513,7 +513,7 @@ mod tests {
         }
     }
 
-    /// The RAO table's precompute time on the default 40 x 6 x 13 grid, the Wigley hull beside
+    /// The RAO table's precompute time on the default 40 x 8 x 13 grid, the Wigley hull beside
     /// the DTMB 5415, in one run (`cargo test --release -p aes-core --lib table_time -- --ignored
     /// --nocapture`).
     #[test]

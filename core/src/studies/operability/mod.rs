@@ -649,11 +649,7 @@ pub fn scenario_moments(sc: &Scenario, speed_kn: f64, heading_deg: f64) -> Resul
     let judge = Judge::new(sc)?;
     let table = sc.rao_table()?;
     let (h, wn) = sc.sea.spectrum();
-    let band = if sc.sea.omega_min_rad_s > 0.0 && sc.sea.omega_max_rad_s > 0.0 {
-        (sc.sea.omega_min_rad_s, sc.sea.omega_max_rad_s)
-    } else {
-        (0.6 * wn, 4.0 * wn)
-    };
+    let band = sc.sea.band();
     let dirs = response::spreading(sc.sea.spreading, sc.operability.spreading_step_deg.to_radians());
     let mut sr = SpeedResponses::new(&table, &judge.places, kn_to_m_s(speed_kn), band.0, band.1, 400);
     let d = sr.directional(heading_deg.to_radians(), &dirs);
