@@ -6,7 +6,7 @@ The hub depth per unit wave: e^{i s_w k x_p cos beta} - H3 + s_p x_p H5 (pitch S
 s_p = +1, s_w = +1 is eq. 2.57 as printed (the simulator's `thesis_eq_2_57`), s_p = -1, s_w = +1 the
 consistent depth, s_w = -1 eq. 5.2's e^{+ikx_s} read literally. Bretschneider SS6 over 0.6-4 omega_n,
 cos^2 spreading (61 directions, headings 90-180 deg interpolated every 10 deg), 25 kn. Its M0 is within
-4 % of the simulator's Rice (core/src/studies/montecarlo.rs), which uses the RAO table's coarser grid.
+0.3 % of the simulator's Rice (core/src/studies/montecarlo.rs), which reads the RAO table.
 
 Usage: scripts/rice_candidates.py [path/to/aes-sim]   (prints one line per reading)
 """

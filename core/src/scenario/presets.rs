@@ -224,8 +224,8 @@ pub fn head_seas_ss6() -> Scenario {
          only h0 = 3.5 m below the calm surface and their tips 1.25 m below it (the hull keeps the 5415's \
          draft, mass and RAOs; only the hub moves). As the stern rises and falls in the waves \
          the hub depth swings by about 2 m: with the consistent hub depth (the stern follows the long waves) \
-         the propellers ventilate about five times in the 80 s (h/R below 1.1), the disk reaches the surface \
-         two or three times, and the motors' power drops from 0.6 to about 0.2 pu each time. Fully loaded \
+         the propellers ventilate six or seven times in the 80 s (h/R below 1.1; seed 1), the disks reach the \
+         surface two to four times, and the motor's power drops to 0.14-0.33 pu in the deepest dips. Fully loaded \
          (h0 = 6 m, the thesis' depth) they stay down; with the hub depth of eq. 2.57 as printed \
          (seakeeping.stern_motion) they ventilate at either depth, far more often."
         .into();
@@ -310,7 +310,7 @@ pub fn mc_excess_energy() -> Scenario {
 /// Ch. 5.4.2 (Table 5.8, Figs. 5-24, 5-25): arrival time of the first surface effect with a 4.8 m
 /// propeller at h0 = 6.0 m, 200 trials stopped 12 s after their first event, 90 s cap; compared with
 /// Rice's rate. With the consistent hub depth (eq. 2.57 corrected) surface effects at h0 = 6 m are
-/// more than ten thousand times rarer (Rice: a few 1e-6 per second per hub against 0.09), so
+/// several thousand times rarer (Rice: about 1e-5 per second for either hub against 0.09), so
 /// this study uses eq. 2.57 as printed, as the thesis did.
 pub fn mc_arrival() -> Scenario {
     let mut s = head_seas_thesis_depth();
@@ -318,7 +318,7 @@ pub fn mc_arrival() -> Scenario {
     s.description = "Monte Carlo, 200 trials at 25 knots in head seas SS6 with a 4.8 m propeller 6 m deep, each \
         stopped 12 s after its first surface effect or at 90 s (thesis ch. 5.4.2, Table 5.8, Figs. 5-24 and \
         5-25): the arrival times against Rice's up-crossing rate. Uses the hub depth of eq. 2.57 as printed, as \
-        the thesis did; with the corrected sign such events are more than ten thousand times rarer."
+        the thesis did; with the corrected sign such events are about seven thousand times rarer."
         .into();
     s.propeller.diameter_m = 4.8;
     s.set_hub_depth_m(6.0);

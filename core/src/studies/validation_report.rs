@@ -2913,7 +2913,7 @@ fn pdstrip_rows() -> Result<Section, String> {
     let why_rice = format!(
         "|RAO|^2 times SS6's Bretschneider spectrum (H {:.1} m, omega_n {:.3} rad/s) by the midpoint rule of our \
          Rice prediction over {:.2}-{:.2} rad/s, M2 with the encounter frequency omega + k U (ours is our \
-         strip theory at each frequency; the simulator's RAO table, interpolated, gives an M0 {:.1} % lower); PDStrip's RAO interpolated between its {} frequencies from {:.1} to {:.1} rad/s \
+         strip theory at each frequency; the simulator's RAO table, interpolated, gives an M0 {:+.1} % off it); PDStrip's RAO interpolated between its {} frequencies from {:.1} to {:.1} rad/s \
          (ours interpolated the same way moves our M0 by {:+.2} %), ours outside them ({:.1} % of our M0). The \
          pointwise differences of the rows above (up to 40 %, of both signs) cancel over the spectrum, and the rate \
          goes as exp(-Z^2 / 2 M0): {:+.2} % in sigma is a factor {:.2} at the thesis' level",

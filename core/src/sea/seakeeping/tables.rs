@@ -719,7 +719,7 @@ mod tests {
         assert!(RaoTable::from_values(&grid, &good).is_ok());
         let n = RaoTable::VALUES_PER_POINT;
         for (at, v, want) in [
-            (n + 5, 1e308, "point 1 (of 3120): an RAO part of 1e308"),
+            (n + 5, 1e308, "point 1 (of 4160): an RAO part of 1e308"),
             (n * 7, 0.5, "omega0 = 0.5"),
             (14, 1e300, "a mean force"),
         ] {
