@@ -131,14 +131,23 @@ fn arrival_times_agree_with_rice() {
 /// The same study with the 5415's own shafts (5 m either side of the centreline): the trials
 /// count the first surface effect on either shaft, and the two hubs are only partly correlated
 /// in a spread sea (roll and the wave's phase across the beam), so the first of them comes sooner
-/// than either alone. Rice's prediction of that event, the union of the two hubs' up-crossings
-/// from their joint statistics, agrees with 400 trials on the mean of min(T, 90 s) within two
-/// Monte Carlo standard errors, the trials that start with a hub past the level counted at 0
-/// (measured 11.89 +- 0.58 s against 12.77 s; 13.35 s without those 4.4 % of starts; one hub
-/// alone predicts 20.39 s, the upper bound by the sum of the two rates 10.32 s); the union's rate
-/// lies between the larger single rate and the sum.
+/// than either alone. Rice's rate of that event, the union of the two hubs' up-crossings from
+/// their joint statistics, against the union's crossings counted in the simulator's own runs (12
+/// seeds x 1,350 s after a 150 s settling, no Poisson assumption): within 6 % (measured 0.0798
+/// against 0.0811 1/s, -1.7 %, from about 1,300 crossings: two counting standard errors are 5.5 %),
+/// the hubs' correlation within 0.03 (0.735 against 0.733); the union's rate lies between the
+/// larger single rate and the sum of both.
+///
+/// The first passage from the start is not Poisson at that rate at this level (Z = 1.36 m, 1.9
+/// standard deviations): 400 trials give a mean of min(T, 90 s) of 10.5 +- 0.5 s against the
+/// Poisson law's 11.7 s (2,000 trials: 9.3 to 10.2 s over two seed sets; the old RAO table's 400
+/// trials had passed within two standard errors by chance, 1,500 gave 10.4 to 11.3 s against 12.8).
+/// The single hub shows the same at shallow levels and agreement from 2 standard deviations
+/// (`eq_2_57_arrivals_are_poisson_at_two_sigma` and README); at 2.6 the union's first passage
+/// comes 6 % later than Poisson's. Asserted here: the trials' mean lies between the sum bound's
+/// and one hub's predictions, far from the latter.
 #[test]
-fn arrival_times_on_either_shaft_agree_with_the_union_of_the_hubs() {
+fn either_shaft_crossings_agree_with_the_union_of_the_hubs() {
     let mut sc = preset("mc-arrival").unwrap();
     sc.seakeeping.stern_motion = SternMotion::Consistent;
     sc.set_hub_depth_m(4.0);
@@ -152,27 +161,52 @@ fn arrival_times_on_either_shaft_agree_with_the_union_of_the_hubs() {
     let (mc, se) = (f(&a["mean_censored"]), f(&a["std_censored"]) / (n as f64).sqrt());
     let hubs: Vec<f64> = (0..2).map(|j| f(&r["hubs"][j]["rate_per_s"])).collect();
     let (union, bound) = (f(&r["rate_per_s"]), f(&r["sum_bound_rate_per_s"]));
+    // The union's crossings counted in long runs of the same sea (depth below the level on
+    // either hub), and the hubs' correlation.
+    let level = f(&r["z_m"]);
+    let (mut crossings, mut exposure, mut cov, mut vp, mut vs) = (0usize, 0.0, 0.0, 0.0, 0.0);
+    for seed in 1..=12 {
+        let mut long = sc.clone();
+        long.sim.seed = seed;
+        long.sim.duration_s = 1500.0;
+        long.monte_carlo.stop_at_first_event = false;
+        let run = aes_tests::run(&long);
+        let col = |name: &str| run.trace.column(name).unwrap().to_vec();
+        let (t, p, q) = (col("t_s"), col("hub_depth_m"), col("hub_depth_stbd_m"));
+        let h0 = 4.0;
+        let mut above = true;
+        for i in (0..t.len()).filter(|&i| t[i] >= 150.0) {
+            let (dp, dq) = (p[i] - h0, q[i] - h0);
+            cov += dp * dq;
+            vp += dp * dp;
+            vs += dq * dq;
+            let now_above = p[i].min(q[i]) >= h0 - level;
+            if above && !now_above && t[i] > 150.0 {
+                crossings += 1;
+            }
+            above = now_above;
+        }
+        exposure += t.last().unwrap() - 150.0;
+    }
+    let counted = crossings as f64 / exposure;
+    let corr = cov / (vp * vs).sqrt();
     println!(
-        "either shaft: Monte Carlo mean of min(T, 90) {mc:.2} +- {se:.2} s ({} events, rate {:.4}/s); Rice union \
-         {:.2} s ({union:.4}/s; {:.2} s with the trials that start past the level), sum bound {:.2} s ({bound:.4}/s), hubs {:.4} and {:.4}/s ({:.2} s alone), \
-         correlation {:.3}, p0 {:.4}, m0 {:.3}",
-        a["events"],
-        f(&a["rate_per_s"]),
-        f(&r["mean_censored_s"]),
-        f(&r["mean_censored_with_start_s"]),
-        f(&r["sum_bound_mean_censored_s"]),
+        "either shaft: union rate counted {counted:.4}/s ({crossings} crossings), Rice {union:.4}/s, sum bound \
+         {bound:.4}/s, hubs {:.4} and {:.4}/s; correlation {corr:.3} against Rice's {:.3}; first passage: Monte Carlo \
+         mean of min(T, 90) {mc:.2} +- {se:.2} s ({} events), Poisson at Rice's union {:.2} s, sum bound {:.2} s, one \
+         hub {:.2} s",
         hubs[0],
         hubs[1],
-        f(&r["hubs"][0]["mean_censored_s"]),
         f(&r["hub_correlation"]),
-        f(&r["start_past_level_probability"]),
-        f(&r["hubs"][0]["m0"])
+        a["events"],
+        f(&r["mean_censored_with_start_s"]),
+        f(&r["sum_bound_mean_censored_s"]),
+        f(&r["hubs"][0]["mean_censored_s"]),
     );
     assert!(union > hubs[0].max(hubs[1]) && union < bound, "{union} outside {hubs:?} .. {bound}");
-    let pred = f(&r["mean_censored_with_start_s"]);
-    assert!((mc - pred).abs() < 2.0 * se, "Monte Carlo {mc} +- {se} against Rice's union {pred}");
-    // One hub's prediction alone is far off: the reason for the union.
-    assert!((mc - f(&r["hubs"][0]["mean_censored_s"])).abs() > 4.0 * se);
+    assert!((counted / union - 1.0).abs() < 0.06, "counted {counted} against Rice's union {union}");
+    assert!((corr - f(&r["hub_correlation"])).abs() < 0.03, "correlation {corr}");
+    assert!(mc > f(&r["sum_bound_mean_censored_s"]) && mc < f(&r["hubs"][0]["mean_censored_s"]) - 4.0 * se);
 }
 
 /// Ch. 5.4.2 with the study's own hub depth (eq. 2.57's sign as printed, both hubs alike): where

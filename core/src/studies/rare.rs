@@ -31,7 +31,7 @@ const SPEED_AVERAGE_S: f64 = 60.0;
 
 /// Runs to the event that correct the ship's place in a trial's own sea before the trial (with
 /// the event at 150 s, one pass left h/R at the event 0.108 off at worst in 20 trials at h0 =
-/// 4.5 m, two passes 0.061).
+/// 4.5 m, two passes 0.061; 0.060 on the RAO table cubic in frequency).
 pub const CORRECTIONS: usize = 2;
 
 /// Most trials of one rare-event study (each is a run of `time_s + window_s`).
@@ -661,9 +661,9 @@ mod tests {
     /// itself (the ship on the track it was conditioned on) to rounding (measured 1e-13 m,
     /// asserted 1e-9 m) with the rate imposed; in full runs, where the ship's own track moves it
     /// a little, h/R at the event is the level on average (measured 1.1000 against 1.1 over 20
-    /// trials, asserted within 0.01) and at worst 0.061 off (asserted 0.1). Away from the event
+    /// trials, asserted within 0.01) and at worst 0.060 off (asserted 0.1). Away from the event
     /// the sea is the unconditioned one: over 1,500 seeds the hub swing's mean square 300 s after
-    /// it is the seeds' mean m0 (measured ratio 1.012; the mean square of 1,500 Gaussian samples has
+    /// it is the seeds' mean m0 (measured ratio 1.029; the mean square of 1,500 Gaussian samples has
     /// a standard error of 3.7 %, asserted within 11 %, 3 standard errors), while at the event it
     /// is the level squared. The most likely wave group puts the
     /// hub at the level with zero rate and never deeper than it (|r(t)| <= |level|, to 1e-9).
@@ -733,10 +733,10 @@ mod tests {
     }
 
     /// Conditioned trials against brute force where brute force sees many events (h0 = 4.5 m,
-    /// ventilation onset h/R 1.1 on the port hub, about 16 an hour): the event's rate, and the
+    /// ventilation onset h/R 1.1 on the port hub, about 22 an hour): the event's rate, and the
     /// rate of events whose motor power drop exceeds 9.5 MW (about half of them), agree within
-    /// 2.5 joint standard errors (measured -0.37 and -0.71). Brute force: 60 runs of 1,200 s (17.3
-    /// usable hours after the 150 s warm-up, 318 events); conditioned: 160 trials. The simulated seconds each needs for the same interval
+    /// 2.5 joint standard errors (measured -0.19 and -0.61). Brute force: 60 runs of 1,200 s (17.3
+    /// usable hours after the 150 s warm-up, 385 events); conditioned: 160 trials. The simulated seconds each needs for the same interval
     /// width are printed; at this depth, where events come every few minutes, brute force is as
     /// cheap; the gain grows as the event gets rarer (the benchmark `aes-sim rare --brute-force`
     /// measures it at h0 = 5 m, README).

@@ -60,7 +60,7 @@ crate::params! {
         /// sample), and the other traces about as much; 0.1 deg moved a quarter turn in SS6 by 0.18
         /// rpm, ten times more. Either at 0 looks up every `rao_refresh_s`, and so does eqs.
         /// 2.55/2.59 as printed (`as_printed.doppler_twice`), whose extra phase would drift with a
-        /// stale speed. Head seas at 25 kn: 110 of 320 look-ups (issue 17).
+        /// stale speed. Head seas at 25 kn: 109 of 320 look-ups (issue 17).
         pub rao_refresh_speed_m_s: f64 = 0.02 => {
             label: "RAO look-up: speed change", unit: "m/s", range: 0.0..=1.0,
             source: "our choice, measured (tests/multirate.rs)",

@@ -740,7 +740,7 @@ mod tests {
     /// (4.5 m propeller), 25 kn in SS6 head seas, h/R = 1 (emergence) and 1.1 (ventilation onset)
     /// on the port hub: down-crossings of the level by the seaway's hub depth over 6 seeds x
     /// 3000 s (sampled every 0.05 s) against 3600 (1/2 pi) sqrt(m2/m0) exp(-Z^2 / 2 m0) per hour.
-    /// Measured: counted/Rice 1.062 and 1.030 with 1,232 and 2,002 crossings (a count's standard
+    /// Measured: counted/Rice 1.055 and 1.015 with 1,310 and 2,053 crossings (a count's standard
     /// error is 2.2-2.8 %, more where crossings come in wave groups; a few per cent above Rice is
     /// also the sampled sea's finite band); asserted within 8 %.
     #[test]
