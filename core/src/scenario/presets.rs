@@ -256,12 +256,12 @@ pub fn as_printed() -> Scenario {
     s.description = "The thesis' equations as printed, in its ch. 5.3 run (25 knots into head seas of sea state 6, \
         hub at h0 = 6 m): the Doppler shift counted twice (eqs. 2.55, 2.59), Appendix A's eqs. 5 and 17, eq. 2.47's \
         conjugate, E_a line to line (the bus at 9.7 kV), Tables 5.1/5.5's ship (L 180 m, x_p 75 m, 7000 t) and eq. 2.57's sign. What you see: Appendix A's typo in A35 \
-        makes the destroyer heave by 16 to 18 m, so the propellers leave the water again and again (h/R down to -8), \
-        the motor power falls to nothing each time, the shaft speed swings between 215 and 241 rpm, and the mean \
-        second-order force pushes the ship forward. The thesis says that only a small fraction of the propeller \
+        makes the destroyer heave by about 16 m, so the propellers leave the water again and again (h/R down to -7), \
+        the motor power falls to nothing each time, the shaft speed swings between 209 and 263 rpm, the mean \
+        second-order force pushes the ship forward, and the turbines overspeed to 1.4 pu and then stall (0.3 pu). The thesis says that only a small fraction of the propeller \
         emerges in this run and that its heave and pitch agree with other programs, so its code did not use \
         Appendix A as printed; eq. 2.57's sign alone (seakeeping.stern_motion) gives its ch. 5.3 \
-        picture: ventilation and swings of tens of rpm (219 to 263 rpm). The motor switches (P as poles, eq. 2.5) \
+        picture: ventilation and swings of tens of rpm (201 to 234 rpm). The motor switches (P as poles, eq. 2.5) \
         are off: with either the motor cannot carry the propeller at 25 knots."
         .into();
     s.as_printed = crate::scenario::as_printed::AsPrintedParams {
