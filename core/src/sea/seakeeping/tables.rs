@@ -18,7 +18,7 @@ crate::params! {
     /// default, 40 x 8 x 13: 0.2-2.0 rad/s covers the Bretschneider sea states 2-6 of Table 2.4
     /// beyond their spectra's 1 % points; 0-35 kn in 5 kn steps (the studies' 20, 25 and 30 kn
     /// on nodes: between the 7 kn steps of the thesis-sized 6 speeds the hub motion's variance in
-    /// SS6 at 25 kn was 1.2 % low); 15 deg steps in heading.
+    /// SS6 at 25 kn came out 1.3 % lower); 15 deg steps in heading.
     #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
     #[serde(deny_unknown_fields, default)]
     pub struct SeakeepingGrid {
