@@ -114,20 +114,22 @@ pub fn differences(a: &aes_core::Scenario, b: &aes_core::Scenario) -> Diff {
 
 /// W1 (head seas SS6, 2.5 ms steps) with the hull stepping every 5 ms (2 substeps, the
 /// controller sample) and every 10 ms (4 substeps; the controllers and the seaway read the hull
-/// carried forward by its last step's rate in between). Measured at 5 / 10 ms: rpm 0.035 / 0.038
-/// at most (mean 4e-4 / 1.4e-3), mean motor power 1.3e-5 / 2.5e-5, min h/R 2.8e-6 / 2.1e-5, ship
-/// speed 7e-4 / 4.8e-3 kn, the energy residual -5.54e-5 / -5.61e-5 against -5.55e-5 (the seaway's
-/// work). At 20 ms the rpm peaks differ by 0.12 (mean 8e-4), ship speed 6e-3 kn.
+/// carried forward by its last step's rate in between). Measured at 5 / 10 ms: rpm 2.1e-3 /
+/// 0.041 at most (mean 2.2e-4 / 2.1e-4), mean motor power 4.4e-6 / 6.1e-5, largest 5.2e-5 /
+/// 1.8e-3 of the peak, min h/R 3.5e-6 / 2.6e-6, ship speed 3.6e-4 / 2.3e-3 kn, the energy
+/// residual -5.65e-5 / -5.74e-5 against -5.65e-5 (the seaway's work). (On the RAO table linear in
+/// frequency, another realisation: rpm 0.035 / 0.038, ship speed 7e-4 / 4.8e-3 kn; at 20 ms the
+/// rpm peaks differed by 0.12, ship speed by 6e-3 kn.)
 #[test]
 fn head_seas_multi_rate_matches_single_rate() {
     for step in [0.005, 0.01] {
         let d = compare("head-seas-ss6", step);
         assert!(d.rpm_max < 0.05, "rpm {}", d.rpm_max);
-        assert!(d.rpm_mean < 0.01, "rpm mean {}", d.rpm_mean);
-        assert!(d.motor_power_mean_rel < 2e-3, "motor power {}", d.motor_power_mean_rel);
-        assert!(d.motor_power_max_of_peak < 5e-3, "motor power {} of peak", d.motor_power_max_of_peak);
-        assert!(d.min_h_over_r < 0.002, "min h/R {}", d.min_h_over_r);
-        assert!(d.speed_kn_max < 0.01, "ship speed {} kn", d.speed_kn_max);
+        assert!(d.rpm_mean < 5e-4, "rpm mean {}", d.rpm_mean);
+        assert!(d.motor_power_mean_rel < 1.2e-4, "motor power {}", d.motor_power_mean_rel);
+        assert!(d.motor_power_max_of_peak < 3e-3, "motor power {} of peak", d.motor_power_max_of_peak);
+        assert!(d.min_h_over_r < 1e-5, "min h/R {}", d.min_h_over_r);
+        assert!(d.speed_kn_max < 4e-3, "ship speed {} kn", d.speed_kn_max);
         assert!((d.residual_run - d.residual_reference).abs() < 2e-6, "{} vs {}", d.residual_run, d.residual_reference);
     }
 }
@@ -193,9 +195,11 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
             if (dt, method, sub) == (0.005, Midpoint, 2) {
                 // The shipped method with the hull at 10 ms. Measured (W1 / as printed's first 60
                 // s): rpm max 0.062 / 0.142, mean 6.3e-4 / 1.0e-2, mean motor power 1.1e-4 / 3.3e-4,
-                // largest difference 2.9e-3 / 3.2e-3 of the peak, min h/R 1.2e-4 / 1.6e-4, bus 3.0e-3
+                // largest difference 2.9e-3 / 3.2e-3 of the peak, min h/R 8.9e-7 / 1.0e-2, bus 3.0e-3
                 // / 2.6e-2 pu, ship speed 3.2e-3 / 2.7e-3 kn, residual 1.3e-7 / 5.9e-7 from the 1 ms
-                // run's.
+                // run's. As printed, h/R's minimum lies on the last row (60 s), still falling, where
+                // the 1 ms run is 0.04 m further along (the ship speeds 2.7e-3 kn apart after the
+                // ventilations): the phase of a heave of 8 m moves the hub by 2 cm.
                 assert!(d.rpm_max < tol(0.09, 0.15), "{name} x 2: rpm {}", d.rpm_max);
                 assert!(d.motor_power_mean_rel < tol(1.5e-4, 4e-4), "{name} x 2: power {}", d.motor_power_mean_rel);
                 assert!(
@@ -203,17 +207,17 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
                     "{name} x 2: {} of peak",
                     d.motor_power_max_of_peak
                 );
-                assert!(d.min_h_over_r < tol(3e-4, 3e-3), "{name} x 2: min h/R {}", d.min_h_over_r);
-                assert!(d.speed_kn_max < tol(8e-3, 4e-3), "{name} x 2: ship speed {} kn", d.speed_kn_max);
+                assert!(d.min_h_over_r < tol(2e-6, 1.5e-2), "{name} x 2: min h/R {}", d.min_h_over_r);
+                assert!(d.speed_kn_max < tol(5e-3, 4e-3), "{name} x 2: ship speed {} kn", d.speed_kn_max);
                 let residual = (d.residual_run - d.residual_reference).abs();
-                assert!(residual < tol(1.5e-6, 7e-7), "{name} x 2: residual {residual}");
+                assert!(residual < tol(3e-7, 7e-7), "{name} x 2: residual {residual}");
             }
             if (dt, method, sub) != (0.005, Midpoint, 1) {
                 continue;
             }
             // The shipped step. Measured (W1 / as printed's first 60 s): rpm max 0.042 / 0.142, rpm
             // mean 2.7e-3 / 1.0e-2, mean motor power 4.6e-5 / 3.0e-4, largest motor power difference
-            // 2.0e-3 / 3.2e-3 of the peak, min h/R 1.3e-4 / 5.2e-4, bus voltage 1.5e-2 / 3.2e-2 pu,
+            // 2.0e-3 / 3.2e-3 of the peak, min h/R 8.2e-6 / 1.0e-2 (as above), bus voltage 1.5e-2 / 3.2e-2 pu,
             // ship speed 1.1e-3 / 2.7e-3 kn, energy residual 4.9e-7 / 4.8e-7 from the 1 ms run's;
             // RK4 at 5 ms gives the same but for the bus, 2.5e-3 / 1.5e-2 pu. The bus: in W1, as
             // both shafts recover from ventilating at 72-73 s, the midpoint run's throttle steps
@@ -223,10 +227,10 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
             // as-printed run's propeller emerges: a ventilation switch a step later moves the
             // trace after it.
             assert!(d.rpm_max < tol(0.05, 0.2), "{name}: rpm {}", d.rpm_max);
-            assert!(d.rpm_mean < tol(6e-3, 1.2e-2), "{name}: rpm mean {}", d.rpm_mean);
+            assert!(d.rpm_mean < tol(4e-3, 1.2e-2), "{name}: rpm mean {}", d.rpm_mean);
             assert!(d.motor_power_mean_rel < tol(6e-5, 4e-4), "{name}: motor power {}", d.motor_power_mean_rel);
             assert!(d.motor_power_max_of_peak < tol(2.5e-3, 5e-3), "{name}: {} of peak", d.motor_power_max_of_peak);
-            assert!(d.min_h_over_r < tol(3e-4, 3e-3), "{name}: min h/R {}", d.min_h_over_r);
+            assert!(d.min_h_over_r < tol(2e-5, 1.5e-2), "{name}: min h/R {}", d.min_h_over_r);
             assert!(d.bus_pu_max < tol(2e-2, 4e-2), "{name}: bus {} pu", d.bus_pu_max);
             assert!(d.speed_kn_max < tol(2e-3, 3e-3), "{name}: ship speed {} kn", d.speed_kn_max);
             let residual = (d.residual_run - d.residual_reference).abs();
@@ -283,7 +287,7 @@ fn skipped_rao_look_ups_change_little() {
         let w1 = name == "head-seas-ss6";
         let tol = |a: f64, b: f64| if w1 { a } else { b };
         assert!(d.rpm_max < tol(0.09, 6e-3), "{name}: rpm {}", d.rpm_max);
-        assert!(d.rpm_mean < tol(2.7e-3, 7e-4), "{name}: rpm mean {}", d.rpm_mean);
+        assert!(d.rpm_mean < tol(1e-3, 7e-4), "{name}: rpm mean {}", d.rpm_mean);
         assert!(d.motor_power_max_of_peak < tol(4e-3, 2e-4), "{name}: {} of peak", d.motor_power_max_of_peak);
         assert!(d.h_over_r_max < tol(3e-3, 5e-3), "{name}: h/R {}", d.h_over_r_max);
         assert!(d.bus_pu_max < tol(2e-2, 1.1e-5), "{name}: bus {} pu", d.bus_pu_max);

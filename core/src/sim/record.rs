@@ -21,6 +21,7 @@ pub(super) struct Recording<'a> {
     pub v_ref: f64,
     /// The seaway's last sample with the hub depth carried to `t`.
     pub sea: SeaSample,
+    /// Each hub's depth over the propeller radius at `t` (`sea.hub` over the radius) [-].
     pub h_over_r: [f64; N_SHAFTS],
     /// Sums over machines [W].
     pub p_turbine: f64,

@@ -2183,10 +2183,18 @@ fn as_printed(base: &crate::RunResult) -> Result<Section, String> {
 
     // The preset with every switch that lets the run start.
     let all = run(&preset("as-printed").ok_or("no preset")?)?;
-    let why =
+    // Where the turbines overspeed and where they then stall (below 0.5 pu), from the run.
+    let (t, w) =
+        (all.trace.column("t_s").ok_or("no t_s")?, all.trace.column("turbine_speed_pu").ok_or("no turbine speed")?);
+    let top = (0..w.len()).fold(0, |b, i| if w[i] > w[b] { i } else { b });
+    let stall = (top..w.len()).find(|&i| w[i] < 0.5).map_or("never".to_string(), |i| format!("from {:.0} s", t[i]));
+    let why = &format!(
         "every switch that lets the run start at 25 kn, and eq. 2.57's sign: Appendix A's typos dominate (the hub \
-               leaves the water by radii where the thesis sees only a small fraction of the disk emerge); eq. 2.57's \
-               sign alone gives the thesis' ch. 5.3 picture";
+         leaves the water by radii where the thesis sees only a small fraction of the disk emerge, and the turbines \
+         overspeed to {:.2} pu at {:.0} s, then fall below 0.5 pu {stall}: a stalled plant, not the thesis'); eq. \
+         2.57's sign alone gives the thesis' ch. 5.3 picture",
+        w[top], t[top]
+    );
     let sw = "preset as-printed: every switch";
     add(format!("shaft speed swing, {hs}"), sw, swing(&all, "prop_rpm"), swing(base, "prop_rpm"), "rpm", why);
     add(format!("largest heave, {hs}"), sw, sig(&all, "heave_m").max, sig(base, "heave_m").max, "m", why);
@@ -2968,8 +2976,9 @@ fn pdstrip_rows() -> Result<Section, String> {
          {:.0} % for roll in beam seas at Fn 0 and 0.2 and within {:.0} % in head seas at rest; in bow-oblique seas \
          at speed within {:.0} % at and below the peak and not above it. In head seas at 25 kn the hub's relative \
          motion differs by up to 40 % from frequency to frequency (open), but the differences, of both signs, cancel \
-         over SS6's spectrum, so the eq. 2.57 rates above do not hang on the strip code: in SS6's long-crested head \
-         sea its standard deviation is {:.2} m with PDStrip's RAO and {:.2} m with ours, and at the thesis' level \
+         over SS6's spectrum, so the consistent sign's eq. 2.57 rates above do not hang on the strip code (the printed \
+         sign's relative motion is not compared): in SS6's long-crested head \
+         sea its standard deviation is {:.3} m with PDStrip's RAO and {:.3} m with ours, and at the thesis' level \
          Z = {:.2} m the consistent sign's Rice rate is {:.1e} per second with PDStrip's (one event in {:.0} days) \
          and {:.1e} with ours ({:.0} days), a factor {:.2} apart; neither comes near the thesis' {} 1/s.",
         100.0 * beam_tol,

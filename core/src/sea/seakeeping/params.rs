@@ -56,8 +56,9 @@ crate::params! {
         /// both within these of the last look-up's: it would give nearly the same values (the
         /// table's grid steps are 2.6 m/s and 15 deg). Chosen by measurement (tests/multirate.rs,
         /// `skipped_rao_look_ups_change_little`): with 0.02 m/s and 0.01 deg the propeller speed
-        /// moves less than the 0.25 s look-up interval itself moves it (against a look-up at every
-        /// sample), and the other traces about as much; 0.1 deg moved a quarter turn in SS6 by 0.18
+        /// moves no more than the 0.25 s look-up interval itself moves it (against a look-up at
+        /// every sample; in head seas 0.078 against 0.079 rpm), and the other traces by at most
+        /// twice as much (the ship speed in head seas); 0.1 deg moved a quarter turn in SS6 by 0.18
         /// rpm, ten times more. Either at 0 looks up every `rao_refresh_s`, and so does eqs.
         /// 2.55/2.59 as printed (`as_printed.doppler_twice`), whose extra phase would drift with a
         /// stale speed. Head seas at 25 kn: 109 of 320 look-ups (issue 17).
