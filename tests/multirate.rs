@@ -194,12 +194,12 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
             let tol = |a: f64, b: f64| if w1 { a } else { b };
             if (dt, method, sub) == (0.005, Midpoint, 2) {
                 // The shipped method with the hull at 10 ms. Measured (W1 / as printed's first 60
-                // s): rpm max 0.062 / 0.142, mean 6.3e-4 / 1.0e-2, mean motor power 1.1e-4 / 3.3e-4,
-                // largest difference 2.9e-3 / 3.2e-3 of the peak, min h/R 8.9e-7 / 1.0e-2, bus 3.0e-3
-                // / 2.6e-2 pu, ship speed 3.2e-3 / 2.7e-3 kn, residual 1.3e-7 / 5.9e-7 from the 1 ms
-                // run's. As printed, h/R's minimum lies on the last row (60 s), still falling, where
-                // the 1 ms run is 0.04 m further along (the ship speeds 2.7e-3 kn apart after the
-                // ventilations): the phase of a heave of 8 m moves the hub by 2 cm.
+                // s): rpm max 0.062 / 0.142, mean 6.3e-4 / 1.0e-2, mean motor power 1.1e-4 /
+                // 3.3e-4, largest difference 2.9e-3 / 3.2e-3 of the peak, min h/R 8.9e-7 / 1.0e-2,
+                // bus 3.0e-3 / 2.6e-2 pu, ship speed 3.2e-3 / 2.7e-3 kn, residual 1.3e-7 / 5.9e-7
+                // from the 1 ms run's. As printed, h/R's minimum lies on the last row (60 s), still
+                // falling, where the 1 ms run is 0.04 m further along (the ship speeds 2.7e-3 kn
+                // apart after the ventilations): the phase of a heave of 8 m moves the hub by 2 cm.
                 assert!(d.rpm_max < tol(0.09, 0.15), "{name} x 2: rpm {}", d.rpm_max);
                 assert!(d.motor_power_mean_rel < tol(1.5e-4, 4e-4), "{name} x 2: power {}", d.motor_power_mean_rel);
                 assert!(
@@ -216,16 +216,16 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
                 continue;
             }
             // The shipped step. Measured (W1 / as printed's first 60 s): rpm max 0.042 / 0.142, rpm
-            // mean 2.7e-3 / 1.0e-2, mean motor power 4.6e-5 / 3.0e-4, largest motor power difference
-            // 2.0e-3 / 3.2e-3 of the peak, min h/R 8.2e-6 / 1.0e-2 (as above), bus voltage 1.5e-2 / 3.2e-2 pu,
-            // ship speed 1.1e-3 / 2.7e-3 kn, energy residual 4.9e-7 / 4.8e-7 from the 1 ms run's;
-            // RK4 at 5 ms gives the same but for the bus, 2.5e-3 / 1.5e-2 pu. The bus: in W1, as
-            // both shafts recover from ventilating at 72-73 s, the midpoint run's throttle steps
-            // 0.01 away from the 1 ms run's and holds 0.0075 above it from 74.5 to 78 s (0.505
-            // against 0.497), so the turbines run 1.4 % faster at 78 s and the bus with them. (Measured on the RAO
-            // table linear in frequency, with other realisations: bus 4.0e-3 / 2.7e-3 pu.) The
-            // as-printed run's propeller emerges: a ventilation switch a step later moves the
-            // trace after it.
+            // mean 2.7e-3 / 1.0e-2, mean motor power 4.6e-5 / 3.0e-4, largest motor power
+            // difference 2.0e-3 / 3.2e-3 of the peak, min h/R 8.2e-6 / 1.0e-2 (as above), bus
+            // voltage 1.5e-2 / 3.2e-2 pu, ship speed 1.1e-3 / 2.7e-3 kn, energy residual 4.9e-7 /
+            // 4.8e-7 from the 1 ms run's; RK4 at 5 ms gives the same but for the bus, 2.5e-3 /
+            // 1.5e-2 pu. The bus: in W1, as both shafts recover from ventilating at 72-73 s, the
+            // midpoint run's throttle steps 0.01 away from the 1 ms run's and holds 0.0075 above it
+            // from 74.5 to 78 s (0.505 against 0.497), so the turbines run 1.4 % faster at 78 s and
+            // the bus with them. (Measured on the RAO table linear in frequency, with other
+            // realisations: bus 4.0e-3 / 2.7e-3 pu.) The as-printed run's propeller emerges: a
+            // ventilation switch a step later moves the trace after it.
             assert!(d.rpm_max < tol(0.05, 0.2), "{name}: rpm {}", d.rpm_max);
             assert!(d.rpm_mean < tol(4e-3, 1.2e-2), "{name}: rpm mean {}", d.rpm_mean);
             assert!(d.motor_power_mean_rel < tol(6e-5, 4e-4), "{name}: motor power {}", d.motor_power_mean_rel);
@@ -252,17 +252,17 @@ fn hull_substeps_validated() {
 /// The RAO look-up skipped while speed and heading stay within `seakeeping.rao_refresh_speed_m_s`
 /// and `rao_refresh_heading_deg` of the last one (0.02 m/s, 0.01 deg), in head seas (the preset at
 /// its 5 ms steps, the ship slowing 1 m/s) and in a quarter turn in SS6, against a look-up every
-/// 0.25 s (`rao_refresh_s`). Yardstick: what that interval itself costs, against a look-up at
-/// every sample (0.05 s). Measured (head seas / quarter turn), skipping: 109 of 320 / 1081 of 1200
+/// 0.25 s (`rao_refresh_s`). Yardstick: what that interval itself costs, against a look-up at every
+/// sample (0.05 s). Measured (head seas / quarter turn), skipping: 109 of 320 / 1081 of 1200
 /// look-ups, rpm max 0.078 / 0.0031 (mean 5.0e-4 / 5.4e-4), motor power 3.5e-3 / 1.0e-4 of peak,
 /// h/R 1.9e-3 / 3.2e-3, bus 1.6e-2 / 6e-6 pu, ship speed 1.4e-3 / 4.9e-4 kn; the interval's own:
 /// rpm max 0.079 / 0.011, motor power 3.1e-3 / 3.2e-4 of peak, h/R 1.9e-3 / 1.2e-2, bus 1.5e-2 /
 /// 1.4e-5 pu, ship speed 7.8e-4 / 1.2e-3 kn. In head seas the largest differences, of either, come
 /// from the governor's throttle settling apart after the ventilation at 72-73 s (see
 /// `wave_presets_step_of_5_ms_matches_1_ms`); before the RAO table became cubic in frequency
-/// (another realisation of seed 1's run) skipping measured rpm max 0.017 and bus 2.7e-3 pu. (With 0.1 deg the quarter turn moved by 0.18 rpm and
-/// 0.045 kn.) The as-printed run (eqs. 2.55/2.59's doubled Doppler shift) never skips: the same
-/// bits as every look-up.
+/// (another realisation of seed 1's run) skipping measured rpm max 0.017 and bus 2.7e-3 pu. (With
+/// 0.1 deg the quarter turn moved by 0.18 rpm and 0.045 kn.) The as-printed run (eqs. 2.55/2.59's
+/// doubled Doppler shift) never skips: the same bits as every look-up.
 #[test]
 fn skipped_rao_look_ups_change_little() {
     use aes_core::sim::Simulation;

@@ -162,8 +162,8 @@ fn head_seas_ss6_over_seeds() {
             }
             // Not round-off as in calm water: the maneuvering model books the surge work only, and
             // the wave and hull forces in sway and yaw do work that no account holds (measured
-            // -2.4e-6 to -5.8e-5 over these ten runs, printed above; -2.0e-5 in the quarter-turn-ss6
-            // preset).
+            // -2.4e-6 to -5.8e-5 over these ten runs, printed above; -2.0e-5 in the
+            // quarter-turn-ss6 preset).
             assert!(
                 r.summary.energy_j.relative_residual.abs() < 1e-4,
                 "energy residual {}",

@@ -658,15 +658,15 @@ mod tests {
     }
 
     /// The conditioned sea puts the hub at the level, falling, at the event's time: in the seaway
-    /// itself (the ship on the track it was conditioned on) to rounding (measured 1e-13 m,
-    /// asserted 1e-9 m) with the rate imposed; in full runs, where the ship's own track moves it
-    /// a little, h/R at the event is the level on average (measured 1.1000 against 1.1 over 20
-    /// trials, asserted within 0.01) and at worst 0.060 off (asserted 0.1). Away from the event
-    /// the sea is the unconditioned one: over 1,500 seeds the hub swing's mean square 300 s after
-    /// it is the seeds' mean m0 (measured ratio 1.029; the mean square of 1,500 Gaussian samples has
-    /// a standard error of 3.7 %, asserted within 11 %, 3 standard errors), while at the event it
-    /// is the level squared. The most likely wave group puts the
-    /// hub at the level with zero rate and never deeper than it (|r(t)| <= |level|, to 1e-9).
+    /// itself (the ship on the track it was conditioned on) to rounding (measured 1e-13 m, asserted
+    /// 1e-9 m) with the rate imposed; in full runs, where the ship's own track moves it a little,
+    /// h/R at the event is the level on average (measured 1.1000 against 1.1 over 20 trials,
+    /// asserted within 0.01) and at worst 0.060 off (asserted 0.1). Away from the event the sea is
+    /// the unconditioned one: over 1,500 seeds the hub swing's mean square 300 s after it is the
+    /// seeds' mean m0 (measured ratio 1.029; the mean square of 1,500 Gaussian samples has a
+    /// standard error of 3.7 %, asserted within 11 %, 3 standard errors), while at the event it is
+    /// the level squared. The most likely wave group puts the hub at the level with zero rate and
+    /// never deeper than it (|r(t)| <= |level|, to 1e-9).
     #[test]
     fn the_conditioned_sea_makes_the_event_and_nothing_else() {
         let base = trial_scenario(&study(4.5)).unwrap();
@@ -733,13 +733,13 @@ mod tests {
     }
 
     /// Conditioned trials against brute force where brute force sees many events (h0 = 4.5 m,
-    /// ventilation onset h/R 1.1 on the port hub, about 22 an hour): the event's rate, and the
-    /// rate of events whose motor power drop exceeds 9.5 MW (about half of them), agree within
-    /// 2.5 joint standard errors (measured -0.19 and -0.61). Brute force: 60 runs of 1,200 s (17.3
-    /// usable hours after the 150 s warm-up, 385 events); conditioned: 160 trials. The simulated seconds each needs for the same interval
-    /// width are printed; at this depth, where events come every few minutes, brute force is as
-    /// cheap; the gain grows as the event gets rarer (the benchmark `aes-sim rare --brute-force`
-    /// measures it at h0 = 5 m, README).
+    /// ventilation onset h/R 1.1 on the port hub, about 22 an hour): the event's rate, and the rate
+    /// of events whose motor power drop exceeds 9.5 MW (about half of them), agree within 2.5 joint
+    /// standard errors (measured -0.19 and -0.61). Brute force: 60 runs of 1,200 s (17.3 usable
+    /// hours after the 150 s warm-up, 385 events); conditioned: 160 trials. The simulated seconds
+    /// each needs for the same interval width are printed; at this depth, where events come every
+    /// few minutes, brute force is as cheap; the gain grows as the event gets rarer (the benchmark
+    /// `aes-sim rare --brute-force` measures it at h0 = 5 m, README).
     #[test]
     fn conditioned_rates_agree_with_brute_force() {
         let sc = study(4.5);

@@ -2183,16 +2183,19 @@ fn as_printed(base: &crate::RunResult) -> Result<Section, String> {
 
     // The preset with every switch that lets the run start.
     let all = run(&preset("as-printed").ok_or("no preset")?)?;
-    // Where the turbines overspeed and where they then stall (below 0.5 pu), from the run.
+    // Where the turbines overspeed and where they then stall (below the health check's minimum
+    // running speed), from the run.
+    use crate::sim::health::TURBINE_MIN_RUNNING_PU as STALL_PU;
     let (t, w) =
         (all.trace.column("t_s").ok_or("no t_s")?, all.trace.column("turbine_speed_pu").ok_or("no turbine speed")?);
     let top = (0..w.len()).fold(0, |b, i| if w[i] > w[b] { i } else { b });
-    let stall = (top..w.len()).find(|&i| w[i] < 0.5).map_or("never".to_string(), |i| format!("from {:.0} s", t[i]));
+    let stall =
+        (top..w.len()).find(|&i| w[i] < STALL_PU).map_or("never".to_string(), |i| format!("from {:.0} s", t[i]));
     let why = &format!(
         "every switch that lets the run start at 25 kn, and eq. 2.57's sign: Appendix A's typos dominate (the hub \
          leaves the water by radii where the thesis sees only a small fraction of the disk emerge, and the turbines \
-         overspeed to {:.2} pu at {:.0} s, then fall below 0.5 pu {stall}: a stalled plant, not the thesis'); eq. \
-         2.57's sign alone gives the thesis' ch. 5.3 picture",
+         overspeed to {:.2} pu at {:.0} s, then fall below {STALL_PU} pu {stall}: a stalled plant, not the \
+         thesis'); eq. 2.57's sign alone gives the thesis' ch. 5.3 picture",
         w[top], t[top]
     );
     let sw = "preset as-printed: every switch";

@@ -420,8 +420,8 @@ impl RaoTable {
 /// Catmull-Rom's cubic on the four nearest frequencies (the grid is even), linear in the first and
 /// last segments. The linear blend cuts the chord across the heave and pitch resonance: on the
 /// former 40 x 6 x 13 grid it took 6 % off the variance of the DTMB 5415's hub motion in SS6 at
-/// 25 kn (1.3 % of it from the 6 speeds); the cubic on the default grid leaves under 1 % (`frequency_interpolation_keeps_the_hub_variance`). At a node the
-/// weights are exactly 1 and 0.
+/// 25 kn (1.3 % of it from the 6 speeds); the cubic on the default grid leaves under 1 %
+/// (`frequency_interpolation_keeps_the_hub_variance`). At a node the weights are exactly 1 and 0.
 fn frequency_weights(n: usize, i0: usize, f: f64) -> [(usize, f64); 4] {
     if i0 >= 1 && i0 + 2 < n {
         let (f2, f3) = (f * f, f * f * f);
