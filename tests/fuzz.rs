@@ -8,7 +8,8 @@ use aes_core::checks::check_finite;
 use aes_core::scenario::presets::{preset, PRESET_NAMES};
 use aes_core::sea::seakeeping::strip::{MassProperties, Ship};
 use aes_core::ship::sections::HullOffsets;
-use aes_core::studies::montecarlo::Partial;
+use aes_core::studies::montecarlo::MonteCarlo;
+use aes_core::studies::study::{self, Study};
 use aes_core::Simulation;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
@@ -137,8 +138,9 @@ fn hull_csvs_fail_cleanly_or_give_finite_raos() {
 fn mutated_partials_fail_cleanly_or_merge_finitely() {
     let sc = preset("mc-arrival").unwrap().with_override("sim.duration_s", "2").unwrap();
     let sc = sc.with_override("monte_carlo.trials", "4").unwrap();
-    let a = aes_core::studies::montecarlo::run_range(&sc, 0, 2).unwrap();
-    let b = aes_core::studies::montecarlo::run_range(&sc, 2, 4).unwrap();
+    let mc = || MonteCarlo::new(sc.clone()).unwrap();
+    let a = study::run_range(&mc(), 0, 2).unwrap();
+    let b = study::run_range(&mc(), 2, 4).unwrap();
     let good = serde_json::to_value(&a).unwrap();
     let mut paths = Vec::new();
     leaf_paths(&good, "", &mut paths);
@@ -157,9 +159,11 @@ fn mutated_partials_fail_cleanly_or_merge_finitely() {
                 }
                 *node = serde_json::from_str(value).unwrap_or(serde_json::Value::String(value.clone()));
             }
-            if let Ok(mut p) = Partial::from_json(&v.to_string()) {
-                if p.merge(&b).is_ok() {
-                    if let Ok(s) = aes_core::studies::montecarlo::study_summary(&p) {
+            if let Ok(p) = study::from_json::<MonteCarlo>(&v.to_string()) {
+                let mut m = study::Merger::new(mc());
+                if m.add(p).is_ok() && m.add(b.clone()).is_ok() {
+                    let (study, merged) = m.finish().unwrap();
+                    if let Ok(s) = study.summary(&merged.part, &merged.ranges) {
                         prop_assert!(check_finite(&s).is_ok(), "{changes:?}: {:?}", check_finite(&s));
                     }
                 }
@@ -178,9 +182,12 @@ fn mutated_partials_fail_cleanly_or_merge_finitely() {
 fn corrupted_binary_partials_are_refused_or_possible() {
     let sc = preset("mc-arrival").unwrap().with_override("sim.duration_s", "2").unwrap();
     let sc = sc.with_override("monte_carlo.trials", "4").unwrap();
-    let good = aes_core::studies::montecarlo::run_range(&sc, 0, 3).unwrap();
-    let bytes = good.to_bytes().unwrap();
-    let head = 16 + u64::from_le_bytes(bytes[8..16].try_into().unwrap()) as usize;
+    let mc = || MonteCarlo::new(sc.clone()).unwrap();
+    let good = study::run_range(&mc(), 0, 3).unwrap();
+    let bytes = study::to_bytes::<MonteCarlo>(&good).unwrap();
+    // The shard's envelope, then the part's own head: the moment rows follow.
+    let part = 16 + u64::from_le_bytes(bytes[8..16].try_into().unwrap()) as usize;
+    let head = part + 16 + u64::from_le_bytes(bytes[part + 8..part + 16].try_into().unwrap()) as usize;
     let body = bytes.len() - head;
     assert!(body > 1000, "the case has moment rows to damage: {body} bytes");
     let strategy = prop::collection::vec((0..body, any::<u8>()), 1..6);
@@ -190,8 +197,10 @@ fn corrupted_binary_partials_are_refused_or_possible() {
             for &(at, v) in &changes {
                 b[head + at] = v;
             }
-            if let Ok(p) = Partial::from_bytes(&b) {
-                let s = aes_core::studies::montecarlo::study_summary(&p).unwrap();
+            let mut m = study::Merger::new(mc());
+            if study::from_bytes::<MonteCarlo>(&b).and_then(|p| m.add(p)).is_ok() {
+                let (study, p) = m.finish().unwrap();
+                let s = study.summary(&p.part, &p.ranges).unwrap();
                 prop_assert!(check_finite(&s).is_ok(), "{changes:?}");
                 for (name, r) in &s.envelopes {
                     for i in 0..r.n.len() {

@@ -1,8 +1,56 @@
 //! Thesis ch. 5.4: Monte Carlo studies, their exact merging, and Rice's arrival rate.
 
 use aes_core::scenario::presets::preset;
+use aes_core::scenario::Scenario;
 use aes_core::scenario::SternMotion;
-use aes_core::studies::montecarlo::{rice, run_range, run_trial, summary, Partial};
+use aes_core::studies::montecarlo::{rice, run_trial, MonteCarlo, Partial, StudySummary};
+use aes_core::studies::study::{self, ShardOf, Study};
+
+type Shard = ShardOf<MonteCarlo>;
+
+/// Trials `a..b` of the study of `sc`, one after another, as a shard.
+fn run_range(sc: &Scenario, a: u64, b: u64) -> Result<Shard, String> {
+    study::run_range(&MonteCarlo::new(sc.clone())?, a, b)
+}
+
+/// The summary of a shard's trials (the study from the shard's own definition).
+fn study_summary(s: &Shard) -> Result<StudySummary, String> {
+    MonteCarlo::new(s.spec.clone())?.summary(&s.part, &s.ranges)
+}
+
+/// The same as JSON.
+fn summary(s: &Shard) -> Result<serde_json::Value, String> {
+    serde_json::to_value(study_summary(s)?).map_err(|e| e.to_string())
+}
+
+/// `b` merged into `a`, checked as `aes-sim merge` checks shards.
+fn merge(a: &mut Shard, b: Shard) -> Result<(), String> {
+    let mut m = study::Merger::new(MonteCarlo::new(a.spec.clone())?);
+    m.add(a.clone())?;
+    m.add(b)?;
+    *a = m.finish()?.1;
+    Ok(())
+}
+
+/// A shard read back from JSON and checked.
+fn from_json(text: &str) -> Result<Shard, String> {
+    let s = study::from_json::<MonteCarlo>(text)?;
+    let mut m = study::Merger::new(MonteCarlo::new(s.spec.clone())?);
+    m.add(s)?;
+    Ok(m.finish()?.1)
+}
+
+/// A shard read back from the binary form and checked.
+fn from_bytes(b: &[u8]) -> Result<Shard, String> {
+    let s = study::from_bytes::<MonteCarlo>(b)?;
+    let mut m = study::Merger::new(MonteCarlo::new(s.spec.clone())?);
+    m.add(s)?;
+    Ok(m.finish()?.1)
+}
+
+fn to_bytes(s: &Shard) -> Vec<u8> {
+    study::to_bytes::<MonteCarlo>(s).unwrap()
+}
 
 /// A trial started from the study's prototype (plant, calm-water map and steady state built
 /// once) runs bit for bit as one built from scratch with the trial's seed, also after another
@@ -41,13 +89,13 @@ fn summaries_do_not_depend_on_order_or_sharding() {
     sc.monte_carlo.periodogram_segment_s = 5.0;
     let whole = summary(&run_range(&sc, 0, 6).unwrap()).unwrap();
     let mut shards = run_range(&sc, 3, 6).unwrap();
-    shards.merge(&run_range(&sc, 0, 3).unwrap()).unwrap();
+    merge(&mut shards, run_range(&sc, 0, 3).unwrap()).unwrap();
     assert_eq!(summary(&shards).unwrap(), whole);
     let mut rev = Partial::empty(&sc);
     for i in (0..6).rev() {
-        rev.merge(&run_trial(&sc, i).unwrap()).unwrap();
+        rev.merge(&run_trial(&sc, i).unwrap(), sc.monte_carlo.keep_traces as usize).unwrap();
     }
-    let r = summary(&rev).unwrap();
+    let r = summary(&study::shard(&MonteCarlo::new(sc.clone()).unwrap(), vec![(0, 6)], rev)).unwrap();
     for (k, v) in whole.as_object().unwrap() {
         if let Some(o) = v.as_object() {
             for (k2, v2) in o {
@@ -58,7 +106,7 @@ fn summaries_do_not_depend_on_order_or_sharding() {
     }
     // Through the shard file format.
     let text = serde_json::to_string(&shards).unwrap();
-    let back: Partial = serde_json::from_str(&text).unwrap();
+    let back = from_json(&text).unwrap();
     let bs = summary(&back).unwrap();
     for (k, v) in whole.as_object().unwrap() {
         if let Some(o) = v.as_object() {
@@ -70,14 +118,14 @@ fn summaries_do_not_depend_on_order_or_sharding() {
     assert_eq!(bs, whole);
     // Through the browser's binary form: the same partial, field for field; damaged bytes are
     // refused.
-    let bytes = shards.to_bytes().unwrap();
-    assert_eq!(Partial::from_bytes(&bytes).unwrap(), shards);
+    let bytes = to_bytes(&shards);
+    assert_eq!(from_bytes(&bytes).unwrap(), shards);
     assert!(bytes.len() < text.len(), "{} bytes against {} of JSON", bytes.len(), text.len());
-    assert!(Partial::from_bytes(&bytes[..bytes.len() - 1]).is_err());
-    assert!(Partial::from_bytes(&text.as_bytes()[..100]).is_err());
+    assert!(from_bytes(&bytes[..bytes.len() - 1]).is_err());
+    assert!(from_bytes(&text.as_bytes()[..100]).is_err());
     // Overlapping shards are refused.
     let mut twice = run_range(&sc, 0, 2).unwrap();
-    assert!(twice.merge(&run_range(&sc, 1, 3).unwrap()).unwrap_err().contains("overlap"));
+    assert!(merge(&mut twice, run_range(&sc, 1, 3).unwrap()).unwrap_err().contains("overlap"));
     assert_eq!(whole["trials"], 6);
 }
 
@@ -241,7 +289,7 @@ fn eq_2_57_arrivals_are_poisson_at_two_sigma() {
 /// "replay a trial from this bar") gives exactly the study's histograms, bin for bin.
 #[test]
 fn trial_bins_add_up_to_the_histograms() {
-    use aes_core::studies::montecarlo::{study_summary, trial_bins};
+    use aes_core::studies::montecarlo::trial_bins;
     let mut sc = preset("mc-excess-energy").unwrap();
     sc.sim.duration_s = 30.0;
     sc.monte_carlo.trials = 6;
@@ -277,6 +325,9 @@ fn impossible_partials_are_refused_in_both_forms() {
     sc.monte_carlo.histogram_time_s = 5.0;
     sc.monte_carlo.periodogram_segment_s = 4.0;
     let good = run_range(&sc, 0, 3).unwrap();
+    let study = MonteCarlo::new(sc.clone()).unwrap();
+    let shard = |p: &Partial| study::shard(&study, vec![(0, 3)], p.clone());
+    let good = good.part;
     assert!(
         good.arrival.n == 2 && !good.onset.is_empty() && !good.periodogram.is_empty() && good.at_time.n == 3,
         "the case changed: {} events, {} bins, {} at the time",
@@ -285,13 +336,13 @@ fn impossible_partials_are_refused_in_both_forms() {
         good.at_time.n
     );
     let refused = |p: &Partial, want: &str| {
-        let json = Partial::from_json(&serde_json::to_string(p).unwrap()).unwrap_err();
-        let bin = Partial::from_bytes(&p.to_bytes().unwrap()).unwrap_err();
+        let json = from_json(&serde_json::to_string(&shard(p)).unwrap()).unwrap_err();
+        let bin = from_bytes(&to_bytes(&shard(p))).unwrap_err();
         assert!(json.contains(want), "JSON: {json} (wanted {want})");
         assert_eq!(json, bin, "the same check in both forms");
     };
-    assert_eq!(Partial::from_json(&serde_json::to_string(&good).unwrap()).unwrap(), good);
-    assert_eq!(Partial::from_bytes(&good.to_bytes().unwrap()).unwrap(), good);
+    assert_eq!(from_json(&serde_json::to_string(&shard(&good)).unwrap()).unwrap().part, good);
+    assert_eq!(from_bytes(&to_bytes(&shard(&good))).unwrap().part, good);
     // The case: std 9,272 where min and max are 2 apart (the sum of squares inflated).
     let mut p = good.clone();
     let q = |x: f64| (x * 4096.0).round() as i128;

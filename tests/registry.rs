@@ -6,26 +6,16 @@ use std::path::Path;
 
 /// Quoted strings in a text that look like scenario parameter paths (`'sea.sea_state'`).
 fn quoted_paths(text: &str) -> Vec<String> {
-    const SECTIONS: [&str; 13] = [
-        "ship.",
-        "hull.",
-        "rudder.",
-        "propeller.",
-        "plant.",
-        "controllers.",
-        "commands.",
-        "initial.",
-        "sim.",
-        "sea.",
-        "seakeeping.",
-        "monte_carlo.",
-        "as_printed.",
-    ];
+    // The scenario's sections, from the registry itself (a new section is covered as it lands).
+    let mut sections: Vec<String> =
+        registry::all().iter().map(|m| format!("{}.", m.path.split('.').next().unwrap_or_default())).collect();
+    sections.sort();
+    sections.dedup();
     let mut out = Vec::new();
     for quote in ['\'', '"', '`'] {
         for (i, piece) in text.split(quote).enumerate() {
             let is_path = i % 2 == 1
-                && SECTIONS.iter().any(|s| piece.starts_with(s))
+                && sections.iter().any(|s| piece.starts_with(s.as_str()))
                 && piece.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_' || c == '.')
                 && !piece.ends_with('.');
             if is_path {

@@ -3,6 +3,7 @@
 
 mod cmd;
 mod common;
+mod study;
 
 use clap::{Parser, Subcommand};
 use common::Failure;
@@ -65,8 +66,12 @@ enum Cmd {
     /// trial's random sea is made to bring the event at a chosen time; the event's rate per hour
     /// and each consequence's quantiles and rates past thresholds, with 95 % intervals; JSON.
     Rare(cmd::rare::Args),
-    /// Merges Monte Carlo shards (`aes-sim mc ... --partial`) into the study's summary. Reads one
-    /// shard at a time: memory does not grow with their number.
+    /// Fuel per nautical mile against ordered speed, over seas of several seeds: where the ship
+    /// is most economical in a sea, and how much the sea's realisation moves it; JSON.
+    FuelPerMile(cmd::fuel_per_mile::Args),
+    /// Merges shards of any study (`aes-sim mc`, `rare`, `operability`, `fuel-per-mile` with
+    /// `--trial-range ... --partial`) into the study's summary. Reads one shard at a time: memory
+    /// does not grow with their number.
     Merge(cmd::merge::Args),
     /// The fuel study of ch. 5.2.4 (Fig. 5-12): fuel power of one prime mover in regular head and
     /// bow seas of 1 to 5 ft over wave frequency; JSON rows on standard output.
@@ -98,6 +103,7 @@ fn real_main() -> Result<(), Failure> {
         Cmd::Operability(a) => cmd::operability::run(a),
         Cmd::Rare(a) => cmd::rare::run(a),
         Cmd::Merge(a) => cmd::merge::run(a),
+        Cmd::FuelPerMile(a) => cmd::fuel_per_mile::run(a),
         Cmd::Fuel(a) => cmd::fuel::run(a),
         Cmd::Validate(a) => cmd::validate::run(a),
         Cmd::Bench(a) => cmd::bench::run(a),

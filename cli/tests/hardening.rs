@@ -242,17 +242,30 @@ fn class5_merge_refuses_impossible_partials() {
     assert_eq!(finite_json(&o.out)["trials"], 4);
     let cases: Vec<(&str, Mutation, &str)> = vec![
         ("reversed", Box::new(|v| v["ranges"] = serde_json::json!([[2, 0]])), "ranges.0 = [2, 0]"),
-        ("censored", Box::new(|v| v["censored"] = serde_json::json!(u64::MAX)), "censored = 18446744073709551615"),
-        ("n", Box::new(|v| v["exposure"]["n"] = serde_json::json!(u64::MAX)), "exposure: n = 18446744073709551615"),
+        (
+            "censored",
+            Box::new(|v| v["part"]["censored"] = serde_json::json!(u64::MAX)),
+            "censored = 18446744073709551615",
+        ),
+        (
+            "n",
+            Box::new(|v| v["part"]["exposure"]["n"] = serde_json::json!(u64::MAX)),
+            "exposure: n = 18446744073709551615",
+        ),
         ("format", Box::new(|v| v["format"] = serde_json::json!("something else")), "format = 'something else'"),
         ("version", Box::new(|v| v["version"] = serde_json::json!(99)), "version 99"),
-        ("bits", Box::new(|v| v["arrival"]["bits"] = serde_json::json!(2_000_000_000)), "arrival: bits = 2000000000"),
-        ("interval", Box::new(|v| v["record_interval_s"] = serde_json::json!(1e-300)), "record_interval_s = 1e-300"),
         (
-            "scenario",
-            Box::new(|v| v["scenario"]["ship"]["hull"]["hub_above_base_m"] = serde_json::json!(1e308)),
-            "its scenario is not valid: ship.hull.hub_above_base_m",
+            "bits",
+            Box::new(|v| v["part"]["arrival"]["bits"] = serde_json::json!(2_000_000_000)),
+            "arrival: bits = 2000000000",
         ),
+        (
+            "interval",
+            Box::new(|v| v["part"]["record_interval_s"] = serde_json::json!(1e-300)),
+            "record_interval_s = 1e-300",
+        ),
+        ("kind", Box::new(|v| v["kind"] = serde_json::json!("rare-events")), "not a rare-events shard"),
+        ("unknown", Box::new(|v| v["censored"] = serde_json::json!(0)), "unknown field `censored`"),
     ];
     for (name, change, want) in cases {
         let mut bad = good.clone();
@@ -260,8 +273,14 @@ fn class5_merge_refuses_impossible_partials() {
         let b = write(&format!("{name}.json"), &bad);
         // Alone (the first or only file is checked too) and after a good file.
         refused(&["merge", &b], b"", want);
-        refused(&["merge", &o2, &b], b"", want);
+        refused(&["merge", &o2, &b], b"", if name == "kind" { "a shard of another kind of study" } else { want });
     }
+    // A shard's definition is checked alone; after a good shard, its key no longer fits it.
+    let mut bad = good.clone();
+    bad["spec"]["ship"]["hull"]["hub_above_base_m"] = serde_json::json!(1e308);
+    let b = write("scenario.json", &bad);
+    refused(&["merge", &b], b"", "its scenario is not valid: ship.hull.hub_above_base_m");
+    refused(&["merge", &o2, &b], b"", "not the key of its own definition");
     // Overlapping shards.
     refused(&["merge", &g, &g], b"", "overlap");
     let _ = std::fs::remove_dir_all(&dir);

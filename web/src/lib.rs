@@ -4,6 +4,7 @@
 //! file, a shared link and a native run all speak one language.
 
 use aes_core::scenario::presets::{preset, PRESET_NAMES};
+use aes_core::studies::study;
 use aes_core::{Scenario, Simulation};
 use wasm_bindgen::prelude::*;
 
@@ -252,16 +253,6 @@ pub fn trial_bins(json: JsValue, i: u32) -> Result<String, JsError> {
     serde_json::to_string(&b).map_err(|e| JsError::new(&e.to_string()))
 }
 
-/// Monte Carlo trials `a..b` of a scenario (run one after another in this worker); returns the
-/// partial statistics in binary form (`Partial::to_bytes`: the exact moments packed as they are,
-/// no JSON for the bulk), to be merged with the other workers' by `mcSummary`.
-#[wasm_bindgen(js_name = mcRange)]
-pub fn mc_range(json: JsValue, a: u32, b: u32) -> Result<Vec<u8>, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let p = aes_core::studies::montecarlo::run_range(&sc, a as u64, b as u64).map_err(|e| JsError::new(&e))?;
-    p.to_bytes().map_err(|e| JsError::new(&e))
-}
-
 /// The scenario of Monte Carlo trial `i` as JSON text: the study's scenario sailing the sea of
 /// seed `trial_seed(sim.seed, i)`, which reproduces the trial as a single run. Text, because the
 /// seed uses all 64 bits and a JavaScript number keeps 53.
@@ -278,20 +269,53 @@ pub fn trial_scenario(json: JsValue, i: u32) -> Result<String, JsError> {
     Ok(sc.to_json())
 }
 
-/// Merges partials (the binary ones of `mcRange`) and returns the study's summary JSON; the
-/// result does not depend on how the trials were split or in which order the partials come.
-#[wasm_bindgen(js_name = mcSummary)]
-pub fn mc_summary(partials: Vec<js_sys::Uint8Array>) -> Result<String, JsError> {
-    let mut merged = aes_core::studies::montecarlo::Merged::default();
-    for p in &partials {
-        let p = aes_core::studies::montecarlo::Partial::from_bytes(&p.to_vec()).map_err(|e| JsError::new(&e))?;
-        merged.add(p).map_err(|e| JsError::new(&e))?;
+/// Items `a..b` of a study on the shared pipeline (`kind`: one of `studyKinds()`; `spec`: the
+/// study's definition as JSON, e.g. a scenario for "monte-carlo"), run one after another in this
+/// worker; returns the shard in binary form (`study::to_bytes`: the envelope as JSON, the part
+/// packed), to be merged with the other workers' by `studySummary`.
+#[wasm_bindgen(js_name = studyRange)]
+pub fn study_range(kind: JsValue, spec: JsValue, a: u32, b: u32) -> Result<Vec<u8>, JsError> {
+    struct Range(String, u64, u64);
+    impl study::Visit for Range {
+        type Out = Result<Vec<u8>, String>;
+        fn visit<S: study::Study>(self) -> Result<Vec<u8>, String> {
+            let s = S::new(spec_of::<S>(&self.0)?)?;
+            study::to_bytes::<S>(&study::run_range(&s, self.1, self.2)?)
+        }
     }
-    let acc = merged.partial().map_err(|e| JsError::new(&e))?;
-    let s = aes_core::studies::montecarlo::study_summary(&acc).map_err(|e| JsError::new(&e))?;
-    aes_core::checks::check_finite(&s).map_err(|e| JsError::new(&e))?;
-    // Through a Value, whose keys are sorted, as `aes-sim mc` prints it.
-    Ok(serde_json::to_value(&s).map_err(|e| JsError::new(&e.to_string()))?.to_string())
+    let kind = text(&kind, "the study kind")?;
+    let spec = text(&spec, "the study JSON")?;
+    study::dispatch(&kind, Range(spec, a as u64, b as u64)).and_then(|r| r).map_err(|e| JsError::new(&e))
+}
+
+/// The summary JSON of a study (as its `aes-sim` command prints it, keys sorted) from the binary
+/// shards of `studyRange`: each is checked and merged; the result does not depend on how the
+/// items were split or in which order the shards come.
+#[wasm_bindgen(js_name = studySummary)]
+pub fn study_summary(kind: JsValue, spec: JsValue, shards: Vec<js_sys::Uint8Array>) -> Result<String, JsError> {
+    struct Summary(String, Vec<js_sys::Uint8Array>);
+    impl study::Visit for Summary {
+        type Out = Result<String, String>;
+        fn visit<S: study::Study>(self) -> Result<String, String> {
+            let mut m = study::Merger::new(S::new(spec_of::<S>(&self.0)?)?);
+            for b in &self.1 {
+                m.add(study::from_bytes::<S>(&b.to_vec())?)?;
+            }
+            let (s, shard) = m.finish()?;
+            let summary = s.summary(&shard.part, &shard.ranges)?;
+            aes_core::checks::check_finite(&summary)?;
+            // Through a Value, whose keys are sorted, as `aes-sim` prints it.
+            Ok(serde_json::to_value(&summary).map_err(|e| e.to_string())?.to_string())
+        }
+    }
+    let kind = text(&kind, "the study kind")?;
+    let spec = text(&spec, "the study JSON")?;
+    study::dispatch(&kind, Summary(spec, shards)).and_then(|r| r).map_err(|e| JsError::new(&e))
+}
+
+/// A study's definition from JSON ([`study::Study::spec_from_json`]).
+fn spec_of<S: study::Study>(text: &str) -> Result<S::Spec, String> {
+    S::spec_from_json(text).map_err(|e| format!("the {} study: {e}", S::KIND))
 }
 
 /// The RAO table of a scenario's seakeeping grid as flat numbers (built here once, or taken from
@@ -302,47 +326,6 @@ pub fn rao_table_values(json: JsValue) -> Result<Vec<f64>, JsError> {
     let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let t = sc.rao_table().map_err(|e| JsError::new(&e))?;
     Ok(t.values())
-}
-
-/// The operability polar (`aes-sim operability`) for the speeds `from..to` of `request` (a
-/// `PolarRequest` as JSON): each speed's cells and scatter shares as JSON, so a worker can report
-/// progress speed by speed; `operabilityAssemble` joins them.
-#[wasm_bindgen(js_name = operabilityPart)]
-pub fn operability_part(json: JsValue, request: JsValue, from: u32, to: u32) -> Result<String, JsError> {
-    let (sc, req) = operability_inputs(&json, &request)?;
-    let (spec, scatter) = req.resolve().map_err(|e| JsError::new(&e))?;
-    let setup =
-        aes_core::studies::operability::PolarSetup::new(&sc, spec, scatter.as_ref()).map_err(|e| JsError::new(&e))?;
-    let n = setup.spec.speeds_kn.len();
-    let (a, b) = (from as usize, to as usize);
-    if !(a < b && b <= n) {
-        return Err(JsError::new(&format!("operability: speeds {a}..{b}: need from < to <= {n}")));
-    }
-    let rows: Vec<_> = (a..b).map(|j| setup.speed(j, scatter.as_ref())).collect();
-    serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
-}
-
-/// The polar's JSON from every speed's `operabilityPart` rows, in order (a JSON list of them).
-#[wasm_bindgen(js_name = operabilityAssemble)]
-pub fn operability_assemble(json: JsValue, request: JsValue, rows: JsValue) -> Result<String, JsError> {
-    let (sc, req) = operability_inputs(&json, &request)?;
-    let (spec, scatter) = req.resolve().map_err(|e| JsError::new(&e))?;
-    let setup =
-        aes_core::studies::operability::PolarSetup::new(&sc, spec, scatter.as_ref()).map_err(|e| JsError::new(&e))?;
-    type Rows = Vec<(Vec<aes_core::studies::operability::Cell>, Vec<f64>)>;
-    let rows: Rows = serde_json::from_str(&text(&rows, "the rows JSON")?)
-        .map_err(|e| JsError::new(&format!("operability rows: {e}")))?;
-    if rows.len() != setup.spec.speeds_kn.len() {
-        return Err(JsError::new(&format!(
-            "operability: {} rows for {} speeds",
-            rows.len(),
-            setup.spec.speeds_kn.len()
-        )));
-    }
-    let polar =
-        aes_core::studies::operability::assemble(&sc, &setup, rows, scatter.as_ref()).map_err(|e| JsError::new(&e))?;
-    aes_core::checks::check_finite(&polar).map_err(|e| JsError::new(&e.to_string()))?;
-    serde_json::to_string(&polar).map_err(|e| JsError::new(&e.to_string()))
 }
 
 /// The scenario every trial of a rare-event study runs (`rare_event` set, the ship's place at
@@ -367,54 +350,6 @@ pub fn rare_place(json: JsValue, passes: u32) -> Result<String, JsError> {
     }
     aes_core::studies::rare::place_ship(&mut sc, passes as usize).map_err(|e| JsError::new(&e))?;
     Ok(sc.to_json())
-}
-
-/// Trials `a..b` of the rare-event study of a scenario from `rareScenario` (`aes-sim rare`'s
-/// trials, one after another), as the JSON of a shard.
-#[wasm_bindgen(js_name = rareRange)]
-pub fn rare_range(json: JsValue, a: u32, b: u32) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let p = aes_core::studies::rare::run_range(&sc, a as u64, b as u64).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
-}
-
-/// The summary (`aes-sim rare`'s JSON) of shards from `rareRange` (a JSON list of them) with
-/// `thresholds` (a JSON object: consequence name -> list of thresholds).
-#[wasm_bindgen(js_name = rareSummary)]
-pub fn rare_summary(json: JsValue, shards: JsValue, thresholds: JsValue) -> Result<String, JsError> {
-    use aes_core::studies::rare::{RarePartial, CONSEQUENCES};
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let shards: Vec<RarePartial> = serde_json::from_str(&text(&shards, "the shards JSON")?)
-        .map_err(|e| JsError::new(&format!("rare-event shards: {}", aes_core::checks::shorten(&e.to_string()))))?;
-    let asked: std::collections::BTreeMap<String, Vec<f64>> =
-        serde_json::from_str(&text(&thresholds, "the thresholds JSON")?)
-            .map_err(|e| JsError::new(&format!("thresholds: {}", aes_core::checks::shorten(&e.to_string()))))?;
-    let mut th: [Vec<f64>; 5] = Default::default();
-    for (name, v) in asked {
-        let k = CONSEQUENCES.iter().position(|c| c.name == name).ok_or_else(|| {
-            JsError::new(&format!("thresholds: no consequence named {}", aes_core::checks::shorten(&name)))
-        })?;
-        if v.iter().any(|x| !x.is_finite()) || v.len() > 20 {
-            return Err(JsError::new("thresholds: at most 20 finite numbers per consequence"));
-        }
-        th[k] = v;
-    }
-    let mut all = RarePartial { study: aes_core::studies::rare::study_key(&sc), trials: Vec::new() };
-    for p in shards {
-        all.merge(p).map_err(|e| JsError::new(&e))?;
-    }
-    let s = aes_core::studies::rare::summary(&sc, &all, &th).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&s).map_err(|e| JsError::new(&e.to_string()))
-}
-
-fn operability_inputs(
-    json: &JsValue,
-    request: &JsValue,
-) -> Result<(Scenario, aes_core::studies::operability::PolarRequest), JsError> {
-    let sc = Scenario::from_json(&text(json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let req = serde_json::from_str(&text(request, "the polar request JSON")?)
-        .map_err(|e| JsError::new(&format!("operability request: {}", aes_core::checks::shorten(&e.to_string()))))?;
-    Ok((sc, req))
 }
 
 /// Puts the table of `raoTableValues` (from another worker) into this worker's cache.

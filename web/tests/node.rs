@@ -1,6 +1,8 @@
 //! wasm-bindgen tests, run in Node (`./build.sh test`).
 #![cfg(target_arch = "wasm32")]
 
+use aes_core::studies::montecarlo::MonteCarlo;
+use aes_core::studies::study;
 use aes_web::*;
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
@@ -102,20 +104,39 @@ fn operability_and_rare_events_match_native() {
     s["rare_event"]["level_h_over_r"] = serde_json::json!(1.1);
     s["sim"]["duration_s"] = serde_json::json!(165.0);
     let j = JsValue::from(&s.to_string());
-    let req = JsValue::from(r#"{"speeds_kn": [0, 20], "headings_deg": [0, 90, 180, 225]}"#);
-    let a: serde_json::Value = serde_json::from_str(&operability_part(j.clone(), req.clone(), 0, 1).unwrap()).unwrap();
-    let b: serde_json::Value = serde_json::from_str(&operability_part(j.clone(), req.clone(), 1, 2).unwrap()).unwrap();
-    let rows = serde_json::Value::Array(vec![a[0].clone(), b[0].clone()]).to_string();
+    let polar =
+        format!(r#"{{"scenario": {s}, "request": {{"speeds_kn": [0, 20], "headings_deg": [0, 90, 180, 225]}}}}"#);
+    let (kind, spec) = (JsValue::from("operability"), JsValue::from(&polar));
+    let shards = vec![
+        bytes(study_range(kind.clone(), spec.clone(), 1, 2)),
+        bytes(study_range(kind.clone(), spec.clone(), 0, 1)),
+    ];
     assert_eq!(
-        operability_assemble(j.clone(), req, JsValue::from(&rows)).unwrap(),
+        study_summary(kind, spec, shards).unwrap(),
         include_str!(concat!(env!("OUT_DIR"), "/native_operability.json"))
     );
-    let t = JsValue::from(&rare_scenario(j).unwrap());
-    let shards = format!("[{},{}]", rare_range(t.clone(), 2, 3).unwrap(), rare_range(t.clone(), 0, 2).unwrap());
-    assert_eq!(
-        rare_summary(t, JsValue::from(&shards), JsValue::from("{}")).unwrap(),
-        include_str!(concat!(env!("OUT_DIR"), "/native_rare.json"))
-    );
+    let t = rare_scenario(j).unwrap();
+    let (kind, spec) = (JsValue::from("rare-events"), JsValue::from(&format!(r#"{{"scenario": {t}, "trials": 3}}"#)));
+    let shards = vec![
+        bytes(study_range(kind.clone(), spec.clone(), 2, 3)),
+        bytes(study_range(kind.clone(), spec.clone(), 0, 2)),
+    ];
+    assert_eq!(study_summary(kind, spec, shards).unwrap(), include_str!(concat!(env!("OUT_DIR"), "/native_rare.json")));
+}
+
+/// A binary shard as the page's workers pass it.
+fn bytes(r: Result<Vec<u8>, wasm_bindgen::JsError>) -> js_sys::Uint8Array {
+    js_sys::Uint8Array::from(&r.map_err(message).unwrap()[..])
+}
+
+/// Monte Carlo trials `a..b` of the scenario `j` through the generic entry.
+fn mc_range(j: &str, a: u32, b: u32) -> js_sys::Uint8Array {
+    bytes(study_range(JsValue::from("monte-carlo"), JsValue::from(j), a, b))
+}
+
+/// The Monte Carlo summary of binary shards through the generic entry.
+fn mc_summary(j: &str, shards: Vec<js_sys::Uint8Array>) -> Result<String, wasm_bindgen::JsError> {
+    study_summary(JsValue::from("monte-carlo"), JsValue::from(j), shards)
 }
 
 /// Monte Carlo in wasm: two ranges merged give the summary of the whole range.
@@ -128,22 +149,17 @@ fn monte_carlo_in_wasm() {
     s["monte_carlo"]["periodogram_segment_s"] = serde_json::json!(2.0);
     s["sim"]["duration_s"] = serde_json::json!(6.0);
     let j = s.to_string();
-    let bytes = |v: Vec<u8>| js_sys::Uint8Array::from(&v[..]);
-    let whole = mc_summary(vec![bytes(mc_range(JsValue::from(&j), 0, 3).unwrap())]).unwrap();
-    let split = mc_summary(vec![
-        bytes(mc_range(JsValue::from(&j), 2, 3).unwrap()),
-        bytes(mc_range(JsValue::from(&j), 0, 2).unwrap()),
-    ])
-    .unwrap();
+    let whole = mc_summary(&j, vec![mc_range(&j, 0, 3)]).unwrap();
+    let split = mc_summary(&j, vec![mc_range(&j, 2, 3), mc_range(&j, 0, 2)]).unwrap();
     assert_eq!(whole, split);
     // A table handed over from another worker gives the same numbers as one built here.
     let values = rao_table_values(JsValue::from(&j)).unwrap();
     rao_table_load(JsValue::from(&j), &values).unwrap();
-    assert_eq!(mc_summary(vec![bytes(mc_range(JsValue::from(&j), 0, 3).unwrap())]).unwrap(), whole);
+    assert_eq!(mc_summary(&j, vec![mc_range(&j, 0, 3)]).unwrap(), whole);
     assert!(rao_table_load(JsValue::from(&j), &values[1..]).is_err());
     let v: serde_json::Value = serde_json::from_str(&whole).unwrap();
     assert_eq!(v["trials"], 3);
-    assert!(mc_range(JsValue::from(&j), 2, 9).is_err());
+    assert!(study_range(JsValue::from("monte-carlo"), JsValue::from(&j), 2, 9).is_err());
     let r: serde_json::Value =
         serde_json::from_str(&rao_json(JsValue::from(&j), 20.0, 180.0, vec![0.12, 0.6]).unwrap()).unwrap();
     assert!((r["heave"]["amp"][0].as_f64().unwrap() - 1.0).abs() < 0.03);
@@ -239,14 +255,14 @@ fn extreme_inputs_end_with_named_errors() {
     );
     let msg = js_sys::Reflect::get(&errs.get(0), &"message".into()).unwrap().as_string().unwrap();
     assert!(msg.contains("duplicate key ship.wetted_area_m2"), "{msg}");
-    // A partial with a reversed range is refused by mcSummary.
+    // A shard with a reversed range is refused by studySummary.
     let mut sc: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("mc-arrival")).unwrap()).unwrap();
     sc["sim"]["duration_s"] = serde_json::json!(2.0);
-    let p = mc_range(JsValue::from(&sc.to_string()), 0, 1).unwrap();
-    let mut bad = aes_core::studies::montecarlo::Partial::from_bytes(&p).unwrap();
+    let j = sc.to_string();
+    let mut bad = study::from_bytes::<MonteCarlo>(&mc_range(&j, 0, 1).to_vec()).unwrap();
     bad.ranges = vec![(2, 0)];
-    let bad = js_sys::Uint8Array::from(&bad.to_bytes().unwrap()[..]);
-    assert!(message(mc_summary(vec![bad]).unwrap_err()).contains("ranges.0 = [2, 0]"));
+    let bad = js_sys::Uint8Array::from(&study::to_bytes::<MonteCarlo>(&bad).unwrap()[..]);
+    assert!(message(mc_summary(&j, vec![bad]).unwrap_err()).contains("ranges.0 = [2, 0]"));
 }
 
 /// What the live views read: rows handed out while a run goes add up to the finished column; the
@@ -310,7 +326,7 @@ fn boundary_checks_in_wasm() {
         assert!(message(preset_json(v.clone()).unwrap_err()).contains("expected a string"));
         assert!(message(run_summary(v.clone()).unwrap_err()).contains("the scenario JSON: expected a string"));
         assert!(message(Run::new(v.clone()).err().unwrap()).contains("expected a string"));
-        assert!(message(mc_range(v.clone(), 0, 1).unwrap_err()).contains("expected a string"));
+        assert!(message(study_range("monte-carlo".into(), v.clone(), 0, 1).unwrap_err()).contains("expected a string"));
         assert!(message(Sea::new(v).err().unwrap()).contains("expected a string"));
     }
     let storm = preset_json(JsValue::from("mc-arrival")).unwrap();
@@ -330,15 +346,14 @@ fn boundary_checks_in_wasm() {
     big["monte_carlo"]["keep_traces"] = serde_json::json!(10);
     big["monte_carlo"]["envelope_signals"] =
         serde_json::json!(Run::signal_names().into_iter().take(20).collect::<Vec<_>>());
-    let e = message(mc_range(JsValue::from(&big.to_string()), 0, 1).unwrap_err());
+    let e = message(study_range("monte-carlo".into(), JsValue::from(&big.to_string()), 0, 1).unwrap_err());
     assert!(e.contains("this study keeps about") && e.contains("at most 64 MB"), "{e}");
     let mut s: serde_json::Value = serde_json::from_str(&storm).unwrap();
     s["monte_carlo"]["trials"] = serde_json::json!(2);
     s["sim"]["duration_s"] = serde_json::json!(2.0);
     let j = s.to_string();
-    let good = mc_range(JsValue::from(&j), 0, 2).unwrap();
-    let mut p = aes_core::studies::montecarlo::Partial::from_bytes(&good).unwrap();
-    p.envelopes[0].rows[3].sums[1] = -1;
-    let bad = js_sys::Uint8Array::from(&p.to_bytes().unwrap()[..]);
-    assert!(message(mc_summary(vec![bad]).unwrap_err()).contains("sum of squares"));
+    let mut p = study::from_bytes::<MonteCarlo>(&mc_range(&j, 0, 2).to_vec()).unwrap();
+    p.part.envelopes[0].rows[3].sums[1] = -1;
+    let bad = js_sys::Uint8Array::from(&study::to_bytes::<MonteCarlo>(&p).unwrap()[..]);
+    assert!(message(mc_summary(&j, vec![bad]).unwrap_err()).contains("sum of squares"));
 }

@@ -265,7 +265,7 @@ export const OPERABILITY = {
 
 // Rare events (issue 32): the page's defaults and limits, and presentation only; the event's level
 // (seakeeping.ventilation_on_h_over_r, or 1 for emergence), the trials, their consequences and
-// every number come from the wasm (rareScenario, rareRange, rareSummary). The unit of a
+// every number come from the wasm (rareScenario, and the study pipeline's studyRange, studySummary). The unit of a
 // consequence is its name's suffix; `short` names its histogram's axis. Thresholds: the rate per
 // hour past each (null: none asked until one is typed).
 export const RARE = {

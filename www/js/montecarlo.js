@@ -2,19 +2,14 @@
 // study's tables and plots (Table 5.8, Figs. 5-20 to 5-25).
 import { MC } from './config.js';
 import { el, fmt } from './dom.js';
-import { REQUEST, WorkerClient } from './protocol.js';
+import { StudyPool } from './pool.js';
 
-// A running study over k workers; stop() terminates them (their requests fail as cancelled). A
-// worker that finished its share waits in `idle` for the next study: its wasm is then compiled and
-// its hot code already optimised by the engine (fresh workers made the first study after the page
-// opened take about half as long again: 1.4-1.6 s against 1.0 s for 100 trials of head seas).
+// A Monte Carlo study on the page's study pool (pool.js); stop() terminates its workers (their
+// requests fail as cancelled).
 export class MonteCarlo {
-  constructor() { this.workers = []; this.idle = []; }
+  constructor() { this.pool = new StudyPool(MC.maxWorkers); }
 
-  stop() {
-    for (const w of this.workers) w.terminate();
-    this.workers = [];
-  }
+  stop() { this.pool.cancel(); }
 
   // The number of trials the page runs for a scenario, or a reason it will not.
   static refusal(sc) {
@@ -24,36 +19,16 @@ export class MonteCarlo {
     return null;
   }
 
-  // Runs trials 0..n of `sc` on up to MC.maxWorkers workers (idle ones first), then merges the partials on
-  // `client`. onProgress(done, k) after each chunk. Resolves to {summary, constants}.
+  // Runs trials 0..n of `sc` on the pool, about ten chunks a worker (progress after each, and few
+  // shards to merge: each carries whole envelopes), merged and summarised by the pool's first
+  // worker. onProgress(done, k) after each chunk. Resolves to {summary, constants}. (`client`,
+  // the page's own worker, is not needed: the pool's workers hold the RAO table.)
   async run(client, sc, onProgress) {
     const n = Number(sc.monte_carlo.trials);
-    const k = Math.max(1, Math.min(MC.maxWorkers, navigator.hardwareConcurrency || 2, n));
     const scenario = JSON.stringify(sc);
-    const doneBy = new Array(k).fill(0);
-    let failed = null;
-    const onFailure = (e) => { failed = failed || e; };
-    this.workers = Array.from({ length: k }, () => {
-      const w = this.idle.pop() || new WorkerClient();
-      w.onFailure = onFailure;
-      return w;
-    });
-    onProgress(0, k);
-    // The RAO table is built once, by the page's worker (which keeps it for later runs), and
-    // handed to every study worker (copied by structured clone) while they load.
-    const { values: raoTable } = await client.request(REQUEST.raoTable, { scenario });
-    const parts = await Promise.all(this.workers.map(async (w, i) => {
-      const a = Math.floor((n * i) / k), b = Math.floor((n * (i + 1)) / k);
-      await w.ready;
-      const { partials } = await w.request(REQUEST.mc, { scenario, a, b, raoTable }, (m) => {
-        doneBy[i] = m.done;
-        onProgress(doneBy.reduce((x, y) => x + y, 0), k);
-      });
-      return partials;
-    })).catch((e) => { this.stop(); throw e; });
-    this.idle.push(...this.workers);
-    this.workers = [];
-    return client.request(REQUEST.mcSummary, { scenario, partials: parts.flat() });
+    const k = this.pool.size(n);
+    const chunk = Math.max(1, Math.ceil(n / (k * 10)));
+    return this.pool.run({ kind: 'monte-carlo', scenario, spec: scenario, n, chunk, constants: true, onProgress: (done) => onProgress(done, k) });
   }
 }
 

@@ -6,7 +6,8 @@
 // other values of the study it is marked stale, under another study it is not shown.
 import { OPERABILITY } from './config.js';
 import { $, el, fmt } from './dom.js';
-import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
+import { fieldLine } from './protocol.js';
+import { StudyPool, progressText } from './pool.js';
 import { colourScale, drawPolar, cellAt, cellCentre, margins } from './polar.js';
 
 // What a cell's click sets in the scenario: the polar does not read these (it judges the hull,
@@ -52,8 +53,7 @@ export class OperabilityTab {
     this.shown = null; // the kept entry drawn
     this.selected = null; // {j, i}
     this.geo = null;
-    this.workers = [];
-    this.idle = [];
+    this.pool = new StudyPool(OPERABILITY.maxWorkers);
     this.running = null; // {key}
     this.touchSelected = null;
     const cv = $('op-canvas');
@@ -143,14 +143,10 @@ export class OperabilityTab {
     $('op-status').className = error ? 'error' : '';
   }
 
-  cancel() {
-    for (const w of this.workers) w.terminate();
-    this.workers = [];
-  }
+  cancel() { this.pool.cancel(); }
 
-  // Computes the polar of the form's values: the speeds go one at a time to up to
-  // OPERABILITY.maxWorkers workers (the first builds the RAO table and hands it to the others), then one worker joins
-  // the rows into the polar.
+  // Computes the polar of the form's values on the study pool: the speeds go one at a time to up
+  // to OPERABILITY.maxWorkers workers, then one worker joins them into the polar.
   async compute() {
     const inp = this.inputs();
     if (!inp || this.running) return;
@@ -158,43 +154,20 @@ export class OperabilityTab {
     const key = this.keyOf(inp);
     const scenario = JSON.stringify(inp.scenario);
     const req = this.request(inp.scenario);
-    const request = JSON.stringify(req);
     const n = req.speeds_kn.length;
     if (!n) { this.status('No speed of the grid is within the scenario\'s RAO table (seakeeping.grid.speed_max_kn).', true); return; }
     this.running = { key };
     $('op-compute').disabled = true;
     $('op-cancel').disabled = false;
     $('op-results').setAttribute('aria-busy', 'true');
-    const k = Math.max(1, Math.min(OPERABILITY.maxWorkers, navigator.hardwareConcurrency || 2, n));
-    let failed = null;
-    this.workers = Array.from({ length: k }, () => { const w = this.idle.pop() || new WorkerClient(); w.onFailure = (e) => { failed = failed || e; }; return w; });
     const started = performance.now();
-    const rows = new Array(n);
-    let done = 0;
-    const queue = [...Array(n).keys()];
-    this.progress(0, n, started);
-    this.status(`Computing the polar: ${n} speeds x ${req.headings_deg.length} headings x ${req.sea_states.length} seas on ${k} worker${k > 1 ? 's' : ''}...`);
+    const spec = JSON.stringify({ scenario: inp.scenario, request: req });
     try {
-      // The RAO table is built once, by the first worker, and handed to the others (each keeps it
-      // for the speeds it takes): k workers do not build it k times.
-      await this.workers[0].ready;
-      const { values } = await this.workers[0].request(REQUEST.raoTable, { scenario });
-      await Promise.all(this.workers.map(async (w, i) => {
-        await w.ready;
-        let raoTable = i > 0 ? values : null;
-        while (queue.length) {
-          const j = queue.shift();
-          const r = await w.request(REQUEST.operability, { scenario, request, from: j, to: j + 1, raoTable });
-          raoTable = null;
-          rows[j] = r.rows[0];
-          done++;
-          this.progress(done, n, started);
-        }
-      }));
-      if (failed) throw failed;
-      const { polar } = await this.workers[0].request(REQUEST.operabilityAssemble, { scenario, request, rows });
-      this.idle.push(...this.workers);
-      this.workers = [];
+      const { summary: polar } = await this.pool.run({
+        kind: 'operability', scenario, spec, n,
+        onStart: (k) => this.status(`Computing the polar: ${n} speeds x ${req.headings_deg.length} headings x ${req.sea_states.length} seas on ${k} worker${k > 1 ? 's' : ''}...`),
+        onProgress: (done) => this.progress(done, n, started),
+      });
       const entry = { key, study: inp.study, title: inp.title, polar, ms: performance.now() - started };
       this.kept.delete(key);
       this.kept.set(key, entry);
@@ -218,8 +191,7 @@ export class OperabilityTab {
 
   progress(done, n, started) {
     $('op-progress').value = done / n;
-    const secs = (performance.now() - started) / 1000;
-    $('op-eta').textContent = `${done} of ${n} speeds${done && done < n && secs > 0.5 ? `, about ${((secs * (n - done)) / done).toFixed(1)} s left` : ''}`;
+    $('op-eta').textContent = progressText(done, n, started, 'speed');
   }
 
   // Shows a kept polar (or none): the plot, its legend, tables and text alternative.

@@ -18,8 +18,13 @@ export const REQUEST = {
   // wall_ms, constants}; with live, progress carries the rows recorded since the last report
   // ({name: Float64Array}) and the first also the page constants.
   run: 'run',
-  mc: 'mc', // {scenario, a, b, raoTable?} -> progress {done} ... done {partials} (Uint8Arrays)
-  mcSummary: 'mc-summary', // {scenario, partials} -> done {summary, constants}
+  // A study on the shared pipeline (core's studies::study; kind: 'monte-carlo', 'operability',
+  // 'rare-events'; spec: its definition as JSON text): {kind, spec, scenario, a, b, raoTable?} ->
+  // done {shard}: items a..b as a binary shard (Uint8Array, moved); the pool of pool.js sends them.
+  study: 'study',
+  // {kind, spec, shards, scenario?} -> done {summary, constants?}: the shards merged and summarised
+  // (the JSON of the study's aes-sim command, each 64-bit `seed` a string of its digits).
+  studySummary: 'study-summary',
   raoTable: 'rao-table', // {scenario} -> done {values} (Float64Array: the RAO table, built once)
   trial: 'trial', // {scenario, i} -> done {scenario}: trial i's scenario as JSON text (exact seed)
   // {scenario, hist, bin} -> progress {tried} ... done {trial}: the first trial whose value falls in
@@ -32,22 +37,10 @@ export const REQUEST = {
   // -> done {result} (the JSON of `aes-sim ips bode`)
   ips: 'ips',
   design: 'design', // {scenario} -> done {result} (LQG/LTR design and analysis, ch. 3.1)
-  // The operability polar, a few speeds at a time (the page spreads the speeds over its workers):
-  // {scenario, request, from, to, raoTable?} -> done {rows}: the rows of speeds from..to (operabilityPart);
-  // request: the polar request as JSON text ({speeds_kn, headings_deg, sea_states, ...}).
-  operability: 'operability',
-  // {scenario, request, rows} -> done {polar}: every speed's row, in order, joined into the polar
-  // (operabilityAssemble: the JSON of `aes-sim operability`).
-  operabilityAssemble: 'operability-assemble',
-  // Rare events by conditioned simulation (issue 32). {scenario, raoTable?} -> done {scenario}: the
-  // scenario every trial runs, as JSON text (rareScenario: the ship's place at the event from a run
-  // in waves); the scenario must have a random sea and rare_event.level_h_over_r set.
+  // Rare events by conditioned simulation (issue 32). {scenario} -> done {scenario}: the scenario
+  // every trial runs, as JSON text (rareScenario: the ship's place at the event from a run in
+  // waves); the scenario must have a random sea and rare_event.level_h_over_r set.
   rareScenario: 'rare-scenario',
-  // {scenario (rareScenario's), a, b, raoTable?} -> done {shard}: trials a..b as JSON text (rareRange).
-  rare: 'rare',
-  // {scenario (rareScenario's), shards: [JSON text], thresholds: {name: [values]}} -> done {summary}:
-  // the JSON of `aes-sim rare`, with each 64-bit `seed` as a string of its digits (exact).
-  rareSummary: 'rare-summary',
   // {scenario (rareScenario's, with rare_event.shape), passes} -> done {scenario}: the ship's place
   // and speed at the event taken from runs to the event in that scenario's own sea, `passes` times
   // (as each trial places itself; the most likely wave group slows the ship less than a random sea).

@@ -11,6 +11,7 @@ import { RARE, studyTitle } from './config.js';
 import { param, choiceLabel } from './registry.js';
 import { $, el, fmt } from './dom.js';
 import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
+import { StudyPool, progressText, summarise } from './pool.js';
 
 const unitOf = (name) => RARE.units[name.slice(name.lastIndexOf('_') + 1)] || '-';
 const clone = (x) => JSON.parse(JSON.stringify(x));
@@ -42,8 +43,7 @@ export class RareView {
     this.onRun = onRun;
     this.kept = new Map(); // key -> entry
     this.shown = null;
-    this.workers = [];
-    this.idle = [];
+    this.pool = new StudyPool(RARE.maxWorkers);
     this.running = null;
     this.ship = null; // the JSON of the ship section the hub depth's default belongs to
     this.hull = null; // {draft_m, hub_depth_m} of that ship
@@ -146,10 +146,7 @@ export class RareView {
     $('rare-status').className = error ? 'error' : '';
   }
 
-  cancel() {
-    for (const w of this.workers) w.terminate();
-    this.workers = [];
-  }
+  cancel() { this.pool.cancel(); }
 
   thresholds() {
     const out = {};
@@ -161,9 +158,8 @@ export class RareView {
     return out;
   }
 
-  // Runs the trials over up to RARE.maxWorkers workers in chunks (a queue: a worker that finishes
-  // takes the next), the first worker building the RAO table and the trials' scenario, then
-  // summarises them.
+  // Runs the trials on the study pool in chunks, the first worker building the RAO table and the
+  // trials' scenario (the study's definition), then summarises them.
   async compute() {
     const inp = this.inputs();
     if (!inp || this.running || inp.invalid || RareView.refusal(inp.scenario) || !this.hull) return;
@@ -181,40 +177,20 @@ export class RareView {
     $('rare-compute').disabled = true;
     $('rare-cancel').disabled = false;
     $('rare-results').setAttribute('aria-busy', 'true');
-    const k = Math.max(1, Math.min(RARE.maxWorkers, navigator.hardwareConcurrency || 2, n));
-    let failed = null;
-    this.workers = Array.from({ length: k }, () => { const w = this.idle.pop() || new WorkerClient(); w.onFailure = (e) => { failed = failed || e; }; return w; });
     const started = performance.now();
-    const chunk = Math.max(1, Math.min(25, Math.ceil(n / (k * 6))));
-    const queue = [];
-    for (let a = 0; a < n; a += chunk) queue.push([a, Math.min(n, a + chunk)]);
-    const shards = new Array(queue.length);
-    let done = 0;
-    this.progress(0, n, started);
-    this.status(`Rare events: the trials' scenario (a run in waves to the event's place), then ${n} trials on ${k} worker${k > 1 ? 's' : ''}...`);
+    const chunk = Math.max(1, Math.min(25, Math.ceil(n / (this.pool.size(n) * 6))));
+    let trial = null;
+    // The definition every shard carries: the trials' scenario, their number, the thresholds.
+    const specOf = async (first) => {
+      ({ scenario: trial } = await first.request(REQUEST.rareScenario, { scenario: study }));
+      return this.specOf(trial, n);
+    };
     try {
-      const first = this.workers[0];
-      await first.ready;
-      const { values: raoTable } = await first.request(REQUEST.raoTable, { scenario: study });
-      const { scenario: trial } = await first.request(REQUEST.rareScenario, { scenario: study });
-      let next = 0;
-      await Promise.all(this.workers.map(async (w, i) => {
-        await w.ready;
-        let table = i === 0 ? null : raoTable;
-        while (next < queue.length) {
-          const j = next++;
-          const [a, b] = queue[j];
-          const { shard } = await w.request(REQUEST.rare, { scenario: trial, a, b, ...(table ? { raoTable: table } : {}) });
-          table = null;
-          shards[j] = shard;
-          done += b - a;
-          this.progress(done, n, started);
-        }
-      }));
-      if (failed) throw failed;
-      const { summary } = await first.request(REQUEST.rareSummary, { scenario: trial, shards, thresholds: this.thresholds() });
-      this.idle.push(...this.workers);
-      this.workers = [];
+      const { shards, summary } = await this.pool.run({
+        kind: 'rare-events', scenario: study, spec: specOf, n, chunk,
+        onStart: (k) => this.status(`Rare events: the trials' scenario (a run in waves to the event's place), then ${n} trials on ${k} worker${k > 1 ? 's' : ''}...`),
+        onProgress: (done) => this.progress(done, n, started),
+      });
       const entry = { key, study: inp.study, title: inp.title, controls: c, trial, shards, summary, ms: performance.now() - started };
       this.kept.delete(key);
       this.kept.set(key, entry);
@@ -238,16 +214,19 @@ export class RareView {
 
   progress(done, n, started) {
     $('rare-progress').value = done / n;
-    const secs = (performance.now() - started) / 1000;
-    $('rare-eta').textContent = `${done} of ${n} trials${done && done < n && secs > 0.5 ? `, about ${((secs * (n - done)) / done).toFixed(1)} s left` : ''}`;
+    $('rare-eta').textContent = progressText(done, n, started, 'trial');
   }
+
+  // The study's definition (core's rare::RareSpec) as JSON text: the trials' scenario (text, its
+  // 64-bit seed exact), the number of trials and the thresholds typed.
+  specOf(trial, n) { return `{"scenario": ${trial}, "trials": ${n}, "thresholds": ${JSON.stringify(this.thresholds())}}`; }
 
   // The same trials summarised again with the thresholds typed (no trial runs again).
   async resummarise() {
     const entry = this.shown;
     if (!entry) return;
     try {
-      const { summary } = await this.helper().request(REQUEST.rareSummary, { scenario: entry.trial, shards: entry.shards, thresholds: this.thresholds() });
+      const { summary } = await summarise(this.helper(), 'rare-events', this.specOf(entry.trial, entry.controls.trials), entry.shards);
       entry.summary = summary;
       if (this.shown === entry) { this.thresholdTable(summary); window.__rare = { summary, trial: entry.trial }; }
     } catch (e) {
@@ -348,8 +327,8 @@ export class RareView {
 
   // A worker for the page's small requests (an idle one of the study's, which holds the RAO table).
   helper() {
-    if (!this.idle.length) this.idle.push(new WorkerClient());
-    return this.idle[0];
+    if (!this.pool.idle.length) this.pool.idle.push(new WorkerClient());
+    return this.pool.idle[0];
   }
 
   // The trials' scenario with the conditional mean sea (NewWave), through the page's run. The

@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, mcRange, mcSummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, operabilityPart, operabilityAssemble, rareScenario, rareRange, rareSummary, rarePlace } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -58,25 +58,21 @@ const handlers = {
     }
   },
 
-  // Monte Carlo trials a..b in about ten chunks: progress after each, and few partials to merge
-  // (each carries whole envelopes). They stay separate partials: merging needs the exact integer
-  // sums, which only the Rust side holds; the summary request merges them all.
-  // The RAO table comes from the page (built once, in its worker), not built again here; the
-  // partials are binary (Uint8Array) and travel as transferables.
-  [REQUEST.mc]: (m, progress) => {
-    checked(m.scenario);
+  // Items a..b of a study (core's studies::study: Monte Carlo, operability, rare events) as one
+  // binary shard, moved to the page; the RAO table comes from the pool's first worker (built once)
+  // with this worker's first chunk, and stays in its cache.
+  [REQUEST.study]: (m) => {
     if (m.raoTable) raoTableLoad(m.scenario, m.raoTable);
-    const partials = [];
-    const chunk = Math.max(1, Math.ceil((m.b - m.a) / 10));
-    for (let i = m.a; i < m.b; i += chunk) {
-      const j = Math.min(m.b, i + chunk);
-      partials.push(mcRange(m.scenario, i, j));
-      progress({ done: j - m.a });
-    }
-    return [{ partials }, partials.map((p) => p.buffer)];
+    const shard = studyRange(m.kind, m.spec, m.a, m.b);
+    return [{ shard }, [shard.buffer]];
   },
 
-  [REQUEST.mcSummary]: (m) => ({ summary: JSON.parse(mcSummary(m.partials)), constants: constantsOf(m.scenario) }),
+  // The shards merged and summarised (the JSON of the study's aes-sim command); every 64-bit
+  // `seed` is kept exact as a string of its digits. With a scenario, its page constants too.
+  [REQUEST.studySummary]: (m) => {
+    const text = studySummary(m.kind, m.spec, m.shards).replace(/"seed":(\d+)/g, '"seed":"$1"');
+    return { summary: JSON.parse(text), ...(m.scenario ? { constants: constantsOf(m.scenario) } : {}) };
+  },
 
   [REQUEST.raoTable]: (m) => {
     const values = raoTableValues(checked(m.scenario));
@@ -103,26 +99,9 @@ const handlers = {
 
   [REQUEST.hullSheet]: (m) => ({ sheet: JSON.parse(hullSheet(checked(m.scenario))) }),
 
-  // The RAO table comes from the page's first worker (built once) with a worker's first speed,
-  // and stays in its cache for the next.
-  [REQUEST.operability]: (m) => {
-    checked(m.scenario);
-    if (m.raoTable) raoTableLoad(m.scenario, m.raoTable);
-    return { rows: JSON.parse(operabilityPart(m.scenario, m.request, m.from, m.to)) };
-  },
-  [REQUEST.operabilityAssemble]: (m) => ({ polar: JSON.parse(operabilityAssemble(checked(m.scenario), m.request, JSON.stringify(m.rows))) }),
-
-  // Rare events: the RAO table comes from the page's first rare worker (built once), as for the
-  // Monte Carlo; seeds are 64-bit integers, kept exact as strings of digits.
-  [REQUEST.rareScenario]: (m) => {
-    if (m.raoTable) raoTableLoad(m.scenario, m.raoTable);
-    return { scenario: rareScenario(checked(m.scenario)) };
-  },
-  [REQUEST.rare]: (m) => {
-    if (m.raoTable) raoTableLoad(m.scenario, m.raoTable);
-    return { shard: rareRange(m.scenario, m.a, m.b) };
-  },
-  [REQUEST.rareSummary]: (m) => ({ summary: JSON.parse(rareSummary(m.scenario, `[${m.shards.join(',')}]`, JSON.stringify(m.thresholds)).replace(/"seed":(\d+)/g, '"seed":"$1"')) }),
+  // The scenario every trial of a rare-event study runs (the ship's place at the event from a run
+  // in waves), as JSON text.
+  [REQUEST.rareScenario]: (m) => ({ scenario: rareScenario(checked(m.scenario)) }),
 
   // The ship placed at the event in the scenario's own conditioned sea (core's rare::place_ship).
   [REQUEST.rarePlace]: (m) => ({ scenario: rarePlace(checked(m.scenario), m.passes) }),

@@ -3,6 +3,7 @@
 pub mod bench;
 pub mod design;
 pub mod fuel;
+pub mod fuel_per_mile;
 pub mod health;
 pub mod ips;
 pub mod mc;

@@ -1,9 +1,12 @@
 //! `aes-sim operability`: the operability polar of a scenario's ship (speed x heading x sea),
 //! with the limiting criterion of every cell and the operable share of a wave scatter diagram.
 
-use crate::common::{emit_json, load, read_bounded, shorten, Failure, Threads};
+use crate::common::{emit_json, load, read_bounded, shorten, Failure};
+use crate::study::{execute, ShardArgs};
 use aes_core::studies::operability::scatter::{Scatter, MAX_SCATTER_BYTES};
-use aes_core::studies::operability::{assemble, table_2_4, PolarSetup, PolarSpec, SeaSpec};
+use aes_core::studies::operability::study::{OperabilityPolar, PolarStudySpec};
+use aes_core::studies::operability::{table_2_4, PolarRequest};
+use aes_core::studies::study::Study;
 
 // The command line of `aes-sim operability`.
 #[derive(clap::Args)]
@@ -29,16 +32,15 @@ pub struct Args {
     /// `none`; default: the IACS Rec. 34 North Atlantic.
     #[arg(long)]
     scatter: Option<String>,
-    /// Worker threads (default: all cores). The numbers do not depend on it.
-    #[arg(long)]
-    threads: Option<usize>,
+    #[command(flatten)]
+    shards: ShardArgs,
     /// Override one parameter (repeatable).
     #[arg(long = "set", value_name = "PATH=VALUE")]
     sets: Vec<String>,
 }
 
-/// `--seas` pairs H:Tp.
-fn own_seas(pairs: &[String]) -> Result<Vec<SeaSpec>, String> {
+/// `--seas` pairs H:Tp as [H m, T_p s].
+fn own_seas(pairs: &[String]) -> Result<Vec<[f64; 2]>, String> {
     pairs
         .iter()
         .map(|p| {
@@ -49,49 +51,38 @@ fn own_seas(pairs: &[String]) -> Result<Vec<SeaSpec>, String> {
             if !(t.is_finite() && t > 0.0) {
                 return Err(format!("--seas '{}': T_p must be a positive number of seconds", shorten(p)));
             }
-            Ok(SeaSpec::new(format!("H {h} m, Tp {t} s"), h, 2.0 * std::f64::consts::PI / t))
+            Ok([h, t])
         })
         .collect()
 }
 
-pub fn run(Args { file, speeds, headings, sea_states, seas, scatter, threads, sets }: Args) -> Result<(), Failure> {
+pub fn run(Args { file, speeds, headings, sea_states, seas, scatter, shards, sets }: Args) -> Result<(), Failure> {
     let sc = load(&file, &sets)?;
     sc.validate().map_err(|e| format!("{}: {e}", shorten(&file)))?;
-    let mut spec = PolarSpec::default();
+    let mut request = PolarRequest::default();
     if !speeds.is_empty() {
-        spec.speeds_kn = speeds;
+        request.speeds_kn = Some(speeds);
     }
     if !headings.is_empty() {
-        spec.headings_deg = headings;
+        request.headings_deg = Some(headings);
     }
     if !sea_states.is_empty() {
-        spec.seas = table_2_4(&sea_states).map_err(|e| format!("--sea-states: {e}"))?;
+        table_2_4(&sea_states).map_err(|e| format!("--sea-states: {e}"))?;
+        request.sea_states = Some(sea_states);
     }
     if !seas.is_empty() {
-        spec.seas = own_seas(&seas)?;
-        spec.seas.sort_by(|a, b| a.h_sig_m.total_cmp(&b.h_sig_m));
+        request.seas = Some(own_seas(&seas)?);
     }
-    let scatter = match scatter.as_deref() {
-        None => Some(Scatter::north_atlantic()),
-        Some("none") => None,
+    match scatter.as_deref() {
+        None => {}
+        Some("none") => request.scatter_csv = Some("none".into()),
         Some(path) => {
             let text = read_bounded(path, MAX_SCATTER_BYTES as u64, "a scatter diagram")?;
-            Some(Scatter::parse(&text, path).map_err(|e| format!("--scatter {}: {e}", shorten(path)))?)
+            Scatter::parse(&text, path).map_err(|e| format!("--scatter {}: {e}", shorten(path)))?;
+            request.scatter_csv = Some(text);
+            request.scatter_name = Some(path.to_string());
         }
-    };
-    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
-    let threads = threads.unwrap_or(cores).clamp(1, cores);
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
-    let polar = pool.install(|| -> Result<_, String> {
-        use rayon::prelude::*;
-        // The RAO table's parts side by side, then one speed per task.
-        sc.rao_table_with(&Threads)?;
-        let setup = PolarSetup::new(&sc, spec, scatter.as_ref())?;
-        let rows: Vec<_> =
-            (0..setup.spec.speeds_kn.len()).into_par_iter().map(|j| setup.speed(j, scatter.as_ref())).collect();
-        assemble(&sc, &setup, rows, scatter.as_ref())
-    })?;
-    aes_core::checks::check_finite(&polar)?;
-    emit_json(&polar)?;
-    Ok(())
+    }
+    let study = OperabilityPolar::new(PolarStudySpec { scenario: sc, request })?;
+    execute(study, &shards, "operability", &file, |_, polar| emit_json(polar))
 }

@@ -1,8 +1,10 @@
 //! `aes-sim rare`: the consequences of a rare propeller surface event by conditioned simulation
 //! (issue 32), whole or one shard of it, and the merge of shards.
 
-use crate::common::{emit_json, load, read_bounded, shorten, Failure, OutFile, Threads};
-use aes_core::studies::rare::{self, RarePartial, CONSEQUENCES};
+use crate::common::{emit_json, load, shorten, Failure};
+use crate::study::{execute, ShardArgs};
+use aes_core::studies::rare::{self, RareEvents, RareSpec, CONSEQUENCES};
+use aes_core::studies::study::Study;
 
 // The command line of `aes-sim rare`.
 #[derive(clap::Args)]
@@ -31,30 +33,17 @@ pub struct Args {
     /// Master seed (default: the scenario's sim.seed).
     #[arg(long)]
     seed: Option<u64>,
-    /// Worker threads (default: all cores). The numbers do not depend on it.
-    #[arg(long)]
-    threads: Option<usize>,
-    /// Run only trials A..B (a shard); needs --partial.
-    #[arg(long = "trial-range", value_name = "A..B")]
-    trial_range: Option<String>,
-    /// Write the shard's trials to this file (JSON) instead of the summary.
-    #[arg(long)]
-    partial: Option<String>,
-    /// Summarise these shards' files (of the same scenario and options) instead of running.
-    #[arg(long, num_args = 1.., value_name = "FILE")]
-    merge: Vec<String>,
+    #[command(flatten)]
+    shards: ShardArgs,
     /// Also count events in this many hours of unconditioned Gaussian seas (runs of 1,200 s),
     /// and compare: each rate by both methods, and the simulated seconds each needs for the
     /// same 95 % interval width (the benchmark of the method).
-    #[arg(long = "brute-force", value_name = "HOURS")]
+    #[arg(long = "brute-force", value_name = "HOURS", conflicts_with_all = ["range", "merge"])]
     brute_force: Option<f64>,
     /// Override one parameter (repeatable).
     #[arg(long = "set", value_name = "PATH=VALUE")]
     sets: Vec<String>,
 }
-
-/// Largest shard file [bytes] (a trial is about 300 bytes).
-const MAX_PARTIAL_BYTES: u64 = 64 << 20;
 
 pub fn run(a: Args) -> Result<(), Failure> {
     let mut sc = load(&a.file, &a.sets)?;
@@ -77,70 +66,43 @@ pub fn run(a: Args) -> Result<(), Failure> {
     };
     sc.sim.duration_s = sc.sim.duration_s.max(sc.rare_event.time_s + sc.rare_event.window_s);
     sc.validate().map_err(|e| format!("{}: {e}", shorten(&a.file)))?;
-    let mut thresholds: [Vec<f64>; 5] = Default::default();
+    let mut thresholds = std::collections::BTreeMap::<String, Vec<f64>>::new();
     for t in &a.thresholds {
         let bad = || format!("--threshold '{}': expected NAME=VALUE with NAME one of {}", shorten(t), names());
         let (n, v) = t.split_once('=').ok_or_else(bad)?;
-        let k = CONSEQUENCES.iter().position(|c| c.name == n.trim()).ok_or_else(bad)?;
+        let n = CONSEQUENCES.iter().find(|c| c.name == n.trim()).ok_or_else(bad)?.name;
         let v: f64 = v.trim().parse().ok().filter(|x: &f64| x.is_finite()).ok_or_else(bad)?;
-        thresholds[k].push(v);
+        thresholds.entry(n.to_string()).or_default().push(v);
     }
-    if !a.merge.is_empty() {
-        let trial_sc = rare::trial_scenario(&sc)?;
-        let mut all = RarePartial { study: rare::study_key(&trial_sc), trials: Vec::new() };
-        for f in &a.merge {
-            let text = read_bounded(f, MAX_PARTIAL_BYTES, "a rare-event shard")?;
-            let p: RarePartial =
-                serde_json::from_str(&text).map_err(|e| format!("{}: not a rare-event shard: {e}", shorten(f)))?;
-            all.merge(p).map_err(|e| format!("--merge: {e}"))?;
+    if let Some(hours) = a.brute_force {
+        if !(hours.is_finite() && (0.1..=10_000.0).contains(&hours)) {
+            return Err(format!("--brute-force {hours}: from 0.1 to 10000 hours").into());
         }
-        let missing = (0..a.trials).find(|i| all.trials.binary_search_by_key(i, |t| t.trial).is_err());
-        if let Some(i) = missing {
-            return Err(format!("--merge: trial {i} of {} is in no shard", a.trials).into());
-        }
-        if let Some(t) = all.trials.iter().find(|t| t.trial >= a.trials) {
-            return Err(format!("--merge: trial {} is beyond --trials {}", t.trial, a.trials).into());
-        }
-        return emit_json(&rare::summary(&trial_sc, &all, &thresholds)?);
     }
     rare::check_study(&sc, a.trials).map_err(|e| format!("{}: {e}", shorten(&a.file)))?;
-    let (lo, hi) = match &a.trial_range {
-        None => (0, a.trials),
-        Some(r) => {
-            let bad = || format!("--trial-range '{}': expected A..B with A < B <= --trials", shorten(r));
-            let (x, y) = r.split_once("..").ok_or_else(bad)?;
-            let (x, y): (u64, u64) = (x.trim().parse().map_err(|_| bad())?, y.trim().parse().map_err(|_| bad())?);
-            if !(x < y && y <= a.trials) {
-                return Err(bad().into());
-            }
-            (x, y)
-        }
-    };
-    let out = match (&a.partial, &a.trial_range) {
-        (Some(p), _) => Some(OutFile::check(p, "--partial", &[&a.file])?),
-        (None, Some(_)) => return Err("--trial-range needs --partial FILE (summarise the shards with --merge)".into()),
-        (None, None) => None,
-    };
+    // With --merge too: the shards must be of this study (its key), as the options give it.
+    let mut spec = RareSpec::new(&sc, a.trials)?;
+    spec.thresholds = thresholds;
+    let study = RareEvents::new(spec)?;
+    let brute_force = a.brute_force;
+    let threads = a.shards.threads;
+    execute(study, &a.shards, "rare", &a.file, |study, summary| match brute_force {
+        None => emit_json(summary),
+        Some(hours) => compare_brute_force(study, summary, hours, threads),
+    })
+}
+
+/// Counts events in `hours` of unconditioned Gaussian seas and prints the summary beside them.
+fn compare_brute_force(
+    study: &RareEvents,
+    summary: &rare::RareSummary,
+    hours: f64,
+    threads: Option<usize>,
+) -> Result<(), Failure> {
+    let trial_sc = &study.spec().scenario;
     let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
-    let threads = a.threads.unwrap_or(cores).clamp(1, cores);
+    let threads = threads.unwrap_or(cores).clamp(1, cores);
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
-    let (trial_sc, partial) = pool.install(|| -> Result<_, String> {
-        use rayon::prelude::*;
-        sc.rao_table_with(&Threads)?;
-        let trials = rare::Trials::new(&sc)?;
-        let records = (lo..hi).into_par_iter().map(|i| trials.run(i)).collect::<Result<Vec<_>, _>>()?;
-        Ok((trials.sc.clone(), RarePartial { study: rare::study_key(&trials.sc), trials: records }))
-    })?;
-    if let Some(o) = out {
-        return Ok(o.write(serde_json::to_string(&partial).map_err(|e| e.to_string())?.as_bytes())?);
-    }
-    let summary = rare::summary(&trial_sc, &partial, &thresholds)?;
-    let Some(hours) = a.brute_force else {
-        return emit_json(&summary);
-    };
-    if !(hours.is_finite() && (0.1..=10_000.0).contains(&hours)) {
-        return Err(format!("--brute-force {hours}: from 0.1 to 10000 hours").into());
-    }
     // Runs long enough to hold the warm-up, the window and 20 minutes of sea; at least 10 of
     // them (the interval comes from their spread).
     let ev = &trial_sc.rare_event;
@@ -151,7 +113,7 @@ pub fn run(a: Args) -> Result<(), Failure> {
         use rayon::prelude::*;
         let parts = (0..runs)
             .into_par_iter()
-            .map(|i| rare::BruteForce::run(&trial_sc, run_s, i, i + 1))
+            .map(|i| rare::BruteForce::run(trial_sc, run_s, i, i + 1))
             .collect::<Result<Vec<_>, _>>()?;
         Ok(rare::BruteForce { runs: parts.into_iter().flat_map(|b| b.runs).collect() })
     })?;

@@ -4,11 +4,27 @@
 
 pub mod controller;
 pub mod fuel;
+pub mod fuel_per_mile;
 pub mod ips;
 pub mod montecarlo;
 pub mod operability;
 pub mod rare;
 pub mod regression;
 pub mod stats;
+pub mod study;
 pub mod thesis_values;
 pub mod validation_report;
+
+/// Every study on the shared pipeline ([`study::Study`]), for the code that picks one by its kind
+/// (`aes-sim merge`, the wasm's `studyRange`): a new study adds its type here, once.
+#[macro_export]
+macro_rules! for_each_study {
+    ($m:ident) => {
+        $m!(
+            $crate::studies::montecarlo::MonteCarlo,
+            $crate::studies::rare::RareEvents,
+            $crate::studies::operability::study::OperabilityPolar,
+            $crate::studies::fuel_per_mile::FuelPerMileStudy,
+        );
+    };
+}

@@ -19,19 +19,14 @@
 
 use crate::scenario::{Scenario, SeaKind};
 use crate::sea::seakeeping::params::HubPlace;
+use crate::ship::hull::N_SHAFTS;
 use crate::signals::Signal;
 use crate::sim::{Prototype, SimError};
 use crate::studies::stats::{rice_upcrossing_rate, trial_seed, welch, ExactMoments, Histogram};
+use crate::studies::study::Study;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::f64::consts::PI;
-
-/// Identifies the shard format.
-pub const FORMAT: &str = "aes-sim monte carlo partial";
-pub const VERSION: u32 = 1;
-
-/// Most trial ranges one partial may list.
-pub const MAX_RANGES: usize = 1_000_000;
 
 /// Most memory one accumulator of a study may take [bytes]: its moment rows (envelopes, onset,
 /// periodogram) and kept traces, estimated by [`study_bytes`] and checked by [`check_study`]
@@ -62,14 +57,10 @@ pub struct KeptTrace {
     pub columns: Vec<(String, Vec<f64>)>,
 }
 
-/// Accumulated statistics of a set of trials (a shard, or the whole study).
+/// Accumulated statistics of a set of trials (a shard's part, or the whole study's); the shard
+/// around it ([`crate::studies::study::Shard`]) says which trials and which study.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Partial {
-    pub format: String,
-    pub version: u32,
-    pub scenario: Scenario,
-    /// Trial index ranges [a, b) covered, sorted and disjoint.
-    pub ranges: Vec<(u64, u64)>,
     pub record_interval_s: f64,
     pub envelopes: Vec<Envelope>,
     pub at_time: ExactMoments,
@@ -96,10 +87,6 @@ impl Partial {
         let m = &sc.monte_carlo;
         let cap = sc.sim.duration_s;
         Partial {
-            format: FORMAT.into(),
-            version: VERSION,
-            scenario: sc.clone(),
-            ranges: Vec::new(),
             record_interval_s: sc.sim.record_interval_s,
             envelopes: m.envelope_signals.iter().map(|s| Envelope { signal: s.clone(), rows: Vec::new() }).collect(),
             at_time: ExactMoments::new(SCALAR_BITS, 4),
@@ -119,51 +106,12 @@ impl Partial {
         }
     }
 
-    /// Number of trials accumulated (saturating; [`Partial::validate`] refuses counts that do not fit).
-    pub fn trials(&self) -> u64 {
-        self.ranges.iter().fold(0u64, |n, (a, b)| n.saturating_add(b.saturating_sub(*a)))
-    }
-
-    /// Reads a partial from JSON (bounded like a scenario's nesting, duplicate keys refused) and
-    /// validates it fully ([`Partial::validate`]).
-    pub fn from_json(text: &str) -> Result<Partial, String> {
-        let p: Partial = serde_json::from_str(text)
-            .map_err(|e| format!("not a Monte Carlo partial: {}", crate::checks::shorten_message(&e.to_string())))?;
-        p.validate()?;
-        Ok(p)
-    }
-
-    /// Checks everything a partial from outside claims: its format and version, its embedded
-    /// scenario, its trial ranges (each a..b with a < b <= monte_carlo.trials, sorted, disjoint),
-    /// and that every accumulator has the quantum, order, bins and counts this study makes
-    /// (nothing more samples than trials, nothing that could overflow when merged).
-    pub fn validate(&self) -> Result<(), String> {
-        use crate::checks::shorten;
-        if self.format != FORMAT || self.version != VERSION {
-            return Err(format!(
-                "format = '{}' version {}: expected '{FORMAT}' version {VERSION}",
-                shorten(&self.format),
-                self.version
-            ));
-        }
-        self.scenario.validate().map_err(|e| format!("its scenario is not valid: {e}"))?;
-        let sc = &self.scenario;
-        check_study(sc)?;
-        let max_trials = sc.monte_carlo.trials;
-        let mut last_end = 0u64;
-        for (k, &(a, b)) in self.ranges.iter().enumerate() {
-            if !(a < b && b <= max_trials) {
-                return Err(format!("ranges.{k} = [{a}, {b}]: need a < b <= monte_carlo.trials = {max_trials}"));
-            }
-            if k > 0 && a < last_end {
-                return Err(format!("ranges.{k} = [{a}, {b}]: ranges must be sorted and must not overlap"));
-            }
-            last_end = b;
-        }
-        let trials = self.trials(); // <= max_trials: the ranges are disjoint within [0, trials)
-        if self.ranges.len() > MAX_RANGES {
-            return Err(format!("ranges: {} ranges, at most {MAX_RANGES}", self.ranges.len()));
-        }
+    /// Checks everything a part from outside claims about the trials `ranges` (checked by the
+    /// shard: sorted, disjoint, within the study) of the study `sc`: that every accumulator has
+    /// the quantum, order, bins and counts this study makes (nothing more samples than trials,
+    /// nothing that could overflow when merged).
+    pub fn validate(&self, sc: &Scenario, ranges: &[(u64, u64)]) -> Result<(), String> {
+        let trials = crate::studies::study::count(ranges);
         if self.record_interval_s != sc.sim.record_interval_s {
             return Err(format!(
                 "record_interval_s = {}: must equal the scenario's sim.record_interval_s = {}",
@@ -315,7 +263,7 @@ impl Partial {
             ));
         }
         for t in &self.traces {
-            if !self.ranges.iter().any(|&(a, b)| (a..b).contains(&t.trial))
+            if !ranges.iter().any(|&(a, b)| (a..b).contains(&t.trial))
                 || t.trial >= sc.monte_carlo.keep_traces as u64
                 || t.t_s.len() > max_rows
                 || t.columns.iter().any(|(_, c)| c.len() != t.t_s.len())
@@ -327,31 +275,9 @@ impl Partial {
         Ok(())
     }
 
-    /// Adds another partial of the same study (same scenario and master seed, disjoint trials).
-    pub fn merge(&mut self, b: &Partial) -> Result<(), String> {
-        if b.format != FORMAT || b.version != VERSION {
-            return Err(format!("not a partial of this version ({} v{})", b.format, b.version));
-        }
-        if b.scenario != self.scenario {
-            return Err("the partials come from different studies (scenario or seed differ)".into());
-        }
-        let mut ranges = self.ranges.clone();
-        ranges.extend(b.ranges.iter().copied());
-        ranges.sort();
-        for w in ranges.windows(2) {
-            if w[1].0 < w[0].1 {
-                return Err(format!("trial ranges {}..{} and {}..{} overlap", w[0].0, w[0].1, w[1].0, w[1].1));
-            }
-        }
-        // Join adjacent ranges.
-        let mut joined: Vec<(u64, u64)> = Vec::new();
-        for r in ranges {
-            match joined.last_mut() {
-                Some(last) if last.1 == r.0 => last.1 = r.1,
-                _ => joined.push(r),
-            }
-        }
-        self.ranges = joined;
+    /// Adds the statistics of other trials of the same study (the shard checks that they are
+    /// disjoint and of the same study); keeps the first `keep_traces` trials' traces.
+    pub fn merge(&mut self, b: &Partial, keep_traces: usize) -> Result<(), String> {
         for (e, f) in self.envelopes.iter_mut().zip(&b.envelopes) {
             merge_rows(&mut e.rows, &f.rows, 2)?;
         }
@@ -372,7 +298,7 @@ impl Partial {
         merge_rows(&mut self.periodogram, &b.periodogram, 2)?;
         self.traces.extend(b.traces.iter().cloned());
         self.traces.sort_by_key(|t| t.trial);
-        self.traces.truncate(self.scenario.monte_carlo.keep_traces as usize);
+        self.traces.truncate(keep_traces);
         Ok(())
     }
 }
@@ -387,8 +313,8 @@ fn merge_rows(a: &mut Vec<ExactMoments>, b: &[ExactMoments], order: u8) -> Resul
     Ok(())
 }
 
-/// First bytes of a partial in binary form (`Partial::to_bytes`).
-const BINARY_MAGIC: &[u8; 8] = b"AESMCP01";
+/// First bytes of a part in binary form (`Partial::to_bytes`).
+const BINARY_MAGIC: &[u8; 8] = b"AESMCP02";
 /// Bytes of one packed `ExactMoments`: bits i32, order u8, n u64, four i128 sums, min and max
 /// f64, clamped u64 (little-endian).
 const PACKED_MOMENTS: usize = 4 + 1 + 8 + 4 * 16 + 8 + 8 + 8;
@@ -431,7 +357,7 @@ impl Partial {
         Ok(out)
     }
 
-    /// Reads `to_bytes`' form back and checks it as `from_json` does.
+    /// Reads `to_bytes`' form back (the shard checks it).
     pub fn from_bytes(b: &[u8]) -> Result<Partial, String> {
         let bad = |what: &str| format!("not a binary Monte Carlo partial ({what})");
         if b.len() < 16 || &b[..8] != BINARY_MAGIC {
@@ -471,7 +397,6 @@ impl Partial {
         let k = p.envelopes.len();
         p.onset = take(head.rows[k]);
         p.periodogram = take(head.rows[k + 1]);
-        p.validate()?;
         Ok(p)
     }
 }
@@ -562,7 +487,6 @@ fn run_trial_from(
     let result = sim.finish();
     let dt = s.sim.record_interval_s;
     let mut p = Partial::empty(sc);
-    p.ranges = vec![(i, i + 1)];
     // Signal names were checked when the scenario was validated; a name that is not a signal is
     // an error here, never an empty column.
     let column =
@@ -709,49 +633,9 @@ pub fn check_study(sc: &Scenario) -> Result<(), String> {
     Ok(())
 }
 
-/// Checks a shard of the study `sc`, trials `a..b`: a < b <= monte_carlo.trials, and the study
-/// within its budgets ([`check_study`]). The error says
-/// what is needed; the caller names the range as its user gave it (`--trial-range 3..9: ...`).
-pub fn check_shard(sc: &Scenario, a: u64, b: u64) -> Result<(), String> {
-    let n = sc.monte_carlo.trials;
-    if a < b && b <= n {
-        check_study(sc)
-    } else {
-        Err(format!("need a < b <= monte_carlo.trials = {n}"))
-    }
-}
-
-/// Runs trials `a..b` one after another (the browser's way; natively the CLI spreads them over
-/// threads and merges, with the same result), after checking the shard ([`check_shard`]).
-pub fn run_range(sc: &Scenario, a: u64, b: u64) -> Result<Partial, String> {
-    check_shard(sc, a, b).map_err(|e| format!("trials {a}..{b}: {e}"))?;
-    let mut acc = Partial::empty(sc);
-    let trials = Trials::new(sc);
-    for i in a..b {
-        acc.merge(&trials.run(i)?)?;
-    }
-    Ok(acc)
-}
-
-/// A study's partials merged one at a time as they come (memory does not grow with their number;
-/// the result does not depend on their order or on how the trials were split).
-#[derive(Debug, Default)]
-pub struct Merged(Option<Partial>);
-
-impl Merged {
-    /// Merges one more partial (the first is taken as it is).
-    pub fn add(&mut self, p: Partial) -> Result<(), String> {
-        match self.0.as_mut() {
-            None => self.0 = Some(p),
-            Some(acc) => acc.merge(&p)?,
-        }
-        Ok(())
-    }
-
-    /// The merged partial; an error if none was added.
-    pub fn partial(self) -> Result<Partial, String> {
-        self.0.ok_or_else(|| "no partials given".to_string())
-    }
+/// The whole study of `sc` (its `monte_carlo` section), one trial after another, and its summary.
+pub fn run_study(sc: &Scenario) -> Result<StudySummary, String> {
+    crate::studies::study::run_all(&MonteCarlo::new(sc.clone())?)
 }
 
 /// Rice's prediction (eqs. 5.1-5.3) for the study's sea, speed and hubs (see [`RiceSummary`]).
@@ -794,7 +678,7 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
     // Each hub's moments, and the cross terms: cov(y1, y2) = sum Re(H1 H2*) S and
     // cov(y1', y2) = -sum omega_e Im(H1 H2*) S, omega_e the signed encounter frequency (the rate
     // of the component's phase in the seaway: omega - k U cos beta).
-    let (mut m0, mut m2, mut c, mut d) = ([0.0; 2], [0.0; 2], 0.0, 0.0);
+    let (mut m0, mut m2, mut c, mut d) = ([0.0; N_SHAFTS], [0.0; N_SHAFTS], 0.0, 0.0);
     for i in 0..nw {
         let w = w_lo + (i as f64 + 0.5) * dw;
         let s = crate::sea::waves::bretschneider(w, h, wn);
@@ -808,7 +692,7 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
                 k.stern_motion.hub_transfer(wave, r.heave, r.roll, r.pitch, at)
             });
             let we = w - kw * u * cos_beta;
-            for j in 0..2 {
+            for j in 0..N_SHAFTS {
                 let sy = hp[j].norm_sqr() * s * wt * dw;
                 m0[j] += sy;
                 m2[j] += sy * we * we;
@@ -823,7 +707,7 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
     let cap = sc.sim.duration_s;
     let censored = |rate: f64| (1.0 - libm::exp(-rate * cap)) / rate;
     let pair = crate::studies::stats::GaussianPair { m0, m2, c, d };
-    let per_hub: [RiceHub; 2] = std::array::from_fn(|j| {
+    let per_hub: [RiceHub; N_SHAFTS] = std::array::from_fn(|j| {
         let rate = rice_upcrossing_rate(m0[j], m2[j], z);
         RiceHub {
             shaft: ["port", "starboard"][j],
@@ -972,7 +856,7 @@ pub struct RiceSummary {
     /// The mean of min(arrival, cap) with those trials' arrivals at 0 and the others' exponential
     /// at `rate_per_s`: (1 - p0) `mean_censored_s` [s]; what the trials' `mean_censored` estimates.
     pub mean_censored_with_start_s: f64,
-    pub hubs: [RiceHub; 2],
+    pub hubs: [RiceHub; N_SHAFTS],
 }
 
 /// Rice's prediction for one hub alone: its offset to port [m], its depth spectrum's moments
@@ -1038,14 +922,8 @@ fn stat(n: u64, x: f64) -> Option<f64> {
     (n > 0).then_some(x)
 }
 
-/// The public summary of a study as JSON.
-pub fn summary(p: &Partial) -> Result<Value, String> {
-    serde_json::to_value(study_summary(p)?).map_err(|e| e.to_string())
-}
-
-/// The public summary of a study.
-pub fn study_summary(p: &Partial) -> Result<StudySummary, String> {
-    let sc = &p.scenario;
+/// The public summary of the trials `ranges` of the study `sc`.
+pub fn study_summary(sc: &Scenario, ranges: &[(u64, u64)], p: &Partial) -> Result<StudySummary, String> {
     let m = &sc.monte_carlo;
     let envelopes =
         p.envelopes.iter().map(|e| (e.signal.clone(), RowStats::of(&e.rows, p.record_interval_s))).collect();
@@ -1069,10 +947,10 @@ pub fn study_summary(p: &Partial) -> Result<StudySummary, String> {
     });
     let exposure_total = p.exposure.mean() * p.exposure.n as f64;
     Ok(StudySummary {
-        trials: p.trials(),
+        trials: crate::studies::study::count(ranges),
         trials_requested: m.trials,
         seed: sc.sim.seed,
-        ranges: p.ranges.clone(),
+        ranges: ranges.to_vec(),
         excess_energy_mj,
         arrival_time_s: ArrivalTimes {
             events,
@@ -1119,6 +997,67 @@ pub fn signal_names() -> impl Iterator<Item = &'static str> {
     crate::signals::names()
 }
 
+/// The Monte Carlo study of a scenario (its `monte_carlo` section): trial i sails the sea of
+/// `trial_seed(sim.seed, i)`.
+pub struct MonteCarlo {
+    sc: Scenario,
+}
+
+impl Study for MonteCarlo {
+    const KIND: &'static str = "monte-carlo";
+    const ITEM: &'static str = "trial";
+    type Spec = Scenario;
+    type Shared = Trials;
+    type Part = Partial;
+    type Summary = StudySummary;
+
+    fn new(sc: Scenario) -> Result<MonteCarlo, String> {
+        sc.validate().map_err(|e| format!("its scenario is not valid: {e}"))?;
+        check_study(&sc)?;
+        Ok(MonteCarlo { sc })
+    }
+    fn spec(&self) -> &Scenario {
+        &self.sc
+    }
+    fn scenario(&self) -> &Scenario {
+        &self.sc
+    }
+    fn items(&self) -> u64 {
+        self.sc.monte_carlo.trials
+    }
+    fn item_work(&self) -> Option<f64> {
+        Some(self.sc.work())
+    }
+    fn prepare(&self) -> Result<Trials, String> {
+        Ok(Trials::new(&self.sc))
+    }
+    fn run(&self, trials: &Trials, i: u64) -> Result<Partial, String> {
+        trials.run(i)
+    }
+    fn empty(&self) -> Partial {
+        Partial::empty(&self.sc)
+    }
+    fn merge(&self, acc: &mut Partial, other: &Partial) -> Result<(), String> {
+        acc.merge(other, self.sc.monte_carlo.keep_traces as usize)
+    }
+    fn check_part(&self, part: &Partial, ranges: &[(u64, u64)]) -> Result<(), String> {
+        part.validate(&self.sc, ranges)
+    }
+    fn summary(&self, part: &Partial, ranges: &[(u64, u64)]) -> Result<StudySummary, String> {
+        study_summary(&self.sc, ranges, part)
+    }
+    /// The definition is the scenario itself.
+    fn spec_from_json(text: &str) -> Result<Scenario, String> {
+        Scenario::from_json(text).map_err(|e| e.to_string())
+    }
+    fn part_to_bytes(part: &Partial) -> Result<Vec<u8>, String> {
+        part.to_bytes()
+    }
+    fn part_from_bytes(b: &[u8]) -> Result<Partial, String> {
+        Partial::from_bytes(b)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1147,13 +1086,9 @@ mod tests {
         sc.monte_carlo.envelope_signals = signal_names().take(20).map(String::from).collect();
         assert!(sc.validate().is_ok(), "{:?}", sc.validate());
         assert!(sc.to_json().len() < 11000, "{} bytes", sc.to_json().len());
-        let e = check_shard(&sc, 0, 10).unwrap_err();
+        let e = MonteCarlo::new(sc.clone()).err().unwrap();
         assert!(e.starts_with("monte_carlo: this study keeps about 833 MB (20 envelope signals x 204001 rows"), "{e}");
         assert!(e.contains("at most 64 MB: record less often (sim.record_interval_s = 0.005)"), "{e}");
-        assert!(run_range(&sc, 0, 1).unwrap_err().contains("this study keeps about"));
-        let mut p = Partial::empty(&sc);
-        p.ranges = vec![(0, 1)];
-        assert!(p.validate().unwrap_err().contains("this study keeps about"));
         let mut long = Scenario::default();
         long.sim.duration_s = 1000.0;
         long.monte_carlo.trials = 10_000_000;
@@ -1163,16 +1098,19 @@ mod tests {
 
     #[test]
     fn shards_are_checked_and_merged() {
+        use crate::studies::study::{check_range, run_range, Merger};
         let mut sc = Scenario::default();
         sc.monte_carlo.trials = 4;
-        assert!(check_shard(&sc, 0, 4).is_ok() && check_shard(&sc, 3, 4).is_ok());
+        let mc = MonteCarlo::new(sc.clone()).unwrap();
+        assert!(check_range(&mc, 0, 4).is_ok() && check_range(&mc, 3, 4).is_ok());
         for (a, b) in [(2, 2), (3, 1), (0, 5)] {
-            assert_eq!(check_shard(&sc, a, b).unwrap_err(), "need a < b <= monte_carlo.trials = 4");
+            assert_eq!(check_range(&mc, a, b).unwrap_err(), "need a < b <= the study's 4 trials");
         }
-        assert!(run_range(&sc, 3, 9).unwrap_err().starts_with("trials 3..9: need a < b"));
-        assert_eq!(Merged::default().partial().unwrap_err(), "no partials given");
-        let mut m = Merged::default();
-        m.add(Partial::empty(&sc)).unwrap();
-        assert_eq!(m.partial().unwrap(), Partial::empty(&sc));
+        assert!(run_range(&mc, 3, 9).unwrap_err().starts_with("trials 3..9: need a < b"));
+        assert_eq!(Merger::new(MonteCarlo::new(sc.clone()).unwrap()).finish().err().unwrap(), "no shards given");
+        let mut m = Merger::new(MonteCarlo::new(sc.clone()).unwrap());
+        let empty = crate::studies::study::shard(&mc, vec![], Partial::empty(&sc));
+        m.add(empty.clone()).unwrap();
+        assert_eq!(m.finish().unwrap().1, empty);
     }
 }

@@ -24,6 +24,7 @@ use crate::scenario::Scenario;
 use crate::signals::Signal;
 use crate::sim::RunResult;
 use crate::studies::stats::trial_seed;
+use crate::studies::study::Study;
 use serde::{Deserialize, Serialize};
 
 /// The pilot run's speed is averaged over this long before the event [s].
@@ -126,40 +127,6 @@ pub struct TrialRecord {
     pub ship_speed_kn: f64,
     /// The consequences in the order of [`CONSEQUENCES`].
     pub values: [f64; 5],
-}
-
-/// Trials of a study (a shard's, or merged), in trial order, with the key of the scenario they
-/// ran ([`study_key`]): shards of other studies do not merge.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-pub struct RarePartial {
-    #[serde(default)]
-    pub study: String,
-    pub trials: Vec<TrialRecord>,
-}
-
-/// The key of a study: a 64-bit FNV-1a hash of the trial scenario's JSON (its seed, level,
-/// shaft, sea, ship and the ship's place at the event), in hex.
-pub fn study_key(trial_sc: &Scenario) -> String {
-    let h =
-        trial_sc.to_json().bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| (h ^ b as u64).wrapping_mul(0x0100_0000_01b3));
-    format!("{h:016x}")
-}
-
-impl RarePartial {
-    /// Merges another shard's trials (none may repeat; the same study).
-    pub fn merge(&mut self, other: RarePartial) -> Result<(), String> {
-        if self.trials.is_empty() && self.study.is_empty() {
-            self.study = other.study.clone();
-        } else if other.study != self.study {
-            return Err(format!("a shard of another study (key {} against {})", other.study, self.study));
-        }
-        self.trials.extend(other.trials);
-        self.trials.sort_by_key(|t| t.trial);
-        if let Some(w) = self.trials.windows(2).find(|w| w[0].trial == w[1].trial) {
-            return Err(format!("trial {} is in two shards", w[0].trial));
-        }
-        Ok(())
-    }
 }
 
 /// Checks a study before it runs: the conditioning is on, the sea random, the trials in range.
@@ -285,11 +252,135 @@ pub fn place_ship(s: &mut Scenario, passes: usize) -> Result<(), String> {
     Ok(())
 }
 
-/// Runs trials `a..b` one after another.
-pub fn run_range(sc: &Scenario, a: u64, b: u64) -> Result<RarePartial, String> {
-    check_study(sc, b.max(1))?;
-    let t = Trials::new(sc)?;
-    Ok(RarePartial { study: study_key(&t.sc), trials: (a..b).map(|i| t.run(i)).collect::<Result<_, _>>()? })
+/// The definition of a rare-event study: the scenario every trial runs ([`trial_scenario`]: the
+/// ship placed at the event), the number of trials, and the thresholds of consequences whose
+/// rates the summary gives (consequence name -> thresholds; not part of the study's key, so the
+/// same trials can be summarised with other thresholds).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RareSpec {
+    pub scenario: Scenario,
+    pub trials: u64,
+    #[serde(default)]
+    pub thresholds: std::collections::BTreeMap<String, Vec<f64>>,
+}
+
+/// Most thresholds of one consequence.
+pub const MAX_THRESHOLDS: usize = 20;
+
+impl RareSpec {
+    /// The study of `sc` (its `rare_event` section) with `trials` trials: places the ship at the
+    /// event ([`trial_scenario`], a run to it unless the scenario says where it is).
+    pub fn new(sc: &Scenario, trials: u64) -> Result<RareSpec, String> {
+        check_study(sc, trials)?;
+        Ok(RareSpec { scenario: trial_scenario(sc)?, trials, thresholds: Default::default() })
+    }
+
+    /// The thresholds in the order of [`CONSEQUENCES`]; an error names an unknown consequence.
+    pub fn thresholds(&self) -> Result<[Vec<f64>; 5], String> {
+        let mut th: [Vec<f64>; 5] = Default::default();
+        for (name, v) in &self.thresholds {
+            let k = CONSEQUENCES.iter().position(|c| c.name == name).ok_or_else(|| {
+                format!(
+                    "thresholds: no consequence named '{}' (one of {})",
+                    crate::checks::shorten(name),
+                    CONSEQUENCES.iter().map(|c| c.name).collect::<Vec<_>>().join(", ")
+                )
+            })?;
+            if v.iter().any(|x| !x.is_finite()) || v.len() > MAX_THRESHOLDS {
+                return Err(format!("thresholds.{name}: at most {MAX_THRESHOLDS} finite numbers"));
+            }
+            th[k] = v.clone();
+        }
+        Ok(th)
+    }
+}
+
+/// A rare-event study on the shared pipeline: trial i is the sea of `trial_seed(sim.seed, i)`
+/// conditioned on the event; a part is the trials' records in trial order.
+pub struct RareEvents {
+    spec: RareSpec,
+    thresholds: [Vec<f64>; 5],
+}
+
+impl Study for RareEvents {
+    const KIND: &'static str = "rare-events";
+    const ITEM: &'static str = "trial";
+    type Spec = RareSpec;
+    type Shared = Trials;
+    type Part = Vec<TrialRecord>;
+    type Summary = RareSummary;
+
+    fn new(spec: RareSpec) -> Result<RareEvents, String> {
+        spec.scenario.validate().map_err(|e| format!("its scenario is not valid: {e}"))?;
+        check_study(&spec.scenario, spec.trials)?;
+        let ev = &spec.scenario.rare_event;
+        if ev.ship_x_m == 0.0 || ev.ship_speed_kn == 0.0 {
+            return Err("rare_event.ship_x_m, ship_speed_kn: the ship's place at the event is not set (the study's \
+                        scenario is the one every trial runs, from rare::trial_scenario)"
+                .into());
+        }
+        let thresholds = spec.thresholds()?;
+        Ok(RareEvents { spec, thresholds })
+    }
+    fn spec(&self) -> &RareSpec {
+        &self.spec
+    }
+    fn scenario(&self) -> &Scenario {
+        &self.spec.scenario
+    }
+    fn items(&self) -> u64 {
+        self.spec.trials
+    }
+    fn item_work(&self) -> Option<f64> {
+        Some(self.spec.scenario.work())
+    }
+    /// The key leaves out the thresholds: they only read the trials.
+    fn key_of_spec(s: &RareSpec) -> String {
+        crate::studies::study::key_of(&format!("{} {}", s.trials, s.scenario.to_json()))
+    }
+    fn prepare(&self) -> Result<Trials, String> {
+        Ok(Trials { sc: self.spec.scenario.clone() })
+    }
+    fn run(&self, trials: &Trials, i: u64) -> Result<Vec<TrialRecord>, String> {
+        Ok(vec![trials.run(i)?])
+    }
+    fn empty(&self) -> Vec<TrialRecord> {
+        Vec::new()
+    }
+    fn merge(&self, acc: &mut Vec<TrialRecord>, other: &Vec<TrialRecord>) -> Result<(), String> {
+        crate::studies::study::merge_records(acc, other, |t| t.trial, "trial")
+    }
+    /// One record for each trial of the ranges, in order, with that trial's seed and finite
+    /// numbers.
+    fn check_part(&self, part: &Vec<TrialRecord>, ranges: &[(u64, u64)]) -> Result<(), String> {
+        let seed = self.spec.scenario.sim.seed;
+        for (t, i) in crate::studies::study::records_of(part, ranges, |t| t.trial, "trial")? {
+            if t.seed != trial_seed(seed, i) {
+                return Err(format!("trials: trial {i}: seed {}, not the trial's own", t.seed));
+            }
+            let finite = [
+                t.crossing_rate_per_s,
+                t.h_over_r_at_event,
+                t.ship_x_m,
+                t.ship_y_m,
+                t.ship_heading_deg,
+                t.ship_speed_kn,
+            ]
+            .iter()
+            .chain(&t.values)
+            .all(|x| x.is_finite());
+            if !finite || t.crossing_rate_per_s <= 0.0 || t.ship_speed_kn <= 0.0 {
+                return Err(format!(
+                    "trials: trial {i}: numbers a trial cannot give (weights and speeds positive, all finite)"
+                ));
+            }
+        }
+        Ok(())
+    }
+    fn summary(&self, part: &Vec<TrialRecord>, _ranges: &[(u64, u64)]) -> Result<RareSummary, String> {
+        summary(&self.spec.scenario, part, &self.thresholds)
+    }
 }
 
 /// A rate per hour with its 95 % interval.
@@ -430,8 +521,8 @@ fn quantile(sorted: &[(f64, f64)], q: f64) -> f64 {
 }
 
 /// The summary of a study's trials; `thresholds[k]` are consequence k's thresholds.
-pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Result<RareSummary, String> {
-    if p.trials.is_empty() {
+pub fn summary(sc: &Scenario, trials: &[TrialRecord], thresholds: &[Vec<f64>; 5]) -> Result<RareSummary, String> {
+    if trials.is_empty() {
         return Err("no trials".into());
     }
     let ev = &sc.rare_event;
@@ -445,20 +536,20 @@ pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Re
     let radius = 0.5 * sc.propeller.diameter_m;
     let level = ev.level_h_over_r * radius - hull.hub_depth_m;
     let rice = crate::studies::stats::rice_upcrossing_rate(hub[0], hub[1], level) * 3600.0;
-    let nu: Vec<f64> = p.trials.iter().map(|t| t.crossing_rate_per_s).collect();
+    let nu: Vec<f64> = trials.iter().map(|t| t.crossing_rate_per_s).collect();
     let mean_nu = nu.iter().sum::<f64>() / nu.len() as f64;
     let consequences = CONSEQUENCES
         .iter()
         .enumerate()
         .map(|(k, c)| {
-            let mut pairs: Vec<(f64, f64)> = p.trials.iter().map(|t| (t.values[k], t.crossing_rate_per_s)).collect();
+            let mut pairs: Vec<(f64, f64)> = trials.iter().map(|t| (t.values[k], t.crossing_rate_per_s)).collect();
             pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
             let beyond = thresholds[k]
                 .iter()
                 .map(|&th| {
                     let past = |v: f64| if c.larger_is_worse { v > th } else { v < th };
                     let x: Vec<f64> =
-                        p.trials.iter().map(|t| if past(t.values[k]) { t.crossing_rate_per_s } else { 0.0 }).collect();
+                        trials.iter().map(|t| if past(t.values[k]) { t.crossing_rate_per_s } else { 0.0 }).collect();
                     Beyond {
                         threshold: th,
                         trials: x.iter().filter(|&&v| v > 0.0).count(),
@@ -476,7 +567,7 @@ pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Re
                 min: pairs[0].0,
                 max: pairs[pairs.len() - 1].0,
                 beyond,
-                values: p.trials.iter().map(|t| t.values[k]).collect(),
+                values: trials.iter().map(|t| t.values[k]).collect(),
             }
         })
         .collect();
@@ -484,7 +575,7 @@ pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Re
         .iter()
         .enumerate()
         .flat_map(|(k, c)| {
-            let mut t: Vec<&TrialRecord> = p.trials.iter().collect();
+            let mut t: Vec<&TrialRecord> = trials.iter().collect();
             t.sort_by(|a, b| {
                 let o = a.values[k].total_cmp(&b.values[k]);
                 if c.larger_is_worse {
@@ -508,7 +599,7 @@ pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Re
             })
         })
         .collect();
-    let hr: Vec<f64> = p.trials.iter().map(|t| t.h_over_r_at_event).collect();
+    let hr: Vec<f64> = trials.iter().map(|t| t.h_over_r_at_event).collect();
     Ok(RareSummary {
         scenario: sc.name.clone(),
         event: format!(
@@ -528,8 +619,8 @@ pub fn summary(sc: &Scenario, p: &RarePartial, thresholds: &[Vec<f64>; 5]) -> Re
         hub_depth_m: hull.hub_depth_m,
         speed_kn,
         wave_heading_deg: heading,
-        trials: p.trials.len(),
-        simulated_s: p.trials.len() as f64 * (ev.time_s * (1 + CORRECTIONS) as f64 + ev.window_s),
+        trials: trials.len(),
+        simulated_s: trials.len() as f64 * (ev.time_s * (1 + CORRECTIONS) as f64 + ev.window_s),
         rate: Rate::mean_of(&nu),
         rice_per_hour: rice,
         hub_sigma_m: hub[0].sqrt(),
@@ -657,6 +748,12 @@ mod tests {
         sc
     }
 
+    /// Trials 0..n of the study of `sc`, run one after another.
+    fn trials_of(sc: &Scenario, n: u64) -> Vec<TrialRecord> {
+        let study = RareEvents::new(RareSpec::new(sc, n).unwrap()).unwrap();
+        crate::studies::study::run_range(&study, 0, n).unwrap().part
+    }
+
     /// The conditioned sea puts the hub at the level, falling, at the event's time: in the seaway
     /// itself (the ship on the track it was conditioned on) to rounding (measured 1e-13 m, asserted
     /// 1e-9 m) with the rate imposed; in full runs, where the ship's own track moves it a little,
@@ -724,8 +821,8 @@ mod tests {
             }
         }
         // Full runs.
-        let p = run_range(&study(4.5), 0, 20).unwrap();
-        let h: Vec<f64> = p.trials.iter().map(|t| t.h_over_r_at_event).collect();
+        let p = trials_of(&study(4.5), 20);
+        let h: Vec<f64> = p.iter().map(|t| t.h_over_r_at_event).collect();
         let mean = h.iter().sum::<f64>() / h.len() as f64;
         let worst = h.iter().map(|x| (x - 1.1).abs()).fold(0.0, f64::max);
         println!("h/R at the event: mean {mean:.4}, worst departure {worst:.3}");
@@ -743,7 +840,7 @@ mod tests {
     #[test]
     fn conditioned_rates_agree_with_brute_force() {
         let sc = study(4.5);
-        let p = run_range(&sc, 0, 160).unwrap();
+        let p = trials_of(&sc, 160);
         let ts = trial_scenario(&sc).unwrap();
         let th: [Vec<f64>; 5] = [vec![], vec![], vec![], vec![9.5], vec![]];
         let c = summary(&ts, &p, &th).unwrap();

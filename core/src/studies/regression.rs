@@ -7,7 +7,7 @@
 //! four-trial study shortened to 20 s.
 
 use crate::scenario::presets::preset;
-use crate::studies::montecarlo::{run_range, summary};
+use crate::studies::montecarlo::run_study;
 
 /// FNV-1a over the bits of every value of a column: equal only if every recorded number is
 /// identical.
@@ -44,8 +44,9 @@ pub fn record(name: &str) -> Result<String, String> {
         m.sim.duration_s = 20.0;
         m.monte_carlo.histogram_time_s = 10.0;
         m.monte_carlo.periodogram_segment_s = 5.0;
-        let p = run_range(&m, 0, 4).map_err(|e| format!("{name} Monte Carlo: {e}"))?;
-        v["monte_carlo_4_trials_20s"] = summary(&p).map_err(|e| format!("{name} Monte Carlo summary: {e}"))?;
+        let s = run_study(&m).map_err(|e| format!("{name} Monte Carlo: {e}"))?;
+        v["monte_carlo_4_trials_20s"] =
+            serde_json::to_value(s).map_err(|e| format!("{name} Monte Carlo summary: {e}"))?;
     }
     let mut s = serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?;
     s.push('\n');

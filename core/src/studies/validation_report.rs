@@ -8,7 +8,7 @@ use crate::output::svg_plot::{check_well_formed, svg, Panel, Plot, Series};
 use crate::scenario::presets::preset;
 use crate::scenario::{Scenario, SternMotion};
 use crate::studies::ips::{generator_side::GeneratorSideParams, motor_side::MotorSideParams};
-use crate::studies::montecarlo::{run_range, study_summary};
+use crate::studies::montecarlo::run_study;
 use crate::studies::thesis_values;
 use serde::Serialize;
 
@@ -1436,7 +1436,7 @@ fn braking_figure(brk: &crate::RunResult, order: f64, t10: f64) -> Result<Figure
 fn mc(sc: &Scenario, trials: u64) -> Result<crate::studies::montecarlo::StudySummary, String> {
     let mut sc = sc.clone();
     sc.monte_carlo.trials = trials;
-    study_summary(&run_range(&sc, 0, trials)?)
+    run_study(&sc)
 }
 
 /// The arrival-time histogram as a density over all `trials` (censored trials count in no bin).

@@ -20,6 +20,7 @@
 
 pub mod response;
 pub mod scatter;
+pub mod study;
 
 use crate::numerics::units::{kn_to_m_s, KNOT_M_S};
 use crate::scenario::Scenario;
@@ -152,7 +153,7 @@ impl PolarSpec {
 /// A polar asked for in JSON (the page's worker): each list left out takes the default
 /// ([`PolarSpec::default`]); `seas` as [H_1/3 m, T_p s] pairs replaces the sea states; the scatter
 /// diagram's CSV text, "none", or left out for the IACS Rec. 34 North Atlantic.
-#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct PolarRequest {
     pub speeds_kn: Option<Vec<f64>>,
@@ -160,6 +161,10 @@ pub struct PolarRequest {
     pub sea_states: Option<Vec<u32>>,
     pub seas: Option<Vec<[f64; 2]>>,
     pub scatter_csv: Option<String>,
+    /// The scatter diagram's name in the result (default "scatter diagram"; the command line
+    /// gives its file's path).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scatter_name: Option<String>,
 }
 
 impl PolarRequest {
@@ -193,7 +198,8 @@ impl PolarRequest {
             None => Some(scatter::Scatter::north_atlantic()),
             Some("none") => None,
             Some(text) => {
-                Some(scatter::Scatter::parse(text, "scatter diagram").map_err(|e| format!("scatter_csv: {e}"))?)
+                let name = self.scatter_name.as_deref().unwrap_or("scatter diagram");
+                Some(scatter::Scatter::parse(text, name).map_err(|e| format!("scatter_csv: {e}"))?)
             }
         };
         Ok((spec, scatter))

@@ -17,6 +17,7 @@
 use crate::sea::seakeeping::params::{HubPlace, SternMotion};
 use crate::sea::seakeeping::tables::RaoTable;
 use crate::sea::waves::{bretschneider, G};
+use crate::ship::hull::N_SHAFTS;
 use num_complex::Complex64 as C;
 use std::collections::HashMap;
 use std::f64::consts::PI;
@@ -30,7 +31,7 @@ pub const PITCH: usize = 1;
 pub const ROLL: usize = 2;
 pub const BOW: usize = 3;
 pub const SLAM: usize = 4;
-pub const HUB: [usize; 2] = [5, 6];
+pub const HUB: [usize; N_SHAFTS] = [5, 6];
 const FIXED: usize = 7;
 
 /// Channel of point p's vertical displacement.
@@ -50,7 +51,7 @@ pub struct Places {
     /// The forward perpendicular and the slamming station, on the centreline: x [m].
     pub fp_x: f64,
     pub slam_x: f64,
-    pub hubs: [HubPlace; 2],
+    pub hubs: [HubPlace; N_SHAFTS],
     pub stern_motion: SternMotion,
 }
 
