@@ -142,7 +142,7 @@ def main():
     chain = " <- ".join("{" + ", ".join(mods) + "}" for mods, _ in LAYERS)
     print(f"core's layers hold (no module imports a layer above its own): {chain}")
     for (a, b), why in LEAVING.items():
-        print(f"  known until it leaves: {a} -> {b} ({why})")
+        print(f"  known until it leaves: {a} -> {b}: {why}")
 
 
 if __name__ == "__main__":
