@@ -61,8 +61,6 @@ class Scan:
         text = re.sub(r"//[^\n]*", "", f.read_text())
         text = re.sub(r"#\[cfg\(test\)\]\s*mod tests \{.*", "", text, flags=re.S)
         is_folder = self.is_folder[name]
-        parent = name if is_folder else "::".join(name.split("::")[:-1])
-        grand = "::".join(parent.split("::")[:-1]) if parent else ""
         paths = []  # (position in text, path from the crate root)
         for m in re.finditer(r"(?:\$?crate)::((?:\w+::)*\w+)", text):
             paths.append((m.start(), m.group(1)))
@@ -70,13 +68,17 @@ class Scan:
             out = []
             use_tree(m.group(1).rstrip(":"), braced(text, m.end()), out)
             paths += [(m.start(), p.lstrip(":")) for p in out]
-        # super:: is the parent of a file's module (a folder's mod.rs: the folder's parent).
-        base = grand if is_folder else parent
-        for m in re.finditer(r"\bsuper::((?:\w+::)*\w+)", text):
-            paths.append((m.start(), (base + "::" if base else "") + m.group(1)))
-        for m in re.finditer(r"use super::\{", text):
+        # super:: is the parent of a file's module (a folder's mod.rs: the folder's parent), and
+        # each further super:: one folder up.
+        def up(supers):
+            return "::".join(name.split("::")[:-supers.count("super")])
+
+        for m in re.finditer(r"\b((?:super::)+)((?:\w+::)*\w+)", text):
+            base = up(m.group(1))
+            paths.append((m.start(), (base + "::" if base else "") + m.group(2)))
+        for m in re.finditer(r"use ((?:super::)+)\{", text):
             out = []
-            use_tree(base, braced(text, m.end()), out)
+            use_tree(up(m.group(1)), braced(text, m.end()), out)
             paths += [(m.start(), p.lstrip(":")) for p in out]
         if is_folder:
             # A folder's own children named without `crate::` (`use plant::NX;`, `plant::run(..)`).
