@@ -34,9 +34,14 @@ class Scan:
         for name, f in self.modules.items():
             for m in re.finditer(r"#\[macro_export\]\s*macro_rules!\s*(\w+)", f.read_text()):
                 self.macro_home[m.group(1)] = name
+        # What lib.rs re-exports (`pub use sim::{run, ..};`): `crate::run` names `sim`.
         lib = self.src / "lib.rs"
-        for m in re.finditer(r"pub use ([\w:]+)::(\w+);", lib.read_text() if lib.exists() else ""):
-            self.macro_home[m.group(2)] = m.group(1)
+        for m in re.finditer(r"pub use ([^;]+);", re.sub(r"//[^\n]*", "", lib.read_text() if lib.exists() else "")):
+            out = []
+            use_tree("", m.group(1), out)
+            for p in out:
+                home, _, item = p.strip(":").rpartition("::")
+                self.macro_home[item] = home
         # edges[X] = the modules X imports; sites[X] = (Y, line, path as written) for each.
         self.edges = {m: set() for m in self.modules}
         self.sites = {m: [] for m in self.modules}
@@ -44,7 +49,7 @@ class Scan:
             self._scan(name)
 
     def resolve(self, path):
-        """The longest module that a `::` path names, or None."""
+        """The longest module that a `::` path names (or the home of what lib.rs re-exports), or None."""
         segs = path.split("::")
         if len(segs) == 1 and segs[0] in self.macro_home:
             return self.macro_home[segs[0]]
@@ -52,7 +57,8 @@ class Scan:
             cand = "::".join(segs[:n])
             if cand in self.modules:
                 return cand
-        return None
+        # `crate::Scenario::default()`: an item lib.rs re-exports, and a path inside it.
+        return self.macro_home.get(segs[0])
 
     def _scan(self, name):
         f = self.modules[name]
