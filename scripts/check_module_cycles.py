@@ -3,9 +3,10 @@
 
 Every file is a module (`plant/motor.rs` is `plant::motor`, `sim/mod.rs` is `sim`). An edge X -> Y
 is a path that names Y from X: `crate::a::b` (resolved to the longest module it names), a
-`use crate::{...}` tree, `super::` paths, a folder's `child::` paths, and a `crate::params!`-style
-macro defined in Y. Test modules may look up, and a file may use its own folders' mod.rs (the hub
-that declares it). The modules must form an acyclic order; prints it, or the cycle.
+`use crate::{...}` tree, `super::` paths (`super::super::` goes two folders up), a folder's
+`child::` paths, a `crate::params!`-style macro defined in Y, and an item lib.rs re-exports from Y
+(`crate::run`). Test modules (`#[cfg(test)] mod`) may look up, and a file may use its own folders'
+mod.rs (the hub that declares it). The modules must form an acyclic order; prints it, or the cycle.
 
 `scan` is shared with `check_module_layers.py`, which holds the folders to their layers.
 """
@@ -62,10 +63,13 @@ class Scan:
 
     def _scan(self, name):
         f = self.modules[name]
-        # Comments go (line breaks stay, so positions keep their line numbers), and so does the
-        # test module: tests may look up.
+        # Comments go, and so do test modules (tests may look up); line breaks stay, so positions
+        # keep their line numbers.
         text = re.sub(r"//[^\n]*", "", f.read_text())
-        text = re.sub(r"#\[cfg\(test\)\]\s*mod tests \{.*", "", text, flags=re.S)
+        for m in reversed(list(re.finditer(r"#\[cfg\(test\)\]\s*mod \w+ \{", text))):
+            body = braced(text, m.end())
+            end = m.end() + len(body) + 1
+            text = text[:m.start()] + "\n" * text.count("\n", m.start(), end) + text[end:]
         is_folder = self.is_folder[name]
         paths = []  # (position in text, path from the crate root)
         for m in re.finditer(r"(?:\$?crate)::((?:\w+::)*\w+)", text):

@@ -94,9 +94,9 @@ def contributing_problems(repo):
 
 
 def self_test():
-    """A fake core with four upward imports (a path in code, a use tree, super::super::, what lib.rs
-    re-exports) and two allowed ones (a test module, a lower layer), a module with no layer, and a
-    stale exception."""
+    """A fake core with five upward imports (a path in code, a use tree, super::super::, what lib.rs
+    re-exports, code after the test module) and two allowed ones (a test module, a lower layer), a
+    module with no layer, and a stale exception."""
     files = {
         "lib.rs": "pub mod params;\npub mod plant;\npub mod sim;\npub mod stray;\npub use sim::{run};\n",
         "params.rs": "pub struct P;\n",
@@ -104,7 +104,8 @@ def self_test():
         "plant/motor.rs": "use crate::params::P;\n\npub fn f() {\n    crate::sim::run();\n}\n"
                           "use crate::{params, sim::{run as go}};\nfn g() {\n    super::super::sim::run();\n}\n"
                           "fn h() {\n    crate::run();\n}\n"
-                          "#[cfg(test)]\nmod tests {\n    use crate::sim::run;\n}\n",
+                          "#[cfg(test)]\nmod tests {\n    use crate::sim::run;\n}\n"
+                          "fn k() {\n    crate::sim::run();\n}\n",
         "sim/mod.rs": "use crate::plant::motor;\npub fn run() {}\n",
         "stray.rs": "",
     }
@@ -121,6 +122,7 @@ def self_test():
         "core/src/plant/motor.rs:6: plant::motor (layer 1) imports sim (layer 2) by `sim::run`: use crate::{params, sim::{run as go}};",
         "core/src/plant/motor.rs:8: plant::motor (layer 1) imports sim (layer 2) by `sim::run`: super::super::sim::run();",
         "core/src/plant/motor.rs:11: plant::motor (layer 1) imports sim (layer 2) by `run`: crate::run();",
+        "core/src/plant/motor.rs:18: plant::motor (layer 1) imports sim (layer 2) by `sim::run`: crate::sim::run();",
         "LEAVING lists sim -> params, which no longer occurs",
     ]
     ok = len(got) == len(want) and all(g.startswith(w) for g, w in zip(got, want))
@@ -129,7 +131,7 @@ def self_test():
     if not ok:
         print("layer check self-test FAILED: expected, in order:\n  " + "\n  ".join(want), file=sys.stderr)
         sys.exit(1)
-    print("layer check self-test: the fake tree's four upward imports, its module with no layer and its stale "
+    print("layer check self-test: the fake tree's five upward imports, its module with no layer and its stale "
           "exception are refused; its test module's and its downward imports are not")
 
 
