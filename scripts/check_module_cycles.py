@@ -8,7 +8,7 @@ is a path that names Y from X: `crate::a::b` (resolved to the longest module it 
 (`crate::run`). Test modules (`#[cfg(test)] mod`) may look up, and a file may use its own folders'
 mod.rs (the hub that declares it). The modules must form an acyclic order; prints it, or the cycle.
 
-`scan` is shared with `check_module_layers.py`, which holds the folders to their layers.
+`Scan` is shared with `check_module_layers.py`, which holds the folders to their layers.
 """
 import pathlib
 import re
