@@ -114,6 +114,9 @@ run_tests() {
   cargo fmt --all -- --check
   say "no import cycle between core's modules"
   python3 scripts/check_module_cycles.py
+  say "no module of core imports a higher layer (and the check refuses a fake upward import)"
+  python3 scripts/check_module_layers.py --self-test
+  python3 scripts/check_module_layers.py
   say "clippy (warnings are errors)"
   cargo clippy --workspace --all-targets --release -- -D warnings
   say "native tests (release)"

@@ -3,45 +3,116 @@
 
 Every file is a module (`plant/motor.rs` is `plant::motor`, `sim/mod.rs` is `sim`). An edge X -> Y
 is a path that names Y from X: `crate::a::b` (resolved to the longest module it names), a
-`use crate::{...}` tree, `super::` paths, a folder's `child::` paths, and a `crate::params!`-style
-macro defined in Y. Test modules may look up, and a file may use its own folders' mod.rs (the hub
-that declares it). The modules must form an acyclic order; prints it, or the cycle.
+`use crate::{...}` tree, `super::` paths (`super::super::` goes two folders up), a folder's
+`child::` paths, a `crate::params!`-style macro defined in Y, and an item lib.rs re-exports from Y
+(`crate::run`). Test modules (`#[cfg(test)] mod`) may look up, and a file may use its own folders'
+mod.rs (the hub that declares it). The modules must form an acyclic order; prints it, or the cycle.
+
+`Scan` is shared with `check_module_layers.py`, which holds the folders to their layers.
 """
 import pathlib
 import re
 import sys
 
-src = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parent.parent) / "core" / "src"
-modules = {}
-for p in sorted(src.rglob("*.rs")):
-    rel = p.relative_to(src)
-    if str(rel) == "lib.rs":
-        continue
-    parts = list(rel.parts)
-    parts[-1] = parts[-1][:-3]
-    if parts[-1] == "mod":
-        parts.pop()
-    modules["::".join(parts)] = p
-is_folder = {m: p.name == "mod.rs" for m, p in modules.items()}
 
-macro_home = {}
-for name, f in modules.items():
-    for m in re.finditer(r"#\[macro_export\]\s*macro_rules!\s*(\w+)", f.read_text()):
-        macro_home[m.group(1)] = name
-for m in re.finditer(r"pub use ([\w:]+)::(\w+);", (src / "lib.rs").read_text()):
-    macro_home[m.group(2)] = m.group(1)
+class Scan:
+    """Core's modules, their files and every import between them, with where it is written."""
+
+    def __init__(self, src):
+        self.src = pathlib.Path(src)
+        self.modules = {}
+        for p in sorted(self.src.rglob("*.rs")):
+            rel = p.relative_to(self.src)
+            if str(rel) == "lib.rs":
+                continue
+            parts = list(rel.parts)
+            parts[-1] = parts[-1][:-3]
+            if parts[-1] == "mod":
+                parts.pop()
+            self.modules["::".join(parts)] = p
+        self.is_folder = {m: p.name == "mod.rs" for m, p in self.modules.items()}
+        self.macro_home = {}
+        for name, f in self.modules.items():
+            for m in re.finditer(r"#\[macro_export\]\s*macro_rules!\s*(\w+)", f.read_text()):
+                self.macro_home[m.group(1)] = name
+        # What lib.rs re-exports (`pub use sim::{run, ..};`): `crate::run` names `sim`.
+        lib = self.src / "lib.rs"
+        for m in re.finditer(r"pub use ([^;]+);", re.sub(r"//[^\n]*", "", lib.read_text() if lib.exists() else "")):
+            out = []
+            use_tree("", m.group(1), out)
+            for p in out:
+                home, _, item = p.strip(":").rpartition("::")
+                self.macro_home[item] = home
+        # edges[X] = the modules X imports; sites[X] = (Y, line, path as written) for each.
+        self.edges = {m: set() for m in self.modules}
+        self.sites = {m: [] for m in self.modules}
+        for name in self.modules:
+            self._scan(name)
+
+    def resolve(self, path):
+        """The longest module that a `::` path names (or the home of what lib.rs re-exports), or None."""
+        segs = path.split("::")
+        if len(segs) == 1 and segs[0] in self.macro_home:
+            return self.macro_home[segs[0]]
+        for n in range(len(segs), 0, -1):
+            cand = "::".join(segs[:n])
+            if cand in self.modules:
+                return cand
+        # `crate::Scenario::default()`: an item lib.rs re-exports, and a path inside it.
+        return self.macro_home.get(segs[0])
+
+    def _scan(self, name):
+        f = self.modules[name]
+        # Comments go, and so do test modules (tests may look up); line breaks stay, so positions
+        # keep their line numbers.
+        text = re.sub(r"//[^\n]*", "", f.read_text())
+        for m in reversed(list(re.finditer(r"#\[cfg\(test\)\]\s*mod \w+ \{", text))):
+            body = braced(text, m.end())
+            end = m.end() + len(body) + 1
+            text = text[:m.start()] + "\n" * text.count("\n", m.start(), end) + text[end:]
+        is_folder = self.is_folder[name]
+        paths = []  # (position in text, path from the crate root)
+        for m in re.finditer(r"(?:\$?crate)::((?:\w+::)*\w+)", text):
+            paths.append((m.start(), m.group(1)))
+        for m in re.finditer(r"use (?:\$?crate)::((?:\w+::)*)\{", text):
+            out = []
+            use_tree(m.group(1).rstrip(":"), braced(text, m.end()), out)
+            paths += [(m.start(), p.lstrip(":")) for p in out]
+        # super:: is the parent of a file's module (a folder's mod.rs: the folder's parent), and
+        # each further super:: one folder up.
+        def up(supers):
+            return "::".join(name.split("::")[:-supers.count("super")])
+
+        for m in re.finditer(r"\b((?:super::)+)((?:\w+::)*\w+)", text):
+            base = up(m.group(1))
+            paths.append((m.start(), (base + "::" if base else "") + m.group(2)))
+        for m in re.finditer(r"use ((?:super::)+)\{", text):
+            out = []
+            use_tree(up(m.group(1)), braced(text, m.end()), out)
+            paths += [(m.start(), p.lstrip(":")) for p in out]
+        if is_folder:
+            # A folder's own children named without `crate::` (`use plant::NX;`, `plant::run(..)`).
+            depth = name.count("::") + 1
+            for child in [m for m in self.modules if m.startswith(name + "::") and m.count("::") == depth]:
+                short = child.split("::")[-1]
+                m = re.search(r"(?<![\w:])" + short + r"::", text)
+                if m:
+                    paths.append((m.start(), child))
+        for pos, p in paths:
+            target = self.resolve(p)
+            # A folder's mod.rs is the hub of its files: a file may use what its folders declare.
+            if target and target != name and not name.startswith(target + "::"):
+                self.edges[name].add(target)
+                self.sites[name].append((target, text.count("\n", 0, pos) + 1, p))
 
 
-def resolve(path):
-    """The longest module that a `::` path names, or None."""
-    segs = path.split("::")
-    if len(segs) == 1 and segs[0] in macro_home:
-        return macro_home[segs[0]]
-    for n in range(len(segs), 0, -1):
-        cand = "::".join(segs[:n])
-        if cand in modules:
-            return cand
-    return None
+def braced(text, start):
+    """The text from `start` to the brace that closes the one just before it."""
+    depth, i = 1, start
+    while i < len(text) and depth:
+        depth += {"{": 1, "}": -1}.get(text[i], 0)
+        i += 1
+    return text[start:i - 1]
 
 
 def use_tree(prefix, body, out):
@@ -69,68 +140,35 @@ def use_tree(prefix, body, out):
             out.append(prefix + "::" + re.sub(r"as\w+$", "", it))
 
 
-edges = {m: set() for m in modules}
-for name, f in modules.items():
-    text = re.sub(r"//[^\n]*", "", f.read_text())
-    text = re.sub(r"#\[cfg\(test\)\]\s*mod tests \{.*", "", text, flags=re.S)
-    parent = name if is_folder[name] else "::".join(name.split("::")[:-1])
-    grand = "::".join(parent.split("::")[:-1]) if parent else ""
-    paths = []
-    for m in re.finditer(r"(?:\$?crate)::((?:\w+::)*\w+)", text):
-        paths.append(m.group(1))
-    for m in re.finditer(r"use (?:\$?crate)::((?:\w+::)*)\{", text):
-        start = m.end()
-        depth, i = 1, start
-        while i < len(text) and depth:
-            depth += {"{": 1, "}": -1}.get(text[i], 0)
-            i += 1
-        out = []
-        use_tree(m.group(1).rstrip(":"), text[start:i - 1], out)
-        paths += [p.lstrip(":") for p in out]
-    # super:: is the parent of a file's module (a folder's mod.rs: the folder's parent).
-    base = grand if is_folder[name] else parent
-    for m in re.finditer(r"\bsuper::((?:\w+::)*\w+)", text):
-        paths.append((base + "::" if base else "") + m.group(1))
-    for m in re.finditer(r"use super::\{", text):
-        start = m.end()
-        depth, i = 1, start
-        while i < len(text) and depth:
-            depth += {"{": 1, "}": -1}.get(text[i], 0)
-            i += 1
-        out = []
-        use_tree(base, text[start:i - 1], out)
-        paths += [p.lstrip(":") for p in out]
-    if is_folder[name]:
-        # A folder's own children named without `crate::` (`use plant::NX;`, `plant::run(..)`).
-        for child in [m for m in modules if m.startswith(name + "::") and m.count("::") == name.count("::") + 1]:
-            short = child.split("::")[-1]
-            if re.search(r"(?<![\w:])" + short + r"::", text):
-                edges[name].add(child)
-    for p in paths:
-        target = resolve(p)
-        # A folder's mod.rs is the hub of its files: a file may use what its folders declare.
-        if target and target != name and not name.startswith(target + "::"):
-            edges[name].add(target)
-
-state, stack, order = {}, [], []
+def core_src(argv):
+    """core/src of the repository given as the first argument, or of this script's."""
+    root = argv[1] if len(argv) > 1 else pathlib.Path(__file__).resolve().parent.parent
+    return pathlib.Path(root) / "core" / "src"
 
 
-def visit(n):
-    state[n] = 1
-    stack.append(n)
-    for m in sorted(edges[n]):
-        if state.get(m) == 1:
-            cycle = stack[stack.index(m):] + [m]
-            print("import cycle between core modules: " + " -> ".join(cycle), file=sys.stderr)
-            sys.exit(1)
-        if m not in state:
-            visit(m)
-    stack.pop()
-    state[n] = 2
-    order.append(n)
+def main():
+    edges = Scan(core_src(sys.argv)).edges
+    state, stack, order = {}, [], []
+
+    def visit(n):
+        state[n] = 1
+        stack.append(n)
+        for m in sorted(edges[n]):
+            if state.get(m) == 1:
+                cycle = stack[stack.index(m):] + [m]
+                print("import cycle between core modules: " + " -> ".join(cycle), file=sys.stderr)
+                sys.exit(1)
+            if m not in state:
+                visit(m)
+        stack.pop()
+        state[n] = 2
+        order.append(n)
+
+    for n in sorted(edges):
+        if n not in state:
+            visit(n)
+    print("core modules, no import cycle (leaves first): " + " ".join(order))
 
 
-for n in sorted(modules):
-    if n not in state:
-        visit(n)
-print("core modules, no import cycle (leaves first): " + " ".join(order))
+if __name__ == "__main__":
+    main()

@@ -2,8 +2,9 @@
 //! models' Bode plots against small sinusoidal perturbations of the nonlinear averaged models
 //! (the counterpart of the stars on Figs. 4-7 to 4-9 and 4-12).
 
+use aes_core::control::linear::{fourier_gain, BodePoint, LinearSystem};
 use aes_core::studies::ips::motor_side::MotorSideParams;
-use aes_core::studies::ips::{fourier_gain, rk4, trapezoid_step, BodePoint, LinearSystem};
+use aes_core::studies::ips::{rk4, trapezoid_step};
 
 #[allow(clippy::too_many_arguments)]
 /// Simulates dx/dt = f(t, x) from `x0` with input amplitude `amp` at `omega` (RK4, or the implicit

@@ -6,6 +6,7 @@
 //! Everything is SI inside; no I/O, no threads; the same scenario gives the same numbers on
 //! every platform.
 
+pub mod as_printed;
 pub mod checks;
 pub mod control;
 pub mod numerics;

@@ -1,7 +1,10 @@
 //! The discrete PI controller every loop of the ship uses (governor, field, slip, autopilot,
-//! ship speed): one type, one anti-windup rule.
+//! ship speed): one type, one anti-windup rule. Beside it: the speed loop (`speed`), the LQG/LTR
+//! design of ch. 3.1 (`design`) and the linear-systems toolkit it shares with the IPS study of
+//! ch. 4 (`linear`).
 
 pub mod design;
+pub mod linear;
 pub mod speed;
 
 /// A discrete PI: output `kp e + integral`, clamped to [lo, hi]; the integral advances by

@@ -36,8 +36,9 @@ pub struct DcLink {
 pub struct RectifierFlow {
     /// DC current into the bus i_gDC [A] (eq. 2.9), never negative (diodes).
     pub i_dc: f64,
-    /// Bridge DC voltage v_DC [V] (eq. 2.8).
-    pub v_dc: f64,
+    /// Bridge DC voltage [V], eq. 2.8's v_DC: the bus voltage plus R_p i_gDC (eq. 2.9). Not the
+    /// IPS study's `v_dc`, which is its bus after the DC filter.
+    pub v_bridge: f64,
     /// Generator electrical (air-gap) power 3 Re{E_a i_s^*} [W] (eq. 2.3, Table 5.6).
     pub p_generator: f64,
     /// Stator copper loss 3 R_sg |i_s|^2 [W].
@@ -83,12 +84,12 @@ impl DcLink {
         let v_open = BRIDGE_VOLTAGE_RATIO * e_a;
         let i_dc = (v_open - v_c) / self.total_resistance(omega);
         let i_dc = if reversible { i_dc } else { i_dc.max(0.0) };
-        let v_dc = v_open - (r_commutation + self.r_stator_dc) * i_dc;
+        let v_bridge = v_open - (r_commutation + self.r_stator_dc) * i_dc;
         let p_stator_loss = self.r_stator_dc * i_dc * i_dc;
         RectifierFlow {
             i_dc,
-            v_dc,
-            p_generator: v_dc * i_dc + p_stator_loss,
+            v_bridge,
+            p_generator: v_bridge * i_dc + p_stator_loss,
             p_stator_loss,
             p_notching_loss: self.r_p * i_dc * i_dc,
             i_s: BRIDGE_CURRENT_RATIO * i_dc,
@@ -195,7 +196,7 @@ mod tests {
         // A reversible converter returns power, and the books still balance.
         let back = l.rectify(2000.0, 377.0, 6000.0, true);
         assert!(back.i_dc < 0.0 && back.p_generator < 0.0);
-        let v_c = back.v_dc - l.r_p * back.i_dc;
+        let v_c = back.v_bridge - l.r_p * back.i_dc;
         let balance = back.p_generator - (v_c * back.i_dc + back.p_notching_loss + back.p_stator_loss);
         assert!(balance.abs() < 1e-12 * back.p_generator.abs()); // measured 1.2e-16
     }
@@ -208,7 +209,7 @@ mod tests {
         let e_a = 2400.0;
         let f = l.rectify(e_a, 377.0, 5300.0, false);
         assert!(f.i_dc > 1000.0);
-        let v_c = f.v_dc - l.r_p * f.i_dc; // eq. 2.9
+        let v_c = f.v_bridge - l.r_p * f.i_dc; // eq. 2.9
         assert!((v_c - 5300.0).abs() < 1e-9); // measured exactly 0
         let balance = f.p_generator - (v_c * f.i_dc + f.p_notching_loss + f.p_stator_loss);
         assert!(balance.abs() < 1e-12 * f.p_generator, "residual {balance}"); // measured 1.3e-16

@@ -10,8 +10,8 @@
 //! "electromechanical resistor" the same section describes), so the torque used here is
 //! Q_e = 3 |I_r|^2 R_r / (s omega_e / p) = p P_airgap / omega_e.
 
+use crate::as_printed::AsPrintedParams;
 use crate::control::DiscretePi;
-use crate::scenario::as_printed::AsPrintedParams;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 

@@ -5,7 +5,6 @@
 //! rotating machines are given in rpm and ship speeds in knots because that is how engineers state
 //! them; the physics converts to SI on load.
 
-pub mod as_printed;
 pub mod file;
 pub mod presets;
 pub mod registry;
@@ -17,6 +16,7 @@ use serde::{Deserialize, Serialize};
 
 // Each subsystem owns its parameters (field docs with the thesis source, defaults, ranges); the
 // scenario only composes them. Re-exported so that `scenario::X` names every part of the format.
+pub use crate::as_printed::AsPrintedParams;
 pub use crate::checks::{FieldError, ScenarioError};
 pub use crate::control::design::{ControllerDesign, LqgLtrParams};
 pub use crate::control::speed::SpeedControlParams;
@@ -25,7 +25,6 @@ pub use crate::plant::generator::{FieldControlParams, GeneratorParams};
 pub use crate::plant::motor::{MotorParams, SlipControlParams};
 pub use crate::plant::prime_mover::{GovernorParams, TurbineParams};
 pub use crate::plant::propeller::{PropellerModelKind, PropellerParams};
-pub use crate::scenario::as_printed::AsPrintedParams;
 pub use crate::sea::conditioning::RareEventParams;
 pub use crate::sea::operability::OperabilityParams;
 pub use crate::sea::seakeeping::params::{SeakeepingParams, SternMotion};
@@ -70,7 +69,7 @@ crate::params! {
         /// (`aes-sim rare`); off unless `rare_event.level_h_over_r` is set.
         pub rare_event: RareEventParams = RareEventParams::default() => {},
         /// The thesis' equations as printed where we chose a corrected form (all off by default;
-        /// `core/src/scenario/as_printed.rs`).
+        /// `core/src/as_printed.rs`).
         pub as_printed: AsPrintedParams = AsPrintedParams::default() => {},
     }
 }

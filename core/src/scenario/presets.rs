@@ -245,7 +245,7 @@ fn head_seas_thesis_depth() -> Scenario {
     s
 }
 
-/// The thesis' equations as printed (`core/src/scenario/as_printed.rs`): head seas SS6 at 25 knots with the
+/// The thesis' equations as printed (`core/src/as_printed.rs`): head seas SS6 at 25 knots with the
 /// hub at the thesis' h0 = 6 m, every switch of `as_printed` on that lets the run start at 25 kn
 /// and eq. 2.57's sign as printed. The two motor switches are off: with either the motor cannot
 /// carry the propeller's 944 kN m at 25 kn (peak torque 654 kN m with P read as poles, 61 kN m
@@ -264,7 +264,7 @@ pub fn as_printed() -> Scenario {
         picture: ventilation and swings of tens of rpm (201 to 234 rpm). The motor switches (P as poles, eq. 2.5) \
         are off: with either the motor cannot carry the propeller at 25 knots."
         .into();
-    s.as_printed = crate::scenario::as_printed::AsPrintedParams {
+    s.as_printed = crate::as_printed::AsPrintedParams {
         doppler_twice: true,
         appendix_a_typos: true,
         eq_2_47_conjugate: true,

@@ -1,7 +1,7 @@
 //! RAO tables, built once per hull, grid and strip-theory switches and shared by every study
 //! (runs in waves, Monte Carlo trials, the fuel study, repeated runs in the browser).
 
-use crate::scenario::as_printed::AsPrintedParams;
+use crate::as_printed::AsPrintedParams;
 use crate::sea::seakeeping::tables::{ForEach, RaoTable, SeakeepingGrid, Serial};
 use crate::ship::hull::ShipHull;
 use std::sync::{Arc, Mutex, OnceLock};

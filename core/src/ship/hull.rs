@@ -14,10 +14,10 @@
 //! its 6.15 m design draft. The default is the 5415 throughout: Table 2.3's (X_udot - m)' scaled
 //! by L = 142 m gives m - X_udot = 9.5e6 kg, the 5415's mass plus 10 % added mass, while L = 180 m
 //! gives 19.3e6 kg, 2.75 times Table 5.1's mass. `as_printed.table_5_ship` runs the thesis'
-//! numbers instead (core/src/scenario/as_printed.rs).
+//! numbers instead (core/src/as_printed.rs).
 
+use crate::as_printed::AsPrintedParams;
 use crate::checks::{num, Validator};
-use crate::scenario::as_printed::AsPrintedParams;
 use crate::sea::seakeeping::strip::{BilgeKeels, MassProperties, Ship};
 use crate::ship::sections::{HullOffsets, Hydrostatics};
 use serde::{Deserialize, Serialize};

@@ -95,7 +95,7 @@ pub fn calm_water(p: &Plant, sc: &Scenario) -> Result<SteadyState, SimError> {
         slip: slip0,
         peak_slip: peak,
         // A shaft at rest with no load draws nothing: the bus floats at the bridge voltage.
-        bus_voltage: if u0 > 0.0 { v_ref } else { flow.v_dc },
+        bus_voltage: if u0 > 0.0 { v_ref } else { flow.v_bridge },
         turbine_speed: w_t,
         throttle,
         field_current: i_f,

@@ -453,7 +453,7 @@ fn run(sc: &Scenario) -> Result<crate::RunResult, String> {
 
 /// The ch. 5.3 run (head seas SS6, 25 kn, 80 s) at the thesis' depth h0 = 6 m, with these
 /// as-printed switches and this stern motion.
-fn head_seas(ap: crate::scenario::as_printed::AsPrintedParams, stern: SternMotion) -> Result<crate::RunResult, String> {
+fn head_seas(ap: crate::as_printed::AsPrintedParams, stern: SternMotion) -> Result<crate::RunResult, String> {
     let mut sc = preset("head-seas-ss6").ok_or("no preset")?;
     sc.set_hub_depth_m(6.0);
     sc.as_printed = ap;
@@ -463,9 +463,7 @@ fn head_seas(ap: crate::scenario::as_printed::AsPrintedParams, stern: SternMotio
 
 /// Table 2.3's maneuvering model on the hull's ship, or with `as_printed.table_5_ship` on the
 /// thesis' (L = 180 m): its straight-line resistance and surge mass.
-fn table_2_3_model(
-    ap: &crate::scenario::as_printed::AsPrintedParams,
-) -> Result<crate::ship::maneuvering::Abkowitz, String> {
+fn table_2_3_model(ap: &crate::as_printed::AsPrintedParams) -> Result<crate::ship::maneuvering::Abkowitz, String> {
     let hull = Scenario::default().ship_hull()?;
     let b = hull.rigid_body(ap);
     let h = crate::scenario::HullParams::default();
@@ -476,7 +474,7 @@ fn table_2_3_model(
 /// Table 2.3's straight-line resistance at 25 kn on the thesis' ship over the hull's (eq. 2.15's,
 /// Table 5.1's): the factor between the thesis' two resistances.
 fn table_5_resistance_ratio() -> Result<f64, String> {
-    use crate::scenario::as_printed::AsPrintedParams;
+    use crate::as_printed::AsPrintedParams;
     let u25 = crate::numerics::units::kn_to_m_s(25.0);
     let t5 = table_2_3_model(&AsPrintedParams { table_5_ship: true, ..Default::default() })?;
     let own = table_2_3_model(&AsPrintedParams::default())?;
@@ -1790,7 +1788,7 @@ fn analytic(size: Size, st: &crate::RunResult) -> Result<Section, String> {
 /// The DTMB 5415's heave and pitch RAOs in head seas against wavelength, at rest and at Fn 0.28,
 /// with Appendix A as printed, and the long-wave limit the rows above check.
 fn rao_figure() -> Result<Figure, String> {
-    use crate::scenario::as_printed::AsPrintedParams;
+    use crate::as_printed::AsPrintedParams;
     use crate::sea::seakeeping::complex::cabs;
     use crate::sea::seakeeping::strip::{default_omega_grid, response_as, Ship};
     let ship = Ship::dtmb5415();
@@ -2017,7 +2015,7 @@ fn onsets(r: &crate::RunResult) -> Result<f64, String> {
 /// What each switch of `as_printed` (and `seakeeping.stern_motion`) moves: the thesis column is
 /// the run or computation with the switch as printed, ours the corrected one.
 fn as_printed(base: &crate::RunResult) -> Result<Section, String> {
-    use crate::scenario::as_printed::AsPrintedParams;
+    use crate::as_printed::AsPrintedParams;
     use crate::sea::seakeeping::complex::cabs;
     use crate::sea::seakeeping::strip::{default_omega_grid, response_as, Ship};
     let sig = |r: &crate::RunResult, n: &str| r.summary.signals[n];

@@ -14,7 +14,7 @@ use super::margins::{input_margins, LoopMargins};
 use super::reduction::{reduce, ReduceOptions, ReductionReport};
 use super::riccati::{care, residual};
 use super::state_space::StateSpace;
-use crate::studies::ips::{log_space, Pole};
+use crate::control::linear::{log_space, sort_poles, Pole};
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
@@ -275,7 +275,7 @@ pub fn singular_values(m: &DMatrix<C>) -> Vec<f64> {
 fn poles(a: &DMatrix<f64>) -> Result<Vec<Pole>, String> {
     let ev = crate::numerics::eigenvalues(a).ok_or("the closed-loop eigenvalues did not converge")?;
     let mut p: Vec<Pole> = ev.iter().map(|&l| Pole::of(l)).collect();
-    crate::studies::ips::sort_poles(&mut p);
+    sort_poles(&mut p);
     Ok(p)
 }
 

@@ -5,7 +5,7 @@
 //! class reads off a Bode plot; they are not guaranteed margins for simultaneous changes in all
 //! channels.
 
-use crate::studies::ips::{crossings, log_space, Crossing};
+use crate::control::linear::{crossings, log_space, Crossing};
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C;
 use serde::Serialize;

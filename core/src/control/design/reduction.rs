@@ -7,8 +7,8 @@
 //! real: a conjugate pair becomes the block [[sigma, -omega], [omega, sigma]].
 
 use super::state_space::StateSpace;
+use crate::control::linear::log_space;
 use crate::sea::seakeeping::complex::cabs;
-use crate::studies::ips::log_space;
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};

@@ -20,7 +20,7 @@ use super::complex::cexp;
 use super::conformal::{best_section_map, SectionMap};
 use super::radiation::{default_multipoles, solve, Contour, Radiation2d};
 use super::roll_damping::{components, RollHull};
-use crate::scenario::as_printed::AsPrintedParams;
+use crate::as_printed::AsPrintedParams;
 use crate::ship::sections::HullOffsets;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};

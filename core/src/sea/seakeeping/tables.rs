@@ -5,8 +5,8 @@
 use super::conformal::{bulb, section_map, Form, SectionMap};
 use super::radiation::{default_multipoles, solve, Contour};
 use super::strip::{default_omega_grid, response, response_as, RadiationTable, Response, Ship};
+use crate::as_printed::AsPrintedParams;
 use crate::numerics::interp::bracket;
-use crate::scenario::as_printed::AsPrintedParams;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;

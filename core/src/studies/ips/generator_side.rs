@@ -21,7 +21,8 @@
 //! - The droop PI (4.13) is the usual v_fd = K_p e + K_i int e with e = v* - v_dc - K_d i_dc, as
 //!   eq. 4.48 uses it.
 
-use super::{numerical_jacobian, LinearSystem};
+use super::numerical_jacobian;
+use crate::control::linear::{margins, LinearSystem, Margins};
 use nalgebra::{DMatrix, Matrix3, Matrix5, Vector5};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -482,10 +483,10 @@ impl GeneratorSideParams {
     }
 
     /// Margins of the droop loop: L(s) = K(s) G(s), K the PI of eq. 4.48, G the open loop.
-    pub fn droop_margins(&self, ss: &GeneratorSteadyState) -> super::Margins {
+    pub fn droop_margins(&self, ss: &GeneratorSteadyState) -> Margins {
         let ol = self.open_loop(ss);
         let (kp, ki) = (self.kp_v, self.ki_v);
-        super::margins(&|w: f64| ol.response(w) * num_complex::Complex64::new(kp, -ki / w), 1e-3, 1e6)
+        margins(&|w: f64| ol.response(w) * num_complex::Complex64::new(kp, -ki / w), 1e-3, 1e6)
     }
 
     /// Numerical Jacobian of the nonlinear open-loop model at the steady state.

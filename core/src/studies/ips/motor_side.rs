@@ -15,7 +15,8 @@
 //! v_qs = (A_m i)_1, whose sign is opposite to the steady state of (4.16) (0 = A_m i + e_1 v_qs); we
 //! use v_qs = -(A_m i)_1 with i_qs from the current-magnitude constraint.
 
-use super::{numerical_jacobian, LinearSystem};
+use super::numerical_jacobian;
+use crate::control::linear::{margins, LinearSystem, Margins};
 use crate::numerics::powi;
 use nalgebra::{DMatrix, Matrix4, Vector4};
 use serde::{Deserialize, Serialize};
@@ -404,7 +405,7 @@ impl MotorSideParams {
 
     /// Margins of the torque-trim loop: L(s) = G(s) / (tau s), G the path from the torque
     /// reference T** to the measured torque with the equivalent control in place.
-    pub fn trim_margins(&self, ss: &MotorSteadyState) -> super::Margins {
+    pub fn trim_margins(&self, ss: &MotorSteadyState) -> Margins {
         let cl = self.closed_loop(ss);
         // The plant: the first five rows of the closed loop, T** (state 6) as its input.
         let a = cl.a.view((0, 0), (5, 5)).into_owned();
@@ -412,7 +413,7 @@ impl MotorSideParams {
         let c = cl.c.view((0, 0), (1, 5)).into_owned();
         let plant = LinearSystem { a, b, c, d: DMatrix::zeros(1, 1), states: vec![] };
         let tau = self.trim_tau;
-        super::margins(&|w: f64| plant.response(w) / num_complex::Complex64::new(0.0, tau * w), 1e-3, 1e6)
+        margins(&|w: f64| plant.response(w) / num_complex::Complex64::new(0.0, tau * w), 1e-3, 1e6)
     }
 
     /// Numerical Jacobians of the nonlinear open-loop and closed-loop dynamics at the steady state

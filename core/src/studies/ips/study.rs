@@ -7,8 +7,9 @@
 
 use super::generator_side::{GeneratorSideParams, LOAD_RANGE_A, OMEGA_RANGE_RAD_S, V_FD_RANGE_V};
 use super::motor_side::{MotorSideParams, TORQUE_RANGE_NM};
-use super::{bode_frequencies, load_params, LinearReport, LinearSystem, Margins, BODE_HZ_RANGE, MAX_BODE_POINTS};
+use super::{bode_frequencies, load_params, BODE_HZ_RANGE, MAX_BODE_POINTS};
 use crate::checks::{check_finite, num};
+use crate::control::linear::{LinearReport, LinearSystem, Margins};
 use crate::params::{ParamMeta, Section};
 use serde::{Deserialize, Serialize};
 

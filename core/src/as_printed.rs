@@ -13,7 +13,7 @@
 //! chatter between the two states every step, which is no reading of the thesis, so the numbers
 //! stay as a loop, and `seakeeping.ventilation_on_h_over_r` / `ventilation_off_h_over_r` already
 //! set its ends); the sign fixes of ch. 4's stability analysis, which is a study of its own
-//! (`core/src/stability`), not a scenario run; eq. 2.34's Lewis area coefficient and eq. 2.35's
+//! (`core/src/studies/ips`), not a scenario run; eq. 2.34's Lewis area coefficient and eq. 2.35's
 //! bulb map (README) are not switches yet.
 
 use serde::{Deserialize, Serialize};
