@@ -133,7 +133,7 @@ fn the_readme_states_the_limits_as_core_holds_them() {
         ),
         format!("takes at most {} frequencies", aes_core::studies::fuel::MAX_OMEGAS),
         format!("`bench --repeat` 1 to {}", aes_core::scenario::MAX_BENCH_REPEAT),
-        format!("`validate --trials` 1 to {}", thousands(aes_core::studies::validation_report::MAX_TRIALS)),
+        format!("`validate --trials` 1 to {}", thousands(aes_validation::MAX_TRIALS)),
     ] {
         assert!(text.contains(&want), "README does not say: {want}");
     }
