@@ -171,7 +171,8 @@ fn scenario_files_of_the_old_format_read_as_before() {
 
 /// Every key of the thesis' numbers (core/data/thesis_values.csv) that the page, the tests, the
 /// command line's tests and the wasm's tests name exists: a renamed or removed key fails here, before a slow test or a
-/// browser meets it. (The validation report's keys are checked in aes-core.)
+/// browser meets it. (The validation report's keys are checked in aes-validation, Table 5.7's
+/// in aes-core's thesis_values.)
 #[test]
 fn the_page_and_the_tests_name_only_known_thesis_values() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
@@ -197,7 +198,7 @@ fn the_page_and_the_tests_name_only_known_thesis_values() {
             seen += 1;
         }
     }
-    // Table 5.8 and the excess energy on the page, Tables 4.1 and 5.7 and Fig. 5-1 in the tests.
+    // Table 5.8 and the excess energy on the page, Tables 4.1 and 4.2 and Fig. 5-1 in the tests.
     assert!(seen >= 25, "{seen} keys found: the scan is broken");
 }
 

@@ -64,8 +64,9 @@ pub(crate) fn thesis_text(key: &str) -> String {
     thesis_values::printed(key).map_or_else(|| format!("[{}]", missing_why(key)), str::to_string)
 }
 
-/// A row whose thesis number is missing: it fails, and says so.
-fn missing_reference(quantity: &str, source: &str, ours: f64, unit: &'static str, why: String) -> Row {
+/// A row before its thesis number is resolved: failing, with no thesis number, tolerance or
+/// reason (a row whose thesis number is missing stays so, with the reason that says so).
+fn unjudged(quantity: &str, source: &str, ours: f64, unit: &'static str) -> Row {
     Row {
         quantity: quantity.into(),
         source: source.into(),
@@ -74,7 +75,7 @@ fn missing_reference(quantity: &str, source: &str, ours: f64, unit: &'static str
         unit,
         tolerance: None,
         verdict: Verdict::Fail,
-        reason: why,
+        reason: String::new(),
         kind: Kind::Thesis,
         spread: None,
         chosen_input: None,
@@ -91,25 +92,14 @@ pub(crate) fn row(
     tol: Tolerance,
     reason: &str,
 ) -> Row {
+    let r = unjudged(quantity, source, ours, unit);
     let thesis = match thesis.into().resolve() {
         Ok(x) => x,
-        Err(why) => return missing_reference(quantity, source, ours, unit, why),
+        Err(why) => return Row { reason: why, ..r },
     };
     let ok = within(tol, thesis, ours);
-    Row {
-        quantity: quantity.into(),
-        source: source.into(),
-        thesis,
-        ours,
-        unit,
-        tolerance: Some(tol),
-        verdict: if ok && ours.is_finite() { Verdict::Pass } else { Verdict::Fail },
-        reason: reason.into(),
-        kind: Kind::Thesis,
-        spread: None,
-        chosen_input: None,
-        explanation: None,
-    }
+    let verdict = if ok && ours.is_finite() { Verdict::Pass } else { Verdict::Fail };
+    Row { thesis, tolerance: Some(tol), verdict, reason: reason.into(), ..r }
 }
 
 /// Whether `ours` is within `tol` of `thesis` (a NaN never is).
@@ -155,23 +145,10 @@ pub(crate) fn open(
     unit: &'static str,
     reason: &str,
 ) -> Row {
-    let thesis = match thesis.into().resolve() {
-        Ok(x) => x,
-        Err(why) => return missing_reference(quantity, source, ours, unit, why),
-    };
-    Row {
-        quantity: quantity.into(),
-        source: source.into(),
-        thesis,
-        ours,
-        unit,
-        tolerance: None,
-        verdict: Verdict::Open,
-        reason: reason.into(),
-        kind: Kind::Thesis,
-        spread: None,
-        chosen_input: None,
-        explanation: None,
+    let r = unjudged(quantity, source, ours, unit);
+    match thesis.into().resolve() {
+        Ok(thesis) => Row { thesis, verdict: Verdict::Open, reason: reason.into(), ..r },
+        Err(why) => Row { reason: why, ..r },
     }
 }
 
