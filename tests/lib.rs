@@ -1,15 +1,10 @@
 //! Shared helpers of the thesis-reproduction tests.
 
-use aes_core::scenario::presets::startup;
 use aes_core::{RunResult, Scenario};
 
-/// The start-up preset ordered to `speed_kn` and run for `duration_s`.
-pub fn startup_to(speed_kn: f64, duration_s: f64) -> Scenario {
-    let mut s = startup();
-    s.commands[0].speed_kn = Some(speed_kn);
-    s.sim.duration_s = duration_s;
-    s
-}
+/// The start-up preset ordered to `speed_kn` and run for `duration_s` (core's, which the
+/// validation report runs too).
+pub use aes_core::scenario::presets::startup_to;
 
 /// Runs a scenario, failing the test with the simulator's message if it does not finish.
 pub fn run(s: &Scenario) -> RunResult {

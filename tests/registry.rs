@@ -123,7 +123,7 @@ fn the_readme_states_the_limits_as_core_holds_them() {
         ),
         format!("takes at most {} frequencies", aes_core::studies::fuel::MAX_OMEGAS),
         format!("`bench --repeat` 1 to {}", aes_core::scenario::MAX_BENCH_REPEAT),
-        format!("`validate --trials` 1 to {}", thousands(aes_core::studies::validation_report::MAX_TRIALS)),
+        format!("`validate --trials` 1 to {}", thousands(aes_validation::MAX_TRIALS)),
     ] {
         assert!(text.contains(&want), "README does not say: {want}");
     }
@@ -161,7 +161,8 @@ fn scenario_files_of_the_old_format_read_as_before() {
 
 /// Every key of the thesis' numbers (core/data/thesis_values.csv) that the page, the tests, the
 /// command line's tests and the wasm's tests name exists: a renamed or removed key fails here, before a slow test or a
-/// browser meets it. (The validation report's keys are checked in aes-core.)
+/// browser meets it. (The validation report's keys are checked in aes-validation, Table 5.7's
+/// in aes-core's thesis_values.)
 #[test]
 fn the_page_and_the_tests_name_only_known_thesis_values() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
@@ -187,7 +188,7 @@ fn the_page_and_the_tests_name_only_known_thesis_values() {
             seen += 1;
         }
     }
-    // Table 5.8 and the excess energy on the page, Tables 4.1 and 5.7 and Fig. 5-1 in the tests.
+    // Table 5.8 and the excess energy on the page, Tables 4.1 and 4.2 and Fig. 5-1 in the tests.
     assert!(seen >= 25, "{seen} keys found: the scan is broken");
 }
 

@@ -70,36 +70,7 @@ fn steady_state_power_inventory() {
 ///   (measured at most 8.9e-5: the 400 s runs are not quite settled).
 #[test]
 fn table_5_7_efficiencies() {
-    let thesis = [
-        (
-            20.0,
-            [
-                "table_5_7.generator.20kn",
-                "table_5_7.power_electronics.20kn",
-                "table_5_7.motor.20kn",
-                "table_5_7.propeller.20kn",
-            ],
-        ),
-        (
-            25.0,
-            [
-                "table_5_7.generator.25kn",
-                "table_5_7.power_electronics.25kn",
-                "table_5_7.motor.25kn",
-                "table_5_7.propeller.25kn",
-            ],
-        ),
-        (
-            30.0,
-            [
-                "table_5_7.generator.30kn",
-                "table_5_7.power_electronics.30kn",
-                "table_5_7.motor.30kn",
-                "table_5_7.propeller.30kn",
-            ],
-        ),
-    ];
-    for (kn, keys) in thesis {
+    for (kn, keys) in thesis_values::TABLE_5_7 {
         let want = keys.map(|key| thesis_values::value(key).unwrap_or_else(|| panic!("{key} missing")));
         let r = run(&startup_to(kn, 400.0));
         let e = r.summary.efficiency;

@@ -1,7 +1,7 @@
 //! `aes-sim validate`: the validation report (docs/validation.md).
 
 use crate::common::{emit, read_bounded, shorten, Failure, OutFile};
-use aes_core::studies::validation_report::{self as report, MAX_TRIALS};
+use aes_validation::{self as report, MAX_TRIALS};
 
 // The command line of `aes-sim validate`.
 #[derive(clap::Args)]
@@ -118,7 +118,7 @@ fn stray_figures(dir: &std::path::Path, made: &[String]) -> Result<Vec<String>, 
 
 /// Fails when a committed figure differs from the one the report makes now, is missing, or is
 /// one the report no longer makes.
-fn check_figures(report: &str, sections: &[aes_core::studies::validation_report::Section]) -> Result<(), String> {
+fn check_figures(report: &str, sections: &[report::Section]) -> Result<(), String> {
     let dir = figure_dir(report);
     let mut made = Vec::new();
     for f in sections.iter().flat_map(|s| &s.figures) {

@@ -1,4 +1,4 @@
-//! What a page or a report draws: SVG plots and the numbers a display needs beside a trace.
+//! What a page draws: the numbers a display needs beside a trace (the validation report's SVG
+//! plots are drawn in crate aes-validation).
 
 pub mod presentation;
-pub mod svg_plot;

@@ -1,6 +1,7 @@
 //! Studies built on runs and on the model: Monte Carlo and its statistics (ch. 5.4), the fuel
-//! study (Fig. 5-12), the controller study, regressions, the validation report against the
-//! thesis' numbers, and the IPS stability tool (ch. 4), and the operability polar.
+//! study (Fig. 5-12), the controller study, regressions, the thesis' numbers (which the
+//! validation report, crate aes-validation, compares with), and the IPS stability tool (ch. 4), and
+//! the operability polar.
 
 pub mod controller;
 pub mod fuel;
@@ -13,8 +14,6 @@ pub mod regression;
 pub mod stats;
 pub mod study;
 pub mod thesis_values;
-pub mod validation_report;
-
 /// Every study on the shared pipeline ([`study::Study`]), for the code that picks one by its kind
 /// (`aes-sim merge`, the wasm's `studyRange`): a new study adds its type here, once.
 #[macro_export]
