@@ -114,6 +114,8 @@ run_tests() {
   cargo fmt --all -- --check
   say "no import cycle between core's modules"
   python3 scripts/check_module_cycles.py
+  say "the README's Layout names every module of www/js and core/src"
+  node scripts/check-layout.mjs
   say "clippy (warnings are errors)"
   cargo clippy --workspace --all-targets --release -- -D warnings
   say "native tests (release)"
