@@ -117,6 +117,8 @@ run_tests() {
   say "no module of core imports a higher layer (and the check refuses a fake upward import)"
   python3 scripts/check_module_layers.py --self-test
   python3 scripts/check_module_layers.py
+  say "the README's Layout names every module of www/js and core/src"
+  node scripts/check-layout.mjs
   say "clippy (warnings are errors)"
   cargo clippy --workspace --all-targets --release -- -D warnings
   say "native tests (release)"

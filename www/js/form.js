@@ -68,6 +68,13 @@ export class ScenarioForm {
   has(name) { return Object.prototype.hasOwnProperty.call(this.presets, name); }
   // A copy of the scenario being edited.
   current() { return JSON.parse(JSON.stringify(this.scenario)); }
+  // A run's name for legends: the study, and what differs from it.
+  runName(sc) {
+    const paths = this.modified(sc);
+    const value = (p) => { const v = p.split('.').reduce((o, k) => o[k], sc); return typeof v === 'string' && v.length > 40 ? `(${v.split('\n').length} lines)` : JSON.stringify(v); };
+    const what = paths.slice(0, 2).map((p) => `${p.split('.').pop()} = ${value(p)}`).join(', ');
+    return `${studyTitle(this.name)}${what ? `, ${what}${paths.length > 2 ? ', ...' : ''}` : ''}`;
+  }
 
   build() {
     const form = $('form');
@@ -237,9 +244,9 @@ export class ScenarioForm {
     this.save();
   }
 
-  // The paths where the scenario differs from its study's values.
-  modified() {
-    const d = diff(this.preset(), this.scenario);
+  // The paths where the scenario (or sc) differs from its study's (or name's) values.
+  modified(sc = this.scenario, name = this.name) {
+    const d = diff(this.preset(name), sc);
     return d === undefined ? [] : leafPaths(d);
   }
 

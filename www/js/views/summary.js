@@ -1,0 +1,36 @@
+// A run's summary table under its plots: the key signals' final, min and max values, the power
+// inventory (Tables 5.6, 5.7) and the summary's warnings (core's health checks, the model's range).
+import { SUMMARY_ROWS } from '../config.js';
+import { $, el, row, fmt } from '../dom.js';
+import { registerView } from '../views.js';
+
+function showSummary(signals, s, constants) {
+  $('summary').querySelector('tbody').replaceChildren(...SUMMARY_ROWS.map((name) => {
+    const v = s.signals[name];
+    return row(signals.labelWithUnit(name, constants), [v.final, v.min, v.max].map((x) => Number(x).toPrecision(4)));
+  }));
+  // Tables 5.6 and 5.7: each stage's power at the end and what it passes on of the power it
+  // takes, now and over the whole run (energies). A ratio of powers in a transient is not an
+  // efficiency: a stage that gives up stored energy passes on more than it takes.
+  const inv = s.power_inventory_w || {}, en = s.energy_j || {};
+  const stages = [['turbine', 'gas turbines, shaft'], ['generator', 'generators, electrical'], ['inverter', 'into the motors'], ['motor', 'motors, shaft'], ['ship', 'ship, resistance x speed']]
+    .filter(([k]) => k in inv);
+  const ratio = (out, into) => (into > 0 && out >= 0 ? `${(100 * out / into).toFixed(1)} %` : '–');
+  const body = $('inventory').querySelector('tbody');
+  body.replaceChildren(el('tr', {}, ...['stage', 'power now [MW]', 'out / in now', 'energy, whole run [MJ]', 'out / in, whole run'].map((h) => el('th', { scope: 'col', textContent: h }))),
+    ...stages.map(([k, label], i) => {
+      const prev = i > 0 ? stages[i - 1][0] : null;
+      return row(label, [fmt(inv[k] / 1e6), prev ? ratio(inv[k], inv[prev]) : '–', k in en ? fmt(en[k] / 1e6) : '–', prev && k in en ? ratio(en[k], en[prev]) : '–']);
+    }));
+  const over = stages.some(([k], i) => i > 0 && inv[stages[i - 1][0]] > 0 && inv[k] > inv[stages[i - 1][0]]);
+  $('inventory-over').hidden = !over;
+  // The summary's warnings (core's health checks and the model's range), above the tables.
+  $('warnings').replaceChildren(...(s.warnings || []).map((w) => el('li', { textContent: w })));
+  $('warnings-box').hidden = !(s.warnings || []).length;
+  $('summary-box').hidden = false;
+}
+
+registerView({
+  id: 'summary',
+  drawRun: (ctx, m) => showSummary(ctx.signals, m.summary, m.constants),
+});
