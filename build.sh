@@ -153,6 +153,8 @@ run_tests() {
   node tests/e2e/operability.mjs "http://127.0.0.1:$port/" "$shots" target/release/aes-sim 2>&1 | tee -a "$log"
   say "browser test: rare events by conditioned simulation (issue 32)"
   node tests/e2e/rare.mjs "http://127.0.0.1:$port/" "$shots" target/release/aes-sim 2>&1 | tee -a "$log"
+  say "browser test: fuel per mile, a study on the shared pipeline (issue 41)"
+  node tests/e2e/fuel.mjs "http://127.0.0.1:$port/" "$shots" target/release/aes-sim 2>&1 | tee -a "$log"
   kill "$server" 2>/dev/null || true
   trap - EXIT
   # One closing line for the whole suite (pipefail has already stopped us on any failure).
