@@ -352,16 +352,18 @@ export class RareView {
   }
 
   // A worst trial: the trials' scenario with its sea's seed (64 bits, written exactly) and the
-  // ship's place and speed at the event as the trial took them (its record in the shards): the run
-  // is the trial's own.
+  // ship's place and speed at the event as the trial took them (the worst trial's own `sets`,
+  // numbers written in full by the summary): the run is the trial's own.
   replay(w, c) {
     const e = this.shown;
     if (!e) return;
-    const rec = e.shards.map((t) => JSON.parse(t).trials).flat().find((t) => t.trial === w.trial);
     const sc = JSON.parse(e.trial);
     sc.sim.seed = '__SEED__';
-    // (Every ship_* field of the record is a rare_event field: place, heading, speed.)
-    if (rec) for (const [k, v] of Object.entries(rec)) if (k.startsWith('ship_') && k in sc.rare_event) sc.rare_event[k] = v;
+    for (const set of w.sets) {
+      const [path, value] = set.split('=');
+      const [section, field] = path.split('.');
+      if (section === 'rare_event' && field.startsWith('ship_') && field in sc.rare_event) sc.rare_event[field] = Number(value);
+    }
     const text = JSON.stringify(sc).replace('"__SEED__"', w.seed);
     const words = `trial ${w.trial} (sea seed ${w.seed}), one of the worst for the ${RARE.short[c.name]} (${fmt(w.value)} ${unitOf(c.name)} over the ${sc.rare_event.window_s} s after the event): its sea brings the ${this.eventWords(e.summary)}`;
     this.run(e, text, `${e.title}, rare event: trial ${w.trial}`, words, sc.rare_event.time_s);
