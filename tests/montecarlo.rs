@@ -3,7 +3,8 @@
 use aes_core::scenario::presets::preset;
 use aes_core::scenario::Scenario;
 use aes_core::scenario::SternMotion;
-use aes_core::studies::montecarlo::{rice, run_trial, MonteCarlo, Partial, StudySummary};
+use aes_core::studies::montecarlo::{run_trial, MonteCarlo, Partial, StudySummary};
+use aes_core::studies::rice::rice;
 use aes_core::studies::study::{self, ShardOf, Study};
 
 type Shard = ShardOf<MonteCarlo>;

@@ -69,7 +69,8 @@ pub(crate) fn analytic(size: Size, st: &aes_core::RunResult) -> Result<Section, 
 fn rao_figure() -> Result<Figure, String> {
     use aes_core::as_printed::AsPrintedParams;
     use aes_core::sea::seakeeping::complex::cabs;
-    use aes_core::sea::seakeeping::strip::{default_omega_grid, response_as, Ship};
+    use aes_core::sea::seakeeping::motions::response_as;
+    use aes_core::sea::seakeeping::strip::{default_omega_grid, Ship};
     let ship = Ship::dtmb5415();
     let table = ship.radiation_table(&default_omega_grid());
     let g = aes_core::sea::waves::G;
@@ -131,8 +132,9 @@ fn rao_figure() -> Result<Figure, String> {
 /// waves on the DTMB 5415), with the tolerances of their unit tests.
 fn seakeeping_limits() -> Vec<Row> {
     use aes_core::sea::seakeeping::conformal::section_map;
+    use aes_core::sea::seakeeping::motions::response;
     use aes_core::sea::seakeeping::radiation::coefficients;
-    use aes_core::sea::seakeeping::strip::{default_omega_grid, response, Ship};
+    use aes_core::sea::seakeeping::strip::{default_omega_grid, Ship};
     let (rho, g) = (1025.0, 9.81);
     let norm = rho * core::f64::consts::PI / 2.0;
     let mut rows = Vec::new();
@@ -234,7 +236,8 @@ fn seakeeping_limits() -> Vec<Row> {
 /// forms, heave and pitch in long head waves, and the Fn 0.3 heave resonance. Measurements are
 /// compared on the Wigley III model ([`wigley_iii_experiments`]).
 fn wigley_rows() -> Vec<Row> {
-    use aes_core::sea::seakeeping::strip::{default_omega_grid, natural_periods, Ship};
+    use aes_core::sea::seakeeping::motions::natural_periods;
+    use aes_core::sea::seakeeping::strip::{default_omega_grid, Ship};
     use aes_core::sea::seakeeping::wigley_check::heave_pitch;
     use aes_core::ship::sections::HullOffsets;
     let (l, b, t) = (100.0, 10.0, 6.25);

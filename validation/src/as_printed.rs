@@ -19,7 +19,8 @@ fn onsets(r: &aes_core::RunResult) -> Result<f64, String> {
 pub(crate) fn as_printed(base: &aes_core::RunResult) -> Result<Section, String> {
     use aes_core::as_printed::AsPrintedParams;
     use aes_core::sea::seakeeping::complex::cabs;
-    use aes_core::sea::seakeeping::strip::{default_omega_grid, response_as, Ship};
+    use aes_core::sea::seakeeping::motions::response_as;
+    use aes_core::sea::seakeeping::strip::{default_omega_grid, Ship};
     let sig = |r: &aes_core::RunResult, n: &str| r.summary.signals[n];
     let mut rows = Vec::new();
     // The ch. 5.3 run at the thesis' depth, corrected (`base`) and with one switch as printed.

@@ -8,7 +8,7 @@ use crate::{Kind, Row, Section, Tolerance, Verdict};
 /// the same normalisations, split so that a difference can be placed: radiation (A33, B33),
 /// excitation on the restrained model (X3, X5), motions, added resistance.
 pub(crate) fn wigley_iii_experiments() -> Result<Section, String> {
-    use aes_core::sea::seakeeping::strip::response;
+    use aes_core::sea::seakeeping::motions::response;
     use aes_core::sea::seakeeping::wigley_check::{
         journee_points, model_omega_grid, raw_peak, wigley_iii_model, JourneePoint, WIGLEY_III_B, WIGLEY_III_L,
         WIGLEY_III_STATIONS,

@@ -44,14 +44,14 @@ pub(crate) fn table_5_8(size: Size) -> Result<Section, String> {
     let rate_at_thesis_z = aes_core::studies::stats::rice_upcrossing_rate(rice.hubs[0].m0, rice.hubs[0].m2, thesis_z);
     let sigma_implied = thesis_z / libm::sqrt(2.0 * libm::log(nu0 / thesis_rate));
     // Rice (no trials) for the same study in a long-crested sea and with the consistent sign.
-    let variant = |f: &dyn Fn(&mut Scenario)| -> Result<aes_core::studies::montecarlo::RiceSummary, String> {
+    let variant = |f: &dyn Fn(&mut Scenario)| -> Result<aes_core::studies::rice::RiceSummary, String> {
         let mut c = sc.clone();
         f(&mut c);
-        aes_core::studies::montecarlo::rice_summary(&c)?.ok_or_else(|| "no Rice summary".to_string())
+        aes_core::studies::rice::rice_summary(&c)?.ok_or_else(|| "no Rice summary".to_string())
     };
     let long = variant(&|c| c.sea.spreading = 0.0)?;
     let cons = variant(&|c| c.seakeeping.stern_motion = SternMotion::Consistent)?;
-    let rate_at = |r: &aes_core::studies::montecarlo::RiceSummary, z: f64| {
+    let rate_at = |r: &aes_core::studies::rice::RiceSummary, z: f64| {
         aes_core::studies::stats::rice_upcrossing_rate(r.hubs[0].m0, r.hubs[0].m2, z)
     };
     // The same study with the hub lowered so that the level lies `z` below the calm hub: the

@@ -82,8 +82,8 @@ fn pdstrip_rice(
     )],
 ) -> Result<PeerRice, String> {
     use aes_core::sea::seakeeping::complex::cabs;
+    use aes_core::sea::seakeeping::motions::response;
     use aes_core::sea::seakeeping::params::SternMotion as Sm;
-    use aes_core::sea::seakeeping::strip::response;
     use aes_core::studies::stats::rice_upcrossing_rate;
     let mut sc = preset("mc-arrival").ok_or("no preset mc-arrival")?;
     sc.sea.spreading = 0.0;
@@ -117,7 +117,7 @@ fn pdstrip_rice(
             p[0][j] + t * (p[1][j] - p[0][j])
         })
     };
-    // The midpoint rule of the simulator's Rice prediction (studies::montecarlo::rice_summary).
+    // The midpoint rule of the simulator's Rice prediction (studies::rice::rice_summary).
     let sea_band = sc.sea.band();
     let n = 400;
     let dw = (sea_band.1 - sea_band.0) / n as f64;
@@ -135,7 +135,7 @@ fn pdstrip_rice(
             inside += o * o * sw;
         }
     }
-    let rice = aes_core::studies::montecarlo::rice_summary(&sc)?.ok_or("no Rice summary")?;
+    let rice = aes_core::studies::rice::rice_summary(&sc)?.ok_or("no Rice summary")?;
     let z_thesis = thesis_f64("ch_5_4_2.level_z_m");
     let z_ours_m = rice.z_m;
     let rates = |m: [f64; 2]| [z_thesis, z_ours_m].map(|z| rice_upcrossing_rate(m[0], m[1], z));
@@ -162,8 +162,9 @@ fn pdstrip_rice(
 /// hub in head seas, and the aft-end terms' share of the roll's fall with speed.
 pub(crate) fn pdstrip_rows() -> Result<Section, String> {
     use aes_core::sea::seakeeping::complex::cabs;
+    use aes_core::sea::seakeeping::motions::response;
     use aes_core::sea::seakeeping::params::{HubPlace, SternMotion as Sm};
-    use aes_core::sea::seakeeping::strip::{default_omega_grid, response, RadiationTable, Ship};
+    use aes_core::sea::seakeeping::strip::{default_omega_grid, RadiationTable, Ship};
     let rho = 1025.0;
     let mut ships: Vec<(&str, Ship, RadiationTable, HubPlace)> = Vec::new();
     for name in ["dtmb5415", "wigley"] {

@@ -592,8 +592,8 @@ mod tests {
         let table = sc.rao_table().unwrap();
         let grid = sc.seakeeping.grid;
         let (w, u, beta) = (grid.omegas()[17], grid.speeds()[4], grid.headings()[9]);
-        let ra = crate::sea::seakeeping::strip::response(&a, &rad, w, u, beta, grid.roll_wave_amplitude_m);
-        let rb = crate::sea::seakeeping::strip::response(&b, &rad_b, w, u, beta, grid.roll_wave_amplitude_m);
+        let ra = crate::sea::seakeeping::motions::response(&a, &rad, w, u, beta, grid.roll_wave_amplitude_m);
+        let rb = crate::sea::seakeeping::motions::response(&b, &rad_b, w, u, beta, grid.roll_wave_amplitude_m);
         assert_eq!(format!("{ra:?}"), format!("{rb:?}"));
         let t = table.interpolate(w, u, beta);
         for (x, y) in [(t.heave, ra.heave), (t.pitch, ra.pitch), (t.roll, ra.roll)] {

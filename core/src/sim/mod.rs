@@ -24,7 +24,8 @@ use crate::ship::rudder::Autopilot;
 use crate::signals::{Signal, N_SIGNALS};
 use plant::{
     bus_voltage, drive_step, field_current, hull_step, omega_rm, omega_t, plant_step, Energy, Held, Outputs, Plant,
-    State, ENERGY0, HEADING, NX, N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE, Y_POS,
+    State, ENERGY, ENERGY0, HEADING, NX, N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE,
+    Y_POS,
 };
 use std::borrow::Cow;
 use std::f64::consts::PI;
@@ -552,7 +553,7 @@ impl Simulation {
         if !self.x[X_POS].is_finite() || !self.x[Y_POS].is_finite() || !self.x[HEADING].is_finite() {
             return bad("ship position".into(), "non-finite position or heading".into());
         }
-        if self.x[ENERGY0..].iter().any(|v| !v.is_finite()) {
+        if self.x[ENERGY].iter().any(|v| !v.is_finite()) {
             return bad("energy accounts".into(), "non-finite energy".into());
         }
         Ok(())
@@ -790,7 +791,7 @@ impl Simulation {
     /// Ends the run: the trace and its summary.
     pub fn finish(mut self) -> RunResult {
         self.refresh_outputs();
-        let energy: [f64; N_ENERGY] = self.x[ENERGY0..].try_into().unwrap_or([0.0; N_ENERGY]);
+        let energy: [f64; N_ENERGY] = self.x[ENERGY].try_into().unwrap_or([0.0; N_ENERGY]);
         let stored_change = self.plant.stored_energy(&self.x) - self.stored0;
         if self.max_heading_lag > deg_to_rad(15.0) {
             self.warnings.push(format!(

@@ -25,24 +25,79 @@ pub const SETS_PER_SHAFT: usize = 2;
 /// Turbine-generator sets in all.
 pub const N_SETS: usize = N_SHAFTS * SETS_PER_SHAFT;
 
+/// The blocks of the state vector. Their order and lengths are [`LAYOUT`]'s: a subsystem's states
+/// are one line there, and every slot follows from it (no offset is computed by hand).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Block {
+    /// Turbine shaft speed of each set [rad/s].
+    TurbineSpeed,
+    /// Field current of each set [A].
+    FieldCurrent,
+    /// Bus voltage of each shaft [V].
+    BusVoltage,
+    /// Propeller shaft speed of each shaft [rad/s].
+    ShaftSpeed,
+    /// The hull: surge u, sway v [m/s], yaw rate r [rad/s], north x, east y [m], heading psi [rad]
+    /// ([`SURGE`] to [`HEADING`]).
+    Hull,
+    /// The energy accumulators [J] ([`Energy`]).
+    Energy,
+}
+
+/// Number of energy accumulators.
+pub const N_ENERGY: usize = 15;
+
+/// The state vector's blocks in order, with their lengths.
+pub const LAYOUT: [(Block, usize); 6] = [
+    (Block::TurbineSpeed, N_SETS),
+    (Block::FieldCurrent, N_SETS),
+    (Block::BusVoltage, N_SHAFTS),
+    (Block::ShaftSpeed, N_SHAFTS),
+    (Block::Hull, 6),
+    (Block::Energy, N_ENERGY),
+];
+
+/// The slots of a block.
+pub const fn slots(b: Block) -> std::ops::Range<usize> {
+    let (mut at, mut i) = (0, 0);
+    while i < LAYOUT.len() {
+        if LAYOUT[i].0 as usize == b as usize {
+            return at..at + LAYOUT[i].1;
+        }
+        at += LAYOUT[i].1;
+        i += 1;
+    }
+    at..at
+}
+
+/// Size of the state vector.
+pub const NX: usize = {
+    let (mut n, mut i) = (0, 0);
+    while i < LAYOUT.len() {
+        n += LAYOUT[i].1;
+        i += 1;
+    }
+    n
+};
+
 /// Turbine shaft speed of set k [rad/s].
 pub const fn omega_t(k: usize) -> usize {
-    k
+    slots(Block::TurbineSpeed).start + k
 }
 /// Field current of set k [A].
 pub const fn field_current(k: usize) -> usize {
-    N_SETS + k
+    slots(Block::FieldCurrent).start + k
 }
 /// Bus voltage of shaft s [V].
 pub const fn bus_voltage(s: usize) -> usize {
-    2 * N_SETS + s
+    slots(Block::BusVoltage).start + s
 }
 /// Propeller shaft speed of shaft s [rad/s].
 pub const fn omega_rm(s: usize) -> usize {
-    2 * N_SETS + N_SHAFTS + s
+    slots(Block::ShaftSpeed).start + s
 }
 /// Ship surge speed u [m/s].
-pub const SURGE: usize = 2 * N_SETS + 2 * N_SHAFTS;
+pub const SURGE: usize = slots(Block::Hull).start;
 /// Sway speed v [m/s].
 pub const SWAY: usize = SURGE + 1;
 /// Yaw rate r [rad/s].
@@ -54,11 +109,11 @@ pub const Y_POS: usize = SURGE + 4;
 /// Heading psi [rad], not wrapped.
 pub const HEADING: usize = SURGE + 5;
 /// First energy accumulator [J]; see [`Energy`].
-pub const ENERGY0: usize = HEADING + 1;
-/// Number of energy accumulators.
-pub const N_ENERGY: usize = 15;
-/// Size of the state vector.
-pub const NX: usize = ENERGY0 + N_ENERGY;
+pub const ENERGY0: usize = slots(Block::Energy).start;
+/// The energy accumulators' slots.
+pub const ENERGY: std::ops::Range<usize> = slots(Block::Energy);
+// The hull's six named slots fill its block.
+const _: () = assert!(HEADING + 1 == slots(Block::Hull).end);
 
 /// The state vector.
 pub type State = [f64; NX];
@@ -372,7 +427,7 @@ impl Plant {
         let va = inflow.speed;
         let thrust = self.drive(x, h, va, u, out.as_deref_mut(), dx, &mut e);
         let resistance = self.hull_part(x, h, &inflow, thrust, heading, dx, &mut e);
-        dx[ENERGY0..].copy_from_slice(&e);
+        dx[ENERGY].copy_from_slice(&e);
         if let Some(out) = out {
             out.thrust = thrust;
             out.resistance = resistance;
@@ -527,7 +582,7 @@ impl Plant {
         let mut e = [0.0; N_ENERGY];
         self.drive(x, h, va, 1.0, None, dx, &mut e);
         dx[SURGE..=HEADING].fill(0.0);
-        dx[ENERGY0..].copy_from_slice(&e);
+        dx[ENERGY].copy_from_slice(&e);
     }
 
     /// The multi-rate step's slow part: the hull's derivatives under the mean thrust `thrust`
@@ -540,7 +595,7 @@ impl Plant {
         dx[..SURGE].fill(0.0);
         e[Energy::Thrust as usize] = thrust * u;
         self.hull_part(x, h, &inflow, thrust, Some(heading), dx, &mut e);
-        dx[ENERGY0..].copy_from_slice(&e);
+        dx[ENERGY].copy_from_slice(&e);
     }
 
     /// Kinetic and electric energy stored in the state [J]: turbine rotors, bus capacitors,

@@ -11,6 +11,7 @@ pub mod montecarlo;
 pub mod operability;
 pub mod rare;
 pub mod regression;
+pub mod rice;
 pub mod stats;
 pub mod study;
 pub mod thesis_values;

@@ -13,7 +13,8 @@
 //! and without the aft-end terms.
 
 use super::complex::cabs;
-use super::strip::{default_omega_grid, response, RadiationTable, Ship};
+use super::motions::response;
+use super::strip::{default_omega_grid, RadiationTable, Ship};
 use std::f64::consts::PI;
 
 /// Froude numbers of the comparison: at rest and Fn 0.2.

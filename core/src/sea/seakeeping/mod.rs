@@ -5,6 +5,7 @@
 pub mod aft_end;
 pub mod complex;
 pub mod conformal;
+pub mod motions;
 pub mod params;
 pub mod radiation;
 pub mod roll_damping;

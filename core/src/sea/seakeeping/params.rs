@@ -180,7 +180,8 @@ impl SeakeepingParams {
 mod tests {
     use super::*;
     use crate::sea::seakeeping::complex::cabs;
-    use crate::sea::seakeeping::strip::{default_omega_grid, response, Ship};
+    use crate::sea::seakeeping::motions::response;
+    use crate::sea::seakeeping::strip::{default_omega_grid, Ship};
 
     /// Eq. 2.57 off the centreline: in long waves the ship follows the surface, so each hub keeps
     /// its depth whatever the heading. DTMB 5415 at rest, omega 0.1 rad/s (lambda/L = 43), hubs

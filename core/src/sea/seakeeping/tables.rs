@@ -3,8 +3,9 @@
 //! time-domain simulation; plus the JSON of the `section` and `rao` commands.
 
 use super::conformal::{bulb, section_map, Form, SectionMap};
+use super::motions::{response, response_as, Response};
 use super::radiation::{default_multipoles, solve, Contour};
-use super::strip::{default_omega_grid, response, response_as, RadiationTable, Response, Ship};
+use super::strip::{default_omega_grid, RadiationTable, Ship};
 use crate::as_printed::AsPrintedParams;
 use crate::numerics::interp::bracket;
 use num_complex::Complex64 as C;

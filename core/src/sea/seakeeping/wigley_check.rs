@@ -8,7 +8,8 @@
 //! Source: J.M.J. Journee, "Experiments and calculations on four Wigley hullforms", Delft
 //! University of Technology, Ship Hydromechanics Laboratory, report 909, 1992.
 
-use super::strip::{heave_pitch_system, response, MassProperties, RadiationTable, Ship};
+use super::motions::{heave_pitch_system, response};
+use super::strip::{MassProperties, RadiationTable, Ship};
 use crate::sea::seakeeping::complex::cabs;
 use crate::ship::sections::HullOffsets;
 use std::f64::consts::PI;
@@ -190,7 +191,8 @@ pub fn journee_points(ship: &Ship, table: &RadiationTable) -> Result<Vec<Journee
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sea::seakeeping::strip::{default_omega_grid, natural_periods};
+    use crate::sea::seakeeping::motions::natural_periods;
+    use crate::sea::seakeeping::strip::default_omega_grid;
     use std::sync::OnceLock;
 
     fn wigley() -> &'static (Ship, RadiationTable) {
