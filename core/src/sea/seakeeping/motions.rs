@@ -5,7 +5,8 @@
 //! coefficients are `strip`'s; the axes and conventions are stated there.
 
 use super::complex::cexp;
-use super::roll_damping::{components, RollHull};
+use super::radiation::Contour;
+use super::roll_damping::components;
 use super::strip::{RadiationTable, Sect, Ship};
 use crate::as_printed::AsPrintedParams;
 use num_complex::Complex64 as C;
@@ -179,7 +180,7 @@ pub fn response_as(
 
 /// `response_as` and, second, the sectional sum of eq. 2.47 with a unit lever
 /// (sum_i w_i (s_i + f7_i) + s_A, which is F_add): the check of the drift moment's density.
-fn response_parts(
+pub(super) fn response_parts(
     ship: &Ship,
     table: &RadiationTable,
     omega0: f64,

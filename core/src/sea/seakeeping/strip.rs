@@ -18,11 +18,9 @@
 //! Sectional normals point out of the body (into the fluid), so the Froude-Krylov and diffraction
 //! sectional forces f_j, h_j below carry the opposite sign of STF's; the forces are the same.
 
-use super::complex::cexp;
 use super::conformal::{best_section_map, SectionMap};
 use super::radiation::{default_multipoles, solve, Contour, Radiation2d};
-use super::roll_damping::{components, RollHull};
-use crate::as_printed::AsPrintedParams;
+use super::roll_damping::RollHull;
 use crate::ship::sections::HullOffsets;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
@@ -275,6 +273,7 @@ impl RadiationTable {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::as_printed::AsPrintedParams;
     use crate::sea::seakeeping::complex::{cabs, carg};
     use crate::sea::seakeeping::motions::*;
     use std::f64::consts::PI;
