@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # CI check of the cluster recipes in docs/cluster.md, at small scale on this machine, for every
-# study on the shared pipeline (Monte Carlo, rare events, the operability polar): each run as one
+# study on the shared pipeline (Monte Carlo, rare events, the operability polar, fuel per mile):
+# each run as one
 # process, as shards under GNU parallel (the recipe's exact command, on localhost) and as a Slurm
 # job array (docs/slurm/*.sbatch run as plain bash, one array task after another), merged with
 # `aes-sim merge`: both merged summaries must equal the single process's byte for byte.
@@ -19,7 +20,7 @@ check() {
   local study="$1" scenario="$2" n="$3" s="$4" args="$5" count=""
   local dir="$work/$study"
   mkdir -p "$dir/parallel"
-  [ "$study" = operability ] || count="--trials $n"
+  case "$study" in mc | rare) count="--trials $n" ;; esac
   # shellcheck disable=SC2086
   "$AES_SIM" "$study" "$scenario" $count --threads 1 $args > "$dir/single.json" 2>/dev/null
 
@@ -48,7 +49,8 @@ check() {
 }
 
 # Small studies: 10 trials of 20 s of mc-excess-energy; 4 conditioned trials of 25 s in SS6 head
-# seas; a polar of 4 speeds x 3 headings x 2 seas.
+# seas; a polar of 4 speeds x 3 headings x 2 seas; fuel per mile at 3 speeds x 2 seas, 30 s runs.
 check mc preset:mc-excess-energy 10 4 "--set sim.duration_s=20 --set monte_carlo.histogram_time_s=10"
 check rare preset:head-seas-ss6 4 2 "--set rare_event.time_s=20 --set rare_event.window_s=5 --set sim.duration_s=25"
 check operability preset:startup 4 2 "--speeds 0,10,20,30 --headings 0,90,180 --sea-states 4,6"
+check fuel-per-mile preset:head-seas-ss6 6 3 "--speeds 12,18,24 --seeds 2 --set sim.duration_s=30 --from 10"

@@ -1,5 +1,5 @@
 //! The command line's one front for every study on the shared pipeline (Monte Carlo, rare
-//! events, the operability polar): the shard flags (`--trial-range`, `--partial`, `--merge`),
+//! events, the operability polar, fuel per mile): the shard flags (`--trial-range`, `--partial`, `--merge`),
 //! threads, progress, the estimate said before a long study, and the merge of shard files.
 
 use crate::common::{emit_json, read_bounded, shorten, Failure, OutFile, Threads};
@@ -13,7 +13,8 @@ pub const MAX_SHARD_BYTES: u64 = 512 << 20;
 /// The flags every study command shares.
 #[derive(clap::Args, Debug)]
 pub struct ShardArgs {
-    /// Run only items A..B of the study (a shard: trials, or the polar's speeds); needs --partial.
+    /// Run only items A..B of the study (a shard: its trials, the polar's speeds, the fuel study's
+    /// runs); needs --partial.
     #[arg(long = "trial-range", value_name = "A..B", conflicts_with = "merge")]
     pub range: Option<String>,
     /// Write the shard (or with --merge the merged shards) to this file, for `aes-sim merge`.
@@ -62,18 +63,7 @@ pub fn execute<S: Study>(
     }
     let out = args.partial.as_deref().map(|p| OutFile::check(p, "--partial", &[file])).transpose()?;
     // At most the machine's parallelism: more threads only cost time and memory.
-    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
-    let threads = match args.threads {
-        None | Some(0) => cores,
-        Some(t) if t > cores => {
-            let _ = writeln!(
-                std::io::stderr(),
-                "aes-sim {cmd}: --threads {t} capped at {cores}, this machine's available parallelism"
-            );
-            cores
-        }
-        Some(t) => t,
-    };
+    let threads = threads(args.threads, cmd);
     // A long study says so up front (the progress then shows the time left as measured).
     if let Some(w) = s.item_work() {
         let estimate_s = (b - a) as f64 * w / aes_core::scenario::WORK_PER_S / threads as f64;
@@ -132,7 +122,8 @@ pub fn execute<S: Study>(
 }
 
 /// The summary to `emit` first (it is printed even when the shard cannot be written), then the
-/// shard to its file.
+/// shard to its file; a study that cannot be summarised in part (a polar lacking speeds, rare
+/// events lacking trials) still has its merged shard written before the error.
 fn finish<S: Study>(
     (s, shard): (S, ShardOf<S>),
     cmd: &'static str,
@@ -140,9 +131,34 @@ fn finish<S: Study>(
     emit: impl FnOnce(&S, &S::Summary) -> Result<(), Failure>,
 ) -> Result<(), Failure> {
     warn_missing::<S>(&shard, s.items(), cmd);
-    let summary = s.summary(&shard.part, &shard.ranges)?;
-    emit(&s, &summary)?;
-    write_shard::<S>(&shard, out)
+    match s.summary(&shard.part, &shard.ranges) {
+        Ok(summary) => {
+            emit(&s, &summary)?;
+            write_shard::<S>(&shard, out)
+        }
+        Err(e) => {
+            write_shard::<S>(&shard, out)?;
+            Err(e.into())
+        }
+    }
+}
+
+/// The worker threads of `--threads` (0 or none: every core; more than the machine has: capped,
+/// with a line on stderr). At most the machine's parallelism: more threads only cost time and
+/// memory.
+pub fn threads(arg: Option<usize>, cmd: &str) -> usize {
+    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
+    match arg {
+        None | Some(0) => cores,
+        Some(t) if t > cores => {
+            let _ = writeln!(
+                std::io::stderr(),
+                "aes-sim {cmd}: --threads {t} capped at {cores}, this machine's available parallelism"
+            );
+            cores
+        }
+        Some(t) => t,
+    }
 }
 
 fn write_shard<S: Study>(shard: &ShardOf<S>, out: Option<&OutFile>) -> Result<(), Failure> {

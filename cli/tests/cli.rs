@@ -527,6 +527,13 @@ fn rare_events_whole_sharded_and_replayed() {
     let (ok, merged, err) = aes_sim(&[&base[..], &["--merge", a.to_str().unwrap(), b.to_str().unwrap()]].concat());
     assert!(ok, "{err}");
     assert_eq!(merged, whole);
+    // One shard alone is not summarised (the rates weigh every trial's sea), but the merge of
+    // what there is is written, to merge with the rest later (`aes-sim merge` takes any kind).
+    let ab = dir.join("ab.json");
+    let (ok, out, err) = aes_sim(&["merge", a.to_str().unwrap(), "--partial", ab.to_str().unwrap()]);
+    assert!(!ok && out.is_empty() && err.contains("trials 4..6 of the study's 6 are in no shard"), "{err}");
+    let (ok, later, err) = aes_sim(&["merge", ab.to_str().unwrap(), b.to_str().unwrap()]);
+    assert!(ok && later == whole, "{err}");
     // Shards of another study (another hub depth) do not merge.
     let (ok, _, err) = aes_sim(
         &[&base[..], &["--set", "ship.hull.hub_above_base_m=2.0", "--merge", a.to_str().unwrap(), b.to_str().unwrap()]]

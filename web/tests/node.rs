@@ -319,7 +319,7 @@ fn thesis_values_as_printed() {
 /// trapped with "memory access out of bounds"), a non-finite time for the sea is refused, a
 /// loaded RAO table of 1e308 values is refused as a computed one would be, a Monte Carlo study
 /// over its memory budget is refused before it starts, and a binary partial with impossible
-/// numbers is refused by mcSummary as merge refuses it.
+/// numbers is refused by studySummary as merge refuses it.
 #[wasm_bindgen_test]
 fn boundary_checks_in_wasm() {
     for v in [JsValue::from(3.0), JsValue::NULL, JsValue::UNDEFINED, js_sys::Object::new().into()] {

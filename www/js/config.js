@@ -245,7 +245,7 @@ export const HULL = {
 // The operability tab (issue 31): the grid the page asks the polar for (the command line's
 // defaults: `aes-sim operability` with no options gives the same cells), speeds above the scenario's
 // RAO table (seakeeping.grid.speed_max_kn) left out; the polar's seas, criteria, scatter diagram
-// and every number come from the wasm (operabilityPart, operabilityAssemble). At most this many
+// and every number come from the wasm (the study pipeline's studyRange and studySummary). At most this many
 // workers; the colour scale's steps [m] and colours (dark: limited in low seas; light: in high seas,
 // monotonic in lightness so the scale reads in grey too); the colour of cells that pass every
 // listed sea, drawn hatched as well.

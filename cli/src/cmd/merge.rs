@@ -1,12 +1,13 @@
-//! `aes-sim merge`: shards of any study (Monte Carlo, rare events, the operability polar) into
-//! the study's summary, as the study's own command prints it.
+//! `aes-sim merge`: shards of any study (Monte Carlo, rare events, the operability polar, fuel per
+//! mile) into the study's summary, as the study's own command prints it.
 
 use crate::common::{Failure, OutFile};
 
 // The command line of `aes-sim merge`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// Shard files (`--partial` of `aes-sim mc`, `rare` or `operability`), all of one study.
+    /// Shard files (`--partial` of `aes-sim mc`, `rare`, `operability` or `fuel-per-mile`), all of
+    /// one study.
     #[arg(required_unless_present = "files_from")]
     files: Vec<String>,
     /// Also merge the shard files listed in this file, one path a line (`-`: standard input;

@@ -79,9 +79,8 @@ pub fn run(a: Args) -> Result<(), Failure> {
             return Err(format!("--brute-force {hours}: from 0.1 to 10000 hours").into());
         }
     }
-    rare::check_study(&sc, a.trials).map_err(|e| format!("{}: {e}", shorten(&a.file)))?;
     // With --merge too: the shards must be of this study (its key), as the options give it.
-    let mut spec = RareSpec::new(&sc, a.trials)?;
+    let mut spec = RareSpec::new(&sc, a.trials).map_err(|e| format!("{}: {e}", shorten(&a.file)))?;
     spec.thresholds = thresholds;
     let study = RareEvents::new(spec)?;
     let brute_force = a.brute_force;
@@ -100,8 +99,7 @@ fn compare_brute_force(
     threads: Option<usize>,
 ) -> Result<(), Failure> {
     let trial_sc = &study.spec().scenario;
-    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
-    let threads = threads.unwrap_or(cores).clamp(1, cores);
+    let threads = crate::study::threads(threads, "rare");
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
     // Runs long enough to hold the warm-up, the window and 20 minutes of sea; at least 10 of
     // them (the interval comes from their spread).

@@ -356,7 +356,8 @@ impl Partial {
         if b.len() < 16 || &b[..8] != BINARY_MAGIC {
             return Err(bad("header"));
         }
-        let len = u64::from_le_bytes(b[8..16].try_into().map_err(|_| bad("length"))?) as usize;
+        let len = usize::try_from(u64::from_le_bytes(b[8..16].try_into().map_err(|_| bad("length"))?))
+            .map_err(|_| bad("length"))?;
         let json = b.get(16..16usize.saturating_add(len)).ok_or_else(|| bad("length"))?;
         let head: BinaryHead =
             serde_json::from_slice(json).map_err(|e| bad(&crate::checks::shorten_message(&e.to_string())))?;

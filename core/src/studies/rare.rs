@@ -339,6 +339,9 @@ impl Study for RareEvents {
     fn key_of_spec(s: &RareSpec) -> String {
         crate::studies::study::key_of(&format!("{} {}", s.trials, s.scenario.to_json()))
     }
+    fn same_study(a: &RareSpec, b: &RareSpec) -> bool {
+        a.trials == b.trials && a.scenario == b.scenario
+    }
     fn prepare(&self) -> Result<Trials, String> {
         Ok(Trials { sc: self.spec.scenario.clone() })
     }
@@ -378,7 +381,12 @@ impl Study for RareEvents {
         }
         Ok(())
     }
-    fn summary(&self, part: &Vec<TrialRecord>, _ranges: &[(u64, u64)]) -> Result<RareSummary, String> {
+    /// Of every trial: the rates weigh the trials' seas, and a summary of some would read as a
+    /// smaller study.
+    fn summary(&self, part: &Vec<TrialRecord>, ranges: &[(u64, u64)]) -> Result<RareSummary, String> {
+        if let Some((a, b)) = crate::studies::study::missing(ranges, self.items()).first() {
+            return Err(format!("trials {a}..{b} of the study's {} are in no shard", self.items()));
+        }
         summary(&self.spec.scenario, part, &self.thresholds)
     }
 }

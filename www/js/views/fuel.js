@@ -91,7 +91,7 @@ async function compute(ctx) {
       onProgress: (done) => { $('fuel-progress').value = done / n; $('fuel-eta').textContent = progressText(done, n, started, 'run'); },
     });
     show(summary);
-    shownKey = keyOf(inp, ask);
+    shownKey = keyOf(inp, ask); // the inputs it was started with
     $('fuel-status').textContent = `Done: ${n} runs in ${((performance.now() - started) / 1000).toFixed(1)} s (${inp.title}).`;
     window.__fuel = summary;
   } catch (e) {
@@ -103,6 +103,7 @@ async function compute(ctx) {
     running = false;
     $('fuel-compute').disabled = false;
     $('fuel-cancel').disabled = true;
+    sync(ctx); // inputs edited while it ran: the result is of the old ones
   }
 }
 
@@ -110,7 +111,7 @@ async function compute(ctx) {
 function sync(ctx) {
   const inp = ctx.studyInputs();
   const ask = inputs();
-  if (!shownKey || !inp || running || (!ask.error && keyOf(inp, ask) === shownKey)) return;
+  if (!shownKey || !inp || (!ask.error && keyOf(inp, ask) === shownKey)) return;
   shownKey = null;
   $('fuel-body').hidden = true;
   $('fuel-status').textContent = 'The study or the fold\'s inputs changed since the last result: compute again.';

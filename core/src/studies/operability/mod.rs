@@ -108,6 +108,21 @@ impl Default for PolarSpec {
 }
 
 impl PolarSpec {
+    /// The seas sorted from the lowest and each heading once: the list's limit walks the seas
+    /// from the lowest; a heading given twice (0 and 360) would count twice in the scatter
+    /// diagram's mean over headings. The polar's cells are of these.
+    pub fn normalise(&mut self) {
+        self.seas.sort_by(|a, b| a.h_sig_m.total_cmp(&b.h_sig_m).then(a.omega_n_rad_s.total_cmp(&b.omega_n_rad_s)));
+        self.seas.dedup_by(|a, b| a.h_sig_m == b.h_sig_m && a.omega_n_rad_s == b.omega_n_rad_s);
+        let mut seen = Vec::new();
+        self.headings_deg.retain(|h| {
+            let key = libm::round(h.rem_euclid(360.0) * 1e6) as i64 % 360_000_000;
+            let new = !seen.contains(&key);
+            seen.push(key);
+            new
+        });
+    }
+
     /// Errors name the list, the value and what is allowed.
     pub fn check(&self, top_speed_kn: f64) -> Result<(), String> {
         let list = |name: &str, n: usize, max: usize| {
@@ -440,17 +455,7 @@ impl PolarSetup {
     /// Checks the spec and the work, builds (or takes from the cache) the RAO table.
     pub fn new(sc: &Scenario, mut spec: PolarSpec, scatter: Option<&scatter::Scatter>) -> Result<PolarSetup, String> {
         spec.check(sc.seakeeping.grid.speed_max_kn)?;
-        // The list's limit walks the seas from the lowest; a heading given twice (0 and 360)
-        // would count twice in the scatter diagram's mean over headings.
-        spec.seas.sort_by(|a, b| a.h_sig_m.total_cmp(&b.h_sig_m).then(a.omega_n_rad_s.total_cmp(&b.omega_n_rad_s)));
-        spec.seas.dedup_by(|a, b| a.h_sig_m == b.h_sig_m && a.omega_n_rad_s == b.omega_n_rad_s);
-        let mut seen = Vec::new();
-        spec.headings_deg.retain(|h| {
-            let key = libm::round(h.rem_euclid(360.0) * 1e6) as i64 % 360_000_000;
-            let new = !seen.contains(&key);
-            seen.push(key);
-            new
-        });
+        spec.normalise();
         let judge = Judge::new(sc)?;
         let dirs = response::spreading(sc.sea.spreading, sc.operability.spreading_step_deg.to_radians());
         let scatter_shapes: Vec<f64> = scatter.map(|s| s.shapes()).unwrap_or_default();

@@ -29,6 +29,9 @@ pub struct SpeedRow {
 pub struct OperabilityPolar {
     spec: PolarStudySpec,
     polar: PolarSpec,
+    /// The spec as the cells are made of it (headings once, seas sorted), and the criteria.
+    normalised: PolarSpec,
+    criteria: usize,
     scatter: Option<Scatter>,
 }
 
@@ -45,7 +48,10 @@ impl Study for OperabilityPolar {
         spec.scenario.validate().map_err(|e| format!("its scenario is not valid: {e}"))?;
         let (polar, scatter) = spec.request.resolve()?;
         polar.check(spec.scenario.seakeeping.grid.speed_max_kn)?;
-        Ok(OperabilityPolar { spec, polar, scatter })
+        let mut normalised = polar.clone();
+        normalised.normalise();
+        let criteria = spec.scenario.operability.criteria.len();
+        Ok(OperabilityPolar { spec, polar, normalised, criteria, scatter })
     }
     fn spec(&self) -> &PolarStudySpec {
         &self.spec
@@ -73,19 +79,27 @@ impl Study for OperabilityPolar {
     fn merge(&self, acc: &mut Vec<SpeedRow>, other: &Vec<SpeedRow>) -> Result<(), String> {
         merge_records(acc, other, |r| r.speed, "speed")
     }
-    /// One row for each speed of the ranges, in order, each with one cell per heading at its own
-    /// speed and as many shares as cells (none without a scatter diagram).
+    /// One row for each speed of the ranges, in order: one cell per heading of the polar (after
+    /// [`PolarSpec::normalise`]) at its own speed and heading, each sea's values and limits for
+    /// every criterion, a limiting criterion among them, at most every sea passed, and a share in
+    /// [0, 1] per heading with a scatter diagram (none without).
     fn check_part(&self, part: &Vec<SpeedRow>, ranges: &[(u64, u64)]) -> Result<(), String> {
-        let headings = part.first().map_or(0, |r| r.cells.len());
+        let (h, nseas, nc) = (&self.normalised.headings_deg, self.normalised.seas.len(), self.criteria);
         for (r, j) in records_of(part, ranges, |r| r.speed, "speed")? {
             let speed = self.polar.speeds_kn[j as usize];
-            let shares = if self.scatter.is_some() { r.cells.len() } else { 0 };
-            if r.cells.is_empty()
-                || r.cells.len() != headings
-                || r.shares.len() != shares
-                || r.cells.iter().any(|c| c.speed_kn != speed)
-            {
-                return Err(format!("speed {j}: not the row of speed {j} ({} kn) of this polar", speed));
+            let shares = if self.scatter.is_some() { h.len() } else { 0 };
+            let cells_fit = r.cells.len() == h.len()
+                && r.cells.iter().zip(h).all(|(c, &hd)| {
+                    c.speed_kn == speed
+                        && c.heading_deg == hd
+                        && c.values.len() == nseas
+                        && c.limit_hs_m.len() == nseas
+                        && c.values.iter().chain(&c.limit_hs_m).all(|v| v.len() == nc)
+                        && c.limiting_criterion.is_none_or(|k| k < nc)
+                        && c.seas_passed <= nseas
+                });
+            if !cells_fit || r.shares.len() != shares || r.shares.iter().any(|x| !(0.0..=1.0).contains(x)) {
+                return Err(format!("speed {j}: not the row of speed {j} ({speed} kn) of this polar"));
             }
         }
         Ok(())
@@ -100,5 +114,49 @@ impl Study for OperabilityPolar {
         let polar = assemble(&self.spec.scenario, &setup, rows, self.scatter.as_ref())?;
         crate::checks::check_finite(&polar)?;
         Ok(polar)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::studies::study::{check_shard, run_range, Merger};
+
+    /// Shards of a small polar (2 speeds x 3 headings, one of them given twice, 2 seas) merge in
+    /// either order to the polar of one run; a shard whose row is not its speed's (a heading
+    /// changed, a cell dropped, a criterion index past the list, a share above 1) is refused.
+    #[test]
+    fn polar_shards_merge_and_tampered_rows_are_refused() {
+        let request = PolarRequest {
+            speeds_kn: Some(vec![0.0, 18.0]),
+            headings_deg: Some(vec![0.0, 90.0, 360.0, 180.0]),
+            sea_states: Some(vec![4, 6]),
+            ..Default::default()
+        };
+        let spec = PolarStudySpec { scenario: Scenario::default(), request };
+        let study = OperabilityPolar::new(spec.clone()).unwrap();
+        let whole = crate::studies::study::run_all(&study).unwrap();
+        let (a, b) = (run_range(&study, 0, 1).unwrap(), run_range(&study, 1, 2).unwrap());
+        let mut m = Merger::new(OperabilityPolar::new(spec.clone()).unwrap());
+        m.add(b.clone()).unwrap();
+        m.add(a.clone()).unwrap();
+        let (s, merged) = m.finish().unwrap();
+        assert_eq!(s.summary(&merged.part, &merged.ranges).unwrap(), whole);
+        assert_eq!(whole.headings_deg, vec![0.0, 90.0, 180.0]);
+        let refused = |change: &dyn Fn(&mut SpeedRow)| {
+            let mut bad = b.clone();
+            change(&mut bad.part[0]);
+            check_shard(&study, &bad).unwrap_err()
+        };
+        assert!(refused(&|r| r.cells[1].heading_deg = 45.0).starts_with("speed 1: not the row of speed 1"));
+        assert!(refused(&|r| {
+            r.cells.pop();
+        })
+        .starts_with("speed 1"));
+        assert!(refused(&|r| r.cells[0].limiting_criterion = Some(99)).starts_with("speed 1"));
+        assert!(refused(&|r| r.shares[0] = 1.5).starts_with("speed 1"));
+        // A polar lacking a speed is not drawn.
+        let e = study.summary(&a.part, &a.ranges).unwrap_err();
+        assert_eq!(e, "the polar lacks speeds 1..2 (of 2)");
     }
 }
