@@ -105,6 +105,25 @@ await check('a lesson in presentation mode at 1920x1080 keeps its controls, plot
   await ctx.close();
 });
 
+await check('on a phone a rerun leaves the screen where the hand is: the slider being moved does not scroll away (issue 43)', async () => {
+  const ctx = await browser.newContext({ viewport: { width: 390, height: 844 }, hasTouch: true });
+  const p = await openPage(ctx, `${base}#lesson=waves`, base, errors);
+  await p.click('#lesson-a0');
+  await done(p);
+  const id = '#lesson-sea-sea_state';
+  await p.$eval(id, (e) => e.scrollIntoView({ block: 'center' }));
+  const y0 = await p.evaluate(() => window.scrollY);
+  const top0 = await p.$eval(id, (e) => e.getBoundingClientRect().top);
+  const before = await p.evaluate(() => window.__lessonLatencyMs);
+  await move(p, id);
+  await p.waitForFunction((b) => window.__lessonLatencyMs !== b && !document.getElementById('run').disabled, before, { timeout: 60000 });
+  await p.waitForTimeout(300);
+  const y1 = await p.evaluate(() => window.scrollY);
+  const top1 = await p.$eval(id, (e) => e.getBoundingClientRect().top);
+  assert(Math.abs(top1 - top0) <= 2, `the slider moved on the screen from ${Math.round(top0)} to ${Math.round(top1)} px (scroll ${Math.round(y0)} -> ${Math.round(y1)})`);
+  await ctx.close();
+});
+
 await check('from a control to the new plot: at most 1.5 x the native run of the same scenario + 150 ms (measured side by side)', async () => {
   assert(existsSync(native), `no native ${native}`);
   const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 } });

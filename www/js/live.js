@@ -124,13 +124,14 @@ export class LiveViews {
   view() { return this.cols && !this.root.hidden && !this.streaming ? { at: this.t, speed: this.speed } : null; }
 
   // Opens the views at a link's place (after the run's show()); a speed not on the menu is the
-  // nearest that is.
-  place({ at, speed }) {
+  // nearest that is. `scroll`: bring the views into sight (a link opened); a lesson's rerun leaves
+  // the screen where the hand is.
+  place({ at, speed }, { scroll = true } = {}) {
     return this.queued(() => {
       const near = LIVE.speeds.reduce((a, b) => (Math.abs(Math.log(b / speed)) < Math.abs(Math.log(a / speed)) ? b : a));
       this.speed = near; this.speedSel.value = String(near);
       this.seek(at);
-      this.root.scrollIntoView({ block: 'start' });
+      if (scroll) this.root.scrollIntoView({ block: 'start' });
     });
   }
 

@@ -75,7 +75,8 @@ async function lessonRun(ctx) {
   if (lesson && res && res.columns && res.study === lesson.def.preset) {
     window.__lessonLatencyMs = performance.now() - asked; // for the browser test: control to plot
     lessons.explain(res.summary, res.markers || []);
-    ctx.live.place({ at: lesson.def.at, speed: 2 });
+    // The screen stays where the hand is: the control being moved and the plot do not scroll away.
+    ctx.live.place({ at: lesson.def.at, speed: 2 }, { scroll: false });
   }
   if ($('lesson-lab')) $('lesson-lab').href = labHref(ctx.form);
   if (pending) { pending = false; lessonRun(ctx); }
