@@ -98,12 +98,15 @@ await check(`${TRIALS} trials of the head-seas study compute over the workers wi
   console.log(`     ${TRIALS} trials in ${ms} ms; rate ${cli.rate.per_hour} per hour (page and command line), Rice ${cli.rice_per_hour}; medians ${cli.consequences.map((c) => `${c.name} ${c.q50}`).join(', ')}`);
 });
 
-await check('the headline says the rate as "About once every N hours (95 %: A to B hours)", beside Rice, the hub depth, speed and sigma; five histograms with units on the axes and quantile lines; the threshold table re-summarises a typed threshold as --threshold does', async () => {
+await check('the headline says the rate in the unit that reads ("About N an hour ... frequent, not rare" above one an hour, else "About once every N hours (95 %: A to B hours)"), beside Rice, the hub depth, speed and sigma; five histograms with units on the axes and quantile lines; the threshold table re-summarises a typed threshold as --threshold does', async () => {
   const p = page;
   const head = await p.textContent('#rare-headline');
   const r = cli.rate;
-  const want = `About once every ${r.once_every_hours.toPrecision(3)} hours (95 %: ${(1 / r.high_per_hour).toPrecision(3)} to ${(1 / r.low_per_hour).toPrecision(3)} hours)`;
+  const want = r.per_hour > 1
+    ? `About ${r.per_hour.toPrecision(3)} an hour (95 %: ${r.low_per_hour.toPrecision(3)} to ${r.high_per_hour.toPrecision(3)}), one every `
+    : `About once every ${r.once_every_hours.toPrecision(3)} hours (95 %: ${(1 / r.high_per_hour).toPrecision(3)} to ${(1 / r.low_per_hour).toPrecision(3)} hours)`;
   assert(head.startsWith(want), `headline "${head}", want it to start "${want}"`);
+  assert((r.per_hour > 1) === head.includes('frequent, not rare'), `headline "${head}" at ${r.per_hour} per hour`);
   const facts = await p.textContent('#rare-facts');
   for (const w of [cli.rate.per_hour.toPrecision(4), cli.rice_per_hour.toPrecision(4), 'Rice', cli.hub_depth_m.toPrecision(3), cli.speed_kn.toPrecision(3), cli.hub_sigma_m.toPrecision(3), cli.level_sigmas.toPrecision(3)]) assert(facts.includes(w), `the facts lack "${w}": ${facts}`);
   // A histogram per consequence that varies over the trials (one that does not is said in words).

@@ -245,9 +245,14 @@ export class RareView {
     const r = s.rate;
     const lo = r.high_per_hour > 0 ? 1 / r.high_per_hour : null, hi = r.low_per_hour > 0 ? 1 / r.low_per_hour : null;
     const plain = (h) => (h === null ? 'never' : fmt(h, 3));
-    $('rare-headline').textContent = r.per_hour > 0
-      ? `About once every ${fmt(r.once_every_hours, 3)} hours (95 %: ${plain(lo)} to ${plain(hi)} hours)${r.once_every_hours < 2 ? `, that is every ${hoursWords(r.once_every_hours).replace(/^.*\((.*)\)$/, '$1')}` : ''}`
-      : `No event in ${s.trials} trials`;
+    // More than one an hour reads as a count per hour (a fraction of an hour between events does
+    // not), and is called frequent: at such settings the event is not rare (issue 43).
+    const every = () => hoursWords(r.once_every_hours).replace(/^.*\((.*)\)$/, '$1');
+    $('rare-headline').textContent = !(r.per_hour > 0)
+      ? `No event in ${s.trials} trials`
+      : r.per_hour > 1
+        ? `About ${fmt(r.per_hour, 3)} an hour (95 %: ${fmt(r.low_per_hour, 3)} to ${fmt(r.high_per_hour, 3)}), one every ${every()}: at these settings the event is frequent, not rare`
+        : `About once every ${fmt(r.once_every_hours, 3)} hours (95 %: ${plain(lo)} to ${plain(hi)} hours)${r.once_every_hours < 2 ? `, that is every ${every()}` : ''}`;
     $('rare-event-line').textContent = `The event: ${s.event}, at ${fmt(r.per_hour, 4)} per hour.`;
     const simulated = s.simulated_s >= 3600 ? `${fmt(s.simulated_s / 3600, 3)} h` : `${fmt(s.simulated_s / 60, 3)} min`;
     $('rare-facts').textContent = `Crossing rate ${perHour(r.per_hour)} (95 %: ${fmt(r.low_per_hour, 4)} to ${fmt(r.high_per_hour, 4)}), from ${s.trials} trials (${simulated} simulated); Rice's formula for the hub's depth swing gives ${perHour(s.rice_per_hour)}, ${riceWords(r, s.rice_per_hour)}. Hub ${fmt(s.hub_depth_m, 3)} m below the calm surface, ship at ${fmt(s.speed_kn, 3)} kn; the hub's depth swings with a standard deviation of ${fmt(s.hub_sigma_m, 3)} m, and the level h/R = ${s.level_h_over_r} lies ${fmt(s.level_sigmas, 3)} standard deviations from the calm hub depth.`;
