@@ -141,8 +141,8 @@ pub fn default_criteria() -> Vec<Criterion> {
         criterion(Quantity::VerticalVelocityRmsMS, "flight_deck", 1.0, HELICOPTER),
         criterion(Quantity::SlammingProbability, "", 0.03, NORDFORSK),
         criterion(Quantity::DeckWetnessProbability, "", 0.05, NORDFORSK),
-        criterion(Quantity::VentilationPerHour, "", VENTILATION_PER_HOUR, PROPELLER_SOURCE),
-        criterion(Quantity::EmergencePerHour, "", EMERGENCE_PER_HOUR, PROPELLER_SOURCE),
+        criterion(Quantity::VentilationPerHour, "", VENTILATION_PER_HOUR, VENTILATION_SOURCE),
+        criterion(Quantity::EmergencePerHour, "", EMERGENCE_PER_HOUR, EMERGENCE_SOURCE),
     ]
 }
 
@@ -157,7 +157,13 @@ pub const VENTILATION_PER_HOUR: f64 = 6.0;
 /// the worse shaft: one an hour. An emergence is a full ventilation with racing of the shaft,
 /// the event propulsion shaft-line guidance treats as to be avoided in normal service.
 pub const EMERGENCE_PER_HOUR: f64 = 1.0;
-const PROPELLER_SOURCE: &str = "our choice: see core/src/sea/operability.rs";
+/// The two propeller criteria's sources as a reader of the polar sees them (the reasons above, in
+/// words: no published criterion exists for them).
+const VENTILATION_SOURCE: &str = "our choice: one onset every ten minutes on the worse shaft, so that the gas \
+     turbines' speed loop (about 20 s to settle after a load step) rides through each; no published criterion \
+     exists for a shaft-line load swing";
+const EMERGENCE_SOURCE: &str =
+    "our choice: one an hour on the worse shaft (the tips in the air, the shaft racing: to be avoided in normal service)";
 
 crate::params! {
     /// Where on the ship the motions are judged, and the criteria (`aes-sim operability`, the
