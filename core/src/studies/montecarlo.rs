@@ -332,10 +332,7 @@ impl Partial {
         let json = serde_json::to_vec(&BinaryHead { partial: head, rows: rows.iter().map(Vec::len).collect() })
             .map_err(|e| e.to_string())?;
         let n: usize = rows.iter().map(Vec::len).sum();
-        let mut out = Vec::with_capacity(BINARY_MAGIC.len() + 8 + json.len() + n * PACKED_MOMENTS);
-        out.extend_from_slice(BINARY_MAGIC);
-        out.extend_from_slice(&(json.len() as u64).to_le_bytes());
-        out.extend_from_slice(&json);
+        let mut out = crate::studies::study::frame(BINARY_MAGIC, &json, n * PACKED_MOMENTS);
         for m in rows.iter().flatten() {
             out.extend_from_slice(&m.bits.to_le_bytes());
             out.push(m.order);
@@ -353,17 +350,11 @@ impl Partial {
     /// Reads `to_bytes`' form back (the shard checks it).
     pub fn from_bytes(b: &[u8]) -> Result<Partial, String> {
         let bad = |what: &str| format!("not a binary Monte Carlo partial ({what})");
-        if b.len() < 16 || &b[..8] != BINARY_MAGIC {
-            return Err(bad("header"));
-        }
-        let len = usize::try_from(u64::from_le_bytes(b[8..16].try_into().map_err(|_| bad("length"))?))
-            .map_err(|_| bad("length"))?;
-        let json = b.get(16..16usize.saturating_add(len)).ok_or_else(|| bad("length"))?;
+        let (json, body) = crate::studies::study::unframe(b, BINARY_MAGIC, &bad)?;
         let head: BinaryHead =
             serde_json::from_slice(json).map_err(|e| bad(&crate::checks::shorten_message(&e.to_string())))?;
         let mut p = head.partial;
         let total: usize = head.rows.iter().try_fold(0usize, |a, &r| a.checked_add(r)).ok_or_else(|| bad("rows"))?;
-        let body = &b[16 + len..];
         if head.rows.len() != p.envelopes.len() + 2 || body.len() != total.saturating_mul(PACKED_MOMENTS) {
             return Err(bad("rows"));
         }

@@ -339,10 +339,7 @@ pub fn to_bytes<S: Study>(s: &ShardOf<S>) -> Result<Vec<u8>, String> {
     let head = shard_head::<S>(s);
     let json = serde_json::to_vec(&head).map_err(|e| e.to_string())?;
     let part = S::part_to_bytes(&s.part)?;
-    let mut out = Vec::with_capacity(16 + json.len() + part.len());
-    out.extend_from_slice(BINARY_MAGIC);
-    out.extend_from_slice(&(json.len() as u64).to_le_bytes());
-    out.extend_from_slice(&json);
+    let mut out = frame(BINARY_MAGIC, &json, part.len());
     out.extend_from_slice(&part);
     Ok(out)
 }
@@ -359,18 +356,34 @@ fn shard_head<S: Study>(s: &ShardOf<S>) -> Shard<S::Spec, ()> {
     }
 }
 
-/// Reads [`to_bytes`]' form (unchecked: merge it with a [`Merger`], which checks it).
-pub fn from_bytes<S: Study>(b: &[u8]) -> Result<ShardOf<S>, String> {
-    let bad = |what: &str| format!("not a binary shard ({what})");
-    if b.len() < 16 || &b[..8] != BINARY_MAGIC {
+/// A binary frame: `magic` (8 bytes), the length of `json` (u64, little-endian), `json`, then
+/// room for `body` bytes the caller appends.
+pub fn frame(magic: &[u8; 8], json: &[u8], body: usize) -> Vec<u8> {
+    let mut out = Vec::with_capacity(16 + json.len() + body);
+    out.extend_from_slice(magic);
+    out.extend_from_slice(&(json.len() as u64).to_le_bytes());
+    out.extend_from_slice(json);
+    out
+}
+
+/// [`frame`]'s JSON and what follows it; `bad` words an error ("header", "length").
+pub fn unframe<'a>(b: &'a [u8], magic: &[u8; 8], bad: &dyn Fn(&str) -> String) -> Result<(&'a [u8], &'a [u8]), String> {
+    if b.len() < 16 || &b[..8] != magic {
         return Err(bad("header"));
     }
     let len = usize::try_from(u64::from_le_bytes(b[8..16].try_into().map_err(|_| bad("length"))?))
         .map_err(|_| bad("length"))?;
     let json = b.get(16..16usize.saturating_add(len)).ok_or_else(|| bad("length"))?;
+    Ok((json, &b[16 + len..]))
+}
+
+/// Reads [`to_bytes`]' form (unchecked: merge it with a [`Merger`], which checks it).
+pub fn from_bytes<S: Study>(b: &[u8]) -> Result<ShardOf<S>, String> {
+    let bad = |what: &str| format!("not a binary shard ({what})");
+    let (json, body) = unframe(b, BINARY_MAGIC, &bad)?;
     let head: Shard<S::Spec, ()> =
         serde_json::from_slice(json).map_err(|e| bad(&crate::checks::shorten_message(&e.to_string())))?;
-    let part = S::part_from_bytes(&b[16 + len..]).map_err(|e| bad(&e))?;
+    let part = S::part_from_bytes(body).map_err(|e| bad(&e))?;
     let Shard { format, version, kind, key, spec, ranges, .. } = head;
     Ok(Shard { format, version, kind, key, spec, ranges, part })
 }
