@@ -18,6 +18,7 @@ mod chapter_5;
 mod experiments;
 mod markdown;
 mod monte_carlo;
+mod own_hull;
 mod peer_code;
 mod rows;
 mod runs;
@@ -33,6 +34,7 @@ use crate::chapter_4::{table_4_1, table_4_2};
 use crate::chapter_5::{chapter_5, table_5_7};
 use crate::experiments::wigley_iii_experiments;
 use crate::monte_carlo::{excess_energy, table_5_8};
+use crate::own_hull::own_hull;
 use crate::peer_code::pdstrip_rows;
 use crate::rows::within;
 use crate::runs::{head_seas, run, startup_to};
@@ -278,6 +280,7 @@ pub fn sections(size: Size) -> Result<Vec<Section>, String> {
         table_5_7(&st25)?,
         ch5,
         t58,
+        own_hull()?,
         excess_energy(size)?,
         analytic,
         second_order_and_fuel(&hs_base)?,
@@ -315,7 +318,7 @@ mod tests {
     }
 
     /// The report's source files, every module of this crate that makes rows or text.
-    const SOURCES: [&str; 13] = [
+    const SOURCES: [&str; 14] = [
         include_str!("lib.rs"),
         include_str!("analytic.rs"),
         include_str!("as_printed.rs"),
@@ -325,6 +328,7 @@ mod tests {
         include_str!("experiments.rs"),
         include_str!("markdown.rs"),
         include_str!("monte_carlo.rs"),
+        include_str!("own_hull.rs"),
         include_str!("peer_code.rs"),
         include_str!("rows.rs"),
         include_str!("runs.rs"),
