@@ -670,24 +670,24 @@ fn submerged(sc: &serde_json::Value) -> f64 {
 fn depth(b: &mut Book, sc: &serde_json::Value, end: f64) -> (usize, f64, f64) {
     let port = b.stat(&HR[..1], Stat::Min, 0.0, end);
     let stbd = b.stat(&HR[1..], Stat::Min, 0.0, end);
-    let both = b.stat(HR, Stat::Min, 0.0, end);
     let n = onsets(b.run.trace, submerged(sc));
     let on = b.push(Fact::Onsets { count: n });
+    // The stern picture draws the port propeller: it shows the port shaft's lowest moment.
     b.say(
         format!(
-            "h/R went down to {} on the port shaft and {} on the starboard shaft ({} s in: the live picture shows that moment).",
+            "h/R went down to {} on the port shaft ({} s in: the stern picture shows the port propeller then) and to {} on the starboard shaft.",
             f(port.1, 2),
-            f(stbd.1, 2),
-            f(both.2, 1)
+            f(port.2, 1),
+            f(stbd.1, 2)
         ),
-        &[port.0, stbd.0, both.0],
+        &[port.0, stbd.0],
     );
     if n == 0 {
         b.say("The propellers never lost thrust to the surface in this run.".into(), &[on]);
     } else {
         b.say(format!("Surface losses started {n} time{}: each time a propeller draws air or breaks the surface it loses thrust, its load drops and its motor races.", if n == 1 { "" } else { "s" }), &[on]);
     }
-    both
+    port
 }
 
 fn waves(b: &mut Book, sc: &serde_json::Value, sea: f64, end: f64) -> Explanation {
@@ -695,7 +695,12 @@ fn waves(b: &mut Book, sc: &serde_json::Value, sea: f64, end: f64) -> Explanatio
     let m_lo = b.stat(&["im_power_pu"], Stat::Min, 0.0, end);
     let m_hi = b.stat(&["im_power_pu"], Stat::Max, 0.0, end);
     b.say(
-        format!("The motors' power moved between {} and {} pu of their 38 MW rating as the waves changed the propellers' load.", f(m_lo.1, 2), f(m_hi.1, 2)),
+        format!(
+            "The motors' power moved between {} and {} pu of their {} MW rating as the waves changed the propellers' load.",
+            f(m_lo.1, 2),
+            f(m_hi.1, 2),
+            f(number(sc, "plant.motor.rated_power_w") / 1e6, 0)
+        ),
         &[m_lo.0, m_hi.0],
     );
     let (to, relation, why) = if sea >= 5.0 {
@@ -910,7 +915,7 @@ fn bus(b: &mut Book, sc: &serde_json::Value, kp: f64, ki: f64, end: f64) -> Expl
     }
     if let Some(w) = b.run.summary.warnings.iter().find(|w| w.starts_with("bus voltage")) {
         b.say(
-            format!("The red warning says the same: {w}. That dip is this lesson's subject, not a fault of the page."),
+            format!("The plant's health check marks it, and the bus blocks of the drive-train picture turn red while the bus is outside its band: {w}. That dip is what this lesson is about."),
             &[bi],
         );
     }
