@@ -145,7 +145,9 @@ await check('Back and Forward inside a lesson restore its values, plot and words
   await idle(p);
   await p.click('#lesson-a0');
   await done(p);
-  const state = async () => ({ value: await p.inputValue('#lesson-commands-1-heading_deg'), words: await p.textContent('#lesson-observe .lesson-explain'), plot: await firstSeries(p), hash: await p.evaluate(() => location.hash) });
+  // The run's own lines (the faint one is whichever run was shown before).
+  const ownLines = () => p.$eval('#plots .chart', (c) => JSON.stringify(c.uplot.data.slice(1).filter((_, i) => !/kept run/.test(c.uplot.series[i + 1].label))));
+  const state = async () => ({ value: await p.inputValue('#lesson-commands-1-heading_deg'), words: await p.textContent('#lesson-observe .lesson-explain'), plot: await ownLines(), hash: await p.evaluate(() => location.hash) });
   const s0 = await state();
   let lat = await latencyNow(p);
   await keyStep(p, '#lesson-commands-1-heading_deg');
@@ -327,6 +329,46 @@ await check('a lesson link with non-default values opens to the same numbers', a
   await q.click('#lesson-lab');
   await q.waitForFunction(() => !document.body.classList.contains('lesson') && document.getElementById('preset').value === 'turn-90', null, { timeout: 10000 });
   assert(await q.isVisible('#lessons-link'), 'no way from the Lab to the lessons');
+  await ctx.close();
+});
+
+await check('one value per lesson: the page says the words the native claim check gives (aes-sim lesson)', async () => {
+  assert(existsSync(native), `no native ${native}`);
+  const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  const VALUES = { power: 'commands.0.speed_kn=20', waves: 'sea.sea_state=4', turn: 'commands.1.heading_deg=45', braking: 'plant.dc_link.brake_resistor_ohm=0', bus: 'controllers.field.kp=0.001', sign: 'seakeeping.stern_motion=thesis_eq_2_57' };
+  for (const [name, value] of Object.entries(VALUES)) {
+    const p = await openPage(ctx, `${base}#lesson=${name}&${value}`, base, errors);
+    await idle(p);
+    await p.click('#lesson-skip');
+    await p.waitForFunction(() => document.querySelector('#lesson-observe .lesson-explain'), null, { timeout: 60000 });
+    const page = await p.textContent('#lesson-observe .lesson-explain');
+    const words = execFileSync(native, ['lesson', name, '--value', value], { encoding: 'utf8' }).split('\n')[1];
+    assert(page === words, `${name} ${value}:\n page:   ${page}\n native: ${words}`);
+    await p.close();
+  }
+  await ctx.close();
+});
+
+await check('outside the lessons (issue 43): Reset with a refused value still being typed restores the study and enables Run; presentation mode at 1920x1080 shows What to watch and the first plot', async () => {
+  const ctx = await browser.newContext({ viewport: { width: 1920, height: 1080 } });
+  const p = await openPage(ctx, `${base}#v=2&preset=head-seas-ss6`, base, errors);
+  const sel = '#f-sea-sea_state';
+  await p.$eval(sel, (e) => { for (let d = e.closest('details'); d; d = d.parentElement.closest('details')) d.open = true; });
+  for (const commit of [true, false]) {
+    await p.fill(sel, '1');
+    if (commit) { await p.dispatchEvent(sel, 'change'); await p.waitForFunction((s) => document.querySelector(s).getAttribute('aria-invalid') === 'true', sel, { timeout: 10000 }); }
+    await p.click('#reset');
+    await p.waitForTimeout(500);
+    const [v, invalid, run, modified] = [await p.inputValue(sel), await p.$eval(sel, (e) => e.getAttribute('aria-invalid')), await p.$eval('#run', (e) => e.disabled), await p.isVisible('#modified')];
+    assert(v === '6' && !invalid && !run && !modified, `Reset ${commit ? 'after' : 'while'} typing 1: field ${v}, invalid ${invalid}, Run disabled ${run}, modified shown ${modified}`);
+  }
+  await p.click('#run');
+  await done(p);
+  await p.click('#present');
+  await p.waitForTimeout(800);
+  const watch = await onScreen(p, '#watch'), plot = await onScreen(p, '#plots .plot');
+  assert(watch.bottom <= 1080 && plot.top + 0.5 * (plot.bottom - plot.top) <= 1080, `presenting: What to watch ends at ${Math.round(watch.bottom)}, the first plot spans ${Math.round(plot.top)} to ${Math.round(plot.bottom)} px`);
+  await p.screenshot({ path: `${shots}/lab-presenting-1920x1080.png` });
   await ctx.close();
 });
 

@@ -395,6 +395,9 @@ $('form').addEventListener('submit', (e) => e.preventDefault());
 $('preset').addEventListener('change', () => selectStudy($('preset').value));
 $('run').addEventListener('click', () => run());
 $('cancel').addEventListener('click', cancel);
+// A press on Reset keeps the focus where it is: a value being typed is not committed first (its
+// error would appear and move Reset from under the pointer before the click).
+$('reset').addEventListener('pointerdown', (e) => e.preventDefault());
 $('reset').addEventListener('click', () => {
   if (!form) return;
   validating++; // a check of the values left behind must not mark the study's own

@@ -54,7 +54,8 @@ const handlers = {
       }
       // A lesson's run: its explanation from the same finished run (core's output::lessons).
       const lesson = m.lesson ? JSON.parse(run.lessonExplain(m.lesson.name, JSON.stringify(m.lesson.values))) : undefined;
-      return [{ summary: JSON.parse(run.summaryJson()), columns, csv: run.traceCsv(), wall_ms: performance.now() - t0, constants: constantsOf(m.scenario), lesson }, transfer];
+      // (A lesson has no export: its run skips the CSV text.)
+      return [{ summary: JSON.parse(run.summaryJson()), columns, csv: m.lesson ? '' : run.traceCsv(), wall_ms: performance.now() - t0, constants: constantsOf(m.scenario), lesson }, transfer];
     } finally {
       run.free();
     }

@@ -121,8 +121,16 @@ export class LessonView {
     const at = () => c.stops[Number(input.value)];
     // While dragging: the label follows the thumb and a preview run follows (views/lessons.js
     // throttles it); on release or a key step, the settled run.
-    input.addEventListener('input', () => { out.textContent = text(at()); input.setAttribute('aria-valuetext', out.textContent); this.current[c.path] = at(); this.onChange(c.path, at(), false); });
-    input.addEventListener('change', () => { this.current[c.path] = at(); this.onChange(c.path, at(), true); });
+    // A key step fires both at once: its preview is dropped for the settled run.
+    let later = null;
+    input.addEventListener('input', () => {
+      out.textContent = text(at());
+      input.setAttribute('aria-valuetext', out.textContent);
+      this.current[c.path] = at();
+      clearTimeout(later);
+      later = setTimeout(() => this.onChange(c.path, at(), false), 0);
+    });
+    input.addEventListener('change', () => { clearTimeout(later); this.current[c.path] = at(); this.onChange(c.path, at(), true); });
     return el('div', { className: 'lesson-control' }, label, input, out);
   }
 

@@ -16,6 +16,7 @@ let meta = []; // the wasm's lessonMeta
 let pending = null; // a run asked for while one was in flight: {settled}; the last asked wins
 const answered = new Set(); // lessons answered in this visit: Back and Forward do not ask again
 let opening = 0; // the latest open: an older one still waiting for the worker gives way
+let settledAt = 0; // when the control was released (the latency runs from there, waits included)
 
 const getPath = (o, path) => path.split('.').reduce((x, k) => (x == null ? undefined : x[k]), o);
 const labHref = (form) => linkHash(form.name, form.preset(), form.scenario);
@@ -98,9 +99,19 @@ function explainShown(ctx) {
   const res = getResult();
   const { lesson } = ctx;
   if (!lesson || !res || !res.columns || res.study !== lesson.def.preset || !res.lesson) return;
-  if (lessons.isAnswered) lessons.explain(res.lesson);
   // The screen stays where the hand is: the control being moved and the plot do not scroll away.
-  ctx.live.place({ at: res.lesson.at_s, speed: 2 }, { scroll: false });
+  if (lessons.isAnswered) {
+    lessons.explain(res.lesson);
+    ctx.live.pause();
+    ctx.live.place({ at: res.lesson.at_s, speed: 2 }, { scroll: false });
+    return;
+  }
+  // Before the answer the default run plays from its start, about half a minute through (held
+  // still where the system asks for reduced motion).
+  const t = res.summary.final_time_s;
+  ctx.live.place({ at: 0, speed: Math.max(1, t / 30) }, { scroll: false }).then(() => {
+    if (!matchMedia('(prefers-reduced-motion: reduce)').matches && ctx.lesson && !lessons.isAnswered) ctx.live.start();
+  });
 }
 
 // A lesson's run: the settled one before stays drawn faintly; at most one in flight, the last
@@ -111,7 +122,8 @@ async function lessonRun(ctx, settled = true) {
   if (isBusy()) { pending = { settled: settled || (pending && pending.settled) }; return; }
   const r = getResult();
   if (settled || !ctx.kept) ctx.kept = r && r.columns && !r.preview ? { name: 'the run before', columns: r.columns, summary: r.summary } : ctx.kept;
-  const asked = performance.now();
+  const asked = settledAt || performance.now();
+  if (settled) settledAt = 0;
   const { def } = ctx.lesson;
   // A preview while dragging runs the start of the story, short enough for several a second (the
   // last settled run's pace); the release runs it whole, with its words.
@@ -121,7 +133,7 @@ async function lessonRun(ctx, settled = true) {
   if (res && res.columns && ctx.lesson) {
     res.preview = !settled;
     if (settled) {
-      window.__lessonLatencyMs = performance.now() - asked; // for the browser test: control to plot
+      window.__lessonLatencyMs = performance.now() - asked; // for the browser test: release to plot
       explainShown(ctx);
     } else window.__lessonPreviews = (window.__lessonPreviews || 0) + 1;
   }
@@ -156,7 +168,10 @@ registerView({
           if (c.kind === 'toggle') for (const [q, y] of c.settings[c.values.indexOf(String(x))] || []) setPath(form.scenario, q, y);
         }
         // A settled value is a step in the history (Back returns to the one before).
-        if (settled) history.pushState({ shown: null }, '', lessons.hash(ctx.lesson.defaults));
+        if (settled) {
+          settledAt = performance.now();
+          history.pushState({ shown: null }, '', lessons.hash(ctx.lesson.defaults));
+        }
         lessonRun(ctx, settled);
       },
       // The default run is there (or on its way): its plots and words now show.
