@@ -89,6 +89,17 @@ fn signal(name: &str) -> Result<aes_core::signals::Signal, JsError> {
         .ok_or_else(|| JsError::new(&format!("no signal named '{}'", name.chars().take(40).collect::<String>())))
 }
 
+/// A run that stopped, in words for the page: why nothing new is drawn and what to try.
+fn stopped(e: &aes_core::SimError) -> String {
+    match e {
+        aes_core::SimError::Diverged { .. } => format!(
+            "{e}. The run stopped: its numbers left the range the model holds, so there is nothing new to draw. \
+             What to try: a speed nearer the study's own, a calmer sea or a shorter run; Reset brings the study's values back."
+        ),
+        _ => e.to_string(),
+    }
+}
+
 /// A run in progress, advanced in chunks so a worker can report progress and honour cancel.
 #[wasm_bindgen]
 pub struct Run {
@@ -123,7 +134,7 @@ impl Run {
         let Some(sim) = self.sim.as_mut() else {
             return Ok(1.0);
         };
-        sim.advance(steps as u64).map_err(|e| JsError::new(&e.to_string()))?;
+        sim.advance(steps as u64).map_err(|e| JsError::new(&stopped(&e)))?;
         if sim.done() {
             if let Some(sim) = self.sim.take() {
                 let r = sim.finish();

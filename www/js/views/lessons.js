@@ -28,9 +28,14 @@ function placeLive(inLesson) {
   else $('plots').before($('live'));
 }
 
+const SEEN = 'aes-sim-lessons-seen';
+function seenLessons() { try { return localStorage.getItem(SEEN) === '1'; } catch (_) { return true; } }
+
 // Shows the lessons' index or one lesson (parsed: readLessonHash's answer).
 async function openLesson(ctx, parsed) {
   const { form } = ctx;
+  try { localStorage.setItem(SEEN, '1'); } catch (_) { /* private mode: the link stays */ }
+  $('start-here-box').hidden = true;
   const mine = ++opening;
   ctx.selectTab('tab-sim', false, false);
   // The lessons are not the Simulator tab: no tab is marked current, the Lessons link is.
@@ -155,6 +160,8 @@ registerView({
   ready(ctx, m) {
     const { form } = ctx;
     meta = m.lessons;
+    // Until the lessons have been opened once, the Lab shows the way to them first.
+    $('start-here-box').hidden = seenLessons();
     lessons = new LessonView(meta, {
       // path null: several values set at once ("Set it" of Try this next).
       onChange: (path, v, settled) => {
