@@ -171,6 +171,8 @@ fn check_words(e: &Explanation, what: &str) {
             ("stayed within", Relation::About),
             ("back at", Relation::More),
             ("stalled", Relation::Less),
+            ("moved between", Relation::More),
+            ("held at", Relation::About),
         ] {
             if text.contains(word) {
                 assert!(

@@ -27,7 +27,8 @@ pub fn run(a: Args) -> Result<(), Failure> {
         return Ok(());
     };
     let names: Vec<&str> = lessons::lessons().iter().map(|l| l.name).collect();
-    let l = lessons::lesson(&name).ok_or_else(|| format!("no lesson named '{}' (try: {})", shorten(&name), names.join(", ")))?;
+    let l = lessons::lesson(&name)
+        .ok_or_else(|| format!("no lesson named '{}' (try: {})", shorten(&name), names.join(", ")))?;
     let mut given = Vec::new();
     for v in &a.values {
         given.push(v.split_once('=').ok_or_else(|| format!("--value '{}': expected PATH=VALUE", shorten(v)))?);
@@ -37,7 +38,8 @@ pub fn run(a: Args) -> Result<(), Failure> {
         eprintln!("refused: {r}");
     }
     let r = aes_core::run(&o.scenario).map_err(|e| e.to_string())?;
-    let e = lessons::explain(&l, &o.values, &lessons::Run { scenario: &o.scenario, trace: &r.trace, summary: &r.summary });
+    let e =
+        lessons::explain(&l, &o.values, &lessons::Run { scenario: &o.scenario, trace: &r.trace, summary: &r.summary });
     if a.json {
         return emit_json(&e);
     }

@@ -68,6 +68,8 @@ pub struct Lesson {
 }
 
 const SPEED_KN: &str = "initial.speed_kn";
+/// The top of the `waves` lesson's hub slider [m] (the hub 3.0 m deep at the 5415's draft).
+const HUB_TOP_M: f64 = 3.15;
 const ORDER_KN: &[&str] = &["commands.0.speed_kn"];
 
 fn slider(path: &'static str, label: &'static str, unit: &'static str, lo: f64, hi: f64, step: f64) -> Control {
@@ -119,7 +121,7 @@ pub fn lessons() -> Vec<Lesson> {
             story: "The ship steams into waves. Each propeller sits under the stern; when a wave trough passes over it, the water above it thins and the propeller can draw air or break the surface, and it loses thrust. h/R (the hub's depth over the propeller's radius) says how deep it is: below 1 its disc breaks the surface.",
             controls: vec![
                 slider("sea.sea_state", "Sea state (2: smooth, 6: very rough)", "", 2.0, 6.0, 1.0),
-                slider("ship.hull.hub_above_base_m", "Propeller hub above the keel", "m", 0.15, 3.15, 0.25),
+                slider("ship.hull.hub_above_base_m", "Propeller hub above the keel", "m", 0.15, HUB_TOP_M, 0.25),
                 speed(10.0, 30.0),
             ],
             question: "Raise the propeller hub (a lighter ship rides higher). Will the propeller draw air more often, less often, or as often?",
@@ -579,7 +581,7 @@ pub fn explain(l: &Lesson, values: &serde_json::Map<String, serde_json::Value>, 
     let end = b.end;
     match l.name {
         "power" => power(&mut b, num("commands.0.speed_kn"), end),
-        "waves" => waves(&mut b, &sc, num("sea.sea_state"), end),
+        "waves" => waves(&mut b, &sc, num("sea.sea_state"), num("ship.hull.hub_above_base_m"), end),
         "turn" => turn(&mut b, &sc, num("commands.1.heading_deg"), num(SPEED_KN), end),
         "braking" => braking(&mut b, &sc, text("plant.dc_link.brake_resistor_ohm") == "1", num(SPEED_KN), end),
         "bus" => bus(&mut b, &sc, num("controllers.field.kp"), num("controllers.field.ki"), end),
@@ -690,33 +692,47 @@ fn depth(b: &mut Book, sc: &serde_json::Value, end: f64) -> (usize, f64, f64) {
     port
 }
 
-fn waves(b: &mut Book, sc: &serde_json::Value, sea: f64, end: f64) -> Explanation {
+fn waves(b: &mut Book, sc: &serde_json::Value, sea: f64, hub: f64, end: f64) -> Explanation {
     let low = depth(b, sc, end);
     let m_lo = b.stat(&["im_power_pu"], Stat::Min, 0.0, end);
     let m_hi = b.stat(&["im_power_pu"], Stat::Max, 0.0, end);
-    b.say(
-        format!(
-            "The motors' power moved between {} and {} pu of their {} MW rating as the waves changed the propellers' load.",
-            f(m_lo.1, 2),
-            f(m_hi.1, 2),
-            f(number(sc, "plant.motor.rated_power_w") / 1e6, 0)
-        ),
-        &[m_lo.0, m_hi.0],
-    );
-    let (to, relation, why) = if sea >= 5.0 {
-        (3.0, Relation::More, "the waves are much lower and the lowest h/R rises: the propellers stay deeper")
+    let rating = f(number(sc, "plant.motor.rated_power_w") / 1e6, 0);
+    // A swing under 0.01 pu is "held": the words then say so instead of quoting equal numbers.
+    if b.compare((m_hi.0, m_hi.1), (m_lo.0, m_lo.1), 0.01) == Relation::More {
+        let i = b.last();
+        b.say(
+            format!(
+                "The motors' power moved between {} and {} pu of their {rating} MW rating as the waves changed the propellers' load.",
+                f(m_lo.1, 2),
+                f(m_hi.1, 2)
+            ),
+            &[m_lo.0, m_hi.0, i],
+        );
     } else {
-        (6.0, Relation::Less, "the waves are much higher and the lowest h/R falls")
+        let i = b.last();
+        b.say(format!("The motors' power held at {} pu of their {rating} MW rating: these waves hardly change the propellers' load.", f(m_hi.1, 2)), &[m_lo.0, m_hi.0, i]);
+    }
+    // The lesson's question is the hub's height: half a metre up (down from the top of its
+    // span) moves the whole h/R line by about 0.5 m over the propeller's radius.
+    let (to, relation, words) = if hub + 0.5 <= HUB_TOP_M {
+        (hub + 0.5, Relation::Less, "Raise the hub to {} m (a lighter ship): the whole h/R line moves down, and the propellers come nearer the surface.")
+    } else {
+        (
+            hub - 0.5,
+            Relation::More,
+            "Lower the hub to {} m (a heavier ship): the whole h/R line moves up, and the propellers stay deeper.",
+        )
     };
     let next = Next {
-        text: format!("Set the sea state to {}: {}.", f(to, 0), why),
-        set: vec![("sea.sea_state", value_text(to))],
+        text: words.replace("{}", &value_text(to)),
+        set: vec![("ship.hull.hub_above_base_m", value_text(to))],
         promise: Promise {
             measure: Measure::Stat { signals: HR.to_vec(), stat: Stat::Min, from_s: 0.0 },
             relation,
-            by: 0.05,
+            by: 0.1,
         },
     };
+    let _ = sea;
     b.done(None, "One run cannot answer a question about a change: move the hub and compare the new run with the faint earlier one.".into(), next, low.2)
 }
 
@@ -965,19 +981,20 @@ fn sign(b: &mut Book, sc: &serde_json::Value, printed: bool, sea: f64, end: f64)
     let (by, much) =
         if sea <= 3.0 { (0.01, " a little (the stern hardly moves in these low waves)") } else { (0.05, "") };
     let (to, words, relation) = if printed {
-        ("consistent", format!("let the stern rise with the waves: the lowest h/R rises{much}"), Relation::More)
+        (
+            "consistent",
+            format!("Switch to the stern rising and falling with the waves: the lowest h/R rises{much}."),
+            Relation::More,
+        )
     } else {
-        ("thesis_eq_2_57", format!("use the thesis' printed sign: the lowest h/R falls{much}"), Relation::Less)
+        ("thesis_eq_2_57", format!("Switch to the thesis' printed sign: the lowest h/R falls{much}."), Relation::Less)
     };
     b.say(
         if printed { "This run uses the printed sign: the stern's motion adds to the wave's instead of cancelling it, so the hub seems to swing more." } else { "This run lets the stern follow the waves: its motion cancels much of the wave's, so the hub stays at about the same depth." }.into(),
         &[],
     );
     let next = Next {
-        text: format!(
-            "Switch the formula to {}: {words}.",
-            if printed { "the consistent one" } else { "the thesis' printed one" }
-        ),
+        text: words,
         set: vec![("seakeeping.stern_motion", to.into())],
         promise: Promise {
             measure: Measure::Stat { signals: HR.to_vec(), stat: Stat::Min, from_s: 0.0 },
