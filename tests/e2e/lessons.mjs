@@ -63,7 +63,7 @@ for (const [w, h] of SIZES) {
     const p = await openPage(ctx, `${base}#lessons`, base, errors);
     const LESSONS = (await p.$$eval('.lesson-list a', (a) => a.map((x) => x.getAttribute('href').slice('#lesson='.length)))).map((name) => ({ name }));
     assert(LESSONS.length >= 6, `the index lists ${LESSONS.length} lessons`);
-    assert(await p.isVisible('.start-here'), 'no "Start here" on the index');
+    assert(await p.isVisible('#lesson-box .start-here'), 'no "Start here" on the index');
     const current = await p.$$eval('#tabs [aria-selected="true"]', (t) => t.length);
     assert(current === 0, 'the lessons index marks a tab as current');
     if (w === 1366) await p.screenshot({ path: `${shots}/lessons-index.png` });

@@ -196,7 +196,13 @@ async function onReady(m) {
   follow(false);
   setPhase('idle');
   status(restored ? 'Your last edits are back.' : 'Ready. Choose a study and press Run.');
-  if (ok) tabWork(ok);
+  if (ok) { tabWork(ok); return; }
+  // A plain first visit opens alive: the default study's run, its drive train playing (held still
+  // where the system asks for reduced motion).
+  if (!restored && !linked) {
+    await run({ focus: false });
+    if (getResult() && !matchMedia('(prefers-reduced-motion: reduce)').matches) live.place({ at: 0, speed: 10 }, { scroll: false }).then(() => live.start());
+  }
 }
 
 // After an accepted edit: the scenario is checked at once (errors at the field, Run waits), and

@@ -133,8 +133,9 @@ pub fn lessons() -> Vec<Lesson> {
             name: "turn",
             title: "A turn costs power",
             preset: "turn-90",
-            // Long enough for the largest turn (180 deg at about 0.5 deg/s) to finish.
-            set: &[("sim.duration_s", "420")],
+            // The largest turn (180 deg) finishes inside the run: turning at 0.8 deg/s (the study's
+            // 0.5 would need 420 s; the autopilot holds 0.88 deg/s at the slider's lowest 17 kn).
+            set: &[("sim.duration_s", "270"), ("controllers.autopilot.turn_rate_deg_s", "0.8")],
             story: "The ship steams straight at a steady speed; at 10 s the autopilot orders a new heading and the rudder turns the ship. The speed order stays the same all the time.",
             controls: vec![
                 slider("commands.1.heading_deg", "Turn to heading", "deg", 15.0, 180.0, 15.0),
