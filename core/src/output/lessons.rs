@@ -932,7 +932,7 @@ fn bus(b: &mut Book, sc: &serde_json::Value, kp: f64, ki: f64, end: f64) -> Expl
     }
     if let Some(w) = b.run.summary.warnings.iter().find(|w| w.starts_with("bus voltage")) {
         b.say(
-            format!("The plant's health check marks it, and the bus blocks of the drive-train picture turn red while the bus is outside its band: {w}. That dip is what this lesson is about."),
+            format!("The red LOW on the bus blocks is the plant's health check: {w}."),
             &[bi],
         );
     }
