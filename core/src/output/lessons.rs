@@ -931,10 +931,7 @@ fn bus(b: &mut Book, sc: &serde_json::Value, kp: f64, ki: f64, end: f64) -> Expl
         );
     }
     if let Some(w) = b.run.summary.warnings.iter().find(|w| w.starts_with("bus voltage")) {
-        b.say(
-            format!("The red LOW on the bus blocks is the plant's health check: {w}."),
-            &[bi],
-        );
+        b.say(format!("The red LOW on the bus blocks is the plant's health check: {w}."), &[bi]);
     }
     let run_level = b.push(Fact::Level { name: "turbines' minimum running speed [pu]", value: TURBINE_MIN_RUNNING_PU });
     let stalled = Relation::of(tu.1, TURBINE_MIN_RUNNING_PU, 0.0) == Relation::Less;
