@@ -139,6 +139,26 @@ for (const [w, h] of SIZES) {
   });
 }
 
+await check('on a phone a rerun leaves the screen where the hand is: the slider being moved does not scroll away (issue 43)', async () => {
+  const ctx = await browser.newContext({ viewport: { width: 390, height: 844 }, hasTouch: true });
+  const p = await openPage(ctx, `${base}#lesson=waves`, base, errors);
+  await idle(p);
+  await p.click('#lesson-a0');
+  await done(p);
+  const id = '#lesson-sea-sea_state';
+  await p.$eval(id, (e) => e.scrollIntoView({ block: 'center' }));
+  const y0 = await p.evaluate(() => window.scrollY);
+  const top0 = await p.$eval(id, (e) => e.getBoundingClientRect().top);
+  const lat = await latencyNow(p);
+  await keyStep(p, id);
+  await rerun(p, lat);
+  await p.waitForTimeout(300);
+  const y1 = await p.evaluate(() => window.scrollY);
+  const top1 = await p.$eval(id, (e) => e.getBoundingClientRect().top);
+  assert(Math.abs(top1 - top0) <= 2, `the slider moved on the screen from ${Math.round(top0)} to ${Math.round(top1)} px (scroll ${Math.round(y0)} -> ${Math.round(y1)})`);
+  await ctx.close();
+});
+
 await check('Back and Forward inside a lesson restore its values, plot and words (issue 43)', async () => {
   const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 } });
   const p = await openPage(ctx, `${base}#lesson=turn`, base, errors);
