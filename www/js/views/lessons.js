@@ -148,7 +148,7 @@ async function lessonRun(ctx, settled = true) {
 
 // Simulated seconds of a preview: a run of about PREVIEW_MS at the pace of the run shown (whole
 // seconds; at least a tenth of the story, at most all of it).
-const PREVIEW_MS = 150;
+const PREVIEW_MS = 120;
 function previewSeconds(r, full) {
   if (!r || !r.summary || !r.wallMs) return full;
   const pace = r.summary.final_time_s / r.wallMs;
