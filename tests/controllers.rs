@@ -14,6 +14,7 @@ fn stats(r: &aes_core::RunResult, name: &str) -> aes_core::sim::TraceStats {
 /// full ahead is small, and the compensator is tuned with equal weights (turbine speed weight 1).
 fn on_table_5_ship(mut sc: aes_core::Scenario) -> aes_core::Scenario {
     sc.as_printed.table_5_ship = true;
+    sc.hull.forces = aes_core::ship::maneuvering::ManeuveringForces::Table23;
     sc.controllers.lqg_ltr.turbine_speed_weight = 1.0;
     sc
 }

@@ -1,8 +1,14 @@
-//! Thesis ch. 2.4 and 5.2: the Abkowitz maneuvering model and the routine maneuvering studies
-//! (acceleration, AC braking, heading changes). Figures are printed with `--nocapture`.
+//! Thesis ch. 2.4 and 5.2: the Abkowitz maneuvering model (Table 2.3's hull forces) and the routine
+//! maneuvering studies (acceleration, AC braking, heading changes). Figures are printed with `--nocapture`.
 
 use aes_core::numerics::units::kn_to_m_s;
-use aes_core::scenario::presets::preset;
+
+/// A preset with the thesis' hull forces (Table 2.3), which these tests check.
+fn preset(name: &str) -> Option<aes_core::Scenario> {
+    let mut s = aes_core::scenario::presets::preset(name)?;
+    s.hull.forces = aes_core::ship::maneuvering::ManeuveringForces::Table23;
+    Some(s)
+}
 use aes_core::ship::maneuvering::{Abkowitz, AbkowitzCoefficients};
 use aes_tests::{final_value, run};
 

@@ -76,6 +76,10 @@ enum Cmd {
     /// `--trial-range ... --partial`) into the study's summary. Reads one shard at a time: memory
     /// does not grow with their number.
     Merge(cmd::merge::Args),
+    /// The standard maneuvers of a scenario's ship (IMO MSC.137(76)): the 35 degree turning circle,
+    /// the 10/10 and 20/20 zig-zags, a coasting stop and the hull's static drift and pure yaw
+    /// forces, with IMO's verdicts; JSON (`--markdown` for the booklet's tables).
+    Maneuvers(cmd::maneuvers::Args),
     /// The fuel study of ch. 5.2.4 (Fig. 5-12): fuel power of one prime mover in regular head and
     /// bow seas of 1 to 5 ft over wave frequency; JSON rows on standard output.
     Fuel(cmd::fuel::Args),
@@ -109,6 +113,7 @@ fn real_main() -> Result<(), Failure> {
         Cmd::Merge(a) => cmd::merge::run(a),
         Cmd::FuelPerMile(a) => cmd::fuel_per_mile::run(a),
         Cmd::Fuel(a) => cmd::fuel::run(a),
+        Cmd::Maneuvers(a) => cmd::maneuvers::run(a),
         Cmd::Validate(a) => cmd::validate::run(a),
         Cmd::Bench(a) => cmd::bench::run(a),
     }

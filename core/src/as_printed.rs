@@ -203,6 +203,7 @@ mod tests {
         let mut sc = crate::scenario::presets::head_seas_ss6();
         sc.as_printed.motor_p_is_poles = true;
         sc.as_printed.table_5_ship = true;
+        sc.hull.forces = crate::ship::maneuvering::ManeuveringForces::Table23;
         // The refusal names the switch before the motor's ratings.
         let e = crate::run(&sc).unwrap_err().to_string();
         assert!(e.contains("as_printed.motor_p_is_poles is on"), "{e}");

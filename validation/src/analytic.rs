@@ -4,9 +4,9 @@
 
 use crate::rows::row;
 use crate::runs::mc;
+use crate::runs::thesis_preset as preset;
 use crate::svg_plot::{Panel, Plot, Series};
 use crate::{Figure, Row, Section, Size, Tolerance};
-use aes_core::scenario::presets::preset;
 use aes_core::scenario::SternMotion;
 
 pub(crate) fn analytic(size: Size, st: &aes_core::RunResult) -> Result<Section, String> {

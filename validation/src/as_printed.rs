@@ -2,10 +2,10 @@
 //! inconsistencies, each run as printed beside the corrected run.
 
 use crate::rows::{explained, thesis_f64, thesis_text};
+use crate::runs::thesis_preset as preset;
 use crate::runs::{head_seas, points, run, startup_to, table_2_3_model};
 use crate::svg_plot::{Panel, Plot, Series};
 use crate::{Figure, Section};
-use aes_core::scenario::presets::preset;
 use aes_core::scenario::SternMotion;
 
 /// Surface-effect onsets in a run: the times beta_T falls below 1 from 1.

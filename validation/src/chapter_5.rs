@@ -5,10 +5,10 @@
 use crate::rows::{
     calibrated, explained, open, reference, reference_pct, row, seeded, thesis_f64, thesis_text, Thesis,
 };
+use crate::runs::thesis_preset as preset;
 use crate::runs::{measure, points, run, seed_runs, startup_to, table_5_resistance_ratio, SEEDS};
 use crate::svg_plot::{Panel, Plot, Series};
 use crate::{Figure, Section, Spread, Tolerance};
-use aes_core::scenario::presets::preset;
 use aes_core::scenario::SternMotion;
 use aes_core::studies::thesis_values;
 

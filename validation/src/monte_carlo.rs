@@ -2,10 +2,10 @@
 //! the excess energy (ch. 5.4.1).
 
 use crate::rows::{explained, open, reference, row, thesis_f64, thesis_text};
+use crate::runs::thesis_preset as preset;
 use crate::runs::{mc, run};
 use crate::svg_plot::{Panel, Plot, Series};
 use crate::{Figure, Kind, Section, Size, Tolerance};
-use aes_core::scenario::presets::preset;
 use aes_core::scenario::Scenario;
 use aes_core::scenario::SternMotion;
 

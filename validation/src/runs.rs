@@ -1,10 +1,18 @@
 //! The runs the sections share: a scenario run with its name in the error, the ch. 5.3 head-seas
 //! run, the start-up to a speed, a run over seeds, a Monte Carlo study, and a trace column as points.
 
-use aes_core::scenario::presets::preset;
 use aes_core::scenario::Scenario;
 use aes_core::scenario::SternMotion;
 use aes_core::studies::montecarlo::run_study;
+
+/// A preset as the thesis ran it: with the maneuvering model's hull forces of Table 2.3
+/// (`hull.forces = "table_2_3"`), which the thesis' ch. 5 rows compare; the presets themselves sail
+/// the hull's own model.
+pub(crate) fn thesis_preset(name: &str) -> Option<Scenario> {
+    let mut sc = aes_core::scenario::presets::preset(name)?;
+    sc.hull.forces = aes_core::ship::maneuvering::ManeuveringForces::Table23;
+    Some(sc)
+}
 
 /// A trace column as (t, y) points, y scaled.
 pub(crate) fn points(r: &aes_core::RunResult, name: &str, scale: f64) -> Result<Vec<(f64, f64)>, String> {
@@ -46,7 +54,7 @@ pub(crate) fn head_seas(
     ap: aes_core::as_printed::AsPrintedParams,
     stern: SternMotion,
 ) -> Result<aes_core::RunResult, String> {
-    let mut sc = preset("head-seas-ss6").ok_or("no preset")?;
+    let mut sc = thesis_preset("head-seas-ss6").ok_or("no preset")?;
     sc.set_hub_depth_m(6.0);
     sc.as_printed = ap;
     sc.seakeeping.stern_motion = stern;

@@ -2,9 +2,9 @@
 //! (ch. 5.1, 5.2.4).
 
 use crate::rows::{calibrated, explained, reference, reference_pct, row, seeded, thesis_f64, thesis_text, Thesis};
+use crate::runs::thesis_preset as preset;
 use crate::runs::{measure, run, seed_runs};
 use crate::{Kind, Section, Tolerance};
-use aes_core::scenario::presets::preset;
 use aes_core::scenario::Scenario;
 use aes_core::scenario::SternMotion;
 

@@ -7,6 +7,7 @@ pub mod fuel_per_mile;
 pub mod health;
 pub mod ips;
 pub mod lesson;
+pub mod maneuvers;
 pub mod mc;
 pub mod merge;
 pub mod operability;

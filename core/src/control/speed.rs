@@ -31,6 +31,13 @@ crate::params! {
             source: "our design: a tight turn at 25 kn needs about +25 %",
             help: "Largest trim as a fraction of the mapped shaft speed.",
         },
+        /// At low speed a share of the map is too little for a seaway: into sea state 6 at 4 kn the
+        /// waves' mean added resistance (about 0.5 MN) needs about 80 rpm against the map's 32.
+        pub trim_floor_rpm: f64 = 80.0 => {
+            label: "Smallest speed trim span", unit: "rpm", range: 0.0..=1000.0,
+            source: "our design: holds 4 kn into sea state 6 head seas",
+            help: "The trim may always reach this many rpm, whatever the share of the map allows.",
+        },
         /// 5 rpm/s keeps the turbines' load rise within their slew limit.
         pub shaft_ramp_rpm_per_s: f64 = 5.0 => {
             label: "Shaft ramp", unit: "rpm/s", range: 0.0..=1.0e4, group: "controllers",
@@ -58,8 +65,10 @@ pub const MAP_TOP_KN: f64 = 40.0;
 pub struct SpeedController {
     /// PI trim in SI: [rad/s of shaft per m/s], [rad/s per m]; its integrator is the trim [rad/s].
     pub pi: DiscretePi,
-    /// Largest trim as a fraction of the mapped shaft speed [-].
+    /// Largest trim as a fraction of the mapped shaft speed [-], and at least `trim_floor`
+    /// [rad/s].
     pub trim_limit: f64,
+    pub trim_floor: f64,
     /// Ramp limit of the shaft speed reference [rad/s^2]; 0 for none.
     pub ramp: f64,
     pub max_shaft_speed: f64,
@@ -82,6 +91,7 @@ impl SpeedController {
         SpeedController {
             pi: DiscretePi::new(p.kp_rpm_per_kn * rpm_per_kn, p.ki_rpm_per_kn_s * rpm_per_kn, 0.0),
             trim_limit: p.trim_limit,
+            trim_floor: rpm_to_rad_s(p.trim_floor_rpm),
             ramp: rpm_to_rad_s(p.shaft_ramp_rpm_per_s),
             max_shaft_speed: rpm_to_rad_s(p.max_shaft_rpm),
             shaft_ref: 0.0,
@@ -113,7 +123,7 @@ impl SpeedController {
             }
         };
         let err_u = u_cmd - u;
-        let trim_max = self.trim_limit * map;
+        let trim_max = (self.trim_limit * map).max(self.trim_floor);
         let unsat = self.pi.unsaturated(err_u);
         let trim = unsat.clamp(-trim_max, trim_max);
         let target = (map + trim).clamp(0.0, self.max_shaft_speed);

@@ -1,6 +1,6 @@
 //! Linear interpolation, the one module for it: tables on a grid (RAO tables, the seaway's RAO
 //! slices), on a uniform grid (the calm-water shaft-speed map), along a curve given by points (the
-//! turbine part-load curve, a station's half-breadths).
+//! turbine part-load curve, a station's half-breadths), and the two-column tables embedded as CSV.
 
 /// The segment of increasing `grid` holding `x` and the fraction along it: `(j, f)` with
 /// x = grid[j] + f (grid[j+1] - grid[j]); held at the ends (f = 0 below, (n-2, 1) above); a NaN
@@ -55,6 +55,18 @@ pub fn uniform(table: &[f64], step: f64, x: f64) -> f64 {
 /// [a, b]: the caller extrapolates on purpose).
 pub fn point_slope(a: f64, ya: f64, b: f64, yb: f64, x: f64) -> f64 {
     ya + (yb - ya) * (x - a) / (b - a)
+}
+
+/// The (x, y) points of a two-column CSV table embedded with its source: lines starting with `#`
+/// and the header (any line whose columns are not both numbers) are skipped.
+pub fn csv_points(text: &str) -> Vec<(f64, f64)> {
+    text.lines()
+        .filter(|l| !l.starts_with('#'))
+        .filter_map(|l| {
+            let (a, b) = l.split_once(',')?;
+            Some((a.trim().parse().ok()?, b.trim().parse().ok()?))
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -6,14 +6,7 @@ const CURVE: &str = include_str!("../../data/gas_turbine_part_load.csv");
 
 /// The part-load curve: (power fraction, efficiency / rated efficiency), increasing fraction.
 pub fn part_load_curve() -> Vec<(f64, f64)> {
-    CURVE
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.starts_with("power"))
-        .filter_map(|l| {
-            let (a, b) = l.split_once(',')?;
-            Some((a.trim().parse().ok()?, b.trim().parse().ok()?))
-        })
-        .collect()
+    crate::numerics::interp::csv_points(CURVE)
 }
 
 /// Efficiency ratio at power fraction `f`: linear interpolation; below the curve's first point

@@ -369,6 +369,16 @@ impl crate::params::CrossCheck for Scenario {
                 "waves need hull.model = \"maneuvering\"",
             );
         }
+        if self.as_printed.table_5_ship
+            && self.hull.model == HullModelKind::Maneuvering
+            && self.hull.forces == crate::ship::maneuvering::ManeuveringForces::OwnHull
+        {
+            v.fail(
+                "as_printed.table_5_ship",
+                "true",
+                "Tables 5.1 and 5.5's ship (L 180 m) goes with the thesis' hull forces: hull.forces = \"table_2_3\"",
+            );
+        }
         self.validate_steps(v);
         self.validate_work(v);
     }

@@ -282,6 +282,7 @@ pub fn as_printed() -> Scenario {
         ..Default::default()
     };
     s.seakeeping.stern_motion = crate::scenario::SternMotion::ThesisEq257;
+    s.hull.forces = crate::ship::maneuvering::ManeuveringForces::Table23;
     s
 }
 

@@ -112,6 +112,21 @@ crate::params! {
             label: "Rudder from the AP", unit: "m", empty: "the hull's own (custom: 0.022 Lpp)",
             source: "5415: 3.1 m (our choice)", help: "Rudders' distance forward of the aft perpendicular (its lever in eq. 2.19).",
         },
+        /// Custom: the rule of thumb A = T L (1 + 25 (B/L)^2) / 100 for all rudders (Det Norske
+        /// Veritas' minimum), shared by the two.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub rudder_area_m2: Option<f64> = None => {
+            label: "Rudder area (each)", unit: "m²", empty: "the hull's own (custom: DNV's minimum)",
+            source: "5415: 15.4 m² each, twin spade rudders (SIMMAN 2014's 5415M at full scale)",
+            help: "Lateral area of each of the two rudders (the hull's own maneuvering model).",
+        },
+        /// Custom: 0.7 T.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub rudder_span_m: Option<f64> = None => {
+            label: "Rudder span", unit: "m", empty: "the hull's own (custom: 0.7 T)",
+            source: "5415: 4.0 m (our estimate: geometric aspect ratio 1.04)",
+            help: "Height of each rudder; with the area it sets the aspect ratio and so the lift slope.",
+        },
     }
 }
 
@@ -129,6 +144,8 @@ struct Embedded {
     shaft_y_m: [f64; N_SHAFTS],
     hub_above_base_m: f64,
     rudder_x_m: f64,
+    rudder_area_m2: f64,
+    rudder_span_m: f64,
 }
 
 /// The DTMB 5415 at its design draft with the SIMMAN 2014 mass properties (KG 7.555 m,
@@ -148,6 +165,8 @@ fn dtmb5415() -> Embedded {
         shaft_y_m: [5.0, -5.0],
         hub_above_base_m: 0.15,
         rudder_x_m: 3.1,
+        rudder_area_m2: 15.4,
+        rudder_span_m: 4.0,
     }
 }
 
@@ -169,6 +188,8 @@ fn wigley() -> Embedded {
         shaft_y_m: [2.6, -2.6],
         hub_above_base_m: 0.15,
         rudder_x_m: 2.2,
+        rudder_area_m2: rule_rudder_area(100.0, 10.0, 6.25),
+        rudder_span_m: 0.7 * 6.25,
     }
 }
 
@@ -210,6 +231,9 @@ pub struct ShipHull {
     pub hub_depth_m: f64,
     /// Rudder aft of the centre of gravity [m] (x_p of eqs. 2.19, 2.26-2.27).
     pub rudder_x_aft_m: f64,
+    /// Each rudder's lateral area [m^2] and span [m] (the hull's own maneuvering model).
+    pub rudder_area_m2: f64,
+    pub rudder_span_m: f64,
     pub rho: f64,
     /// Every input of `strip_ship` as text, made once (the RAO cache's key; a custom hull's
     /// offsets make it long, and clones share it).
@@ -322,6 +346,9 @@ impl HullSpec {
         let shaft_y = self.shaft_y_m.or(emb.as_ref().map(|e| e.shaft_y_m)).unwrap_or([0.26 * beam, -0.26 * beam]);
         let hub_z = pick(self.hub_above_base_m, emb.as_ref().map(|e| e.hub_above_base_m), 0.024 * draft);
         let rudder_x = pick(self.rudder_x_m, emb.as_ref().map(|e| e.rudder_x_m), x_min + 0.022 * lpp);
+        let rudder_area =
+            pick(self.rudder_area_m2, emb.as_ref().map(|e| e.rudder_area_m2), rule_rudder_area(lpp, beam, draft));
+        let rudder_span = pick(self.rudder_span_m, emb.as_ref().map(|e| e.rudder_span_m), 0.7 * draft);
         let hull = ShipHull {
             name: self.name.clone(),
             draft_m: draft,
@@ -335,6 +362,8 @@ impl HullSpec {
             shaft_y_m: shaft_y,
             hub_depth_m: draft - hub_z,
             rudder_x_aft_m: hs.lcb - rudder_x,
+            rudder_area_m2: rudder_area,
+            rudder_span_m: rudder_span,
             hydrostatics: hs,
             offsets,
             rho,
@@ -392,12 +421,21 @@ impl HullSpec {
             v.range(&format!("shaft_y_m.{i}"), *y, -b, b);
         }
         v.range("hub_above_base_m", t - h.hub_depth_m, -t, t);
+        v.range("rudder_area_m2", h.rudder_area_m2, 0.001 * l * t, 0.1 * l * t);
+        v.range("rudder_span_m", h.rudder_span_m, 0.1 * t, 2.0 * t);
         if v.is_ok() {
             if let Err(e) = h.strip_ship_check() {
                 v.fail("offsets_csv", format!("{} stations", h.offsets.stations.len()), e);
             }
         }
     }
+}
+
+/// Each of two rudders' area [m^2] by Det Norske Veritas' minimum for all rudders of a ship of
+/// length `l`, beam `b` and draft `t` [m]: T L (1 + 25 (B/L)^2) / 100 (the 5415 by it: 6.3 m^2
+/// each; a destroyer carries more, 15.4).
+fn rule_rudder_area(l: f64, b: f64, t: f64) -> f64 {
+    0.5 * t * l * (1.0 + 25.0 * (b / l) * (b / l)) / 100.0
 }
 
 /// The draft at which `offsets` displace `mass` [kg] in water of density `rho`, by bisection

@@ -17,6 +17,7 @@
 //! - X_vvu, X_rru are the terms eq. 2.22 prints as X_vvv v^2 du and X_rrr r^2 du.
 
 use crate::checks::Validator;
+pub use crate::ship::hull_forces::HullForces;
 use crate::ship::rudder::{rudder_force, stern_inflow, RudderParams};
 use serde::{Deserialize, Serialize};
 
@@ -91,17 +92,6 @@ pub struct Abkowitz {
     inv22: [[f64; 2]; 2],
     /// The sway-yaw block itself [kg, kg m; kg m, kg m^2].
     pub m22: [[f64; 2]; 2],
-}
-
-/// Hydrodynamic hull forces [N] and yaw moment [N m] (the f of eq. 2.20 without thrust and rudder).
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct HullForces {
-    pub x: f64,
-    pub y: f64,
-    pub n: f64,
-    /// The straight-running part of `x`: q (X_0 + X_u du + X_uu du^2 + X_uuu du^3) [N], the
-    /// kayak's resistance curve (the rest of `x` comes from sway and yaw).
-    pub x_straight: f64,
 }
 
 impl Abkowitz {
@@ -260,6 +250,12 @@ crate::params! {
             label: "Hull model", source: "ch. 2.3 (surge), ch. 2.4 (maneuvering)", group: "ship",
             help: "Straight line only, or turns with a rudder.",
         },
+        /// The hull's own model (sectional.rs) unless the thesis' Table 2.3 is asked for.
+        pub forces: ManeuveringForces = ManeuveringForces::OwnHull => {
+            label: "Maneuvering forces", source: "our model from the hull's sections, or the thesis' Table 2.3", group: "ship",
+            help: "The hull's own model holds from rest to full speed; Table 2.3 is the thesis' (kayak tests, about 17 to 32 kn).",
+        },
+        pub own: crate::ship::sectional::OwnHullParams = crate::ship::sectional::OwnHullParams::default() => {},
         pub abkowitz: AbkowitzCoefficients = AbkowitzCoefficients::default() => {},
         pub linearization_speed_kn: f64 = 22.0 => {
             label: "Expansion speed u0", unit: "kn", range: 1.0..=40.0, source: "ch. 2.4",
@@ -294,6 +290,16 @@ crate::choices! {
         /// Abkowitz 3-DOF maneuvering (eqs. 2.17-2.25) with the rudder; in surge it hands over
         /// smoothly to the surge model below `hull.handover_low_kn`.
         Maneuvering = "maneuvering", "maneuvering: 3 DOF with rudder (ch. 2.4)",
+    }
+}
+
+crate::choices! {
+    /// Where the maneuvering model's hull forces come from.
+    pub enum ManeuveringForces {
+        /// The hull's own sections (sectional.rs): dimensional, from rest to full speed.
+        OwnHull = "own_hull", "the hull's own sections (0 to 30 kn)",
+        /// Table 2.3's Abkowitz expansion (eqs. 2.17-2.25), as the thesis' ch. 5.2 runs.
+        Table23 = "table_2_3", "Table 2.3 (the thesis' kayak tests)",
     }
 }
 

@@ -28,6 +28,13 @@ pub const MOTOR_AT_LIMIT_FOR_S: f64 = 30.0;
 /// [`DISK_AT_SURFACE_H_OVER_R`]) before a warning [-].
 pub const PROPELLER_EMERGED_SHARE: f64 = 0.5;
 
+/// The speed order is held when the mean speed over the last [`SPEED_HELD_OVER_S`] of the run is
+/// within the larger of [`SPEED_HELD_KN`] and [`SPEED_HELD_SHARE`] of it (the order in force all
+/// that time, and the run at least twice as long).
+pub const SPEED_HELD_OVER_S: f64 = 60.0;
+pub const SPEED_HELD_KN: f64 = 2.0;
+pub const SPEED_HELD_SHARE: f64 = 0.2;
+
 /// The upper edge of the bus voltage's allowed band [pu of the set point]: the top of the brake
 /// chopper's band (`plant.dc_link.brake_on_pu` + `brake_band_pu`).
 pub fn bus_high_pu(sc: &Scenario) -> f64 {
@@ -94,6 +101,19 @@ pub fn checks() -> Vec<CheckInfo> {
             ),
             reason: "the hub is too shallow for the sea (or for the ship's loading): the propeller works \
                      emerged and ventilated most of the time, which no design accepts",
+        },
+        CheckInfo {
+            name: "speed order not held",
+            threshold: format!(
+                "the mean ship speed over the run's last {SPEED_HELD_OVER_S} s further from the order than \
+                 {SPEED_HELD_KN} kn or {:.0} % of it, whichever is larger (runs of at least {} s whose last order \
+                 came before that minute)",
+                SPEED_HELD_SHARE * 100.0,
+                2.0 * SPEED_HELD_OVER_S
+            ),
+            reason: "the speed loop cannot give the order: the plant's power is not enough (the motors at their \
+                     limit), its trim is at its limit, or the waves' mean push carries the ship faster than \
+                     ordered with the propellers stopped (the loop never reverses them)",
         },
         CheckInfo {
             name: "shaft overspeed",
@@ -266,6 +286,10 @@ pub fn assess(sc: &Scenario, trace: &Trace, tracked: &Tracked) -> Vec<String> {
         .collect();
     push_per_shaft(&mut out, &props, ["port propeller", "starboard propeller"], "both propellers");
 
+    if let Some(w) = speed_not_held(t, trace, &motors) {
+        out.push(w);
+    }
+
     let limit = sc.controllers.speed.max_shaft_rpm;
     for (k, sig) in [Signal::PropRpm1, Signal::PropRpm2].into_iter().enumerate() {
         let col = trace.get(sig);
@@ -280,6 +304,45 @@ pub fn assess(sc: &Scenario, trace: &Trace, tracked: &Tracked) -> Vec<String> {
         }
     }
     out
+}
+
+/// The "speed order not held" finding, with its likely cause in words (`motors`: the slip-limit
+/// findings per motor).
+fn speed_not_held(t: &[f64], trace: &Trace, motors: &[String]) -> Option<String> {
+    let end = t[t.len() - 1];
+    if end - t[0] < 2.0 * SPEED_HELD_OVER_S {
+        return None;
+    }
+    let (cmd, speed) = (trace.get(Signal::SpeedCmdKn), trace.get(Signal::ShipSpeedKn));
+    let from = t.partition_point(|&x| x < end - SPEED_HELD_OVER_S);
+    let order = cmd[cmd.len() - 1];
+    if cmd[from..].iter().any(|&c| c != order) {
+        return None;
+    }
+    let mean = |col: &[f64]| col[from..].iter().sum::<f64>() / (col.len() - from) as f64;
+    let got = mean(speed);
+    let band = SPEED_HELD_KN.max(SPEED_HELD_SHARE * order.abs());
+    if (got - order).abs() <= band {
+        return None;
+    }
+    let why = if got > order && mean(trace.get(Signal::PropRpmRef)) < 1.0 {
+        format!(
+            "the waves carry the ship: their mean push of {:.0} kN is more than the hull's resistance at the order, \
+             and the speed loop stops the propellers but never reverses them",
+            -mean(trace.get(Signal::AddedResistanceN)) / 1e3
+        )
+    } else if got < order && motors.iter().any(|m| !m.is_empty()) {
+        "the order is beyond the plant's power (the motors at their limit)".to_string()
+    } else {
+        format!(
+            "the speed loop's trim is at its limit (shaft reference {:.0} rpm)",
+            mean(trace.get(Signal::PropRpmRef))
+        )
+    };
+    Some(format!(
+        "speed order not held: {got:.1} kn over the last {SPEED_HELD_OVER_S:.0} s against {order:.1} kn ordered \
+         (allowed {band:.1} kn either way): {why}"
+    ))
 }
 
 #[cfg(test)]

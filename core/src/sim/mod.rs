@@ -393,7 +393,11 @@ impl Simulation {
             if let Some(kn) = cmd.speed_kn {
                 self.speed_cmd = kn_to_m_s(kn);
                 let h = &self.scenario.hull;
-                if h.model == HullModelKind::Maneuvering && kn > 0.0 && (kn < h.handover_low_kn || kn > 32.0) {
+                if h.model == HullModelKind::Maneuvering
+                    && h.forces == crate::ship::maneuvering::ManeuveringForces::Table23
+                    && kn > 0.0
+                    && (kn < h.handover_low_kn || kn > 32.0)
+                {
                     self.warnings.push(format!(
                         "commands.{}.speed_kn = {kn}: the maneuvering model is trusted from {} to about 32 knots \
                          (fitted at 11 and {} knots); below {} knots surge follows the surge model",
@@ -486,7 +490,7 @@ impl Simulation {
             c.tracked.slip_limit[s].sample(c.held.slip[s] >= limit, t_now, ts);
         }
         // Heading: the reference ramps to the target; the autopilot steers the rudder.
-        if matches!(p.hull, plant::Hull::Maneuvering { .. }) {
+        if p.hull.turns() {
             let gap = c.psi_target - c.psi_ref;
             let rate = c.heading_rate.min(max_turn_rate);
             let r_ref = if rate > 0.0 && gap.abs() > rate * ts {

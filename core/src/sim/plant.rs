@@ -13,8 +13,9 @@ use crate::plant::motor::{InductionMotor, MotorPoint};
 use crate::plant::prime_mover::GasTurbine;
 use crate::plant::propeller::{Conditions, FourQuadrant, OpenWater, PropellerLoad};
 use crate::scenario::{HullModelKind, PropellerModelKind, RectifierKind, Scenario};
-use crate::ship::maneuvering::{handover_weight, Abkowitz};
+use crate::ship::maneuvering::{handover_weight, Abkowitz, ManeuveringForces};
 use crate::ship::rudder::{rudder_force, stern_inflow, Inflow, RudderParams};
+use crate::ship::sectional::OwnHull;
 use crate::ship::surge::Surge;
 use std::f64::consts::PI;
 
@@ -238,6 +239,17 @@ pub enum Hull {
     /// on top; with `eq_2_22_straight` (the thesis' ship, `as_printed.table_5_ship`) eq. 2.22's
     /// own polynomial X_0 + X_u du + ..., handed over from eq. 2.15 between `lo` and `hi` [m/s].
     Maneuvering { abkowitz: Box<Abkowitz>, rudder: RudderParams, x_p: f64, eq_2_22_straight: bool, lo: f64, hi: f64 },
+    /// The hull's own model (ship/sectional.rs): from rest to full speed, its rudders in the
+    /// propellers' slipstream; straight-line resistance eq. 2.15's. The propellers' inflow is
+    /// taken `x_p` [m] aft of G, as the Table 2.3 model's.
+    Own { model: Box<OwnHull>, x_p: f64 },
+}
+
+impl Hull {
+    /// True for the 3-DOF models (heading, rudder and autopilot).
+    pub fn turns(&self) -> bool {
+        !matches!(self, Hull::Surge)
+    }
 }
 
 /// Model constants of the whole drive train.
@@ -287,9 +299,13 @@ impl Plant {
         // The hull's length, mass and rudder lever (or Tables 5.1/5.5's, as_printed.table_5_ship).
         let body = sc.ship_hull()?.rigid_body(&sc.as_printed);
         let surge = Surge::new(&sc.ship, body.mass_kg);
-        let hull = match sc.hull.model {
-            HullModelKind::Surge => Hull::Surge,
-            HullModelKind::Maneuvering => Hull::Maneuvering {
+        let hull = match (sc.hull.model, sc.hull.forces) {
+            (HullModelKind::Surge, _) => Hull::Surge,
+            (HullModelKind::Maneuvering, ManeuveringForces::OwnHull) => {
+                let own = OwnHull::new(&sc.ship_hull()?, &sc.hull.own, surge.mass_total, sc.propeller.diameter_m)?;
+                Hull::Own { model: Box::new(own), x_p: body.rudder_x_aft_m }
+            }
+            (HullModelKind::Maneuvering, ManeuveringForces::Table23) => Hull::Maneuvering {
                 abkowitz: Box::new(Abkowitz::new(
                     &sc.hull.abkowitz,
                     sc.hull.symmetric_hull,
@@ -305,7 +321,7 @@ impl Plant {
             },
         };
         let surge_mass = match &hull {
-            Hull::Surge => surge.mass_total,
+            Hull::Surge | Hull::Own { .. } => surge.mass_total,
             Hull::Maneuvering { abkowitz, .. } => abkowitz.m11,
         };
         let v_ref = sc.bus_voltage_ref_v();
@@ -369,7 +385,7 @@ impl Plant {
                     let w = handover_weight(u, *lo, *hi);
                     (1.0 - w) * self.surge.resistance(u) - w * abkowitz.forces(u, 0.0, 0.0).x
                 }
-                Hull::Maneuvering { .. } => self.surge.resistance(u),
+                Hull::Maneuvering { .. } | Hull::Own { .. } => self.surge.resistance(u),
             }
     }
 
@@ -442,6 +458,11 @@ impl Plant {
             Hull::Surge => Inflow { speed: u, angle: 0.0, sin: 0.0, cos: 1.0 },
             // One x_p for the rudder and the propellers' inflow, as eqs. 2.26-2.27.
             Hull::Maneuvering { x_p, .. } => stern_inflow(u, v, r, *x_p),
+            // Astern the propellers meet the water from behind (the four-quadrant series).
+            Hull::Own { x_p, .. } => {
+                let i = stern_inflow(u, v, r, *x_p);
+                Inflow { speed: if u < 0.0 { -i.speed } else { i.speed }, ..i }
+            }
         }
     }
 
@@ -566,6 +587,18 @@ impl Plant {
                 dx[YAW_RATE] = rd;
                 -(x_hull + fx_r + h.sea.wave_fx)
             }
+            Hull::Own { model, .. } => {
+                let f = model.forces(u, v, r);
+                let each = thrust / N_SHAFTS as f64;
+                let (fx_r, fy_r, n_r) =
+                    model.rudders.forces(self.rho, v, r, self.surge.advance_speed(u), each, h.rudder);
+                let x_hull = -self.surge.resistance(u) + f.x - self.extra_resistance;
+                dx[SURGE] = (thrust + x_hull + fx_r + h.sea.wave_fx) / self.surge_mass;
+                let (vd, rd) = model.sway_yaw_acceleration(f.y + fy_r + h.sea.wave_fy, f.n + n_r + h.sea.wave_mz);
+                dx[SWAY] = vd;
+                dx[YAW_RATE] = rd;
+                -(x_hull + fx_r + h.sea.wave_fx)
+            }
         };
         let (sp, cp) = heading_sin_cos(x[HEADING], heading);
         dx[X_POS] = u * cp - v * sp; // eq. 2.25
@@ -610,9 +643,13 @@ impl Plant {
             e += 0.5 * self.shaft_inertia * x[omega_rm(s)] * x[omega_rm(s)];
         }
         e += 0.5 * self.surge_mass * x[SURGE] * x[SURGE];
-        if let Hull::Maneuvering { abkowitz, .. } = &self.hull {
-            // Sway and yaw, with the symmetric part of the eq. 2.21 mass block.
-            let m = &abkowitz.m22;
+        let block = match &self.hull {
+            Hull::Maneuvering { abkowitz, .. } => Some(&abkowitz.m22),
+            Hull::Own { model, .. } => Some(&model.m22),
+            Hull::Surge => None,
+        };
+        if let Some(m) = block {
+            // Sway and yaw, with the symmetric part of the mass block (eq. 2.21).
             let (v, r) = (x[SWAY], x[YAW_RATE]);
             e += 0.5 * (m[0][0] * v * v + (m[0][1] + m[1][0]) * v * r + m[1][1] * r * r);
         }

@@ -7,6 +7,7 @@ pub mod controller;
 pub mod fuel;
 pub mod fuel_per_mile;
 pub mod ips;
+pub mod maneuvers;
 pub mod montecarlo;
 pub mod operability;
 pub mod rare;

@@ -1,0 +1,87 @@
+//! `aes-sim maneuvers`: the standard maneuvers booklet (IMO MSC.137(76)) of a scenario's ship.
+
+use crate::common::{emit_json, load, Failure};
+use aes_core::studies::maneuvers::{booklet, Booklet};
+
+// The command line of `aes-sim maneuvers`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Scenario (file, `-` or `preset:NAME`); its first speed order is the approach speed.
+    #[arg(default_value = "preset:turn-360")]
+    file: String,
+    /// Override one parameter (repeatable).
+    #[arg(long = "set", value_name = "PATH=VALUE")]
+    sets: Vec<String>,
+    /// The booklet as Markdown tables instead of JSON.
+    #[arg(long)]
+    markdown: bool,
+    /// Leave the tracks (every 0.1 s of each maneuver) out of the JSON.
+    #[arg(long)]
+    no_tracks: bool,
+}
+
+pub fn run(Args { file, sets, markdown, no_tracks }: Args) -> Result<(), Failure> {
+    let sc = load(&file, &sets)?;
+    let mut b = booklet(&sc)?;
+    if markdown {
+        print!("{}", to_markdown(&b));
+        return Ok(());
+    }
+    if no_tracks {
+        b.turning.track.clear();
+        b.zigzag_10.track.clear();
+        b.zigzag_20.track.clear();
+    }
+    aes_core::checks::check_finite(&b)?;
+    emit_json(&b)?;
+    Ok(())
+}
+
+/// The booklet as a newcomer reads it: the maneuvers in metres and ship lengths, IMO's verdicts,
+/// the captive tables.
+pub fn to_markdown(b: &Booklet) -> String {
+    let l = b.length_m;
+    let t = &b.turning;
+    let mut s = format!(
+        "Maneuvers of `{}` ({} forces, L = {:.1} m) from {:.1} kn with the shafts held at {:.0} rpm.\n\n",
+        b.scenario, b.model, l, b.approach_kn, b.shaft_rpm
+    );
+    s += "| maneuver | value | in ship lengths |\n|---|---|---|\n";
+    for (name, m) in [
+        ("advance (35 deg turn)", t.advance_m),
+        ("transfer", t.transfer_m),
+        ("tactical diameter", t.tactical_diameter_m),
+        ("steady turning diameter", t.steady_diameter_m),
+        ("coasting to 5 kn, track reach", b.coasting.track_reach_m),
+    ] {
+        s += &format!("| {name} | {m:.0} m | {:.2} L |\n", m / l);
+    }
+    s += &format!("| speed in the steady turn | {:.0} % of the approach speed | |\n", 100.0 * t.speed_ratio);
+    s += &format!(
+        "| 10/10 zig-zag overshoots | {:.1} deg, {:.1} deg | |\n",
+        b.zigzag_10.first_overshoot_deg, b.zigzag_10.second_overshoot_deg
+    );
+    s += &format!(
+        "| 20/20 zig-zag overshoots | {:.1} deg, {:.1} deg | |\n\n",
+        b.zigzag_20.first_overshoot_deg, b.zigzag_20.second_overshoot_deg
+    );
+    s += "| IMO MSC.137(76) criterion | ours | limit | verdict |\n|---|---|---|---|\n";
+    for c in &b.criteria {
+        s += &format!(
+            "| {} | {:.2} {} | {:.2} {} | {} |\n",
+            c.name,
+            c.value,
+            c.unit,
+            c.limit,
+            c.unit,
+            if c.pass { "pass" } else { "fail" }
+        );
+    }
+    if !b.static_drift.is_empty() {
+        s += "\nStatic drift and pure yaw at the approach speed (rudders at 0 deg, propellers at the approach thrust): Y' = Y / (1/2 rho L T U^2), N' = N / (1/2 rho L^2 T U^2).\n\n| drift [deg] | r' | Y' | N' |\n|---|---|---|---|\n";
+        for r in b.static_drift.iter().chain(&b.pure_yaw) {
+            s += &format!("| {:.0} | {:.1} | {:.5} | {:.5} |\n", r.drift_deg, r.r_prime, r.y_prime, r.n_prime);
+        }
+    }
+    s
+}

@@ -1,0 +1,316 @@
+//! Standard maneuvers of a scenario's ship, as a trials booklet gives them (IMO resolution
+//! MSC.137(76), "Standards for ship manoeuvrability", and its explanatory notes MSC/Circ.1053):
+//! the 35 degree turning circle, the 10/10 and 20/20 zig-zags with the initial turning ability, a
+//! coasting stop, and a static drift and pure yaw table of the hull's own forces, the way captive
+//! model tests are reported.
+//!
+//! The hull moves under the scenario's maneuvering model with its propellers held at the shaft
+//! speed that carries the approach speed in calm water (constant rpm: a trial's engine setting),
+//! the thrust following the ship's speed through the propellers' open-water curves; the rudder
+//! moves at the steering gear's swing rate. The drive train is not simulated here: these are the
+//! hull's and rudders' answers, which the booklet is about.
+
+use crate::numerics::units::{kn_to_m_s, m_s_to_kn};
+use crate::numerics::Integrator;
+use crate::scenario::Scenario;
+use crate::ship::hull::N_SHAFTS;
+use crate::sim::plant::{Held, Hull, Plant, State, HEADING, NX, SURGE, SWAY, X_POS, YAW_RATE, Y_POS};
+use serde::Serialize;
+
+/// Time step of the maneuvers [s] (the hull's slowest motions take tens of seconds).
+const DT_S: f64 = 0.1;
+/// Longest maneuver [s].
+const MAX_S: f64 = 1800.0;
+/// Hard-over rudder of the turning circle [deg] (IMO).
+pub const TURNING_RUDDER_DEG: f64 = 35.0;
+/// Coasting stops at this speed [kn].
+const STOPPED_KN: f64 = 5.0;
+
+/// One sample of a maneuver: time [s], position [m] (north, east), heading [deg], speed [kn],
+/// rudder [deg] (positive turns to starboard, as a booklet plots it).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Sample {
+    pub t_s: f64,
+    pub x_m: f64,
+    pub y_m: f64,
+    pub heading_deg: f64,
+    pub speed_kn: f64,
+    pub rudder_deg: f64,
+}
+
+/// The turning circle to starboard with 35 degrees of rudder.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Turning {
+    pub advance_m: f64,
+    pub transfer_m: f64,
+    pub tactical_diameter_m: f64,
+    pub steady_diameter_m: f64,
+    /// Steady speed over the approach speed [-].
+    pub speed_ratio: f64,
+    pub steady_yaw_rate_deg_s: f64,
+    pub track: Vec<Sample>,
+}
+
+/// A zig-zag (`rudder_deg` / `rudder_deg`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ZigZag {
+    pub rudder_deg: f64,
+    pub first_overshoot_deg: f64,
+    pub second_overshoot_deg: f64,
+    /// Distance run from the rudder order until the heading has changed by `rudder_deg` [m].
+    pub initial_turning_m: f64,
+    pub track: Vec<Sample>,
+}
+
+/// Coasting from the approach speed with the propellers stopped.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Coasting {
+    pub to_kn: f64,
+    pub track_reach_m: f64,
+    pub time_s: f64,
+}
+
+/// A row of the captive table: drift angle [deg] or r' = r L / U, and the side force and yaw
+/// moment of the hull with its rudders at 0 deg and the propellers at the approach speed's
+/// thrust, as Y' = Y / ((1/2) rho L T U^2), N' = N / ((1/2) rho L^2 T U^2).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CaptiveRow {
+    pub drift_deg: f64,
+    pub r_prime: f64,
+    pub y_prime: f64,
+    pub n_prime: f64,
+}
+
+/// One IMO criterion and whether the ship meets it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Criterion {
+    pub name: String,
+    pub value: f64,
+    pub limit: f64,
+    pub unit: String,
+    pub pass: bool,
+}
+
+/// The booklet.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Booklet {
+    pub scenario: String,
+    pub model: String,
+    pub length_m: f64,
+    pub approach_kn: f64,
+    pub shaft_rpm: f64,
+    pub turning: Turning,
+    pub zigzag_10: ZigZag,
+    pub zigzag_20: ZigZag,
+    pub coasting: Coasting,
+    pub static_drift: Vec<CaptiveRow>,
+    pub pure_yaw: Vec<CaptiveRow>,
+    pub criteria: Vec<Criterion>,
+}
+
+/// The hull moving at a fixed shaft speed.
+struct Trial {
+    plant: Plant,
+    omega: f64,
+    u0: f64,
+    rate: f64,
+}
+
+impl Trial {
+    fn thrust(&self, x: &State) -> f64 {
+        let inflow = self.plant.inflow(x[SURGE], x[SWAY], x[YAW_RATE]);
+        N_SHAFTS as f64 * self.plant.propeller_load(self.omega, inflow.speed).thrust_n
+    }
+
+    /// Runs from straight running at the approach speed; `order(t, heading change [deg],
+    /// speed [m/s])` gives the rudder order [rad, positive to starboard] or None to stop.
+    fn run(&self, propelled: bool, mut order: impl FnMut(f64, f64, f64) -> Option<f64>) -> Vec<Sample> {
+        let mut x: State = [0.0; NX];
+        x[SURGE] = self.u0;
+        let mut h = Held {
+            throttle: [0.0; crate::sim::plant::N_SETS],
+            field_voltage: [0.0; crate::sim::plant::N_SETS],
+            slip: [0.0; N_SHAFTS],
+            rudder: 0.0,
+            sea: Default::default(),
+        };
+        let mut out = Vec::new();
+        let mut t = 0.0;
+        while t <= MAX_S {
+            let speed = libm::hypot(x[SURGE], x[SWAY]);
+            let change = x[HEADING].to_degrees();
+            out.push(Sample {
+                t_s: t,
+                x_m: x[X_POS],
+                y_m: x[Y_POS],
+                heading_deg: change,
+                speed_kn: m_s_to_kn(speed),
+                rudder_deg: -h.rudder.to_degrees(),
+            });
+            let Some(want) = order(t, change, speed) else { break };
+            // Our rudder turns to port when positive.
+            let step = self.rate * DT_S;
+            h.rudder += (-want - h.rudder).clamp(-step, step);
+            let psi0 = x[HEADING];
+            let heading = (psi0, libm::sin(psi0), libm::cos(psi0));
+            Integrator::Rk4.step(&mut x, t, DT_S, |_, y, dx| {
+                let thrust = if propelled { self.thrust(y) } else { 0.0 };
+                self.plant.hull_derivatives(y, &h, thrust, heading, dx);
+            });
+            if !x.iter().all(|v| v.is_finite()) {
+                break;
+            }
+            t += DT_S;
+        }
+        out
+    }
+}
+
+/// The turning circle from a track: advance and transfer at 90 degrees of heading change,
+/// tactical diameter at 180, steady diameter and speed from the last full turn.
+fn turning(track: Vec<Sample>, u0_kn: f64) -> Result<Turning, String> {
+    let at = |deg: f64| track.iter().position(|s| s.heading_deg >= deg);
+    let (Some(i90), Some(i180)) = (at(90.0), at(180.0)) else {
+        return Err("the ship did not turn through 180 degrees with 35 degrees of rudder".into());
+    };
+    let last = track[track.len() - 1];
+    let (rate, speed) = {
+        let k = track.iter().position(|s| s.t_s >= last.t_s - 60.0).unwrap_or(0);
+        let a = track[k];
+        ((last.heading_deg - a.heading_deg) / (last.t_s - a.t_s), 0.5 * (a.speed_kn + last.speed_kn))
+    };
+    Ok(Turning {
+        advance_m: track[i90].x_m,
+        transfer_m: track[i90].y_m,
+        tactical_diameter_m: track[i180].y_m,
+        steady_diameter_m: 2.0 * kn_to_m_s(speed) / rate.to_radians(),
+        speed_ratio: speed / u0_kn,
+        steady_yaw_rate_deg_s: rate,
+        track,
+    })
+}
+
+/// A zig-zag of `deg` / `deg` from a run that reverses the rudder at each heading check.
+fn zigzag(trial: &Trial, deg: f64) -> ZigZag {
+    let mut sign = 1.0;
+    let mut reversals = 0;
+    let track = trial.run(true, |_, change, _| {
+        if sign * change >= deg {
+            sign = -sign;
+            reversals += 1;
+        }
+        (reversals < 4).then_some(sign * deg.to_radians())
+    });
+    // The overshoots are the extremes of heading between the checks.
+    let first_check = track.iter().position(|s| s.heading_deg >= deg).unwrap_or(track.len() - 1);
+    let second_check = track[first_check..].iter().position(|s| s.heading_deg <= -deg).map(|i| i + first_check);
+    let first =
+        track[first_check..second_check.unwrap_or(track.len())].iter().map(|s| s.heading_deg).fold(f64::MIN, f64::max);
+    let second = second_check
+        .map(|j| {
+            let end = track[j..].iter().position(|s| s.heading_deg >= deg).map(|i| i + j).unwrap_or(track.len());
+            -track[j..end].iter().map(|s| s.heading_deg).fold(f64::MAX, f64::min)
+        })
+        .unwrap_or(f64::NAN);
+    let run =
+        |i: usize| track[..=i].windows(2).map(|w| libm::hypot(w[1].x_m - w[0].x_m, w[1].y_m - w[0].y_m)).sum::<f64>();
+    ZigZag {
+        rudder_deg: deg,
+        first_overshoot_deg: first - deg,
+        second_overshoot_deg: second - deg,
+        initial_turning_m: run(first_check),
+        track,
+    }
+}
+
+/// IMO's first-overshoot limit of the 10/10 zig-zag for L/V [s]: 10 deg below 10 s, 20 deg above
+/// 30 s, 5 + (L/V)/2 between; and the second overshoot's: 25, 40, 17.5 + 0.75 L/V.
+pub fn zigzag_10_limits(l_over_v_s: f64) -> (f64, f64) {
+    let a = l_over_v_s.clamp(10.0, 30.0);
+    (5.0 + 0.5 * a, 17.5 + 0.75 * a)
+}
+
+/// The booklet of `sc` at its first ordered speed (or its initial speed).
+pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
+    if sc.hull.model == crate::ship::maneuvering::HullModelKind::Surge {
+        return Err("hull.model: \"surge\" goes straight only; the maneuvers need \"maneuvering\"".into());
+    }
+    let plant = Plant::new(sc)?;
+    let approach_kn = sc.commands.iter().find_map(|c| c.speed_kn).unwrap_or(sc.initial.speed_kn);
+    if !(3.0..=40.0).contains(&approach_kn) {
+        return Err(format!("the approach speed {approach_kn} kn (the first speed order) must be 3 to 40 kn"));
+    }
+    let u0 = kn_to_m_s(approach_kn);
+    let omega = plant.equilibrium_shaft_speed(u0);
+    let l = plant.hull_length;
+    let trial = Trial { plant, omega, u0, rate: sc.rudder.swing_rate_rad_s };
+    let hard = TURNING_RUDDER_DEG.to_radians();
+    let track = trial.run(true, |_, change, _| (change < 540.0).then_some(hard));
+    let turning = turning(track, approach_kn)?;
+    let zigzag_10 = zigzag(&trial, 10.0);
+    let zigzag_20 = zigzag(&trial, 20.0);
+    let coast = trial.run(false, |_, _, speed| (m_s_to_kn(speed) > STOPPED_KN).then_some(0.0));
+    let end = coast[coast.len() - 1];
+    let coasting = Coasting { to_kn: STOPPED_KN, track_reach_m: end.x_m, time_s: end.t_s };
+    let (static_drift, pure_yaw) = captive(&trial, sc)?;
+    let l_over_v = l / u0;
+    let (first_limit, second_limit) = zigzag_10_limits(l_over_v);
+    let crit = |name: &str, value: f64, limit: f64, unit: &str| Criterion {
+        name: name.into(),
+        value,
+        limit,
+        unit: unit.into(),
+        pass: value <= limit,
+    };
+    let criteria = vec![
+        crit("turning ability: advance", turning.advance_m / l, 4.5, "L"),
+        crit("turning ability: tactical diameter", turning.tactical_diameter_m / l, 5.0, "L"),
+        crit(
+            "initial turning ability: track to 10 deg of heading with 10 deg rudder",
+            zigzag_10.initial_turning_m / l,
+            2.5,
+            "L",
+        ),
+        crit("yaw checking: 10/10 first overshoot", zigzag_10.first_overshoot_deg, first_limit, "deg"),
+        crit("yaw checking: 10/10 second overshoot", zigzag_10.second_overshoot_deg, second_limit, "deg"),
+        crit("yaw checking: 20/20 first overshoot", zigzag_20.first_overshoot_deg, 25.0, "deg"),
+    ];
+    Ok(Booklet {
+        scenario: sc.name.clone(),
+        model: format!("{:?}", sc.hull.forces),
+        length_m: l,
+        approach_kn,
+        shaft_rpm: omega * 60.0 / (2.0 * std::f64::consts::PI),
+        turning,
+        zigzag_10,
+        zigzag_20,
+        coasting,
+        static_drift,
+        pure_yaw,
+        criteria,
+    })
+}
+
+/// The static drift (0 to 12 deg) and pure yaw (r' 0 to 0.6) tables at the approach speed.
+fn captive(trial: &Trial, sc: &Scenario) -> Result<(Vec<CaptiveRow>, Vec<CaptiveRow>), String> {
+    let Hull::Own { model, .. } = &trial.plant.hull else {
+        return Ok((Vec::new(), Vec::new()));
+    };
+    let hull = sc.ship_hull()?;
+    let (l, t, u) = (model.length, hull.draft_m, trial.u0);
+    let q = 0.5 * hull.rho * l * t * u * u;
+    let mut straight: State = [0.0; NX];
+    straight[SURGE] = u;
+    let each = trial.thrust(&straight) / N_SHAFTS as f64;
+    let row = |drift_deg: f64, r_prime: f64| {
+        let b = drift_deg.to_radians();
+        // Drift to starboard: the water meets the hull from starboard, v > 0.
+        let (uu, v, r) = (u * libm::cos(b), u * libm::sin(b), r_prime * u / l);
+        let f = model.forces(uu, v, r);
+        let (_, yr, nr) = model.rudders.forces(hull.rho, v, r, trial.plant.surge.advance_speed(uu), each, 0.0);
+        // The captive force is the water's: without the rigid body's m u r.
+        let y = f.y + model.mass * uu * r + yr;
+        CaptiveRow { drift_deg, r_prime, y_prime: y / q, n_prime: (f.n + nr) / (q * l) }
+    };
+    Ok(((0..=6).map(|i| row(2.0 * i as f64, 0.0)).collect(), (0..=6).map(|i| row(0.0, 0.1 * i as f64)).collect()))
+}
