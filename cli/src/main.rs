@@ -38,6 +38,9 @@ enum Cmd {
     Preset(cmd::presets::Args),
     /// Run a scenario file (or `-` for standard input, or `preset:NAME`); prints a JSON summary.
     Run(cmd::run::Args),
+    /// Run one of the page's lessons with its controls' values and print what the run shows (the
+    /// page's words: verdict, explanation, try this next; `--json` for the facts behind them).
+    Lesson(cmd::lesson::Args),
     /// Controller design (thesis ch. 3.1).
     Design {
         #[command(subcommand)]
@@ -99,6 +102,7 @@ fn real_main() -> Result<(), Failure> {
         Cmd::Health(a) => cmd::health::run(a),
         Cmd::Preset(a) => cmd::presets::print(a),
         Cmd::Run(a) => cmd::run::run(a),
+        Cmd::Lesson(a) => cmd::lesson::run(a),
         Cmd::Design { command } => cmd::design::run(command),
         Cmd::Ips { command } => cmd::ips::run(command),
         Cmd::Section(a) => cmd::section::run(a),

@@ -3,6 +3,7 @@
 //! Scenarios cross as JSON text (the same public format as the command line), so that a scenario
 //! file, a shared link and a native run all speak one language.
 
+use aes_core::output::lessons;
 use aes_core::scenario::presets::{preset, PRESET_NAMES};
 use aes_core::studies::study;
 use aes_core::{Scenario, Simulation};
@@ -88,6 +89,17 @@ fn signal(name: &str) -> Result<aes_core::signals::Signal, JsError> {
         .ok_or_else(|| JsError::new(&format!("no signal named '{}'", name.chars().take(40).collect::<String>())))
 }
 
+/// A run that stopped, in words for the page: why nothing new is drawn and what to try.
+fn stopped(e: &aes_core::SimError) -> String {
+    match e {
+        aes_core::SimError::Diverged { .. } => format!(
+            "{e}. The run stopped: its numbers left the range the model holds, so there is nothing new to draw. \
+             What to try: a speed nearer the study's own, a calmer sea or a shorter run; Reset brings the study's values back."
+        ),
+        _ => e.to_string(),
+    }
+}
+
 /// A run in progress, advanced in chunks so a worker can report progress and honour cancel.
 #[wasm_bindgen]
 pub struct Run {
@@ -95,6 +107,9 @@ pub struct Run {
     summary_json: String,
     trace_csv: String,
     columns: Vec<Vec<f64>>,
+    /// The scenario and summary of the finished run (a lesson's explanation reads them).
+    scenario: Scenario,
+    summary: Option<aes_core::sim::summary::Summary>,
 }
 
 #[wasm_bindgen]
@@ -104,7 +119,14 @@ impl Run {
     pub fn new(json: JsValue) -> Result<Run, JsError> {
         let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
         let sim = Simulation::new(&sc).map_err(|e| JsError::new(&e.to_string()))?;
-        Ok(Run { sim: Some(sim), summary_json: String::new(), trace_csv: String::new(), columns: Vec::new() })
+        Ok(Run {
+            sim: Some(sim),
+            summary_json: String::new(),
+            trace_csv: String::new(),
+            columns: Vec::new(),
+            scenario: sc,
+            summary: None,
+        })
     }
 
     /// Advances by at most `steps` time steps; returns the fraction done (1 when finished).
@@ -112,7 +134,7 @@ impl Run {
         let Some(sim) = self.sim.as_mut() else {
             return Ok(1.0);
         };
-        sim.advance(steps as u64).map_err(|e| JsError::new(&e.to_string()))?;
+        sim.advance(steps as u64).map_err(|e| JsError::new(&stopped(&e)))?;
         if sim.done() {
             if let Some(sim) = self.sim.take() {
                 let r = sim.finish();
@@ -120,6 +142,7 @@ impl Run {
                 self.summary_json = serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default();
                 self.trace_csv = r.trace.to_csv();
                 self.columns = r.trace.columns;
+                self.summary = Some(r.summary);
             }
             return Ok(1.0);
         }
@@ -142,6 +165,19 @@ impl Run {
     #[wasm_bindgen(js_name = signalNames)]
     pub fn signal_names() -> Vec<String> {
         aes_core::signals::names().map(|s| s.to_string()).collect()
+    }
+
+    /// What the finished run shows as lesson `name` with the controls' `values` (JSON, as
+    /// `lessonOpen` gives them): `aes_core::output::lessons::explain` as JSON.
+    #[wasm_bindgen(js_name = lessonExplain)]
+    pub fn lesson_explain(&self, name: JsValue, values: JsValue) -> Result<String, JsError> {
+        let l = lessons::lesson(&text(&name, "the lesson's name")?).ok_or_else(|| JsError::new("no such lesson"))?;
+        let values: serde_json::Map<String, serde_json::Value> =
+            serde_json::from_str(&text(&values, "the lesson's values")?).map_err(|e| JsError::new(&e.to_string()))?;
+        let summary = self.summary.as_ref().ok_or_else(|| JsError::new("the run has not finished"))?;
+        let trace = aes_core::sim::Trace { columns: self.columns.clone() };
+        let run = lessons::Run { scenario: &self.scenario, trace: &trace, summary };
+        Ok(serde_json::to_string(&lessons::explain(&l, &values, &run)).unwrap_or_default())
     }
 
     /// One trace column as a Float64Array (after the run has finished).
@@ -172,6 +208,30 @@ impl Run {
         };
         Ok(js_sys::Float64Array::from(col.get(from.min(col.len())..).unwrap_or_default()))
     }
+}
+
+/// The lessons (`aes_core::output::lessons::lessons`) as JSON: name, title, preset, story,
+/// controls (path, label, unit, kind: slider with its stops or toggle with its values), question,
+/// answers, plots, view.
+#[wasm_bindgen(js_name = lessonMeta)]
+pub fn lesson_meta() -> String {
+    serde_json::to_string(&lessons::lessons()).unwrap_or_default()
+}
+
+/// Lesson `name` opened with a link's `values` (JSON object, path to text): `{scenario` (JSON
+/// text), `values`, `defaults`, `refused` (a sentence per value refused; the lesson's own used)}.
+#[wasm_bindgen(js_name = lessonOpen)]
+pub fn lesson_open(name: JsValue, values: JsValue) -> Result<String, JsError> {
+    let l = lessons::lesson(&text(&name, "the lesson's name")?).ok_or_else(|| JsError::new("no such lesson"))?;
+    let given: serde_json::Map<String, serde_json::Value> =
+        serde_json::from_str(&text(&values, "the lesson's values")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let given: Vec<(String, String)> =
+        given.into_iter().map(|(k, v)| (k, v.as_str().map(str::to_string).unwrap_or_else(|| v.to_string()))).collect();
+    let pairs: Vec<(&str, &str)> = given.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect();
+    let o = lessons::open(&l, &pairs).map_err(|e| JsError::new(&e))?;
+    let mut v = serde_json::to_value(&o).map_err(|e| JsError::new(&e.to_string()))?;
+    v["scenario"] = serde_json::Value::from(o.scenario.to_json());
+    Ok(v.to_string())
 }
 
 /// Runs a scenario to the end and returns its summary JSON.

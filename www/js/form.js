@@ -173,6 +173,7 @@ export class ScenarioForm {
   }
 
   onFieldChange(input) {
+    if (this.dropping) return;
     const path = input.dataset.path;
     let v = input.value;
     if (input.tagName === 'SELECT') {
@@ -237,8 +238,15 @@ export class ScenarioForm {
     this.onSelect(name);
   }
 
-  // Back to the study's own values: its kept edits go, every error goes with them.
+  // Back to the study's own values: its kept edits go, every error goes with them, and so does a
+  // value still being typed (it is dropped, not committed).
   reset() {
+    const active = document.activeElement;
+    if (active && active.dataset && active.dataset.path && $('controls').contains(active)) {
+      this.dropping = true;
+      active.blur();
+      this.dropping = false;
+    }
     this.edits.delete(this.name);
     this.select(this.name, this.preset(this.name));
     this.save();

@@ -262,7 +262,11 @@ export class HullPanel {
     this.table = el('table', { id: 'hull-table' }, el('caption', { id: 'hull-table-caption', textContent: 'Hydrostatics at this loading (from the offsets)' }),
       el('thead', {}, el('tr', {}, ...['quantity', 'value', 'unit'].map((t) => el('th', { scope: 'col', textContent: t })))), el('tbody'));
     root.setAttribute('aria-labelledby', 'hull-h');
-    root.replaceChildren(this.heading, this.note,
+    // Folded where the study does not depend on the hull (calm water: fold()); drawn when opened.
+    this.fold = el('details', { id: 'hull-fold', open: true }, el('summary', {}, this.heading));
+    this.fold.addEventListener('toggle', () => { if (this.fold.open) this.draw(); });
+    root.replaceChildren(this.fold);
+    this.fold.append(this.note,
       el('div', { className: 'hull-drawings' },
         el('figure', { className: 'plot hull-fig wide' }, el('h3', { textContent: 'Profile: keel and deck lines, waterline, propeller, rudder, G and B' }), this.profileCanvas),
         el('figure', { className: 'plot hull-fig' }, el('h3', { textContent: 'Body plan: sections, aft half left, forward half right' }), this.bodyCanvas),
@@ -299,6 +303,9 @@ export class HullPanel {
     this.onSheet(sheet);
     return sheet;
   }
+
+  // Opens the panel for a study in waves (the strip theory uses the hull), folds it in calm water.
+  folded(calm) { this.fold.open = !calm; }
 
   draw() {
     const sheet = this.sheet;

@@ -196,7 +196,13 @@ async function onReady(m) {
   follow(false);
   setPhase('idle');
   status(restored ? 'Your last edits are back.' : 'Ready. Choose a study and press Run.');
-  if (ok) tabWork(ok);
+  if (ok) { tabWork(ok); return; }
+  // A plain first visit opens alive: the default study's run, its drive train playing (held still
+  // where the system asks for reduced motion).
+  if (!restored && !linked) {
+    await run({ focus: false });
+    if (getResult() && !matchMedia('(prefers-reduced-motion: reduce)').matches) live.place({ at: 0, speed: 10 }, { scroll: false }).then(() => live.start());
+  }
 }
 
 // After an accepted edit: the scenario is checked at once (errors at the field, Run waits), and
@@ -269,11 +275,15 @@ function failed(e) {
 // replay: {text, name, words, state, isCurrent, at, shaft, hrAt(columns)}: a rare-event scenario
 // (its trial's or the most likely wave group's), said in words, shown with the live views at its
 // event (at). order: the plots to draw first (a lesson's), else the study's.
-async function run({ focus = true, trial = null, replay = null, order: plotOrder = null } = {}) {
+// lesson: {name, values}: the run's explanation as that lesson comes with the result. preview: a
+// run while a control is dragged, of `preview` simulated seconds: drawn, but no result of the
+// form's values (not kept for Back, no step in the history).
+async function run({ focus = true, trial = null, replay = null, order: plotOrder = null, lesson = null, preview = null } = {}) {
   if (isBusy() || !form || form.invalid.size) return;
   const given = trial || replay;
-  const text = given ? given.text : JSON.stringify(form.current());
   const sc = given ? JSON.parse(given.text) : form.current(); // (its seed only for display)
+  if (preview) sc.sim.duration_s = Math.min(sc.sim.duration_s, preview);
+  const text = given ? given.text : JSON.stringify(sc);
   // The inputs this result will belong to, taken now (the form may change while it runs).
   const state = replay ? replay.state : stateKey(trial ? 'mc' : 'run'), study = form.name;
   setPhase('running');
@@ -282,7 +292,7 @@ async function run({ focus = true, trial = null, replay = null, order: plotOrder
   const c = client;
   let m;
   try {
-    m = await c.request(REQUEST.run, { scenario: text, live: true }, (p) => {
+    m = await c.request(REQUEST.run, { scenario: text, live: true, ...(lesson ? { lesson } : {}) }, (p) => {
       progress(p.fraction, etaText(started, p.fraction));
       if (p.rows) live.follow(p.rows, p.constants, sc, text);
     });
@@ -292,7 +302,7 @@ async function run({ focus = true, trial = null, replay = null, order: plotOrder
   const name = trial ? `${studyTitle(form.name)}, Monte Carlo trial ${trial.i} (sea seed ${seed})` : replay ? replay.name : form.runName(sc);
   setPhase('idle');
   const draw = () => {
-    setResult({ summary: m.summary, csv: m.csv, scenario: sc, text, columns: m.columns, name, study });
+    setResult({ summary: m.summary, csv: m.csv, scenario: sc, text, columns: m.columns, name, study, lesson: m.lesson || null, wallMs: m.wall_ms });
     // A rare-event run says above its views what it is (a run of the form's values needs no line).
     $('shown-what').hidden = !replay;
     $('shown-what').textContent = replay ? `Shown: ${replay.words}. The ${replay.shaft} hub's h/R at the event (t = ${replay.at} s): ${replay.hrAt(m.columns)}.` : '';
@@ -308,6 +318,7 @@ async function run({ focus = true, trial = null, replay = null, order: plotOrder
   };
   if (!given) mode = 'run';
   const markers = draw();
+  if (preview) return;
   remember(trial ? `trial ${trial.i}|${state}` : replay ? `${replay.name}|${state}` : state, state, draw, replay ? { isCurrent: replay.isCurrent } : {});
   settle();
   showStale();
@@ -374,6 +385,15 @@ const ctx = {
   lesson: null, // {def, scenario0} while a lesson is open (scenario0: the study with its settings)
   plots, live, validate, studyInputs, stateKey, hereHash, follow, settle, remember, showStale, clearResults, failed, run, onEdit, selectStudy, selectTab,
   forgetChecks: () => { validating++; }, // a check still on its way is of values left behind
+  // The result of the form's values drawn again, if the page still has it (Back within a lesson).
+  restoreResult: () => {
+    const r = resultOf(stateKey());
+    if (!r) return false;
+    if (shown !== r.key) r.redraw();
+    shown = r.key;
+    showStale();
+    return true;
+  },
 };
 each('init', ctx);
 
@@ -381,6 +401,9 @@ $('form').addEventListener('submit', (e) => e.preventDefault());
 $('preset').addEventListener('change', () => selectStudy($('preset').value));
 $('run').addEventListener('click', () => run());
 $('cancel').addEventListener('click', cancel);
+// A press on Reset keeps the focus where it is: a value being typed is not committed first (its
+// error would appear and move Reset from under the pointer before the click).
+$('reset').addEventListener('pointerdown', (e) => e.preventDefault());
 $('reset').addEventListener('click', () => {
   if (!form) return;
   validating++; // a check of the values left behind must not mark the study's own

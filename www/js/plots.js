@@ -394,7 +394,17 @@ function runPlot(box, spec, cols, signals, constants, kept, more, markers) {
   } else if (spec.key) {
     opts.key = [spec.key];
   }
-  return box.line(title, { data: x, label: `time [${signals.meta('t_s').unit}]` }, series, axes, opts);
+  const u = box.line(title, { data: x, label: `time [${signals.meta('t_s').unit}]` }, series, axes, opts);
+  // One legend entry for the kept run, not one per line it has: its lines share one style.
+  const nKept = [...groups.values()].reduce((n, g) => n + g.kept.length, 0);
+  if (nKept && u && u.root) {
+    const rows = [...u.root.querySelectorAll('.u-legend .u-series')].slice(1 + series.length - nKept);
+    rows.forEach((r, i) => {
+      if (i) r.hidden = true;
+      else r.querySelector('.u-label').textContent = `faint dashed: ${kept.name || 'the run before'}`;
+    });
+  }
+  return u;
 }
 
 // Every plot of a run: the study's plots first (`order`: PLOTS ids and 'track'), the others under

@@ -3,7 +3,8 @@
 // Worker -> page, once after loading: {type: 'ready', presets: {name: json}, signals: [meta], hulls: [names],
 //   params: {groups, params} (paramMeta), thesis: [{key, value, printed, unit, where, what, note}]
 //   (thesisValues: the thesis' numbers we compare with, core/data/thesis_values.csv),
-//   ips: [declaration] (ipsMeta: the stability tab's inputs)}
+//   ips: [declaration] (ipsMeta: the stability tab's inputs), lessons: [lesson] (lessonMeta: the
+//   lessons' controls, questions and plots, core's output::lessons)}
 //   (signals: signalMeta() of the wasm, in trace column order), or, if loading fails,
 //   {type: 'error', id: null, error}.
 // Page -> worker: one message per request, {type, id, ...arguments}; the request types are
@@ -14,10 +15,14 @@
 
 export const REQUEST = {
   validate: 'validate', // {scenario} -> done {} | error with fields
-  // {scenario, live?} -> progress {fraction, rows?, constants?} ... done {summary, columns, csv,
-  // wall_ms, constants}; with live, progress carries the rows recorded since the last report
-  // ({name: Float64Array}) and the first also the page constants.
+  // {scenario, live?, lesson?} -> progress {fraction, rows?, constants?} ... done {summary, columns,
+  // csv, wall_ms, constants, lesson?}; with live, progress carries the rows recorded since the last
+  // report ({name: Float64Array}) and the first also the page constants. With lesson ({name,
+  // values}), done carries the run's explanation (lessonExplain: sentences, facts, verdict, next, at_s).
   run: 'run',
+  // {name, values: {path: text}} -> done {scenario (JSON text), values, defaults, refused: [sentence]}:
+  // a lesson's scenario with a link's values, each refused one said and the lesson's own used.
+  lessonOpen: 'lesson-open',
   // A study on the shared pipeline (core's studies::study; kind: 'monte-carlo', 'operability',
   // 'rare-events'; spec: its definition as JSON text): {kind, spec, scenario, a, b, raoTable?} ->
   // done {shard}: items a..b as a binary shard (Uint8Array, moved); the pool of pool.js sends them.
@@ -63,7 +68,7 @@ export function errorOf(e, fields) {
 }
 
 export const reply = {
-  ready: (presets, signals, hulls, params, thesis, ips) => ({ type: 'ready', presets, signals, hulls, params, thesis, ips }),
+  ready: (presets, signals, hulls, params, thesis, ips, lessons) => ({ type: 'ready', presets, signals, hulls, params, thesis, ips, lessons }),
   progress: (id, data) => ({ type: 'progress', id, ...data }),
   done: (id, data) => ({ type: 'done', id, ...data }),
   error: (id, error) => ({ type: 'error', id, error }),

@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, trialScenario, raoJson, fuelStudy, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -52,7 +52,10 @@ const handlers = {
         columns[name] = run.column(name);
         transfer.push(columns[name].buffer);
       }
-      return [{ summary: JSON.parse(run.summaryJson()), columns, csv: run.traceCsv(), wall_ms: performance.now() - t0, constants: constantsOf(m.scenario) }, transfer];
+      // A lesson's run: its explanation from the same finished run (core's output::lessons).
+      const lesson = m.lesson ? JSON.parse(run.lessonExplain(m.lesson.name, JSON.stringify(m.lesson.values))) : undefined;
+      // (A lesson has no export: its run skips the CSV text.)
+      return [{ summary: JSON.parse(run.summaryJson()), columns, csv: m.lesson ? '' : run.traceCsv(), wall_ms: performance.now() - t0, constants: constantsOf(m.scenario), lesson }, transfer];
     } finally {
       run.free();
     }
@@ -73,6 +76,8 @@ const handlers = {
     const text = studySummary(m.kind, m.spec, m.shards).replace(/"seed":(\d+)/g, '"seed":"$1"');
     return { summary: JSON.parse(text), ...(m.scenario ? { constants: constantsOf(m.scenario) } : {}) };
   },
+
+  [REQUEST.lessonOpen]: (m) => JSON.parse(lessonOpen(m.name, JSON.stringify(m.values || {}))),
 
   [REQUEST.raoTable]: (m) => {
     const values = raoTableValues(checked(m.scenario));
@@ -134,6 +139,6 @@ loaded = init().then(() => {
   signals = JSON.parse(signalMeta());
   const presets = {};
   for (const n of presetNames()) presets[n] = presetJson(n);
-  postMessage(reply.ready(presets, signals, hullNames(), JSON.parse(paramMeta()), JSON.parse(thesisValues()), JSON.parse(ipsMeta())));
+  postMessage(reply.ready(presets, signals, hullNames(), JSON.parse(paramMeta()), JSON.parse(thesisValues()), JSON.parse(ipsMeta()), JSON.parse(lessonMeta())));
 });
 loaded.catch((e) => postMessage(reply.error(null, errorOf(e))));

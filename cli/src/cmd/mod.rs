@@ -6,6 +6,7 @@ pub mod fuel;
 pub mod fuel_per_mile;
 pub mod health;
 pub mod ips;
+pub mod lesson;
 pub mod maneuvers;
 pub mod mc;
 pub mod merge;

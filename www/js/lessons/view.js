@@ -1,131 +1,153 @@
-// The lessons' screen: the index, and one lesson's controls (sliders and toggles made from the
-// registry), its question, the explanation of each run and what to try next. The page (main.js)
-// runs the study and draws the plots and the live view; this module owns the words and controls.
+// The lessons' screen: the index, and one lesson's controls, its question, the explanation of each
+// run and what to try next. The lessons themselves (controls, stops, question, the claims of each
+// run) come from the wasm (core's output::lessons); the page (views/lessons.js) runs the study and
+// draws the plots and the live view; this module owns the words' layout and the controls.
 import { $, el } from '../dom.js';
-import { GLOSSARY, LESSONS } from './catalog.js';
+import { GLOSSARY } from './catalog.js';
 
-export const lessonByName = (name) => LESSONS.find((l) => l.name === name) || null;
-
-// A control's scenario path (a maneuver order's index in place of N).
-export const controlPath = (c) => (c.order === undefined ? c.path : c.path.replace('.N.', `.${c.order}.`));
-const getPath = (o, path) => path.split('.').reduce((x, k) => (x == null ? undefined : x[k]), o);
-
-// '#lessons', '#lesson=NAME&PATH=VALUE...' (the values the link sets), or null for any other hash.
-export function readLessonHash(hash) {
+// '#lessons', '#lesson=NAME&PATH=VALUE...' (the values the link sets, as text), or null for any
+// other hash. `lessons`: the wasm's lessonMeta.
+export function readLessonHash(hash, lessons) {
   if (hash === 'lessons') return { index: true };
   if (!hash.startsWith('lesson=')) return null;
   const params = new URLSearchParams(hash);
-  const def = lessonByName(params.get('lesson'));
+  const def = lessons.find((l) => l.name === params.get('lesson'));
   if (!def) return { index: true, unknown: String(params.get('lesson')).slice(0, 40) };
   const values = {};
-  for (const c of def.controls) {
-    const p = controlPath(c);
-    if (params.has(p)) values[p] = params.get(p);
-  }
+  for (const c of def.controls) if (params.has(c.path)) values[c.path] = params.get(c.path);
   return { def, values };
 }
 
+// A number as the control shows it (no float noise: 2.65, 0.0002).
 const show = (v) => (typeof v === 'number' ? String(Number(v.toPrecision(6))) : String(v));
+const unitOf = (c) => (c.unit ? ` ${c.unit}` : '');
+// The id of a control's element.
+const idOf = (c) => `lesson-${c.path.replace(/\./g, '-')}`;
+// The stop nearest a value (the thumb's position).
+const stopIndex = (c, v) => c.stops.reduce((best, s, i) => (Math.abs(s - v) < Math.abs(c.stops[best] - v) ? i : best), 0);
 
 export class LessonView {
-  // meta: the wasm's paramMeta ({params}); onChange(): a control moved (the page reruns); onAnswer():
-  // the question was answered (the first run).
-  constructor(meta, { onChange, onAnswer }) {
-    this.byPath = new Map(meta.params.map((m) => [m.path, m]));
+  // lessons: the wasm's lessonMeta; onChange(path, value, settled): a control moved (settled: released
+  // or stepped; else a drag in progress); onAnswer(): the question was answered (the first run).
+  constructor(lessons, { onChange, onAnswer }) {
+    this.lessons = lessons;
     this.onChange = onChange;
     this.onAnswer = onAnswer;
     this.def = null;
     this.answer = null;
+    this.isAnswered = false;
     this.before = null;
   }
 
-  // The index of lessons, in the lesson box.
+  // The index of lessons, in the lesson box: a first visit starts with the first lesson.
   showIndex(unknown = null) {
     this.def = null;
     $('lesson-box').replaceChildren(el('h2', { textContent: 'Lessons' }),
-      ...(unknown ? [el('p', { className: 'error', textContent: `There is no lesson "${unknown}": pick one below.` })] : []),
-      el('p', { className: 'about', textContent: 'Each lesson is one study with two or three controls. Answer its question first, then move the controls: every change reruns at once, and the run before stays drawn faintly beside the new one.' }),
-      el('ol', { className: 'lesson-list' }, ...LESSONS.map((l) => el('li', {}, el('a', { href: `#lesson=${l.name}`, textContent: l.title }), el('span', { className: 'hint', textContent: ` ${l.question}` })))),
+      ...(unknown ? [el('p', { className: 'error', attrs: { role: 'alert' }, textContent: `There is no lesson "${unknown}": pick one below.` })] : []),
+      el('p', { className: 'about', textContent: 'Each lesson is one study with two or three controls. Answer its question first, then move the controls: every change reruns at once, and the run before stays drawn faintly beside the new one. Each takes about ten minutes in class.' }),
+      el('p', {}, el('a', { href: `#lesson=${this.lessons[0].name}`, className: 'start-here', textContent: `Start here: ${this.lessons[0].title}` })),
+      el('ol', { className: 'lesson-list' }, ...this.lessons.map((l) => el('li', {}, el('a', { href: `#lesson=${l.name}`, textContent: l.title }), el('span', { className: 'hint', textContent: ` ${l.question}` })))),
       el('p', {}, el('a', { href: '#v=2&preset=startup', textContent: 'The full simulator (Lab)' })));
     $('lesson-explain').replaceChildren();
   }
 
-  // The settings that go with a toggle's value (none for a slider).
-  also(c, v) { return c.values && c.also ? c.also[c.values.indexOf(v)] || {} : {}; }
-
-  // A control's value from a link's text, checked against its range (else the study's value).
-  value(c, text, scenario) {
-    const p = controlPath(c);
-    const own = getPath(scenario, p);
-    if (text === undefined) return own;
-    if (c.values) return c.values.map(String).includes(text) ? c.values[c.values.map(String).indexOf(text)] : own;
-    const x = Number(text);
-    const [lo, hi] = this.range(c);
-    return Number.isFinite(x) && x >= lo && x <= hi ? x : own;
-  }
-
-  // A slider's span: the lesson's within the declared range.
-  range(c) {
-    const m = this.byPath.get(c.path);
-    const lo = Math.max(m.min ?? -Infinity, c.span ? c.span[0] : -Infinity), hi = Math.min(m.max ?? Infinity, c.span ? c.span[1] : Infinity);
-    return [lo, hi];
-  }
-
-  // Opens lesson `def` over `scenario` (the study's, with the lesson's settings and the link's
-  // values already in it). Returns nothing; the page runs once the question is answered.
-  open(def, scenario, labHref) {
+  // Opens lesson `def` with `opened` (lessonOpen's answer: values, defaults, refused). `answered`:
+  // the question was answered earlier in this visit (Back and Forward do not ask again).
+  open(def, opened, labHref, answered = false) {
     this.def = def;
-    this.answer = null;
+    this.answer = null; // the answer chosen (null: skipped)
+    this.isAnswered = answered;
     this.before = null;
-    // The values run, by path (a slider's position snaps to its step; the value is what it says).
-    this.current = Object.fromEntries(def.controls.map((c) => [controlPath(c), getPath(scenario, controlPath(c))]));
-    const controls = def.controls.map((c) => this.control(c, scenario));
-    const answers = el('div', { className: 'lesson-answers', attrs: { role: 'radiogroup', 'aria-labelledby': 'lesson-q' } },
-      ...def.answers.map((a, i) => {
-        const id = `lesson-a${i}`;
-        const r = el('input', { type: 'radio', name: 'lesson-answer', id, value: String(i) });
-        r.addEventListener('change', () => this.answered(i));
-        return el('label', { htmlFor: id, className: 'lesson-answer' }, r, ` ${a}`);
-      }));
+    this.current = { ...opened.values };
+    const controls = def.controls.map((c) => this.control(c, opened.values[c.path]));
+    // A radio group (the ARIA pattern): arrows move between the answers without choosing; Enter,
+    // Space or a click chooses.
+    const radios = def.answers.map((a, i) => el('div', { id: `lesson-a${i}`, className: 'lesson-answer', textContent: a, attrs: { role: 'radio', 'aria-checked': 'false', tabindex: i === 0 ? '0' : '-1' } }));
+    const group = el('div', { className: 'lesson-answers', attrs: { role: 'radiogroup', 'aria-labelledby': 'lesson-q', 'aria-describedby': 'lesson-wait' } }, ...radios);
+    radios.forEach((r, i) => r.addEventListener('click', () => this.answered(i)));
+    group.addEventListener('keydown', (e) => {
+      const i = radios.indexOf(document.activeElement);
+      if (i < 0 || this.isAnswered) return;
+      const step = { ArrowDown: 1, ArrowRight: 1, ArrowUp: -1, ArrowLeft: -1 }[e.key];
+      if (step) {
+        e.preventDefault();
+        const j = (i + step + radios.length) % radios.length;
+        radios.forEach((r, k) => { r.tabIndex = k === j ? 0 : -1; r.setAttribute('aria-checked', String(k === j)); });
+        radios[j].focus();
+      } else if (e.key === 'Enter' || e.key === ' ') {
+        e.preventDefault();
+        this.answered(i);
+      }
+    });
     const skip = el('button', { type: 'button', id: 'lesson-skip', textContent: 'Just run it' });
     skip.addEventListener('click', () => this.answered(null));
+    const refused = opened.refused.length ? [el('div', { id: 'lesson-refused', className: 'error', attrs: { role: 'alert' } },
+      el('p', { textContent: 'This link\'s values could not all be used; the lesson\'s own stand in their place:' }),
+      el('ul', {}, ...opened.refused.map((r) => el('li', { textContent: r }))))] : [];
     $('lesson-box').replaceChildren(
       el('p', { className: 'lesson-nav' }, el('a', { href: '#lessons', textContent: 'All lessons' }), ' · ', el('a', { href: labHref, id: 'lesson-lab', textContent: 'Open in the full simulator (Lab)' })),
       el('h2', { id: 'lesson-title', textContent: def.title }),
-      el('div', { id: 'lesson-controls', className: 'lesson-controls' }, ...controls),
-      el('div', { id: 'lesson-predict', className: 'lesson-predict' }, el('p', { id: 'lesson-q', className: 'lesson-q', textContent: `Predict: ${def.question}` }), answers, skip));
+      ...refused,
+      el('p', { id: 'lesson-story', className: 'lesson-story', textContent: def.story }),
+      el('div', { id: 'lesson-predict', className: 'lesson-predict' },
+        el('p', { id: 'lesson-q', className: 'lesson-q', textContent: `Predict: ${def.question}` }), group, skip,
+        el('p', { id: 'lesson-wait', className: 'hint', textContent: 'The controls below wait for your answer (or "Just run it"): first guess, then see. Arrow keys move between the answers; Enter or Space chooses.' })),
+      el('div', { id: 'lesson-controls', className: 'lesson-controls' }, ...controls));
     $('lesson-explain').replaceChildren(
       el('div', { id: 'lesson-observe', attrs: { 'aria-live': 'polite' } }),
       el('details', { className: 'lesson-words' }, el('summary', { textContent: 'Words used here' }),
         el('dl', {}, ...GLOSSARY.flatMap(([k, v]) => [el('dt', { textContent: k }), el('dd', { textContent: v })]))));
-    this.setDisabled(true);
+    if (answered) this.markAnswered(null);
+    else this.setDisabled(true);
   }
 
-  // A slider (with its value and unit beside it) or a toggle, from the registry's declaration.
-  control(c, scenario) {
-    const p = controlPath(c);
-    const m = this.byPath.get(c.path);
-    const id = `lesson-${p.replace(/\./g, '-')}`;
-    const unit = m.unit && m.unit !== '-' ? ` ${m.unit}` : '';
-    const v = getPath(scenario, p);
-    if (c.values) {
-      const sel = el('select', { id }, ...c.values.map((x, i) => new Option(c.labels[i], String(x))));
+  // A slider over the lesson's stops (the label shows the stop under the thumb, with its unit) or
+  // a toggle.
+  control(c, v) {
+    const id = idOf(c);
+    const unit = unitOf(c);
+    const label = el('label', { htmlFor: id, textContent: `${c.label}${unit ? ` [${c.unit}]` : ''}` });
+    if (c.kind === 'toggle') {
+      const sel = el('select', { id }, ...c.values.map((x, i) => new Option(c.labels[i], x)));
       sel.value = String(v);
-      sel.dataset.path = p;
-      sel.addEventListener('change', () => { this.current[p] = c.values[sel.selectedIndex]; this.onChange(p, this.current[p], c.also ? c.also[sel.selectedIndex] : {}); });
-      return el('div', { className: 'lesson-control' }, el('label', { htmlFor: id, textContent: m.label }), sel);
+      sel.dataset.path = c.path;
+      sel.addEventListener('change', () => { this.current[c.path] = c.values[sel.selectedIndex]; this.onChange(c.path, this.current[c.path], true); });
+      return el('div', { className: 'lesson-control' }, label, sel);
     }
-    const [lo, hi] = this.range(c);
-    // A slider in decades moves log10 of the value; the value is rounded to 3 digits.
-    const to = c.log ? (x) => Math.log10(x) : (x) => x;
-    const from = c.log ? (x) => Number((10 ** x).toPrecision(3)) : (x) => x;
-    const out = el('output', { id: `${id}-out`, htmlFor: id, textContent: `${show(v)}${unit}` });
-    const input = el('input', { type: 'range', id, min: String(to(lo)), max: String(to(hi)), step: String(c.step), value: String(to(v)), attrs: { 'aria-valuetext': `${show(v)}${unit}` } });
-    input.dataset.path = p;
-    input.title = m.help;
-    input.addEventListener('input', () => { out.textContent = `${show(from(Number(input.value)))}${unit}`; input.setAttribute('aria-valuetext', out.textContent); });
-    input.addEventListener('change', () => { this.current[p] = from(Number(input.value)); this.onChange(p, this.current[p]); });
-    return el('div', { className: 'lesson-control' }, el('label', { htmlFor: id, textContent: `${m.label}${unit ? ` [${unit.trim()}]` : ''}` }), input, out);
+    const text = (x) => `${show(x)}${unit}`;
+    const out = el('output', { id: `${id}-out`, htmlFor: id, textContent: text(v) });
+    const input = el('input', { type: 'range', id, min: '0', max: String(c.stops.length - 1), step: '1', value: String(stopIndex(c, v)), attrs: { 'aria-valuetext': text(v) } });
+    input.dataset.path = c.path;
+    const at = () => c.stops[Number(input.value)];
+    // While dragging: the label follows the thumb and a preview run follows (views/lessons.js
+    // throttles it); on release or a key step, the settled run.
+    // A key step fires both at once: its preview is dropped for the settled run.
+    let later = null;
+    input.addEventListener('input', () => {
+      out.textContent = text(at());
+      input.setAttribute('aria-valuetext', out.textContent);
+      this.current[c.path] = at();
+      clearTimeout(later);
+      later = setTimeout(() => this.onChange(c.path, at(), false), 0);
+    });
+    input.addEventListener('change', () => { clearTimeout(later); this.current[c.path] = at(); this.onChange(c.path, at(), true); });
+    return el('div', { className: 'lesson-control' }, label, input, out);
+  }
+
+  // Moves the controls to `values` (Back and Forward).
+  setValues(values) {
+    this.current = { ...values };
+    for (const c of this.def.controls) {
+      const e = $(idOf(c));
+      if (!e) continue;
+      const v = values[c.path];
+      if (c.kind === 'toggle') e.value = String(v);
+      else {
+        e.value = String(stopIndex(c, v));
+        $(`${idOf(c)}-out`).textContent = `${show(v)}${unitOf(c)}`;
+        e.setAttribute('aria-valuetext', $(`${idOf(c)}-out`).textContent);
+      }
+    }
   }
 
   // The controls wait for the prediction (then the first run).
@@ -133,37 +155,62 @@ export class LessonView {
     for (const i of $('lesson-controls').querySelectorAll('input, select')) i.disabled = on;
   }
 
-  answered(i) {
-    if (this.answer !== null || !this.def) return;
-    this.answer = i;
-    for (const r of document.querySelectorAll('#lesson-predict input, #lesson-skip')) r.disabled = true;
+  // The question answered (i: the answer, null: skipped): the answers stay in view, marked, and the
+  // controls act.
+  markAnswered(i) {
+    for (const r of document.querySelectorAll('#lesson-predict [role="radio"]')) {
+      r.setAttribute('aria-disabled', 'true');
+      r.setAttribute('aria-checked', String(r.id === `lesson-a${i}`));
+      r.tabIndex = -1;
+    }
+    $('lesson-skip').disabled = true;
+    $('lesson-wait').textContent = i === null ? 'Answered earlier: move the controls.' : 'Now move the controls: each change reruns.';
     this.setDisabled(false);
+  }
+
+  answered(i) {
+    if (this.isAnswered || !this.def) return;
+    this.isAnswered = true;
+    this.answer = i;
+    this.markAnswered(i);
+    // Focus goes to the first control, without moving the screen.
+    const first = $('lesson-controls').querySelector('input, select');
+    if (first) first.focus({ preventScroll: true });
     this.onAnswer();
   }
 
-  // The controls' values now, by scenario path.
+  // The controls' values now, by path.
   values() { return { ...this.current }; }
 
-  // The lesson's address: its name and the values that differ from the study's.
-  hash(scenario0) {
+  // The lesson's address: its name and the values that differ from the lesson's own.
+  hash(defaults) {
     const params = new URLSearchParams({ lesson: this.def.name });
-    for (const [p, v] of Object.entries(this.values())) if (String(getPath(scenario0, p)) !== String(v)) params.set(p, String(v));
+    for (const [p, v] of Object.entries(this.values())) if (String(defaults[p]) !== String(v)) params.set(p, String(v));
     return `#${params.toString()}`;
   }
 
-  // After a run: what it showed, in its own numbers, then what to try next.
-  explain(s, markers) {
+  // After a run: the explanation core computed from it (sentences true of this run), the verdict
+  // on the prediction (the first run after it), and what to try next with a button that sets it.
+  explain(e) {
     const def = this.def;
-    const values = this.values();
     const parts = [];
-    if (this.answer !== null && this.before === null) {
-      const right = def.right ? def.right({ s, markers, values }) : null;
-      parts.push(el('p', { className: 'lesson-verdict', textContent: `You predicted: ${def.answers[this.answer]}.${right === null ? '' : right === this.answer ? ' The run agrees.' : ` The run shows: ${def.answers[right]}.`}` }));
+    if (typeof this.answer === 'number' && this.before === null) {
+      const verdict = e.right === null ? ` ${e.verdict_note}` : e.right === this.answer ? ' The run agrees.' : ` The run shows: ${def.answers[e.right]}.`;
+      parts.push(el('p', { className: 'lesson-verdict', textContent: `You predicted: ${def.answers[this.answer]}.${verdict}` }));
+    } else if (e.right === null && e.verdict_note && this.before === null) {
+      parts.push(el('p', { className: 'lesson-verdict', textContent: e.verdict_note }));
     }
-    parts.push(el('p', { className: 'lesson-explain', textContent: def.explain({ s, markers, values, before: this.before }) }),
-      el('p', { className: 'lesson-next' }, el('strong', { textContent: 'Try this next: ' }), def.next));
+    parts.push(el('p', { className: 'lesson-explain', textContent: e.sentences.map(([s]) => s).join(' ') }));
+    const tryIt = el('button', { type: 'button', id: 'lesson-try', textContent: 'Set it' });
+    tryIt.addEventListener('click', () => {
+      const values = { ...this.current };
+      for (const [p, v] of e.next.set) values[p] = this.def.controls.find((c) => c.path === p).kind === 'toggle' ? v : Number(v);
+      this.setValues(values);
+      this.onChange(null, null, true);
+    });
+    parts.push(el('p', { className: 'lesson-next' }, el('strong', { textContent: 'Try this next: ' }), `${e.next.text} `, tryIt));
     if (this.before) parts.push(el('p', { className: 'hint', textContent: 'The faint dashed lines are the run before this one.' }));
     $('lesson-observe').replaceChildren(...parts);
-    this.before = { s, markers: markers.length };
+    this.before = true;
   }
 }

@@ -40,6 +40,7 @@ registerView({
       },
     });
   },
-  selected: refresh,
+  // A study in calm water does not depend on the hull's sections: its panel starts folded.
+  selected(ctx) { if (ctx.form && ctx.form.scenario) panel.folded(ctx.form.scenario.sea.kind === 'calm'); refresh(ctx); },
   checked: refresh,
 });

@@ -70,6 +70,8 @@ function openCell(ctx, { speed_kn, set, words }) {
   form.save();
   ctx.selectTab('tab-sim');
   ctx.onEdit(false);
+  // The study's words describe its own values: say first what this run is.
+  $('about').textContent = `This run is a cell of the operability polar: ${words}. The study's text below describes its own values, not this cell's.`;
   status(`From the operability polar: ${words}. Press Run.`);
   $('run').focus();
   return null;
