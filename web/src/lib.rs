@@ -455,6 +455,14 @@ pub fn fuel_study(json: JsValue, omegas: Vec<f64>) -> Result<String, JsError> {
     serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
 }
 
+/// The standard maneuvers booklet of a scenario's ship (`aes-sim maneuvers`' JSON, tracks included).
+#[wasm_bindgen(js_name = maneuversBooklet)]
+pub fn maneuvers_booklet(json: JsValue) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let b = aes_core::studies::maneuvers::booklet(&sc).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&b).map_err(|e| JsError::new(&e.to_string()))
+}
+
 /// The side profile and waterline of the hull a run in waves uses, as JSON (the live stern and
 /// plan views draw it; positions from the aft perpendicular, heights from the calm waterline).
 #[wasm_bindgen(js_name = hullProfile)]

@@ -1,0 +1,72 @@
+// Browser test of the standard maneuvers fold (issue 42): the booklet the page computes in its
+// worker is the command line's bit for bit (`aes-sim maneuvers`, run here on the same preset), the
+// table says its IMO verdicts, a booklet of another study is hidden, and the fold fits and is axe
+// clean at the three sizes (screenshots maneuvers-*.png).
+// Usage: node tests/e2e/maneuvers.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR [path of aes-sim]
+import { mkdirSync, existsSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { assert, axeFindings, checker, launch, openPage, setField } from './lib.mjs';
+
+const base = process.argv[2];
+const shots = process.argv[3];
+const native = process.argv[4] || 'target/release/aes-sim';
+mkdirSync(shots, { recursive: true });
+const { check, finish } = checker();
+const errors = [];
+const browser = await launch();
+const open = (url, c) => openPage(c, url, base, errors);
+const link = `${base}#v=2&preset=turn-360`;
+
+assert(existsSync(native), `no native ${native}`);
+const cli = JSON.parse(execFileSync(native, ['maneuvers', 'preset:turn-360'], { maxBuffer: 64 << 20 }).toString());
+
+async function compute(p) {
+  await p.$eval('#maneuvers-box', (e) => { e.open = true; });
+  await p.click('#maneuvers-compute');
+  await p.waitForFunction(() => /^Done|could not|refused/.test(document.getElementById('maneuvers-status').textContent), null, { timeout: 60000 });
+  const st = await p.textContent('#maneuvers-status');
+  assert(st.startsWith('Done'), `status: ${st}`);
+  return st;
+}
+
+await check('the fold sails the maneuvers in the worker: the command line\'s booklet, bit for bit, its verdicts in the table', async () => {
+  const c = await browser.newContext({ viewport: { width: 1366, height: 768 }, bypassCSP: true });
+  const p = await open(link, c);
+  const st = await compute(p);
+  const page = await p.evaluate(() => window.__maneuvers);
+  assert(JSON.stringify(page) === JSON.stringify(cli), `page ${JSON.stringify(page).slice(0, 300)} against ${JSON.stringify(cli).slice(0, 300)}`);
+  const table = await p.textContent('#maneuvers-table');
+  for (const cr of cli.criteria) assert(table.includes(cr.name) && table.includes(Number(cr.value).toPrecision(3)), `the table lacks ${cr.name}: ${table}`);
+  assert(st.includes(`all ${cli.criteria.length} IMO criteria met`), st);
+  assert(await p.$$eval('#maneuvers-plots canvas', (cs) => cs.length) >= 3, 'the turning circle and the two zig-zags are not all drawn');
+  console.log(`     tactical diameter ${(cli.turning.tactical_diameter_m / cli.length_m).toFixed(2)} L, advance ${(cli.turning.advance_m / cli.length_m).toFixed(2)} L`);
+  // Another speed in the form: the booklet of the old one is no longer shown.
+  await setField(p, 'initial.speed_kn', 20);
+  await p.waitForFunction(() => document.getElementById('maneuvers-body').hidden, null, { timeout: 5000 });
+  assert((await p.textContent('#maneuvers-status')).includes('compute it again'), await p.textContent('#maneuvers-status'));
+  await c.close();
+});
+
+const SIZES = [[1366, 768], [1920, 1080], [390, 844]];
+const RULES = ['heading-order', 'empty-table-header', 'scrollable-region-focusable'];
+for (const [w, h] of SIZES) {
+  await check(`at ${w}x${h}: the maneuvers fold fits, axe clean (screenshots)`, async () => {
+    const c = await browser.newContext({ viewport: { width: w, height: h }, bypassCSP: true, hasTouch: w < 600 });
+    const p = await open(link, c);
+    await compute(p);
+    await p.waitForTimeout(300);
+    const l = await p.evaluate(() => {
+      const W = document.documentElement.clientWidth;
+      const clipped = (e) => { for (let a = e.parentElement; a && a !== document.body; a = a.parentElement) if (getComputedStyle(a).overflowX !== 'visible') return true; return false; };
+      const over = [...document.querySelectorAll('#maneuvers-box *')].filter((e) => e.getClientRects().length && e.getBoundingClientRect().right > W + 1 && !clipped(e)).map((e) => `${e.tagName}#${e.id}.${e.className}`).slice(0, 5);
+      return { W, scroll: document.documentElement.scrollWidth, over };
+    });
+    assert(l.scroll <= l.W && !l.over.length, `the page is ${l.scroll} px wide in ${l.W}; overflowing ${l.over.join(', ')}`);
+    await p.locator('#maneuvers-box').screenshot({ path: `${shots}/maneuvers-${w}x${h}.png` });
+    const v = await axeFindings(p, { rules: RULES });
+    assert(!v.length, v.join(' | '));
+    await c.close();
+  });
+}
+
+await finish(browser, errors);

@@ -1,0 +1,116 @@
+// The standard maneuvers of the form's ship (core's studies::maneuvers, `aes-sim maneuvers`): the
+// 35 deg turning circle and the 10/10 and 20/20 zig-zags from the study's first ordered speed with
+// the shafts held, drawn, and the booklet's table beside IMO MSC.137(76)'s limits. All of it is
+// this module: the fold's DOM, the request and the drawing; every number is the wasm's.
+import { $, el, fmt, row } from '../dom.js';
+import { REQUEST, fieldLine } from '../protocol.js';
+import { PlotBox, sizedCanvas } from '../plots.js';
+import { registerView } from '../views.js';
+
+const TEMPLATE = `
+<section class="maneuvers" aria-labelledby="maneuvers-h">
+  <p class="about">The ship of the form as it stands, from its first ordered speed with its shafts held at that speed's
+    calm-water rpm, as a trials booklet gives it: the turning circle with 35&deg; of rudder and the zig-zags, each beside
+    the limit of IMO's standards for ship manoeuvrability. Only the hull, its rudders and propellers move here; the power
+    plant is not simulated.</p>
+  <div class="row buttons">
+    <button id="maneuvers-compute" type="button">Compute the booklet</button>
+  </div>
+  <div id="maneuvers-status" role="status" aria-live="polite"></div>
+  <div id="maneuvers-body" hidden>
+    <div id="maneuvers-table" class="scroll" tabindex="0" role="region" aria-label="The booklet: IMO criteria"></div>
+    <div id="maneuvers-plots"></div>
+  </div>
+</section>`;
+
+let plots = null;
+let shownKey = null; // the scenario the booklet shown belongs to
+
+// The turning circle seen from above, in ship lengths: east to the right, north (the approach
+// course) up, a mark every 30 s.
+function drawTurn(cv, b) {
+  const { g, w, h } = sizedCanvas(cv, 320);
+  const L = b.length_m, tr = b.turning.track;
+  const xs = tr.map((s) => s.y_m / L), ys = tr.map((s) => s.x_m / L);
+  const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+  const span = Math.max(x1 - x0, y1 - y0, 1) * 1.15;
+  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2, s = Math.min(w, h) / span;
+  const px = (x) => w / 2 + (x - cx) * s, py = (y) => h / 2 - (y - cy) * s;
+  g.strokeStyle = '#ddd'; g.lineWidth = 1; g.strokeRect(0.5, 0.5, w - 1, h - 1);
+  // The tactical diameter as a dashed line across at the 180 deg point's transfer.
+  g.strokeStyle = '#8a8a8a'; g.setLineDash([4, 4]);
+  const td = b.turning.tactical_diameter_m / L;
+  g.beginPath(); g.moveTo(px(0), py(cy)); g.lineTo(px(td), py(cy)); g.stroke(); g.setLineDash([]);
+  g.strokeStyle = '#0b5cad'; g.lineWidth = 2;
+  g.beginPath(); xs.forEach((x, i) => (i ? g.lineTo(px(x), py(ys[i])) : g.moveTo(px(x), py(ys[i])))); g.stroke();
+  g.fillStyle = '#1b1b1b'; g.font = '12px system-ui';
+  for (let i = 0; i < tr.length; i += 300) { g.beginPath(); g.arc(px(xs[i]), py(ys[i]), 3, 0, 2 * Math.PI); g.fill(); }
+  g.fillStyle = '#4a4a4a';
+  g.fillText(`advance ${fmt(b.turning.advance_m / L, 3)} L, tactical diameter ${fmt(td, 3)} L (dashed); marks every 30 s`, 8, h - 8);
+}
+
+function show(b) {
+  $('maneuvers-body').hidden = false;
+  const L = b.length_m, t = b.turning;
+  const head = el('tr', {}, ...['criterion', 'ours', 'IMO limit', 'verdict'].map((x) => el('th', { scope: 'col', textContent: x })));
+  const crit = b.criteria.map((c) => row(c.name, [`${fmt(c.value, 3)} ${c.unit}`, `${fmt(c.limit, 3)} ${c.unit}`, c.pass ? 'pass' : 'fail']));
+  const more = [
+    row('steady turning diameter', [`${fmt(t.steady_diameter_m / L, 3)} L`, '', '']),
+    row('speed in the steady turn', [`${fmt(100 * t.speed_ratio, 3)} % of the approach`, '', '']),
+    row('coasting to 5 kn with the propellers stopped', [`${fmt(b.coasting.track_reach_m / L, 3)} L in ${fmt(b.coasting.time_s, 3)} s`, '', '']),
+  ];
+  $('maneuvers-table').replaceChildren(el('table', {}, el('caption', { textContent: `From ${fmt(b.approach_kn, 3)} kn with the shafts at ${fmt(b.shaft_rpm, 3)} rpm (L = ${fmt(L, 4)} m)` }),
+    el('thead', {}, head), el('tbody', {}, ...crit, ...more)));
+  plots.clear();
+  plots.canvas('Turning circle with 35° of rudder, seen from above [ship lengths]', `Turning circle: advance ${fmt(t.advance_m / L, 3)} ship lengths, tactical diameter ${fmt(t.tactical_diameter_m / L, 3)} ship lengths`, (cv) => drawTurn(cv, b));
+  for (const z of [b.zigzag_10, b.zigzag_20]) {
+    const tr = z.track;
+    plots.line(`${z.rudder_deg}/${z.rudder_deg} zig-zag: heading and rudder [deg] (overshoots ${fmt(z.first_overshoot_deg, 3)}° and ${fmt(z.second_overshoot_deg, 3)}°)`,
+      { data: tr.map((s) => s.t_s), label: 'time [s]' }, [
+        { data: tr.map((s) => s.heading_deg), label: 'heading change [deg]', color: '#0b5cad' },
+        { data: tr.map((s) => s.rudder_deg), label: 'rudder, to starboard [deg]', color: '#b8480b', dash: [6, 3] },
+      ], [{ scale: 'y', label: 'angle [deg]' }]);
+  }
+}
+
+async function compute(ctx) {
+  const inp = ctx.studyInputs();
+  if (!inp) return;
+  if (inp.invalid) { $('maneuvers-status').textContent = 'A value of the form is refused (marked at its field): correct it first.'; return; }
+  const scenario = JSON.stringify(inp.scenario);
+  $('maneuvers-compute').disabled = true;
+  $('maneuvers-status').textContent = 'Sailing the maneuvers...';
+  try {
+    const { booklet } = await ctx.client.request(REQUEST.maneuvers, { scenario });
+    show(booklet);
+    shownKey = scenario;
+    const failed = booklet.criteria.filter((c) => !c.pass).length;
+    $('maneuvers-status').textContent = `Done (${inp.title}): ${failed ? `${failed} of ${booklet.criteria.length} IMO criteria not met` : `all ${booklet.criteria.length} IMO criteria met`}.`;
+    window.__maneuvers = booklet;
+  } catch (e) {
+    $('maneuvers-body').hidden = true;
+    shownKey = null;
+    $('maneuvers-status').textContent = e.fields && e.fields.length ? `The scenario is refused: ${e.fields.slice(0, 3).map(fieldLine).join('; ')}` : `The maneuvers could not be sailed: ${e.message}`;
+  } finally {
+    $('maneuvers-compute').disabled = false;
+  }
+}
+
+// A booklet of another ship or speed is not shown under this one.
+function sync(ctx) {
+  const inp = ctx.studyInputs();
+  if (!shownKey || (inp && JSON.stringify(inp.scenario) === shownKey)) return;
+  shownKey = null;
+  $('maneuvers-body').hidden = true;
+  $('maneuvers-status').textContent = 'The study changed since the booklet was computed: compute it again.';
+}
+
+registerView({
+  id: 'maneuvers',
+  sync,
+  init(ctx) {
+    $('maneuvers-box').insertAdjacentHTML('beforeend', TEMPLATE);
+    plots = new PlotBox($('maneuvers-plots'));
+    $('maneuvers-compute').addEventListener('click', () => compute(ctx));
+  },
+});
