@@ -34,8 +34,10 @@ function drawTurn(cv, b) {
   const xs = tr.map((s) => s.y_m / L), ys = tr.map((s) => s.x_m / L);
   const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
   const span = Math.max(x1 - x0, y1 - y0, 1) * 1.15;
-  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2, s = Math.min(w, h) / span;
-  const px = (x) => w / 2 + (x - cx) * s, py = (y) => h / 2 - (y - cy) * s;
+  // The lowest 36 px hold the two lines of text.
+  const ph = h - 36;
+  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2, s = Math.min(w, ph) / span;
+  const px = (x) => w / 2 + (x - cx) * s, py = (y) => ph / 2 - (y - cy) * s;
   g.strokeStyle = '#ddd'; g.lineWidth = 1; g.strokeRect(0.5, 0.5, w - 1, h - 1);
   // The tactical diameter as a dashed line across at the 180 deg point's transfer.
   g.strokeStyle = '#8a8a8a'; g.setLineDash([4, 4]);
@@ -46,7 +48,9 @@ function drawTurn(cv, b) {
   g.fillStyle = '#1b1b1b'; g.font = '12px system-ui';
   for (let i = 0; i < tr.length; i += 300) { g.beginPath(); g.arc(px(xs[i]), py(ys[i]), 3, 0, 2 * Math.PI); g.fill(); }
   g.fillStyle = '#4a4a4a';
-  g.fillText(`advance ${fmt(b.turning.advance_m / L, 3)} L, tactical diameter ${fmt(td, 3)} L (dashed); marks every 30 s`, 8, h - 8);
+  // Two short lines, so that a phone's narrow picture keeps them whole.
+  g.fillText(`dashed: tactical diameter ${fmt(td, 3)} L`, 8, h - 8);
+  g.fillText('a mark every 30 s from the rudder order', 8, h - 24);
 }
 
 function show(b) {
