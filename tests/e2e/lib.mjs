@@ -70,3 +70,19 @@ export async function axeFindings(page, { impacts = ['serious', 'critical'], rul
     .filter((x) => impacts.includes(x.impact) || rules.includes(x.id))
     .map((x) => `${x.id} (${x.impact}): ${x.nodes.slice(0, 2).map((n) => n.target.join(' ')).join('; ')}`), { impacts, rules });
 }
+
+// A fold of the results at one size: nothing in `box` (a selector) reaches past the page's width
+// unless a scrolling ancestor clips it, a screenshot of it at `shot`, and axe-core clean on `rules`.
+export async function foldFits(p, box, shot, rules) {
+  await p.waitForTimeout(300);
+  const l = await p.evaluate((sel) => {
+    const W = document.documentElement.clientWidth;
+    const clipped = (e) => { for (let a = e.parentElement; a && a !== document.body; a = a.parentElement) if (getComputedStyle(a).overflowX !== 'visible') return true; return false; };
+    const over = [...document.querySelectorAll(`${sel} *`)].filter((e) => e.getClientRects().length && e.getBoundingClientRect().right > W + 1 && !clipped(e)).map((e) => `${e.tagName}#${e.id}.${e.className}`).slice(0, 5);
+    return { W, scroll: document.documentElement.scrollWidth, over };
+  }, box);
+  assert(l.scroll <= l.W && !l.over.length, `the page is ${l.scroll} px wide in ${l.W}; overflowing ${l.over.join(', ')}`);
+  await p.locator(box).screenshot({ path: shot });
+  const v = await axeFindings(p, { rules });
+  assert(!v.length, v.join(' | '));
+}

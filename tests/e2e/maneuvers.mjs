@@ -5,7 +5,7 @@
 // Usage: node tests/e2e/maneuvers.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR [path of aes-sim]
 import { mkdirSync, existsSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
-import { assert, axeFindings, checker, launch, openPage, setField } from './lib.mjs';
+import { assert, checker, foldFits, launch, openPage, setField } from './lib.mjs';
 
 const base = process.argv[2];
 const shots = process.argv[3];
@@ -56,17 +56,7 @@ for (const [w, h] of SIZES) {
     const c = await browser.newContext({ viewport: { width: w, height: h }, bypassCSP: true, hasTouch: w < 600 });
     const p = await open(link, c);
     await compute(p);
-    await p.waitForTimeout(300);
-    const l = await p.evaluate(() => {
-      const W = document.documentElement.clientWidth;
-      const clipped = (e) => { for (let a = e.parentElement; a && a !== document.body; a = a.parentElement) if (getComputedStyle(a).overflowX !== 'visible') return true; return false; };
-      const over = [...document.querySelectorAll('#maneuvers-box *')].filter((e) => e.getClientRects().length && e.getBoundingClientRect().right > W + 1 && !clipped(e)).map((e) => `${e.tagName}#${e.id}.${e.className}`).slice(0, 5);
-      return { W, scroll: document.documentElement.scrollWidth, over };
-    });
-    assert(l.scroll <= l.W && !l.over.length, `the page is ${l.scroll} px wide in ${l.W}; overflowing ${l.over.join(', ')}`);
-    await p.locator('#maneuvers-box').screenshot({ path: `${shots}/maneuvers-${w}x${h}.png` });
-    const v = await axeFindings(p, { rules: RULES });
-    assert(!v.length, v.join(' | '));
+    await foldFits(p, '#maneuvers-box', `${shots}/maneuvers-${w}x${h}.png`, RULES);
     await c.close();
   });
 }
