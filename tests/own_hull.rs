@@ -30,12 +30,12 @@ fn last_minute(r: &aes_core::RunResult, name: &str) -> f64 {
 
 /// Every cell of 7 speeds (4 to 28 kn) x 7 headings (0 to 180 deg) x sea states 4 to 6 runs its
 /// 200 s (the Table 2.3 hull diverged in 16 of 40 such cells at 6 and 12 kn) and holds its order
-/// within max(2 kn, 20 %) over the last minute, or its summary says why: measured, 136 of the 147
-/// hold it; the 11 that do not are all at 4 and 8 kn with the waves from astern or the quarter
-/// (0 to 60 deg), carried to 6-14 kn by the waves' mean second-order force (eqs. 2.47-2.48: about
-/// 0.5 MN forward at 4 kn in SS6 following seas, Salvesen's F7 term three quarters of it) with
-/// the propellers stopped, and each says so in its warnings. Asserted: no cell stops, every cell
-/// within the band or warned about in those words, at least 130 within the band.
+/// within max(2 kn, 20 %) over the last minute. Measured: all 147 hold it. With eq. 2.48's F7 as
+/// the surge force's short-wave part, 11 did not (4 and 8 kn with the waves from astern or the
+/// quarter, carried to 6-14 kn by about 0.4 MN forward at 4 kn in SS6); the waterline's
+/// reflection gives 35 kN there (`seakeeping::reflection`). Asserted: no cell stops, every cell
+/// within the band; a cell outside it must say why in its warnings (it would fail here all the
+/// same).
 #[test]
 fn every_polar_cell_sails() {
     let mut cells = Vec::new();
@@ -74,18 +74,22 @@ fn every_polar_cell_sails() {
         }
         println!("{kn} kn, {h} deg, SS{ss}: {got:.1} kn; {warnings:?}");
         assert!(
-            warnings.iter().any(|w| w.starts_with("speed order not held") && w.contains("the waves carry the ship")),
+            warnings.iter().any(|w| w.starts_with("speed order not held")),
             "{kn} kn, {h} deg, SS{ss}: {got:.2} kn and no warning says why: {warnings:?}"
         );
     }
     println!("{held} of {} cells hold their order", results.len());
-    assert!(held >= 130, "{held} of {}", results.len());
+    assert_eq!(held, results.len(), "{held} of {}", results.len());
 }
 
 /// Stopped in sea state 6 with the waves on the beam, for 600 s: the ship drifts and turns as a
-/// ship does, without diverging. Measured: yaw rate at most 0.36 deg/s (no clamp exists: the
-/// cross-flow drag of its sections damps it), drift 170 m sideways. Asserted: the run completes,
-/// the yaw rate under 1 deg/s, the ship 50 m or more from where it started.
+/// ship does, without diverging. Measured: yaw rate at most 0.55 deg/s (no clamp exists: the
+/// cross-flow drag of its sections damps it), 230 m from where it started, mostly sideways (drift
+/// angle 35-90 deg), at about 1 kn: the mean second-order force turns the bow towards the waves
+/// and pushes the ship astern, and the speed loop, which reads the speed through the water signed
+/// by the surge, drives the shafts ahead (25-50 rpm) against it; it read |U| before and stopped
+/// them, and the ship went 2 km astern at up to 15 kn. Asserted: the run completes, the yaw rate
+/// under 1 deg/s, the ship 50 to 600 m from where it started (1 kn for 600 s is 310 m).
 #[test]
 fn stopped_in_a_beam_sea_drifts() {
     let mut s = cell(0.0, 90.0, 6);
@@ -96,7 +100,7 @@ fn stopped_in_a_beam_sea_drifts() {
     let (x, y) = (r.summary.signals["x_m"].final_, r.summary.signals["y_m"].final_);
     println!("yaw rate {:.3} .. {:.3} deg/s, ended at ({x:.0}, {y:.0}) m", yaw.min, yaw.max);
     assert!(yaw.max.abs().max(yaw.min.abs()) < 1.0);
-    assert!(libm::hypot(x, y) > 50.0, "moved {} m", libm::hypot(x, y));
+    assert!((50.0..600.0).contains(&libm::hypot(x, y)), "moved {} m", libm::hypot(x, y));
 }
 
 /// The booklet of turn-360 (25 kn): IMO MSC.137(76)'s criteria met and a destroyer's turning

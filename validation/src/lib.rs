@@ -23,6 +23,7 @@ mod peer_code;
 mod rows;
 mod runs;
 mod second_order_and_fuel;
+mod snnm;
 pub mod svg_plot;
 
 pub use markdown::markdown;

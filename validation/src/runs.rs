@@ -11,6 +11,7 @@ use aes_core::studies::montecarlo::run_study;
 pub(crate) fn thesis_preset(name: &str) -> Option<Scenario> {
     let mut sc = aes_core::scenario::presets::preset(name)?;
     sc.hull.forces = aes_core::ship::maneuvering::ManeuveringForces::Table23;
+    sc.seakeeping.short_wave_force = aes_core::sea::seakeeping::params::ShortWaveForce::SalvesenF7;
     Some(sc)
 }
 

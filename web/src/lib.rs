@@ -418,8 +418,15 @@ pub fn rao_table_load(json: JsValue, values: &[f64]) -> Result<(), JsError> {
     let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
     let hull = sc.ship_hull().map_err(|e| JsError::new(&e))?;
     let sk = &sc.seakeeping;
-    aes_core::sea::rao_cache::insert_rao_table(&hull, &sk.grid, &sc.as_printed, sk.aft_end_terms, values)
-        .map_err(|e| JsError::new(&e))
+    aes_core::sea::rao_cache::insert_rao_table(
+        &hull,
+        &sk.grid,
+        &sc.as_printed,
+        sk.aft_end_terms,
+        sk.short_wave_force,
+        values,
+    )
+    .map_err(|e| JsError::new(&e))
 }
 
 /// RAOs of a scenario's hull (`aes-sim rao`'s JSON) at `speed_kn` and `heading_deg` over
@@ -435,6 +442,7 @@ pub fn rao_json(json: JsValue, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>
     }
     let mut ship = sc.ship_hull().and_then(|h| h.strip_ship()).map_err(|e| JsError::new(&e))?;
     ship.aft_end_terms = sc.seakeeping.aft_end_terms;
+    ship.short_wave = sc.seakeeping.short_wave_force;
     let v = aes_core::sea::seakeeping::tables::rao_json(
         &ship,
         speed_kn * aes_core::numerics::units::KNOT_M_S,

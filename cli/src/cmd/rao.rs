@@ -11,7 +11,7 @@ pub struct Args {
     #[arg(long)]
     hull: Option<String>,
     /// Take the hull and its loading from this scenario's `ship.hull` (file, `-` or
-    /// `preset:NAME`), and its `seakeeping.aft_end_terms`: the RAOs its runs use.
+    /// `preset:NAME`), and its `seakeeping.aft_end_terms` and `short_wave_force`: the RAOs its runs use.
     #[arg(long)]
     scenario: Option<String>,
     /// Waterline above the baseline [m] (default: the hull's design draft).
@@ -51,12 +51,12 @@ pub fn run(
     if !(roll_wave_amplitude.is_finite() && (0.01..=20.0).contains(&roll_wave_amplitude)) {
         return Err(format!("--roll-wave-amplitude = {roll_wave_amplitude} is outside [0.01, 20]").into());
     }
-    let (mut ship, aft_end_terms) = match &scenario {
+    let (mut ship, aft_end_terms, short_wave) = match &scenario {
         Some(path) => {
             let sc = load(path, &[])?;
-            (sc.ship, sc.seakeeping.aft_end_terms)
+            (sc.ship, sc.seakeeping.aft_end_terms, sc.seakeeping.short_wave_force)
         }
-        None => (aes_core::scenario::ShipParams::default(), true),
+        None => (aes_core::scenario::ShipParams::default(), true, Default::default()),
     };
     let spec = &mut ship.hull;
     if let Some(h) = &hull {
@@ -88,6 +88,7 @@ pub fn run(
     let resolved = ship.hull.resolve(ship.water_density_kg_m3).map_err(|(f, e)| format!("hull.{f}: {e}"))?;
     let mut strips = resolved.strip_ship()?;
     strips.aft_end_terms = aft_end_terms;
+    strips.short_wave = short_wave;
     let v = rao_json(
         &strips,
         speed_kn * aes_core::numerics::units::KNOT_M_S,

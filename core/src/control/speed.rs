@@ -31,8 +31,11 @@ crate::params! {
             source: "our design: a tight turn at 25 kn needs about +25 %",
             help: "Largest trim as a fraction of the mapped shaft speed.",
         },
-        /// At low speed a share of the map is too little for a seaway: into sea state 6 at 4 kn the
-        /// waves' mean added resistance (about 0.5 MN) needs about 80 rpm against the map's 32.
+        /// At low speed a share of the map is too little for a seaway: chosen when the mean added
+        /// resistance into sea state 6 at 4 kn was eq. 2.48's (about 0.3 MN), which needed about 80
+        /// rpm against the map's 32; with the waterline's reflection it is about 60 kN, and the
+        /// span still lets a stopped ship drive ahead against the waves' push astern (25-50 rpm in
+        /// SS6 beam seas, tests/own_hull.rs).
         pub trim_floor_rpm: f64 = 80.0 => {
             label: "Smallest speed trim span", unit: "rpm", range: 0.0..=1000.0,
             source: "our design: holds 4 kn into sea state 6 head seas",

@@ -411,11 +411,10 @@ impl Scenario {
         }
     }
 
-    /// The RAO table of this scenario's hull, grid and strip-theory switches (`as_printed`'s and
-    /// `seakeeping.aft_end_terms`; built once, shared).
+    /// The RAO table of this scenario's hull, grid and strip-theory switches (`as_printed`'s,
+    /// `seakeeping.aft_end_terms` and `short_wave_force`; built once, shared).
     pub fn rao_table(&self) -> Result<std::sync::Arc<crate::sea::seakeeping::tables::RaoTable>, String> {
-        let sk = &self.seakeeping;
-        crate::sea::rao_cache::rao_table(&self.ship_hull()?, &sk.grid, &self.as_printed, sk.aft_end_terms)
+        self.rao_table_with(&crate::sea::seakeeping::tables::Serial)
     }
 
     /// [`Self::rao_table`] with the build's parts run by `each` (side by side on the command
@@ -425,7 +424,14 @@ impl Scenario {
         each: &dyn crate::sea::seakeeping::tables::ForEach,
     ) -> Result<std::sync::Arc<crate::sea::seakeeping::tables::RaoTable>, String> {
         let sk = &self.seakeeping;
-        crate::sea::rao_cache::rao_table_with(&self.ship_hull()?, &sk.grid, &self.as_printed, sk.aft_end_terms, each)
+        crate::sea::rao_cache::rao_table_with(
+            &self.ship_hull()?,
+            &sk.grid,
+            &self.as_printed,
+            sk.aft_end_terms,
+            sk.short_wave_force,
+            each,
+        )
     }
 
     /// The bus voltage set point the field control holds [V]: `controllers.field.bus_voltage_ref_v`,

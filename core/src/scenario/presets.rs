@@ -283,6 +283,7 @@ pub fn as_printed() -> Scenario {
     };
     s.seakeeping.stern_motion = crate::scenario::SternMotion::ThesisEq257;
     s.hull.forces = crate::ship::maneuvering::ManeuveringForces::Table23;
+    s.seakeeping.short_wave_force = crate::sea::seakeeping::reflection::ShortWaveForce::SalvesenF7;
     s
 }
 

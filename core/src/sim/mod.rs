@@ -443,7 +443,10 @@ impl Simulation {
         let p = &self.plant;
         let c = &mut self.ctl;
         // Ship speed: calm-water map plus PI trim, then the ramp-limited shaft reference.
-        let shaft_ref = c.speed.update(self.speed_cmd, speed_through_water(x), ts);
+        // Signed by the surge: a ship the waves carry astern is slower than any order ahead, and
+        // the loop drives ahead against it (with |U| it read as too fast and stopped the shafts).
+        let signed_speed = if x[SURGE] < 0.0 { -speed_through_water(x) } else { speed_through_water(x) };
+        let shaft_ref = c.speed.update(self.speed_cmd, signed_speed, ts);
         match &mut c.lqg {
             Some((d, sets)) => {
                 for (k, set) in sets.iter_mut().enumerate() {

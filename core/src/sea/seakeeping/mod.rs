@@ -8,6 +8,7 @@ pub mod conformal;
 pub mod motions;
 pub mod params;
 pub mod radiation;
+pub mod reflection;
 pub mod roll_damping;
 pub mod strip;
 pub mod tables;

@@ -6,6 +6,7 @@
 
 use super::complex::cexp;
 use super::radiation::Contour;
+use super::reflection::{reflection_force, ShortWaveForce};
 use super::roll_damping::components;
 use super::strip::{RadiationTable, Sect, Ship};
 use crate::as_printed::AsPrintedParams;
@@ -27,6 +28,10 @@ pub struct Response {
     /// Mean second-order force along the waves' direction of travel per wave amplitude squared
     /// (F_add of eq. 2.47) [N/m^2]; its components in ship axes (eq. 2.46).
     pub f_add: f64,
+    /// The same for the sway component (sin(beta) f_add_sway): equal to `f_add` with eq. 2.48's
+    /// F7, with the waterline's reflection its short-wave part is F7 at zero speed
+    /// (`ShortWaveForce`).
+    pub f_add_sway: f64,
     pub added_resistance: f64,
     pub drift_force: f64,
     /// Mean second-order yaw moment about the centre of gravity per wave amplitude squared,
@@ -165,7 +170,9 @@ pub fn response(
 /// about the hull's half-breadth (the -y cos(beta) part of the rotation, of relative order B/L),
 /// the change of the waves' heading seen by each section under the yaw, and the products of the
 /// first-order rotations with first-order moments (roll x pitch moment, Pinkster's rotation terms).
-/// F7 (eq. 2.48) is already a sectional integral and is given the same lever.
+/// F7 (eq. 2.48) is already a sectional integral and is given the same lever. The moment goes
+/// with the sway force: with the waterline's reflection for the surge force (`Ship::short_wave`)
+/// f7_i is F7's density at zero speed, as in `f_add_sway`.
 pub fn response_as(
     ship: &Ship,
     table: &RadiationTable,
@@ -349,12 +356,41 @@ pub(super) fn response_parts(
         let fd_j = if printed.eq_2_47_conjugate { fdh[j] } else { fdh[j].conj() };
         s += (C::new(0.0, 0.5 * k) * raos[j] * (fk[j].conj() + fd_j)).re;
     }
-    let f7 = 0.5 * k * omega0 * omega0 / we
-        * int(&|i| {
-            let ds = ship.strips[i].area / ship.strips[i].beam;
-            libm::exp(-2.0 * k * ds) * (secs[i].b33 + sb * sb * secs[i].b22)
-        });
-    let f_add = s + f7;
+    // The short-wave part (`Ship::short_wave`). Eq. 2.48's F7 at encounter frequency for both
+    // components; or the lit waterline's reflection (`reflection`) for the surge component, the
+    // added resistance, and for the sway component F7 at zero speed (omega_e = omega0): in beam
+    // seas, where a section that follows long waves has s + F7 near nothing, F7 is the
+    // sections' own diffraction, which reflection by a thin wall of the local draft understates;
+    // at zero speed it has no omega0 / omega_e to grow with in quartering seas.
+    let f7_on = ship.short_wave == ShortWaveForce::SalvesenF7;
+    let secs_0: Vec<Sect> = if f7_on { Vec::new() } else { (0..n).map(|i| table.at(i, omega0)).collect() };
+    let f7_density = |i: usize| -> f64 {
+        let e = libm::exp(-2.0 * k * ship.strips[i].area / ship.strips[i].beam);
+        if f7_on {
+            0.5 * k * omega0 * omega0 / we * e * (secs[i].b33 + sb * sb * secs[i].b22)
+        } else {
+            0.5 * k * omega0 * e * (secs_0[i].b33 + sb * sb * secs_0[i].b22)
+        }
+    };
+    let f7 = if f7_on {
+        0.5 * k * omega0 * omega0 / we
+            * int(&|i| {
+                let ds = ship.strips[i].area / ship.strips[i].beam;
+                libm::exp(-2.0 * k * ds) * (secs[i].b33 + sb * sb * secs[i].b22)
+            })
+    } else {
+        int(&f7_density)
+    };
+    let surge_short = if f7_on {
+        f7
+    } else {
+        let xs: Vec<f64> = ship.strips.iter().map(|s| s.xi).collect();
+        let hb: Vec<f64> = ship.strips.iter().map(|s| 0.5 * s.beam).collect();
+        let ts: Vec<f64> = ship.strips.iter().map(|s| s.draft).collect();
+        reflection_force(&xs, &hb, &ts, k, omega0, u, beta, rho, g).0
+    };
+    let f_add = s + surge_short;
+    let f_add_sway = s + f7;
     // The drift moment (see `response_as`): eq. 2.47's sum and eq. 2.48 strip by strip, each with
     // the lever xi sin(beta).
     let cj = |c: C| if printed.eq_2_47_conjugate { c } else { c.conj() };
@@ -366,10 +402,7 @@ pub(super) fn response_parts(
         let (fi, hi) = (f[i], hh[i]);
         let froude_krylov = d2 * fi[0].conj() + d3 * fi[1].conj() + h4 * fi[2].conj();
         let diffraction = d2 * cj(hi[0]) + d3 * cj(hi[1]) + h4 * cj(hi[2]) + cj(ui) * (h6 * cj(hi[0]) - h5 * cj(hi[1]));
-        let f7_i = 0.5 * k * omega0 * omega0 / we
-            * libm::exp(-2.0 * k * ship.strips[i].area / ship.strips[i].beam)
-            * (secs[i].b33 + sb * sb * secs[i].b22);
-        (ik2 * (froude_krylov + diffraction)).re + f7_i
+        (ik2 * (froude_krylov + diffraction)).re + f7_density(i)
     };
     let transom = {
         let ha = hh[a];
@@ -405,8 +438,9 @@ pub(super) fn response_parts(
         pitch: raos[3],
         yaw: raos[4],
         f_add,
+        f_add_sway,
         added_resistance: -cb * f_add,
-        drift_force: sb * f_add,
+        drift_force: sb * f_add_sway,
         drift_moment,
         added_resistance_gb: gb,
         b44_viscous: bv,

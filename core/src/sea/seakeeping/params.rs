@@ -6,6 +6,10 @@ use crate::plant::propeller_losses::LossParams;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
 
+/// Declared beside the reflection force it chooses (`reflection`), which `motions` uses without
+/// this section.
+pub use crate::sea::seakeeping::reflection::ShortWaveForce;
+
 crate::params! {
     /// Ship motions in waves and propeller surface losses (ch. 2.3, 2.5.4). The hull, its loading
     /// and the propellers' place are the ship's (`ship.hull`). The surface-loss model owns its
@@ -25,6 +29,14 @@ crate::params! {
             label: "Strip theory's aft-end terms",
             source: "STF (1970) as printed: on",
             help: "STF's terms of the aft end at speed (U a44^A in B44 and the rest), which add roll damping as speed rises. Off drops them, as codes that keep end terms only for a transom do (a Wigley hull has none).",
+        },
+        /// The second-order mean force's short-wave part: the waves the waterline reflects
+        /// (`reflection`, the default) or eq. 2.48's F7 (Salvesen 1978), which the thesis' ch. 5
+        /// rows keep. Part of the RAO table's cache key.
+        pub short_wave_force: ShortWaveForce = ShortWaveForce::Reflection => {
+            label: "Short-wave mean force",
+            source: "Faltinsen et al. (1980) with Fujii-Takahashi's draft factor; eq. 2.48 as the thesis' option",
+            help: "Reflection: only the part of the waterline the waves meet reflects them, by the angle it meets them at. F7 (eq. 2.48) integrates the sections' damping over the whole hull and, in following seas, pushes a slow ship on with several times the force a wall as wide as the ship would feel.",
         },
         /// See `propeller_losses` for why 1.1 starts and 1.3 ends the loop.
         pub ventilation_on_h_over_r: f64 = LossParams::default().ventilation_on => {

@@ -99,6 +99,8 @@ pub struct Ship {
     /// strip times U). `true` (STF as printed) unless the scenario's
     /// `seakeeping.aft_end_terms` turns them off.
     pub aft_end_terms: bool,
+    /// The second-order mean force's short-wave part (`seakeeping.short_wave_force`).
+    pub short_wave: crate::sea::seakeeping::reflection::ShortWaveForce,
     /// The viscous roll damping by components (`roll_damping`); `false` leaves the potential
     /// damping of the strips alone (the comparisons of `aft_end`).
     pub viscous_roll_damping: bool,
@@ -192,6 +194,7 @@ impl Ship {
             rho,
             g,
             aft_end_terms: true,
+            short_wave: Default::default(),
             viscous_roll_damping: true,
         })
     }
@@ -282,7 +285,10 @@ mod tests {
     fn hull() -> &'static (Ship, RadiationTable) {
         static H: OnceLock<(Ship, RadiationTable)> = OnceLock::new();
         H.get_or_init(|| {
-            let s = Ship::dtmb5415();
+            // These tests check Salvesen's mean force (eqs. 2.47-2.48) as the thesis computes it;
+            // the waterline's reflection has its own (`reflection`, `validation`).
+            let mut s = Ship::dtmb5415();
+            s.short_wave = crate::sea::seakeeping::reflection::ShortWaveForce::SalvesenF7;
             let t = s.radiation_table(&default_omega_grid());
             (s, t)
         })

@@ -267,13 +267,13 @@ impl RaoTable {
     }
 
     /// Numbers per grid point in `values`.
-    pub const VALUES_PER_POINT: usize = 19;
+    pub const VALUES_PER_POINT: usize = 20;
 
     /// The table as flat numbers (every grid point's response, in the grid's order): what a web
     /// worker that built it hands to the others, so the table is built once. Per point, in order:
     /// 0 omega0, 1 omega_e, 2 k; 3-12 the RAOs sway, heave, roll, pitch, yaw as (re, im) pairs;
     /// 13 f_add, 14 added_resistance, 15 drift_force, 16 added_resistance_gb, 17 b44_viscous,
-    /// 18 drift_moment.
+    /// 18 drift_moment, 19 f_add_sway.
     pub fn values(&self) -> Vec<f64> {
         let mut v = Vec::with_capacity(self.data.len() * Self::VALUES_PER_POINT);
         for r in &self.data {
@@ -283,6 +283,7 @@ impl RaoTable {
             }
             v.extend_from_slice(&[r.f_add, r.added_resistance, r.drift_force, r.added_resistance_gb, r.b44_viscous]);
             v.push(r.drift_moment);
+            v.push(r.f_add_sway);
         }
         v
     }
@@ -313,6 +314,7 @@ impl RaoTable {
                 added_resistance_gb: v[16],
                 b44_viscous: v[17],
                 drift_moment: v[18],
+                f_add_sway: v[19],
             })
             .collect();
         let t = RaoTable { grid: *grid, omegas, speeds, heading_cs: cos_sin(&headings), headings, data };
@@ -335,11 +337,18 @@ impl RaoTable {
                 .iter()
                 .map(|c| c.re.abs().max(c.im.abs()))
                 .fold(0.0, f64::max);
-            let drift =
-                [r.f_add, r.added_resistance, r.drift_force, r.added_resistance_gb, r.b44_viscous, r.drift_moment]
-                    .iter()
-                    .map(|x| x.abs())
-                    .fold(0.0, f64::max);
+            let drift = [
+                r.f_add,
+                r.added_resistance,
+                r.drift_force,
+                r.added_resistance_gb,
+                r.b44_viscous,
+                r.drift_moment,
+                r.f_add_sway,
+            ]
+            .iter()
+            .map(|x| x.abs())
+            .fold(0.0, f64::max);
             let finite = [r.omega0, r.omega_e, r.k, rao, drift].iter().all(|x| x.is_finite());
             let why = if !finite {
                 Some("a number that is not finite".to_string())
@@ -395,7 +404,7 @@ impl RaoTable {
                     }
                     let (cos_hb, sin_hb) = self.heading_cs[(k0 + dk).min(self.headings.len() - 1)];
                     fx += w * cos_hb * r.f_add;
-                    fy += w * sin_hb * r.f_add;
+                    fy += w * sin_hb * r.f_add_sway;
                     // The moment is interpolated as stored (it carries its own sin(beta) and lever).
                     mz += w * r.drift_moment;
                     we += w * r.omega_e;

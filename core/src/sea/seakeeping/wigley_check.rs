@@ -482,7 +482,8 @@ mod tests {
         let mut rows = Vec::new();
         for bl in [0.10, 0.15, 0.20] {
             let b = bl * WIGLEY_III_L;
-            let s = wigley_iii_model(b, WIGLEY_III_STATIONS).unwrap();
+            let mut s = wigley_iii_model(b, WIGLEY_III_STATIONS).unwrap();
+            s.short_wave = crate::sea::seakeeping::reflection::ShortWaveForce::SalvesenF7;
             let t = s.radiation_table(&model_omega_grid(s.lpp, s.g));
             let row: Vec<(f64, f64, f64, f64)> = [0.2, 0.3, 0.4]
                 .into_iter()
