@@ -5,9 +5,9 @@
 // follows the one state (stale under other values, gone under another study, back with Back); the
 // address carries the tab through a reload; layout and axe at the three sizes (screenshots).
 // Usage: node tests/e2e/operability.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR [path of aes-sim]
-import { mkdirSync, existsSync } from 'node:fs';
+import { mkdirSync, existsSync, writeFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
-import { assert, axeFindings, checker, launch, openPage, setField } from './lib.mjs';
+import { assert, axeFindings, checker, launch, openPage, pressAndWait, setField } from './lib.mjs';
 
 const base = process.argv[2];
 const shots = process.argv[3];
@@ -184,6 +184,31 @@ await check('an edit of the study marks the polar stale (with Compute at hand); 
   await p.waitForTimeout(200);
   assert(await p.$eval('#op-body', (e) => e.hidden), 'the start-up polar shows under another study');
   assert((await p.textContent('#op-study')).length > 0 && !(await p.textContent('#op-study')).startsWith('Start-up'), 'the tab does not name the study it judges');
+});
+
+// Issue 42: the polar opened runs that diverged or sped up below 12 kn (0 kn and 3 kn in beam seas).
+await check('a slow beam-sea cell (3 kn, waves on the beam) opens a run that completes and holds its order, on the page and natively', async () => {
+  const p = await open(link('startup', 'operability'));
+  await compute(p);
+  const [j, i] = idx(3, 90);
+  assert(j >= 0 && i >= 0, 'the polar has no 3 kn, 90 deg cell');
+  const [x, y] = await cellPoint(p, j, i);
+  await p.mouse.click(x, y);
+  await p.waitForFunction(() => document.getElementById('tab-sim').getAttribute('aria-selected') === 'true', null, { timeout: 5000 });
+  assert((await firstOrder(p)).speed_kn === 3, `first order ${JSON.stringify(await firstOrder(p))}`);
+  const st = await pressAndWait(p);
+  assert(st.startsWith('Done'), `status: ${st}`);
+  const warnings = await p.$$eval('#warnings li', (l) => l.map((e) => e.textContent));
+  assert(!warnings.some((w) => /diverged|speed order not held/.test(w)), `warnings: ${JSON.stringify(warnings)}`);
+  // The same scenario natively: it runs to its end and the speed order is held.
+  const file = `${shots}/operability-3kn-beam.json`;
+  writeFileSync(file, await p.evaluate(() => window.__scenarioText()));
+  const mine = JSON.parse(await p.evaluate(() => window.__scenarioText()));
+  const sum = JSON.parse(execFileSync(native, ['run', file], { maxBuffer: 64 << 20 }).toString());
+  assert(Math.abs(sum.final_time_s - mine.sim.duration_s) < 1e-6, `native run ended at ${sum.final_time_s} s of ${mine.sim.duration_s}`);
+  assert(!sum.warnings.some((w) => /diverged|speed order not held/.test(w)), `native warnings: ${JSON.stringify(sum.warnings)}`);
+  console.log(`     3 kn, waves on the beam, sea state ${mine.sea.sea_state}: ${mine.sim.duration_s} s, final speed ${sum.signals.ship_speed_kn.final.toFixed(2)} kn`);
+  await p.close();
 });
 
 await check('the address carries tab=operability; a reload shows the tab; Cancel stops a polar and the next one computes', async () => {
