@@ -378,14 +378,14 @@ fn spec_of<S: study::Study>(text: &str) -> Result<S::Spec, String> {
     S::spec_from_json(text).map_err(|e| format!("the {} study: {e}", S::KIND))
 }
 
-/// The RAO table of a scenario's seakeeping grid as flat numbers (built here once, or taken from
-/// this worker's cache): the page builds it in one worker and hands it to the Monte Carlo workers
-/// (`raoTableLoad`), so no worker builds it again.
+/// The RAO table of a scenario's seakeeping grid as flat numbers and their digest (built here
+/// once, or taken from this worker's cache): the page builds it in one worker and hands it to the
+/// Monte Carlo workers (`raoTableLoad`, which takes it only as this scenario's table), so no worker
+/// builds it again.
 #[wasm_bindgen(js_name = raoTableValues)]
 pub fn rao_table_values(json: JsValue) -> Result<Vec<f64>, JsError> {
     let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let t = sc.rao_table().map_err(|e| JsError::new(&e))?;
-    Ok(t.values())
+    sc.rao_table_values().map_err(|e| JsError::new(&e))
 }
 
 /// The scenario every trial of a rare-event study runs (`rare_event` set, the ship's place at
@@ -416,17 +416,7 @@ pub fn rare_place(json: JsValue, passes: u32) -> Result<String, JsError> {
 #[wasm_bindgen(js_name = raoTableLoad)]
 pub fn rao_table_load(json: JsValue, values: &[f64]) -> Result<(), JsError> {
     let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let hull = sc.ship_hull().map_err(|e| JsError::new(&e))?;
-    let sk = &sc.seakeeping;
-    aes_core::sea::rao_cache::insert_rao_table(
-        &hull,
-        &sk.grid,
-        &sc.as_printed,
-        sk.aft_end_terms,
-        sk.short_wave_force,
-        values,
-    )
-    .map_err(|e| JsError::new(&e))
+    sc.insert_rao_table(values).map_err(|e| JsError::new(&e))
 }
 
 /// RAOs of a scenario's hull (`aes-sim rao`'s JSON) at `speed_kn` and `heading_deg` over
@@ -503,6 +493,10 @@ pub struct Sea {
     out: Vec<f64>,
 }
 
+/// How far from the origin [m] the sea's elevation is given: five days at 40 kn, where the
+/// shortest waves' phase (k x, some 1e7 rad) is still good to 1e-9 rad.
+const MAX_SEA_POINT_M: f64 = 1.0e7;
+
 #[wasm_bindgen]
 impl Sea {
     /// The sea of a scenario (no components in calm water).
@@ -526,6 +520,16 @@ impl Sea {
         }
         if xs.len() != ys.len() || xs.len() > 20_000 {
             return Err(JsError::new("elevations: xs and ys of equal length, at most 20000 points"));
+        }
+        // Far out the wave phases k x lose their digits (at 1e300 m nothing of them is left).
+        if let Some(i) = (0..xs.len()).find(|&i| !(xs[i].abs() <= MAX_SEA_POINT_M && ys[i].abs() <= MAX_SEA_POINT_M)) {
+            let coord =
+                |x: f64| if x.is_finite() { aes_core::checks::num(x) } else { "a value that is not finite".into() };
+            return Err(JsError::new(&format!(
+                "elevations: point {i} at ({}, {}) m: each coordinate must be a finite number of metres within {MAX_SEA_POINT_M:e}",
+                coord(xs[i]),
+                coord(ys[i])
+            )));
         }
         self.out.resize(xs.len(), 0.0);
         aes_core::sea::waves::elevations(&self.comps, xs, ys, t, &mut self.out);

@@ -336,9 +336,27 @@ fn boundary_checks_in_wasm() {
     }
     let z = sea.elevations(10.0, &[0.0, 5.0], &[0.0, 5.0]).unwrap().to_vec();
     assert!(z.iter().all(|v| v.is_finite()), "{z:?}");
+    for (x, y) in [(f64::NAN, 0.0), (0.0, f64::INFINITY), (1e300, 0.0), (0.0, -1.0e7 - 1.0)] {
+        let e = message(sea.elevations(10.0, &[0.0, x], &[0.0, y]).unwrap_err());
+        assert!(
+            e.contains("point 1 at") && e.contains("within 1e7") && !e.contains("NaN") && !e.contains("inf"),
+            "{e}"
+        );
+    }
+    assert!(sea.elevations(10.0, &[1.0e7], &[-1.0e7]).unwrap().to_vec()[0].is_finite());
     let values = rao_table_values(JsValue::from(&storm)).unwrap();
     let huge = vec![1e308; values.len()];
-    assert!(message(rao_table_load(JsValue::from(&storm), &huge).unwrap_err()).contains("RAO table values: point 0"));
+    assert!(message(rao_table_load(JsValue::from(&storm), &huge).unwrap_err()).contains("its digest differs"));
+    // Negated transfer functions with the grid kept (a table the next run would have used
+    // silently, generator efficiency 1.24): refused.
+    let per = aes_core::sea::seakeeping::tables::RaoTable::VALUES_PER_POINT;
+    let negated: Vec<f64> = values
+        .iter()
+        .enumerate()
+        .map(|(i, &v)| if i + 1 < values.len() && (3..13).contains(&(i % per)) { -v } else { v })
+        .collect();
+    assert!(message(rao_table_load(JsValue::from(&storm), &negated).unwrap_err()).contains("its digest differs"));
+    rao_table_load(JsValue::from(&storm), &values).unwrap();
     let mut big: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("startup")).unwrap()).unwrap();
     big["sim"]["duration_s"] = serde_json::json!(1020.0);
     big["sim"]["record_interval_s"] = serde_json::json!(0.005);

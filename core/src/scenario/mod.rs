@@ -423,15 +423,32 @@ impl Scenario {
         &self,
         each: &dyn crate::sea::seakeeping::tables::ForEach,
     ) -> Result<std::sync::Arc<crate::sea::seakeeping::tables::RaoTable>, String> {
-        let sk = &self.seakeeping;
-        crate::sea::rao_cache::rao_table_with(
-            &self.ship_hull()?,
-            &sk.grid,
-            &self.as_printed,
-            sk.aft_end_terms,
-            sk.short_wave_force,
-            each,
+        crate::sea::rao_cache::rao_table_with(&self.table_spec(&self.ship_hull()?), each)
+    }
+
+    /// The RAO table's values and their digest, for another web worker ([`Self::insert_rao_table`]).
+    pub fn rao_table_values(&self) -> Result<Vec<f64>, String> {
+        crate::sea::rao_cache::rao_table_values(
+            &self.table_spec(&self.ship_hull()?),
+            &crate::sea::seakeeping::tables::Serial,
         )
+    }
+
+    /// Takes the table another web worker built ([`Self::rao_table_values`]) if it is this
+    /// scenario's.
+    pub fn insert_rao_table(&self, values_and_digest: &[f64]) -> Result<(), String> {
+        crate::sea::rao_cache::insert_rao_table(&self.table_spec(&self.ship_hull()?), values_and_digest)
+    }
+
+    fn table_spec<'a>(&'a self, hull: &'a crate::ship::hull::ShipHull) -> crate::sea::rao_cache::TableSpec<'a> {
+        let sk = &self.seakeeping;
+        crate::sea::rao_cache::TableSpec {
+            hull,
+            grid: &sk.grid,
+            printed: &self.as_printed,
+            aft_end_terms: sk.aft_end_terms,
+            short_wave: sk.short_wave_force,
+        }
     }
 
     /// The bus voltage set point the field control holds [V]: `controllers.field.bus_voltage_ref_v`,
