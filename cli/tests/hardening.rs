@@ -479,3 +479,33 @@ fn class10_studies_are_bounded_before_they_start() {
     refused(&["validate", "--trials", "100000"], b"", "--trials = 100000: must be a whole number from 1 to 10000");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Issue 46, case 1: `merge --files-from` reads its list a line at a time, each line at most
+/// 4,096 bytes (a shard file's name) and the list at most 64 MB: an endless line is refused after
+/// reading 4,097 bytes (it was read whole, 4.2 GB, then an abort).
+#[test]
+fn class11_merge_lists_are_bounded() {
+    let t0 = Instant::now();
+    let o = run(&["merge", "--files-from", "/dev/zero"], b"");
+    assert_eq!(o.code, Some(1), "{}", o.err);
+    assert_eq!(
+        o.err,
+        "aes-sim: --files-from: line 1 of '/dev/zero' is longer than 4096 bytes, the limit for a shard file's name\n"
+    );
+    assert!(t0.elapsed() < Duration::from_secs(1), "{:?}", t0.elapsed());
+    // From standard input, after a first name that is not a shard: the list is read as merged,
+    // the first error ends it.
+    let mut list = b"\n\n".to_vec();
+    list.extend(vec![b'a'; 5 << 20]);
+    let o = run(&["merge", "--files-from", "-"], &list);
+    assert_eq!(o.code, Some(1), "{}", o.err);
+    assert_eq!(
+        o.err,
+        "aes-sim: --files-from: line 3 of standard input is longer than 4096 bytes, the limit for a shard file's name\n"
+    );
+    refused(
+        &["merge", "--files-from", "-"],
+        b"a\xff.json\n",
+        "--files-from: line 1 of standard input is not UTF-8 text (byte 2)",
+    );
+}
