@@ -545,3 +545,41 @@ fn class12_operability_checks_its_lists_before_the_table() {
     }
     assert!(t0.elapsed() < Duration::from_secs(2), "{:?}", t0.elapsed());
 }
+
+/// Issue 46, case 7: the temporary file of an output is created new, under a name nobody can
+/// predict, never through a symbolic link: links planted while the command runs, at the name it
+/// used to use (`.NAME.PID.aes-sim-tmp`) and at a guess of the new one, stay as they were, and so
+/// does the file they point to; the output is written whole.
+#[cfg(unix)]
+#[test]
+fn class13_temporary_files_never_follow_a_link() {
+    let dir = scratch("harden13");
+    let target = dir.join("someone-elses.txt");
+    std::fs::write(&target, "not yours\n").unwrap();
+    let out = dir.join("trace.csv");
+    let child = Command::new(env!("CARGO_BIN_EXE_aes-sim"))
+        .args(["run", "preset:startup", "--set", "sim.duration_s=400", "--out", out.to_str().unwrap()])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start aes-sim");
+    let pid = child.id();
+    let planted = [format!(".trace.csv.{pid}.aes-sim-tmp"), format!(".trace.csv.{pid}.0000000000000000.aes-sim-tmp")];
+    for name in &planted {
+        std::os::unix::fs::symlink(&target, dir.join(name)).unwrap();
+    }
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(std::fs::read_to_string(&target).unwrap(), "not yours\n");
+    assert!(std::fs::read_to_string(&out).unwrap().starts_with("t_s,"));
+    for name in &planted {
+        assert_eq!(std::fs::read_link(dir.join(name)).unwrap(), target, "{name}");
+    }
+    let mut names: Vec<String> =
+        std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    let mut want = vec![planted[0].clone(), planted[1].clone(), "someone-elses.txt".into(), "trace.csv".into()];
+    want.sort();
+    assert_eq!(names, want);
+    let _ = std::fs::remove_dir_all(&dir);
+}
