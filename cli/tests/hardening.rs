@@ -583,3 +583,48 @@ fn class13_temporary_files_never_follow_a_link() {
     assert_eq!(names, want);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Issue 46, case 8: every message stays under 2 kB with its control characters escaped: an
+/// operability section with 20 problems (9 kB before) lists the first few and counts the rest;
+/// clap's echo of a 5,000-character value with a raw newline is cut and escaped (exit status 2,
+/// clap's); a scatter diagram whose counts add up past the largest number is refused by its
+/// field (it said "no occurrences").
+#[test]
+fn class14_every_message_is_short_and_escaped() {
+    let points: Vec<String> = (0..20)
+        .map(|i| format!(r#"{{"name": "point {i} {}", "x_m": 100, "y_m": 0, "z_m": 20}}"#, "p".repeat(50)))
+        .collect();
+    let criteria: Vec<String> = (0..20)
+        .map(|_| r#"{"quantity": "vertical_acceleration_rms_g", "point": "nowhere", "limit": 0.2}"#.to_string())
+        .collect();
+    let sc =
+        format!(r#"{{"operability": {{"points": [{}], "criteria": [{}]}}}}"#, points.join(","), criteria.join(","));
+    let o = run(&["operability", "-"], sc.as_bytes());
+    assert_eq!(o.code, Some(1), "{}", o.err);
+    assert!(o.err.len() < 2000, "{} bytes of stderr", o.err.len());
+    assert!(
+        o.err.contains(
+            "operability.criteria.0.point = \"nowhere\": vertical_acceleration_rms_g is taken at a point: one of"
+        ),
+        "{}",
+        o.err
+    );
+    assert!(o.err.ends_with(" more problems (20 in all)\n"), "{}", o.err);
+    let long = format!("1\n{}", "x".repeat(5000));
+    let o = run(&["operability", "--speeds", &long], b"");
+    assert_eq!(o.code, Some(2), "{}", o.err);
+    let shown = format!("1\\n{}...", "x".repeat(57));
+    assert_eq!(
+        o.err.lines().next().unwrap(),
+        format!("error: invalid value '{shown}' for '--speeds <SPEEDS>': invalid float literal")
+    );
+    assert!(o.err.len() < 2000 && !o.err.contains("1\nx"), "{}", o.err);
+    let dir = scratch("harden14");
+    let scatter = dir.join("scatter.csv");
+    std::fs::write(&scatter, "Hs_m\\Tz_s,5,6\n1,1e308,1e308\n").unwrap();
+    let s = scatter.to_str().unwrap();
+    let o = run(&["operability", "--scatter", s], b"");
+    assert_eq!(o.code, Some(1), "{}", o.err);
+    assert_eq!(o.err, format!("aes-sim: --scatter {s}: line 2: occurrence = 1e308 is outside 0 to 1e12\n"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
