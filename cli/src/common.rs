@@ -141,12 +141,63 @@ impl OutFile {
             return std::fs::write(&self.path, bytes).map_err(failed);
         }
         let (tmp, mut f) = self.create_temp().map_err(failed)?;
+        #[cfg(unix)]
+        on_signal::writing(Some(&tmp));
         let r = f.write_all(bytes).and_then(|()| f.sync_all()).and_then(|()| std::fs::rename(&tmp, &self.path));
+        #[cfg(unix)]
+        on_signal::writing(None);
         r.map_err(|e| {
             // Only the file this process created is removed.
             let _ = std::fs::remove_file(&tmp);
             failed(e)
         })
+    }
+}
+
+/// The temporary file being written is removed when SIGINT or SIGTERM stops the command
+/// (Ctrl-C, a scheduler's kill); the signal then ends the command as it would have.
+#[cfg(unix)]
+mod on_signal {
+    use std::sync::atomic::{AtomicPtr, Ordering};
+
+    /// The temporary file being written, as a C string (null: none). A name once stored is never
+    /// freed (one small string a write): the handler may read it at any moment.
+    static WRITING: AtomicPtr<libc::c_char> = AtomicPtr::new(std::ptr::null_mut());
+    static INSTALLED: std::sync::Once = std::sync::Once::new();
+
+    extern "C" fn remove_and_stop(sig: libc::c_int) {
+        let path = WRITING.load(Ordering::SeqCst);
+        // SAFETY: unlink, signal and raise are async-signal-safe; `path` is null or a string
+        // that is never freed.
+        unsafe {
+            if !path.is_null() {
+                libc::unlink(path);
+            }
+            libc::signal(sig, libc::SIG_DFL);
+            libc::raise(sig);
+        }
+    }
+
+    /// Marks `path` as the temporary file being written (None: none now). The handler is
+    /// installed at the first call, for SIGINT and SIGTERM, unless the signal was ignored (a
+    /// command started with `nohup`, or in the background by a script, stays deaf to it).
+    pub fn writing(path: Option<&std::path::Path>) {
+        INSTALLED.call_once(|| {
+            for sig in [libc::SIGINT, libc::SIGTERM] {
+                // SAFETY: the handler only calls async-signal-safe functions.
+                unsafe {
+                    let before = libc::signal(sig, remove_and_stop as *const () as libc::sighandler_t);
+                    if before == libc::SIG_IGN {
+                        libc::signal(sig, libc::SIG_IGN);
+                    }
+                }
+            }
+        });
+        use std::os::unix::ffi::OsStrExt;
+        let name = path
+            .and_then(|p| std::ffi::CString::new(p.as_os_str().as_bytes()).ok())
+            .map_or(std::ptr::null_mut(), std::ffi::CString::into_raw);
+        WRITING.store(name, Ordering::SeqCst);
     }
 }
 

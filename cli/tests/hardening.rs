@@ -628,3 +628,47 @@ fn class14_every_message_is_short_and_escaped() {
     assert_eq!(o.err, format!("aes-sim: --scatter {s}: line 2: occurrence = 1e308 is outside 0 to 1e12\n"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Issue 46, case 7: a command stopped by SIGTERM while it writes its output removes its
+/// temporary file (and ends by the signal as before). The trace of a 2,000 s run recorded every
+/// 0.01 s (200,000 rows) takes long enough to write that the temporary file is seen and the
+/// signal sent before the rename.
+#[cfg(unix)]
+#[test]
+fn class15_a_stopped_write_leaves_no_temporary_file() {
+    use std::os::unix::process::ExitStatusExt;
+    let dir = scratch("harden15");
+    let out = dir.join("trace.csv");
+    let temporary = |dir: &std::path::Path| {
+        std::fs::read_dir(dir)
+            .unwrap()
+            .filter_map(|e| e.ok())
+            .any(|e| e.file_name().to_string_lossy().ends_with(".aes-sim-tmp"))
+    };
+    // Being written: not the empty file made when --out is checked at the start.
+    let writing = |dir: &std::path::Path| {
+        std::fs::read_dir(dir).unwrap().filter_map(|e| e.ok()).any(|e| {
+            e.file_name().to_string_lossy().ends_with(".aes-sim-tmp") && e.metadata().is_ok_and(|m| m.len() > 0)
+        })
+    };
+    let mut child = Command::new(env!("CARGO_BIN_EXE_aes-sim"))
+        .args(["run", "preset:startup", "--set", "sim.duration_s=2000", "--set", "sim.record_interval_s=0.01"])
+        .args(["--out", out.to_str().unwrap()])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("start aes-sim");
+    let t0 = Instant::now();
+    while !writing(&dir) && t0.elapsed() < BOUND && child.try_wait().unwrap().is_none() {
+        std::thread::sleep(Duration::from_micros(200));
+    }
+    let seen = writing(&dir);
+    let killed = Command::new("kill").args(["-TERM", &child.id().to_string()]).status().unwrap();
+    let status = child.wait().unwrap();
+    assert!(seen && killed.success(), "the temporary file was not seen before the command ended");
+    // SIGTERM is 15 on Linux.
+    assert_eq!(status.signal(), Some(15), "{status:?}");
+    assert!(!temporary(&dir), "a temporary file is left");
+    assert!(!out.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
