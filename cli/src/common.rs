@@ -91,12 +91,7 @@ impl OutFile {
         if direct {
             return Ok(out);
         }
-        let probe = out.temp_path();
-        std::fs::OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&probe)
-            .map_err(|e| format!("{}: cannot write in its folder: {e}", name()))?;
+        let (probe, _) = out.create_temp().map_err(|e| format!("{}: cannot write in its folder: {e}", name()))?;
         let _ = std::fs::remove_file(&probe);
         Ok(out)
     }
@@ -118,28 +113,119 @@ impl OutFile {
         }
     }
 
-    /// A name beside the file for the text being written (hidden, with this process's id).
-    fn temp_path(&self) -> std::path::PathBuf {
+    /// A new temporary file beside the file, for the text being written: hidden, named with this
+    /// process's id and 64 unpredictable bits ([`random_token`]), so nobody can plant a link at
+    /// its name beforehand; created new (a name already taken, a symbolic link included, is
+    /// never opened: another is drawn, up to 8 times).
+    fn create_temp(&self) -> std::io::Result<(std::path::PathBuf, std::fs::File)> {
         let file = self.path.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default();
-        self.path.with_file_name(format!(".{file}.{}.aes-sim-tmp", std::process::id()))
+        let mut taken = None;
+        for _ in 0..8 {
+            let tmp =
+                self.path.with_file_name(format!(".{file}.{}.{:016x}.aes-sim-tmp", std::process::id(), random_token()));
+            match create_new(&tmp) {
+                Ok(f) => return Ok((tmp, f)),
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => taken = Some(e),
+                Err(e) => return Err(e),
+            }
+        }
+        Err(taken.unwrap_or_else(|| std::io::Error::other("no free temporary name")))
     }
 
-    /// Writes `bytes` whole to the temporary file, then renames it over the file; on an error the
-    /// temporary file is removed and the file is as it was.
+    /// Writes `bytes` whole to a new temporary file, syncs it to the disk, then renames it over
+    /// the file; on an error the temporary file is removed and the file is as it was.
     pub fn write(&self, bytes: &[u8]) -> Result<(), String> {
+        let failed =
+            |e: std::io::Error| format!("{} '{}': cannot write: {e}", self.flag, shorten(&self.path.to_string_lossy()));
         if self.direct {
-            return std::fs::write(&self.path, bytes)
-                .map_err(|e| format!("{} '{}': cannot write: {e}", self.flag, shorten(&self.path.to_string_lossy())));
+            return std::fs::write(&self.path, bytes).map_err(failed);
         }
-        let tmp = self.temp_path();
-        let r = std::fs::File::create(&tmp)
-            .and_then(|mut f| f.write_all(bytes).and_then(|()| f.sync_all()))
-            .and_then(|()| std::fs::rename(&tmp, &self.path));
+        let (tmp, mut f) = self.create_temp().map_err(failed)?;
+        #[cfg(unix)]
+        on_signal::writing(Some(&tmp));
+        let r = f.write_all(bytes).and_then(|()| f.sync_all()).and_then(|()| std::fs::rename(&tmp, &self.path));
+        #[cfg(unix)]
+        on_signal::writing(None);
         r.map_err(|e| {
+            // Only the file this process created is removed.
             let _ = std::fs::remove_file(&tmp);
-            format!("{} '{}': cannot write: {e}", self.flag, shorten(&self.path.to_string_lossy()))
+            failed(e)
         })
     }
+}
+
+/// The temporary file being written is removed when SIGINT or SIGTERM stops the command
+/// (Ctrl-C, a scheduler's kill); the signal then ends the command as it would have.
+#[cfg(unix)]
+mod on_signal {
+    use std::sync::atomic::{AtomicPtr, Ordering};
+
+    /// The temporary file being written, as a C string (null: none). A name once stored is never
+    /// freed (one small string a write): the handler may read it at any moment.
+    static WRITING: AtomicPtr<libc::c_char> = AtomicPtr::new(std::ptr::null_mut());
+    static INSTALLED: std::sync::Once = std::sync::Once::new();
+
+    extern "C" fn remove_and_stop(sig: libc::c_int) {
+        let path = WRITING.load(Ordering::SeqCst);
+        // SAFETY: unlink, signal and raise are async-signal-safe; `path` is null or a string
+        // that is never freed.
+        unsafe {
+            if !path.is_null() {
+                libc::unlink(path);
+            }
+            libc::signal(sig, libc::SIG_DFL);
+            libc::raise(sig);
+        }
+    }
+
+    /// Marks `path` as the temporary file being written (None: none now). The handler is
+    /// installed at the first call, for SIGINT and SIGTERM, unless the signal was ignored (a
+    /// command started with `nohup`, or in the background by a script, stays deaf to it).
+    pub fn writing(path: Option<&std::path::Path>) {
+        INSTALLED.call_once(|| {
+            for sig in [libc::SIGINT, libc::SIGTERM] {
+                // SAFETY: the handler only calls async-signal-safe functions.
+                unsafe {
+                    let before = libc::signal(sig, remove_and_stop as *const () as libc::sighandler_t);
+                    if before == libc::SIG_IGN {
+                        libc::signal(sig, libc::SIG_IGN);
+                    }
+                }
+            }
+        });
+        use std::os::unix::ffi::OsStrExt;
+        let name = path
+            .and_then(|p| std::ffi::CString::new(p.as_os_str().as_bytes()).ok())
+            .map_or(std::ptr::null_mut(), std::ffi::CString::into_raw);
+        WRITING.store(name, Ordering::SeqCst);
+    }
+}
+
+/// Opens `path` for writing as a new file: refused when anything is at that name already
+/// (O_EXCL), and a symbolic link there is never followed (O_NOFOLLOW).
+fn create_new(path: &std::path::Path) -> std::io::Result<std::fs::File> {
+    let mut options = std::fs::OpenOptions::new();
+    options.write(true).create_new(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NOFOLLOW);
+    }
+    options.open(path)
+}
+
+/// 64 bits no other user can predict, for a temporary file's name: std's `RandomState`, whose
+/// keys come from the operating system's random source (getrandom on Linux), hashing the time,
+/// the process id and a count of the names drawn so far.
+fn random_token() -> u64 {
+    use std::hash::{BuildHasher, Hasher};
+    static DRAWN: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let mut h = std::collections::hash_map::RandomState::new().build_hasher();
+    let now = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_nanos());
+    h.write_u128(now);
+    h.write_u32(std::process::id());
+    h.write_u64(DRAWN.fetch_add(1, std::sync::atomic::Ordering::Relaxed));
+    h.finish()
 }
 
 /// A user's text cut short for a message.

@@ -7,6 +7,7 @@ mod study;
 
 use clap::{Parser, Subcommand};
 use common::Failure;
+use std::fmt::Write as _;
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -93,8 +94,7 @@ enum Cmd {
     Validate(cmd::validate::Args),
 }
 
-fn real_main() -> Result<(), Failure> {
-    let cli = Cli::parse();
+fn real_main(cli: Cli) -> Result<(), Failure> {
     match cli.command {
         Cmd::Presets => cmd::presets::list(),
         Cmd::Signals(a) => cmd::signals::run(a),
@@ -150,18 +150,101 @@ fn main() -> ExitCode {
         );
         return ExitCode::FAILURE;
     }
-    match real_main() {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_end(&e),
+    };
+    match real_main(cli) {
         Ok(()) | Err(Failure::PipeClosed) => ExitCode::SUCCESS,
         Err(Failure::Msg(e)) => {
-            // The last guard: no control character of a value or a file name reaches the terminal.
-            let _ = writeln!(std::io::stderr(), "aes-sim: {}", aes_core::checks::escape_controls(&e, true));
+            // The last guard: no control character of a value or a file name reaches the terminal,
+            // and no message is longer than a screen.
+            let _ = writeln!(std::io::stderr(), "aes-sim: {}", bounded(&aes_core::checks::escape_controls(&e, true)));
             ExitCode::FAILURE
         }
     }
 }
 
+/// Longest message on stderr [bytes]; a longer one is cut (each part of a message is cut much
+/// shorter where it is made: this is the last guard).
+const MAX_MESSAGE_BYTES: usize = 1800;
+
+/// `text` cut to [`MAX_MESSAGE_BYTES`] at a character's boundary, saying so.
+fn bounded(text: &str) -> String {
+    if text.len() <= MAX_MESSAGE_BYTES {
+        return text.to_string();
+    }
+    let mut end = MAX_MESSAGE_BYTES;
+    while !text.is_char_boundary(end) {
+        end -= 1;
+    }
+    let mut s = text[..end].to_string();
+    let _ = write!(s, "... (cut here: {} bytes in all)", text.len());
+    s
+}
+
+/// A command line clap refuses, with its exit status (2), or help and version (0, on standard
+/// output as clap prints them). clap echoes an offending value whole: here each value it echoes
+/// is cut to 60 characters with its control characters escaped (a raw newline included), as
+/// every other message of the command.
+fn clap_end(e: &clap::Error) -> ExitCode {
+    let code = u8::try_from(e.exit_code()).unwrap_or(2);
+    if !e.use_stderr() {
+        let _ = e.print();
+        return ExitCode::from(code);
+    }
+    let _ = write!(std::io::stderr(), "{}", clap_message(e));
+    ExitCode::from(code)
+}
+
+/// clap's message for `e` without styles, each value of its context shortened and escaped, then
+/// any control character left escaped (clap's own line breaks kept) and the whole bounded.
+fn clap_message(e: &clap::Error) -> String {
+    use clap::error::ContextValue;
+    let mut values: Vec<&str> = e
+        .context()
+        .flat_map(|(_, v)| match v {
+            ContextValue::String(s) => vec![s.as_str()],
+            ContextValue::Strings(v) => v.iter().map(String::as_str).collect(),
+            _ => Vec::new(),
+        })
+        .collect();
+    // The longest first: a value inside another is replaced after it.
+    values.sort_by_key(|v| std::cmp::Reverse(v.len()));
+    let mut text = e.render().to_string();
+    for v in values {
+        let short = aes_core::checks::shorten(v);
+        if !v.is_empty() && short != v {
+            text = text.replace(v, &short);
+        }
+    }
+    let end = if text.ends_with('\n') { "\n" } else { "" };
+    format!("{}{end}", bounded(aes_core::checks::escape_controls(text.trim_end_matches('\n'), true).as_str()))
+}
+
 #[cfg(test)]
 mod tests {
+    use clap::Parser;
+
+    /// clap's echo of a 5,000-character value with a raw newline: the value cut to 60 characters,
+    /// the newline escaped, clap's own lines and exit status kept.
+    #[test]
+    fn clap_values_are_cut_and_escaped() {
+        let long = format!("1\n{}", "x".repeat(5000));
+        let e = super::Cli::try_parse_from(["aes-sim", "operability", "--speeds", &long]).err().unwrap();
+        let text = super::clap_message(&e);
+        let shown = format!("1\\n{}...", "x".repeat(57));
+        assert_eq!(
+            text.lines().next().unwrap(),
+            format!("error: invalid value '{shown}' for '--speeds <SPEEDS>': invalid float literal")
+        );
+        assert!(text.len() < 400 && text.ends_with("For more information, try '--help'.\n"), "{text}");
+        assert_eq!(e.exit_code(), 2);
+        // A message past the bound is cut at a character's boundary.
+        let cut = super::bounded(&"\u{e9}".repeat(2000));
+        assert!(cut.ends_with("... (cut here: 4000 bytes in all)") && cut.len() < 1900, "{}", cut.len());
+    }
+
     /// The AVX2 check reads the kernel's flags: a word, not a prefix (avx512f is not avx2).
     #[test]
     fn avx2_is_read_from_the_flags_line() {

@@ -479,3 +479,196 @@ fn class10_studies_are_bounded_before_they_start() {
     refused(&["validate", "--trials", "100000"], b"", "--trials = 100000: must be a whole number from 1 to 10000");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Issue 46, case 1: `merge --files-from` reads its list a line at a time, each line at most
+/// 4,096 bytes (a shard file's name) and the list at most 64 MB: an endless line is refused after
+/// reading 4,097 bytes (it was read whole, 4.2 GB, then an abort).
+#[test]
+fn class11_merge_lists_are_bounded() {
+    let t0 = Instant::now();
+    let o = run(&["merge", "--files-from", "/dev/zero"], b"");
+    assert_eq!(o.code, Some(1), "{}", o.err);
+    assert_eq!(
+        o.err,
+        "aes-sim: --files-from: line 1 of '/dev/zero' is longer than 4096 bytes, the limit for a shard file's name\n"
+    );
+    assert!(t0.elapsed() < Duration::from_secs(1), "{:?}", t0.elapsed());
+    // From standard input, after a first name that is not a shard: the list is read as merged,
+    // the first error ends it.
+    let mut list = b"\n\n".to_vec();
+    list.extend(vec![b'a'; 5 << 20]);
+    let o = run(&["merge", "--files-from", "-"], &list);
+    assert_eq!(o.code, Some(1), "{}", o.err);
+    assert_eq!(
+        o.err,
+        "aes-sim: --files-from: line 3 of standard input is longer than 4096 bytes, the limit for a shard file's name\n"
+    );
+    refused(
+        &["merge", "--files-from", "-"],
+        b"a\xff.json\n",
+        "--files-from: line 1 of standard input is not UTF-8 text (byte 2)",
+    );
+}
+
+/// Issue 46, case 6: `operability` checks its speeds, headings, seas and work before it builds
+/// the RAO table. With the finest grid allowed (400 x 20 x 25 = 200,000 points, 5.8e6 units of
+/// work: measured 10 s on one core) each bad list is refused within 2 s (it took the table's time
+/// first; the work limit was checked only after the table).
+#[test]
+fn class12_operability_checks_its_lists_before_the_table() {
+    let fine = [
+        "--set",
+        "seakeeping.grid.n_omega=400",
+        "--set",
+        "seakeeping.grid.n_speed=20",
+        "--set",
+        "seakeeping.grid.n_heading=25",
+    ];
+    let speeds: Vec<String> = (0..100).map(|i| format!("{}", i as f64 * 0.3)).collect();
+    let headings: Vec<String> = (0..360).map(|i| i.to_string()).collect();
+    let (speeds, headings) = (speeds.join(","), headings.join(","));
+    let t0 = Instant::now();
+    for (args, want) in [
+        (
+            vec!["--speeds", "99"],
+            "aes-sim: speeds: 99 kn is outside 0 to 35 kn (seakeeping.grid.speed_max_kn, the RAO table's top speed)\n",
+        ),
+        (vec!["--headings", "400"], "aes-sim: headings: 400 deg is outside -360 to 360 deg\n"),
+        (vec!["--seas", "30:10"], "aes-sim: seas: H_1/3 = 30 m is outside 0 to 20 m\n"),
+        (vec!["--speeds", &speeds, "--headings", &headings], "aes-sim: the polar asks for up to "),
+    ] {
+        let all: Vec<&str> = ["operability"].into_iter().chain(fine).chain(args.iter().copied()).collect();
+        let o = run(&all, b"");
+        assert_eq!(o.code, Some(1), "{args:?}: {}", o.err);
+        assert!(o.err.starts_with(want), "{args:?}: {}", o.err);
+        assert!(o.err.len() < 2000, "{args:?}: {} bytes", o.err.len());
+    }
+    assert!(t0.elapsed() < Duration::from_secs(2), "{:?}", t0.elapsed());
+}
+
+/// Issue 46, case 7: the temporary file of an output is created new, under a name nobody can
+/// predict, never through a symbolic link: links planted while the command runs, at the name it
+/// used to use (`.NAME.PID.aes-sim-tmp`) and at a guess of the new one, stay as they were, and so
+/// does the file they point to; the output is written whole.
+#[cfg(unix)]
+#[test]
+fn class13_temporary_files_never_follow_a_link() {
+    let dir = scratch("harden13");
+    let target = dir.join("someone-elses.txt");
+    std::fs::write(&target, "not yours\n").unwrap();
+    let out = dir.join("trace.csv");
+    let child = Command::new(env!("CARGO_BIN_EXE_aes-sim"))
+        .args(["run", "preset:startup", "--set", "sim.duration_s=400", "--out", out.to_str().unwrap()])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start aes-sim");
+    let pid = child.id();
+    let planted = [format!(".trace.csv.{pid}.aes-sim-tmp"), format!(".trace.csv.{pid}.0000000000000000.aes-sim-tmp")];
+    for name in &planted {
+        std::os::unix::fs::symlink(&target, dir.join(name)).unwrap();
+    }
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(std::fs::read_to_string(&target).unwrap(), "not yours\n");
+    assert!(std::fs::read_to_string(&out).unwrap().starts_with("t_s,"));
+    for name in &planted {
+        assert_eq!(std::fs::read_link(dir.join(name)).unwrap(), target, "{name}");
+    }
+    let mut names: Vec<String> =
+        std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    let mut want = vec![planted[0].clone(), planted[1].clone(), "someone-elses.txt".into(), "trace.csv".into()];
+    want.sort();
+    assert_eq!(names, want);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 46, case 8: every message stays under 2 kB with its control characters escaped: an
+/// operability section with 20 problems (9 kB before) lists the first few and counts the rest;
+/// clap's echo of a 5,000-character value with a raw newline is cut and escaped (exit status 2,
+/// clap's); a scatter diagram whose counts add up past the largest number is refused by its
+/// field (it said "no occurrences").
+#[test]
+fn class14_every_message_is_short_and_escaped() {
+    let points: Vec<String> = (0..20)
+        .map(|i| format!(r#"{{"name": "point {i} {}", "x_m": 100, "y_m": 0, "z_m": 20}}"#, "p".repeat(50)))
+        .collect();
+    let criteria: Vec<String> = (0..20)
+        .map(|_| r#"{"quantity": "vertical_acceleration_rms_g", "point": "nowhere", "limit": 0.2}"#.to_string())
+        .collect();
+    let sc =
+        format!(r#"{{"operability": {{"points": [{}], "criteria": [{}]}}}}"#, points.join(","), criteria.join(","));
+    let o = run(&["operability", "-"], sc.as_bytes());
+    assert_eq!(o.code, Some(1), "{}", o.err);
+    assert!(o.err.len() < 2000, "{} bytes of stderr", o.err.len());
+    assert!(
+        o.err.contains(
+            "operability.criteria.0.point = \"nowhere\": vertical_acceleration_rms_g is taken at a point: one of"
+        ),
+        "{}",
+        o.err
+    );
+    assert!(o.err.ends_with(" more problems (20 in all)\n"), "{}", o.err);
+    let long = format!("1\n{}", "x".repeat(5000));
+    let o = run(&["operability", "--speeds", &long], b"");
+    assert_eq!(o.code, Some(2), "{}", o.err);
+    let shown = format!("1\\n{}...", "x".repeat(57));
+    assert_eq!(
+        o.err.lines().next().unwrap(),
+        format!("error: invalid value '{shown}' for '--speeds <SPEEDS>': invalid float literal")
+    );
+    assert!(o.err.len() < 2000 && !o.err.contains("1\nx"), "{}", o.err);
+    let dir = scratch("harden14");
+    let scatter = dir.join("scatter.csv");
+    std::fs::write(&scatter, "Hs_m\\Tz_s,5,6\n1,1e308,1e308\n").unwrap();
+    let s = scatter.to_str().unwrap();
+    let o = run(&["operability", "--scatter", s], b"");
+    assert_eq!(o.code, Some(1), "{}", o.err);
+    assert_eq!(o.err, format!("aes-sim: --scatter {s}: line 2: occurrence = 1e308 is outside 0 to 1e12\n"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 46, case 7: a command stopped by SIGTERM while it writes its output removes its
+/// temporary file (and ends by the signal as before). The trace of a 2,000 s run recorded every
+/// 0.01 s (200,000 rows) takes long enough to write that the temporary file is seen and the
+/// signal sent before the rename.
+#[cfg(unix)]
+#[test]
+fn class15_a_stopped_write_leaves_no_temporary_file() {
+    use std::os::unix::process::ExitStatusExt;
+    let dir = scratch("harden15");
+    let out = dir.join("trace.csv");
+    let temporary = |dir: &std::path::Path| {
+        std::fs::read_dir(dir)
+            .unwrap()
+            .filter_map(|e| e.ok())
+            .any(|e| e.file_name().to_string_lossy().ends_with(".aes-sim-tmp"))
+    };
+    // Being written: not the empty file made when --out is checked at the start.
+    let writing = |dir: &std::path::Path| {
+        std::fs::read_dir(dir).unwrap().filter_map(|e| e.ok()).any(|e| {
+            e.file_name().to_string_lossy().ends_with(".aes-sim-tmp") && e.metadata().is_ok_and(|m| m.len() > 0)
+        })
+    };
+    let mut child = Command::new(env!("CARGO_BIN_EXE_aes-sim"))
+        .args(["run", "preset:startup", "--set", "sim.duration_s=2000", "--set", "sim.record_interval_s=0.01"])
+        .args(["--out", out.to_str().unwrap()])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("start aes-sim");
+    let t0 = Instant::now();
+    while !writing(&dir) && t0.elapsed() < BOUND && child.try_wait().unwrap().is_none() {
+        std::thread::sleep(Duration::from_micros(200));
+    }
+    let seen = writing(&dir);
+    let killed = Command::new("kill").args(["-TERM", &child.id().to_string()]).status().unwrap();
+    let status = child.wait().unwrap();
+    assert!(seen && killed.success(), "the temporary file was not seen before the command ended");
+    // SIGTERM is 15 on Linux.
+    assert_eq!(status.signal(), Some(15), "{status:?}");
+    assert!(!temporary(&dir), "a temporary file is left");
+    assert!(!out.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}

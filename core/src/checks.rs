@@ -30,15 +30,25 @@ impl fmt::Display for FieldError {
 pub struct ScenarioError(pub Vec<FieldError>);
 
 impl fmt::Display for ScenarioError {
+    /// The first problems, at most [`MAX_ERRORS_SHOWN`] of them and [`MAX_ERRORS_BYTES`] bytes
+    /// (the first always), then a line counting the rest: a message stays under 2 kB.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (i, e) in self.0.iter().take(MAX_ERRORS_SHOWN).enumerate() {
-            if i > 0 {
+        let mut bytes = 0;
+        let mut shown = 0;
+        for e in self.0.iter().take(MAX_ERRORS_SHOWN) {
+            let line = e.to_string();
+            if shown > 0 && bytes + 1 + line.len() > MAX_ERRORS_BYTES {
+                break;
+            }
+            if shown > 0 {
                 writeln!(f)?;
             }
-            write!(f, "{e}")?;
+            write!(f, "{line}")?;
+            bytes += line.len() + usize::from(shown > 0);
+            shown += 1;
         }
-        if self.0.len() > MAX_ERRORS_SHOWN {
-            write!(f, "\n... and {} more problems ({} in all)", self.0.len() - MAX_ERRORS_SHOWN, self.0.len())?;
+        if self.0.len() > shown {
+            write!(f, "\n... and {} more problems ({} in all)", self.0.len() - shown, self.0.len())?;
         }
         Ok(())
     }
@@ -49,8 +59,11 @@ impl std::error::Error for ScenarioError {}
 /// Longest value echoed in a message [characters]; longer values are cut with an ellipsis.
 pub const MAX_VALUE_CHARS: usize = 60;
 
-/// Most problems of one scenario a message lists; the rest are counted in a last line.
+/// Most problems of one scenario a message lists, and most bytes of them (one problem is at most
+/// about 530 characters: a path, a value, a message cut to 400); the rest are counted in a last
+/// line.
 pub const MAX_ERRORS_SHOWN: usize = 20;
+pub const MAX_ERRORS_BYTES: usize = 1500;
 
 /// A value as text for a message, its control characters escaped (ESC, BEL, newline: a value
 /// or a file name never reaches the terminal raw) and cut to [`MAX_VALUE_CHARS`].

@@ -451,9 +451,26 @@ pub struct PolarSetup {
     scatter_shapes: Vec<f64>,
 }
 
+/// What a polar takes besides the RAO table: all that is known, and checked, before the table is
+/// built.
+struct Plan {
+    judge: Judge,
+    dirs: Vec<(f64, f64)>,
+    band: (f64, f64),
+    nodes: usize,
+    spec: PolarSpec,
+    scatter_shapes: Vec<f64>,
+}
+
 impl PolarSetup {
-    /// Checks the spec and the work, builds (or takes from the cache) the RAO table.
-    pub fn new(sc: &Scenario, mut spec: PolarSpec, scatter: Option<&scatter::Scatter>) -> Result<PolarSetup, String> {
+    /// Checks the spec (its speeds, headings and seas) and the work it asks for, without building
+    /// anything: the RAO table of a fine grid or a hull of many stations takes a minute, a bad
+    /// list is refused before it.
+    pub fn check(sc: &Scenario, spec: PolarSpec, scatter: Option<&scatter::Scatter>) -> Result<(), String> {
+        PolarSetup::plan(sc, spec, scatter).map(|_| ())
+    }
+
+    fn plan(sc: &Scenario, mut spec: PolarSpec, scatter: Option<&scatter::Scatter>) -> Result<Plan, String> {
         spec.check(sc.seakeeping.grid.speed_max_kn)?;
         spec.normalise();
         let judge = Judge::new(sc)?;
@@ -481,8 +498,14 @@ impl PolarSetup {
                 MAX_POLAR_BYTES / 1e6
             ));
         }
+        Ok(Plan { judge, dirs, band: (lo, hi), nodes, spec, scatter_shapes })
+    }
+
+    /// Checks the spec and the work, then builds (or takes from the cache) the RAO table.
+    pub fn new(sc: &Scenario, spec: PolarSpec, scatter: Option<&scatter::Scatter>) -> Result<PolarSetup, String> {
+        let Plan { judge, dirs, band, nodes, spec, scatter_shapes } = PolarSetup::plan(sc, spec, scatter)?;
         let table = sc.rao_table()?;
-        Ok(PolarSetup { judge, table, dirs, band: (lo, hi), nodes, spec, scatter_shapes })
+        Ok(PolarSetup { judge, table, dirs, band, nodes, spec, scatter_shapes })
     }
 
     /// The cells of speed `j` (every heading), and each heading's operable share of `scatter`.

@@ -15,6 +15,9 @@ pub const NORTH_ATLANTIC_CSV: &str = include_str!("../../../data/iacs_rec34_nort
 /// Largest scatter file [bytes], most H_1/3 and T_z classes.
 pub const MAX_SCATTER_BYTES: usize = 256 << 10;
 pub const MAX_CLASSES: usize = 100;
+/// Largest occurrence of one class: a diagram counts observations (IACS Rec. 34's add up to
+/// 100,000) or their shares; 1e12 per class keeps every total finite (at most 1e16).
+pub const MAX_OCCURRENCE: f64 = 1.0e12;
 
 /// A scatter diagram: class centres and occurrences.
 #[derive(Debug, Clone, PartialEq)]
@@ -98,8 +101,11 @@ impl Scatter {
                     if row.len() != t.len() {
                         return Err(format!("line {line}: {} occurrences for {} T_z classes", row.len(), t.len()));
                     }
-                    if row.iter().any(|&x| x < 0.0) {
-                        return Err(format!("line {line}: an occurrence is negative"));
+                    if let Some(&bad) = row.iter().find(|&&x| !(0.0..=MAX_OCCURRENCE).contains(&x)) {
+                        return Err(format!(
+                            "line {line}: occurrence = {} is outside 0 to {MAX_OCCURRENCE:e}",
+                            crate::checks::num(bad)
+                        ));
                     }
                     if hs.len() >= MAX_CLASSES {
                         return Err(format!("line {line}: at most {MAX_CLASSES} H_1/3 classes"));
@@ -189,7 +195,9 @@ mod tests {
             ("Hs_m\\Tz_s,5,6\n1,2\n", "line 2: 1 occurrences for 2 T_z classes"),
             ("Hs_m\\Tz_s,5,x\n", "line 1: T_z class centre \"x\" is not a number"),
             ("Hs_m\\Tz_s,6,5\n", "line 1: T_z classes must increase"),
-            ("Hs_m\\Tz_s,5,6\n1,-2,3\n", "line 2: an occurrence is negative"),
+            ("Hs_m\\Tz_s,5,6\n1,-2,3\n", "line 2: occurrence = -2 is outside 0 to 1e12"),
+            // Counts whose total overflows were taken for no occurrences at all.
+            ("Hs_m\\Tz_s,5,6\n1,1e308,1e308\n", "line 2: occurrence = 1e308 is outside 0 to 1e12"),
             ("Hs_m\\Tz_s,5,6\n1,0,0\n", "no occurrences"),
             ("# only a comment\n", "no header line"),
         ] {

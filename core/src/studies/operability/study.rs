@@ -47,7 +47,8 @@ impl Study for OperabilityPolar {
     fn new(spec: PolarStudySpec) -> Result<OperabilityPolar, String> {
         spec.scenario.validate().map_err(|e| format!("its scenario is not valid: {e}"))?;
         let (polar, scatter) = spec.request.resolve()?;
-        polar.check(spec.scenario.seakeeping.grid.speed_max_kn)?;
+        // The lists and the work are checked now, before a command builds the RAO table.
+        PolarSetup::check(&spec.scenario, polar.clone(), scatter.as_ref())?;
         let mut normalised = polar.clone();
         normalised.normalise();
         let criteria = spec.scenario.operability.criteria.len();
