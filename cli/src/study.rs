@@ -29,6 +29,42 @@ pub struct ShardArgs {
     /// No progress on stderr (by default a bar on a terminal, a line every 10 s otherwise).
     #[arg(long)]
     pub quiet: bool,
+    /// Run a study estimated to take longer than an hour on its threads (refused without it).
+    #[arg(long)]
+    pub allow_long: bool,
+}
+
+/// The longest a study runs without `--allow-long`, by its estimate before it starts [s of
+/// wall clock on its threads]: an hour, past which a mistyped trial count or run length should
+/// be caught before it is spent.
+pub const STUDY_BUDGET_S: f64 = 3600.0;
+
+/// Refuses work estimated at `estimate_s` seconds of wall clock on `threads` threads past
+/// [`STUDY_BUDGET_S`] unless `allow_long`; `what` says what the work is (in the message).
+pub fn check_budget(cmd: &str, what: &str, estimate_s: f64, threads: usize, allow_long: bool) -> Result<(), Failure> {
+    if allow_long || estimate_s <= STUDY_BUDGET_S {
+        return Ok(());
+    }
+    Err(format!(
+        "{cmd}: {what} is estimated at {} on {threads} thread(s), past the {:.0} h a study may take \
+         without --allow-long: give it to run anyway, or ask for less",
+        duration_text(estimate_s),
+        STUDY_BUDGET_S / 3600.0
+    )
+    .into())
+}
+
+/// A wall-clock duration in minutes, hours or days, as an estimate is read.
+fn duration_text(s: f64) -> String {
+    if !s.is_finite() {
+        "more than can be counted".into()
+    } else if s < 2.0 * 3600.0 {
+        format!("about {:.0} min", s / 60.0)
+    } else if s < 2.0 * 86400.0 {
+        format!("about {:.1} h", s / 3600.0)
+    } else {
+        format!("about {:.0} days", s / 86400.0)
+    }
 }
 
 /// Runs the study `s` as `args` say (whole, one shard, or a merge of shard files): the summary
@@ -64,9 +100,17 @@ pub fn execute<S: Study>(
     let out = args.partial.as_deref().map(|p| OutFile::check(p, "--partial", &[file])).transpose()?;
     // At most the machine's parallelism: more threads only cost time and memory.
     let threads = threads(args.threads, cmd);
-    // A long study says so up front (the progress then shows the time left as measured).
+    // A long study says so up front (the progress then shows the time left as measured), and
+    // past the budget it is refused unless asked for.
     if let Some(w) = s.item_work() {
         let estimate_s = (b - a) as f64 * w / aes_core::scenario::WORK_PER_S / threads as f64;
+        check_budget(
+            cmd,
+            &format!("{} {}s of {w:.3e} units of work each", b - a, S::ITEM),
+            estimate_s,
+            threads,
+            args.allow_long,
+        )?;
         if estimate_s > 60.0 && !args.quiet {
             let _ = writeln!(
                 std::io::stderr(),
