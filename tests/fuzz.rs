@@ -267,3 +267,84 @@ fn ips_parameters_fail_cleanly_or_stay_finite() {
         })
         .unwrap();
 }
+
+/// The operability polar's request (issue 46): speeds, headings, sea states, seas and a scatter
+/// diagram's text, each from a hostile list, on the start-up ship with a coarse RAO grid. The
+/// property: refused with a message under 2 kB, or a polar whose every number is finite, never a
+/// panic, within the case bound.
+#[test]
+fn operability_requests_fail_cleanly_or_stay_finite() {
+    use aes_core::studies::operability::study::{OperabilityPolar, PolarStudySpec};
+    let mut sc = preset("startup").unwrap();
+    for (k, v) in
+        [("seakeeping.grid.n_omega", "12"), ("seakeeping.grid.n_speed", "3"), ("seakeeping.grid.n_heading", "5")]
+    {
+        sc = sc.with_override(k, v).unwrap();
+    }
+    // Mostly values a request may hold, a quarter of them hostile, so that polars are built too.
+    let hostile = || {
+        value_text().prop_map(|t| serde_json::from_str::<serde_json::Value>(&t).unwrap_or(serde_json::Value::String(t)))
+    };
+    let fine = |lo: f64, hi: f64| (lo..hi).prop_map(|x| serde_json::json!(x));
+    let list = move |lo: f64, hi: f64| prop::collection::vec(prop_oneof![3 => fine(lo, hi), 1 => hostile()], 0..4);
+    let states =
+        prop::collection::vec(prop_oneof![3 => (2u32..=6).prop_map(|x| serde_json::json!(x)), 1 => hostile()], 0..4);
+    let seas = prop::collection::vec(
+        (prop_oneof![3 => fine(0.5, 10.0), 1 => hostile()], prop_oneof![3 => fine(0.3, 1.5), 1 => hostile()]),
+        0..3,
+    );
+    let scatter = prop::sample::select(vec![
+        "",
+        "",
+        "",
+        "hs_m,tp_s,occurrences\n1,8,10\n",
+        "hs_m,tp_s,occurrences\n1e308,8,1e308\n2,9,1e308\n",
+        "hs_m,tp_s,occurrences\nNaN,8,1\n",
+        "hs_m,tp_s\n1,8\n",
+        "x\n\u{0}\u{7}\n",
+    ]);
+    let strategy = (list(0.0, 30.0), list(0.0, 360.0), states, seas, scatter);
+    let (tried, built) = (std::sync::atomic::AtomicUsize::new(0), std::sync::atomic::AtomicUsize::new(0));
+    runner(7)
+        .run(&strategy, |(speeds, headings, states, seas, csv)| {
+            let t0 = Instant::now();
+            // An empty list stands for a field left out (the default list).
+            let mut request = serde_json::json!({});
+            for (k, v) in [("speeds_kn", speeds), ("headings_deg", headings), ("sea_states", states)] {
+                if !v.is_empty() {
+                    request[k] = serde_json::Value::Array(v);
+                }
+            }
+            if !seas.is_empty() {
+                request["seas"] =
+                    serde_json::Value::Array(seas.iter().map(|(a, b)| serde_json::json!([a, b])).collect());
+            }
+            if !csv.is_empty() {
+                request["scatter_csv"] = serde_json::Value::String(csv.to_string());
+            }
+            let spec = serde_json::json!({ "scenario": serde_json::to_value(&sc).unwrap(), "request": request });
+            let made = serde_json::from_value::<PolarStudySpec>(spec)
+                .map_err(|e| e.to_string())
+                .and_then(OperabilityPolar::new);
+            tried.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            match made {
+                Err(e) => prop_assert!(e.len() < 2000, "{} bytes: {}", e.len(), &e[..200.min(e.len())]),
+                Ok(polar) => {
+                    let n = polar.items();
+                    if let Ok(shard) = study::run_range(&polar, 0, n) {
+                        if let Ok(s) = polar.summary(&shard.part, &shard.ranges) {
+                            prop_assert!(check_finite(&s).is_ok(), "{:?}", check_finite(&s));
+                            built.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        }
+                    }
+                }
+            }
+            prop_assert!(t0.elapsed() < CASE_BOUND, "took {:?}", t0.elapsed());
+            Ok(())
+        })
+        .unwrap();
+    let (tried, built) = (tried.into_inner(), built.into_inner());
+    println!("{built} of {tried} requests gave a polar");
+    // The property is tested on polars too, not only on refusals.
+    assert!(tried < 50 || built > 0, "{built} of {tried}");
+}
