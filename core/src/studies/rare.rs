@@ -994,6 +994,18 @@ mod tests {
         let worst = h.iter().map(|x| (x - 1.1).abs()).fold(0.0, f64::max);
         println!("h/R at the event: mean {mean:.4}, worst departure {worst:.3}");
         assert!((mean - 1.1).abs() < 0.01 && worst < 0.1);
+        // Every real trial is within what a shard's trial may claim (the limits bind tampered
+        // shards, never the study's own trials).
+        let limits = TrialLimits::of(&trial_scenario(&study(4.5)).unwrap()).unwrap();
+        for t in &p {
+            limits.check(t, t.trial).unwrap();
+        }
+        let mut bad = p[3].clone();
+        bad.values[0] = -5.0;
+        assert_eq!(
+            limits.check(&bad, 3).unwrap_err(),
+            "values.min_bus_voltage_pu = -5: must be from -0.1 to 3 pu (the run stops when a bus leaves this band of its set point)"
+        );
     }
 
     /// Conditioned trials against brute force where brute force sees many events (h0 = 4.5 m,
