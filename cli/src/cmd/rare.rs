@@ -79,6 +79,12 @@ pub fn run(a: Args) -> Result<(), Failure> {
             return Err(format!("--brute-force {}: from 0.1 to 10000 hours", aes_core::checks::num(hours)).into());
         }
     }
+    // The shard flags before the run to the event that places the ship (as long as the event's
+    // time: minutes of work for a late event).
+    crate::study::range_of(&a.shards, a.trials, "trial")?;
+    if let Some(p) = &a.shards.partial {
+        crate::common::OutFile::check(p, "--partial", &[&a.file])?;
+    }
     // With --merge too: the shards must be of this study (its key), as the options give it.
     let mut spec = RareSpec::new(&sc, a.trials).map_err(|e| format!("{}: {e}", shorten(&a.file)))?;
     spec.thresholds = thresholds;
