@@ -82,21 +82,7 @@ pub fn execute<S: Study>(
         let merged = merge_files(Merger::new(s), args.merge.iter().cloned().map(Ok), out.as_ref())?;
         return finish(merged, cmd, out.as_ref(), emit);
     }
-    let n = s.items();
-    let (a, b) = match &args.range {
-        None => (0, n),
-        Some(r) => {
-            let bad = |why: &str| format!("--trial-range '{}': {why}", shorten(r));
-            let (x, y) = r.split_once("..").ok_or_else(|| bad("expected A..B"))?;
-            let a: u64 = x.trim().parse().map_err(|_| bad("A is not a whole number"))?;
-            let b: u64 = y.trim().parse().map_err(|_| bad("B is not a whole number"))?;
-            study::check_range(&s, a, b).map_err(|e| format!("--trial-range {a}..{b}: {e}"))?;
-            (a, b)
-        }
-    };
-    if args.range.is_some() && args.partial.is_none() {
-        return Err("--trial-range needs --partial FILE (merge the shards with `aes-sim merge`)".into());
-    }
+    let (a, b) = range_of(args, s.items(), S::ITEM)?;
     let out = args.partial.as_deref().map(|p| OutFile::check(p, "--partial", &[file])).transpose()?;
     // At most the machine's parallelism: more threads only cost time and memory.
     let threads = threads(args.threads, cmd);
@@ -163,6 +149,25 @@ pub fn execute<S: Study>(
         return write_shard::<S>(&shard, out.as_ref());
     }
     finish((s, shard), cmd, out.as_ref(), emit)
+}
+
+/// The items of `--trial-range` (all `items` without it), checked with the `--partial` it needs:
+/// a study command whose set-up is itself work (rare events' run to the event) calls it first.
+pub fn range_of(args: &ShardArgs, items: u64, item: &str) -> Result<(u64, u64), String> {
+    let Some(r) = &args.range else {
+        return Ok((0, items));
+    };
+    let bad = |why: &str| format!("--trial-range '{}': {why}", shorten(r));
+    let (x, y) = r.split_once("..").ok_or_else(|| bad("expected A..B"))?;
+    let a: u64 = x.trim().parse().map_err(|_| bad("A is not a whole number"))?;
+    let b: u64 = y.trim().parse().map_err(|_| bad("B is not a whole number"))?;
+    if !(a < b && b <= items) {
+        return Err(format!("--trial-range {a}..{b}: need a < b <= the study's {items} {item}s"));
+    }
+    if args.partial.is_none() {
+        return Err("--trial-range needs --partial FILE (merge the shards with `aes-sim merge`)".into());
+    }
+    Ok((a, b))
 }
 
 /// The summary to `emit` first (it is printed even when the shard cannot be written), then the

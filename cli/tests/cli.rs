@@ -583,7 +583,7 @@ fn rare_events_whole_sharded_and_replayed() {
         (vec!["--event", "sideways"], "--event 'sideways': one of ventilation, emergence, level"),
         (vec!["--shaft", "middle"], "--shaft 'middle': port or starboard"),
         (vec!["--threshold", "nothing=1"], "--threshold 'nothing=1': expected NAME=VALUE"),
-        (vec!["--trials", "0"], "trials = 0: must be from 1 to 100000"),
+        (vec!["--trials", "0"], "trials = 0: must be from 2 to 100000"),
         (vec!["--trial-range", "0..3"], "--trial-range needs --partial FILE"),
     ] {
         let (ok, _, err) = aes_sim(&["rare", "preset:head-seas-ss6"].iter().copied().chain(extra).collect::<Vec<_>>());

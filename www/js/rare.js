@@ -68,7 +68,7 @@ export class RareView {
     const h0 = Number($('rare-h0').value), trials = Number($('rare-trials').value);
     const errors = {};
     if (!($('rare-h0').value !== '' && Number.isFinite(h0) && h0 >= RARE.h0Min && h0 <= RARE.h0Max)) errors['rare-h0'] = `Hub depth h0 = ${$('rare-h0').value || '(empty)'} m: give a depth from ${RARE.h0Min} to ${RARE.h0Max} m.`;
-    if (!(Number.isInteger(trials) && trials >= 1 && trials <= RARE.maxTrials)) errors['rare-trials'] = `Trials = ${$('rare-trials').value || '(empty)'}: give a whole number from 1 to ${RARE.maxTrials}.`;
+    if (!(Number.isInteger(trials) && trials >= 2 && trials <= RARE.maxTrials)) errors['rare-trials'] = `Trials = ${$('rare-trials').value || '(empty)'}: give a whole number from 2 to ${RARE.maxTrials} (the rate's interval is the trials' spread: one trial has none).`;
     return { event: $('rare-event').value, shaft: $('rare-shaft').value, h0, trials, errors };
   }
 

@@ -24,7 +24,7 @@ const TEMPLATE = `
         <input id="rare-h0" type="number" min="3" max="7" step="0.05" aria-describedby="rare-h0-err">
         <div class="ferr" id="rare-h0-err" aria-live="polite"></div></div>
       <div class="rare-field"><label for="rare-trials">Trials</label>
-        <input id="rare-trials" type="number" min="1" max="1000" step="1" value="200" aria-describedby="rare-trials-err">
+        <input id="rare-trials" type="number" min="2" max="1000" step="1" value="200" aria-describedby="rare-trials-err">
         <div class="ferr" id="rare-trials-err" aria-live="polite"></div></div>
     </div>
     <div class="row buttons">
