@@ -133,19 +133,16 @@ fn hull_csvs_fail_cleanly_or_give_finite_raos() {
         .unwrap();
 }
 
-/// A partial with one value changed is refused by name, or merges and summarises finitely.
-#[test]
-fn mutated_partials_fail_cleanly_or_merge_finitely() {
-    let sc = preset("mc-arrival").unwrap().with_override("sim.duration_s", "2").unwrap();
-    let sc = sc.with_override("monte_carlo.trials", "4").unwrap();
-    let mc = || MonteCarlo::new(sc.clone()).unwrap();
-    let a = study::run_range(&mc(), 0, 2).unwrap();
-    let b = study::run_range(&mc(), 2, 4).unwrap();
-    let good = serde_json::to_value(&a).unwrap();
+/// Shard `a` of a study with one or two values changed (any leaf of its JSON, from the hostile
+/// list): refused by name, or it merges with shard `b` and summarises finitely.
+fn mutated_shards_are_refused_or_finite<S: Study>(make: impl Fn() -> S, a: (u64, u64), b: (u64, u64), seed: u8) {
+    let first = study::run_range(&make(), a.0, a.1).unwrap();
+    let second = study::run_range(&make(), b.0, b.1).unwrap();
+    let good = serde_json::to_value(&first).unwrap();
     let mut paths = Vec::new();
     leaf_paths(&good, "", &mut paths);
     let strategy = prop::collection::vec((prop::sample::select(paths), value_text()), 1..3);
-    runner(3)
+    runner(seed)
         .run(&strategy, |changes| {
             let t0 = Instant::now();
             let mut v = good.clone();
@@ -159,12 +156,18 @@ fn mutated_partials_fail_cleanly_or_merge_finitely() {
                 }
                 *node = serde_json::from_str(value).unwrap_or(serde_json::Value::String(value.clone()));
             }
-            if let Ok(p) = study::from_json::<MonteCarlo>(&v.to_string()) {
-                let mut m = study::Merger::new(mc());
-                if m.add(p).is_ok() && m.add(b.clone()).is_ok() {
-                    let (study, merged) = m.finish().unwrap();
-                    if let Ok(s) = study.summary(&merged.part, &merged.ranges) {
-                        prop_assert!(check_finite(&s).is_ok(), "{changes:?}: {:?}", check_finite(&s));
+            match study::from_json::<S>(&v.to_string()) {
+                Err(e) => prop_assert!(e.len() < 2000, "{} bytes", e.len()),
+                Ok(p) => {
+                    let mut m = study::Merger::new(make());
+                    match m.add(p).and_then(|()| m.add(second.clone())) {
+                        Err(e) => prop_assert!(e.len() < 2000, "{} bytes", e.len()),
+                        Ok(()) => {
+                            let (study, merged) = m.finish().unwrap();
+                            if let Ok(s) = study.summary(&merged.part, &merged.ranges) {
+                                prop_assert!(check_finite(&s).is_ok(), "{changes:?}: {:?}", check_finite(&s));
+                            }
+                        }
                     }
                 }
             }
@@ -172,6 +175,29 @@ fn mutated_partials_fail_cleanly_or_merge_finitely() {
             Ok(())
         })
         .unwrap();
+}
+
+/// A Monte Carlo partial with one value changed is refused by name, or merges and summarises
+/// finitely.
+#[test]
+fn mutated_partials_fail_cleanly_or_merge_finitely() {
+    let sc = preset("mc-arrival").unwrap().with_override("sim.duration_s", "2").unwrap();
+    let sc = sc.with_override("monte_carlo.trials", "4").unwrap();
+    mutated_shards_are_refused_or_finite(|| MonteCarlo::new(sc.clone()).unwrap(), (0, 2), (2, 4), 3);
+}
+
+/// Issue 46: a rare-event shard with values changed (a seed, a weight, a consequence, the ship's
+/// place, the study's key) is refused naming it, in under 2 kB, or merges into a finite summary.
+#[test]
+fn mutated_rare_event_shards_fail_cleanly_or_merge_finitely() {
+    use aes_core::studies::rare::{RareEvents, RareSpec};
+    let sc = preset("head-seas-ss6").unwrap();
+    let mut sc =
+        sc.with_override("rare_event.time_s", "20").unwrap().with_override("rare_event.window_s", "5").unwrap();
+    // Ventilation, as `aes-sim rare` sets it by default.
+    sc = sc.with_override("rare_event.level_h_over_r", "1.1").unwrap();
+    let spec = RareSpec::new(&sc, 4).unwrap();
+    mutated_shards_are_refused_or_finite(|| RareEvents::new(spec.clone()).unwrap(), (0, 2), (2, 4), 11);
 }
 
 /// The browser's binary partials with bytes overwritten in their moment rows (issue 34: 127 of
