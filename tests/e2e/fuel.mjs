@@ -5,7 +5,7 @@
 // Usage: node tests/e2e/fuel.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR [path of aes-sim]
 import { mkdirSync, existsSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
-import { assert, checker, foldFits, launch, openPage, setField } from './lib.mjs';
+import { assert, checker, foldAtSizes, launch, openPage, setField } from './lib.mjs';
 
 const base = process.argv[2];
 const shots = process.argv[3];
@@ -49,16 +49,6 @@ await check('the fold computes fuel per mile on the worker pool: the command lin
   await c.close();
 });
 
-const SIZES = [[1366, 768], [1920, 1080], [390, 844]];
-const RULES = ['heading-order', 'empty-table-header', 'scrollable-region-focusable'];
-for (const [w, h] of SIZES) {
-  await check(`at ${w}x${h}: the fuel fold fits, axe clean (screenshots)`, async () => {
-    const c = await browser.newContext({ viewport: { width: w, height: h }, bypassCSP: true, hasTouch: w < 600 });
-    const p = await open(link, c);
-    await compute(p);
-    await foldFits(p, '#fuel-box', `${shots}/fuel-${w}x${h}.png`, RULES);
-    await c.close();
-  });
-}
+await foldAtSizes({ browser, check, open, link, compute, name: 'fuel', shots });
 
 await finish(browser, errors);

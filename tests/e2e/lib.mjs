@@ -71,6 +71,22 @@ export async function axeFindings(page, { impacts = ['serious', 'critical'], rul
     .map((x) => `${x.id} (${x.impact}): ${x.nodes.slice(0, 2).map((n) => n.target.join(' ')).join('; ')}`), { impacts, rules });
 }
 
+// A fold of the results (`name`: its id is #NAME-box) at the three sizes, each a check: `link`
+// opened in a fresh context of that size, `compute(p)` fills the fold, then [`foldFits`]
+// (screenshots NAME-WxH.png in `shots`).
+export async function foldAtSizes({ browser, check, open, link, compute, name, shots }) {
+  const rules = ['heading-order', 'empty-table-header', 'scrollable-region-focusable'];
+  for (const [w, h] of [[1366, 768], [1920, 1080], [390, 844]]) {
+    await check(`at ${w}x${h}: the ${name} fold fits, axe clean (screenshots)`, async () => {
+      const c = await browser.newContext({ viewport: { width: w, height: h }, bypassCSP: true, hasTouch: w < 600 });
+      const p = await open(link, c);
+      await compute(p);
+      await foldFits(p, `#${name}-box`, `${shots}/${name}-${w}x${h}.png`, rules);
+      await c.close();
+    });
+  }
+}
+
 // A fold of the results at one size: nothing in `box` (a selector) reaches past the page's width
 // unless a scrolling ancestor clips it, a screenshot of it at `shot`, and axe-core clean on `rules`.
 export async function foldFits(p, box, shot, rules) {

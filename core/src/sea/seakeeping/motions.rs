@@ -363,13 +363,15 @@ pub(super) fn response_parts(
     // sections' own diffraction, which reflection by a thin wall of the local draft understates;
     // at zero speed it has no omega0 / omega_e to grow with in quartering seas.
     let f7_on = ship.short_wave == ShortWaveForce::SalvesenF7;
-    let secs_0: Vec<Sect> = if f7_on { Vec::new() } else { (0..n).map(|i| table.at(i, omega0)).collect() };
+    let damping_0: Vec<(f64, f64)> =
+        if f7_on { Vec::new() } else { (0..n).map(|i| table.damping_at(i, omega0)).collect() };
     let f7_density = |i: usize| -> f64 {
         let e = libm::exp(-2.0 * k * ship.strips[i].area / ship.strips[i].beam);
         if f7_on {
             0.5 * k * omega0 * omega0 / we * e * (secs[i].b33 + sb * sb * secs[i].b22)
         } else {
-            0.5 * k * omega0 * e * (secs_0[i].b33 + sb * sb * secs_0[i].b22)
+            let (b22, b33) = damping_0[i];
+            0.5 * k * omega0 * e * (b33 + sb * sb * b22)
         }
     };
     let f7 = if f7_on {

@@ -246,7 +246,8 @@ pub(super) struct Sect {
 }
 
 impl RadiationTable {
-    pub(super) fn at(&self, strip: usize, omega: f64) -> Sect {
+    /// The grid interval holding `omega` (held at the ends) and the fraction into it.
+    fn bracket(&self, omega: f64) -> (usize, f64) {
         let w = &self.omegas;
         let om = omega.clamp(w[0], w[w.len() - 1]);
         let j = match w.iter().position(|&x| x > om) {
@@ -255,8 +256,22 @@ impl RadiationTable {
             None => w.len() - 2,
         }
         .min(w.len().saturating_sub(2));
-        let (r0, r1) = (&self.data[strip][j], &self.data[strip][(j + 1).min(w.len() - 1)]);
         let f = if w.len() > 1 { (om - w[j]) / (w[j + 1] - w[j]) } else { 0.0 };
+        (j, f)
+    }
+
+    /// The sway and heave damping b22, b33 of `strip` at `omega`, as [`Self::at`] gives them
+    /// (the same bits), without its radiation potentials.
+    pub(super) fn damping_at(&self, strip: usize, omega: f64) -> (f64, f64) {
+        let (j, f) = self.bracket(omega);
+        let (r0, r1) = (&self.data[strip][j], &self.data[strip][(j + 1).min(self.omegas.len() - 1)]);
+        (r0.b22 + f * (r1.b22 - r0.b22), r0.b33 + f * (r1.b33 - r0.b33))
+    }
+
+    pub(super) fn at(&self, strip: usize, omega: f64) -> Sect {
+        let w = &self.omegas;
+        let (j, f) = self.bracket(omega);
+        let (r0, r1) = (&self.data[strip][j], &self.data[strip][(j + 1).min(w.len() - 1)]);
         let l = |a: f64, b: f64| a + f * (b - a);
         let lp = |a: &Vec<C>, b: &Vec<C>| a.iter().zip(b).map(|(x, y)| x + (y - x) * f).collect();
         Sect {
