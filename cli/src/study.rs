@@ -88,8 +88,9 @@ pub fn execute<S: Study>(
     let threads = threads(args.threads, cmd);
     // A long study says so up front (the progress then shows the time left as measured), and
     // past the budget it is refused unless asked for.
-    if let Some(w) = s.item_work() {
-        let estimate_s = (b - a) as f64 * w / aes_core::scenario::WORK_PER_S / threads as f64;
+    if let study::Estimate { item_work: Some(w), seconds: Some(estimate_s), .. } =
+        study::estimate(&s, b - a, threads, study::Platform::Native)
+    {
         check_budget(
             cmd,
             &format!("{} {}s of {w:.3e} units of work each", b - a, S::ITEM),

@@ -115,6 +115,44 @@ await check('a Monte Carlo link opens the Monte Carlo view and reruns it to the 
   await c.close();
 });
 
+// Issue 46: a study estimated long is said before it starts, and its share link asks again.
+await check('a long Monte Carlo study says its estimate and starts only when asked; its share link asks again', async () => {
+  const c = await browser.newContext({ viewport: { width: 390, height: 844 }, bypassCSP: true });
+  const p = await open(link('mc-arrival'), c);
+  await setField(p, 'monte_carlo.trials', 100000);
+  await p.click('#mc-run');
+  await p.waitForSelector('#long-study[open]', { timeout: 60000 });
+  const said = await p.textContent('#long-study-text');
+  assert(/^100000 trials on \d workers?: estimated at about [\d.]+ (min|h) in this browser\. Start it now\?$/.test(said), said);
+  await p.screenshot({ path: `${shots}/long-study-390.png` });
+  assert(!(await axeFindings(p)).length, `axe: ${(await axeFindings(p)).join('; ')}`);
+  await p.click('#long-study-no');
+  await p.waitForFunction(() => document.getElementById('status').textContent.startsWith('Not started'), null, { timeout: 10000 });
+  const st = await p.textContent('#status');
+  assert(/^Not started: 100000 trials estimated at about [\d.]+ (min|h) on \d workers?\.$/.test(st), st);
+  assert(!(await p.$eval('#mc-run', (b) => b.disabled)) && !(await p.$eval('#run', (b) => b.disabled)), 'the page stays busy after Not now');
+  // Asked again and started, it runs (and Cancel stops it).
+  await p.click('#mc-run');
+  await p.waitForSelector('#long-study[open]', { timeout: 60000 });
+  await p.click('#long-study-go');
+  await p.waitForFunction(() => /^Monte Carlo: 100000 trials on \d workers?/.test(document.getElementById('status').textContent), null, { timeout: 10000 });
+  await p.click('#cancel');
+  await p.waitForFunction(() => document.getElementById('status').textContent === 'Cancelled.', null, { timeout: 10000 });
+  // A link to the Monte Carlo view of these values (as one shared after a study) asks before it
+  // reruns.
+  await p.click('#share');
+  const url = await p.inputValue('#share-url');
+  // (Run stays disabled while it asks: the page is opened by hand, not by open().)
+  const other = await c.newPage();
+  other.on('pageerror', (e) => errors.push(`${url}: ${e}`));
+  await other.goto(url.includes('mode=mc') ? url : `${url}&mode=mc`);
+  await other.waitForSelector('#long-study[open]', { timeout: 60000 });
+  await other.click('#long-study-no');
+  await other.waitForFunction(() => document.getElementById('status').textContent.startsWith('Not started'), null, { timeout: 10000 });
+  assert(!(await other.$eval('#run', (b) => b.disabled)), 'Run stays disabled after Not now');
+  await c.close();
+});
+
 await check("the thesis' Table 5.8 columns stand only beside the thesis' own study; a histogram of some trials says how many", async () => {
   const c = await browser.newContext({ viewport: { width: 1366, height: 768 } });
   const p = await open(link('mc-wigley'), c);

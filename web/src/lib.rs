@@ -373,6 +373,27 @@ pub fn study_summary(kind: JsValue, spec: JsValue, shards: Vec<js_sys::Uint8Arra
     study::dispatch(&kind, Summary(spec, shards)).and_then(|r| r).map_err(|e| JsError::new(&e))
 }
 
+/// The estimate of a study on the shared pipeline before it starts, as JSON: `{"items",
+/// "item_work", "seconds"}`, `seconds` the wall clock its items take in this browser on
+/// `workers` workers (`study::wall_estimate_s`), or `{"items"}` alone for a study whose items
+/// are not runs. The page asks before a long Compute.
+#[wasm_bindgen(js_name = studyEstimate)]
+pub fn study_estimate(kind: JsValue, spec: JsValue, workers: u32) -> Result<String, JsError> {
+    struct Ask(String, usize);
+    impl study::Visit for Ask {
+        type Out = Result<String, String>;
+        fn visit<S: study::Study>(self) -> Result<String, String> {
+            let s = S::new(spec_of::<S>(&self.0)?)?;
+            let e = study::estimate(&s, s.items(), self.1, study::Platform::Wasm);
+            aes_core::checks::check_finite(&e)?;
+            serde_json::to_string(&e).map_err(|e| e.to_string())
+        }
+    }
+    let kind = text(&kind, "the study kind")?;
+    let spec = text(&spec, "the study JSON")?;
+    study::dispatch(&kind, Ask(spec, workers.max(1) as usize)).and_then(|r| r).map_err(|e| JsError::new(&e))
+}
+
 /// A study's definition from JSON ([`study::Study::spec_from_json`]).
 fn spec_of<S: study::Study>(text: &str) -> Result<S::Spec, String> {
     S::spec_from_json(text).map_err(|e| format!("the {} study: {e}", S::KIND))

@@ -121,7 +121,21 @@ fn operability_and_rare_events_match_native() {
         bytes(study_range(kind.clone(), spec.clone(), 2, 3)),
         bytes(study_range(kind.clone(), spec.clone(), 0, 2)),
     ];
-    assert_eq!(study_summary(kind, spec, shards).unwrap(), include_str!(concat!(env!("OUT_DIR"), "/native_rare.json")));
+    assert_eq!(
+        study_summary(kind.clone(), spec.clone(), shards).unwrap(),
+        include_str!(concat!(env!("OUT_DIR"), "/native_rare.json"))
+    );
+    // The estimate the page says before a study (issue 46): a rare-event trial's work counts its
+    // runs that place the ship, in this browser's time on 2 workers; a polar's speeds are not runs.
+    let e: serde_json::Value = serde_json::from_str(&study_estimate(kind, spec, 2).unwrap()).unwrap();
+    let trial: aes_core::Scenario = aes_core::Scenario::from_json(&t).unwrap();
+    let w = aes_core::studies::rare::trial_work(&trial);
+    assert_eq!(e["items"], 3);
+    assert_eq!(e["item_work"].as_f64(), Some(w));
+    let want = 3.0 * w / aes_core::scenario::WORK_PER_S * aes_core::scenario::WASM_SLOWDOWN / 2.0;
+    assert!((e["seconds"].as_f64().unwrap() - want).abs() <= 1e-12 * want, "{e}");
+    let polar = study_estimate(JsValue::from("operability"), JsValue::from(&polar), 2).unwrap();
+    assert_eq!(polar, r#"{"items":2}"#);
 }
 
 /// A binary shard as the page's workers pass it.

@@ -263,6 +263,10 @@ export const OPERABILITY = {
   kept: 6, // polars kept for Back and Forward
 };
 
+// Before a study on the worker pool (issue 46): one estimated at more than this many seconds on
+// its workers (core's study::estimate, for this browser) is started only when the user says so.
+export const LONG_STUDY = { askAboveS: 60 };
+
 // Rare events (issue 32): the page's defaults and limits, and presentation only; the event's level
 // (seakeeping.ventilation_on_h_over_r, or 1 for emergence), the trials, their consequences and
 // every number come from the wasm (rareScenario, and the study pipeline's studyRange, studySummary). The unit of a

@@ -266,6 +266,7 @@ async function route() {
 // A failed request keeps the form and the earlier results; refused fields are marked.
 function failed(e) {
   live.hide(); // it may hold part of the run that failed
+  if (e.declined) { setPhase('idle'); status(e.message); return; } // a long study the user did not start
   if (e.cancelled) return;
   setPhase('idle');
   status(e.message, true);

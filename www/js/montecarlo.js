@@ -28,7 +28,7 @@ export class MonteCarlo {
     const scenario = JSON.stringify(sc);
     const k = this.pool.size(n);
     const chunk = Math.max(1, Math.ceil(n / (k * 10)));
-    return this.pool.run({ kind: 'monte-carlo', scenario, spec: scenario, n, chunk, constants: true, onProgress: (done) => onProgress(done, k) });
+    return this.pool.run({ kind: 'monte-carlo', scenario, spec: scenario, n, chunk, constants: true, item: 'trial', onProgress: (done) => onProgress(done, k) });
   }
 }
 

@@ -7,6 +7,7 @@
 import { OPERABILITY } from './config.js';
 import { $, el, fmt } from './dom.js';
 import { fieldLine } from './protocol.js';
+import { stoppedText } from './long.js';
 import { StudyPool, progressText } from './pool.js';
 import { colourScale, drawPolar, cellAt, cellCentre, margins } from './polar.js';
 
@@ -164,7 +165,7 @@ export class OperabilityTab {
     const spec = JSON.stringify({ scenario: inp.scenario, request: req });
     try {
       const { summary: polar } = await this.pool.run({
-        kind: 'operability', scenario, spec, n,
+        kind: 'operability', scenario, spec, n, item: 'speed',
         onStart: (k) => this.status(`Computing the polar: ${n} speeds x ${req.headings_deg.length} headings x ${req.sea_states.length} seas on ${k} worker${k > 1 ? 's' : ''}...`),
         onProgress: (done) => this.progress(done, n, started),
       });
@@ -177,7 +178,7 @@ export class OperabilityTab {
       this.status(`Done: ${polar.cells.length} cells in ${(entry.ms / 1000).toFixed(1)} s. Point at a cell to name it.`);
     } catch (e) {
       this.cancel();
-      if (e.cancelled) this.status('Cancelled.');
+      if (e.cancelled) this.status(stoppedText(e));
       else this.status(e.fields && e.fields.length ? `The scenario is refused: ${e.fields.slice(0, 3).map(fieldLine).join('; ')}` : `The polar failed: ${e.message}`, true);
       $('op-progress').value = 0;
       $('op-eta').textContent = '';

@@ -5,7 +5,8 @@
 // first failure stops them all. A worker that finished its share waits in `idle` for the next
 // study: its wasm is then compiled and its hot code already optimised by the engine (fresh workers
 // made the first study after the page opened take about half as long again).
-import { REQUEST, WorkerClient } from './protocol.js';
+import { durationText, startLong } from './long.js';
+import { REQUEST, RequestError, WorkerClient } from './protocol.js';
 
 // "k of n trials, about t s left": the time left from the rate so far (none in the first half second).
 export function progressText(done, n, started, item) {
@@ -29,10 +30,13 @@ export class StudyPool {
   // scenario: the JSON text whose RAO table the items read. spec: the study's definition as JSON
   // text, or an async function (first worker) -> spec, for a study whose definition a worker
   // computes first (rare events: the ship's place at the event). onProgress(done, n) after each
-  // chunk; onStart(k) once the workers are chosen. Then the first worker merges and summarises
-  // the shards (with the page constants of `scenario` when `constants`). Resolves to {spec, shards
-  // (binary, in item order), summary, constants?}; the workers wait in `idle` afterwards.
-  async run({ kind, scenario, spec, n, chunk = 1, constants = false, onStart = () => {}, onProgress = () => {} }) {
+  // chunk; onStart(k) once the workers are chosen. A study estimated long on them (core's
+  // study::estimate) starts only when the user says so in the dialog of long.js; else it fails,
+  // cancelled and `declined`, with the estimate in its message (its items named `item`). Then the
+  // first worker merges and summarises the shards (with the page constants of `scenario` when
+  // `constants`). Resolves to {spec, shards (binary, in item order), summary, constants?}; the
+  // workers wait in `idle` afterwards.
+  async run({ kind, scenario, spec, n, chunk = 1, constants = false, item = 'item', onStart = () => {}, onProgress = () => {} }) {
     const k = this.size(n);
     let failed = null;
     this.workers = Array.from({ length: k }, () => {
@@ -51,6 +55,14 @@ export class StudyPool {
       await first.ready;
       const { values } = await first.request(REQUEST.raoTable, { scenario });
       const definition = typeof spec === 'function' ? await spec(first) : spec;
+      const { estimate } = await first.request(REQUEST.studyEstimate, { kind, spec: definition, workers: k });
+      if (!(await startLong(estimate, k, item))) {
+        this.idle.push(...this.workers);
+        this.workers = [];
+        const e = new RequestError({ message: `Not started: ${estimate.items} ${item}s estimated at ${durationText(estimate.seconds)} on ${k} worker${k > 1 ? 's' : ''}.` }, true);
+        e.declined = true;
+        throw e;
+      }
       let next = 0;
       await Promise.all(this.workers.map(async (w, i) => {
         await w.ready;

@@ -30,6 +30,9 @@ export const REQUEST = {
   // {kind, spec, shards, scenario?} -> done {summary, constants?}: the shards merged and summarised
   // (the JSON of the study's aes-sim command, each 64-bit `seed` a string of its digits).
   studySummary: 'study-summary',
+  // {kind, spec, workers} -> done {estimate: {items, item_work?, seconds?}}: what the study costs
+  // on `workers` workers of this browser (core's study::estimate), asked before it starts.
+  studyEstimate: 'study-estimate',
   raoTable: 'rao-table', // {scenario} -> done {values} (Float64Array: the RAO table, built once)
   trial: 'trial', // {scenario, i} -> done {scenario}: trial i's scenario as JSON text (exact seed)
   // {scenario, hist, bin} -> progress {tried} ... done {trial}: the first trial whose value falls in

@@ -11,6 +11,7 @@ import { RARE, studyTitle } from './config.js';
 import { param, choiceLabel } from './registry.js';
 import { $, el, fmt } from './dom.js';
 import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
+import { stoppedText } from './long.js';
 import { StudyPool, progressText, summarise } from './pool.js';
 
 const unitOf = (name) => RARE.units[name.slice(name.lastIndexOf('_') + 1)] || '-';
@@ -187,7 +188,7 @@ export class RareView {
     };
     try {
       const { shards, summary } = await this.pool.run({
-        kind: 'rare-events', scenario: study, spec: specOf, n, chunk,
+        kind: 'rare-events', scenario: study, spec: specOf, n, chunk, item: 'trial',
         onStart: (k) => this.status(`Rare events: the trials' scenario (a run in waves to the event's place), then ${n} trials on ${k} worker${k > 1 ? 's' : ''}...`),
         onProgress: (done) => this.progress(done, n, started),
       });
@@ -200,7 +201,7 @@ export class RareView {
       $('rare-results').focus(); // the results, in view (a phone's screen holds the controls)
     } catch (e) {
       this.cancel();
-      if (e.cancelled) this.status('Cancelled.');
+      if (e.cancelled) this.status(stoppedText(e));
       else this.status(e.fields && e.fields.length ? `The scenario is refused: ${e.fields.slice(0, 3).map(fieldLine).join('; ')}` : `The rare-event study failed: ${e.message}`, true);
       $('rare-progress').value = 0;
       $('rare-eta').textContent = '';

@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, trialScenario, raoJson, fuelStudy, maneuversBooklet, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, studyEstimate, trialScenario, raoJson, fuelStudy, maneuversBooklet, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -76,6 +76,8 @@ const handlers = {
     const text = studySummary(m.kind, m.spec, m.shards).replace(/"seed":(\d+)/g, '"seed":"$1"');
     return { summary: JSON.parse(text), ...(m.scenario ? { constants: constantsOf(m.scenario) } : {}) };
   },
+
+  [REQUEST.studyEstimate]: (m) => ({ estimate: JSON.parse(studyEstimate(m.kind, m.spec, m.workers)) }),
 
   [REQUEST.lessonOpen]: (m) => JSON.parse(lessonOpen(m.name, JSON.stringify(m.values || {}))),
 

@@ -95,12 +95,14 @@ pub fn run(a: Args) -> Result<(), Failure> {
             run.sim.duration_s = duration_s;
             run.work()
         };
-        let trial_s = sc.rare_event.time_s + sc.rare_event.window_s;
-        let work = runs as f64 * work_of(run_s) + a.trials as f64 * work_of(trial_s);
+        let mut trial = sc.clone();
+        trial.sim.duration_s = sc.rare_event.time_s + sc.rare_event.window_s;
+        let work = runs as f64 * work_of(run_s) + a.trials as f64 * aes_core::studies::rare::trial_work(&trial);
+        use aes_core::studies::study::{wall_estimate_s, Platform};
         crate::study::check_budget(
             "rare",
             &format!("{} trials and {runs} brute-force runs of {run_s:.0} s", a.trials),
-            work / aes_core::scenario::WORK_PER_S / n as f64,
+            wall_estimate_s(1, work, n, Platform::Native),
             n,
             a.shards.allow_long,
         )?;

@@ -284,12 +284,19 @@ pub const MAX_STEPS: f64 = 1.0e9;
 /// The simulator's state size (sim::plant::NX; a test in sim checks that they agree).
 pub const STATE_SIZE: usize = 33;
 /// Budget of simulated work: time steps times the work of one step in state variables (the state
-/// size, plus in waves the wave components summed per step). 2e9 is about a minute natively and
-/// two in a browser; the presets need at most 1.7e7.
+/// size, plus in waves the wave components summed per step). 2e9 is about 40 s natively
+/// ([`WORK_PER_S`]) and a minute in a browser; the presets need at most 1.7e7.
 pub const MAX_WORK: f64 = 2.0e9;
-/// Work done natively in a second on one core, roughly (the rate [`MAX_WORK`]'s minute states):
-/// for an estimate before a long study, never for a result.
-pub const WORK_PER_S: f64 = MAX_WORK / 60.0;
+/// Work done natively in a second on one core, roughly: for an estimate before a long study,
+/// never for a result. Measured on one core of the development machine: 7.3e7 for the start-up
+/// preset (calm water), 5.6e7 for Monte Carlo trials of head-seas-ss6, 6.6e7 for its rare-event
+/// trials; the lower end is taken, since machines of one kind differ 2-3 times and a study that
+/// ends early surprises no one.
+pub const WORK_PER_S: f64 = 5.0e7;
+/// How many times slower the same work runs in WebAssembly than natively (1.4 in Node for the
+/// start-up preset, `node scripts/bench-wasm.mjs startup`; a browser's engine is about the same):
+/// for the estimate the page says before a long study, never for a result.
+pub const WASM_SLOWDOWN: f64 = 1.4;
 /// How many times `aes-sim bench` may repeat its runs (each within [`MAX_WORK`]).
 pub const MAX_BENCH_REPEAT: u32 = 100;
 /// How many commands a scenario may hold.

@@ -28,8 +28,7 @@ use serde::{Deserialize, Serialize};
 pub const MAX_STUDY_BYTES: f64 = 64.0e6;
 
 /// Most simulated work a whole study may ask for: trials times [`Scenario::work`] of one trial
-/// (a minute natively is about [`crate::scenario::MAX_WORK`]; 1e12 is about 8 hours on one
-/// core).
+/// ([`crate::scenario::WORK_PER_S`] a second natively: 1e12 is about 6 hours on one core).
 pub const MAX_STUDY_WORK: f64 = 1.0e12;
 
 /// Envelope quantum (2^-16 of the unit; values to 2^29) and scalar quantum (2^-12; values to 4096).

@@ -35,6 +35,15 @@ const SPEED_AVERAGE_S: f64 = 60.0;
 /// 4.5 m, two passes 0.061; 0.060 on the RAO table cubic in frequency).
 pub const CORRECTIONS: usize = 2;
 
+/// Units of work of one trial of the study whose trials run `trial_sc` (its run holds the event
+/// and its window): the [`CORRECTIONS`] runs to the event that place the ship, then the trial's
+/// run ([`Trials::run`]). Counting the trial's run alone, estimates were half the time taken.
+pub fn trial_work(trial_sc: &Scenario) -> f64 {
+    let mut to_event = trial_sc.clone();
+    to_event.sim.duration_s = trial_sc.rare_event.time_s.max(trial_sc.sim.record_interval_s);
+    trial_sc.work() + CORRECTIONS as f64 * to_event.work()
+}
+
 /// Most trials of one rare-event study (each is a run of `time_s + window_s`).
 pub const MAX_TRIALS: u64 = 100_000;
 
@@ -342,7 +351,7 @@ impl Study for RareEvents {
         self.spec.trials
     }
     fn item_work(&self) -> Option<f64> {
-        Some(self.spec.scenario.work())
+        Some(trial_work(&self.spec.scenario))
     }
     /// The key leaves out the thresholds: they only read the trials.
     fn key_of_spec(s: &RareSpec) -> String {
@@ -904,6 +913,27 @@ const BRUTE_STREAM: u64 = 0x0B1F_0C2E_0000_0001;
 mod tests {
     use super::*;
     use crate::scenario::presets::preset;
+
+    /// A trial's work is that of every second it simulates, as the summary counts them (the
+    /// runs to the event that place the ship and the trial's own run): the estimate said before
+    /// a study is that of the study's simulated seconds (to 1e-12).
+    #[test]
+    fn a_trials_work_counts_the_runs_that_place_the_ship() {
+        let sc = trial_scenario_unplaced();
+        let ev = &sc.rare_event;
+        let mut all = sc.clone();
+        all.sim.duration_s = ev.time_s * (1 + CORRECTIONS) as f64 + ev.window_s;
+        let (w, want) = (trial_work(&sc), all.work());
+        assert!((w - want).abs() <= 1e-12 * want, "{w} against {want}");
+        assert!(w > 2.5 * sc.work(), "{w} against the trial's run {}", sc.work());
+    }
+
+    /// head-seas-ss6 as its trials run it (event and window within the run), not yet placed.
+    fn trial_scenario_unplaced() -> Scenario {
+        let mut sc = preset("head-seas-ss6").unwrap();
+        sc.sim.duration_s = sc.rare_event.time_s + sc.rare_event.window_s;
+        sc
+    }
 
     /// The head-seas study (25 kn, SS6 head seas) with the hub at `h0` [m], the sea conditioned
     /// on the port hub falling through h/R 1.1.

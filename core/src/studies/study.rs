@@ -20,6 +20,43 @@ pub const VERSION: u32 = 2;
 /// Most item ranges one shard may list.
 pub const MAX_RANGES: usize = 1_000_000;
 
+/// Where a study runs, for its estimate: natively, or in a browser's WebAssembly
+/// ([`crate::scenario::WASM_SLOWDOWN`] times slower).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Platform {
+    Native,
+    Wasm,
+}
+
+/// Wall-clock seconds that `items` items of `item_work` units of work each take on `threads`
+/// threads (or the page's workers), roughly: at [`crate::scenario::WORK_PER_S`] a thread
+/// natively. Said before a long study starts and judged against its budget, never a result.
+pub fn wall_estimate_s(items: u64, item_work: f64, threads: usize, platform: Platform) -> f64 {
+    let slowdown = match platform {
+        Platform::Native => 1.0,
+        Platform::Wasm => crate::scenario::WASM_SLOWDOWN,
+    };
+    items as f64 * item_work / crate::scenario::WORK_PER_S * slowdown / threads.max(1) as f64
+}
+
+/// What a study (or a range of its items) is expected to cost, said before it starts.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Estimate {
+    pub items: u64,
+    /// Units of work of one item ([`Study::item_work`]); absent when the items are not runs.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub item_work: Option<f64>,
+    /// Wall clock on the threads asked for [s] ([`wall_estimate_s`]); absent with `item_work`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seconds: Option<f64>,
+}
+
+/// The estimate of `items` items of study `s` on `threads` threads of `platform`.
+pub fn estimate<S: Study>(s: &S, items: u64, threads: usize, platform: Platform) -> Estimate {
+    let item_work = s.item_work();
+    Estimate { items, item_work, seconds: item_work.map(|w| wall_estimate_s(items, w, threads, platform)) }
+}
+
 /// A study on the shared pipeline.
 pub trait Study: Sized + Sync {
     /// The study's name in shards, in the wasm's `studyRange(kind, ...)` and on the page.
@@ -41,8 +78,8 @@ pub trait Study: Sized + Sync {
     fn scenario(&self) -> &crate::scenario::Scenario;
     /// Number of items in the plan.
     fn items(&self) -> u64;
-    /// Units of work of one item ([`crate::scenario::Scenario::work`]'s), for the estimate said
-    /// before a long study starts; None when the item is not a run.
+    /// Units of work of one item ([`crate::scenario::Scenario::work`]'s, every run the item
+    /// makes), for the estimate said before a long study starts; None when the item is not a run.
     fn item_work(&self) -> Option<f64> {
         None
     }

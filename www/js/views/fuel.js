@@ -5,6 +5,7 @@
 import { $, el, fmt, row } from '../dom.js';
 import { fieldLine } from '../protocol.js';
 import { PlotBox } from '../plots.js';
+import { stoppedText } from '../long.js';
 import { StudyPool, progressText } from '../pool.js';
 import { registerView } from '../views.js';
 
@@ -86,7 +87,7 @@ async function compute(ctx) {
   $('fuel-cancel').disabled = false;
   try {
     const { summary } = await pool.run({
-      kind: 'fuel-per-mile', scenario, spec, n,
+      kind: 'fuel-per-mile', scenario, spec, n, item: 'run',
       onStart: (k) => { $('fuel-status').textContent = `${n} runs of ${FUEL.durationS} s on ${k} worker${k > 1 ? 's' : ''}...`; },
       onProgress: (done) => { $('fuel-progress').value = done / n; $('fuel-eta').textContent = progressText(done, n, started, 'run'); },
     });
@@ -98,7 +99,7 @@ async function compute(ctx) {
     pool.cancel();
     $('fuel-progress').value = 0;
     $('fuel-eta').textContent = '';
-    $('fuel-status').textContent = e.cancelled ? 'Cancelled.' : e.fields && e.fields.length ? `The scenario is refused: ${e.fields.slice(0, 3).map(fieldLine).join('; ')}` : `The fuel study failed: ${e.message}`;
+    $('fuel-status').textContent = e.cancelled ? stoppedText(e) : e.fields && e.fields.length ? `The scenario is refused: ${e.fields.slice(0, 3).map(fieldLine).join('; ')}` : `The fuel study failed: ${e.message}`;
   } finally {
     running = false;
     $('fuel-compute').disabled = false;
