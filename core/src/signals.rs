@@ -115,7 +115,7 @@ macro_rules! for_each_signal {
                 "Voltage of the ship service converters' input filter capacitors per unit of the bus set point, mean of the two (0 without).",
                 |r| r.mean_shaft(|s| r.out.bus[s].filter_voltage_v) / r.v_ref;
             FilterRipplePu, "filter_ripple_pu", "pu", "ship service filter ringing",
-                "The ship service filters' inductor voltage |v_bus - R_f i_L - v_f| per unit of the bus set point, the larger of the two: near 0 while the filter follows the bus, large when it rings (0 without).",
+                "The ship service filters' inductor voltage, the magnitude of v_bus - R_f i_L - v_f, per unit of the bus set point, the larger of the two: near 0 while the filter follows the bus, large when it rings (0 without).",
                 |r| r.filter_ripple_pu();
             PulsedLoadW, "pulsed_load_w", "W", "pulsed load, both buses", "Power of the two pulsed loads (0 without).",
                 |r| r.out.bus.iter().map(|b| b.pulse_w).sum::<f64>();

@@ -130,11 +130,12 @@ pub fn checks() -> Vec<CheckInfo> {
         CheckInfo {
             name: "ship service filter oscillating",
             threshold: format!(
-                "the ship service filter's inductor voltage |v_bus - R_f i_L - v_f| above {FILTER_OSCILLATION_PU} pu \
+                "the ship service filter's inductor voltage (the magnitude of v_bus - R_f i_L - v_f) above {FILTER_OSCILLATION_PU} pu \
                  at a recorded time in the run's second half"
             ),
             reason: "a constant-power load's negative input resistance -v^2/P beats its input filter's damping \
-                     (P above R_f C_f v^2 / L_f, `aes-sim stability-map`): the filter rings at its resonance and grows \
+                     (on a stiff bus P above R_f C_f v^2 / L_f; `aes-sim stability-map` finds a plant's boundary): the \
+                     filter rings at its resonance and grows \
                      until the converter's current limit holds it in a limit cycle",
         },
         CheckInfo {
