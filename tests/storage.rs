@@ -53,3 +53,36 @@ fn storage_smooths_the_waves() {
         low(&with)
     );
 }
+
+/// Bad input is refused at its field with the allowed range or the reason: a storage too small to
+/// be one, state-of-charge limits crossed, a pulse longer than its period, loads above the
+/// shaft's rating, a step too long for the ship service filter.
+#[test]
+fn bad_bus_input_is_refused_at_its_field() {
+    let base = preset("acceleration").unwrap();
+    let refused = |sets: &[(&str, &str)], path: &str, words: &str| {
+        let e = base.with_overrides(sets).unwrap_err();
+        assert!(e.0.iter().any(|f| f.path == path && f.to_string().contains(words)), "{sets:?}: {e}");
+    };
+    refused(&[("plant.storage.energy_j", "1000")], "plant.storage.energy_j", "or 0 (none)");
+    refused(
+        &[("plant.storage.energy_j", "1e8"), ("plant.storage.soc_min", "0.95")],
+        "plant.storage.soc_min",
+        "must be below soc_max",
+    );
+    refused(&[("plant.storage.soc_set", "0.95")], "plant.storage.soc_set", "within the limits");
+    refused(
+        &[("plant.loads.pulse_power_w", "5e6"), ("plant.loads.pulse_length_s", "20")],
+        "plant.loads.pulse_length_s",
+        "a pulse longer than its period",
+    );
+    refused(
+        &[("plant.loads.ship_service_w", "2e6"), ("stepping.dt_s", "0.002")],
+        "stepping.dt_s",
+        "ship service filter",
+    );
+    // Above the two sets' 43 MW: refused before the run, naming the field.
+    let over = base.with_override("plant.loads.pulse_power_w", "5e7").unwrap();
+    let e = Simulation::new(&over).err().unwrap().to_string();
+    assert!(e.contains("plant.loads.pulse_power_w") && e.contains("rated for"), "{e}");
+}
