@@ -86,3 +86,24 @@ fn bad_bus_input_is_refused_at_its_field() {
     let e = Simulation::new(&over).err().unwrap().to_string();
     assert!(e.contains("plant.loads.pulse_power_w") && e.contains("rated for"), "{e}");
 }
+
+/// Every part on at once in calm water (1 ms RK4, 9 s at 20 knots before the preset's
+/// acceleration): the energy books close to 1e-6 of the turbines' work (measured 4e-11), and the
+/// loads took what their profiles ask, 2 x (2 MW x 9 s + one 5 MW pulse of 2 s with 0.1 s ramps)
+/// = 57 MJ, within 1e-6 (the profiles held at each step's middle integrate a ramp exactly).
+#[test]
+fn books_close_with_every_part_on() {
+    let mut sc = preset("acceleration").unwrap();
+    sc.initial.speed_kn = 20.0;
+    sc.commands[0].speed_kn = Some(20.0);
+    sc.sim.duration_s = 9.0;
+    sc.plant.loads.ship_service_w = 2.0e6;
+    sc.plant.loads.pulse_power_w = 5.0e6;
+    sc.plant.storage.energy_j = 1.0e8;
+    let r = run(&sc).unwrap();
+    let e = &r.summary.energy_j;
+    assert!(e.relative_residual.abs() < 1e-6, "{e:?}");
+    let want = 2.0 * (2.0e6 * 9.0 + 5.0e6 * 2.1);
+    assert!((e.bus_loads - want).abs() < 1e-6 * want, "{} against {want}", e.bus_loads);
+    eprintln!("relative residual {:e}, loads {} J", e.relative_residual, e.bus_loads);
+}
