@@ -52,6 +52,10 @@ enum Cmd {
         #[command(subcommand)]
         command: cmd::ips::Cmd,
     },
+    /// Is the bus stable at the scenario's operating point (its loads and storage included)? The
+    /// plant's eigenvalues there, or `--x PATH=FROM:TO:N --y PATH=FROM:TO:N` for a map of its
+    /// spectral abscissa over two parameters with the boundary; JSON.
+    StabilityMap(cmd::stability_map::Args),
     /// Sectional added mass and damping of one ship section (thesis ch. 2.5.1: conformal map +
     /// Ursell-Tasai multipoles, deep water); JSON on standard output.
     Section(cmd::section::Args),
@@ -105,6 +109,7 @@ fn real_main(cli: Cli) -> Result<(), Failure> {
         Cmd::Lesson(a) => cmd::lesson::run(a),
         Cmd::Design { command } => cmd::design::run(command),
         Cmd::Ips { command } => cmd::ips::run(command),
+        Cmd::StabilityMap(a) => cmd::stability_map::run(a),
         Cmd::Section(a) => cmd::section::run(a),
         Cmd::Rao(a) => cmd::rao::run(a),
         Cmd::Mc(a) => cmd::mc::run(a),

@@ -456,11 +456,11 @@ fn class10_studies_are_bounded_before_they_start() {
         .collect();
     assert_eq!(signals.len(), 20);
     let sc = format!(
-        r#"{{"sim":{{"duration_s":1020,"record_interval_s":0.005}},"monte_carlo":{{"trials":10,"keep_traces":10,"envelope_signals":[{}]}}}}"#,
+        r#"{{"sim":{{"duration_s":900,"record_interval_s":0.005}},"monte_carlo":{{"trials":10,"keep_traces":10,"envelope_signals":[{}]}}}}"#,
         signals.join(",")
     );
     let t0 = Instant::now();
-    refused(&["mc", "-"], sc.as_bytes(), "this study keeps about 833 MB");
+    refused(&["mc", "-"], sc.as_bytes(), "this study keeps about 735 MB");
     refused(&["mc", "-"], sc.as_bytes(), "at most 64 MB: record less often (sim.record_interval_s = 0.005)");
     let shard = dir.join("shard.json");
     refused(
@@ -652,7 +652,7 @@ fn class15_a_stopped_write_leaves_no_temporary_file() {
         })
     };
     let mut child = Command::new(env!("CARGO_BIN_EXE_aes-sim"))
-        .args(["run", "preset:startup", "--set", "sim.duration_s=2000", "--set", "sim.record_interval_s=0.01"])
+        .args(["run", "preset:startup", "--set", "sim.duration_s=1800", "--set", "sim.record_interval_s=0.01"])
         .args(["--out", out.to_str().unwrap()])
         .stdout(Stdio::null())
         .stderr(Stdio::null())
@@ -852,7 +852,7 @@ fn class18_rare_flags_are_checked_before_work() {
     let dir = scratch("harden12");
     // The shard flags too, before the run to a late event that places the ship (measured 3.6 s
     // before they were checked first, 30 ms after).
-    let late = ["rare", "--set", "rare_event.time_s=20000", "--trial-range"];
+    let late = ["rare", "--set", "rare_event.time_s=18000", "--trial-range"];
     let t0 = Instant::now();
     refused(
         &[&late[..], &["5..2", "--partial", "x.json"]].concat(),

@@ -108,6 +108,22 @@ macro_rules! for_each_signal {
                 "Slowly varying second-order yaw moment, bow to starboard (M_add of eq. 2.24).", |r| r.ctl.held.sea.wave_mz;
             FuelPowerW, "fuel_power_w", "W", "fuel power", "Fuel power of the four turbines (part-load curve).",
                 |r| r.fuel;
+            ShipServiceW, "ship_service_w", "W", "ship service load, both buses",
+                "Output of the two ship service converters (constant power behind their input filters; 0 without).",
+                |r| r.out.bus.iter().map(|b| b.ship_service_w).sum::<f64>();
+            FilterVoltagePu, "filter_voltage_pu", "pu", "ship service filter voltage",
+                "Voltage of the ship service converters' input filter capacitors per unit of the bus set point, mean of the two (0 without).",
+                |r| r.mean_shaft(|s| r.out.bus[s].filter_voltage_v) / r.v_ref;
+            FilterRipplePu, "filter_ripple_pu", "pu", "ship service filter ringing",
+                "The ship service filters' inductor voltage, the magnitude of v_bus - R_f i_L - v_f, per unit of the bus set point, the larger of the two: near 0 while the filter follows the bus, large when it rings (0 without).",
+                |r| r.filter_ripple_pu();
+            PulsedLoadW, "pulsed_load_w", "W", "pulsed load, both buses", "Power of the two pulsed loads (0 without).",
+                |r| r.out.bus.iter().map(|b| b.pulse_w).sum::<f64>();
+            StoragePowerW, "storage_power_w", "W", "storage power, both buses",
+                "Power the two storages give the buses (negative: charging; 0 without).",
+                |r| r.out.bus.iter().map(|b| b.storage_w).sum::<f64>();
+            StorageSoc, "storage_soc", "-", "state of charge", "State of charge of the storages, mean of the two (0 without).",
+                |r| r.mean_shaft(|s| r.out.bus[s].soc);
         }
     };
 }

@@ -21,7 +21,7 @@ export const CHAPTERS = [
   ['Ch. 5.2.2 Braking', ['ac-braking', 'ac-braking-unbuffered']],
   ['Ch. 5.2.3 Turns in calm water', ['turn-45', 'turn-90', 'turn-360']],
   ['Ch. 5.2.4 Turns and fuel in waves', ['quarter-turn-ss3', 'quarter-turn-ss6', 'fuel-regular-seas']],
-  ['Ch. 5.3 Head seas and a turn in waves', ['head-seas-ss6', 'turn-360-ss6', 'as-printed']],
+  ['Ch. 5.3 Head seas and a turn in waves', ['head-seas-ss6', 'head-seas-ss6-storage', 'turn-360-ss6', 'as-printed']],
   ['Ch. 5.4 Monte Carlo', ['mc-excess-energy', 'mc-arrival']],
   ['Any hull (ch. 2.5)', ['wigley-head-seas', 'mc-wigley']],
 ];
@@ -63,8 +63,11 @@ export const STUDIES = {
     compare: [{ label: 'calm water', set: { 'sea.kind': 'calm' } }] },
   'head-seas-ss6': { title: 'Head seas, sea state 6: ventilation', plots: ['hr', 'beta', 'motor', 'rpm', 'bus'], params: ['ship.hull.hub_above_base_m', 'seakeeping.stern_motion', 'sea.sea_state', 'sim.seed'],
     watch: 'h/R against the shaded ventilation band: each time it dips below 1.1 the propeller draws air (orange markers), thrust and torque drop (beta), the propeller races and the motor power falls. Below 1 the disk breaks the surface. Each event is a sudden load rejection for the plant: the turbines overspeed (up to 14 % with seed 1) and dip as much when the propeller bites again, the bus voltage follows them (0.83 to 1.14 pu), then both ring for tens of seconds (bus plot), far beyond the 0.2 % (turbines) and 2 % (bus) they move in these seas when the propellers stay down.',
-    compare: [{ label: 'eq. 2.57 as printed', set: { 'seakeeping.stern_motion': 'thesis_eq_2_57' } }, { label: 'fully loaded (the hull\'s own hub height)', set: { 'ship.hull.hub_above_base_m': null } }],
+    compare: [{ label: 'eq. 2.57 as printed', set: { 'seakeeping.stern_motion': 'thesis_eq_2_57' } }, { label: 'fully loaded (the hull\'s own hub height)', set: { 'ship.hull.hub_above_base_m': null } }, { label: 'with storage', preset: 'head-seas-ss6-storage' }],
     note: 'The sign of eq. 2.57: as printed, the stern\'s own motion is added to the wave instead of taken from it, so the hub depth swings by wave plus motion and surface effects come several times as often; with the consistent sign the stern rides the long waves of SS6 and a fully loaded ship (h0 = 6 m) keeps its propellers down.' },
+  'head-seas-ss6-storage': { title: 'Head seas, sea state 6, with storage on each bus', plots: ['bus', 'storage', 'motor', 'hr'], params: ['plant.storage.energy_j', 'plant.storage.power_w', 'plant.storage.corner_hz', 'sim.seed'],
+    watch: 'The same ventilation as without storage (h/R, motor power), but the batteries take the fast part of the load: the turbine speed and the bus voltage hardly move (bus plot), while the storage power swings by tens of megawatts and its charge drifts. Make the storage smaller and watch the turbines take the swings back.',
+    compare: [{ label: 'without storage', preset: 'head-seas-ss6' }, { label: 'a smaller storage (100 MJ, 5 MW)', set: { 'plant.storage.energy_j': 1e8, 'plant.storage.power_w': 5e6 } }] },
   'as-printed': { title: 'The thesis as printed: head seas SS6', plots: ['heave', 'hr', 'motor', 'rpm', 'bus'], params: ['seakeeping.stern_motion', 'ship.hull.hub_above_base_m', 'sim.seed'],
     watch: 'Heave first: with Appendix A\'s eq. 5 as printed the destroyer heaves by about 16 m in SS6, and the propellers leave the water (h/R far below the band) again and again; the motor power drops to nothing each time, and near the end the turbines overspeed and then stall (the warnings above the summary). Compare with the corrected equations, and with eq. 2.57\'s sign alone, which gives the thesis\' ch. 5.3 picture of ventilation and swings of tens of rpm. The bus sits at 9.7 kV (E_a line to line).',
     compare: [{ label: 'corrected, same depth', set: { 'as_printed.doppler_twice': false, 'as_printed.appendix_a_typos': false, 'as_printed.eq_2_47_conjugate': false, 'as_printed.ea_line_to_line': false, 'seakeeping.stern_motion': 'consistent' } }, { label: 'eq. 2.57 as printed only', set: { 'as_printed.doppler_twice': false, 'as_printed.appendix_a_typos': false, 'as_printed.eq_2_47_conjugate': false, 'as_printed.ea_line_to_line': false } }],
@@ -110,6 +113,7 @@ export const PLOTS = [
   { id: 'pitch', title: 'Pitch and roll', sea: true, series: [{ signal: 'pitch_deg', label: 'pitch (bow down)', color: '#a04000' }, { signal: 'roll_deg', label: 'roll (starboard down)', color: '#5b2c6f', dash: [6, 3] }] },
   { id: 'force', title: 'Second-order wave force', sea: true, prefix: 'k', key: 'The slowly varying force of wave groups (Newman\'s approximation of the mean drift force, Salvesen\'s method): it peaks when a group passes, at any time, the start too. Below zero is physics: waves from abaft the beam push the ship on (negative added resistance), as in a turn out of head seas.', series: [{ signal: 'added_resistance_n', color: '#b03a2e' }, { signal: 'drift_force_n', label: 'drift force (to starboard)', color: '#0b5cad', dash: [6, 3] }] },
   { id: 'fuel', title: 'Fuel power, four turbines', prefix: 'M', series: [{ signal: 'fuel_power_w', color: '#6e2c00' }] },
+  { id: 'storage', title: 'Storage power, both buses (negative: charging)', prefix: 'M', series: [{ signal: 'storage_power_w', color: '#117a65' }], only: (c) => c.storage_power_w.some((v) => v !== 0) },
   { id: 'brake', title: 'Brake resistor power', prefix: 'M', series: [{ signal: 'brake_power_w', color: '#b03a2e' }], only: (c) => c.brake_power_w.some((v) => v > 0) },
 ];
 // Plots shown when a study names none.

@@ -18,4 +18,5 @@ pub mod rare;
 pub mod run;
 pub mod section;
 pub mod signals;
+pub mod stability_map;
 pub mod validate;

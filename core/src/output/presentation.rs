@@ -260,6 +260,8 @@ impl PageConstants {
                     unit: "V",
                 },
                 PuBase { signal: Signal::ImPowerPu.name(), value: sc.plant.motor.rated_power_w, unit: "W" },
+                PuBase { signal: Signal::FilterVoltagePu.name(), value: sc.bus_voltage_ref_v(), unit: "V" },
+                PuBase { signal: Signal::FilterRipplePu.name(), value: sc.bus_voltage_ref_v(), unit: "V" },
             ],
         })
     }

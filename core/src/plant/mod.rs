@@ -1,7 +1,9 @@
 //! The propulsion plant, turbine to propeller (thesis ch. 2.1-2.3): the gas turbine and its
 //! governor, the synchronous generator, the DC link (rectifier, bus, inverter, brake), the induction
-//! motor, the propeller with its surface losses, and the turbines' fuel.
+//! motor, the propeller with its surface losses, and the turbines' fuel; the other loads on each
+//! bus and its energy storage (ch. 6.1).
 
+pub mod bus_loads;
 pub mod dc_link;
 pub mod fuel;
 pub mod generator;
@@ -9,3 +11,4 @@ pub mod motor;
 pub mod prime_mover;
 pub mod propeller;
 pub mod propeller_losses;
+pub mod storage;

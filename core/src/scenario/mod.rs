@@ -20,11 +20,13 @@ pub use crate::as_printed::AsPrintedParams;
 pub use crate::checks::{FieldError, ScenarioError};
 pub use crate::control::design::{ControllerDesign, LqgLtrParams};
 pub use crate::control::speed::SpeedControlParams;
+pub use crate::plant::bus_loads::BusLoadParams;
 pub use crate::plant::dc_link::{DcLinkParams, RectifierKind};
 pub use crate::plant::generator::{FieldControlParams, GeneratorParams};
 pub use crate::plant::motor::{MotorParams, SlipControlParams};
 pub use crate::plant::prime_mover::{GovernorParams, TurbineParams};
 pub use crate::plant::propeller::{PropellerModelKind, PropellerParams};
+pub use crate::plant::storage::{StorageKind, StorageParams};
 pub use crate::sea::conditioning::RareEventParams;
 pub use crate::sea::operability::OperabilityParams;
 pub use crate::sea::seakeeping::params::{SeakeepingParams, SternMotion};
@@ -137,6 +139,10 @@ crate::params! {
         pub generator: GeneratorParams = GeneratorParams::default() => {},
         pub dc_link: DcLinkParams = DcLinkParams::default() => {},
         pub motor: MotorParams = MotorParams::default() => {},
+        /// The ship service and pulsed loads on each bus (ch. 6.1); none by default.
+        pub loads: BusLoadParams = BusLoadParams::default() => {},
+        /// Energy storage on each bus (ch. 5.2.2, 6.1); none by default.
+        pub storage: StorageParams = StorageParams::default() => {},
     }
 }
 
@@ -281,8 +287,10 @@ pub const MAX_RECORDED_VALUES: f64 = 1.0e7;
 pub const MAX_RECORDED_ROWS: f64 = MAX_RECORDED_VALUES / crate::signals::N_SIGNALS as f64;
 /// How many time steps a run may take.
 pub const MAX_STEPS: f64 = 1.0e9;
-/// The simulator's state size (sim::plant::NX; a test in sim checks that they agree).
-pub const STATE_SIZE: usize = 33;
+/// The simulator's state size (sim::plant::NX; a test in sim checks that they agree). A run's work
+/// counts only the states it uses ([`Scenario::active_states`]): 33 without the bus's parts, as
+/// before they came.
+pub const STATE_SIZE: usize = 48;
 /// Budget of simulated work: time steps times the work of one step in state variables (the state
 /// size, plus in waves the wave components summed per step). 2e9 is about 40 s natively
 /// ([`WORK_PER_S`]) and a minute in a browser; the presets need at most 1.7e7.
@@ -388,8 +396,13 @@ impl crate::params::CrossCheck for Scenario {
         }
         self.validate_steps(v);
         self.validate_work(v);
+        self.validate_bus_steps(v);
     }
 }
+
+/// Longest step for the ship service filter, as a fraction of its period over 2 pi: 1/(omega dt)
+/// of at least 5 (RK4 follows the filter's resonance to 1e-5 of its damping at it).
+pub const FILTER_STEP_PER_RAD: f64 = 0.2;
 
 fn whole_multiple(a: f64, b: f64) -> bool {
     let r = a / b;
@@ -474,11 +487,57 @@ impl Scenario {
         FieldControlParams { bus_voltage_ref_v: self.bus_voltage_ref_v(), ..self.controllers.field.clone() }
     }
 
+    /// The bus's parts against the step: the ship service filter's resonance and the storage's
+    /// current loop must be resolved.
+    fn validate_bus_steps(&self, v: &mut Validator) {
+        let dt = self.stepping.dt_s;
+        if !(dt.is_finite() && dt > 0.0) {
+            return;
+        }
+        let l = &self.plant.loads;
+        if l.has_ship_service() {
+            let w = 1.0 / (l.filter_inductance_h * l.filter_capacitance_f).sqrt();
+            if w * dt > FILTER_STEP_PER_RAD || self.stepping.integrator != Integrator::Rk4 {
+                v.fail(
+                    "stepping.dt_s",
+                    dt,
+                    format!(
+                        "must be at most {:.2e} s with stepping.integrator = rk4 for the ship service filter \
+                         (plant.loads: resonance {:.1} Hz; the step must be at most {FILTER_STEP_PER_RAD} / omega)",
+                        FILTER_STEP_PER_RAD / w,
+                        w / (2.0 * std::f64::consts::PI)
+                    ),
+                );
+            }
+        }
+        let st = &self.plant.storage;
+        if st.energy_j > 0.0 && dt > st.current_time_constant_s {
+            v.fail(
+                "plant.storage.current_time_constant_s",
+                st.current_time_constant_s,
+                format!("must be at least stepping.dt_s = {dt} s (the step must resolve the current loop)"),
+            );
+        }
+    }
+
+    /// The state variables a run advances: the plant's, less the bus parts it lacks.
+    pub fn active_states(&self) -> usize {
+        use crate::plant::{bus_loads, storage};
+        let mut n = STATE_SIZE;
+        if !self.plant.loads.any() {
+            n -= crate::ship::hull::N_SHAFTS * bus_loads::STATES + bus_loads::ENERGY_ACCOUNTS;
+        }
+        if self.plant.storage.energy_j <= 0.0 {
+            n -= crate::ship::hull::N_SHAFTS * storage::STATES + storage::ENERGY_ACCOUNTS;
+        }
+        n
+    }
+
     /// The work a run asks for: time steps times the state variables advanced per step (plus, in
     /// waves, the wave components summed per step).
     pub fn work(&self) -> f64 {
         let steps = self.sim.duration_s / self.stepping.dt_s;
-        let mut per_step = STATE_SIZE as f64;
+        let mut per_step = self.active_states() as f64;
         if self.sea.kind != SeaKind::Calm {
             per_step += self.sea.components as f64 * self.stepping.dt_s / self.stepping.sea_sample_s;
         }
@@ -704,6 +763,13 @@ mod tests {
     #[test]
     fn the_work_budget_uses_the_plant_state_size() {
         assert_eq!(STATE_SIZE, crate::sim::plant::NX);
+        // Without the bus's parts a run's work is what it was before they came (33 states);
+        // each part adds its states and energy accounts.
+        let mut sc = Scenario::default();
+        assert_eq!(sc.active_states(), 33);
+        sc.plant.loads.pulse_power_w = 1.0e6;
+        sc.plant.storage.energy_j = 1.0e8;
+        assert_eq!(sc.active_states(), STATE_SIZE);
     }
 
     /// The issue's reproducers: 1e9 steps, 2e6 recorded rows, duplicate keys, deep nesting.

@@ -17,6 +17,7 @@ pub const PRESET_NAMES: &[&str] = &[
     "quarter-turn-ss6",
     "fuel-regular-seas",
     "head-seas-ss6",
+    "head-seas-ss6-storage",
     "turn-360-ss6",
     "as-printed",
     "mc-excess-energy",
@@ -41,6 +42,7 @@ pub fn preset(name: &str) -> Option<Scenario> {
         "quarter-turn-ss6" => quarter_turn(6),
         "fuel-regular-seas" => fuel_regular_seas(),
         "head-seas-ss6" => head_seas_ss6(),
+        "head-seas-ss6-storage" => head_seas_ss6_storage(),
         "turn-360-ss6" => turn_360_ss6(),
         "as-printed" => as_printed(),
         "mc-excess-energy" => mc_excess_energy(),
@@ -239,6 +241,27 @@ pub fn head_seas_ss6() -> Scenario {
          (seakeeping.stern_motion) they ventilate at either depth, far more often."
         .into();
     s.set_hub_depth_m(3.5);
+    s
+}
+
+/// The storage of the "with storage" preset on each bus (the README's suggested size for
+/// head-seas-ss6 at the ballast hub depth): 200 MJ (56 kWh) at 10 MW, levelling above 0.02 Hz.
+pub fn suggested_storage() -> crate::scenario::StorageParams {
+    crate::scenario::StorageParams { energy_j: 200.0e6, power_w: 10.0e6, corner_hz: 0.02, ..Default::default() }
+}
+
+/// head-seas-ss6 with the suggested storage on each bus: the pair "without storage / with
+/// storage" (ch. 5.2.2, 6.1).
+pub fn head_seas_ss6_storage() -> Scenario {
+    let mut s = head_seas_ss6();
+    s.name = "head-seas-ss6-storage".into();
+    s.description = "head-seas-ss6 (25 knots into head seas of sea state 6, the hub at the ballast depth h0 = 3.5 m) \
+         with a 200 MJ, 10 MW battery on each bus behind its DC-DC converter: it takes the fast part of the \
+         propulsion load (above 0.02 Hz) and supports the bus by droop, so the turbines see only the slow part. \
+         Compare with head-seas-ss6: the turbines' speed swing and the bus's sags all but vanish while the \
+         propellers ventilate just as before; the state of charge drifts down as the mean load climbs."
+        .into();
+    s.plant.storage = suggested_storage();
     s
 }
 

@@ -7,11 +7,13 @@
 
 use crate::numerics::units::kn_to_m_s;
 use crate::numerics::Integrator;
+use crate::plant::bus_loads::{BusLoads, Demand};
 use crate::plant::dc_link::{DcLink, RectifierFlow};
 use crate::plant::generator::SyncGenerator;
 use crate::plant::motor::{InductionMotor, MotorPoint};
 use crate::plant::prime_mover::GasTurbine;
 use crate::plant::propeller::{Conditions, FourQuadrant, OpenWater, PropellerLoad};
+use crate::plant::storage::Storage;
 use crate::scenario::{HullModelKind, PropellerModelKind, RectifierKind, Scenario};
 use crate::ship::maneuvering::{handover_weight, Abkowitz, ManeuveringForces};
 use crate::ship::rudder::{rudder_force, stern_inflow, Inflow, RudderParams};
@@ -38,6 +40,12 @@ pub enum Block {
     BusVoltage,
     /// Propeller shaft speed of each shaft [rad/s].
     ShaftSpeed,
+    /// The ship service filter of each bus: inductor current [A], capacitor voltage [V]
+    /// (`plant::bus_loads`).
+    BusLoads,
+    /// The storage of each bus: stored energy [J], converter current [A], low-passed bus load [W]
+    /// (`plant::storage`).
+    Storage,
     /// The hull: surge u, sway v [m/s], yaw rate r [rad/s], north x, east y [m], heading psi [rad]
     /// ([`SURGE`] to [`HEADING`]).
     Hull,
@@ -46,14 +54,18 @@ pub enum Block {
 }
 
 /// Number of energy accumulators.
-pub const N_ENERGY: usize = 15;
+pub const N_ENERGY: usize = 20;
 
-/// The state vector's blocks in order, with their lengths.
-pub const LAYOUT: [(Block, usize); 6] = [
+/// The state vector's blocks in order, with their lengths. The bus's parts come before the hull,
+/// with the drive train (the multi-rate step holds everything before [`SURGE`] during the hull's
+/// step).
+pub const LAYOUT: [(Block, usize); 8] = [
     (Block::TurbineSpeed, N_SETS),
     (Block::FieldCurrent, N_SETS),
     (Block::BusVoltage, N_SHAFTS),
     (Block::ShaftSpeed, N_SHAFTS),
+    (Block::BusLoads, N_SHAFTS * crate::plant::bus_loads::STATES),
+    (Block::Storage, N_SHAFTS * crate::plant::storage::STATES),
     (Block::Hull, 6),
     (Block::Energy, N_ENERGY),
 ];
@@ -96,6 +108,26 @@ pub const fn bus_voltage(s: usize) -> usize {
 /// Propeller shaft speed of shaft s [rad/s].
 pub const fn omega_rm(s: usize) -> usize {
     slots(Block::ShaftSpeed).start + s
+}
+/// Ship service filter inductor current of bus s [A].
+pub const fn filter_current(s: usize) -> usize {
+    slots(Block::BusLoads).start + crate::plant::bus_loads::STATES * s
+}
+/// Ship service filter capacitor voltage of bus s [V].
+pub const fn filter_voltage(s: usize) -> usize {
+    filter_current(s) + 1
+}
+/// Energy stored in the storage of bus s [J].
+pub const fn storage_energy(s: usize) -> usize {
+    slots(Block::Storage).start + crate::plant::storage::STATES * s
+}
+/// Bus-side current of the storage converter of bus s [A].
+pub const fn storage_current(s: usize) -> usize {
+    storage_energy(s) + 1
+}
+/// The low-passed load of bus s, the storage's levelling filter [W].
+pub const fn storage_lowpass(s: usize) -> usize {
+    storage_energy(s) + 2
 }
 /// Ship surge speed u [m/s].
 pub const SURGE: usize = slots(Block::Hull).start;
@@ -154,6 +186,16 @@ pub enum Energy {
     Brake,
     /// Energy the motors returned to the buses (integral of the negative part of the inverter power).
     Regenerated,
+    /// Output of the ship service converters (their constant power).
+    ShipService,
+    /// Energy of the pulsed loads.
+    Pulsed,
+    /// Ship service input filter loss R_f i_L^2.
+    FilterLoss,
+    /// Energy the storage gave the buses (negative: took), sum of v i_b.
+    StorageToBus,
+    /// Storage converter and cell losses.
+    StorageLoss,
 }
 
 /// Inputs held over a time step: the controllers' outputs (piecewise constant between controller
@@ -170,6 +212,8 @@ pub struct Held {
     pub rudder: f64,
     /// What the sea does to the ship this step.
     pub sea: SeaInputs,
+    /// What the bus's other loads demand this step (the same on every bus).
+    pub bus: Demand,
 }
 
 /// The sea's inputs to the plant over one time step.
@@ -200,6 +244,7 @@ impl Default for Held {
             slip: [0.0; N_SHAFTS],
             rudder: 0.0,
             sea: SeaInputs::default(),
+            bus: Demand::default(),
         }
     }
 }
@@ -226,6 +271,23 @@ pub struct Outputs {
     pub brake_power: [f64; N_SHAFTS],
     /// Advance speed V_a at the propellers, before the wake fraction [m/s] (eq. 2.26).
     pub inflow_speed: f64,
+    /// The bus's other loads and storage, each bus.
+    pub bus: [BusFlow; N_SHAFTS],
+}
+
+/// What the loads and the storage of one bus do at one instant.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct BusFlow {
+    /// Ship service converter's output [W] and the power its filter takes from the bus [W].
+    pub ship_service_w: f64,
+    pub ship_service_in_w: f64,
+    /// Ship service filter capacitor voltage [V] (0 without one).
+    pub filter_voltage_v: f64,
+    /// Pulsed load [W].
+    pub pulse_w: f64,
+    /// Storage power to the bus [W] (negative: charging), its state of charge [-] (0 without).
+    pub storage_w: f64,
+    pub soc: f64,
 }
 
 /// The hull model in use.
@@ -283,6 +345,10 @@ pub struct Plant {
     /// A constant added resistance [N] (the mean second-order force of a regular sea, for the
     /// steady states of the fuel study); 0 in a normal run.
     pub extra_resistance: f64,
+    /// The ship service and pulsed loads of each bus (`plant.loads`; None without).
+    pub loads: Option<BusLoads>,
+    /// The storage of each bus (`plant.storage`; None without).
+    pub storage: Option<Storage>,
 }
 
 impl Plant {
@@ -350,7 +416,26 @@ impl Plant {
             beta_t: sc.propeller.beta_t,
             beta_q: sc.propeller.beta_q,
             extra_resistance: 0.0,
+            loads: BusLoads::new(&sc.plant.loads, v_ref),
+            storage: Storage::new(&sc.plant.storage, v_ref),
         })
+        .and_then(|p| p.check_bus_rating(sc))
+    }
+
+    /// Refuses loads beyond what a shaft's turbine-generator sets can give.
+    fn check_bus_rating(self, sc: &Scenario) -> Result<Plant, String> {
+        let l = &sc.plant.loads;
+        let rating = SETS_PER_SHAFT as f64 * sc.plant.turbine.rated_power_w;
+        if l.any() && l.peak_w() > rating {
+            let field = if l.pulse_power_w > 0.0 { "pulse_power_w" } else { "ship_service_w" };
+            return Err(format!(
+                "plant.loads.{field}: the loads of one bus reach {:.1} MW (ship service and pulse together), above \
+                 the {:.1} MW its {SETS_PER_SHAFT} turbine-generator sets are rated for (plant.turbine.rated_power_w)",
+                l.peak_w() / 1e6,
+                rating / 1e6
+            ));
+        }
+        Ok(self)
     }
 
     /// Propeller thrust and torque at shaft speed `omega` [rad/s] with inflow speed `va` [m/s] at the
@@ -519,7 +604,15 @@ impl Plant {
             let mp = self.motor.operate(v_m, omega_e, h.slip[s], w_rm);
             let pl = self.propeller_load_in_waves(w_rm, va, h.sea.beta_t[s], h.sea.beta_q[s]);
             let p_brake = self.brake_power(v_c);
-            dx[bus_voltage(s)] = self.dc_link.bus_voltage_rate(i_rect, mp.p_in + p_brake, v_c); // eqs. 2.7, 2.10
+            // The bus's other loads draw, its storage gives (none: i_rect as it is).
+            let i_in = if self.loads.is_some() || self.storage.is_some() {
+                i_rect - self.bus_parts(s, x, h, v_c, mp.p_in, dx, e, out.as_deref_mut())
+            } else {
+                dx[slots(Block::BusLoads)].fill(0.0);
+                dx[slots(Block::Storage)].fill(0.0);
+                i_rect
+            };
+            dx[bus_voltage(s)] = self.dc_link.bus_voltage_rate(i_in, mp.p_in + p_brake, v_c); // eqs. 2.7, 2.10
             dx[omega_rm(s)] = (mp.torque - pl.torque_nm) / self.shaft_inertia; // eq. 2.6 in rad/s
             thrust += pl.thrust_n;
             e[Energy::Inverter as usize] += mp.p_in;
@@ -540,6 +633,71 @@ impl Plant {
             }
         }
         thrust
+    }
+
+    /// The ship service filter, the pulsed load and the storage of bus `s` at bus voltage `v_c`
+    /// with the motor's inverter taking `p_inv` [W]: writes their derivatives, books their
+    /// energies and returns the net current they draw from the bus [A] (loads less storage).
+    #[allow(clippy::too_many_arguments)]
+    fn bus_parts(
+        &self,
+        s: usize,
+        x: &State,
+        h: &Held,
+        v_c: f64,
+        p_inv: f64,
+        dx: &mut State,
+        e: &mut [f64; N_ENERGY],
+        out: Option<&mut Outputs>,
+    ) -> f64 {
+        let mut flow = BusFlow::default();
+        let (mut i_draw, mut p_load) = (0.0, p_inv);
+        dx[filter_current(s)] = 0.0;
+        dx[filter_voltage(s)] = 0.0;
+        if let Some(l) = &self.loads {
+            if let Some(ss) = &l.ship_service {
+                let (i_l, v_f) = (x[filter_current(s)], x[filter_voltage(s)]);
+                let f = ss.flow(v_c, i_l, v_f, h.bus.ship_service_w);
+                dx[filter_current(s)] = f.di_l;
+                dx[filter_voltage(s)] = f.dv_f;
+                i_draw += i_l;
+                p_load += v_c * i_l;
+                e[Energy::ShipService as usize] += f.p_load;
+                e[Energy::FilterLoss as usize] += f.p_loss;
+                flow.ship_service_w = f.p_load;
+                flow.ship_service_in_w = v_c * i_l;
+                flow.filter_voltage_v = v_f;
+            }
+            // The pulsed load: constant power on the bus, current-limited like the converter.
+            let i_p = h.bus.pulse_w / v_c.max(l.v_min);
+            i_draw += i_p;
+            p_load += v_c * i_p;
+            e[Energy::Pulsed as usize] += v_c * i_p;
+            flow.pulse_w = v_c * i_p;
+        }
+        let (ke, ki, kl) = (storage_energy(s), storage_current(s), storage_lowpass(s));
+        match &self.storage {
+            Some(st) => {
+                let f = st.flow(v_c, p_load, x[ke], x[ki], x[kl]);
+                dx[ke] = f.de;
+                dx[ki] = f.di_b;
+                dx[kl] = f.dp_lp;
+                i_draw -= x[ki];
+                e[Energy::StorageToBus as usize] += f.p_bus;
+                e[Energy::StorageLoss as usize] += f.p_loss;
+                flow.storage_w = f.p_bus;
+                flow.soc = x[ke] / st.capacity_j;
+            }
+            None => {
+                dx[ke] = 0.0;
+                dx[ki] = 0.0;
+                dx[kl] = 0.0;
+            }
+        }
+        if let Some(out) = out {
+            out.bus[s] = flow;
+        }
+        i_draw
     }
 
     /// The hull's derivatives (surge, sway, yaw, position, heading) under the total thrust
@@ -643,6 +801,17 @@ impl Plant {
             e += 0.5 * self.shaft_inertia * x[omega_rm(s)] * x[omega_rm(s)];
         }
         e += 0.5 * self.surge_mass * x[SURGE] * x[SURGE];
+        if let Some(ss) = self.loads.as_ref().and_then(|l| l.ship_service.as_ref()) {
+            for s in 0..N_SHAFTS {
+                e += 0.5 * ss.l_h * x[filter_current(s)] * x[filter_current(s)];
+                e += 0.5 * ss.c_f * x[filter_voltage(s)] * x[filter_voltage(s)];
+            }
+        }
+        if self.storage.is_some() {
+            for s in 0..N_SHAFTS {
+                e += x[storage_energy(s)];
+            }
+        }
         let block = match &self.hull {
             Hull::Maneuvering { abkowitz, .. } => Some(&abkowitz.m22),
             Hull::Own { model, .. } => Some(&model.m22),

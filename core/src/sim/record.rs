@@ -72,6 +72,15 @@ impl Recording<'_> {
     pub fn slip(&self, s: usize) -> f64 {
         self.ctl.held.slip[s]
     }
+    pub fn filter_ripple_pu(&self) -> f64 {
+        let Some(f) = self.plant.loads.as_ref().and_then(|l| l.ship_service.as_ref()) else { return 0.0 };
+        (0..N_SHAFTS)
+            .map(|s| {
+                let (i_l, v_f) = (self.x[super::plant::filter_current(s)], self.x[super::plant::filter_voltage(s)]);
+                (self.x[bus_voltage(s)] - f.r_ohm * i_l - v_f).abs() / self.v_ref
+            })
+            .fold(0.0, f64::max)
+    }
     pub fn motor_power_pu(&self) -> f64 {
         self.p_motor / N_SHAFTS as f64 / self.plant.motor.p_rated
     }

@@ -74,6 +74,10 @@ pub struct PowerInventory {
     pub inverter: f64,
     pub motor: f64,
     pub ship: f64,
+    /// The buses' other loads (ship service converters' output and pulsed loads).
+    pub bus_loads: f64,
+    /// The storage's power to the buses (negative: charging).
+    pub storage: f64,
 }
 
 /// Stage efficiencies at the final time (Table 5.7 definitions: each stage's output over its
@@ -104,12 +108,19 @@ pub struct EnergyBalance {
     pub brake: f64,
     /// Energy the motors returned to the buses while braking.
     pub regenerated: f64,
-    /// Generator friction, stator copper, notching, motor copper and mechanical, brake resistor and
-    /// propeller losses.
+    /// Energy the buses' other loads took (ship service converters' output and pulsed loads;
+    /// output, like `ship`).
+    pub bus_loads: f64,
+    /// Energy the storage gave the buses (negative: took); its stored energy is in
+    /// `stored_change`, its losses in `losses`.
+    pub storage_to_bus: f64,
+    /// Generator friction, stator copper, notching, motor copper and mechanical, brake resistor,
+    /// propeller, ship service filter and storage losses.
     pub losses: f64,
-    /// Change of kinetic energy (turbines, shafts, ship) and of the bus capacitors' energy.
+    /// Change of kinetic energy (turbines, shafts, ship), of the bus capacitors' and filters'
+    /// energy and of the storage's charge.
     pub stored_change: f64,
-    /// turbine - ship - losses - stored_change.
+    /// turbine - ship - bus_loads - losses - stored_change.
     pub residual: f64,
     /// residual / turbine.
     pub relative_residual: f64,
@@ -169,6 +180,8 @@ impl Summary {
             inverter: last(Signal::PInverterW),
             motor: last(Signal::PMotorW),
             ship: last(Signal::PShipW),
+            bus_loads: last(Signal::ShipServiceW) + last(Signal::PulsedLoadW),
+            storage: last(Signal::StoragePowerW),
         };
         let e = |k: Energy| energy[k as usize];
         let losses = e(Energy::Friction)
@@ -179,7 +192,10 @@ impl Summary {
             + e(Energy::MotorMechLoss)
             + e(Energy::Brake)
             + (e(Energy::Propeller) - e(Energy::Thrust));
-        let residual = e(Energy::Turbine) - e(Energy::Ship) - losses - stored_change;
+        // The bus's other parts (all 0 without them: the books above as they were, bit for bit).
+        let losses = losses + e(Energy::FilterLoss) + e(Energy::StorageLoss);
+        let bus_loads = e(Energy::ShipService) + e(Energy::Pulsed);
+        let residual = e(Energy::Turbine) - e(Energy::Ship) - bus_loads - losses - stored_change;
         Summary {
             scenario: scenario.name.clone(),
             final_time_s,
@@ -200,6 +216,8 @@ impl Summary {
                 ship: e(Energy::Ship),
                 brake: e(Energy::Brake),
                 regenerated: e(Energy::Regenerated),
+                bus_loads,
+                storage_to_bus: e(Energy::StorageToBus),
                 losses,
                 stored_change,
                 residual,

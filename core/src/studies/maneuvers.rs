@@ -133,6 +133,7 @@ impl Trial {
             slip: [0.0; N_SHAFTS],
             rudder: 0.0,
             sea: Default::default(),
+            bus: Default::default(),
         };
         let mut out = Vec::new();
         let mut t = 0.0;

@@ -914,7 +914,7 @@ mod tests {
             assert!(check_study(&sc).is_ok(), "{name}: {:?}", check_study(&sc));
         }
         let mut sc = Scenario::default();
-        sc.sim.duration_s = 1020.0;
+        sc.sim.duration_s = 900.0;
         sc.sim.record_interval_s = 0.005;
         sc.monte_carlo.trials = 10;
         sc.monte_carlo.keep_traces = 10;
@@ -922,7 +922,7 @@ mod tests {
         assert!(sc.validate().is_ok(), "{:?}", sc.validate());
         assert!(sc.to_json().len() < 11000, "{} bytes", sc.to_json().len());
         let e = MonteCarlo::new(sc.clone()).err().unwrap();
-        assert!(e.starts_with("monte_carlo: this study keeps about 833 MB (20 envelope signals x 204001 rows"), "{e}");
+        assert!(e.starts_with("monte_carlo: this study keeps about 735 MB (20 envelope signals x 180001 rows"), "{e}");
         assert!(e.contains("at most 64 MB: record less often (sim.record_interval_s = 0.005)"), "{e}");
         let mut long = Scenario::default();
         long.sim.duration_s = 1000.0;

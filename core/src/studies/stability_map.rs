@@ -1,0 +1,252 @@
+//! Is the bus stable at this operating point (thesis ch. 6.1: "is the IPS stable under conditions
+//! X at operating point Y?")? The whole plant linearised about its calm-water steady state with
+//! its bus loads and storage, and a map of its stability over two parameters.
+//!
+//! The model: every dynamic state of the plant (turbines, fields, buses, shafts, the ship service
+//! filters, the storages and the ship's surge) by central differences of `Plant::evaluate`, the
+//! discrete controllers (governors, exciters, slip) held at their steady outputs as in
+//! `sim::linearize` (the loop a constant-power load closes is the filter's, at tens of hertz,
+//! far faster than they act; the storage's controller is continuous and part of the plant). Its
+//! spectral abscissa, the largest real part of the eigenvalues, is negative where the bus is
+//! stable; the map colours it over a grid of two parameters (any two numbers of the scenario, by
+//! their paths) and draws the boundary where it crosses zero.
+//!
+//! The closed form it is checked against (`plant::bus_loads`): a stiff bus feeding a constant
+//! power P through L_f, R_f, C_f is stable while P < R_f C_f v_f^2 / L_f.
+
+use crate::scenario::Scenario;
+use crate::sim::plant::{
+    bus_voltage, field_current, filter_current, filter_voltage, omega_rm, omega_t, storage_current, storage_energy,
+    storage_lowpass, Outputs, NX, N_SETS, N_SHAFTS, SURGE,
+};
+use crate::sim::Simulation;
+use nalgebra::DMatrix;
+use num_complex::Complex64;
+use serde::Serialize;
+
+/// Relative step of the central differences.
+const STEP: f64 = 1e-6;
+
+/// Most cells of a map (each a steady state, a linearisation and an eigenvalue problem of at
+/// most 23 states: about 0.2 ms).
+pub const MAX_CELLS: usize = 10_000;
+
+/// The plant linearised about its steady state.
+#[derive(Debug, Clone, Serialize)]
+pub struct BusModel {
+    /// State names, in the order of the matrix.
+    pub states: Vec<String>,
+    /// dz/dt = A z with z each state over its scale (its steady value, at least 1) [1/s].
+    #[serde(skip)]
+    pub a: DMatrix<f64>,
+    /// Eigenvalues [1/s], real and imaginary parts.
+    pub eigenvalues: Vec<[f64; 2]>,
+    /// The largest real part [1/s]: negative where the plant is stable.
+    pub spectral_abscissa: f64,
+    /// The frequency of the least damped mode [Hz].
+    pub least_damped_hz: f64,
+}
+
+/// The states taken, each a group moved together, with their names. Both shafts are alike and
+/// independent but for the ship they push, and their steady state is symmetric: their differences
+/// decouple, and the model keeps the symmetric part (as `sim::linearize`), where a constant-power
+/// load on both buses acts together.
+fn states(sc: &Scenario) -> Vec<(Vec<usize>, String)> {
+    let sets = |f: fn(usize) -> usize| (0..N_SETS).map(f).collect::<Vec<_>>();
+    let shafts = |f: fn(usize) -> usize| (0..N_SHAFTS).map(f).collect::<Vec<_>>();
+    let mut s = vec![
+        (sets(omega_t), "turbine_speed".to_string()),
+        (sets(field_current), "field_current".into()),
+        (shafts(bus_voltage), "bus_voltage".into()),
+        (shafts(omega_rm), "shaft_speed".into()),
+    ];
+    if sc.plant.loads.has_ship_service() {
+        s.push((shafts(filter_current), "filter_current".into()));
+        s.push((shafts(filter_voltage), "filter_voltage".into()));
+    }
+    if sc.plant.storage.energy_j > 0.0 {
+        s.push((shafts(storage_energy), "storage_energy".into()));
+        s.push((shafts(storage_current), "storage_current".into()));
+        s.push((shafts(storage_lowpass), "storage_lowpass".into()));
+    }
+    s.push((vec![SURGE], "ship_speed".into()));
+    s
+}
+
+/// Linearises the scenario's plant at its initial speed (`initial.speed_kn`, above 0).
+pub fn linearize(sc: &Scenario) -> Result<BusModel, String> {
+    if sc.initial.speed_kn.is_nan() || sc.initial.speed_kn <= 0.0 {
+        return Err(format!(
+            "initial.speed_kn = {}: the bus's stability is judged at a steady state under way (above 0 knots)",
+            sc.initial.speed_kn
+        ));
+    }
+    let sim = Simulation::new(sc).map_err(|e| e.to_string())?;
+    let (x0, h0) = (*sim.state(), *sim.held());
+    let plant = sim.plant();
+    let st = states(sc);
+    let n = st.len();
+    let scale: Vec<f64> = st.iter().map(|(g, _)| x0[g[0]].abs().max(1.0)).collect();
+    // The groups' mean rates with group j moved by d (in its own unit).
+    let f = |j: usize, d: f64| -> Vec<f64> {
+        let mut x = x0;
+        for &i in &st[j].0 {
+            x[i] += d;
+        }
+        let (mut out, mut dx) = (Outputs::default(), [0.0; NX]);
+        plant.evaluate(&x, &h0, &mut out, &mut dx);
+        st.iter().map(|(g, _)| g.iter().map(|&i| dx[i]).sum::<f64>() / g.len() as f64).collect()
+    };
+    let mut a = DMatrix::zeros(n, n);
+    for j in 0..n {
+        let h = STEP * scale[j];
+        let (fp, fm) = (f(j, h), f(j, -h));
+        for i in 0..n {
+            // In per unit of each state's scale (a diagonal similarity: the same eigenvalues, a
+            // matrix whose entries the Schur iteration handles without scaling trouble).
+            a[(i, j)] = (fp[i] - fm[i]) / (2.0 * h) * scale[j] / scale[i];
+        }
+    }
+    if a.iter().any(|v| !v.is_finite()) {
+        return Err("the linearised plant has non-finite entries".into());
+    }
+    let eig = crate::numerics::eigenvalues(&a).ok_or("the linearised plant's eigenvalues did not converge")?;
+    let worst =
+        eig.iter().copied().fold(Complex64::new(f64::NEG_INFINITY, 0.0), |m, l| if l.re > m.re { l } else { m });
+    Ok(BusModel {
+        states: st.into_iter().map(|(_, s)| s).collect(),
+        a,
+        eigenvalues: eig.iter().map(|l| [l.re, l.im]).collect(),
+        spectral_abscissa: worst.re,
+        least_damped_hz: worst.im.abs() / (2.0 * std::f64::consts::PI),
+    })
+}
+
+/// One axis of a map: a scenario number by its path and the values it takes.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Axis {
+    pub path: String,
+    pub values: Vec<f64>,
+}
+
+impl Axis {
+    /// `n` values evenly from `lo` to `hi`.
+    pub fn linear(path: &str, lo: f64, hi: f64, n: usize) -> Axis {
+        let n = n.max(2);
+        Axis { path: path.into(), values: (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).collect() }
+    }
+}
+
+/// The map: the spectral abscissa over the grid, and the boundary.
+#[derive(Debug, Clone, Serialize)]
+pub struct StabilityMap {
+    pub x: Axis,
+    pub y: Axis,
+    /// Spectral abscissa [1/s] of each cell, a row per y value (None where the steady state or the
+    /// model failed, with the reason in `failures`).
+    pub abscissa: Vec<Vec<Option<f64>>>,
+    /// For each y value, the x where the abscissa first crosses zero along the row (bisected
+    /// between its cells; None where it does not within the row).
+    pub boundary_x: Vec<Option<f64>>,
+    pub failures: Vec<String>,
+}
+
+/// The scenario with `path` set to `value`.
+fn set(sc: &Scenario, path: &str, value: f64) -> Result<Scenario, String> {
+    sc.with_override(path, &crate::checks::num(value)).map_err(|e| e.to_string())
+}
+
+/// The spectral abscissa with the two parameters set.
+pub fn abscissa_at(sc: &Scenario, x: (&str, f64), y: (&str, f64)) -> Result<f64, String> {
+    let s = set(&set(sc, x.0, x.1)?, y.0, y.1)?;
+    Ok(linearize(&s)?.spectral_abscissa)
+}
+
+/// The map of `sc` over `x` and `y`.
+pub fn map(sc: &Scenario, x: &Axis, y: &Axis) -> Result<StabilityMap, String> {
+    let cells = x.values.len() * y.values.len();
+    if cells > MAX_CELLS {
+        return Err(format!("a map of {cells} cells: at most {MAX_CELLS} (fewer values on an axis)"));
+    }
+    let (mut abscissa, mut boundary_x, mut failures) = (Vec::new(), Vec::new(), Vec::new());
+    for &yv in &y.values {
+        let row: Vec<Option<f64>> = x
+            .values
+            .iter()
+            .map(|&xv| match abscissa_at(sc, (&x.path, xv), (&y.path, yv)) {
+                Ok(a) => Some(a),
+                Err(e) => {
+                    if failures.len() < 10 {
+                        failures.push(format!("{} = {xv}, {} = {yv}: {e}", x.path, y.path));
+                    }
+                    None
+                }
+            })
+            .collect();
+        // The first change of sign along the row, bisected between its two cells (the abscissa
+        // is a slow mode's until the unstable one overtakes it: not linear between cells).
+        let cross = row.windows(2).zip(x.values.windows(2)).find_map(|(a, xs)| match (a[0], a[1]) {
+            (Some(a0), Some(a1)) if (a0 < 0.0) != (a1 < 0.0) => {
+                let (lo, hi) = if a0 < 0.0 { (xs[0], xs[1]) } else { (xs[1], xs[0]) };
+                bisect_boundary(sc, &x.path, lo, hi, (&y.path, yv), 40).ok()
+            }
+            _ => None,
+        });
+        abscissa.push(row);
+        boundary_x.push(cross);
+    }
+    Ok(StabilityMap { x: x.clone(), y: y.clone(), abscissa, boundary_x, failures })
+}
+
+/// The x of the boundary at `y` between `lo` (stable) and `hi` (unstable), by bisection on the
+/// spectral abscissa's sign (60 halvings: to 1e-18 of the bracket).
+pub fn boundary(sc: &Scenario, x_path: &str, lo: f64, hi: f64, y: (&str, f64)) -> Result<f64, String> {
+    let (a_lo, a_hi) = (abscissa_at(sc, (x_path, lo), y)?, abscissa_at(sc, (x_path, hi), y)?);
+    if !(a_lo < 0.0 && a_hi > 0.0) {
+        return Err(format!(
+            "{x_path}: the bracket {lo} to {hi} does not straddle the boundary (abscissae {a_lo:.3e}, {a_hi:.3e} 1/s)"
+        ));
+    }
+    bisect_boundary(sc, x_path, lo, hi, y, 60)
+}
+
+/// Bisection between a stable `lo` and an unstable `hi` (either order on the axis).
+fn bisect_boundary(
+    sc: &Scenario,
+    x_path: &str,
+    lo: f64,
+    hi: f64,
+    y: (&str, f64),
+    halvings: u32,
+) -> Result<f64, String> {
+    let (mut a, mut b) = (lo, hi);
+    for _ in 0..halvings {
+        let m = 0.5 * (a + b);
+        if abscissa_at(sc, (x_path, m), y)? < 0.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    Ok(0.5 * (a + b))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// At 20 knots in calm water with a 2 MW ship service load on each bus (well inside its
+    /// 4.7 MW limit) every mode decays; the filter's resonance (25.2 Hz alone) is there at 26.2 Hz,
+    /// damped at -15.1 1/s (the bus's impedance adds to R_f's -7.5 1/s).
+    #[test]
+    fn the_plant_with_a_ship_service_load_is_stable() {
+        let mut sc = crate::scenario::presets::acceleration(false);
+        sc.initial.speed_kn = 20.0;
+        sc.commands[0].speed_kn = Some(20.0);
+        sc.plant.loads.ship_service_w = 2.0e6;
+        let m = linearize(&sc).unwrap();
+        assert!(m.spectral_abscissa < 0.0, "{m:?}");
+        let ring = m.eigenvalues.iter().find(|l| (l[1].abs() / (2.0 * std::f64::consts::PI) - 25.2).abs() < 2.0);
+        assert!(ring.is_some_and(|l| l[0] < 0.0), "{:?}", m.eigenvalues);
+    }
+}
