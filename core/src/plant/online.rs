@@ -45,6 +45,25 @@ crate::params! {
             source: "our choice: ten minutes, so that a set is not cycled on every swing",
             help: "A set stays online at least this long after it came online; an earlier stop order waits.",
         },
+        /// The schedule's reserve: the chance that the sea's power swings exceed the online
+        /// sets' rating within `reserve_window_s` stays below this (`aes-sim schedule`).
+        pub reserve_probability: f64 = 1.0e-3 => {
+            label: "Reserve: overload chance", unit: "-", range: 1.0e-9..=0.5,
+            source: "our choice: one watch in a thousand overloads the online sets",
+            help: "Largest chance that the sea's power swings exceed the online sets' rating within the reserve window.",
+        },
+        pub reserve_window_s: f64 = 3600.0 => {
+            label: "Reserve window", unit: "s", range: 1.0..=86400.0, source: "our choice: one hour",
+            help: "The time over which the reserve's overload chance is counted.",
+        },
+        pub schedule_step_kn: f64 = 1.0 => {
+            label: "Schedule speed step", unit: "kn", range: 0.25..=10.0, source: "our choice",
+            help: "Step of the schedule's speeds from 0 to its top speed.",
+        },
+        pub schedule_top_speed_kn: f64 = 30.0 => {
+            label: "Schedule top speed", unit: "kn", range: 1.0..=40.0, source: "our choice: about a destroyer's full speed",
+            help: "Fastest speed of the schedule (speeds the four sets cannot drive are marked beyond the plant).",
+        },
     }
 }
 
