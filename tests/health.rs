@@ -74,3 +74,59 @@ fn a_flat_signal_has_no_settling_time() {
     // The heading is ordered to 90 degrees and gets there.
     assert!(r.summary.signals["heading_deg"].settling_time_s.is_some());
 }
+
+/// A set started by an order delivers nothing until its start-up time has passed, then takes its
+/// share of the load (issue 45): 12 kn on set 1 alone, set 3 ordered on at 5 s with a 10 s
+/// start-up. Before 15 s set 3 gives exactly 0 W; 10 s after it closed its breaker it carries
+/// half the load (measured 0.500 at 25 s: the two sets are alike).
+#[test]
+fn a_started_set_delivers_only_after_its_startup_time() {
+    use aes_core::scenario::Command;
+    let mut sc = preset("startup").unwrap();
+    sc.initial.speed_kn = 12.0;
+    sc.plant.online.sets = vec![1];
+    sc.plant.online.startup_time_s = 10.0;
+    sc.commands = vec![
+        Command { t_s: 0.0, speed_kn: Some(12.0), heading_deg: None, heading_rate_deg_s: None, online_sets: None },
+        Command {
+            t_s: 5.0,
+            speed_kn: None,
+            heading_deg: None,
+            heading_rate_deg_s: None,
+            online_sets: Some(vec![1, 3]),
+        },
+    ];
+    sc.sim.duration_s = 25.0;
+    let mut sim = aes_core::sim::Simulation::new(&sc).unwrap();
+    let steps_per_s = (1.0 / sc.stepping.dt_s).round() as u64;
+    let at = |sim: &mut aes_core::sim::Simulation, t: f64| {
+        let n = (t * steps_per_s as f64).round() as u64 - (sim.time() * steps_per_s as f64).round() as u64;
+        sim.advance(n).unwrap();
+        sim.turbine_power()
+    };
+    let p = at(&mut sim, 1.0);
+    assert!(p[0] > 2.0e6 && p[1] == 0.0 && p[2] == 0.0 && p[3] == 0.0, "{p:?}");
+    let p = at(&mut sim, 14.99);
+    assert_eq!(p[2], 0.0, "set 3 before its start-up time: {p:?}");
+    let p = at(&mut sim, 25.0);
+    let share = p[2] / (p[0] + p[2]);
+    println!("set 3's share at 25 s: {share:.3} ({p:?})");
+    assert!((share - 0.5).abs() < 0.02, "set 3's share after start-up {share:.3}: {p:?}");
+    assert_eq!((p[1], p[3]), (0.0, 0.0));
+    let r = sim.finish();
+    assert!(!has(&r, "overloaded"), "{:#?}", r.summary.warnings);
+}
+
+/// One set online at 15 kn ordered to 27 kn: it runs past its rating and the summary says so in
+/// words, naming the remedy.
+#[test]
+fn an_overloaded_online_set_is_named() {
+    let r = run_preset("startup", |sc| {
+        sc.initial.speed_kn = 15.0;
+        sc.plant.online.sets = vec![2];
+        sc.commands[0].speed_kn = Some(27.0);
+        sc.sim.duration_s = 60.0;
+    });
+    assert!(has(&r, "set 2 overloaded"), "{:#?}", r.summary.warnings);
+    assert!(has(&r, "start another"), "{:#?}", r.summary.warnings);
+}

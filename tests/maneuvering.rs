@@ -31,6 +31,7 @@ fn straight_ahead_equilibrium_balances_x0() {
         speed_kn: Some(22.0),
         heading_deg: None,
         heading_rate_deg_s: None,
+        online_sets: None,
     }];
     s.sim.duration_s = 60.0;
     let r = run(&s);

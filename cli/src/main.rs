@@ -88,6 +88,10 @@ enum Cmd {
     /// The fuel study of ch. 5.2.4 (Fig. 5-12): fuel power of one prime mover in regular head and
     /// bow seas of 1 to 5 ft over wave frequency; JSON rows on standard output.
     Fuel(cmd::fuel::Args),
+    /// How many gas turbines should run (thesis ch. 6.1): for speeds 0 to full and sea states 2-6
+    /// the online set that burns least fuel while the sea's power swings leave it its reserve;
+    /// the table with the fuel saving against all four online (`--json` for everything).
+    Schedule(cmd::schedule::Args),
     /// Measure simulated seconds per wall-clock second on a preset (default: startup), or
     /// `seakeeping`: the time to build the default RAO tables of the DTMB 5415 (and, with
     /// --hull, of that hull beside it, in the same run).
@@ -118,6 +122,7 @@ fn real_main(cli: Cli) -> Result<(), Failure> {
         Cmd::Merge(a) => cmd::merge::run(a),
         Cmd::FuelPerMile(a) => cmd::fuel_per_mile::run(a),
         Cmd::Fuel(a) => cmd::fuel::run(a),
+        Cmd::Schedule(a) => cmd::schedule::run(a),
         Cmd::Maneuvers(a) => cmd::maneuvers::run(a),
         Cmd::Validate(a) => cmd::validate::run(a),
         Cmd::Bench(a) => cmd::bench::run(a),

@@ -92,7 +92,7 @@ pub struct ParamMeta {
     /// Dotted path in the scenario (`plant.motor.rated_power_w`; a command's fields are
     /// `commands.N.t_s`).
     pub path: String,
-    /// "number", "integer", "switch", "choice", "text", "signal list", "pair" or "offsets".
+    /// "number", "integer", "switch", "choice", "text", "signal list", "pair", "set list" or "offsets".
     pub kind: &'static str,
     pub label: &'static str,
     pub unit: &'static str,
@@ -131,7 +131,7 @@ impl ParamMeta {
         choices: &[(&'static str, &'static str)],
     ) -> Self {
         let kind = T::KIND;
-        let range = if matches!(kind, "number" | "integer" | "pair") { d.bounded() } else { None };
+        let range = if matches!(kind, "number" | "integer" | "pair" | "set list") { d.bounded() } else { None };
         ParamMeta {
             path: path.to_string(),
             kind,
@@ -181,6 +181,7 @@ impl ParamMeta {
             "text" => "must be text in double quotes".into(),
             "signal list" => "must be a list of trace column names (see `aes-sim signals`)".into(),
             "pair" => format!("must be two numbers [port, starboard]{range}{empty}"),
+            "set list" => format!("must be a list of set numbers{range}{empty}"),
             "offsets" => "must be the offsets as CSV text (station_index,x_m,z_m,half_breadth_m)".into(),
             _ => "must be an object of named fields ({...})".into(),
         }
@@ -275,6 +276,28 @@ impl Param for String {
 impl Param for Vec<String> {
     const KIND: &'static str = "signal list";
     fn check(&self, _: &str, _: &Decl, _: &mut Validator) {}
+}
+
+/// A list of numbered items (the online turbine-generator sets): each number within the range.
+impl Param for Vec<u32> {
+    const KIND: &'static str = "set list";
+    fn check(&self, field: &str, d: &Decl, v: &mut Validator) {
+        for (i, x) in self.iter().enumerate().take(MAX_LIST_ITEMS) {
+            if !in_range(*x as f64, d) {
+                refuse::<Self>(&format!("{field}.{i}"), d, x, v);
+            }
+        }
+    }
+}
+
+/// The same, optional (an order that leaves it out keeps what is running).
+impl Param for Option<Vec<u32>> {
+    const KIND: &'static str = "set list";
+    fn check(&self, field: &str, d: &Decl, v: &mut Validator) {
+        if let Some(list) = self {
+            list.check(field, d, v);
+        }
+    }
 }
 
 /// A value per shaft: port, starboard.

@@ -157,6 +157,53 @@ pub(crate) fn second_order_and_fuel(base: &aes_core::RunResult) -> Result<Sectio
     )
     .shown(Kind::Context),
     );
+    // The same case with one, two and four sets online (plant.online; the buses tied with fewer
+    // than four): the thermal efficiency of the online sets and their fuel (issue 45).
+    use aes_core::studies::schedule::{evaluate, SlowDrift};
+    let drift = SlowDrift { mean_n: head1.added_resistance_n, bandwidth_rad_s: 0.0 };
+    let speed = fsc.commands.first().and_then(|c| c.speed_kn).unwrap_or(25.0);
+    let four = evaluate(&fsc, &[1, 2, 3, 4], speed, &drift);
+    let fuel4 = four.fuel_power_w.ok_or("four sets cannot drive the fuel case")?;
+    for sets in [vec![1u32], vec![1, 3], vec![1, 2, 3, 4]] {
+        let n = sets.len();
+        let c = evaluate(&fsc, &sets, speed, &drift);
+        let (eff, what) = match (c.turbine_power_w, c.fuel_power_w) {
+            (Some(p), Some(f)) => (
+                p / f,
+                format!(
+                    "{n} online: {:.1} MW of shaft power, each set at {:.0} % of its rating; {:.1} MW of fuel power in all, \
+                     {:+.1} % against four online (aes-sim schedule's steady state; ch. 5.2.4 runs four)",
+                    p / 1e6,
+                    100.0 * c.load_pu.unwrap_or(0.0),
+                    f / 1e6,
+                    100.0 * (f - fuel4) / fuel4
+                ),
+            ),
+            _ => (
+                0.0,
+                format!(
+                    "{n} online cannot drive {speed} kn: the steady state needs more than full throttle ({:.1} MW \
+                     rating a set); ours 0 marks it",
+                    rated / 1e6
+                ),
+            ),
+        };
+        rows.push(
+            explained(
+                &format!(
+                    "thermal efficiency of the online sets, {speed} kn, 1 ft regular head sea at 0.6 rad/s, {n} of 4 \
+                     sets online"
+                ),
+                "thesis column: the rated efficiency of ch. 5.1, for scale; the thesis runs four sets (ch. 6.1 asks \
+                 for a schedule)",
+                reference_pct(rated_key),
+                eff,
+                "-",
+                &what,
+            )
+            .shown(Kind::Context),
+        );
+    }
     Ok(Section {
         finding: String::new(),
         title: "Ch. 2.5.3, 5.1, 5.2.4: second-order forces and fuel",

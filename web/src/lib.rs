@@ -474,6 +474,15 @@ pub fn fuel_study(json: JsValue, omegas: Vec<f64>) -> Result<String, JsError> {
     serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
 }
 
+/// The turbine schedule of a scenario's plant (`aes-sim schedule --json`'s `schedule`): for each
+/// speed and sea state 2-6 the online sets that burn least fuel with the reserve.
+#[wasm_bindgen(js_name = turbineSchedule)]
+pub fn turbine_schedule(json: JsValue) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let s = aes_core::studies::schedule::run(&sc).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&s).map_err(|e| JsError::new(&e.to_string()))
+}
+
 /// The standard maneuvers booklet of a scenario's ship (`aes-sim maneuvers`' JSON, tracks included).
 #[wasm_bindgen(js_name = maneuversBooklet)]
 pub fn maneuvers_booklet(json: JsValue) -> Result<String, JsError> {

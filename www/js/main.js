@@ -25,6 +25,7 @@ import './views/operability.js';
 import './views/rare.js';
 import './views/fuel.js';
 import './views/maneuvers.js';
+import './views/schedule.js';
 import './views/present.js';
 
 const plots = new PlotBox($('plots'), { more: $('more-plots'), moreBox: $('more-plots-box'), sync: 'run' });

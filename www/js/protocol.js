@@ -42,6 +42,7 @@ export const REQUEST = {
   hullSheet: 'hull-sheet', // {scenario} -> done {sheet}: body plan, profile, hydrostatics (presentation::HullSheet)
   fuel: 'fuel', // {scenario, omegas} -> done {rows}
   maneuvers: 'maneuvers', // {scenario} -> done {booklet} (`aes-sim maneuvers`' JSON: IMO's standard maneuvers)
+  schedule: 'schedule', // {scenario} -> done {schedule} (`aes-sim schedule --json`'s schedule: turbines online by speed and sea state)
   // {args: {side, closed, point: {omega_rad_s, v_fd_v, load_a, torque_nm, from_hz, to_hz, points}}}
   // -> done {result} (the JSON of `aes-sim ips bode`)
   ips: 'ips',

@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, studyEstimate, trialScenario, raoJson, fuelStudy, maneuversBooklet, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, studyEstimate, trialScenario, raoJson, fuelStudy, maneuversBooklet, turbineSchedule, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -101,6 +101,7 @@ const handlers = {
   },
 
   [REQUEST.maneuvers]: (m) => ({ booklet: JSON.parse(maneuversBooklet(checked(m.scenario))) }),
+  [REQUEST.schedule]: (m) => ({ schedule: JSON.parse(turbineSchedule(checked(m.scenario))) }),
   [REQUEST.fuel]: (m) => ({ rows: JSON.parse(fuelStudy(checked(m.scenario), new Float64Array(m.omegas))) }),
 
   [REQUEST.rao]: (m) => ({ result: JSON.parse(raoJson(checked(m.scenario), m.speed_kn, m.heading_deg, new Float64Array(m.omegas))) }),

@@ -16,6 +16,7 @@ pub mod presets;
 pub mod rao;
 pub mod rare;
 pub mod run;
+pub mod schedule;
 pub mod section;
 pub mod signals;
 pub mod stability_map;

@@ -8,6 +8,7 @@ pub mod dc_link;
 pub mod fuel;
 pub mod generator;
 pub mod motor;
+pub mod online;
 pub mod prime_mover;
 pub mod propeller;
 pub mod propeller_losses;

@@ -24,6 +24,7 @@ pub use crate::plant::bus_loads::BusLoadParams;
 pub use crate::plant::dc_link::{DcLinkParams, RectifierKind};
 pub use crate::plant::generator::{FieldControlParams, GeneratorParams};
 pub use crate::plant::motor::{MotorParams, SlipControlParams};
+pub use crate::plant::online::OnlineParams;
 pub use crate::plant::prime_mover::{GovernorParams, TurbineParams};
 pub use crate::plant::propeller::{PropellerModelKind, PropellerParams};
 pub use crate::plant::storage::{StorageKind, StorageParams};
@@ -53,7 +54,7 @@ crate::params! {
         pub plant: PlantParams = PlantParams::default() => {},
         pub controllers: ControllerParams = ControllerParams::default() => {},
         /// Time-stamped commands; the latest command whose time has come is in force.
-        pub commands: Vec<Command> = vec![Command { t_s: 0.0, speed_kn: Some(25.0), heading_deg: None, heading_rate_deg_s: None }] => {},
+        pub commands: Vec<Command> = vec![Command { t_s: 0.0, speed_kn: Some(25.0), heading_deg: None, heading_rate_deg_s: None, online_sets: None }] => {},
         pub initial: InitialConditions = InitialConditions::default() => {},
         pub sim: SimSettings = SimSettings::default() => {},
         pub stepping: SteppingParams = SteppingParams::default() => {},
@@ -143,6 +144,8 @@ crate::params! {
         pub loads: BusLoadParams = BusLoadParams::default() => {},
         /// Energy storage on each bus (ch. 5.2.2, 6.1); none by default.
         pub storage: StorageParams = StorageParams::default() => {},
+        /// Which sets run, and the rules of starting and stopping one (all four by default).
+        pub online: OnlineParams = OnlineParams::default() => {},
     }
 }
 
@@ -187,6 +190,13 @@ crate::params! {
         pub heading_rate_deg_s: Option<f64> = None => {
             label: "Heading rate", unit: "deg/s", range: 0.01..=10.0, empty: "the autopilot's turn_rate_deg_s",
             help: "How fast the heading order moves to the ordered heading.",
+        },
+        /// Sets not running start (online after `plant.online.startup_time_s`); running sets not
+        /// listed stop (after their minimum running time).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub online_sets: Option<Vec<u32>> = None => {
+            label: "Ordered online sets", unit: "-", range: 1.0..=4.0, empty: "keep the sets running",
+            help: "The turbine-generator sets to run from this order on, by number (1 to 4).",
         },
     }
 }
@@ -316,7 +326,13 @@ impl crate::params::CrossCheck for ControllerParams {}
 impl crate::params::CrossCheck for PlantParams {}
 impl crate::params::CrossCheck for InitialConditions {}
 
-impl crate::params::CrossCheck for Command {}
+impl crate::params::CrossCheck for Command {
+    fn cross_check(&self, v: &mut Validator) {
+        if let Some(sets) = &self.online_sets {
+            crate::plant::online::check_set_list(sets, "online_sets", v);
+        }
+    }
+}
 
 impl crate::params::CrossCheck for MonteCarloParams {
     fn cross_check(&self, v: &mut Validator) {

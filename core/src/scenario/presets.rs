@@ -54,7 +54,7 @@ pub fn preset(name: &str) -> Option<Scenario> {
 }
 
 fn speed(t_s: f64, kn: f64) -> Command {
-    Command { t_s, speed_kn: Some(kn), heading_deg: None, heading_rate_deg_s: None }
+    Command { t_s, speed_kn: Some(kn), heading_deg: None, heading_rate_deg_s: None, online_sets: None }
 }
 
 /// Ch. 5.1: idle to 25 knots in calm water with the surge model (Figs. 5-1, 5-2, Tables 5.6-5.7).
@@ -183,6 +183,7 @@ pub fn turn(name: &str, heading_deg: f64, rate_deg_s: Option<f64>) -> Scenario {
         speed_kn: None,
         heading_deg: Some(heading_deg),
         heading_rate_deg_s: rate_deg_s,
+        online_sets: None,
     });
     s.sim.duration_s = if heading_deg >= 360.0 { 500.0 } else { 300.0 };
     s
@@ -202,7 +203,13 @@ pub fn quarter_turn(sea_state: u32) -> Scenario {
     s.sea.kind = SeaKind::Random;
     s.sea.sea_state = sea_state;
     s.seakeeping.grid.roll_wave_amplitude_m = 0.5 * s.sea.spectrum().0;
-    s.commands.push(Command { t_s: 20.0, speed_kn: None, heading_deg: Some(90.0), heading_rate_deg_s: None });
+    s.commands.push(Command {
+        t_s: 20.0,
+        speed_kn: None,
+        heading_deg: Some(90.0),
+        heading_rate_deg_s: None,
+        online_sets: None,
+    });
     s.sim.duration_s = 300.0;
     s.sim.seed = 1;
     sea_step(&mut s);

@@ -141,7 +141,7 @@ pub fn markdown_table() -> String {
             "choice" | "text" if !m.choices.is_empty() => {
                 m.choices.iter().map(|c| format!("`{}`", c.value)).collect::<Vec<_>>().join(", ")
             }
-            "number" | "integer" | "pair" => match (m.min, m.max) {
+            "number" | "integer" | "pair" | "set list" => match (m.min, m.max) {
                 (Some(lo), Some(hi)) => format!("{} to {}", num(lo), num(hi)),
                 (Some(lo), None) => format!("from {}", num(lo)),
                 (None, Some(hi)) => format!("to {}", num(hi)),

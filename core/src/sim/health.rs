@@ -120,6 +120,15 @@ pub fn checks() -> Vec<CheckInfo> {
                      ordered with the propellers stopped (the loop never reverses them)",
         },
         CheckInfo {
+            name: "online set overloaded",
+            threshold: format!(
+                "an online turbine-generator set above its rating (`plant.turbine.rated_power_w`), or at full \
+                 throttle with its speed below {SET_FALLING_PU} pu, for longer than {SET_OVERLOADED_FOR_S} s"
+            ),
+            reason: "the online sets cannot give what the motors draw: too few sets run for the speed and the sea \
+                     (start another, `plant.online`), and a real set would trip on overload or its frequency",
+        },
+        CheckInfo {
             name: "shaft overspeed",
             threshold: "a propeller shaft faster than the speed controller's largest shaft speed \
                         (`controllers.speed.max_shaft_rpm`) at any recorded time"
@@ -194,10 +203,23 @@ impl Stretch {
 }
 
 /// What the run tracked that its trace does not show: each motor's longest stretch at its slip
-/// limit.
+/// limit, each online set's longest stretch overloaded.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Tracked {
     pub slip_limit: [Stretch; crate::ship::hull::N_SHAFTS],
+    pub overload: [Stretch; super::plant::N_SETS],
+}
+
+/// Turbine speed below which a set at full throttle is falling [pu of the governor set point].
+pub const SET_FALLING_PU: f64 = 0.97;
+/// How long an online set may stay overloaded before a warning [s].
+pub const SET_OVERLOADED_FOR_S: f64 = 10.0;
+
+/// Whether a set giving shaft power `p_w` [W] at turbine speed `w` [rad/s] is overloaded: above
+/// its rating, or at full throttle with its speed falling below [`SET_FALLING_PU`].
+pub fn set_overloaded(p_w: f64, w: f64, plant: &super::plant::Plant) -> bool {
+    let t = &plant.turbine;
+    p_w > t.rated_power_w || (w < SET_FALLING_PU * t.rated_speed && t.torque(1.0, w) * w <= p_w * (1.0 + 1e-9))
 }
 
 /// A finding of each shaft (empty: none), once for both when they are the same.
@@ -309,6 +331,20 @@ pub fn assess(sc: &Scenario, trace: &Trace, tracked: &Tracked) -> Vec<String> {
         })
         .collect();
     push_per_shaft(&mut out, &props, ["port propeller", "starboard propeller"], "both propellers");
+
+    for (k, s) in tracked.overload.iter().enumerate() {
+        if s.longest_s > SET_OVERLOADED_FOR_S {
+            out.push(format!(
+                "set {} overloaded for {:.1} s from t = {:.1} s (above its rating of {:.1} MW, or at full throttle \
+                 with its speed falling below {SET_FALLING_PU} pu), longer than the {SET_OVERLOADED_FOR_S} s \
+                 allowed: too few sets are online for this speed and sea; start another",
+                k + 1,
+                s.longest_s,
+                s.from_s,
+                sc.plant.turbine.rated_power_w / 1e6
+            ));
+        }
+    }
 
     if let Some(w) = speed_not_held(t, trace, &motors) {
         out.push(w);

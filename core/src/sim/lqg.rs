@@ -101,8 +101,13 @@ pub fn design_model(sc: &Scenario) -> Result<(DriveTrainModel, StateSpace), SimE
     op.controllers.design = ControllerDesign::Pi;
     op.sea = SeaParams::default();
     op.initial.speed_kn = p.design_speed_kn;
-    op.commands =
-        vec![Command { t_s: 0.0, speed_kn: Some(p.design_speed_kn), heading_deg: None, heading_rate_deg_s: None }];
+    op.commands = vec![Command {
+        t_s: 0.0,
+        speed_kn: Some(p.design_speed_kn),
+        heading_deg: None,
+        heading_rate_deg_s: None,
+        online_sets: None,
+    }];
     // Only the steady state is needed: no long trace.
     op.sim.duration_s = op.stepping.dt_s.max(op.stepping.controller_sample_s);
     let model = drive_train(&op).map_err(|e| setup(sc, "the linearisation", e.to_string()))?;

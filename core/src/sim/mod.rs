@@ -202,6 +202,8 @@ pub struct Simulation {
     first_event: Option<f64>,
     /// Multi-rate stepping (`stepping.hull_substeps` > 1).
     multi: MultiRate,
+    /// Which turbine-generator sets run, start or stop (`plant.online`, the orders' `online_sets`).
+    sets: crate::plant::online::Sets,
 }
 
 /// The multi-rate step's bookkeeping: the hull steps once per `substeps` drive-train steps.
@@ -341,7 +343,9 @@ impl Simulation {
                 va: 0.0,
                 rate: [0.0; HULL_STATES],
             },
+            sets: crate::plant::online::Sets::new(&scenario.plant.online),
         };
+        sim.sync_online();
         sim.initialise()?;
         Ok(sim)
     }
@@ -419,6 +423,7 @@ impl Simulation {
     /// Takes every command whose time has come.
     fn apply_commands(&mut self) {
         let cmds = &self.scenario.commands;
+        let mut ordered = false;
         while self.next_command < cmds.len() && cmds[self.next_command].t_s <= self.t + 0.5 * self.dt {
             let cmd = &cmds[self.next_command];
             if let Some(kn) = cmd.speed_kn {
@@ -450,8 +455,34 @@ impl Simulation {
                     ));
                 }
             }
+            if let Some(sets) = &cmd.online_sets {
+                let wanted = crate::plant::online::mask(sets);
+                let notes = self.sets.order(&wanted, self.t);
+                self.warnings.extend(notes.into_iter().map(|n| format!("commands.{}: {n}", self.next_command)));
+                ordered = true;
+            }
             self.next_command += 1;
         }
+        let moved = self.sets.advance(self.t);
+        if ordered || moved {
+            self.sync_online();
+        }
+    }
+
+    /// Hands the sets' breakers to the plant: which sets deliver, and the bus tie closed while
+    /// any is offline (on closing the two buses meet at their mean voltage: the charge of two
+    /// equal capacitors shared).
+    fn sync_online(&mut self) {
+        let h = &mut self.ctl.held;
+        h.online = self.sets.online();
+        let tied = !self.sets.all_online();
+        if tied && !h.tied {
+            let mean = (0..N_SHAFTS).map(|s| self.x[bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
+            for s in 0..N_SHAFTS {
+                self.x[bus_voltage(s)] = mean;
+            }
+        }
+        h.tied = tied;
     }
 
     /// Fastest turn the autopilot orders at the present speed [rad/s].
@@ -480,20 +511,26 @@ impl Simulation {
         let shaft_ref = c.speed.update(self.speed_cmd, signed_speed, ts);
         match &mut c.lqg {
             Some((d, sets)) => {
-                for (k, set) in sets.iter_mut().enumerate() {
+                for (k, set) in sets.iter_mut().enumerate().filter(|(k, _)| c.held.online[*k]) {
                     let (th, v_f) = set.update(d, x[omega_t(k)], x[bus_voltage(k / SETS_PER_SHAFT)], ts);
                     c.held.throttle[k] = th;
                     c.held.field_voltage[k] = v_f;
                 }
             }
             None => {
-                for k in 0..N_SETS {
+                // An offline set's controllers rest with it.
+                for k in (0..N_SETS).filter(|&k| c.held.online[k]) {
                     let err = (p.turbine.rated_speed - x[omega_t(k)]) / p.turbine.rated_speed;
                     c.held.throttle[k] = c.governor[k].update(err, ts);
                     let s = k / SETS_PER_SHAFT;
                     c.held.field_voltage[k] = c.field[k].update(x[bus_voltage(s)], ts);
                 }
             }
+        }
+        for k in 0..N_SETS {
+            let w = x[omega_t(k)];
+            let over = c.held.online[k] && health::set_overloaded(p.turbine.torque(c.held.throttle[k], w) * w, w, p);
+            c.tracked.overload[k].sample(over, t_now, ts);
         }
         for s in 0..N_SHAFTS {
             let w_rm = x[omega_rm(s)];

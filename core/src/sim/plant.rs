@@ -27,6 +27,8 @@ pub use crate::ship::hull::N_SHAFTS;
 pub const SETS_PER_SHAFT: usize = 2;
 /// Turbine-generator sets in all.
 pub const N_SETS: usize = N_SHAFTS * SETS_PER_SHAFT;
+// The online sets' rules count the same sets.
+const _: () = assert!(N_SETS == crate::plant::online::SETS);
 
 /// The blocks of the state vector. Their order and lengths are [`LAYOUT`]'s: a subsystem's states
 /// are one line there, and every slot follows from it (no offset is computed by hand).
@@ -214,6 +216,11 @@ pub struct Held {
     pub sea: SeaInputs,
     /// What the bus's other loads demand this step (the same on every bus).
     pub bus: Demand,
+    /// Which sets deliver power (breaker closed; `plant::online`): an offline set gives nothing
+    /// and its states rest.
+    pub online: [bool; N_SETS],
+    /// The bus tie closed: the two buses are one node (with any set offline).
+    pub tied: bool,
 }
 
 /// The sea's inputs to the plant over one time step.
@@ -245,6 +252,8 @@ impl Default for Held {
             rudder: 0.0,
             sea: SeaInputs::default(),
             bus: Demand::default(),
+            online: [true; N_SETS],
+            tied: false,
         }
     }
 }
@@ -573,6 +582,19 @@ impl Plant {
             let v_c = x[bus_voltage(s)];
             let mut i_rect = 0.0;
             for k in s * SETS_PER_SHAFT..(s + 1) * SETS_PER_SHAFT {
+                if !h.online[k] {
+                    // Breaker open, not burning: nothing flows and the states rest.
+                    dx[omega_t(k)] = 0.0;
+                    dx[field_current(k)] = 0.0;
+                    if let Some(out) = out.as_deref_mut() {
+                        out.turbine_torque[k] = 0.0;
+                        out.friction_torque[k] = 0.0;
+                        out.generator_torque[k] = 0.0;
+                        out.emf[k] = 0.0;
+                        out.rectifier[k] = RectifierFlow::default();
+                    }
+                    continue;
+                }
                 let w_t = x[omega_t(k)];
                 let i_f = x[field_current(k)];
                 let q_t = self.turbine.torque(h.throttle[k], w_t); // eq. 2.1
@@ -630,6 +652,14 @@ impl Plant {
                 out.motor_voltage[s] = v_m;
                 out.motor[s] = mp;
                 out.propeller[s] = pl;
+            }
+        }
+        if h.tied {
+            // The tie makes the buses one node of twice the capacitance (eq. 2.10 summed over the
+            // two); they are equal when it closes (`Simulation`), so they stay equal.
+            let rate = (0..N_SHAFTS).map(|s| dx[bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
+            for s in 0..N_SHAFTS {
+                dx[bus_voltage(s)] = rate;
             }
         }
         thrust

@@ -2,7 +2,7 @@
 //! the propellers carry the hull's resistance, the motor slip that gives their torque, the
 //! rectifier current, field current and throttle that hold the bus and the turbines there.
 
-use super::plant::{Plant, SETS_PER_SHAFT};
+use super::plant::{Plant, N_SETS, N_SHAFTS, SETS_PER_SHAFT};
 use super::SimError;
 use crate::numerics::units::{kn_to_m_s, rad_s_to_rpm};
 use crate::scenario::Scenario;
@@ -75,12 +75,18 @@ pub fn calm_water(p: &Plant, sc: &Scenario) -> Result<SteadyState, SimError> {
         (0.0, 0.0, 0.0, 0.0)
     };
     // Each set carries half its shaft's inverter power at the bus set point, and half of the
-    // bus's other loads (their filter's input at t = 0).
+    // bus's other loads (their filter's input at t = 0); with fewer online (the buses tied) each
+    // online set an equal share of both shafts'.
     let p_bus = match &p.loads {
         Some(l) => p_inv_shaft + bus_loads_input_w(l, v_ref)?,
         None => p_inv_shaft,
     };
-    let i_dc = p_bus / (SETS_PER_SHAFT as f64 * v_ref);
+    let online = crate::plant::online::mask(&sc.plant.online.sets).iter().filter(|&&o| o).count();
+    let i_dc = if online == N_SETS {
+        p_bus / (SETS_PER_SHAFT as f64 * v_ref)
+    } else {
+        p_bus * N_SHAFTS as f64 / (online.max(1) as f64 * v_ref)
+    };
     let w_e = p.generator.electrical_speed(w_t);
     let r_total = p.dc_link.total_resistance(w_e);
     let e_a = (v_ref + r_total * i_dc) / crate::plant::dc_link::BRIDGE_VOLTAGE_RATIO;

@@ -89,7 +89,10 @@ impl FuelPerMileStudy {
             ordered = true;
         }
         if !ordered {
-            sc.commands.insert(0, Command { t_s: 0.0, speed_kn: Some(v), heading_deg: None, heading_rate_deg_s: None });
+            sc.commands.insert(
+                0,
+                Command { t_s: 0.0, speed_kn: Some(v), heading_deg: None, heading_rate_deg_s: None, online_sets: None },
+            );
         }
         sc
     }

@@ -132,8 +132,7 @@ impl Trial {
             field_voltage: [0.0; crate::sim::plant::N_SETS],
             slip: [0.0; N_SHAFTS],
             rudder: 0.0,
-            sea: Default::default(),
-            bus: Default::default(),
+            ..Held::default()
         };
         let mut out = Vec::new();
         let mut t = 0.0;

@@ -13,6 +13,7 @@ pub mod operability;
 pub mod rare;
 pub mod regression;
 pub mod rice;
+pub mod schedule;
 pub mod stability_map;
 pub mod stats;
 pub mod study;
