@@ -106,7 +106,7 @@ macro_rules! for_each_signal {
                 "Slowly varying second-order force to starboard (eq. 2.60).", |r| r.drift_force();
             DriftMomentNm, "drift_moment_nm", "N m", "drift moment",
                 "Slowly varying second-order yaw moment, bow to starboard (M_add of eq. 2.24).", |r| r.ctl.held.sea.wave_mz;
-            FuelPowerW, "fuel_power_w", "W", "fuel power", "Fuel power of the four turbines (part-load curve).",
+            FuelPowerW, "fuel_power_w", "W", "fuel power", "Fuel power of the turbines online (part-load curve; all four by default).",
                 |r| r.fuel;
             ShipServiceW, "ship_service_w", "W", "ship service load, both buses",
                 "Output of the two ship service converters (constant power behind their input filters; 0 without).",
