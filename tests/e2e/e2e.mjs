@@ -89,19 +89,19 @@ for (const [name, hash, want] of [
   });
 }
 await check('a long run can be cancelled and the form survives', async () => {
-  await setField(page, 'sim.duration_s', 20000);
+  await setField(page, 'sim.duration_s', 18000);
   await page.click('#run');
   await page.waitForFunction(() => document.getElementById('progress').value > 0.002, null, { timeout: 30000 });
   await page.click('#cancel');
   await page.waitForFunction(() => document.getElementById('status').textContent === 'Cancelled.', null, { timeout: 5000 });
   await page.waitForFunction(() => !document.getElementById('run').disabled, null, { timeout: 30000 });
-  assert((await page.inputValue('#f-sim-duration_s')) === '20000', 'form lost its edit');
+  assert((await page.inputValue('#f-sim-duration_s')) === '18000', 'form lost its edit');
   assert((await page.$$eval('#plots .uplot', (els) => els.length)) >= 5, 'earlier plots were lost');
 });
 await check('edits survive a reload', async () => {
   await page.reload();
   await page.waitForFunction(() => !document.getElementById('run').disabled, null, { timeout: 30000 });
-  assert((await page.inputValue('#f-sim-duration_s')) === '20000', 'duration not restored');
+  assert((await page.inputValue('#f-sim-duration_s')) === '18000', 'duration not restored');
   assert((await page.inputValue('#f-ship-drag_coeff')) === '0.004', 'C_r not restored');
 });
 await check('a bad value is marked at its field (aria-invalid) and Run waits for it', async () => {
