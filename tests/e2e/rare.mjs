@@ -206,6 +206,10 @@ await check('Cancel stops a computation and the next one computes', async () => 
   await p.fill('#rare-trials', '1000');
   await p.dispatchEvent('#rare-trials', 'change');
   await p.click('#rare-compute');
+  // 1000 trials are estimated at over a minute on two workers (about 69 s): then the page asks
+  // first, and Start it starts them.
+  await p.waitForFunction(() => document.getElementById('rare-progress').value > 0 || document.querySelector('#long-study[open]'), null, { timeout: 30000 });
+  if (await p.$('#long-study[open]')) await p.click('#long-study-go');
   await p.waitForFunction(() => document.getElementById('rare-progress').value > 0, null, { timeout: 30000 });
   await p.click('#rare-cancel');
   await p.waitForFunction(() => document.getElementById('rare-status').textContent === 'Cancelled.', null, { timeout: 10000 });
