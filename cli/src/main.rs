@@ -92,6 +92,10 @@ enum Cmd {
     /// the online set that burns least fuel while the sea's power swings leave it its reserve;
     /// the table with the fuel saving against all four online (`--json` for everything).
     Schedule(cmd::schedule::Args),
+    /// How big a storage the scenario's seaway needs (thesis ch. 5.2.2, 6.1): one run per storage
+    /// size (energy x power rating on each bus) beside the run without storage: the turbines' speed
+    /// swing, the bus's range, fuel, brake energy and the storage's cycling (`--json` for everything).
+    StorageSizing(cmd::storage_sizing::Args),
     /// Measure simulated seconds per wall-clock second on a preset (default: startup), or
     /// `seakeeping`: the time to build the default RAO tables of the DTMB 5415 (and, with
     /// --hull, of that hull beside it, in the same run).
@@ -123,6 +127,7 @@ fn real_main(cli: Cli) -> Result<(), Failure> {
         Cmd::FuelPerMile(a) => cmd::fuel_per_mile::run(a),
         Cmd::Fuel(a) => cmd::fuel::run(a),
         Cmd::Schedule(a) => cmd::schedule::run(a),
+        Cmd::StorageSizing(a) => cmd::storage_sizing::run(a),
         Cmd::Maneuvers(a) => cmd::maneuvers::run(a),
         Cmd::Validate(a) => cmd::validate::run(a),
         Cmd::Bench(a) => cmd::bench::run(a),

@@ -20,4 +20,5 @@ pub mod schedule;
 pub mod section;
 pub mod signals;
 pub mod stability_map;
+pub mod storage_sizing;
 pub mod validate;

@@ -323,7 +323,7 @@ impl Simulation {
             speed_cmd: 0.0,
             stored0: 0.0,
             trace,
-            warnings: Vec::new(),
+            warnings: crate::plant::storage::ignored_without_energy(&scenario.plant.storage).into_iter().collect(),
             max_heading_lag: 0.0,
             sea: seaway::Seaway::new(scenario).map_err(SimError::Setup)?,
             sea_every: (scenario.stepping.sea_sample_s / dt).round().max(1.0) as u64,

@@ -16,6 +16,7 @@ pub mod rice;
 pub mod schedule;
 pub mod stability_map;
 pub mod stats;
+pub mod storage_sizing;
 pub mod study;
 pub mod thesis_values;
 /// Every study on the shared pipeline ([`study::Study`]), for the code that picks one by its kind
