@@ -152,6 +152,15 @@ await check('the bus stability map: the command line\'s map bit for bit, its cel
   await p.fill('#busmap-speed', '0');
   bad = await computed();
   assert(bad.includes('initial.speed_kn = 0') && await p.getAttribute('#busmap-speed', 'aria-invalid') === 'true', bad);
+  // Back to the map's values it is shown plainly; another load in the form dims it and says so.
+  await p.fill('#busmap-speed', '25');
+  await p.dispatchEvent('#busmap-speed', 'input');
+  assert(!(await p.getAttribute('#busmap-body', 'class') || '').includes('stale'), 'the map of the boxes\' values is dimmed');
+  await p.click('#tab-sim');
+  await setField(p, 'plant.loads.ship_service_w', 5e6);
+  await p.click('#tab-ips');
+  await p.waitForFunction(() => document.getElementById('busmap-body').classList.contains('stale'), null, { timeout: 5000 });
+  assert((await p.textContent('#busmap-status')).includes('compute it again'), await p.textContent('#busmap-status'));
   await c.close();
 });
 

@@ -80,7 +80,8 @@ export class BusMap {
     for (const i of document.querySelectorAll('#busmap input')) i.addEventListener('input', () => this.sync());
     $('busmap-pair').addEventListener('change', () => this.sync());
     const cv = $('busmap-canvas');
-    cv.addEventListener('mousemove', (e) => this.hover(e));
+    // A mouse over a cell, or a finger on it.
+    for (const ev of ['pointermove', 'pointerdown']) cv.addEventListener(ev, (e) => this.hover(e));
     cv.addEventListener('keydown', (e) => this.key(e));
     cv.addEventListener('focus', () => { if (this.shown && !this.cell) this.select(this.startCell()); });
     new ResizeObserver(() => { if (this.shown && cv.clientWidth && cv.clientWidth !== this.drawnW) this.draw(); }).observe(cv);
