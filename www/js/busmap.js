@@ -35,7 +35,8 @@ export const TEMPLATE = `
           <label for="busmap-y-to" id="busmap-y-to-l">to</label><input id="busmap-y-to" type="number" step="any" inputmode="decimal">
           <label for="busmap-y-n">values</label><input id="busmap-y-n" type="number" step="1" min="2" inputmode="numeric">
         </div></fieldset>
-      <div class="row buttons"><button id="busmap-compute" type="button">Compute the map</button></div>
+      <div class="row buttons"><button id="busmap-compute" type="button">Compute the map</button>
+        <button id="busmap-cancel" type="button" disabled>Cancel</button></div>
       <div id="busmap-status" role="status" aria-live="polite"></div>
     </div>
     <div id="busmap-body" hidden>
@@ -77,6 +78,8 @@ export class BusMap {
     this.cell = null; // [i, j] of the cell said
     $('busmap-pair').addEventListener('change', () => this.pairChosen());
     $('busmap-compute').addEventListener('click', () => this.compute());
+    // Cancel stops the worker (the page starts a fresh one); the map shown stays.
+    $('busmap-cancel').addEventListener('click', () => this.ctx.cancel());
     for (const i of document.querySelectorAll('#busmap input')) i.addEventListener('input', () => this.sync());
     $('busmap-pair').addEventListener('change', () => this.sync());
     const cv = $('busmap-canvas');
@@ -172,6 +175,7 @@ export class BusMap {
     this.markInvalid([]);
     const cells = r.x.n * r.y.n;
     $('busmap-compute').disabled = true;
+    $('busmap-cancel').disabled = false;
     $('busmap-status').className = '';
     $('busmap-status').textContent = `Linearising the plant at ${cells} points...`;
     const t0 = performance.now();
@@ -184,11 +188,12 @@ export class BusMap {
       this.cell = null;
       this.show((performance.now() - t0) / 1000);
     } catch (e) {
-      if (e.cancelled) return;
+      if (e.cancelled) { $('busmap-status').textContent = 'Cancelled.'; return; }
       const text = e.fields && e.fields.length ? `The scenario is refused: ${e.fields.slice(0, 3).map(fieldLine).join('; ')}` : `The map could not be computed: ${e.message}`;
       this.fail(text, this.inputsOf(e.message));
     } finally {
       $('busmap-compute').disabled = false;
+      $('busmap-cancel').disabled = true;
     }
   }
 
@@ -223,7 +228,9 @@ export class BusMap {
     const own = [valueAt(sc, map.x.path), valueAt(sc, map.y.path)];
     const verdict = (a) => (a < 0 ? 'stable: every mode decays' : 'unstable: a mode grows');
     const mode = (hz) => (hz > 0 ? `its least damped mode rings at ${num(hz)} Hz` : 'its least damped mode does not oscillate (0 Hz)');
-    $('busmap-point').textContent = `At the study's own values (${ax.label} ${sx(own[0], ax)}, ${ay.label} ${sx(own[1], ay)}, ${num(r.speed)} kn): spectral abscissa ${num(point.spectral_abscissa)} 1/s, ${verdict(point.spectral_abscissa)}; ${mode(point.least_damped_hz)}.`;
+    const within = (v, vals) => v >= vals[0] && v <= vals[vals.length - 1];
+    const off = within(own[0], map.x.values) && within(own[1], map.y.values) ? '' : ' (outside the map\'s ranges: no ring is drawn)';
+    $('busmap-point').textContent = `At the study's own values (${ax.label} ${sx(own[0], ax)}, ${ay.label} ${sx(own[1], ay)}, ${num(r.speed)} kn)${off}: spectral abscissa ${num(point.spectral_abscissa)} 1/s, ${verdict(point.spectral_abscissa)}; ${mode(point.least_damped_hz)}.`;
     $('busmap-title').textContent = `Spectral abscissa [1/s] over ${ax.label} [${ax.unit}] and ${ay.label} [${ay.unit}]: ${r.title}, at ${num(r.speed)} kn`;
     // The boundary by row, in words and as a table.
     const rows = map.y.values.map((y, j) => {
@@ -317,7 +324,8 @@ export class BusMap {
     this.colourBar(g, f, w, lo, hi, colour);
     // The study's own values, where they fall inside the map.
     const own = [valueAt(this.shown.sc, map.x.path), valueAt(this.shown.sc, map.y.path)];
-    if (own[0] >= f.x0 && own[0] <= f.x1 && own[1] >= f.y0 && own[1] <= f.y1) {
+    const within = (v, vals) => v >= vals[0] && v <= vals[vals.length - 1];
+    if (within(own[0], map.x.values) && within(own[1], map.y.values)) {
       const X = f.px(own[0]), Y = f.py(own[1]);
       g.lineWidth = 3; g.strokeStyle = '#fff'; g.beginPath(); g.arc(X, Y, 7, 0, 2 * Math.PI); g.stroke();
       g.lineWidth = 2; g.strokeStyle = '#000'; g.beginPath(); g.arc(X, Y, 7, 0, 2 * Math.PI); g.stroke();
