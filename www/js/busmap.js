@@ -322,6 +322,11 @@ export class BusMap {
     }
     this.axesDrawn(g, f, w, h);
     this.colourBar(g, f, w, lo, hi, colour);
+    if (this.cell) {
+      const [i, j] = this.cell, x = map.x.values[i], y = map.y.values[j];
+      g.lineWidth = 2; g.strokeStyle = '#000';
+      g.strokeRect(f.px(x - f.dx / 2), f.py(y + f.dy / 2), f.px(x + f.dx / 2) - f.px(x - f.dx / 2), f.py(y - f.dy / 2) - f.py(y + f.dy / 2));
+    }
     // The study's own values, where they fall inside the map.
     const own = [valueAt(this.shown.sc, map.x.path), valueAt(this.shown.sc, map.y.path)];
     const within = (v, vals) => v >= vals[0] && v <= vals[vals.length - 1];
@@ -334,11 +339,6 @@ export class BusMap {
       const tx = X + 10 + tw < f.m.l + f.pw ? X + 10 : X - 10 - tw;
       g.fillStyle = 'rgba(255,255,255,0.85)'; g.fillRect(tx - 2, Y - 19, tw + 4, 15);
       g.fillStyle = '#000'; g.fillText(t, tx, Y - 7);
-    }
-    if (this.cell) {
-      const [i, j] = this.cell, x = map.x.values[i], y = map.y.values[j];
-      g.lineWidth = 2; g.strokeStyle = '#000';
-      g.strokeRect(f.px(x - f.dx / 2), f.py(y + f.dy / 2), f.px(x + f.dx / 2) - f.px(x - f.dx / 2), f.py(y - f.dy / 2) - f.py(y + f.dy / 2));
     }
   }
 
