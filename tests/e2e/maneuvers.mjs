@@ -1,11 +1,13 @@
 // Browser test of the standard maneuvers fold (issue 42) and the turbine schedule fold (issue 45): the booklet the page computes in its
 // worker is the command line's bit for bit (`aes-sim maneuvers`, run here on the same preset), the
 // table says its IMO verdicts, a booklet of another study is hidden, and the fold fits and is axe
-// clean at the three sizes (screenshots maneuvers-*.png).
+// clean at the three sizes (screenshots maneuvers-*.png). Also the stability tab's bus stability
+// map (issue 44): the command line's map bit for bit, its cells said in words, its refusals at
+// the box, and its fit at the three sizes in one page load (screenshots busmap-*.png).
 // Usage: node tests/e2e/maneuvers.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR [path of aes-sim]
-import { mkdirSync, existsSync } from 'node:fs';
+import { mkdirSync, existsSync, writeFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
-import { assert, checker, foldAtSizes, launch, openPage, pressAndWait, setField } from './lib.mjs';
+import { assert, checker, foldAtSizes, foldFits, launch, openPage, pressAndWait, setField } from './lib.mjs';
 
 const base = process.argv[2];
 const shots = process.argv[3];
@@ -89,6 +91,77 @@ await foldAtSizes({
     await p.click('#schedule-compute');
     await p.waitForFunction(() => /^Done/.test(document.getElementById('schedule-status').textContent), null, { timeout: 60000 });
   },
+});
+
+// The bus stability map (issue 44) on the stability tab: the start-up study's default map (ship
+// service load and filter C) is `aes-sim stability-map` on the scenario the page sent, bit for
+// bit, and so is its operating point; a cell says its value and verdict; bad boxes are refused
+// at the box; it fits and is axe clean at the three sizes (the same page resized).
+await check('the bus stability map: the command line\'s map bit for bit, its cells in words, its refusals at the box, fits at three sizes', async () => {
+  const c = await browser.newContext({ viewport: { width: 1366, height: 768 }, bypassCSP: true });
+  const p = await open(`${base}#v=2&preset=startup`, c);
+  await p.click('#tab-ips');
+  const computed = async () => {
+    await p.click('#busmap-compute');
+    await p.waitForFunction(() => !document.getElementById('busmap-compute').disabled && /^Done|could not|refused|must/.test(document.getElementById('busmap-status').textContent), null, { timeout: 60000 });
+    return p.textContent('#busmap-status');
+  };
+  const st = await computed();
+  assert(st.startsWith('Done'), `status: ${st}`);
+  const page = await p.evaluate(() => window.__busmap);
+  const file = `${shots}/busmap-scenario.json`;
+  writeFileSync(file, page.request.scenario);
+  const axis = (a) => `${a.path}=${a.from}:${a.to}:${a.n}`;
+  const cliMap = JSON.parse(execFileSync(native, ['stability-map', file, '--x', axis(page.request.x), '--y', axis(page.request.y)], { maxBuffer: 64 << 20 }).toString());
+  const cliPoint = JSON.parse(execFileSync(native, ['stability-map', file]).toString());
+  const canon = (v) => (Array.isArray(v) ? v.map(canon) : v && typeof v === 'object' ? Object.fromEntries(Object.keys(v).sort().map((k) => [k, canon(v[k])])) : v);
+  assert(page.request.x.path === 'plant.loads.ship_service_w' && page.request.y.path === 'plant.loads.filter_capacitance_f', `default pair ${page.request.x.path}, ${page.request.y.path}`);
+  assert(JSON.stringify(canon(page.map)) === JSON.stringify(canon(cliMap)), `page ${JSON.stringify(canon(page.map)).slice(0, 300)} against ${JSON.stringify(canon(cliMap)).slice(0, 300)}`);
+  assert(JSON.stringify(canon(page.point)) === JSON.stringify(canon(cliPoint)), 'the operating point is not the command line\'s');
+  const crossed = cliMap.boundary_x.filter((b) => b != null);
+  assert(crossed.length >= 5 && st.includes(`crosses ${crossed.length} of ${cliMap.y.values.length} rows`), `status ${st}`);
+  const j10 = cliMap.y.values.findIndex((y) => Math.abs(y - 0.01) < 1e-12);
+  console.log(`     ${cliMap.x.values.length} x ${cliMap.y.values.length} cells; boundary at C_f 10 mF: ${(cliMap.boundary_x[j10] / 1e6).toFixed(2)} MW`);
+  // A cell on each side of the boundary, by keyboard: its value and verdict in words.
+  await p.focus('#busmap-canvas');
+  await p.keyboard.press('Home');
+  for (const [key, want] of [['Home', 'stable: every mode decays'], ['End', 'unstable: a mode grows']]) {
+    await p.keyboard.press(key);
+    const said = await p.textContent('#busmap-readout');
+    const [i, j] = await p.evaluate(() => window.__busmapCell);
+    const a = cliMap.abscissa[j][i];
+    assert(said.includes(want) && said.includes(`${Number(Number(a).toPrecision(3))} 1/s`), `${key}: ${said} (abscissa ${a})`);
+    if (a >= 0) assert(said.includes(`rings at ${Number(Number(cliMap.least_damped_hz[j][i]).toPrecision(3))} Hz`), said);
+  }
+  // The pointer says a cell too.
+  const box = await p.locator('#busmap-canvas').boundingBox();
+  await p.mouse.move(box.x + box.width * 0.3, box.y + box.height * 0.5);
+  assert(/spectral abscissa .* 1\/s, (stable|unstable)/.test(await p.textContent('#busmap-readout')), 'hover says nothing');
+  // The study's own point is on the map and said.
+  assert((await p.textContent('#busmap-point')).includes(`${Number(cliPoint.spectral_abscissa.toPrecision(3))} 1/s, stable`), await p.textContent('#busmap-point'));
+  for (const [w, h] of [[1366, 768], [1920, 1080], [390, 844]]) {
+    await p.setViewportSize({ width: w, height: h });
+    await foldFits(p, '#busmap', `${shots}/busmap-${w}x${h}.png`, ['heading-order', 'empty-table-header', 'scrollable-region-focusable']);
+  }
+  // Refusals at the box: too many values; a speed of 0 (no steady state under way).
+  await p.fill('#busmap-x-n', '500');
+  let bad = await computed();
+  assert(bad.includes('x axis: 500 values of plant.loads.ship_service_w: a whole number from 2 to 200'), bad);
+  assert(await p.getAttribute('#busmap-x-n', 'aria-invalid') === 'true', 'the values box is not marked');
+  await p.fill('#busmap-x-n', '41');
+  await p.fill('#busmap-speed', '0');
+  bad = await computed();
+  assert(bad.includes('initial.speed_kn = 0') && await p.getAttribute('#busmap-speed', 'aria-invalid') === 'true', bad);
+  // Back to the map's values it is shown plainly; another load in the form dims it and says so.
+  await p.fill('#busmap-speed', '25');
+  await p.dispatchEvent('#busmap-speed', 'input');
+  assert(!(await p.getAttribute('#busmap-body', 'class') || '').includes('stale'), 'the map of the boxes\' values is dimmed');
+  await p.click('#tab-sim');
+  await setField(p, 'plant.loads.ship_service_w', 5e6);
+  await p.click('#tab-ips');
+  await p.waitForFunction(() => document.getElementById('busmap-body').classList.contains('stale'), null, { timeout: 5000 });
+  assert((await p.textContent('#busmap-status')).includes('compute it again'), await p.textContent('#busmap-status'));
+  await c.close();
 });
 
 await finish(browser, errors);

@@ -1,6 +1,6 @@
 //! Checks against closed forms, limits and conservation laws (no thesis number involved): energy
 //! books, Parseval, Monte Carlo against Rice, the radiation solver and strip theory in their
-//! limits, the Wigley hull; and the DTMB 5415's RAO figure.
+//! limits, the Wigley hull, the bus stability boundary; and the DTMB 5415's RAO figure.
 
 use crate::rows::row;
 use crate::runs::mc;
@@ -55,6 +55,7 @@ pub(crate) fn analytic(size: Size, st: &aes_core::RunResult) -> Result<Section, 
         ),
     ));
     rows.extend(seakeeping_limits());
+    rows.extend(bus_stability()?);
     Ok(Section {
         finding: String::new(),
         title: "Analytic checks",
@@ -62,6 +63,44 @@ pub(crate) fn analytic(size: Size, st: &aes_core::RunResult) -> Result<Section, 
         rows,
         figures: vec![rao_figure()?],
     })
+}
+
+/// The bus stability map's boundary (issue 44, `studies::stability_map`) against the closed form
+/// of a constant-power load behind its LC filter on a stiff bus, P = R_f C_f v_f^2 / L_f: the
+/// plant at 20 kn with a 100 F bus, the boundary in ship service power bisected (as the map does
+/// between its cells) at three filter capacitances.
+fn bus_stability() -> Result<Vec<Row>, String> {
+    use aes_core::plant::bus_loads::ShipService;
+    use aes_core::studies::stability_map::boundary;
+    let mut sc = aes_core::scenario::presets::acceleration(false);
+    sc.initial.speed_kn = 20.0;
+    sc.commands[0].speed_kn = Some(20.0);
+    sc.plant.loads.ship_service_w = 1.0e6;
+    sc.plant.dc_link.capacitance_f = 100.0;
+    let l = sc.plant.loads.clone();
+    [0.01, 0.02, 0.04]
+        .into_iter()
+        .map(|c_f| {
+            let f = ShipService { l_h: l.filter_inductance_h, r_ohm: l.filter_resistance_ohm, c_f, v_min: 0.0 };
+            let closed = f.critical_power_w(sc.bus_voltage_ref_v());
+            let b = boundary(
+                &sc,
+                "plant.loads.ship_service_w",
+                0.5 * closed,
+                1.5 * closed,
+                ("plant.loads.filter_capacitance_f", c_f),
+            )?;
+            Ok(row(
+                &format!("bus stability boundary, C_f = {} mF on a stiff bus (100 F): ship service power", c_f * 1e3),
+                "closed form R_f C_f v_f^2 / L_f (constant-power load behind its filter)",
+                closed / 1e6,
+                b / 1e6,
+                "MW",
+                Tolerance::Rel(1e-3),
+                "the whole plant linearised (stability_map); the rest is the bus's finite stiffness",
+            ))
+        })
+        .collect()
 }
 
 /// The DTMB 5415's heave and pitch RAOs in head seas against wavelength, at rest and at Fn 0.28,

@@ -195,6 +195,27 @@ export const MC = { maxTrials: 100000, maxWorkers: 4, periodogramMaxHz: 1.0, ons
 // declaration path), the pole map's radius (faster poles are listed, not drawn) and the debounce.
 export const IPS = { steps: { torque_nm: 1, load_a: 0.5, v_fd_v: 'any' }, poleMapMax: 2000, debounceMs: 60 };
 
+// The bus stability map on the stability tab (issue 44): presentation only. The pairs of
+// parameters a student picks from (checked with `aes-sim stability-map` on the start-up study at
+// 25 kn: each map's boundary crosses it inside these ranges, from 0 W: no ship service load, the
+// presets' own value, so the study's point is on the map), each axis's default range [SI] and
+// number of values; the unit each parameter's SI unit is shown in (a power of ten: MW, mF); the
+// map's height [px] (less on a phone) and its colours (diverging: stable blue, unstable red).
+// The labels, units and allowed ranges are the registry's (paramMeta); every number drawn is the
+// wasm's (stabilityMap, stabilityPoint).
+export const BUSMAP = {
+  pairs: [
+    { id: 'filter', x: ['plant.loads.ship_service_w', 0, 16e6, 41], y: ['plant.loads.filter_capacitance_f', 0.007, 0.015, 17] },
+    { id: 'bus', x: ['plant.loads.ship_service_w', 0, 20e6, 41], y: ['plant.dc_link.capacitance_f', 0.005, 0.1, 20] },
+    { id: 'resistance', x: ['plant.loads.ship_service_w', 0, 20e6, 41], y: ['plant.loads.filter_resistance_ohm', 0.02, 0.12, 21] },
+  ],
+  shown: { W: ['MW', 6], F: ['mF', -3] },
+  heightPx: 420, phoneHeightPx: 340, phoneBelowPx: 600,
+  // The colour scale is symmetric-logarithmic: |a| below linear1PerS is drawn on a linear scale.
+  linear1PerS: 0.01,
+  colors: { stable: [33, 102, 172], zero: [247, 247, 247], unstable: [178, 24, 43], failed: '#9a9a9a' },
+};
+
 // The controller design tab (ch. 3.1): the plant is the acceleration study's; poles faster than
 // poleMapMax [1/s] are listed, not drawn (the compensator's fastest are near -216 /s).
 // The sliders' spans (in decades for mu and q) within the declared ranges, and their steps.

@@ -386,7 +386,7 @@ const ctx = {
   set mode(m) { mode = m; },
   kept: null, // a kept run: {name, columns, summary}
   lesson: null, // {def, scenario0} while a lesson is open (scenario0: the study with its settings)
-  plots, live, validate, studyInputs, stateKey, hereHash, follow, settle, remember, showStale, clearResults, failed, run, onEdit, selectStudy, selectTab,
+  plots, live, validate, studyInputs, stateKey, hereHash, follow, settle, remember, showStale, clearResults, failed, run, onEdit, selectStudy, selectTab, cancel,
   forgetChecks: () => { validating++; }, // a check still on its way is of values left behind
   // The result of the form's values drawn again, if the page still has it (Back within a lesson).
   restoreResult: () => {

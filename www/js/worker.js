@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, studyEstimate, trialScenario, raoJson, fuelStudy, maneuversBooklet, turbineSchedule, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, studyEstimate, trialScenario, raoJson, fuelStudy, maneuversBooklet, turbineSchedule, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen, stabilityPoint, stabilityMap } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -116,6 +116,26 @@ const handlers = {
   [REQUEST.rarePlace]: (m) => ({ scenario: rarePlace(checked(m.scenario), m.passes) }),
 
   [REQUEST.design]: (m) => ({ result: JSON.parse(designLqgLtr(checked(m.scenario))) }),
+  // The operating point first (its error names the field: a speed of 0 kn), then the map a row
+  // at a time with progress; each row is computed alone, so the rows put together are the
+  // command line's map.
+  [REQUEST.stabilityMap]: (m, progress) => {
+    const sc = checked(m.scenario);
+    const point = JSON.parse(stabilityPoint(sc));
+    const { x, y } = m;
+    let map = null, last = performance.now();
+    for (let r = 0; r < y.n; r++) {
+      const part = JSON.parse(stabilityMap(sc, x.path, x.from, x.to, x.n, y.path, y.from, y.to, y.n, r, r + 1));
+      if (!map) map = part;
+      else {
+        map.y.values.push(...part.y.values);
+        for (const k of ['abscissa', 'least_damped_hz', 'boundary_x']) map[k].push(...part[k]);
+        map.failures.push(...part.failures.slice(0, Math.max(0, 10 - map.failures.length)));
+      }
+      if (performance.now() - last > PROGRESS_EVERY_MS) { progress({ rows: r + 1, of: y.n }); last = performance.now(); }
+    }
+    return { point, map };
+  },
   [REQUEST.ips]: (m) => {
     const { side, closed, point: p } = m.args;
     return { result: JSON.parse(ipsAnalysis(side, p.omega_rad_s, p.v_fd_v, p.load_a, p.torque_nm, closed, p.from_hz, p.to_hz, p.points)) };

@@ -31,6 +31,9 @@ const STEP: f64 = 1e-6;
 /// most 23 states: about 0.2 ms).
 pub const MAX_CELLS: usize = 10_000;
 
+/// Most values on one axis of a map.
+pub const MAX_AXIS_VALUES: usize = 200;
+
 /// The plant linearised about its steady state.
 #[derive(Debug, Clone, Serialize)]
 pub struct BusModel {
@@ -135,6 +138,33 @@ impl Axis {
         let n = n.max(2);
         Axis { path: path.into(), values: (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).collect() }
     }
+
+    /// `n` values evenly from `lo` to `hi` of the number at `path` of `sc`, checked: `n` from 2
+    /// to [`MAX_AXIS_VALUES`], `lo` below `hi`, both ends a value the scenario takes there (its
+    /// own check, naming the parameter and its range). `which` names the axis in the message.
+    pub fn checked(sc: &Scenario, which: &str, path: &str, lo: f64, hi: f64, n: usize) -> Result<Axis, String> {
+        if !(2..=MAX_AXIS_VALUES).contains(&n) {
+            return Err(format!("{which}: {n} values: from 2 to {MAX_AXIS_VALUES}"));
+        }
+        if !(lo.is_finite() && hi.is_finite() && lo < hi) {
+            let shown = |v: f64| {
+                if v.is_finite() {
+                    crate::checks::num(v)
+                } else {
+                    "a value that is not a finite number".into()
+                }
+            };
+            return Err(format!(
+                "{which}: from {} to {} {path}: two finite numbers, the first below the second",
+                shown(lo),
+                shown(hi)
+            ));
+        }
+        for v in [lo, hi] {
+            set(sc, path, v).map_err(|e| format!("{which}: {e}"))?;
+        }
+        Ok(Axis::linear(path, lo, hi, n))
+    }
 }
 
 /// The map: the spectral abscissa over the grid, and the boundary.
@@ -145,6 +175,9 @@ pub struct StabilityMap {
     /// Spectral abscissa [1/s] of each cell, a row per y value (None where the steady state or the
     /// model failed, with the reason in `failures`).
     pub abscissa: Vec<Vec<Option<f64>>>,
+    /// The frequency [Hz] of each cell's least damped mode (the one whose real part is the
+    /// abscissa), as `abscissa`.
+    pub least_damped_hz: Vec<Vec<Option<f64>>>,
     /// For each y value, the x where the abscissa first crosses zero along the row (bisected
     /// between its cells; None where it does not within the row).
     pub boundary_x: Vec<Option<f64>>,
@@ -162,19 +195,34 @@ pub fn abscissa_at(sc: &Scenario, x: (&str, f64), y: (&str, f64)) -> Result<f64,
     Ok(linearize(&s)?.spectral_abscissa)
 }
 
-/// The map of `sc` over `x` and `y`.
-pub fn map(sc: &Scenario, x: &Axis, y: &Axis) -> Result<StabilityMap, String> {
+/// Checks a map's two axes together: two different parameters, at most [`MAX_CELLS`] cells.
+pub fn check_grid(x: &Axis, y: &Axis) -> Result<(), String> {
+    if x.path == y.path {
+        return Err(format!("both axes are {}: choose two different parameters", x.path));
+    }
     let cells = x.values.len() * y.values.len();
     if cells > MAX_CELLS {
-        return Err(format!("a map of {cells} cells: at most {MAX_CELLS} (fewer values on an axis)"));
+        return Err(format!(
+            "a map of {} x {} = {cells} cells: at most {MAX_CELLS} (fewer values on an axis)",
+            x.values.len(),
+            y.values.len()
+        ));
     }
-    let (mut abscissa, mut boundary_x, mut failures) = (Vec::new(), Vec::new(), Vec::new());
+    Ok(())
+}
+
+/// The map of `sc` over `x` and `y`. Each row (a y value) is computed alone: the map of a part
+/// of `y`'s values is that part of the whole map's rows, bit for bit.
+pub fn map(sc: &Scenario, x: &Axis, y: &Axis) -> Result<StabilityMap, String> {
+    check_grid(x, y)?;
+    let (mut abscissa, mut least_damped_hz, mut boundary_x, mut failures) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     for &yv in &y.values {
-        let row: Vec<Option<f64>> = x
+        let models: Vec<Option<BusModel>> = x
             .values
             .iter()
-            .map(|&xv| match abscissa_at(sc, (&x.path, xv), (&y.path, yv)) {
-                Ok(a) => Some(a),
+            .map(|&xv| match set(sc, &x.path, xv).and_then(|s| set(&s, &y.path, yv)).and_then(|s| linearize(&s)) {
+                Ok(m) => Some(m),
                 Err(e) => {
                     if failures.len() < 10 {
                         failures.push(format!("{} = {xv}, {} = {yv}: {e}", x.path, y.path));
@@ -183,6 +231,8 @@ pub fn map(sc: &Scenario, x: &Axis, y: &Axis) -> Result<StabilityMap, String> {
                 }
             })
             .collect();
+        let row: Vec<Option<f64>> = models.iter().map(|m| m.as_ref().map(|m| m.spectral_abscissa)).collect();
+        least_damped_hz.push(models.iter().map(|m| m.as_ref().map(|m| m.least_damped_hz)).collect());
         // The first change of sign along the row, bisected between its two cells (the abscissa
         // is a slow mode's until the unstable one overtakes it: not linear between cells).
         let cross = row.windows(2).zip(x.values.windows(2)).find_map(|(a, xs)| match (a[0], a[1]) {
@@ -195,7 +245,7 @@ pub fn map(sc: &Scenario, x: &Axis, y: &Axis) -> Result<StabilityMap, String> {
         abscissa.push(row);
         boundary_x.push(cross);
     }
-    Ok(StabilityMap { x: x.clone(), y: y.clone(), abscissa, boundary_x, failures })
+    Ok(StabilityMap { x: x.clone(), y: y.clone(), abscissa, least_damped_hz, boundary_x, failures })
 }
 
 /// The x of the boundary at `y` between `lo` (stable) and `hi` (unstable), by bisection on the
