@@ -5,9 +5,10 @@
 // changes the plot and shows the words of the final run; Back and Forward inside a lesson; a
 // keyboard-only lesson; a link's refused value; the drag preview's rate; the time from a control
 // to the new plot against the native run of the same scenario (medians per lesson printed); axe-core
-// finds no serious violation before and after a run.
+// finds no serious violation before and after a run; the battery lesson's drive-train storage block
+// against the native trace.
 // Usage: node tests/e2e/lessons.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR [path of aes-sim]
-import { mkdirSync, writeFileSync, existsSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync, existsSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { assert, axeFindings, checker, launch, openPage } from './lib.mjs';
 
@@ -56,6 +57,26 @@ async function drag(p, sel) {
   await p.mouse.up();
 }
 const explainedText = (p) => p.evaluate(() => window.__lessonWords());
+
+// The drive train's storage blocks (a run with storage): the charge and power each bus's block
+// shows are the native run's trace at the picture's time, to the digits printed (the trace records
+// the two buses' sum of power and their mean charge; each block shows half and the mean), and the
+// text alternative says the same.
+async function storageBlockAgrees(p) {
+  await p.waitForFunction(() => window.__liveViews.drawn.train && window.__liveViews.drawn.train.branches, null, { timeout: 10000 });
+  const { t, drawn, text } = await p.evaluate(() => { const L = window.__liveViews; L.pause(); L.seek(L.t); L.text.textContent = L.describe(); return { t: L.drawn.t, drawn: L.drawn.train.branches, text: document.getElementById('live-text').textContent }; });
+  const file = `${shots}/lesson-scenario.json`, csv = `${shots}/lesson-trace.csv`;
+  writeFileSync(file, await p.evaluate(() => window.__scenarioText()));
+  execFileSync(native, ['run', file, '--out', csv], { stdio: ['ignore', 'ignore', 'inherit'] });
+  const [head, ...rows] = readFileSync(csv, 'utf8').trim().split('\n').map((l) => l.split(','));
+  const col = (n) => head.indexOf(n);
+  const row = rows.reduce((a, b) => (Math.abs(Number(b[col('t_s')]) - t) < Math.abs(Number(a[col('t_s')]) - t) ? b : a));
+  const soc = `${(100 * Number(row[col('storage_soc')])).toFixed(1)} %`, mw = `${(Math.abs(Number(row[col('storage_power_w')])) / 2e6).toFixed(1)} MW`;
+  assert(drawn.storage_soc_text === soc, `at ${t} s the storage block shows ${drawn.storage_soc_text} charged, the native trace ${soc}`);
+  assert(drawn.storage_text.endsWith(mw), `at ${t} s the storage block shows "${drawn.storage_text}", the native trace ${mw} on each bus`);
+  assert(text.includes(`storage on each bus ${soc} charged, `) && new RegExp(`storage on each bus [^;]* ${mw}`).test(text), `the text alternative: ${text}`);
+  console.log(`     battery at ${t.toFixed(1)} s: each bus's storage block ${soc} charged, ${drawn.storage_text}, as the native trace`);
+}
 
 for (const [w, h] of SIZES) {
   await check(`at ${w}x${h}: every lesson opens alive, fits one screen, and every control key-stepped and every slider dragged reruns in place (screenshots)`, async () => {
@@ -133,6 +154,8 @@ for (const [w, h] of SIZES) {
             assert(entries <= series / 2 + 1, `${entries} legend entries for ${series} lines`);
           }
         }
+        // The battery lesson after its steps has a battery: the drive train's storage branches.
+        if (lesson.name === 'battery') await p.screenshot({ path: `${shots}/lesson-battery-storage-${w}x${h}.png`, fullPage: w < 600 });
       }
     } catch (e) { throw new Error(`${where}: ${e.message}`); }
     await ctx.close();
@@ -368,15 +391,17 @@ await check('a lesson link with non-default values opens to the same numbers', a
 await check('one value per lesson: the page says the words the native claim check gives (aes-sim lesson)', async () => {
   assert(existsSync(native), `no native ${native}`);
   const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 } });
-  const VALUES = { power: 'commands.0.speed_kn=20', waves: 'sea.sea_state=4', turn: 'commands.1.heading_deg=45', braking: 'plant.dc_link.brake_resistor_ohm=0', bus: 'controllers.field.kp=0.001', sign: 'seakeeping.stern_motion=thesis_eq_2_57' };
+  const VALUES = { power: 'commands.0.speed_kn=20', waves: 'sea.sea_state=4', turn: 'commands.1.heading_deg=45', braking: 'plant.dc_link.brake_resistor_ohm=0', bus: 'controllers.field.kp=0.001', sign: 'seakeeping.stern_motion=thesis_eq_2_57', battery: 'plant.storage.energy_j=50000000' };
   for (const [name, value] of Object.entries(VALUES)) {
     const p = await openPage(ctx, `${base}#lesson=${name}&${value}`, base, errors);
     await idle(p);
     await p.click('#lesson-skip');
     await p.waitForFunction(() => document.querySelector('#lesson-observe .lesson-explain'), null, { timeout: 60000 });
+    await idle(p);
     const page = await p.textContent('#lesson-observe .lesson-explain');
     const words = execFileSync(native, ['lesson', name, '--value', value], { encoding: 'utf8' }).split('\n')[1];
     assert(page === words, `${name} ${value}:\n page:   ${page}\n native: ${words}`);
+    if (name === 'battery') await storageBlockAgrees(p);
     await p.close();
   }
   await ctx.close();

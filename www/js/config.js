@@ -251,7 +251,7 @@ export const LIVE = {
   colors: {
     block: '#ffffff', blockEdge: '#4a4a4a', warn: '#fde2e1', warnEdge: '#b03a2e', text: '#1b1b1b', muted: '#4a4a4a',
     flow: '#0b5cad', back: '#a04000', hull: '#5d6d7e', hullEdge: '#1b1b1b', water: '#2e86c1', sky: '#f4f8fb',
-    disc: '#1b1b1b', discOut: '#b03a2e', track: '#ffffff', ship: '#f8f9f9', rudder: '#a04000', waveArrow: '#0e6251',
+    disc: '#1b1b1b', discOut: '#b03a2e', gauge: '#1e7b3c', track: '#ffffff', ship: '#f8f9f9', rudder: '#a04000', waveArrow: '#0e6251',
     crest: [214, 234, 248], trough: [21, 67, 96],
   },
 };

@@ -9,7 +9,7 @@
 import init, { Sea, hullProfile } from '../pkg/aes_web.js';
 import { LIVE } from './config.js';
 import { el } from './dom.js';
-import { TrainView } from './live/drivetrain.js';
+import { TrainView, storageText } from './live/drivetrain.js';
 import { PlanView } from './live/plan.js';
 import { fixed, hubText, mw, pct, rowAt, signed } from './live/shared.js';
 import { SternView } from './live/stern.js';
@@ -97,6 +97,9 @@ export class LiveViews {
     this.pause();
     this.k = constants;
     this.from = scenario.sea.kind === 'calm' ? null : scenario.sea.from_deg;
+    // The drive train's branches off the buses: the parts the scenario has (none by default).
+    const st = scenario.plant.storage || {}, ld = scenario.plant.loads || {};
+    this.parts = { storage: st.energy_j > 0, shipService: ld.ship_service_w > 0 || ld.ship_service_step_to_w > 0, pulsed: ld.pulse_power_w > 0 };
     const w = constants.warnings;
     this.note.textContent = `Both plants draw the trace's figures (it records sums and means over machines; the shafts' speeds are each shaft's own). Block outlines turn red with a word when a limit is reached (the summary's health checks, which add how long): turbine stalled below ${w.turbine_min_running_pu} pu, overspeed above ${w.turbine_overspeed_pu} pu, bus voltage outside ${w.bus_voltage_low_pu} to ${+w.bus_voltage_high_pu.toPrecision(6)} pu, motor at its ${w.motor_power_limit_pu} pu rating, brake resistor on. What a block keeps is its stage's share in Table 5.7's chain (above 100 % it reads out/in: in a transient the stage is giving up energy its rotors or capacitors stored, which is not an efficiency): an inverter's is the whole power electronics (rectifier, stator resistance, notching, inverter); the ship's passes 100 % only while it slows, its momentum adding to the propellers' work. Arrow width follows the power; dashes move with it${reducedMotion.matches ? ' (held still: your system asks for reduced motion)' : ''}.`;
     await loadWasm();
@@ -247,6 +250,10 @@ export class LiveViews {
       `motors ${mw(v('p_motor_w') / 2)} each (${v('im_power_pu').toFixed(2)} pu)`, `propellers ${v('prop_rpm_1').toFixed(0)} and ${v('prop_rpm_2').toFixed(0)} rpm`,
       `ship ${v('ship_speed_kn').toFixed(1)} kn, heading ${fixed(v('heading_deg'), 0)}°, rudder ${v('rudder_deg').toFixed(1)}°${v('rudder_deg') > 0.05 ? ' (to port)' : v('rudder_deg') < -0.05 ? ' (to starboard)' : ''}`];
     if (v('brake_power_w') > 0) parts.push(`brake resistors ${mw(v('brake_power_w'))}`);
+    // Each bus's share, as the picture draws it (the trace records the sums and the mean charge).
+    if (this.parts.storage) parts.push(`storage on each bus ${pct(v('storage_soc'))} charged, ${storageText(v('storage_power_w') / 2)}`);
+    if (this.parts.shipService) parts.push(`ship service load ${mw(v('ship_service_w') / 2)} on each bus`);
+    if (this.parts.pulsed) parts.push(`pulsed load ${mw(v('pulsed_load_w') / 2)} on each bus`);
     if (this.inWaves) parts.push(`wave at the stern ${signed(v('wave_stern_m'))} m, ${hubText(v('hub_depth_m'))}, h/R ${v('h_over_r').toFixed(2)} (${this.discState().text}), thrust kept ${pct(v('beta_t'))}`);
     return parts.join('; ') + '.';
   }
