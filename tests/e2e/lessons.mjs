@@ -292,7 +292,7 @@ await check('from a control to the new plot: at most 1.5 x the native run of the
   const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 } });
   const lines = [];
   let worst = 0;
-  for (const name of ['power', 'waves', 'turn', 'braking', 'bus', 'sign']) {
+  for (const name of ['power', 'waves', 'turn', 'braking', 'bus', 'engines', 'sign']) {
     const p = await openPage(ctx, `${base}#lesson=${name}`, base, errors);
     await idle(p);
     await p.click('#lesson-skip');
