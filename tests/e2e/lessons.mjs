@@ -74,7 +74,9 @@ for (const [w, h] of SIZES) {
       for (const lesson of LESSONS) {
         where = `${lesson.name}: opening`;
         await p.goto(`${base}#lesson=${lesson.name}`);
-        await p.waitForFunction(() => document.getElementById('lesson-q'), null, { timeout: 30000 });
+        // The new lesson's own question: the one before stays in the page (answered) until the
+        // worker has opened this one, which a loaded machine can delay past the hash change.
+        await p.waitForFunction(() => document.body.classList.contains('lesson-waiting') && document.getElementById('lesson-q'), null, { timeout: 30000 });
         assert(await p.$eval('#lesson-controls input, #lesson-controls select', (e) => e.disabled), `${lesson.name}: a control acts before the prediction`);
         // Alive before the answer: the default run plays in the live picture; the reason the
         // controls wait is in view.
