@@ -337,6 +337,21 @@ fn every_claim_of_every_lesson_holds_over_its_grid() {
     }
 }
 
+/// The numbers the engines lesson's story states (a constant text) are the scenario's.
+#[test]
+fn the_engines_story_states_the_scenarios_rating_and_efficiency() {
+    let l = lessons::lesson("engines").unwrap();
+    let o = lessons::open(&l, &[]).unwrap();
+    let rated = o.scenario.plant.turbine.rated_power_w;
+    let eta = o.scenario.seakeeping.turbine_rated_efficiency;
+    assert!(l.story.contains(&format!("each rated {} MW", rated / 1e6)), "{rated}: {}", l.story);
+    assert!(l.story.contains(&format!("({:.0} % of the fuel's energy)", 100.0 * eta)), "{eta}: {}", l.story);
+    assert_eq!(o.scenario.plant.online.sets, vec![1, 2, 3, 4], "the lesson's own value is all four");
+    let one = lessons::open(&l, &[("plant.online.sets", "[1]")]).unwrap();
+    assert!(one.refused.is_empty(), "{:?}", one.refused);
+    assert_eq!(one.scenario.plant.online.sets, vec![1]);
+}
+
 #[test]
 fn a_link_value_outside_a_control_is_refused_with_its_range_and_the_default_used() {
     let l = lessons::lesson("waves").unwrap();

@@ -76,9 +76,9 @@ macro_rules! for_each_signal {
             YawRateDegS, "yaw_rate_deg_s", "deg/s", "yaw rate", "Rate of turn.", |r| r.yaw_rate_deg_s();
             BrakePowerW, "brake_power_w", "W", "brake resistor power", "Power burnt in the brake resistors.",
                 |r| r.brake_power();
-            PTurbineW, "p_turbine_w", "W", "turbine power, all four", "Shaft power of the four gas turbines (Table 5.6).",
+            PTurbineW, "p_turbine_w", "W", "turbine power, the turbines online", "Shaft power of the gas turbines online (all four by default; Table 5.6).",
                 |r| r.p_turbine;
-            PGeneratorW, "p_generator_w", "W", "generator power, all four", "Electrical output of the four generators (Table 5.6).",
+            PGeneratorW, "p_generator_w", "W", "generator power, the generators online", "Electrical output of the generators online (all four by default; Table 5.6).",
                 |r| r.p_generator();
             PInverterW, "p_inverter_w", "W", "inverter power, both", "Power into the two motors (Table 5.6).",
                 |r| r.p_inverter();

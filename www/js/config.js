@@ -96,7 +96,8 @@ export const studyTitle = (name) => (STUDIES[name] && STUDIES[name].title) || na
 // units go on a left and a right axis, and so does a series with `axis: 'right'` (a small angle
 // beside a large one). `sea`: only in waves. `hOverR`: the ventilation band and the levels of
 // pageConstants. `events`: markers where surface losses start. `only`: drawn when it holds.
-// `key`: a line under the plot saying what its numbers mean.
+// `key`: a line under the plot saying what its numbers mean. `asked`: drawn only where a study or
+// lesson lists it (the turbine load alone; the Lab has it in the power inventory).
 // Colours: distinct and >= 3:1 against white; a reference (order) is grey and dashed.
 const REF = { color: '#6b6b6b', dash: [6, 4] };
 export const PLOTS = [
@@ -113,6 +114,7 @@ export const PLOTS = [
   { id: 'pitch', title: 'Pitch and roll', sea: true, series: [{ signal: 'pitch_deg', label: 'pitch (bow down)', color: '#a04000' }, { signal: 'roll_deg', label: 'roll (starboard down)', color: '#5b2c6f', dash: [6, 3] }] },
   { id: 'force', title: 'Second-order wave force', sea: true, prefix: 'k', key: 'The slowly varying force of wave groups (Newman\'s approximation of the mean drift force, Salvesen\'s method): it peaks when a group passes, at any time, the start too. Below zero is physics: waves from abaft the beam push the ship on (negative added resistance), as in a turn out of head seas.', series: [{ signal: 'added_resistance_n', color: '#b03a2e' }, { signal: 'drift_force_n', label: 'drift force (to starboard)', color: '#0b5cad', dash: [6, 3] }] },
   { id: 'fuel', title: 'Fuel power, the turbines online', prefix: 'M', series: [{ signal: 'fuel_power_w', color: '#6e2c00' }] },
+  { id: 'load', title: 'Turbine load, the turbines online', prefix: 'M', asked: true, series: [{ signal: 'p_turbine_w', color: '#1e7b3c' }] },
   { id: 'storage', title: 'Storage power, both buses (negative: charging)', prefix: 'M', series: [{ signal: 'storage_power_w', color: '#117a65' }], only: (c) => c.storage_power_w.some((v) => v !== 0) },
   { id: 'brake', title: 'Brake resistor power', prefix: 'M', series: [{ signal: 'brake_power_w', color: '#b03a2e' }], only: (c) => c.brake_power_w.some((v) => v > 0) },
 ];

@@ -11,7 +11,7 @@ import { LIVE } from './config.js';
 import { el } from './dom.js';
 import { TrainView, storageText } from './live/drivetrain.js';
 import { PlanView } from './live/plan.js';
-import { fixed, hubText, mw, pct, rowAt, signed } from './live/shared.js';
+import { fixed, hubText, mw, pct, rowAt, setsText, signed, steadySets } from './live/shared.js';
 import { SternView } from './live/stern.js';
 
 // The page's own copy of the wasm, for pictures only (the worker runs the simulations).
@@ -100,6 +100,7 @@ export class LiveViews {
     // The drive train's branches off the buses: the parts the scenario has (none by default).
     const st = scenario.plant.storage || {}, ld = scenario.plant.loads || {};
     this.parts = { storage: st.energy_j > 0, shipService: ld.ship_service_w > 0 || ld.ship_service_step_to_w > 0, pulsed: ld.pulse_power_w > 0 };
+    this.online = steadySets(scenario);
     const w = constants.warnings;
     this.note.textContent = `Both plants draw the trace's figures (it records sums and means over machines; the shafts' speeds are each shaft's own). Block outlines turn red with a word when a limit is reached (the summary's health checks, which add how long): turbine stalled below ${w.turbine_min_running_pu} pu, overspeed above ${w.turbine_overspeed_pu} pu, bus voltage outside ${w.bus_voltage_low_pu} to ${+w.bus_voltage_high_pu.toPrecision(6)} pu, motor at its ${w.motor_power_limit_pu} pu rating, brake resistor on. What a block keeps is its stage's share in Table 5.7's chain (above 100 % it reads out/in: in a transient the stage is giving up energy its rotors or capacitors stored, which is not an efficiency): an inverter's is the whole power electronics (rectifier, stator resistance, notching, inverter); the ship's passes 100 % only while it slows, its momentum adding to the propellers' work. Arrow width follows the power; dashes move with it${reducedMotion.matches ? ' (held still: your system asks for reduced motion)' : ''}.`;
     await loadWasm();
@@ -245,8 +246,9 @@ export class LiveViews {
   // The live figures as text (the views' text alternative).
   describe() {
     const v = (n) => this.v(n), w = this.k.warnings;
-    const parts = [`At ${this.t.toFixed(1)} s: turbines ${mw(v('p_turbine_w') / 4)} each at ${v('turbine_speed_pu').toFixed(3)} pu speed${v('turbine_speed_pu') > w.turbine_overspeed_pu ? ' (OVERSPEED)' : v('turbine_speed_pu') < w.turbine_min_running_pu ? ' (STALLED)' : ''}`,
-      `generators ${mw(v('p_generator_w') / 4)} each`, `buses at ${v('bus_voltage_pu').toFixed(3)} pu (${(v('bus_voltage_v') / 1e3).toFixed(2)} kV)`,
+    const sets = setsText(this.online), running = sets.words ? ` (${sets.words} running, the others offline)` : '';
+    const parts = [`At ${this.t.toFixed(1)} s: turbines${running} ${mw(v('p_turbine_w') / sets.n)} each at ${v('turbine_speed_pu').toFixed(3)} pu speed${v('turbine_speed_pu') > w.turbine_overspeed_pu ? ' (OVERSPEED)' : v('turbine_speed_pu') < w.turbine_min_running_pu ? ' (STALLED)' : ''}`,
+      `generators ${mw(v('p_generator_w') / sets.n)} each`, `buses at ${v('bus_voltage_pu').toFixed(3)} pu (${(v('bus_voltage_v') / 1e3).toFixed(2)} kV)`,
       `motors ${mw(v('p_motor_w') / 2)} each (${v('im_power_pu').toFixed(2)} pu)`, `propellers ${v('prop_rpm_1').toFixed(0)} and ${v('prop_rpm_2').toFixed(0)} rpm`,
       `ship ${v('ship_speed_kn').toFixed(1)} kn, heading ${fixed(v('heading_deg'), 0)}°, rudder ${v('rudder_deg').toFixed(1)}°${v('rudder_deg') > 0.05 ? ' (to port)' : v('rudder_deg') < -0.05 ? ' (to starboard)' : ''}`];
     if (v('brake_power_w') > 0) parts.push(`brake resistors ${mw(v('brake_power_w'))}`);

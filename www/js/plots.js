@@ -420,7 +420,7 @@ export function drawRun(box, cols, signals, constants, scenario, { order = DEFAU
     const from = scenario.sea.kind === 'calm' ? '' : `; arrow: waves from ${scenario.sea.from_deg}°`;
     box.canvas(`Ship track [${unit}] (north up; marks every ${TRACK_MARK_S} ${signals.meta('t_s').unit}${from})`, 'Ship track seen from above', (cv) => drawTrack(cv, cols, unit, scenario, kept), more);
   };
-  const specs = PLOTS.filter((spec) => !(spec.only && !spec.only(cols)) && !(spec.sea && !inWaves));
+  const specs = PLOTS.filter((spec) => !(spec.only && !spec.only(cols)) && !(spec.sea && !inWaves) && !(spec.asked && !shown(spec.id)));
   for (const id of order) {
     if (id === 'track') { track(false); continue; }
     const spec = specs.find((s) => s.id === id);

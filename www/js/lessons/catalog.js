@@ -5,5 +5,7 @@ export const GLOSSARY = [
   ['pu', '"per unit": a value as a fraction of its rating (1 pu is the rated voltage, speed or power)'],
   ['sea state', 'a number for how rough the sea is (2: smooth, 3: moderate, 6: very rough)'],
   ['surface loss', 'a propeller drawing air or breaking the surface: it loses thrust and its motor races'],
+  ['set', 'a gas turbine and the generator it turns; a set running burns fuel and shares the load with the others running'],
+  ['fuel power', 'the fuel burnt each second times its heating value: the power the fuel brings, of which a gas turbine turns about 37 % into shaft power at its rating and less below it'],
   ['gain', 'how strongly a controller reacts to an error: proportional to the error now, or integral to the error summed over time'],
 ];

@@ -3,7 +3,7 @@
 // number drawn is a trace value at the playback time; the warning levels and the motors' rating
 // come from the wasm's pageConstants. No physics here.
 import { LIVE } from '../config.js';
-import { C, View, mw, pct } from './shared.js';
+import { C, View, mw, pct, setsText } from './shared.js';
 
 // What a stage keeps of the power through it: out/in flowing forward, in/out flowing back (a
 // braking motor passes the shaft's power to the bus); none while the flow turns round.
@@ -101,7 +101,9 @@ export class TrainView extends View {
     const short = (down ? lane : bs) < 100; // narrow blocks: short names
     // One type size for every block: four lines in the smallest (a block with more shrinks alone).
     const fsMax = Math.max(10, Math.min(big > 1 ? 20 : 14, Math.floor(((down ? bs : bl) - 6) / 4) - 2));
-    const pT = v('p_turbine_w') / 4, pG = v('p_generator_w') / 4, pI = v('p_inverter_w') / 2, pM = v('p_motor_w') / 2, pS = v('p_ship_w');
+    // The trace's sums shared by the sets running (an offline set: no power, no arrow).
+    const on = L.online || [true, true, true, true], n = setsText(L.online).n;
+    const pT = v('p_turbine_w') / n, pG = v('p_generator_w') / n, pI = v('p_inverter_w') / 2, pM = v('p_motor_w') / 2, pS = v('p_ship_w');
     const setRating = k.motor_rated_power_w / 2, plantRating = k.motor_rated_power_w;
     const speedPu = v('turbine_speed_pu'), busPu = v('bus_voltage_pu'), imPu = v('im_power_pu'), brake = v('brake_power_w');
     const warn = {
@@ -116,7 +118,7 @@ export class TrainView extends View {
     const busIn = v('p_generator_w') + (o ? v('storage_power_w') - v('ship_service_w') - v('pulsed_load_w') : 0);
     const setLn = (s) => s + 0.5, plantLn = (p) => 2 * p + 1;
     // Arrows first, blocks over their ends.
-    for (let s = 0; s < 4; s++) { link(0, setLn(s), pT, setRating); link(1, setLn(s), pG, setRating); }
+    for (let s = 0; s < 4; s++) if (on[s]) { link(0, setLn(s), pT, setRating); link(1, setLn(s), pG, setRating); }
     for (let p = 0; p < 2; p++) {
       link(2, plantLn(p), pI, plantRating, 3 + o);
       link(3 + o, plantLn(p), pI, plantRating);
@@ -127,6 +129,11 @@ export class TrainView extends View {
     }
     if (o) d.branches = this.branches(L, g, { at, down, bs, lane, fsMax, short, plantLn, plantRating });
     for (let s = 0; s < 4; s++) {
+      if (!on[s]) {
+        box(0, setLn(s), bl, [`${short ? 'GT' : 'Gas turbine'} ${s + 1}`, 'offline'], null);
+        box(1, setLn(s), bl, [`${short ? 'Gen.' : 'Generator'} ${s + 1}`, 'offline'], null);
+        continue;
+      }
       d.turbineEdge = box(0, setLn(s), bl, [`${short ? 'GT' : 'Gas turbine'} ${s + 1}`, mw(pT), `${speedPu.toFixed(3)} pu`], warn.turbine);
       // A stalled set: the generator turns with its turbine, far below its frequency; what it
       // keeps of a stalled turbine's power says nothing.
@@ -135,7 +142,8 @@ export class TrainView extends View {
     }
     const wide = Math.min(2 * lane * 0.9, bl * 1.6);
     for (let p = 0; p < 2; p++) {
-      box(2, plantLn(p), wide, [`DC bus ${p + 1}`, `${busPu.toFixed(3)} pu`, `${(v('bus_voltage_v') / 1e3).toFixed(2)} kV`, ...(warn.brake ? [`brake ${mw(brake / 2)}`] : [])], warn.bus || warn.brake);
+      // With a set offline the two buses are tied (plant.online): every set running feeds both.
+      box(2, plantLn(p), wide, [`DC bus ${p + 1}`, `${busPu.toFixed(3)} pu`, `${(v('bus_voltage_v') / 1e3).toFixed(2)} kV`, ...(n < 4 ? ['tied to the other'] : []), ...(warn.brake ? [`brake ${mw(brake / 2)}`] : [])], warn.bus || warn.brake);
       box(3 + o, plantLn(p), wide, [`${short ? 'Inv.' : 'Inverter'} ${p + 1}`, mw(pI), keeps(v('p_inverter_w'), busIn), ...(short ? [] : [`${v('motor_voltage_pu').toFixed(2)} pu V`])], null);
       box(4 + o, plantLn(p), wide, [`Motor ${p + 1}`, mw(pM), `${imPu.toFixed(2)} pu`, keeps(v('p_motor_w'), v('p_inverter_w'))], warn.motor);
       box(5 + o, plantLn(p), wide, [`${short ? 'Prop.' : 'Propeller'} ${p + 1}`, `${v(`prop_rpm_${p + 1}`).toFixed(0)} rpm`, `β_T ${v('beta_t').toFixed(2)}`], null);

@@ -43,3 +43,19 @@ export class View {
   }
   ready() { return this.g && this.w > 0 && !this.figure.hidden; }
 }
+
+// The sets running (set k+1 at index k) when they stay the same through the run: the scenario's
+// plant.online.sets (all four by default) and no order starting or stopping one. The trace
+// records the sum over the sets running, which share the load evenly. null when an order changes
+// them during the run: the trace does not say which run when, and the pictures split over four.
+export function steadySets(scenario) {
+  if ((scenario.commands || []).some((c) => c.online_sets)) return null;
+  const sets = (scenario.plant && scenario.plant.online && scenario.plant.online.sets) || [1, 2, 3, 4];
+  return [0, 1, 2, 3].map((k) => sets.includes(k + 1));
+}
+// The sets running as words and how many ("sets 1 and 3", 2); all four (or unknown): null words.
+export function setsText(on) {
+  const list = on ? [0, 1, 2, 3].filter((k) => on[k]).map((k) => k + 1) : [1, 2, 3, 4];
+  const words = list.length === 4 ? null : list.length === 1 ? `set ${list[0]}` : `sets ${list.slice(0, -1).join(', ')} and ${list[list.length - 1]}`;
+  return { words, n: list.length };
+}

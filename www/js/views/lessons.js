@@ -19,6 +19,14 @@ let opening = 0; // the latest open: an older one still waiting for the worker g
 let settledAt = 0; // when the control was released (the latency runs from there, waits included)
 
 const getPath = (o, path) => path.split('.').reduce((x, k) => (x == null ? undefined : x[k]), o);
+// A control's value is text (a link's: "2.65", "diode", "[1,3]"); the scenario keeps the type it
+// has there: a number, or a list or object as JSON (the sets running, `plant.online.sets`). Text
+// put where a list belongs would make the run refuse the scenario.
+const typed = (was, x) => {
+  if (typeof was === 'number') return Number(x);
+  if (was !== null && typeof was === 'object' && typeof x === 'string') return JSON.parse(x);
+  return x;
+};
 const labHref = (form) => linkHash(form.name, form.preset(), form.scenario);
 
 // The live views follow the plots in the lesson's Tab order (controls, plot, live picture); the
@@ -170,8 +178,7 @@ registerView({
         for (const c of def.controls) {
           if (path !== null && c.path !== path) continue;
           const x = values[c.path];
-          // A toggle's value is text (a link's); the scenario keeps a number where it has one.
-          for (const p of [c.path, ...c.with_paths]) setPath(form.scenario, p, typeof getPath(form.scenario, p) === 'number' ? Number(x) : x);
+          for (const p of [c.path, ...c.with_paths]) setPath(form.scenario, p, typed(getPath(form.scenario, p), x));
           if (c.kind === 'toggle') for (const [q, y] of c.settings[c.values.indexOf(String(x))] || []) setPath(form.scenario, q, y);
         }
         // A settled value is a step in the history (Back returns to the one before).
