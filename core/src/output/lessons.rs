@@ -1300,14 +1300,17 @@ fn battery(b: &mut Book, sc: &serde_json::Value, energy_j: f64, power_w: f64, en
             ),
             &[s0.0, smin.0, s1.0],
         );
-        let edge = floor + crate::plant::storage::SOC_TAPER;
+        // Below this charge the controller gives less and less (its taper, at least a second of its
+        // rated power wide), handing the swings back to the turbines.
+        let edge = (floor + crate::plant::storage::taper_j(energy_j, power_w) / energy_j).min(1.0);
         let lv =
             b.push(Fact::Level { name: "lowest charge where the controller starts to give less [-]", value: edge });
         if b.compare((smin.0, smin.1), (lv, edge), 0.0) != Relation::More {
             let i = b.last();
             b.say(
                 format!(
-                    "It reached its lowest allowed charge ({} %): there the controller stops giving, and the turbines take the swings until the battery has charged again.",
+                    "Below {} % the controller gives less and less, down to nothing at its lowest allowed charge ({} %), and the turbines take back the swings the battery no longer takes: here the charge got down there.",
+                    f(100.0 * edge, 0),
                     f(100.0 * floor, 0)
                 ),
                 &[smin.0, lv, i],
@@ -1327,7 +1330,7 @@ fn battery(b: &mut Book, sc: &serde_json::Value, energy_j: f64, power_w: f64, en
     let measure = Measure::Stat { signals: vec!["turbine_speed_pu"], stat: Stat::Max, from_s: 0.0 };
     // Each promise measured over the lesson's grid (the turbines' highest speed, 40 s runs):
     // none to 200 MJ at 10 MW 1.138 -> 1.001; 2.5 or 5 MW to 10 MW at least 0.007 lower; 25 MJ to
-    // 200 MJ at 10 MW 1.039 -> 1.001; 10 MW to 2.5 MW at 50 MJ or more at least 0.026 higher.
+    // 200 MJ at 10 MW 1.008 -> 1.001; 10 MW to 2.5 MW at 50 MJ or more at least 0.026 higher.
     let next = if !with {
         Next {
             text: "Fit the study's battery, 200 MJ at 10 MW on each bus: the turbines' highest speed falls.".into(),
@@ -1344,7 +1347,7 @@ fn battery(b: &mut Book, sc: &serde_json::Value, energy_j: f64, power_w: f64, en
         Next {
             text: "Choose 200 MJ: with more energy the battery keeps taking the swings, and the turbines' highest speed falls.".into(),
             set: vec![(BATTERY_J, "200000000".into())],
-            promise: Promise { measure, relation: Relation::Less, by: 0.02 },
+            promise: Promise { measure, relation: Relation::Less, by: 0.005 },
         }
     } else {
         Next {

@@ -53,6 +53,12 @@ pub const SOC_TAPER: f64 = 0.02;
 /// then eats the window the storage levels with).
 pub const HANDOVER_S: f64 = 1.0;
 
+/// Width of the taper at each charge limit [J]: the wider of [`SOC_TAPER`] of the capacity and
+/// [`HANDOVER_S`] of the rated power.
+pub fn taper_j(capacity_j: f64, power_w: f64) -> f64 {
+    (SOC_TAPER * capacity_j).max(power_w * HANDOVER_S)
+}
+
 /// Time constant of the levelling filter's anti-windup [s]: how fast the turbines take over what
 /// the storage's limits cut.
 pub const ANTI_WINDUP_S: f64 = 1.0;
@@ -278,7 +284,7 @@ impl Storage {
     fn reference_parts_w(&self, v_bus: f64, p_load: f64, p_lp: f64, e: f64) -> (f64, f64) {
         let raw = (p_load - p_lp) + self.droop_w_per_v * (self.v_ref - v_bus) + (e - self.e_set) / self.soc_return_s;
         let p = raw.clamp(-self.power_w, self.power_w);
-        let taper = (SOC_TAPER * self.capacity_j).max(self.power_w * HANDOVER_S);
+        let taper = taper_j(self.capacity_j, self.power_w);
         let p = if p > 0.0 {
             p * ((e - self.e_min) / taper).clamp(0.0, 1.0)
         } else {
