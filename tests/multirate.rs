@@ -208,7 +208,7 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
                 // The shipped method with the hull at 10 ms. Measured (W1 / as printed's first 60
                 // s): rpm max 0.062 / 0.142, mean 6.3e-4 / 1.0e-2, mean motor power 1.1e-4 /
                 // 3.3e-4, largest difference 2.9e-3 / 3.2e-3 of the peak, min h/R 8.9e-7 / 1.0e-2,
-                // bus 3.0e-3 / 2.6e-2 pu, ship speed 3.2e-3 / 2.7e-3 kn, residual 1.3e-7 / 5.9e-7
+                // bus 3.0e-3 / 2.6e-2 pu, ship speed 3.2e-3 / 2.7e-3 kn, residual 7.7e-8 / 4.4e-7
                 // from the 1 ms run's. As printed, h/R's minimum lies on the last row (60 s), still
                 // falling, where the 1 ms run is 0.04 m further along (the ship speeds 2.7e-3 kn
                 // apart after the ventilations): the phase of a heave of 8 m moves the hub by 2 cm.
@@ -222,7 +222,7 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
                 assert!(d.min_h_over_r < tol(2e-6, 1.5e-2), "{name} x 2: min h/R {}", d.min_h_over_r);
                 assert!(d.speed_kn_max < tol(5e-3, 4e-3), "{name} x 2: ship speed {} kn", d.speed_kn_max);
                 let residual = (d.residual_run - d.residual_reference).abs();
-                assert!(residual < tol(3e-7, 7e-7), "{name} x 2: residual {residual}");
+                assert!(residual < tol(1.5e-7, 7e-7), "{name} x 2: residual {residual}");
             }
             if (dt, method, sub) != (0.005, Midpoint, 1) {
                 continue;
@@ -230,8 +230,8 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
             // The shipped step. Measured (W1 / as printed's first 60 s): rpm max 0.042 / 0.142, rpm
             // mean 2.7e-3 / 1.0e-2, mean motor power 4.6e-5 / 3.0e-4, largest motor power
             // difference 2.0e-3 / 3.2e-3 of the peak, min h/R 8.2e-6 / 1.0e-2 (as above), bus
-            // voltage 1.5e-2 / 3.2e-2 pu, ship speed 1.1e-3 / 2.7e-3 kn, energy residual 4.9e-7 /
-            // 4.8e-7 from the 1 ms run's; RK4 at 5 ms gives the same but for the bus, 2.5e-3 /
+            // voltage 1.5e-2 / 3.2e-2 pu, ship speed 1.1e-3 / 2.7e-3 kn, energy residual 7.7e-8 /
+            // 4.4e-7 from the 1 ms run's (4.9e-7 / 4.8e-7 before the side force's work was booked); RK4 at 5 ms gives the same but for the bus, 2.5e-3 /
             // 1.5e-2 pu. The bus: in W1, as both shafts recover from ventilating at 72-73 s, the
             // midpoint run's throttle steps 0.01 away from the 1 ms run's and holds 0.0075 above it
             // from 74.5 to 78 s (0.505 against 0.497), so the turbines run 1.4 % faster at 78 s and
@@ -246,7 +246,7 @@ fn wave_presets_step_of_5_ms_matches_1_ms() {
             assert!(d.bus_pu_max < tol(2e-2, 4e-2), "{name}: bus {} pu", d.bus_pu_max);
             assert!(d.speed_kn_max < tol(2e-3, 3e-3), "{name}: ship speed {} kn", d.speed_kn_max);
             let residual = (d.residual_run - d.residual_reference).abs();
-            assert!(residual < tol(6e-7, 6e-7), "{name}: residual {residual}");
+            assert!(residual < tol(1.5e-7, 6e-7), "{name}: residual {residual}");
         }
     }
 }

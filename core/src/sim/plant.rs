@@ -182,7 +182,8 @@ pub enum Energy {
     /// Thrust power, sum of T_p u.
     Thrust,
     /// Work against the hull's resistance and the rudder's drag in surge (R_sp u in the surge model,
-    /// Table 5.6 "ship").
+    /// Table 5.6 "ship"), and against the side force and yaw moment in sway and yaw (a turn's and
+    /// the waves' side work; 0 on a straight course in calm water).
     Ship,
     /// Energy dissipated in the brake resistors.
     Brake,
@@ -745,6 +746,9 @@ impl Plant {
         e: &mut [f64; N_ENERGY],
     ) -> f64 {
         let (u, v, r) = (x[SURGE], x[SWAY], x[YAW_RATE]);
+        // Power of the side force and yaw moment (hull, rudder, waves) into sway and yaw [W]: their
+        // kinetic energy is in `stored_energy`, so the books need the work that made it.
+        let mut side_power = 0.0;
         let resistance = match &self.hull {
             Hull::Surge => {
                 dx[SURGE] = self.surge.acceleration(thrust + h.sea.wave_fx - self.extra_resistance, u); // eq. 2.16
@@ -769,10 +773,11 @@ impl Plant {
                 // resistance is booked with the ship's resistance in the energy accounts.
                 let x_hull = x_hull - self.extra_resistance;
                 dx[SURGE] = (thrust + x_hull + fx_r + h.sea.wave_fx) / self.surge_mass; // eq. 2.20, first row
-                let (vd, rd) =
-                    abkowitz.sway_yaw_acceleration(f.y + fy_r + h.sea.wave_fy, f.n - x_p * fy_r + h.sea.wave_mz); // eq. 2.24: - x_p F_y + M_add
+                let (y, n) = (f.y + fy_r + h.sea.wave_fy, f.n - x_p * fy_r + h.sea.wave_mz); // eq. 2.24: - x_p F_y + M_add
+                let (vd, rd) = abkowitz.sway_yaw_acceleration(y, n);
                 dx[SWAY] = vd;
                 dx[YAW_RATE] = rd;
+                side_power = y * v + n * r;
                 -(x_hull + fx_r + h.sea.wave_fx)
             }
             Hull::Own { model, .. } => {
@@ -782,9 +787,11 @@ impl Plant {
                     model.rudders.forces(self.rho, v, r, self.surge.advance_speed(u), each, h.rudder);
                 let x_hull = -self.surge.resistance(u) + f.x - self.extra_resistance;
                 dx[SURGE] = (thrust + x_hull + fx_r + h.sea.wave_fx) / self.surge_mass;
-                let (vd, rd) = model.sway_yaw_acceleration(f.y + fy_r + h.sea.wave_fy, f.n + n_r + h.sea.wave_mz);
+                let (y, n) = (f.y + fy_r + h.sea.wave_fy, f.n + n_r + h.sea.wave_mz);
+                let (vd, rd) = model.sway_yaw_acceleration(y, n);
                 dx[SWAY] = vd;
                 dx[YAW_RATE] = rd;
+                side_power = y * v + n * r;
                 -(x_hull + fx_r + h.sea.wave_fx)
             }
         };
@@ -792,7 +799,7 @@ impl Plant {
         dx[X_POS] = u * cp - v * sp; // eq. 2.25
         dx[Y_POS] = u * sp + v * cp;
         dx[HEADING] = r;
-        e[Energy::Ship as usize] = resistance * u;
+        e[Energy::Ship as usize] = resistance * u - side_power;
         resistance
     }
 
