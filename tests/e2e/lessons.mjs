@@ -33,8 +33,11 @@ const inView = (r) => r.top >= -1 && r.top < r.vh - 10;
 // The live view the lesson shows (the one figure of #live that is drawn).
 const liveBox = (p) => p.$$eval('#live figure.live-view', (fs) => fs.filter((f) => f.getClientRects().length).map((f) => { const r = f.getBoundingClientRect(); return { top: r.top + window.scrollY, bottom: r.bottom + window.scrollY }; }));
 const latencyNow = (p) => p.evaluate(() => window.__lessonLatencyMs);
-// A settled rerun after `before` (the latency the page measured last).
-const rerun = async (p, before) => { await p.waitForFunction((b) => window.__lessonLatencyMs !== b, before, { timeout: 60000 }); await done(p); };
+// The count of reruns that have reached the plot (a mark to wait past: two reruns can measure the
+// same latency, so the latency is no mark).
+const mark = (p) => p.evaluate(() => window.__lessonRuns || 0);
+// A settled rerun after the mark `before`.
+const rerun = async (p, before) => { await p.waitForFunction((b) => (window.__lessonRuns || 0) !== b, before, { timeout: 60000 }); await done(p); };
 const median = (xs) => { const s = [...xs].sort((a, b) => a - b); return s.length ? (s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2) : NaN; };
 
 // A key step of a control as a person does it: a slider one stop up (down at its top), a toggle
@@ -139,7 +142,7 @@ for (const [w, h] of SIZES) {
             where = `${lesson.name}: ${step.name} of ${id}`;
             await p.$eval(id, (e) => { const r = e.getBoundingClientRect(); if (r.top < 0 || r.bottom > window.innerHeight) e.scrollIntoView({ block: 'center' }); });
             const y0 = await p.evaluate(() => window.scrollY);
-            const before = await firstSeries(p), lat = await latencyNow(p);
+            const before = await firstSeries(p), lat = await mark(p);
             await step(p, id);
             await rerun(p, lat);
             (latency[lesson.name] ||= []).push(await latencyNow(p));
@@ -175,7 +178,7 @@ await check('on a phone a rerun leaves the screen where the hand is: the slider 
   await p.$eval(id, (e) => e.scrollIntoView({ block: 'center' }));
   const y0 = await p.evaluate(() => window.scrollY);
   const top0 = await p.$eval(id, (e) => e.getBoundingClientRect().top);
-  const lat = await latencyNow(p);
+  const lat = await mark(p);
   await keyStep(p, id);
   await rerun(p, lat);
   await p.waitForTimeout(300);
@@ -195,11 +198,11 @@ await check('Back and Forward inside a lesson restore its values, plot and words
   const ownLines = () => p.$eval('#plots .chart', (c) => JSON.stringify(c.uplot.data.slice(1).filter((_, i) => !/kept run/.test(c.uplot.series[i + 1].label))));
   const state = async () => ({ value: await p.inputValue('#lesson-commands-1-heading_deg'), words: await p.textContent('#lesson-observe .lesson-explain'), plot: await ownLines(), hash: await p.evaluate(() => location.hash) });
   const s0 = await state();
-  let lat = await latencyNow(p);
+  let lat = await mark(p);
   await keyStep(p, '#lesson-commands-1-heading_deg');
   await rerun(p, lat);
   const s1 = await state();
-  lat = await latencyNow(p);
+  lat = await mark(p);
   await keyStep(p, '#lesson-commands-1-heading_deg');
   await rerun(p, lat);
   const s2 = await state();
@@ -243,7 +246,7 @@ await check('a lesson by keyboard alone: arrows browse the answers without choos
   const first = await p.$eval('#lesson-controls [data-path]', (e) => e.id);
   assert((await p.evaluate(() => document.activeElement.id)) === first, `focus is on ${await p.evaluate(() => document.activeElement.id || document.activeElement.tagName)}, not the first control`);
   assert(Math.abs((await p.evaluate(() => window.scrollY)) - y0) <= 2, 'answering scrolled the page');
-  const lat = await latencyNow(p);
+  const lat = await mark(p);
   await p.keyboard.press('ArrowLeft');
   await rerun(p, lat);
   const n = await p.$$eval('#lesson-controls [data-path]', (e) => e.length);
@@ -293,7 +296,7 @@ await check('while a slider is dragged the plot follows: at least 4 preview runs
   }
   const secs = (Date.now() - t0) / 1000;
   const n = (await p.evaluate(() => window.__lessonPreviews || 0)) - n0;
-  const lat = await latencyNow(p);
+  const lat = await mark(p);
   await p.mouse.up();
   await rerun(p, lat);
   const file = `${shots}/lesson-scenario.json`;
@@ -324,7 +327,7 @@ await check('from a control to the new plot: at most 1.5 x the native run of the
     const id = await p.$eval('#lesson-controls [data-path]', (e) => `#${e.id}`);
     const ms = [], nat = [];
     for (let i = 0; i < 3; i++) {
-      const lat = await latencyNow(p);
+      const lat = await mark(p);
       await keyStep(p, id);
       await rerun(p, lat);
       ms.push(await latencyNow(p));
@@ -369,7 +372,7 @@ await check('a lesson link with non-default values opens to the same numbers', a
   await idle(p);
   await p.click('#lesson-a1');
   await done(p);
-  const lat = await latencyNow(p);
+  const lat = await mark(p);
   await keyStep(p, '#lesson-commands-1-heading_deg');
   await rerun(p, lat);
   await p.waitForFunction(() => /commands\.1\.heading_deg=/.test(location.hash), null, { timeout: 10000 });
@@ -422,7 +425,7 @@ await check('engines (issue 45): answered, the sets control stepped to two rerun
   assert((await p.inputValue(sets)) === '[1,2,3,4]', `the lesson opens with ${await p.inputValue(sets)}`);
   const fuelOf = (words) => { const m = /burns? ([\d.]+) MW of fuel power/.exec(words || ''); return m ? Number(m[1]) : NaN; };
   const four = fuelOf(await p.textContent('#lesson-observe .lesson-explain'));
-  let lat = await latencyNow(p);
+  let lat = await mark(p);
   await keyStep(p, sets);
   await rerun(p, lat);
   assert((await p.$eval(sets, (e) => e.selectedOptions[0].textContent)) === 'two', 'the step did not choose two');
@@ -438,7 +441,7 @@ await check('engines (issue 45): answered, the sets control stepped to two rerun
   assert(Number.isFinite(two) && Math.abs(last - two) <= 0.05, `the words say ${two} MW of fuel, the plot ends at ${last}`);
   assert(two < four, `two sets burn ${two} MW, four ${four} MW`);
   console.log(`     engines: fuel power at 60 s, four sets ${four} MW, two ${two} MW (native: ${fuelOf(words)} MW)`);
-  lat = await latencyNow(p);
+  lat = await mark(p);
   await p.click('#lesson-try');
   await rerun(p, lat);
   assert((await p.inputValue(sets)) === '[1,2,3,4]', `"Set it" left the control at ${await p.inputValue(sets)}`);

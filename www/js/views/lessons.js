@@ -147,6 +147,7 @@ async function lessonRun(ctx, settled = true) {
     res.preview = !settled;
     if (settled) {
       window.__lessonLatencyMs = performance.now() - asked; // for the browser test: release to plot
+      window.__lessonRuns = (window.__lessonRuns || 0) + 1; // for the browser test: a rerun has landed
       explainShown(ctx);
     } else window.__lessonPreviews = (window.__lessonPreviews || 0) + 1;
   }
