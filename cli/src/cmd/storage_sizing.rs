@@ -27,6 +27,9 @@ pub struct Args {
     /// Print the study as JSON (every size's measures and warnings).
     #[arg(long)]
     json: bool,
+    /// Run a study estimated to take longer than an hour on its threads (refused without it).
+    #[arg(long)]
+    allow_long: bool,
     /// Override one parameter (repeatable), e.g. `--set plant.loads.pulse_power_w=5e6`.
     #[arg(long = "set", value_name = "PATH=VALUE")]
     sets: Vec<String>,
@@ -52,6 +55,15 @@ pub fn run(a: Args) -> Result<(), Failure> {
     let mut runs = vec![storage_sizing::without(&sc)];
     runs.extend(storage_sizing::sizes(&sc, &energies, &powers)?);
     let threads = crate::study::threads(a.threads, "storage-sizing");
+    let work: f64 = runs.iter().map(|s| s.work()).sum();
+    use aes_core::studies::study::{wall_estimate_s, Platform};
+    crate::study::check_budget(
+        "storage-sizing",
+        &format!("{} runs of {} s", runs.len(), aes_core::checks::num(a.duration_s)),
+        wall_estimate_s(1, work, threads, Platform::Native),
+        threads,
+        a.allow_long,
+    )?;
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
     let mut cells = pool.install(|| {
         use rayon::prelude::*;
@@ -76,16 +88,16 @@ fn row(c: &Cell, base: &Cell) -> String {
     };
     let storage = if c.energy_j > 0.0 {
         format!(
-            "{:>+6.1} | {:.2}-{:.2}{} | {:>4.1} % | {:>6.1}",
+            "{:>+6.1} | {:.2}-{:.2} {:>3.0} % | {:>4.1} % | {:>6.1}",
             c.storage_net_j / 1e6,
             c.soc_min,
             c.soc_max,
-            if c.soc_at_limit { "!" } else { " " },
+            100.0 * c.taper_share,
             100.0 * c.at_rating_share,
             c.cycles_per_hour
         )
     } else {
-        format!("{:>6} | {:>10} | {:>6} | {:>6}", "-", "-", "-", "-")
+        format!("{:>6} | {:>15} | {:>6} | {:>6}", "-", "-", "-", "-")
     };
     format!(
         "{size} | {:.4} {:>4.0} % | {:.3}-{:.3} | {:>5.1} | {:>6.1} {:>+5.1} % {:>4.0} % | {:>5.1} | {storage} | {}",
@@ -109,13 +121,13 @@ fn table(s: &Sizing) -> String {
          speed: the turbines' speed standard deviation [pu], and against no storage; bus: lowest-highest [pu];\n\
          turbines: mean shaft power [MW]; fuel: mean fuel power [MW], against no storage, and the share of the run\n\
          below the part-load curve's 30 % (extrapolated there, with too little fuel: swings down there look cheap);\n\
-         brake: energy burnt [MJ]; given: net energy the storages gave the buses [MJ]; charge: lowest-highest\n\
-         (! it reached a limit, where levelling stops); rating: share of the run at the power rating;\n\
-         cycles: equivalent full cycles an hour.\n\n",
+         brake: energy burnt [MJ]; given: net energy the storages gave the buses [MJ]; charge: lowest-highest,\n\
+         and the share of the run in the taper before a limit (where the storage gives or takes less and less);\n\
+         rating: share of the run at the power rating; cycles: equivalent full cycles an hour.\n\n",
         s.scenario, s.duration_s
     );
     t.push_str(
-        "  E MJ  P MW | speed std     | bus pu      | turb. | fuel MW, <30 % load  | brake | given  | charge     | rating | cycles | warnings\n",
+        "  E MJ  P MW | speed std     | bus pu      | turb. | fuel MW, <30 % load  | brake | given  | charge, taper   | rating | cycles | warnings\n",
     );
     t.push_str(&row(&s.without, &s.without));
     t.push('\n');

@@ -2,7 +2,7 @@
 //! storage size (energy x power rating, on each bus) beside the run without storage, each measured
 //! as a power-system engineer sizes a storage: how much steadier the turbines turn, how far the
 //! bus sags and rises, the fuel burnt, and what the storage pays for it in cycling (the charge's
-//! range, whether it reached a limit, the time at its power rating, and the equivalent full
+//! range, the time it spent in its taper near a limit, the time at its power rating, and the equivalent full
 //! cycles an hour that set a battery's life).
 //!
 //! Every cell is the scenario's own run with `plant.storage.energy_j` and `power_w` set (the
@@ -50,10 +50,13 @@ pub struct Cell {
     /// Lowest and highest state of charge (mean of the two storages) [-]; 0 without storage.
     pub soc_min: f64,
     pub soc_max: f64,
-    /// Whether the charge came within 0.005 of `soc_min` or `soc_max` (where the controller
-    /// tapers the storage off: it stopped levelling).
-    pub soc_at_limit: bool,
-    /// Share of the run the storages spent at their power rating [-].
+    /// Share of the run the charge spent in the taper before either limit, where the controller
+    /// gives or takes less and less (`plant::storage::taper_j`: at least a second of the rated
+    /// power wide, so a storage small beside its rating lives in it and never reaches its
+    /// rating) [-].
+    pub taper_share: f64,
+    /// Share of the run the storages spent at their power rating [-] (of the two buses' sum, as
+    /// the cycles: right for the symmetric head-seas runs, where both buses give and take alike).
     pub at_rating_share: f64,
     /// Equivalent full cycles an hour: the energy through the storages' terminals, both ways,
     /// over twice their usable energy (soc_max - soc_min of energy_j, both buses), per hour.
@@ -106,10 +109,11 @@ pub fn sizes(sc: &Scenario, energies_j: &[f64], powers_w: &[f64]) -> Result<Vec<
     Ok(out)
 }
 
-/// The scenario without storage (the study's reference).
+/// The scenario without storage (the study's reference): every storage field at its default, so
+/// that the fields the sizes share raise no "ignored" warning here.
 pub fn without(sc: &Scenario) -> Scenario {
     let mut s = sc.clone();
-    s.plant.storage.energy_j = 0.0;
+    s.plant.storage = crate::scenario::StorageParams::default();
     s
 }
 
@@ -151,10 +155,16 @@ pub fn measure(sc: &Scenario, r: &RunResult) -> Cell {
         turbine_power_mean_w: mean(pt),
         below_curve_share: below,
         storage_net_j: r.summary.energy_j.storage_to_bus,
-        brake_energy_j: col(Signal::BrakePowerW).iter().sum::<f64>() * dt,
+        brake_energy_j: r.summary.energy_j.brake,
         soc_min,
         soc_max,
-        soc_at_limit: has && (soc_min <= st.soc_min + 0.005 || soc_max >= st.soc_max - 0.005),
+        taper_share: if has {
+            let taper = crate::plant::storage::taper_j(st.energy_j, st.power_w) / st.energy_j;
+            let (lo, hi) = (st.soc_min + taper, st.soc_max - taper);
+            soc.iter().filter(|&&q| q < lo || q > hi).count() as f64 / soc.len().max(1) as f64
+        } else {
+            0.0
+        },
         at_rating_share: at_rating / p.len().max(1) as f64,
         cycles_per_hour: if has && usable > 0.0 && duration > 0.0 {
             through / (2.0 * usable) * 3600.0 / duration
