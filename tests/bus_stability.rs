@@ -7,7 +7,7 @@ use aes_core::scenario::presets::acceleration;
 use aes_core::scenario::Scenario;
 use aes_core::sim::plant::{bus_voltage, filter_current, filter_voltage};
 use aes_core::sim::Simulation;
-use aes_core::studies::stability_map::{boundary, check_grid, map, Axis};
+use aes_core::studies::stability_map::{boundary, check_grid, map, stiff_bus_check, Axis, STIFF_BUS_FILTERS_F};
 
 /// Calm water at 20 knots, steady, with a ship service load on each bus.
 fn at_20_knots(p_w: f64) -> Scenario {
@@ -25,24 +25,15 @@ fn at_20_knots(p_w: f64) -> Scenario {
 /// its cells).
 #[test]
 fn boundary_matches_the_negative_resistance_criterion() {
-    let mut sc = at_20_knots(1.0e6);
-    sc.plant.dc_link.capacitance_f = 100.0;
-    let l = &sc.plant.loads;
-    for c_f in [0.01, 0.02, 0.04] {
-        let f = ShipService { l_h: l.filter_inductance_h, r_ohm: l.filter_resistance_ohm, c_f, v_min: 0.0 };
-        let closed = f.critical_power_w(sc.bus_voltage_ref_v());
-        let b = boundary(
-            &sc,
-            "plant.loads.ship_service_w",
-            0.5 * closed,
-            1.5 * closed,
-            ("plant.loads.filter_capacitance_f", c_f),
-        )
-        .unwrap();
+    for c_f in STIFF_BUS_FILTERS_F {
+        let (closed, b) = stiff_bus_check(c_f).unwrap();
         let err = (b - closed).abs() / closed;
         eprintln!("C_f {c_f}: boundary {b:.0} W, closed form {closed:.0} W, {err:.2e}");
         assert!(err < 0.02, "C_f {c_f}: boundary {b} W against the closed form {closed} W");
     }
+    let mut sc = at_20_knots(1.0e6);
+    sc.plant.dc_link.capacitance_f = 100.0;
+    let l = &sc.plant.loads;
     let m = map(
         &sc,
         &Axis::linear("plant.loads.ship_service_w", 1.0e6, 8.0e6, 8),

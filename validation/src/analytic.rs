@@ -70,26 +70,11 @@ pub(crate) fn analytic(size: Size, st: &aes_core::RunResult) -> Result<Section, 
 /// plant at 20 kn with a 100 F bus, the boundary in ship service power bisected (as the map does
 /// between its cells) at three filter capacitances.
 fn bus_stability() -> Result<Vec<Row>, String> {
-    use aes_core::plant::bus_loads::ShipService;
-    use aes_core::studies::stability_map::boundary;
-    let mut sc = aes_core::scenario::presets::acceleration(false);
-    sc.initial.speed_kn = 20.0;
-    sc.commands[0].speed_kn = Some(20.0);
-    sc.plant.loads.ship_service_w = 1.0e6;
-    sc.plant.dc_link.capacitance_f = 100.0;
-    let l = sc.plant.loads.clone();
-    [0.01, 0.02, 0.04]
+    use aes_core::studies::stability_map::{stiff_bus_check, STIFF_BUS_FILTERS_F};
+    STIFF_BUS_FILTERS_F
         .into_iter()
         .map(|c_f| {
-            let f = ShipService { l_h: l.filter_inductance_h, r_ohm: l.filter_resistance_ohm, c_f, v_min: 0.0 };
-            let closed = f.critical_power_w(sc.bus_voltage_ref_v());
-            let b = boundary(
-                &sc,
-                "plant.loads.ship_service_w",
-                0.5 * closed,
-                1.5 * closed,
-                ("plant.loads.filter_capacitance_f", c_f),
-            )?;
+            let (closed, b) = stiff_bus_check(c_f)?;
             Ok(row(
                 &format!("bus stability boundary, C_f = {} mF on a stiff bus (100 F): ship service power", c_f * 1e3),
                 "closed form R_f C_f v_f^2 / L_f (constant-power load behind its filter)",

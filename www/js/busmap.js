@@ -9,6 +9,14 @@ import { REQUEST, fieldLine } from './protocol.js';
 import { param } from './registry.js';
 import { sizedCanvas } from './plots.js';
 
+// One axis's boxes (from, to, values), their labels filled in for the chosen pair.
+const axisFields = (k) => `<fieldset id="busmap-${k}"><legend id="busmap-${k}-legend">${k} axis</legend>
+        <div class="busmap-range">
+          <label for="busmap-${k}-from" id="busmap-${k}-from-l">from</label><input id="busmap-${k}-from" type="number" step="any" inputmode="decimal">
+          <label for="busmap-${k}-to" id="busmap-${k}-to-l">to</label><input id="busmap-${k}-to" type="number" step="any" inputmode="decimal">
+          <label for="busmap-${k}-n">values</label><input id="busmap-${k}-n" type="number" step="1" min="2" inputmode="numeric">
+        </div></fieldset>`;
+
 export const TEMPLATE = `
 <section id="busmap" aria-labelledby="busmap-h">
   <h2 id="busmap-h">Bus stability map</h2>
@@ -23,18 +31,7 @@ export const TEMPLATE = `
       <div class="row"><label for="busmap-pair">Parameters</label><select id="busmap-pair"></select></div>
       <div class="row"><label for="busmap-speed">Speed at the operating point [kn]</label>
         <input id="busmap-speed" type="number" step="any" inputmode="decimal"></div>
-      <fieldset id="busmap-x"><legend id="busmap-x-legend">x axis</legend>
-        <div class="busmap-range">
-          <label for="busmap-x-from" id="busmap-x-from-l">from</label><input id="busmap-x-from" type="number" step="any" inputmode="decimal">
-          <label for="busmap-x-to" id="busmap-x-to-l">to</label><input id="busmap-x-to" type="number" step="any" inputmode="decimal">
-          <label for="busmap-x-n">values</label><input id="busmap-x-n" type="number" step="1" min="2" inputmode="numeric">
-        </div></fieldset>
-      <fieldset id="busmap-y"><legend id="busmap-y-legend">y axis</legend>
-        <div class="busmap-range">
-          <label for="busmap-y-from" id="busmap-y-from-l">from</label><input id="busmap-y-from" type="number" step="any" inputmode="decimal">
-          <label for="busmap-y-to" id="busmap-y-to-l">to</label><input id="busmap-y-to" type="number" step="any" inputmode="decimal">
-          <label for="busmap-y-n">values</label><input id="busmap-y-n" type="number" step="1" min="2" inputmode="numeric">
-        </div></fieldset>
+      ${axisFields('x')}${axisFields('y')}
       <div class="row buttons"><button id="busmap-compute" type="button">Compute the map</button>
         <button id="busmap-cancel" type="button" disabled>Cancel</button></div>
       <div id="busmap-status" role="status" aria-live="polite"></div>

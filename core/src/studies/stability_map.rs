@@ -281,6 +281,38 @@ fn bisect_boundary(
     Ok(0.5 * (a + b))
 }
 
+/// Filter capacitances of the closed-form check [F].
+pub const STIFF_BUS_FILTERS_F: [f64; 3] = [0.01, 0.02, 0.04];
+
+/// The map's simple case, checked against a closed form (the test and the validation report
+/// share it): the plant at 20 kn with a stiff bus (100 F, the range's top) feeding the ship
+/// service load through the default filter with capacitance `c_f` [F]. Returns the closed form
+/// R_f C_f v_f^2 / L_f and the boundary in ship service power bisected between half and 1.5 times
+/// it, as the map does between its cells [W].
+pub fn stiff_bus_check(c_f: f64) -> Result<(f64, f64), String> {
+    let mut sc = crate::scenario::presets::acceleration(false);
+    sc.initial.speed_kn = 20.0;
+    sc.commands[0].speed_kn = Some(20.0);
+    sc.plant.loads.ship_service_w = 1.0e6;
+    sc.plant.dc_link.capacitance_f = 100.0;
+    let l = &sc.plant.loads;
+    let f = crate::plant::bus_loads::ShipService {
+        l_h: l.filter_inductance_h,
+        r_ohm: l.filter_resistance_ohm,
+        c_f,
+        v_min: 0.0,
+    };
+    let closed = f.critical_power_w(sc.bus_voltage_ref_v());
+    let b = boundary(
+        &sc,
+        "plant.loads.ship_service_w",
+        0.5 * closed,
+        1.5 * closed,
+        ("plant.loads.filter_capacitance_f", c_f),
+    )?;
+    Ok((closed, b))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
