@@ -16,13 +16,21 @@ function showSummary(signals, s, constants) {
   const stages = [['turbine', 'gas turbines, shaft'], ['generator', 'generators, electrical'], ['inverter', 'into the motors'], ['motor', 'motors, shaft'], ['ship', 'ship, resistance x speed']]
     .filter(([k]) => k in inv);
   const ratio = (out, into) => (into > 0 && out >= 0 ? `${(100 * out / into).toFixed(1)} %` : '–');
+  // With storage or other loads on the buses the motors' input is the generators' output plus
+  // what the storage gives, less what the loads take (the drive train's picture counts the same).
+  const bus = { storage: ['storage', 'storage_to_bus', 'storage, to the buses (+) or from them (-)'], loads: ['bus_loads', 'bus_loads', 'ship service and pulsed loads'] };
+  const extra = Object.values(bus).filter(([p, e]) => (inv[p] || 0) !== 0 || (en[e] || 0) !== 0);
+  const busIn = (o, key) => o.generator + (o[bus.storage[key]] || 0) - (o[bus.loads[key]] || 0);
+  const into = (k, prev, o, key) => (k === 'inverter' ? busIn(o, key) : o[prev]);
   const body = $('inventory').querySelector('tbody');
   body.replaceChildren(el('tr', {}, ...['stage', 'power now [MW]', 'out / in now', 'energy, whole run [MJ]', 'out / in, whole run'].map((h) => el('th', { scope: 'col', textContent: h }))),
-    ...stages.map(([k, label], i) => {
+    ...stages.flatMap(([k, label], i) => {
       const prev = i > 0 ? stages[i - 1][0] : null;
-      return row(label, [fmt(inv[k] / 1e6), prev ? ratio(inv[k], inv[prev]) : '–', k in en ? fmt(en[k] / 1e6) : '–', prev && k in en ? ratio(en[k], en[prev]) : '–']);
+      const r = row(label, [fmt(inv[k] / 1e6), prev ? ratio(inv[k], into(k, prev, inv, 0)) : '–', k in en ? fmt(en[k] / 1e6) : '–', prev && k in en ? ratio(en[k], into(k, prev, en, 1)) : '–']);
+      const parts = k === 'generator' ? extra.map(([p, e, l]) => row(l, [fmt((inv[p] || 0) / 1e6), '–', fmt((en[e] || 0) / 1e6), '–'])) : [];
+      return [r, ...parts];
     }));
-  const over = stages.some(([k], i) => i > 0 && inv[stages[i - 1][0]] > 0 && inv[k] > inv[stages[i - 1][0]]);
+  const over = stages.some(([k], i) => i > 0 && into(k, stages[i - 1][0], inv, 0) > 0 && inv[k] > into(k, stages[i - 1][0], inv, 0));
   $('inventory-over').hidden = !over;
   // The summary's warnings (core's health checks and the model's range), above the tables.
   $('warnings').replaceChildren(...(s.warnings || []).map((w) => el('li', { textContent: w })));
