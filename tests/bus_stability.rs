@@ -5,7 +5,7 @@
 use aes_core::plant::bus_loads::ShipService;
 use aes_core::scenario::presets::acceleration;
 use aes_core::scenario::Scenario;
-use aes_core::sim::plant::{bus_voltage, filter_current, filter_voltage};
+use aes_core::sim::plant::{bus_voltage, part_slot};
 use aes_core::sim::Simulation;
 use aes_core::studies::stability_map::{boundary, check_grid, map, stiff_bus_check, Axis, STIFF_BUS_FILTERS_F};
 
@@ -54,7 +54,8 @@ fn ringing(sc: &Scenario, windows: &[(f64, f64)]) -> (Vec<f64>, Vec<String>) {
     while !sim.done() {
         sim.advance(1).unwrap();
         let (t, x) = (sim.time(), sim.state());
-        let v = (x[bus_voltage(0)] - r * x[filter_current(0)] - x[filter_voltage(0)]).abs();
+        let (i_l, v_f) = (part_slot("filter_current", 0).unwrap(), part_slot("filter_voltage", 0).unwrap());
+        let v = (x[bus_voltage(0)] - r * x[i_l] - x[v_f]).abs();
         for (k, w) in windows.iter().enumerate() {
             if t >= w.0 && t < w.1 {
                 top[k] = top[k].max(v);

@@ -24,10 +24,12 @@
 use crate::checks::Validator;
 use serde::{Deserialize, Serialize};
 
-/// States of the ship service filter per bus: inductor current i_L [A], capacitor voltage v_f [V].
-pub const STATES: usize = 2;
-/// Energy accounts of the loads: ship service output, pulsed load, filter loss.
-pub const ENERGY_ACCOUNTS: usize = 3;
+use crate::plant::bus_part::{Account, Book, BusFlow, BusNode, BusPart};
+
+/// The ship service filter's states in its block of each bus: inductor current i_L [A], capacitor
+/// voltage v_f [V].
+pub const FILTER_CURRENT: usize = 0;
+pub const FILTER_VOLTAGE: usize = 1;
 
 /// Voltage below which the ship service converter's current stops rising [pu of the bus set
 /// point]: its undervoltage current limit.
@@ -278,6 +280,93 @@ impl BusLoads {
     /// What the loads demand at time `t` [s].
     pub fn demand(&self, t: f64) -> Demand {
         Demand { ship_service_w: self.ship_service_at(t), pulse_w: self.pulse_at(t) }
+    }
+}
+
+impl BusPart for BusLoads {
+    type Params = BusLoadParams;
+    const STATES: &'static [&'static str] = &["filter_current", "filter_voltage"];
+    const ACCOUNTS: &'static [Account] = &[
+        Account { name: "ship_service", book: Book::Load },
+        Account { name: "pulsed", book: Book::Load },
+        Account { name: "filter_loss", book: Book::Loss },
+    ];
+    const DRAWS: bool = true;
+
+    fn build(p: &BusLoadParams, v_ref: f64) -> Option<BusLoads> {
+        BusLoads::new(p, v_ref)
+    }
+    fn present(p: &BusLoadParams) -> bool {
+        p.any()
+    }
+    /// Only the ship service's filter has states.
+    fn linearized(p: &BusLoadParams) -> bool {
+        p.has_ship_service()
+    }
+
+    /// The ship service filter's input at its steady state and the pulsed load.
+    fn steady_input_w(&self, v_bus: f64) -> Result<f64, String> {
+        let d = self.demand(0.0);
+        let ss = match &self.ship_service {
+            Some(f) => {
+                let (i_l, _) = f.steady(v_bus, d.ship_service_w).ok_or_else(|| {
+                    format!(
+                        "plant.loads.ship_service_w = {}: more than the filter's resistance passes from the bus \
+                         (at most v^2 / (4 R_f) = {:.1} MW)",
+                        d.ship_service_w,
+                        v_bus * v_bus / (4.0 * f.r_ohm) / 1e6
+                    )
+                })?;
+                v_bus * i_l
+            }
+            None => 0.0,
+        };
+        Ok(ss + d.pulse_w)
+    }
+
+    /// The filter at rest (none: 0).
+    fn start(&self, v_bus: f64, _p_load: f64, x: &mut [f64]) {
+        let (i, v) = match &self.ship_service {
+            Some(f) => f.steady(v_bus, self.demand(0.0).ship_service_w).unwrap_or((0.0, v_bus)),
+            None => (0.0, 0.0),
+        };
+        x[FILTER_CURRENT] = i;
+        x[FILTER_VOLTAGE] = v;
+    }
+
+    /// The filter's rates and the pulsed load: constant power on the bus, current-limited like
+    /// the converter.
+    #[inline(always)]
+    fn derivatives(&self, x: &[f64], node: &mut BusNode, dx: &mut [f64], e: &mut [f64], flow: &mut BusFlow) {
+        let v_c = node.v;
+        dx[FILTER_CURRENT] = 0.0;
+        dx[FILTER_VOLTAGE] = 0.0;
+        if let Some(ss) = &self.ship_service {
+            let (i_l, v_f) = (x[FILTER_CURRENT], x[FILTER_VOLTAGE]);
+            let f = ss.flow(v_c, i_l, v_f, node.demand.ship_service_w);
+            dx[FILTER_CURRENT] = f.di_l;
+            dx[FILTER_VOLTAGE] = f.dv_f;
+            node.i_draw += i_l;
+            node.p_load += v_c * i_l;
+            e[0] += f.p_load;
+            e[2] += f.p_loss;
+            flow.ship_service_w = f.p_load;
+            flow.ship_service_in_w = v_c * i_l;
+            flow.filter_voltage_v = v_f;
+        }
+        let i_p = node.demand.pulse_w / v_c.max(self.v_min);
+        node.i_draw += i_p;
+        node.p_load += v_c * i_p;
+        e[1] += v_c * i_p;
+        flow.pulse_w = v_c * i_p;
+    }
+
+    /// The filter's inductor and capacitor.
+    fn add_stored_energy(&self, x: &[f64], e: &mut f64) {
+        if let Some(ss) = &self.ship_service {
+            *e += 0.5 * ss.l_h * x[FILTER_CURRENT] * x[FILTER_CURRENT];
+            *e += 0.5 * ss.c_f * x[FILTER_VOLTAGE] * x[FILTER_VOLTAGE];
+        }
     }
 }
 

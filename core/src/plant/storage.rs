@@ -31,13 +31,14 @@
 //! returns (which would drain the charge step by step).
 
 use crate::checks::Validator;
+use crate::plant::bus_part::{Account, Book, BusFlow, BusNode, BusPart};
 use serde::{Deserialize, Serialize};
 
-/// States of the storage per bus: stored energy E [J], converter bus-side current i_b [A], the
-/// low-passed bus load P_lp [W].
-pub const STATES: usize = 3;
-/// Energy accounts of the storage: its power to the bus and its losses.
-pub const ENERGY_ACCOUNTS: usize = 2;
+/// The storage's states in its block of each bus: stored energy E [J], converter bus-side
+/// current i_b [A], the low-passed bus load P_lp [W].
+pub const ENERGY: usize = 0;
+pub const CURRENT: usize = 1;
+pub const LOWPASS: usize = 2;
 
 /// Width of the taper at each state-of-charge limit [fraction of the capacity]: the controller's
 /// power goes linearly to zero over it, so that the limits are not crossed by a jump.
@@ -310,6 +311,45 @@ impl Storage {
             p_loss: p_conv + p_cells,
             p_ref,
         }
+    }
+}
+
+impl BusPart for Storage {
+    type Params = StorageParams;
+    const STATES: &'static [&'static str] = &["storage_energy", "storage_current", "storage_lowpass"];
+    const ACCOUNTS: &'static [Account] =
+        &[Account { name: "storage_to_bus", book: Book::ToBus }, Account { name: "storage_loss", book: Book::Loss }];
+
+    fn build(p: &StorageParams, v_ref: f64) -> Option<Storage> {
+        Storage::new(p, v_ref)
+    }
+    fn present(p: &StorageParams) -> bool {
+        p.energy_j > 0.0
+    }
+
+    /// At its charge set point, giving nothing, its levelling filter at the bus's load.
+    fn start(&self, _v_bus: f64, p_load: f64, x: &mut [f64]) {
+        x[ENERGY] = self.e_set;
+        x[CURRENT] = 0.0;
+        x[LOWPASS] = p_load;
+    }
+
+    /// Levels the load of the parts before it (and the motor's).
+    #[inline(always)]
+    fn derivatives(&self, x: &[f64], node: &mut BusNode, dx: &mut [f64], e: &mut [f64], flow: &mut BusFlow) {
+        let f = self.flow(node.v, node.p_load, x[ENERGY], x[CURRENT], x[LOWPASS]);
+        dx[ENERGY] = f.de;
+        dx[CURRENT] = f.di_b;
+        dx[LOWPASS] = f.dp_lp;
+        node.i_draw -= x[CURRENT];
+        e[0] += f.p_bus;
+        e[1] += f.p_loss;
+        flow.storage_w = f.p_bus;
+        flow.soc = x[ENERGY] / self.capacity_j;
+    }
+
+    fn add_stored_energy(&self, x: &[f64], e: &mut f64) {
+        *e += x[ENERGY];
     }
 }
 

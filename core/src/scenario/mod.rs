@@ -23,11 +23,13 @@ pub use crate::control::speed::SpeedControlParams;
 pub use crate::plant::bus_loads::BusLoadParams;
 pub use crate::plant::dc_link::{DcLinkParams, RectifierKind};
 pub use crate::plant::generator::{FieldControlParams, GeneratorParams};
+pub use crate::plant::load_bank::LoadBankParams;
 pub use crate::plant::motor::{MotorParams, SlipControlParams};
 pub use crate::plant::online::OnlineParams;
 pub use crate::plant::prime_mover::{GovernorParams, TurbineParams};
 pub use crate::plant::propeller::{PropellerModelKind, PropellerParams};
 pub use crate::plant::storage::{StorageKind, StorageParams};
+pub use crate::plant::{BusParts, PlantParams};
 pub use crate::sea::conditioning::RareEventParams;
 pub use crate::sea::operability::OperabilityParams;
 pub use crate::sea::seakeeping::params::{SeakeepingParams, SternMotion};
@@ -128,24 +130,6 @@ crate::params! {
             label: "Periodogram segment", unit: "s", range: 1.0..=1.0e4, source: "our choice: 0.04 Hz resolution",
             help: "Welch segment for the periodogram of motor power.",
         },
-    }
-}
-
-crate::params! {
-    /// The split plant: per shaft two gas turbine-generator sets, one DC bus and one motor.
-    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-    #[serde(deny_unknown_fields, default)]
-    pub struct PlantParams {
-        pub turbine: TurbineParams = TurbineParams::default() => {},
-        pub generator: GeneratorParams = GeneratorParams::default() => {},
-        pub dc_link: DcLinkParams = DcLinkParams::default() => {},
-        pub motor: MotorParams = MotorParams::default() => {},
-        /// The ship service and pulsed loads on each bus (ch. 6.1); none by default.
-        pub loads: BusLoadParams = BusLoadParams::default() => {},
-        /// Energy storage on each bus (ch. 5.2.2, 6.1); none by default.
-        pub storage: StorageParams = StorageParams::default() => {},
-        /// Which sets run, and the rules of starting and stopping one (all four by default).
-        pub online: OnlineParams = OnlineParams::default() => {},
     }
 }
 
@@ -297,10 +281,9 @@ pub const MAX_RECORDED_VALUES: f64 = 1.0e7;
 pub const MAX_RECORDED_ROWS: f64 = MAX_RECORDED_VALUES / crate::signals::N_SIGNALS as f64;
 /// How many time steps a run may take.
 pub const MAX_STEPS: f64 = 1.0e9;
-/// The simulator's state size (sim::plant::NX; a test in sim checks that they agree). A run's work
-/// counts only the states it uses ([`Scenario::active_states`]): 33 without the bus's parts, as
-/// before they came.
-pub const STATE_SIZE: usize = 48;
+/// The simulator's state size (`plant::layout::NX`). A run's work counts only the states it uses
+/// ([`Scenario::active_states`]): 33 without the bus's parts, as before they came.
+pub const STATE_SIZE: usize = crate::plant::layout::NX;
 /// Budget of simulated work: time steps times the work of one step in state variables (the state
 /// size, plus in waves the wave components summed per step). 2e9 is about 40 s natively
 /// ([`WORK_PER_S`]) and a minute in a browser; the presets need at most 1.7e7.
@@ -536,17 +519,14 @@ impl Scenario {
         }
     }
 
-    /// The state variables a run advances: the plant's, less the bus parts it lacks.
+    /// The state variables a run advances: the plant's, less the states and energy accounts of
+    /// the bus parts it lacks.
     pub fn active_states(&self) -> usize {
-        use crate::plant::{bus_loads, storage};
-        let mut n = STATE_SIZE;
-        if !self.plant.loads.any() {
-            n -= crate::ship::hull::N_SHAFTS * bus_loads::STATES + bus_loads::ENERGY_ACCOUNTS;
-        }
-        if self.plant.storage.energy_j <= 0.0 {
-            n -= crate::ship::hull::N_SHAFTS * storage::STATES + storage::ENERGY_ACCOUNTS;
-        }
-        n
+        let absent = BusParts::present(&self.plant).into_iter().zip(BusParts::STATES.iter().zip(BusParts::ACCOUNTS));
+        absent
+            .filter(|(present, _)| !present)
+            .map(|(_, (states, accounts))| crate::ship::hull::N_SHAFTS * states.len() + accounts.len())
+            .fold(STATE_SIZE, |n, k| n - k)
     }
 
     /// The work a run asks for: time steps times the state variables advanced per step (plus, in
@@ -778,14 +758,18 @@ mod tests {
 
     #[test]
     fn the_work_budget_uses_the_plant_state_size() {
-        assert_eq!(STATE_SIZE, crate::sim::plant::NX);
         // Without the bus's parts a run's work is what it was before they came (33 states);
-        // each part adds its states and energy accounts.
+        // each part adds its states and energy accounts: the loads 2 a bus and 3, the storage 3
+        // a bus and 2, the load bank none and 1.
         let mut sc = Scenario::default();
         assert_eq!(sc.active_states(), 33);
         sc.plant.loads.pulse_power_w = 1.0e6;
+        assert_eq!(sc.active_states(), 33 + 2 * 2 + 3);
+        sc.plant.load_bank.resistance_ohm = 10.0;
+        assert_eq!(sc.active_states(), 33 + 2 * 2 + 3 + 1);
         sc.plant.storage.energy_j = 1.0e8;
         assert_eq!(sc.active_states(), STATE_SIZE);
+        assert_eq!(STATE_SIZE, 49);
     }
 
     /// The reproducers: 1e9 steps, 2e6 recorded rows, duplicate keys, deep nesting.

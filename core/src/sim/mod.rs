@@ -384,7 +384,7 @@ impl Simulation {
             self.ctl.held.slip[s] = st.slip;
         }
         self.ctl.peak_slip = [st.peak_slip; N_SHAFTS];
-        if self.plant.loads.is_some() || self.plant.storage.is_some() {
+        if self.plant.bus.any() {
             self.start_bus_parts(st.shaft_speed, st.ship_speed, st.bus_voltage)?;
         }
         self.x[SURGE] = st.ship_speed;
@@ -392,8 +392,8 @@ impl Simulation {
         Ok(())
     }
 
-    /// The bus's loads and storage at the steady state (their filter at rest, the storage at its
-    /// charge set point with the bus's load as its low-passed load).
+    /// The bus's parts at the steady state (`BusPart::start`: the ship service filter at rest, the
+    /// storage at its charge set point with the bus's load as its low-passed load).
     fn start_bus_parts(&mut self, w_rm: f64, u0: f64, v_bus: f64) -> Result<(), SimError> {
         let p = &self.plant;
         let p_inv = if u0 > 0.0 {
@@ -402,21 +402,11 @@ impl Simulation {
         } else {
             0.0
         };
-        let loads = match &p.loads {
-            Some(l) => {
-                self.ctl.held.bus = l.demand(0.0);
-                steady::bus_loads_input_w(l, v_bus)?
-            }
-            None => 0.0,
-        };
-        let (filter, storage) = steady::bus_parts_start(p, v_bus, p_inv + loads);
-        for s in 0..N_SHAFTS {
-            self.x[plant::filter_current(s)] = filter[0];
-            self.x[plant::filter_voltage(s)] = filter[1];
-            self.x[plant::storage_energy(s)] = storage[0];
-            self.x[plant::storage_current(s)] = storage[1];
-            self.x[plant::storage_lowpass(s)] = storage[2];
+        if let Some(l) = &p.bus.loads {
+            self.ctl.held.bus = l.demand(0.0);
         }
+        let p_load = p.bus.steady_load_w(v_bus, p_inv).map_err(SimError::Setup)?;
+        p.bus.start(v_bus, p_load, &mut self.x[plant::slots(plant::Block::BusParts)]);
         Ok(())
     }
 
@@ -628,8 +618,7 @@ impl Simulation {
         if !self.x[X_POS].is_finite() || !self.x[Y_POS].is_finite() || !self.x[HEADING].is_finite() {
             return bad("ship position".into(), "non-finite position or heading".into());
         }
-        let parts = plant::slots(plant::Block::BusLoads).start..plant::slots(plant::Block::Storage).end;
-        if self.x[parts].iter().any(|v| !v.is_finite()) {
+        if self.x[plant::slots(plant::Block::BusParts)].iter().any(|v| !v.is_finite()) {
             return bad("bus loads and storage".into(), "non-finite filter or storage state".into());
         }
         if self.x[ENERGY].iter().any(|v| !v.is_finite()) {
@@ -798,7 +787,7 @@ impl Simulation {
                 self.sea_step();
             }
             probe.done(StepPart::Sea);
-            if let Some(l) = &self.plant.loads {
+            if let Some(l) = &self.plant.bus.loads {
                 // The loads' profile at the step's middle, held over it.
                 self.ctl.held.bus = l.demand(self.t + 0.5 * self.dt);
             }

@@ -7,13 +7,15 @@
 
 use crate::numerics::units::kn_to_m_s;
 use crate::numerics::Integrator;
-use crate::plant::bus_loads::{BusLoads, Demand};
+use crate::plant::bus_loads::Demand;
+pub use crate::plant::bus_part::BusFlow;
+use crate::plant::bus_part::BusNode;
 use crate::plant::dc_link::{DcLink, RectifierFlow};
 use crate::plant::generator::SyncGenerator;
 use crate::plant::motor::{InductionMotor, MotorPoint};
 use crate::plant::prime_mover::GasTurbine;
 use crate::plant::propeller::{Conditions, FourQuadrant, OpenWater, PropellerLoad};
-use crate::plant::storage::Storage;
+use crate::plant::BusParts;
 use crate::scenario::{HullModelKind, PropellerModelKind, RectifierKind, Scenario};
 use crate::ship::maneuvering::{handover_weight, Abkowitz, ManeuveringForces};
 use crate::ship::rudder::{rudder_force, stern_inflow, Inflow, RudderParams};
@@ -21,185 +23,7 @@ use crate::ship::sectional::OwnHull;
 use crate::ship::surge::Surge;
 use std::f64::consts::PI;
 
-/// Shafts (independent plants): the hull's count, owned by `ship_hull`.
-pub use crate::ship::hull::N_SHAFTS;
-/// Turbine-generator sets per shaft.
-pub const SETS_PER_SHAFT: usize = 2;
-/// Turbine-generator sets in all.
-pub const N_SETS: usize = N_SHAFTS * SETS_PER_SHAFT;
-// The online sets' rules count the same sets.
-const _: () = assert!(N_SETS == crate::plant::online::SETS);
-
-/// The blocks of the state vector. Their order and lengths are [`LAYOUT`]'s: a subsystem's states
-/// are one line there, and every slot follows from it (no offset is computed by hand).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Block {
-    /// Turbine shaft speed of each set [rad/s].
-    TurbineSpeed,
-    /// Field current of each set [A].
-    FieldCurrent,
-    /// Bus voltage of each shaft [V].
-    BusVoltage,
-    /// Propeller shaft speed of each shaft [rad/s].
-    ShaftSpeed,
-    /// The ship service filter of each bus: inductor current [A], capacitor voltage [V]
-    /// (`plant::bus_loads`).
-    BusLoads,
-    /// The storage of each bus: stored energy [J], converter current [A], low-passed bus load [W]
-    /// (`plant::storage`).
-    Storage,
-    /// The hull: surge u, sway v [m/s], yaw rate r [rad/s], north x, east y [m], heading psi [rad]
-    /// ([`SURGE`] to [`HEADING`]).
-    Hull,
-    /// The energy accumulators [J] ([`Energy`]).
-    Energy,
-}
-
-/// Number of energy accumulators.
-pub const N_ENERGY: usize = 20;
-
-/// The state vector's blocks in order, with their lengths. The bus's parts come before the hull,
-/// with the drive train (the multi-rate step holds everything before [`SURGE`] during the hull's
-/// step).
-pub const LAYOUT: [(Block, usize); 8] = [
-    (Block::TurbineSpeed, N_SETS),
-    (Block::FieldCurrent, N_SETS),
-    (Block::BusVoltage, N_SHAFTS),
-    (Block::ShaftSpeed, N_SHAFTS),
-    (Block::BusLoads, N_SHAFTS * crate::plant::bus_loads::STATES),
-    (Block::Storage, N_SHAFTS * crate::plant::storage::STATES),
-    (Block::Hull, 6),
-    (Block::Energy, N_ENERGY),
-];
-
-/// The slots of a block.
-pub const fn slots(b: Block) -> std::ops::Range<usize> {
-    let (mut at, mut i) = (0, 0);
-    while i < LAYOUT.len() {
-        if LAYOUT[i].0 as usize == b as usize {
-            return at..at + LAYOUT[i].1;
-        }
-        at += LAYOUT[i].1;
-        i += 1;
-    }
-    at..at
-}
-
-/// Size of the state vector.
-pub const NX: usize = {
-    let (mut n, mut i) = (0, 0);
-    while i < LAYOUT.len() {
-        n += LAYOUT[i].1;
-        i += 1;
-    }
-    n
-};
-
-/// Turbine shaft speed of set k [rad/s].
-pub const fn omega_t(k: usize) -> usize {
-    slots(Block::TurbineSpeed).start + k
-}
-/// Field current of set k [A].
-pub const fn field_current(k: usize) -> usize {
-    slots(Block::FieldCurrent).start + k
-}
-/// Bus voltage of shaft s [V].
-pub const fn bus_voltage(s: usize) -> usize {
-    slots(Block::BusVoltage).start + s
-}
-/// Propeller shaft speed of shaft s [rad/s].
-pub const fn omega_rm(s: usize) -> usize {
-    slots(Block::ShaftSpeed).start + s
-}
-/// Ship service filter inductor current of bus s [A].
-pub const fn filter_current(s: usize) -> usize {
-    slots(Block::BusLoads).start + crate::plant::bus_loads::STATES * s
-}
-/// Ship service filter capacitor voltage of bus s [V].
-pub const fn filter_voltage(s: usize) -> usize {
-    filter_current(s) + 1
-}
-/// Energy stored in the storage of bus s [J].
-pub const fn storage_energy(s: usize) -> usize {
-    slots(Block::Storage).start + crate::plant::storage::STATES * s
-}
-/// Bus-side current of the storage converter of bus s [A].
-pub const fn storage_current(s: usize) -> usize {
-    storage_energy(s) + 1
-}
-/// The low-passed load of bus s, the storage's levelling filter [W].
-pub const fn storage_lowpass(s: usize) -> usize {
-    storage_energy(s) + 2
-}
-/// Ship surge speed u [m/s].
-pub const SURGE: usize = slots(Block::Hull).start;
-/// Sway speed v [m/s].
-pub const SWAY: usize = SURGE + 1;
-/// Yaw rate r [rad/s].
-pub const YAW_RATE: usize = SURGE + 2;
-/// North position x [m].
-pub const X_POS: usize = SURGE + 3;
-/// East position y [m].
-pub const Y_POS: usize = SURGE + 4;
-/// Heading psi [rad], not wrapped.
-pub const HEADING: usize = SURGE + 5;
-/// First energy accumulator [J]; see [`Energy`].
-pub const ENERGY0: usize = slots(Block::Energy).start;
-/// The energy accumulators' slots.
-pub const ENERGY: std::ops::Range<usize> = slots(Block::Energy);
-// The hull's six named slots fill its block.
-const _: () = assert!(HEADING + 1 == slots(Block::Hull).end);
-
-/// The state vector.
-pub type State = [f64; NX];
-
-/// Indices of the energy accumulators (offsets from [`ENERGY0`]); sums over all machines.
-#[derive(Debug, Clone, Copy)]
-#[repr(usize)]
-pub enum Energy {
-    /// Turbine shaft work, sum of Q_t omega_t.
-    Turbine = 0,
-    /// Generator friction, sum of Q_fric omega_t.
-    Friction,
-    /// Generator electrical output, sum of 3 Re{E_a i_s^*}.
-    Generator,
-    /// Generator stator copper loss.
-    StatorLoss,
-    /// Notching resistance loss R_p i^2.
-    NotchingLoss,
-    /// Inverter output, sum of 3 Re{v_m i_in^*}.
-    Inverter,
-    /// Motor stator copper loss.
-    MotorStatorLoss,
-    /// Motor rotor copper loss.
-    MotorRotorLoss,
-    /// Motor mechanical (eta_m) loss.
-    MotorMechLoss,
-    /// Motor shaft output, sum of Q_m omega_rm.
-    Motor,
-    /// Power absorbed by the propellers, sum of Q_p omega_rm.
-    Propeller,
-    /// Thrust power, sum of T_p u.
-    Thrust,
-    /// Work against the hull's resistance and the rudder's drag in surge (R_sp u in the surge model,
-    /// Table 5.6 "ship"), and against the side force and yaw moment in sway and yaw (a turn's and
-    /// the waves' side work; 0 on a straight course in calm water).
-    Ship,
-    /// Energy dissipated in the brake resistors.
-    Brake,
-    /// Energy the motors returned to the buses (integral of the negative part of the inverter power).
-    Regenerated,
-    /// Output of the ship service converters (their constant power).
-    ShipService,
-    /// Energy of the pulsed loads.
-    Pulsed,
-    /// Ship service input filter loss R_f i_L^2.
-    FilterLoss,
-    /// Energy the storage gave the buses (negative: took), sum of v i_b.
-    StorageToBus,
-    /// Storage converter and cell losses.
-    StorageLoss,
-}
+pub use crate::plant::layout::*;
 
 /// Inputs held over a time step: the controllers' outputs (piecewise constant between controller
 /// samples) and the sea's (updated by the seaway between steps).
@@ -285,21 +109,6 @@ pub struct Outputs {
     pub bus: [BusFlow; N_SHAFTS],
 }
 
-/// What the loads and the storage of one bus do at one instant.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct BusFlow {
-    /// Ship service converter's output [W] and the power its filter takes from the bus [W].
-    pub ship_service_w: f64,
-    pub ship_service_in_w: f64,
-    /// Ship service filter capacitor voltage [V] (0 without one).
-    pub filter_voltage_v: f64,
-    /// Pulsed load [W].
-    pub pulse_w: f64,
-    /// Storage power to the bus [W] (negative: charging), its state of charge [-] (0 without).
-    pub storage_w: f64,
-    pub soc: f64,
-}
-
 /// The hull model in use.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Hull {
@@ -355,10 +164,8 @@ pub struct Plant {
     /// A constant added resistance [N] (the mean second-order force of a regular sea, for the
     /// steady states of the fuel study); 0 in a normal run.
     pub extra_resistance: f64,
-    /// The ship service and pulsed loads of each bus (`plant.loads`; None without).
-    pub loads: Option<BusLoads>,
-    /// The storage of each bus (`plant.storage`; None without).
-    pub storage: Option<Storage>,
+    /// The other parts on each bus (`plant.loads`, `plant.storage`, ...; each None without).
+    pub bus: BusParts,
 }
 
 impl Plant {
@@ -426,8 +233,7 @@ impl Plant {
             beta_t: sc.propeller.beta_t,
             beta_q: sc.propeller.beta_q,
             extra_resistance: 0.0,
-            loads: BusLoads::new(&sc.plant.loads, v_ref),
-            storage: Storage::new(&sc.plant.storage, v_ref),
+            bus: BusParts::new(&sc.plant, v_ref),
         })
         .and_then(|p| p.check_bus_rating(sc))
     }
@@ -627,12 +433,11 @@ impl Plant {
             let mp = self.motor.operate(v_m, omega_e, h.slip[s], w_rm);
             let pl = self.propeller_load_in_waves(w_rm, va, h.sea.beta_t[s], h.sea.beta_q[s]);
             let p_brake = self.brake_power(v_c);
-            // The bus's other loads draw, its storage gives (none: i_rect as it is).
-            let i_in = if self.loads.is_some() || self.storage.is_some() {
+            // The bus's other parts draw or give (none: i_rect as it is).
+            let i_in = if self.bus.any() {
                 i_rect - self.bus_parts(s, x, h, v_c, mp.p_in, dx, e, out.as_deref_mut())
             } else {
-                dx[slots(Block::BusLoads)].fill(0.0);
-                dx[slots(Block::Storage)].fill(0.0);
+                dx[slots(Block::BusParts)].fill(0.0);
                 i_rect
             };
             dx[bus_voltage(s)] = self.dc_link.bus_voltage_rate(i_in, mp.p_in + p_brake, v_c); // eqs. 2.7, 2.10
@@ -666,10 +471,11 @@ impl Plant {
         thrust
     }
 
-    /// The ship service filter, the pulsed load and the storage of bus `s` at bus voltage `v_c`
-    /// with the motor's inverter taking `p_inv` [W]: writes their derivatives, books their
-    /// energies and returns the net current they draw from the bus [A] (loads less storage).
+    /// The other parts of bus `s` at bus voltage `v_c` with the motor's inverter taking `p_inv`
+    /// [W], in their order at the node: writes their derivatives, books their energies and
+    /// returns the net current they draw from the bus [A].
     #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
     fn bus_parts(
         &self,
         s: usize,
@@ -682,53 +488,13 @@ impl Plant {
         out: Option<&mut Outputs>,
     ) -> f64 {
         let mut flow = BusFlow::default();
-        let (mut i_draw, mut p_load) = (0.0, p_inv);
-        dx[filter_current(s)] = 0.0;
-        dx[filter_voltage(s)] = 0.0;
-        if let Some(l) = &self.loads {
-            if let Some(ss) = &l.ship_service {
-                let (i_l, v_f) = (x[filter_current(s)], x[filter_voltage(s)]);
-                let f = ss.flow(v_c, i_l, v_f, h.bus.ship_service_w);
-                dx[filter_current(s)] = f.di_l;
-                dx[filter_voltage(s)] = f.dv_f;
-                i_draw += i_l;
-                p_load += v_c * i_l;
-                e[Energy::ShipService as usize] += f.p_load;
-                e[Energy::FilterLoss as usize] += f.p_loss;
-                flow.ship_service_w = f.p_load;
-                flow.ship_service_in_w = v_c * i_l;
-                flow.filter_voltage_v = v_f;
-            }
-            // The pulsed load: constant power on the bus, current-limited like the converter.
-            let i_p = h.bus.pulse_w / v_c.max(l.v_min);
-            i_draw += i_p;
-            p_load += v_c * i_p;
-            e[Energy::Pulsed as usize] += v_c * i_p;
-            flow.pulse_w = v_c * i_p;
-        }
-        let (ke, ki, kl) = (storage_energy(s), storage_current(s), storage_lowpass(s));
-        match &self.storage {
-            Some(st) => {
-                let f = st.flow(v_c, p_load, x[ke], x[ki], x[kl]);
-                dx[ke] = f.de;
-                dx[ki] = f.di_b;
-                dx[kl] = f.dp_lp;
-                i_draw -= x[ki];
-                e[Energy::StorageToBus as usize] += f.p_bus;
-                e[Energy::StorageLoss as usize] += f.p_loss;
-                flow.storage_w = f.p_bus;
-                flow.soc = x[ke] / st.capacity_j;
-            }
-            None => {
-                dx[ke] = 0.0;
-                dx[ki] = 0.0;
-                dx[kl] = 0.0;
-            }
-        }
+        let mut node = BusNode { v: v_c, demand: h.bus, i_draw: 0.0, p_load: p_inv };
+        let r = slots(Block::BusParts);
+        self.bus.derivatives(s, &x[r.clone()], &mut node, &mut dx[r], &mut e[DRIVE_ACCOUNTS..], &mut flow);
         if let Some(out) = out {
             out.bus[s] = flow;
         }
-        i_draw
+        node.i_draw
     }
 
     /// The hull's derivatives (surge, sway, yaw, position, heading) under the total thrust
@@ -827,7 +593,7 @@ impl Plant {
     }
 
     /// Kinetic and electric energy stored in the state [J]: turbine rotors, bus capacitors,
-    /// propeller shafts and the ship (with its added mass).
+    /// propeller shafts, the bus parts and the ship (with its added mass).
     pub fn stored_energy(&self, x: &State) -> f64 {
         let mut e = 0.0;
         for k in 0..N_SETS {
@@ -838,17 +604,7 @@ impl Plant {
             e += 0.5 * self.shaft_inertia * x[omega_rm(s)] * x[omega_rm(s)];
         }
         e += 0.5 * self.surge_mass * x[SURGE] * x[SURGE];
-        if let Some(ss) = self.loads.as_ref().and_then(|l| l.ship_service.as_ref()) {
-            for s in 0..N_SHAFTS {
-                e += 0.5 * ss.l_h * x[filter_current(s)] * x[filter_current(s)];
-                e += 0.5 * ss.c_f * x[filter_voltage(s)] * x[filter_voltage(s)];
-            }
-        }
-        if self.storage.is_some() {
-            for s in 0..N_SHAFTS {
-                e += x[storage_energy(s)];
-            }
-        }
+        self.bus.add_stored_energy(&x[slots(Block::BusParts)], &mut e);
         let block = match &self.hull {
             Hull::Maneuvering { abkowitz, .. } => Some(&abkowitz.m22),
             Hull::Own { model, .. } => Some(&model.m22),

@@ -8,6 +8,23 @@ use super::Controllers;
 use crate::numerics::units::{m_s_to_kn, rad_s_to_rpm};
 use crate::signals::N_SIGNALS;
 
+/// The ship service filter's slots on each bus.
+const FILTER_CURRENT: [usize; N_SHAFTS] = filter_slots("filter_current");
+const FILTER_VOLTAGE: [usize; N_SHAFTS] = filter_slots("filter_voltage");
+
+const fn filter_slots(name: &str) -> [usize; N_SHAFTS] {
+    let mut out = [0; N_SHAFTS];
+    let mut s = 0;
+    while s < N_SHAFTS {
+        out[s] = match super::plant::part_slot(name, s) {
+            Some(i) => i,
+            None => panic!("no such bus part state"),
+        };
+        s += 1;
+    }
+    out
+}
+
 /// Everything a row is computed from, with the sums that several signals share done once.
 pub(super) struct Recording<'a> {
     pub t: f64,
@@ -73,10 +90,10 @@ impl Recording<'_> {
         self.ctl.held.slip[s]
     }
     pub fn filter_ripple_pu(&self) -> f64 {
-        let Some(f) = self.plant.loads.as_ref().and_then(|l| l.ship_service.as_ref()) else { return 0.0 };
+        let Some(f) = self.plant.bus.loads.as_ref().and_then(|l| l.ship_service.as_ref()) else { return 0.0 };
         (0..N_SHAFTS)
             .map(|s| {
-                let (i_l, v_f) = (self.x[super::plant::filter_current(s)], self.x[super::plant::filter_voltage(s)]);
+                let (i_l, v_f) = (self.x[FILTER_CURRENT[s]], self.x[FILTER_VOLTAGE[s]]);
                 (self.x[bus_voltage(s)] - f.r_ohm * i_l - v_f).abs() / self.v_ref
             })
             .fold(0.0, f64::max)

@@ -77,10 +77,7 @@ pub fn calm_water(p: &Plant, sc: &Scenario) -> Result<SteadyState, SimError> {
     // Each set carries half its shaft's inverter power at the bus set point, and half of the
     // bus's other loads (their filter's input at t = 0); with fewer online (the buses tied) each
     // online set an equal share of both shafts'.
-    let p_bus = match &p.loads {
-        Some(l) => p_inv_shaft + bus_loads_input_w(l, v_ref)?,
-        None => p_inv_shaft,
-    };
+    let p_bus = p.bus.steady_load_w(v_ref, p_inv_shaft).map_err(SimError::Setup)?;
     let online = crate::plant::online::mask(&sc.plant.online.sets).iter().filter(|&&o| o).count();
     let i_dc = if online == N_SETS {
         p_bus / (SETS_PER_SHAFT as f64 * v_ref)
@@ -106,48 +103,10 @@ pub fn calm_water(p: &Plant, sc: &Scenario) -> Result<SteadyState, SimError> {
         slip: slip0,
         peak_slip: peak,
         // A shaft at rest with no load draws nothing: the bus floats at the bridge voltage.
-        bus_voltage: if u0 > 0.0 || p.loads.is_some() { v_ref } else { flow.v_bridge },
+        bus_voltage: if u0 > 0.0 || p.bus.draws() { v_ref } else { flow.v_bridge },
         turbine_speed: w_t,
         throttle,
         field_current: i_f,
         field_voltage: p.generator.r_f * i_f,
     })
-}
-
-/// What the bus's other loads take from a bus held at `v_bus` at t = 0 [W]: the ship service
-/// filter's input at its steady state and the pulsed load.
-pub fn bus_loads_input_w(l: &crate::plant::bus_loads::BusLoads, v_bus: f64) -> Result<f64, SimError> {
-    let d = l.demand(0.0);
-    let ss = match &l.ship_service {
-        Some(f) => {
-            let (i_l, _) = f.steady(v_bus, d.ship_service_w).ok_or_else(|| {
-                SimError::Setup(format!(
-                    "plant.loads.ship_service_w = {}: more than the filter's resistance passes from the bus \
-                     (at most v^2 / (4 R_f) = {:.1} MW)",
-                    d.ship_service_w,
-                    v_bus * v_bus / (4.0 * f.r_ohm) / 1e6
-                ))
-            })?;
-            v_bus * i_l
-        }
-        None => 0.0,
-    };
-    Ok(ss + d.pulse_w)
-}
-
-/// The filter and storage states of one bus at the steady state with the bus at `v_bus` and its
-/// total load `p_load` [W]: (i_L, v_f) and (E, i_b, P_lp).
-pub fn bus_parts_start(p: &Plant, v_bus: f64, p_load: f64) -> ([f64; 2], [f64; 3]) {
-    let filter = match p.loads.as_ref().and_then(|l| l.ship_service.as_ref().map(|f| (l, f))) {
-        Some((l, f)) => {
-            let (i, v) = f.steady(v_bus, l.demand(0.0).ship_service_w).unwrap_or((0.0, v_bus));
-            [i, v]
-        }
-        None => [0.0; 2],
-    };
-    let storage = match &p.storage {
-        Some(st) => [st.e_set, 0.0, p_load],
-        None => [0.0; 3],
-    };
-    (filter, storage)
 }

@@ -1,8 +1,9 @@
 //! The run summary: statistics of every recorded signal, the power inventory of Table 5.6 at the
 //! final time, stage efficiencies (Table 5.7) and the energy books of the whole run.
 
-use super::plant::{Energy, N_ENERGY};
+use super::plant::{part_accounts, Energy, DRIVE_ACCOUNTS, N_ENERGY};
 use super::Trace;
+use crate::plant::bus_part::Book;
 use crate::scenario::Scenario;
 use crate::signals::{Signal, SIGNALS};
 use serde::Serialize;
@@ -192,9 +193,16 @@ impl Summary {
             + e(Energy::MotorMechLoss)
             + e(Energy::Brake)
             + (e(Energy::Propeller) - e(Energy::Thrust));
-        // The bus's other parts (all 0 without them: the books above as they were, bit for bit).
-        let losses = losses + e(Energy::FilterLoss) + e(Energy::StorageLoss);
-        let bus_loads = e(Energy::ShipService) + e(Energy::Pulsed);
+        // The bus parts' accounts, each added to its book in their order (all 0 without them:
+        // the books above as they were, bit for bit).
+        let book = |b: Book, start: Option<f64>| {
+            part_accounts()
+                .zip(DRIVE_ACCOUNTS..)
+                .filter(|(a, _)| a.book == b)
+                .fold(start, |sum, (_, i)| Some(sum.map_or(energy[i], |s| s + energy[i])))
+        };
+        let losses = book(Book::Loss, Some(losses)).unwrap_or(losses);
+        let bus_loads = book(Book::Load, None).unwrap_or(0.0);
         let residual = e(Energy::Turbine) - e(Energy::Ship) - bus_loads - losses - stored_change;
         Summary {
             scenario: scenario.name.clone(),
@@ -217,7 +225,7 @@ impl Summary {
                 brake: e(Energy::Brake),
                 regenerated: e(Energy::Regenerated),
                 bus_loads,
-                storage_to_bus: e(Energy::StorageToBus),
+                storage_to_bus: book(Book::ToBus, None).unwrap_or(0.0),
                 losses,
                 stored_change,
                 residual,

@@ -14,10 +14,9 @@
 //! The closed form it is checked against (`plant::bus_loads`): a stiff bus feeding a constant
 //! power P through L_f, R_f, C_f is stable while P < R_f C_f v_f^2 / L_f.
 
-use crate::scenario::Scenario;
+use crate::scenario::{BusParts, Scenario};
 use crate::sim::plant::{
-    bus_voltage, field_current, filter_current, filter_voltage, omega_rm, omega_t, storage_current, storage_energy,
-    storage_lowpass, Outputs, NX, N_SETS, N_SHAFTS, SURGE,
+    bus_voltage, field_current, omega_rm, omega_t, part_slot, Outputs, NX, N_SETS, N_SHAFTS, SURGE,
 };
 use crate::sim::Simulation;
 use nalgebra::DMatrix;
@@ -63,14 +62,12 @@ fn states(sc: &Scenario) -> Vec<(Vec<usize>, String)> {
         (shafts(bus_voltage), "bus_voltage".into()),
         (shafts(omega_rm), "shaft_speed".into()),
     ];
-    if sc.plant.loads.has_ship_service() {
-        s.push((shafts(filter_current), "filter_current".into()));
-        s.push((shafts(filter_voltage), "filter_voltage".into()));
-    }
-    if sc.plant.storage.energy_j > 0.0 {
-        s.push((shafts(storage_energy), "storage_energy".into()));
-        s.push((shafts(storage_current), "storage_current".into()));
-        s.push((shafts(storage_lowpass), "storage_lowpass".into()));
+    // Each bus part's states where it takes part (`BusPart::linearized`), in their order.
+    for (states, _) in BusParts::STATES.iter().zip(BusParts::linearized(&sc.plant)).filter(|(_, on)| *on) {
+        for name in states.iter() {
+            let slots = (0..N_SHAFTS).filter_map(|b| part_slot(name, b)).collect();
+            s.push((slots, name.to_string()));
+        }
     }
     s.push((vec![SURGE], "ship_speed".into()));
     s
