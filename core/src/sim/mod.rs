@@ -5,6 +5,7 @@
 pub mod conditioned;
 pub mod health;
 pub mod linearize;
+mod loops;
 pub mod lqg;
 pub mod plant;
 mod record;
@@ -31,6 +32,7 @@ use std::borrow::Cow;
 use std::f64::consts::PI;
 use std::fmt;
 
+use loops::Controllers;
 pub use summary::{Summary, TraceStats};
 
 /// A run that could not start or did not finish.
@@ -110,33 +112,6 @@ pub struct RunResult {
     pub summary: Summary,
 }
 
-/// All discrete controllers and their held outputs.
-#[derive(Debug, Clone, PartialEq)]
-struct Controllers {
-    governor: [Governor; N_SETS],
-    field: [FieldController; N_SETS],
-    /// With `controllers.design = "lqg_ltr"`: the design and each set's compensator, which then
-    /// run throttles and field voltages instead of `governor` and `field`.
-    lqg: Option<(lqg::LqgDesign, Vec<lqg::LqgSet>)>,
-    slip: [SlipController; N_SHAFTS],
-    /// Last peak-torque slip of each motor (warm start of the inline solver) [rad/s].
-    peak_slip: [f64; N_SHAFTS],
-    /// Ship speed loop (calm-water map, PI trim, ramp-limited shaft reference).
-    speed: SpeedController,
-    /// Whether the slip may go negative (AC braking).
-    allow_braking: bool,
-    /// Last peak braking slip (warm start) [rad/s].
-    peak_brake_slip: [f64; N_SHAFTS],
-    /// Heading: reference [rad] moving to the target at `heading_rate` [rad/s] (0: a step).
-    psi_ref: f64,
-    psi_target: f64,
-    heading_rate: f64,
-    autopilot: Autopilot,
-    held: Held,
-    /// What the health checks need that the trace does not show (the motors at their slip limit).
-    tracked: health::Tracked,
-}
-
 /// Divergence limits: a state outside them means the run has left the physics the model
 /// represents (a numerical blow-up or an impossible parameter set), and the run stops with the
 /// subsystem named instead of printing nonsense.
@@ -169,13 +144,8 @@ pub struct Simulation {
     out: Outputs,
     t: f64,
     step: u64,
-    total_steps: u64,
-    ctl_every: u64,
-    rec_every: u64,
-    dt: f64,
-    /// The fixed-step method (`stepping.integrator`).
-    method: crate::numerics::Integrator,
-    ts: f64,
+    /// The step and the loops' intervals.
+    clock: Clock,
     next_command: usize,
     speed_cmd: f64,
     stored0: f64,
@@ -183,11 +153,8 @@ pub struct Simulation {
     warnings: Vec<String>,
     /// Largest heading reference error seen with the rudder hard over [rad].
     max_heading_lag: f64,
-    /// The seaway (None in calm water), its sampling and refresh intervals in steps, the
-    /// propellers' ventilation states and the loss model.
+    /// The seaway (None in calm water), the propellers' ventilation states and the loss model.
     sea: Option<seaway::Seaway>,
-    sea_every: u64,
-    refresh_every: u64,
     vent: [Ventilation; N_SHAFTS],
     losses: LossParams,
     /// Each propeller's last (beta_T, beta_Q).
@@ -247,6 +214,51 @@ impl MultiRate {
     }
 }
 
+/// One clock for every loop of a run, built from `scenario.stepping` (and the run's length and
+/// the seaway's refresh): the time step and, in steps, how often each loop samples.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Clock {
+    /// Time step [s] and the fixed-step method (`stepping.dt_s`, `stepping.integrator`).
+    dt: f64,
+    method: crate::numerics::Integrator,
+    /// Steps of the whole run.
+    total_steps: u64,
+    /// The controllers' sample in steps, and its length [s].
+    ctl_every: u64,
+    ts: f64,
+    /// The recorded rows, the sea's samples and the RAO refresh, in steps.
+    rec_every: u64,
+    sea_every: u64,
+    refresh_every: u64,
+    /// Drive-train steps per hull step (1: one step for both).
+    hull_substeps: u64,
+}
+
+impl Clock {
+    fn new(sc: &Scenario) -> Clock {
+        let st = &sc.stepping;
+        let dt = st.dt_s;
+        let every = |interval_s: f64| (interval_s / dt).round().max(1.0) as u64;
+        let ctl_every = every(st.controller_sample_s);
+        Clock {
+            dt,
+            method: st.integrator,
+            total_steps: (sc.sim.duration_s / dt).round() as u64,
+            ctl_every,
+            ts: ctl_every as f64 * dt,
+            rec_every: every(sc.sim.record_interval_s),
+            sea_every: every(st.sea_sample_s),
+            refresh_every: every(sc.seakeeping.rao_refresh_s),
+            hull_substeps: st.hull_substeps.max(1) as u64,
+        }
+    }
+
+    /// Room for the recorded rows of a whole run.
+    fn rows(&self) -> usize {
+        (self.total_steps / self.rec_every + 2) as usize
+    }
+}
+
 impl Simulation {
     /// Builds the model and its initial state from a validated scenario.
     pub fn new(scenario: &Scenario) -> Result<Simulation, SimError> {
@@ -265,14 +277,8 @@ impl Simulation {
         let mut plant = Plant::new(scenario).map_err(SimError::Setup)?;
         let hub0 = scenario.ship_hull().map_err(SimError::Setup)?.hub_depth_m;
         plant.extra_resistance = extra;
-        let sim_cfg = &scenario.sim;
-        let stepping = &scenario.stepping;
-        let dt = stepping.dt_s;
-        let total_steps = (sim_cfg.duration_s / dt).round() as u64;
-        let ctl_every = (scenario.stepping.controller_sample_s / dt).round().max(1.0) as u64;
-        let rec_every = (sim_cfg.record_interval_s / dt).round().max(1.0) as u64;
-        let rows = (total_steps / rec_every + 2) as usize;
-        let trace = Trace::with_capacity(rows);
+        let clock = Clock::new(scenario);
+        let trace = Trace::with_capacity(clock.rows());
 
         // The speed loop's calm-water map: propellers without surface losses (beta_T = 1), no
         // added resistance.
@@ -313,12 +319,7 @@ impl Simulation {
             out: Outputs::default(),
             t: 0.0,
             step: 0,
-            total_steps,
-            ctl_every,
-            rec_every,
-            dt,
-            method: stepping.integrator,
-            ts: ctl_every as f64 * dt,
+            clock,
             next_command: 0,
             speed_cmd: 0.0,
             stored0: 0.0,
@@ -326,8 +327,6 @@ impl Simulation {
             warnings: crate::plant::storage::ignored_without_energy(&scenario.plant.storage).into_iter().collect(),
             max_heading_lag: 0.0,
             sea: seaway::Seaway::new(scenario).map_err(SimError::Setup)?,
-            sea_every: (scenario.stepping.sea_sample_s / dt).round().max(1.0) as u64,
-            refresh_every: (scenario.seakeeping.rao_refresh_s / dt).round().max(1.0) as u64,
             vent: [Ventilation::default(); N_SHAFTS],
             losses: scenario.seakeeping.loss_params(),
             last_beta: [(1.0, 1.0); N_SHAFTS],
@@ -337,7 +336,7 @@ impl Simulation {
             fuel_extrapolated: false,
             first_event: None,
             multi: MultiRate {
-                substeps: stepping.hull_substeps.max(1) as u64,
+                substeps: clock.hull_substeps,
                 start: 0,
                 thrust_work: 0.0,
                 va: 0.0,
@@ -414,7 +413,7 @@ impl Simulation {
     fn apply_commands(&mut self) {
         let cmds = &self.scenario.commands;
         let mut ordered = false;
-        while self.next_command < cmds.len() && cmds[self.next_command].t_s <= self.t + 0.5 * self.dt {
+        while self.next_command < cmds.len() && cmds[self.next_command].t_s <= self.t + 0.5 * self.clock.dt {
             let cmd = &cmds[self.next_command];
             if let Some(kn) = cmd.speed_kn {
                 self.speed_cmd = kn_to_m_s(kn);
@@ -486,85 +485,20 @@ impl Simulation {
         self.scenario.controllers.autopilot.max_turn_rate_nondim * speed_through_water(x).max(1.0) / l
     }
 
-    /// One sample of every discrete controller.
+    /// One sample of every discrete controller, loop by loop (`loops`).
     fn control(&mut self) {
-        let (ts, t_now) = (self.ts, self.t);
-        let now = self.multi.state_now(&self.x, self.step, self.dt);
+        let (ts, t_now) = (self.clock.ts, self.t);
+        let now = self.multi.state_now(&self.x, self.step, self.clock.dt);
         let x: &State = &now;
         let max_turn_rate = self.max_turn_rate_at(x);
-        let p = &self.plant;
-        let c = &mut self.ctl;
-        // Ship speed: calm-water map plus PI trim, then the ramp-limited shaft reference.
-        // Signed by the surge: a ship the waves carry astern is slower than any order ahead, and
-        // the loop drives ahead against it (with |U| it read as too fast and stopped the shafts).
-        let signed_speed = if x[SURGE] < 0.0 { -speed_through_water(x) } else { speed_through_water(x) };
-        let shaft_ref = c.speed.update(self.speed_cmd, signed_speed, ts);
-        match &mut c.lqg {
-            Some((d, sets)) => {
-                for (k, set) in sets.iter_mut().enumerate().filter(|(k, _)| c.held.online[*k]) {
-                    let (th, v_f) = set.update(d, x[omega_t(k)], x[bus_voltage(k / SETS_PER_SHAFT)], ts);
-                    c.held.throttle[k] = th;
-                    c.held.field_voltage[k] = v_f;
-                }
-            }
-            None => {
-                // An offline set's controllers rest with it.
-                for k in (0..N_SETS).filter(|&k| c.held.online[k]) {
-                    let err = (p.turbine.rated_speed - x[omega_t(k)]) / p.turbine.rated_speed;
-                    c.held.throttle[k] = c.governor[k].update(err, ts);
-                    let s = k / SETS_PER_SHAFT;
-                    c.held.field_voltage[k] = c.field[k].update(x[bus_voltage(s)], ts);
-                }
-            }
-        }
-        for k in 0..N_SETS {
-            let w = x[omega_t(k)];
-            let over = c.held.online[k] && health::set_overloaded(p.turbine.torque(c.held.throttle[k], w) * w, w, p);
-            c.tracked.overload[k].sample(over, t_now, ts);
-        }
-        for s in 0..N_SHAFTS {
-            let w_rm = x[omega_rm(s)];
-            let v_max = p.dc_link.max_phase_voltage(x[bus_voltage(s)]);
-            let err = p.motor.pole_pairs * (shaft_ref - w_rm);
-            // The upper slip limit (power-limited slip below the peak-torque slip) takes two
-            // iterative solves; it changes nothing unless the PI's output or integrator would
-            // reach it. Both are below it when the torque there still rises with slip (below the
-            // peak) and gives less than rated power, which two circuit evaluations show.
-            let reach = c.slip[s].pi.unsaturated(err).max(c.slip[s].pi.integral + c.slip[s].pi.ki * err * ts);
-            // (With a zero-slip offset the output may jump to the offset: it must lie below too.)
-            let reach = reach.max(c.slip[s].offset);
-            let limit = if p.motor.below_slip_limits(w_rm, v_max, reach, p.motor.p_rated) {
-                f64::INFINITY
-            } else {
-                let peak = p.motor.peak_torque_slip(w_rm, v_max, c.peak_slip[s]);
-                c.peak_slip[s] = peak;
-                p.motor.power_limited_slip(w_rm, v_max, peak, p.motor.p_rated)
-            };
-            let lower = if c.allow_braking {
-                let peak_b = p.motor.peak_braking_slip(w_rm, v_max, c.peak_brake_slip[s]);
-                c.peak_brake_slip[s] = peak_b;
-                p.motor.power_limited_braking_slip(w_rm, v_max, peak_b, p.motor.p_rated)
-            } else {
-                0.0
-            };
-            c.held.slip[s] = c.slip[s].update(err, lower, limit, ts);
-            c.tracked.slip_limit[s].sample(c.held.slip[s] >= limit, t_now, ts);
-        }
-        // Heading: the reference ramps to the target; the autopilot steers the rudder.
+        let (p, c) = (&self.plant, &mut self.ctl);
+        let shaft_ref = c.speed_loop(x, self.speed_cmd, ts);
+        c.set_loops(p, x, ts);
+        c.track_overload(p, x, t_now, ts);
+        c.slip_loops(p, x, shaft_ref, t_now, ts);
         if p.hull.turns() {
-            let gap = c.psi_target - c.psi_ref;
-            let rate = c.heading_rate.min(max_turn_rate);
-            let r_ref = if rate > 0.0 && gap.abs() > rate * ts {
-                c.psi_ref += gap.signum() * rate * ts;
-                gap.signum() * rate
-            } else {
-                c.psi_ref = c.psi_target;
-                0.0
-            };
-            let err = c.psi_ref - x[HEADING];
-            c.held.rudder = c.autopilot.update(err, r_ref - x[YAW_RATE], ts);
-            if c.held.rudder.abs() >= c.autopilot.max_angle - 1e-9 {
-                self.max_heading_lag = self.max_heading_lag.max(err.abs());
+            if let Some(lag) = c.heading_loop(x, max_turn_rate, ts) {
+                self.max_heading_lag = self.max_heading_lag.max(lag);
             }
         }
     }
@@ -681,25 +615,25 @@ impl Simulation {
 
     /// Fraction of the run done, 0 to 1.
     pub fn progress(&self) -> f64 {
-        if self.total_steps == 0 {
+        if self.clock.total_steps == 0 {
             1.0
         } else {
-            self.step as f64 / self.total_steps as f64
+            self.step as f64 / self.clock.total_steps as f64
         }
     }
 
     /// Whether the run has reached its duration.
     pub fn done(&self) -> bool {
-        self.step >= self.total_steps
+        self.step >= self.clock.total_steps
     }
 
     /// The seaway's part of a step: RAO refresh and wave sums when due, then the hub depth at
     /// the middle of the step and the propellers' surface losses held over it.
     fn sea_step(&mut self) {
-        let now = self.multi.state_now(&self.x, self.step, self.dt);
+        let now = self.multi.state_now(&self.x, self.step, self.clock.dt);
         let x: &State = &now;
         let Some(sea) = self.sea.as_mut() else { return };
-        if self.step % self.refresh_every == 0 {
+        if self.step % self.clock.refresh_every == 0 {
             let k = &self.scenario.seakeeping;
             sea.refresh_if_moved(
                 speed_through_water(x),
@@ -708,7 +642,7 @@ impl Simulation {
                 k.rao_refresh_heading_deg.to_radians(),
             );
         }
-        if self.step % self.sea_every == 0 {
+        if self.step % self.clock.sea_every == 0 {
             let (sp, cp) = (libm::sin(x[HEADING]), libm::cos(x[HEADING]));
             let xd = x[SURGE] * cp - x[SWAY] * sp;
             let yd = x[SURGE] * sp + x[SWAY] * cp;
@@ -717,7 +651,7 @@ impl Simulation {
             self.ctl.held.sea.wave_fy = s.fy;
             self.ctl.held.sea.wave_mz = s.mz;
         }
-        let hub = sea.last.hub_at(self.t + 0.5 * self.dt);
+        let hub = sea.last.hub_at(self.t + 0.5 * self.clock.dt);
         let radius = 0.5 * self.plant.prop_diameter;
         self.h_over_r = hub.map(|h| h / radius);
         if !self.scenario.seakeeping.surface_losses {
@@ -726,7 +660,7 @@ impl Simulation {
         for s in 0..N_SHAFTS {
             let h_r = self.h_over_r[s];
             let n_hz = x[omega_rm(s)] / (2.0 * PI);
-            let tv = self.vent[s].step(&self.losses, h_r, n_hz, self.dt);
+            let tv = self.vent[s].step(&self.losses, h_r, n_hz, self.clock.dt);
             // Eq. 2.13's beta_T = beta_TA beta_TV, beta_Q = beta_T^m; beta_T holds for many steps
             // while a propeller is ventilated (0.3): then beta_Q is the last one, without pow.
             let bt = beta_out_of_water(h_r) * tv;
@@ -754,14 +688,14 @@ impl Simulation {
             self.x[thrust_slot] = 0.0;
             m.va = self.plant.inflow(self.x[SURGE], self.x[SWAY], self.x[YAW_RATE]).speed;
         }
-        drive_step(&self.plant, &mut self.x, &self.ctl.held, m.va, self.dt, self.method);
+        drive_step(&self.plant, &mut self.x, &self.ctl.held, m.va, self.clock.dt, self.clock.method);
         let done = self.step + 1;
-        if done % m.substeps == 0 || done == self.total_steps {
-            let span = (done - m.start) as f64 * self.dt;
+        if done % m.substeps == 0 || done == self.clock.total_steps {
+            let span = (done - m.start) as f64 * self.clock.dt;
             let thrust = self.x[thrust_slot] / span;
             self.x[thrust_slot] = m.thrust_work;
             let before = self.x;
-            hull_step(&self.plant, &mut self.x, &self.ctl.held, thrust, span, self.method);
+            hull_step(&self.plant, &mut self.x, &self.ctl.held, thrust, span, self.clock.method);
             for (i, r) in m.rate.iter_mut().enumerate() {
                 *r = (self.x[SURGE + i] - before[SURGE + i]) / span;
             }
@@ -777,9 +711,9 @@ impl Simulation {
     /// of where a run's time goes); the run is the same, bit for bit.
     #[inline(always)]
     pub fn advance_probed(&mut self, max_steps: u64, probe: &mut impl StepProbe) -> Result<(), SimError> {
-        let end = (self.step + max_steps).min(self.total_steps);
+        let end = (self.step + max_steps).min(self.clock.total_steps);
         while self.step < end {
-            if self.step % self.ctl_every == 0 {
+            if self.step % self.clock.ctl_every == 0 {
                 self.control();
             }
             probe.done(StepPart::Controllers);
@@ -789,10 +723,10 @@ impl Simulation {
             probe.done(StepPart::Sea);
             if let Some(l) = &self.plant.bus.loads {
                 // The loads' profile at the step's middle, held over it.
-                self.ctl.held.bus = l.demand(self.t + 0.5 * self.dt);
+                self.ctl.held.bus = l.demand(self.t + 0.5 * self.clock.dt);
             }
             if self.multi.substeps == 1 {
-                plant_step(&self.plant, &mut self.x, &self.ctl.held, self.dt, self.method);
+                plant_step(&self.plant, &mut self.x, &self.ctl.held, self.clock.dt, self.clock.method);
             } else {
                 self.multi_rate_step();
             }
@@ -805,10 +739,10 @@ impl Simulation {
                 });
             }
             self.step += 1;
-            self.t = self.step as f64 * self.dt;
+            self.t = self.step as f64 * self.clock.dt;
             self.check()?;
             self.apply_commands();
-            if self.step % self.rec_every == 0 {
+            if self.step % self.clock.rec_every == 0 {
                 self.refresh_outputs();
                 self.record();
             }
@@ -851,7 +785,7 @@ impl Simulation {
 
     /// Record interval in steps and time step [s].
     pub fn record_every(&self) -> u64 {
-        self.rec_every
+        self.clock.rec_every
     }
 
     /// Shaft power of each gas turbine now [W].
@@ -941,7 +875,7 @@ impl Prototype {
         sim.scenario.sim.seed = seed;
         sim.sea = seaway::Seaway::new(&sim.scenario).map_err(SimError::Setup)?;
         // A clone keeps the rows' length, not their room.
-        sim.trace = Trace::with_capacity((sim.total_steps / sim.rec_every + 2) as usize);
+        sim.trace = Trace::with_capacity(sim.clock.rows());
         Ok(sim.start())
     }
 }
@@ -955,6 +889,6 @@ pub fn run(scenario: &Scenario) -> Result<RunResult, SimError> {
 
 /// Speed through the water sqrt(u^2 + v^2) [m/s]; written out (not `hypot`, which calls the
 /// platform's libm) so native and wasm runs agree to the bit.
-fn speed_through_water(x: &State) -> f64 {
+pub(crate) fn speed_through_water(x: &State) -> f64 {
     (x[SURGE] * x[SURGE] + x[SWAY] * x[SWAY]).sqrt()
 }
