@@ -5,7 +5,7 @@
 use aes_core::plant::bus_loads::ShipService;
 use aes_core::scenario::presets::acceleration;
 use aes_core::scenario::Scenario;
-use aes_core::sim::plant::{bus_voltage, part_slot};
+use aes_core::sim::plant::{part_slot, slot};
 use aes_core::sim::Simulation;
 use aes_core::studies::stability_map::{boundary, check_grid, map, stiff_bus_check, Axis, STIFF_BUS_FILTERS_F};
 
@@ -55,7 +55,7 @@ fn ringing(sc: &Scenario, windows: &[(f64, f64)]) -> (Vec<f64>, Vec<String>) {
         sim.advance(1).unwrap();
         let (t, x) = (sim.time(), sim.state());
         let (i_l, v_f) = (part_slot("filter_current", 0).unwrap(), part_slot("filter_voltage", 0).unwrap());
-        let v = (x[bus_voltage(0)] - r * x[i_l] - x[v_f]).abs();
+        let v = (x[slot::bus_voltage(0)] - r * x[i_l] - x[v_f]).abs();
         for (k, w) in windows.iter().enumerate() {
             if t >= w.0 && t < w.1 {
                 top[k] = top[k].max(v);

@@ -78,22 +78,29 @@ pub const NX: usize = {
     n
 };
 
-/// Turbine shaft speed of set k [rad/s].
-pub const fn omega_t(k: usize) -> usize {
-    slots(Block::TurbineSpeed).start + k
+/// The slots of the drive train's states, by machine: `x[slot::bus_voltage(s)]` is a voltage,
+/// `slot::bus_voltage(s)` an index.
+pub mod slot {
+    use super::{slots, Block};
+
+    /// Turbine shaft speed of set k [rad/s].
+    pub const fn turbine_speed(k: usize) -> usize {
+        slots(Block::TurbineSpeed).start + k
+    }
+    /// Field current of set k [A].
+    pub const fn field_current(k: usize) -> usize {
+        slots(Block::FieldCurrent).start + k
+    }
+    /// Bus voltage of shaft s [V].
+    pub const fn bus_voltage(s: usize) -> usize {
+        slots(Block::BusVoltage).start + s
+    }
+    /// Propeller shaft speed of shaft s [rad/s].
+    pub const fn shaft_speed(s: usize) -> usize {
+        slots(Block::ShaftSpeed).start + s
+    }
 }
-/// Field current of set k [A].
-pub const fn field_current(k: usize) -> usize {
-    slots(Block::FieldCurrent).start + k
-}
-/// Bus voltage of shaft s [V].
-pub const fn bus_voltage(s: usize) -> usize {
-    slots(Block::BusVoltage).start + s
-}
-/// Propeller shaft speed of shaft s [rad/s].
-pub const fn omega_rm(s: usize) -> usize {
-    slots(Block::ShaftSpeed).start + s
-}
+
 /// The slot of state `name` of a bus part on bus `s` (`name` one of [`BusParts::STATES`]: say
 /// "filter_current" or "storage_energy"); None for another name.
 pub const fn part_slot(name: &str, s: usize) -> Option<usize> {

@@ -9,9 +9,7 @@
 //! [fraction of full fuel] and Delta v_f / v_f0, outputs turbine speed / set point - 1 and bus
 //! voltage / set point - 1.
 
-use super::plant::{
-    bus_voltage, field_current, omega_rm, omega_t, Held, Outputs, Plant, State, N_SETS, N_SHAFTS, SURGE,
-};
+use super::plant::{slot, Held, Outputs, Plant, State, N_SETS, N_SHAFTS, SURGE};
 use super::{SimError, Simulation};
 use crate::control::design::state_space::StateSpace;
 use crate::scenario::Scenario;
@@ -38,10 +36,10 @@ pub struct DriveTrainModel {
 /// dynamics of their own; sway and yaw stay zero on a straight course.
 fn dynamic_states() -> Vec<(Vec<usize>, String)> {
     vec![
-        ((0..N_SETS).map(omega_t).collect(), "turbine_speed".into()),
-        ((0..N_SETS).map(field_current).collect(), "field_current".into()),
-        ((0..N_SHAFTS).map(bus_voltage).collect(), "bus_voltage".into()),
-        ((0..N_SHAFTS).map(omega_rm).collect(), "shaft_speed".into()),
+        ((0..N_SETS).map(slot::turbine_speed).collect(), "turbine_speed".into()),
+        ((0..N_SETS).map(slot::field_current).collect(), "field_current".into()),
+        ((0..N_SHAFTS).map(slot::bus_voltage).collect(), "bus_voltage".into()),
+        ((0..N_SHAFTS).map(slot::shaft_speed).collect(), "shaft_speed".into()),
         (vec![SURGE], "ship_speed".into()),
     ]
 }
@@ -156,8 +154,8 @@ mod tests {
             let mut u = nalgebra::DVector::zeros(2);
             u[col] = du;
             let (mut worst, mut peak) = ([0.0f64; 2], [0.0f64; 2]);
-            let w0: f64 = (0..N_SETS).map(|k| m.x0[omega_t(k)]).sum::<f64>() / N_SETS as f64;
-            let v0: f64 = (0..N_SHAFTS).map(|s| m.x0[bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
+            let w0: f64 = (0..N_SETS).map(|k| m.x0[slot::turbine_speed(k)]).sum::<f64>() / N_SETS as f64;
+            let v0: f64 = (0..N_SHAFTS).map(|s| m.x0[slot::bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
             for _ in 0..1000 {
                 plant_step(plant, &mut x, &h, dt, crate::numerics::Integrator::Rk4);
                 // The linear model by RK4 as well.
@@ -168,8 +166,8 @@ mod tests {
                 let k4 = f(&(&z + &k3 * dt));
                 z += (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (dt / 6.0);
                 let y_lin = &m.system.c * &z;
-                let w: f64 = (0..N_SETS).map(|k| x[omega_t(k)]).sum::<f64>() / N_SETS as f64;
-                let v: f64 = (0..N_SHAFTS).map(|s| x[bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
+                let w: f64 = (0..N_SETS).map(|k| x[slot::turbine_speed(k)]).sum::<f64>() / N_SETS as f64;
+                let v: f64 = (0..N_SHAFTS).map(|s| x[slot::bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
                 let y_nl = [(w - w0) / m.turbine_speed_base, (v - v0) / m.bus_voltage_base];
                 for o in 0..2 {
                     worst[o] = worst[o].max((y_nl[o] - y_lin[o]).abs());

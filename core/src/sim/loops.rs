@@ -4,9 +4,7 @@
 
 use super::health;
 use super::lqg;
-use super::plant::{
-    bus_voltage, omega_rm, omega_t, Held, Plant, State, HEADING, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, YAW_RATE,
-};
+use super::plant::{slot, Held, Plant, State, HEADING, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, YAW_RATE};
 use super::speed_through_water;
 use crate::control::speed::SpeedController;
 use crate::plant::generator::FieldController;
@@ -57,7 +55,8 @@ impl Controllers {
         match &mut c.lqg {
             Some((d, sets)) => {
                 for (k, set) in sets.iter_mut().enumerate().filter(|(k, _)| c.held.online[*k]) {
-                    let (th, v_f) = set.update(d, x[omega_t(k)], x[bus_voltage(k / SETS_PER_SHAFT)], ts);
+                    let (th, v_f) =
+                        set.update(d, x[slot::turbine_speed(k)], x[slot::bus_voltage(k / SETS_PER_SHAFT)], ts);
                     c.held.throttle[k] = th;
                     c.held.field_voltage[k] = v_f;
                 }
@@ -65,10 +64,10 @@ impl Controllers {
             None => {
                 // An offline set's controllers rest with it.
                 for k in (0..N_SETS).filter(|&k| c.held.online[k]) {
-                    let err = (p.turbine.rated_speed - x[omega_t(k)]) / p.turbine.rated_speed;
+                    let err = (p.turbine.rated_speed - x[slot::turbine_speed(k)]) / p.turbine.rated_speed;
                     c.held.throttle[k] = c.governor[k].update(err, ts);
                     let s = k / SETS_PER_SHAFT;
-                    c.held.field_voltage[k] = c.field[k].update(x[bus_voltage(s)], ts);
+                    c.held.field_voltage[k] = c.field[k].update(x[slot::bus_voltage(s)], ts);
                 }
             }
         }
@@ -78,7 +77,7 @@ impl Controllers {
     pub(crate) fn track_overload(&mut self, p: &Plant, x: &State, t_now: f64, ts: f64) {
         let c = self;
         for k in 0..N_SETS {
-            let w = x[omega_t(k)];
+            let w = x[slot::turbine_speed(k)];
             let over = c.held.online[k] && health::set_overloaded(p.turbine.torque(c.held.throttle[k], w) * w, w, p);
             c.tracked.overload[k].sample(over, t_now, ts);
         }
@@ -89,8 +88,8 @@ impl Controllers {
     pub(crate) fn slip_loops(&mut self, p: &Plant, x: &State, shaft_ref: f64, t_now: f64, ts: f64) {
         let c = self;
         for s in 0..N_SHAFTS {
-            let w_rm = x[omega_rm(s)];
-            let v_max = p.dc_link.max_phase_voltage(x[bus_voltage(s)]);
+            let w_rm = x[slot::shaft_speed(s)];
+            let v_max = p.dc_link.max_phase_voltage(x[slot::bus_voltage(s)]);
             let err = p.motor.pole_pairs * (shaft_ref - w_rm);
             // The upper slip limit (power-limited slip below the peak-torque slip) takes two
             // iterative solves; it changes nothing unless the PI's output or integrator would

@@ -24,9 +24,8 @@ use crate::scenario::{ControllerDesign, HullModelKind, Scenario};
 use crate::ship::rudder::Autopilot;
 use crate::signals::{Signal, N_SIGNALS};
 use plant::{
-    bus_voltage, drive_step, field_current, hull_step, omega_rm, omega_t, plant_step, Energy, Held, Outputs, Plant,
-    State, ENERGY, ENERGY0, HEADING, NX, N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE,
-    Y_POS,
+    drive_step, hull_step, plant_step, slot, Energy, Held, Outputs, Plant, State, ENERGY, ENERGY0, HEADING, NX,
+    N_ENERGY, N_SETS, N_SHAFTS, SETS_PER_SHAFT, SURGE, SWAY, X_POS, YAW_RATE, Y_POS,
 };
 use std::borrow::Cow;
 use std::f64::consts::PI;
@@ -365,8 +364,8 @@ impl Simulation {
         let sc = &self.scenario;
         let st = steady::calm_water(&self.plant, sc)?;
         for k in 0..N_SETS {
-            self.x[omega_t(k)] = st.turbine_speed;
-            self.x[field_current(k)] = st.field_current;
+            self.x[slot::turbine_speed(k)] = st.turbine_speed;
+            self.x[slot::field_current(k)] = st.field_current;
             self.ctl.governor[k] = Governor::new(&sc.controllers.governor, st.throttle);
             self.ctl.field[k] =
                 FieldController::new(&sc.field_control(), st.field_voltage, self.plant.generator.v_f_max);
@@ -377,8 +376,8 @@ impl Simulation {
             *sets = vec![lqg::LqgSet::new(d, st.throttle, st.field_voltage); N_SETS];
         }
         for s in 0..N_SHAFTS {
-            self.x[bus_voltage(s)] = st.bus_voltage;
-            self.x[omega_rm(s)] = st.shaft_speed;
+            self.x[slot::bus_voltage(s)] = st.bus_voltage;
+            self.x[slot::shaft_speed(s)] = st.shaft_speed;
             self.ctl.slip[s].pi.integral = st.slip;
             self.ctl.held.slip[s] = st.slip;
         }
@@ -466,9 +465,9 @@ impl Simulation {
         h.online = self.sets.online();
         let tied = !self.sets.all_online();
         if tied && !h.tied {
-            let mean = (0..N_SHAFTS).map(|s| self.x[bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
+            let mean = (0..N_SHAFTS).map(|s| self.x[slot::bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
             for s in 0..N_SHAFTS {
-                self.x[bus_voltage(s)] = mean;
+                self.x[slot::bus_voltage(s)] = mean;
             }
         }
         h.tied = tied;
@@ -513,7 +512,7 @@ impl Simulation {
         let p = &self.plant;
         let bad = |sub: String, msg: String| Err(SimError::Diverged { time_s: self.t, subsystem: sub, message: msg });
         for k in 0..N_SETS {
-            let w = self.x[omega_t(k)];
+            let w = self.x[slot::turbine_speed(k)];
             let (lo, hi) = limits::TURBINE_SPEED_PU;
             if !w.is_finite() || w < lo * p.turbine.rated_speed || w > hi * p.turbine.rated_speed {
                 return bad(
@@ -521,14 +520,14 @@ impl Simulation {
                     format!("speed {:.0} rpm outside {} % to {} % of rated", rad_s_to_rpm(w), lo * 100.0, hi * 100.0),
                 );
             }
-            let i_f = self.x[field_current(k)];
+            let i_f = self.x[slot::field_current(k)];
             if !i_f.is_finite() || i_f.abs() > limits::FIELD_CURRENT_A {
                 return bad(format!("generator {} field", k + 1), format!("field current {i_f:.3e} A"));
             }
         }
         let v_ref = self.scenario.bus_voltage_ref_v();
         for s in 0..N_SHAFTS {
-            let v = self.x[bus_voltage(s)];
+            let v = self.x[slot::bus_voltage(s)];
             let (lo, hi) = limits::BUS_VOLTAGE_PU;
             if !v.is_finite() || v < lo * v_ref || v > hi * v_ref {
                 return bad(
@@ -536,7 +535,7 @@ impl Simulation {
                     format!("voltage {v:.0} V outside {} % to {} % of the set point", lo * 100.0, hi * 100.0),
                 );
             }
-            let w = self.x[omega_rm(s)];
+            let w = self.x[slot::shaft_speed(s)];
             if !w.is_finite() || w.abs() > limits::SHAFT_SPEED_OF_MAX_REF * self.ctl.speed.max_shaft_speed.max(1.0) {
                 return bad(format!("propeller shaft {}", s + 1), format!("speed {:.0} rpm", rad_s_to_rpm(w)));
             }
@@ -577,7 +576,7 @@ impl Simulation {
         for k in 0..N_SETS {
             let (f, ex) = crate::plant::fuel::fuel_power(
                 &self.fuel_curve,
-                o.turbine_torque[k] * x[omega_t(k)],
+                o.turbine_torque[k] * x[slot::turbine_speed(k)],
                 self.scenario.plant.turbine.rated_power_w,
                 eta,
             );
@@ -598,8 +597,8 @@ impl Simulation {
             // (up to 0.004 apart at 25 kn in SS6), which let the page draw the disc out of the
             // water under a label h/R >= 1.
             h_over_r: sea.hub.map(|h| h / (0.5 * self.plant.prop_diameter)),
-            p_turbine: (0..N_SETS).map(|k| o.turbine_torque[k] * x[omega_t(k)]).sum(),
-            p_motor: (0..N_SHAFTS).map(|s| o.motor[s].torque * x[omega_rm(s)]).sum(),
+            p_turbine: (0..N_SETS).map(|k| o.turbine_torque[k] * x[slot::turbine_speed(k)]).sum(),
+            p_motor: (0..N_SHAFTS).map(|s| o.motor[s].torque * x[slot::shaft_speed(s)]).sum(),
             fuel,
         };
         let row = record::row(&rec);
@@ -659,7 +658,7 @@ impl Simulation {
         }
         for s in 0..N_SHAFTS {
             let h_r = self.h_over_r[s];
-            let n_hz = x[omega_rm(s)] / (2.0 * PI);
+            let n_hz = x[slot::shaft_speed(s)] / (2.0 * PI);
             let tv = self.vent[s].step(&self.losses, h_r, n_hz, self.clock.dt);
             // Eq. 2.13's beta_T = beta_TA beta_TV, beta_Q = beta_T^m; beta_T holds for many steps
             // while a propeller is ventilated (0.3): then beta_Q is the last one, without pow.
@@ -791,7 +790,7 @@ impl Simulation {
     /// Shaft power of each gas turbine now [W].
     pub fn turbine_power(&mut self) -> [f64; N_SETS] {
         self.refresh_outputs();
-        std::array::from_fn(|k| self.out.turbine_torque[k] * self.x[omega_t(k)])
+        std::array::from_fn(|k| self.out.turbine_torque[k] * self.x[slot::turbine_speed(k)])
     }
 
     /// Ends the run: the trace and its summary.

@@ -386,13 +386,13 @@ impl Plant {
         let u = u_book;
         let mut thrust = 0.0;
         for s in 0..N_SHAFTS {
-            let v_c = x[bus_voltage(s)];
+            let v_c = x[slot::bus_voltage(s)];
             let mut i_rect = 0.0;
             for k in s * SETS_PER_SHAFT..(s + 1) * SETS_PER_SHAFT {
                 if !h.online[k] {
                     // Breaker open, not burning: nothing flows and the states rest.
-                    dx[omega_t(k)] = 0.0;
-                    dx[field_current(k)] = 0.0;
+                    dx[slot::turbine_speed(k)] = 0.0;
+                    dx[slot::field_current(k)] = 0.0;
                     if let Some(out) = out.as_deref_mut() {
                         out.turbine_torque[k] = 0.0;
                         out.friction_torque[k] = 0.0;
@@ -402,16 +402,16 @@ impl Plant {
                     }
                     continue;
                 }
-                let w_t = x[omega_t(k)];
-                let i_f = x[field_current(k)];
+                let w_t = x[slot::turbine_speed(k)];
+                let i_f = x[slot::field_current(k)];
                 let q_t = self.turbine.torque(h.throttle[k], w_t); // eq. 2.1
                 let q_fric = self.generator.friction_torque(w_t);
                 let e_a = self.generator.emf(w_t, i_f);
                 let flow = self.dc_link.rectify(e_a, self.generator.electrical_speed(w_t), v_c, self.reversible); // eqs. 2.8-2.9
                                                                                                                   // Eq. 2.3 with the shaft (not electrical) speed, so that power is conserved for any pole count.
                 let q_g = if w_t.abs() > 1e-6 { flow.p_generator / w_t } else { 0.0 };
-                dx[omega_t(k)] = (q_t - q_fric - q_g) / self.turbine.inertia; // eq. 2.4 in rad/s
-                dx[field_current(k)] = self.generator.field_current_rate(h.field_voltage[k], i_f); // eq. 2.2
+                dx[slot::turbine_speed(k)] = (q_t - q_fric - q_g) / self.turbine.inertia; // eq. 2.4 in rad/s
+                dx[slot::field_current(k)] = self.generator.field_current_rate(h.field_voltage[k], i_f); // eq. 2.2
                 i_rect += flow.i_dc;
                 e[Energy::Turbine as usize] += q_t * w_t;
                 e[Energy::Friction as usize] += q_fric * w_t;
@@ -426,7 +426,7 @@ impl Plant {
                     out.rectifier[k] = flow;
                 }
             }
-            let w_rm = x[omega_rm(s)];
+            let w_rm = x[slot::shaft_speed(s)];
             let v_max = self.dc_link.max_phase_voltage(v_c);
             let omega_e = self.motor.pole_pairs * w_rm + h.slip[s];
             let v_m = self.motor.phase_voltage(omega_e, v_max);
@@ -440,8 +440,8 @@ impl Plant {
                 dx[slots(Block::BusParts)].fill(0.0);
                 i_rect
             };
-            dx[bus_voltage(s)] = self.dc_link.bus_voltage_rate(i_in, mp.p_in + p_brake, v_c); // eqs. 2.7, 2.10
-            dx[omega_rm(s)] = (mp.torque - pl.torque_nm) / self.shaft_inertia; // eq. 2.6 in rad/s
+            dx[slot::bus_voltage(s)] = self.dc_link.bus_voltage_rate(i_in, mp.p_in + p_brake, v_c); // eqs. 2.7, 2.10
+            dx[slot::shaft_speed(s)] = (mp.torque - pl.torque_nm) / self.shaft_inertia; // eq. 2.6 in rad/s
             thrust += pl.thrust_n;
             e[Energy::Inverter as usize] += mp.p_in;
             e[Energy::MotorStatorLoss as usize] += mp.p_stator_loss;
@@ -463,9 +463,9 @@ impl Plant {
         if h.tied {
             // The tie makes the buses one node of twice the capacitance (eq. 2.10 summed over the
             // two); they are equal when it closes (`Simulation`), so they stay equal.
-            let rate = (0..N_SHAFTS).map(|s| dx[bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
+            let rate = (0..N_SHAFTS).map(|s| dx[slot::bus_voltage(s)]).sum::<f64>() / N_SHAFTS as f64;
             for s in 0..N_SHAFTS {
-                dx[bus_voltage(s)] = rate;
+                dx[slot::bus_voltage(s)] = rate;
             }
         }
         thrust
@@ -597,11 +597,11 @@ impl Plant {
     pub fn stored_energy(&self, x: &State) -> f64 {
         let mut e = 0.0;
         for k in 0..N_SETS {
-            e += 0.5 * self.turbine.inertia * x[omega_t(k)] * x[omega_t(k)];
+            e += 0.5 * self.turbine.inertia * x[slot::turbine_speed(k)] * x[slot::turbine_speed(k)];
         }
         for s in 0..N_SHAFTS {
-            e += 0.5 * self.dc_link.capacitance * x[bus_voltage(s)] * x[bus_voltage(s)];
-            e += 0.5 * self.shaft_inertia * x[omega_rm(s)] * x[omega_rm(s)];
+            e += 0.5 * self.dc_link.capacitance * x[slot::bus_voltage(s)] * x[slot::bus_voltage(s)];
+            e += 0.5 * self.shaft_inertia * x[slot::shaft_speed(s)] * x[slot::shaft_speed(s)];
         }
         e += 0.5 * self.surge_mass * x[SURGE] * x[SURGE];
         self.bus.add_stored_energy(&x[slots(Block::BusParts)], &mut e);

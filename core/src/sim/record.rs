@@ -1,7 +1,7 @@
 //! Recording: the row of every signal of [`crate::signals`], computed from the simulator's state by
 //! the expressions of the one signal table (`for_each_signal!`).
 
-use super::plant::{bus_voltage, field_current, omega_rm, omega_t, Outputs, Plant, State};
+use super::plant::{slot, Outputs, Plant, State};
 use super::plant::{HEADING, N_SETS, N_SHAFTS, SURGE, SWAY, X_POS, YAW_RATE, Y_POS};
 use super::seaway::SeaSample;
 use super::Controllers;
@@ -63,25 +63,25 @@ impl Recording<'_> {
         m_s_to_kn(self.speed_cmd)
     }
     pub fn shaft_rpm(&self, s: usize) -> f64 {
-        rad_s_to_rpm(self.x[omega_rm(s)])
+        rad_s_to_rpm(self.x[slot::shaft_speed(s)])
     }
     pub fn shaft_ref_rpm(&self) -> f64 {
         rad_s_to_rpm(self.ctl.speed.shaft_ref)
     }
     pub fn turbine_speed_pu(&self, k: usize) -> f64 {
-        self.x[omega_t(k)] / self.plant.turbine.rated_speed
+        self.x[slot::turbine_speed(k)] / self.plant.turbine.rated_speed
     }
     pub fn throttle(&self, k: usize) -> f64 {
         self.ctl.held.throttle[k]
     }
     pub fn field_current(&self, k: usize) -> f64 {
-        self.x[field_current(k)]
+        self.x[slot::field_current(k)]
     }
     pub fn bus_voltage(&self, s: usize) -> f64 {
-        self.x[bus_voltage(s)]
+        self.x[slot::bus_voltage(s)]
     }
     pub fn bus_voltage_pu(&self, s: usize) -> f64 {
-        self.x[bus_voltage(s)] / self.v_ref
+        self.x[slot::bus_voltage(s)] / self.v_ref
     }
     pub fn motor_voltage_pu(&self, s: usize) -> f64 {
         self.out.motor_voltage[s] / self.plant.motor.v_rated
@@ -94,7 +94,7 @@ impl Recording<'_> {
         (0..N_SHAFTS)
             .map(|s| {
                 let (i_l, v_f) = (self.x[FILTER_CURRENT[s]], self.x[FILTER_VOLTAGE[s]]);
-                (self.x[bus_voltage(s)] - f.r_ohm * i_l - v_f).abs() / self.v_ref
+                (self.x[slot::bus_voltage(s)] - f.r_ohm * i_l - v_f).abs() / self.v_ref
             })
             .fold(0.0, f64::max)
     }

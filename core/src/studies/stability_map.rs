@@ -15,9 +15,7 @@
 //! power P through L_f, R_f, C_f is stable while P < R_f C_f v_f^2 / L_f.
 
 use crate::scenario::{BusParts, Scenario};
-use crate::sim::plant::{
-    bus_voltage, field_current, omega_rm, omega_t, part_slot, Outputs, NX, N_SETS, N_SHAFTS, SURGE,
-};
+use crate::sim::plant::{part_slot, slot, Outputs, NX, N_SETS, N_SHAFTS, SURGE};
 use crate::sim::Simulation;
 use nalgebra::DMatrix;
 use num_complex::Complex64;
@@ -57,10 +55,10 @@ fn states(sc: &Scenario) -> Vec<(Vec<usize>, String)> {
     let sets = |f: fn(usize) -> usize| (0..N_SETS).map(f).collect::<Vec<_>>();
     let shafts = |f: fn(usize) -> usize| (0..N_SHAFTS).map(f).collect::<Vec<_>>();
     let mut s = vec![
-        (sets(omega_t), "turbine_speed".to_string()),
-        (sets(field_current), "field_current".into()),
-        (shafts(bus_voltage), "bus_voltage".into()),
-        (shafts(omega_rm), "shaft_speed".into()),
+        (sets(slot::turbine_speed), "turbine_speed".to_string()),
+        (sets(slot::field_current), "field_current".into()),
+        (shafts(slot::bus_voltage), "bus_voltage".into()),
+        (shafts(slot::shaft_speed), "shaft_speed".into()),
     ];
     // Each bus part's states where it takes part (`BusPart::linearized`), in their order.
     for (states, _) in BusParts::STATES.iter().zip(BusParts::linearized(&sc.plant)).filter(|(_, on)| *on) {
