@@ -24,12 +24,18 @@
 use crate::checks::Validator;
 use serde::{Deserialize, Serialize};
 
-use crate::plant::bus_part::{Account, Book, BusFlow, BusNode, BusPart};
+use crate::plant::bus_part::{Account, Book, BusFlow, BusNode, BusPart, CheckInfo, Column};
+use crate::signals::Signal;
 
 /// The ship service filter's states in its block of each bus: inductor current i_L [A], capacitor
 /// voltage v_f [V].
 pub const FILTER_CURRENT: usize = 0;
 pub const FILTER_VOLTAGE: usize = 1;
+
+/// Oscillation of the ship service filter above which it is unstable rather than following the
+/// bus: the largest recorded |v_bus - R_f i_L - v_f| (the inductor's voltage) over the run's
+/// second half [pu of the bus set point].
+pub const FILTER_OSCILLATION_PU: f64 = 0.02;
 
 /// Voltage below which the ship service converter's current stops rising [pu of the bus set
 /// point]: its undervoltage current limit.
@@ -366,6 +372,43 @@ impl BusPart for BusLoads {
         if let Some(ss) = &self.ship_service {
             *e += 0.5 * ss.l_h * x[FILTER_CURRENT] * x[FILTER_CURRENT];
             *e += 0.5 * ss.c_f * x[FILTER_VOLTAGE] * x[FILTER_VOLTAGE];
+        }
+    }
+
+    fn checks() -> Vec<CheckInfo> {
+        vec![
+            CheckInfo {
+                name: "ship service filter oscillating",
+                threshold: format!(
+                    "the ship service filter's inductor voltage (the magnitude of v_bus - R_f i_L - v_f) above {FILTER_OSCILLATION_PU} pu \
+                     at a recorded time in the run's second half"
+                ),
+                reason: "a constant-power load's negative input resistance -v^2/P beats its input filter's damping \
+                         (on a stiff bus P above R_f C_f v^2 / L_f; `aes-sim stability-map` finds a plant's boundary): the \
+                         filter rings at its resonance and grows \
+                         until the converter's current limit holds it in a limit cycle",
+            },
+        ]
+    }
+
+    /// The ship service filter's oscillation.
+    fn assess(l: &BusLoadParams, t: &[f64], column: Column<'_>, out: &mut Vec<String>) {
+        if !l.has_ship_service() {
+            return;
+        }
+        let ripple = column(Signal::FilterRipplePu);
+        let half = ripple.len() / 2;
+        let (i, top) = ripple[half..].iter().enumerate().fold((0, 0.0), |m, (i, &v)| if v > m.1 { (i, v) } else { m });
+        if top > FILTER_OSCILLATION_PU {
+            let f_hz = 1.0 / (2.0 * std::f64::consts::PI * (l.filter_inductance_h * l.filter_capacitance_f).sqrt());
+            out.push(format!(
+                "ship service filter oscillating: its inductor voltage reaches {top:.3} pu at t = {:.1} s, above \
+                 {FILTER_OSCILLATION_PU} pu: the {:.1} MW constant-power load's negative resistance beats the filter's \
+                 damping and it rings near its {f_hz:.1} Hz resonance (on a stiff bus stable below R_f C_f v^2 / L_f; \
+                 `aes-sim stability-map` finds this plant's boundary)",
+                t[half + i],
+                l.ship_service_w.max(l.ship_service_step_to_w) / 1e6
+            ));
         }
     }
 }

@@ -13,6 +13,7 @@
 //! ([`BusNode::p_load`]), so storage, which levels the bus's load, comes last.
 
 use crate::plant::bus_loads::Demand;
+use crate::signals::Signal;
 
 /// Buses: one a shaft (the hull's count).
 pub const SHAFTS: usize = crate::ship::hull::N_SHAFTS;
@@ -50,6 +51,17 @@ pub struct BusNode {
     pub p_load: f64,
 }
 
+/// A recorded signal's column of a finished run, by signal.
+pub type Column<'a> = &'a dyn Fn(Signal) -> &'a [f64];
+
+/// One health check as the docs list it (`sim::health`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CheckInfo {
+    pub name: &'static str,
+    pub threshold: String,
+    pub reason: &'static str,
+}
+
 /// A part on each DC bus. See the module's text.
 pub trait BusPart: Sized {
     /// Its section of `plant` in the scenario.
@@ -83,6 +95,13 @@ pub trait BusPart: Sized {
     fn derivatives(&self, x: &[f64], node: &mut BusNode, dx: &mut [f64], e: &mut [f64], flow: &mut BusFlow);
     /// Adds the energy it stores in the states `x` of one bus to `e` [J].
     fn add_stored_energy(&self, _x: &[f64], _e: &mut f64) {}
+    /// Its health checks, each with its threshold and reason (`aes-sim health`).
+    fn checks() -> Vec<CheckInfo> {
+        Vec::new()
+    }
+    /// Its health checks on a finished run of a scenario with section `p`: `t` the recorded
+    /// times [s], `column` a recorded signal; each check that fails adds its sentence to `out`.
+    fn assess(_p: &Self::Params, _t: &[f64], _column: Column<'_>, _out: &mut Vec<String>) {}
 }
 
 /// What the parts of one bus do at one instant (the trace's signals read it).
@@ -226,6 +245,24 @@ macro_rules! plant_section {
                     _at += $crate::plant::bus_part::SHAFTS * n;
                     _acc += k;
                 )*
+            }
+
+            /// Every part's health checks, in their order.
+            pub fn checks() -> Vec<$crate::plant::bus_part::CheckInfo> {
+                let mut _out = Vec::new();
+                $(_out.extend(<$pty as $crate::plant::bus_part::BusPart>::checks());)*
+                _out
+            }
+
+            /// Every part's health checks on a finished run, in their order
+            /// ([`BusPart::assess`](crate::plant::bus_part::BusPart::assess)).
+            pub fn assess(
+                p: &PlantParams,
+                t: &[f64],
+                column: $crate::plant::bus_part::Column<'_>,
+                out: &mut Vec<String>,
+            ) {
+                $(<$pty as $crate::plant::bus_part::BusPart>::assess(&p.$p, t, column, out);)*
             }
 
             /// Adds the energy every part stores on every bus to `e` [J], part by part.

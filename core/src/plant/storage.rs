@@ -31,7 +31,8 @@
 //! returns (which would drain the charge step by step).
 
 use crate::checks::Validator;
-use crate::plant::bus_part::{Account, Book, BusFlow, BusNode, BusPart};
+use crate::plant::bus_part::{Account, Book, BusFlow, BusNode, BusPart, CheckInfo, Column};
+use crate::signals::Signal;
 use serde::{Deserialize, Serialize};
 
 /// The storage's states in its block of each bus: stored energy E [J], converter bus-side
@@ -350,6 +351,33 @@ impl BusPart for Storage {
 
     fn add_stored_energy(&self, x: &[f64], e: &mut f64) {
         *e += x[ENERGY];
+    }
+
+    fn checks() -> Vec<CheckInfo> {
+        vec![CheckInfo {
+            name: "storage charge outside its limits",
+            threshold: "the storage's state of charge (mean of the two) below `plant.storage.soc_min` or above \
+                            `soc_max` at a recorded time"
+                .into(),
+            reason: "the controller tapers its power to zero at each limit; a charge beyond one means the cells \
+                         are worked outside the window their life is rated for",
+        }]
+    }
+
+    /// The charge against its limits.
+    fn assess(st: &StorageParams, _t: &[f64], column: Column<'_>, out: &mut Vec<String>) {
+        if st.energy_j <= 0.0 {
+            return;
+        }
+        let soc = column(Signal::StorageSoc);
+        let (lo, hi) = soc.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+        if lo < st.soc_min || hi > st.soc_max {
+            out.push(format!(
+                "storage charge outside its limits: {lo:.3} to {hi:.3} against plant.storage.soc_min = {} and \
+                 soc_max = {}",
+                st.soc_min, st.soc_max
+            ));
+        }
     }
 }
 

@@ -6,7 +6,9 @@
 //! (`output::presentation::WarningLevels`) read these declarations.
 
 use super::Trace;
+pub use crate::plant::bus_part::CheckInfo;
 use crate::plant::propeller_losses::DISK_AT_SURFACE_H_OVER_R;
+use crate::plant::BusParts;
 use crate::scenario::Scenario;
 use crate::signals::Signal;
 
@@ -27,10 +29,7 @@ pub const MOTOR_AT_LIMIT_FOR_S: f64 = 30.0;
 /// Share of the run a propeller's disc may break the surface (h/R below
 /// [`DISK_AT_SURFACE_H_OVER_R`]) before a warning [-].
 pub const PROPELLER_EMERGED_SHARE: f64 = 0.5;
-/// Oscillation of the ship service filter above which it is unstable rather than following the
-/// bus: the largest recorded |v_bus - R_f i_L - v_f| (the inductor's voltage) over the run's
-/// second half [pu of the bus set point].
-pub const FILTER_OSCILLATION_PU: f64 = 0.02;
+pub use crate::plant::bus_loads::FILTER_OSCILLATION_PU;
 
 /// The speed order is held when the mean speed over the last [`SPEED_HELD_OVER_S`] of the run is
 /// within the larger of [`SPEED_HELD_KN`] and [`SPEED_HELD_SHARE`] of it (the order in force all
@@ -43,14 +42,6 @@ pub const SPEED_HELD_SHARE: f64 = 0.2;
 /// chopper's band (`plant.dc_link.brake_on_pu` + `brake_band_pu`).
 pub fn bus_high_pu(sc: &Scenario) -> f64 {
     sc.plant.dc_link.brake_on_pu + sc.plant.dc_link.brake_band_pu
-}
-
-/// One check as the README lists it.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CheckInfo {
-    pub name: &'static str,
-    pub threshold: String,
-    pub reason: &'static str,
 }
 
 /// Every check, its threshold and its reason.
@@ -136,26 +127,10 @@ pub fn checks() -> Vec<CheckInfo> {
             reason: "the speed loop never orders more: the shaft is racing (a propeller emerged or ventilated \
                      unloads it faster than the slip controller can react)",
         },
-        CheckInfo {
-            name: "ship service filter oscillating",
-            threshold: format!(
-                "the ship service filter's inductor voltage (the magnitude of v_bus - R_f i_L - v_f) above {FILTER_OSCILLATION_PU} pu \
-                 at a recorded time in the run's second half"
-            ),
-            reason: "a constant-power load's negative input resistance -v^2/P beats its input filter's damping \
-                     (on a stiff bus P above R_f C_f v^2 / L_f; `aes-sim stability-map` finds a plant's boundary): the \
-                     filter rings at its resonance and grows \
-                     until the converter's current limit holds it in a limit cycle",
-        },
-        CheckInfo {
-            name: "storage charge outside its limits",
-            threshold: "the storage's state of charge (mean of the two) below `plant.storage.soc_min` or above \
-                        `soc_max` at a recorded time"
-                .into(),
-            reason: "the controller tapers its power to zero at each limit; a charge beyond one means the cells \
-                     are worked outside the window their life is rated for",
-        },
     ]
+    .into_iter()
+    .chain(BusParts::checks())
+    .collect()
 }
 
 /// The README's list of the checks (between its `health:begin` and `health:end` markers).
@@ -309,7 +284,8 @@ pub fn assess(sc: &Scenario, trace: &Trace, tracked: &Tracked) -> Vec<String> {
         }
     }
     push_per_shaft(&mut out, &motors, ["motor 1", "motor 2"], "both motors");
-    bus_parts(sc, t, trace, &mut out);
+    // Each bus part's own checks, in their order.
+    BusParts::assess(&sc.plant, t, &|sig| trace.get(sig), &mut out);
 
     let duration = t[t.len() - 1] - t[0] + dt;
     let props: Vec<String> = [Signal::HOverR, Signal::HOverRStbd]
@@ -403,39 +379,6 @@ fn speed_not_held(t: &[f64], trace: &Trace, motors: &[String]) -> Option<String>
         "speed order not held: {got:.1} kn over the last {SPEED_HELD_OVER_S:.0} s against {order:.1} kn ordered \
          (allowed {band:.1} kn either way): {why}"
     ))
-}
-
-/// The ship service filter's oscillation and the storage's charge.
-fn bus_parts(sc: &Scenario, t: &[f64], trace: &Trace, out: &mut Vec<String>) {
-    let l = &sc.plant.loads;
-    if l.has_ship_service() {
-        let ripple = trace.get(Signal::FilterRipplePu);
-        let half = ripple.len() / 2;
-        let (i, top) = ripple[half..].iter().enumerate().fold((0, 0.0), |m, (i, &v)| if v > m.1 { (i, v) } else { m });
-        if top > FILTER_OSCILLATION_PU {
-            let f_hz = 1.0 / (2.0 * std::f64::consts::PI * (l.filter_inductance_h * l.filter_capacitance_f).sqrt());
-            out.push(format!(
-                "ship service filter oscillating: its inductor voltage reaches {top:.3} pu at t = {:.1} s, above \
-                 {FILTER_OSCILLATION_PU} pu: the {:.1} MW constant-power load's negative resistance beats the filter's \
-                 damping and it rings near its {f_hz:.1} Hz resonance (on a stiff bus stable below R_f C_f v^2 / L_f; \
-                 `aes-sim stability-map` finds this plant's boundary)",
-                t[half + i],
-                l.ship_service_w.max(l.ship_service_step_to_w) / 1e6
-            ));
-        }
-    }
-    let st = &sc.plant.storage;
-    if st.energy_j > 0.0 {
-        let soc = trace.get(Signal::StorageSoc);
-        let (lo, hi) = soc.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
-        if lo < st.soc_min || hi > st.soc_max {
-            out.push(format!(
-                "storage charge outside its limits: {lo:.3} to {hi:.3} against plant.storage.soc_min = {} and \
-                 soc_max = {}",
-                st.soc_min, st.soc_max
-            ));
-        }
-    }
 }
 
 #[cfg(test)]
