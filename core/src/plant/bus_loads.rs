@@ -131,12 +131,12 @@ impl BusLoadParams {
 
     /// The largest power the loads of one bus draw at once [W].
     pub fn peak_w(&self) -> f64 {
-        let ss = if self.ship_service_step_s > 0.0 {
+        let service = if self.ship_service_step_s > 0.0 {
             self.ship_service_w.max(self.ship_service_step_to_w)
         } else {
             self.ship_service_w
         };
-        ss + self.pulse_power_w
+        service + self.pulse_power_w
     }
 }
 
@@ -313,7 +313,7 @@ impl BusPart for BusLoads {
     /// The ship service filter's input at its steady state and the pulsed load.
     fn steady_input_w(&self, v_bus: f64) -> Result<f64, String> {
         let d = self.demand(0.0);
-        let ss = match &self.ship_service {
+        let service = match &self.ship_service {
             Some(f) => {
                 let (i_l, _) = f.steady(v_bus, d.ship_service_w).ok_or_else(|| {
                     format!(
@@ -327,7 +327,7 @@ impl BusPart for BusLoads {
             }
             None => 0.0,
         };
-        Ok(ss + d.pulse_w)
+        Ok(service + d.pulse_w)
     }
 
     /// The filter at rest (none: 0).
@@ -347,9 +347,9 @@ impl BusPart for BusLoads {
         let v_c = node.v;
         dx[FILTER_CURRENT] = 0.0;
         dx[FILTER_VOLTAGE] = 0.0;
-        if let Some(ss) = &self.ship_service {
+        if let Some(service) = &self.ship_service {
             let (i_l, v_f) = (x[FILTER_CURRENT], x[FILTER_VOLTAGE]);
-            let f = ss.flow(v_c, i_l, v_f, node.demand.ship_service_w);
+            let f = service.flow(v_c, i_l, v_f, node.demand.ship_service_w);
             dx[FILTER_CURRENT] = f.di_l;
             dx[FILTER_VOLTAGE] = f.dv_f;
             node.i_draw += i_l;
@@ -369,9 +369,9 @@ impl BusPart for BusLoads {
 
     /// The filter's inductor and capacitor.
     fn add_stored_energy(&self, x: &[f64], e: &mut f64) {
-        if let Some(ss) = &self.ship_service {
-            *e += 0.5 * ss.l_h * x[FILTER_CURRENT] * x[FILTER_CURRENT];
-            *e += 0.5 * ss.c_f * x[FILTER_VOLTAGE] * x[FILTER_VOLTAGE];
+        if let Some(service) = &self.ship_service {
+            *e += 0.5 * service.l_h * x[FILTER_CURRENT] * x[FILTER_CURRENT];
+            *e += 0.5 * service.c_f * x[FILTER_VOLTAGE] * x[FILTER_VOLTAGE];
         }
     }
 

@@ -52,12 +52,12 @@ pub struct SlowDrift {
 }
 
 /// The mean and bandwidth of the slowly varying added resistance at ship speed `u` [m/s] in sea
-/// state `ss`, long-crested head seas, from the RAO table's mean force per amplitude squared.
-pub fn slow_drift(sc: &Scenario, table: &crate::sea::seakeeping::tables::RaoTable, u: f64, ss: u32) -> SlowDrift {
-    let (wn, h) = sea_state(ss).unwrap_or((0.507, 5.0));
+/// state `state`, long-crested head seas, from the RAO table's mean force per amplitude squared.
+pub fn slow_drift(sc: &Scenario, table: &crate::sea::seakeeping::tables::RaoTable, u: f64, state: u32) -> SlowDrift {
+    let (wn, h) = sea_state(state).unwrap_or((0.507, 5.0));
     let mut sea = sc.sea.clone();
     sea.kind = SeaKind::Random;
-    sea.sea_state = ss;
+    sea.sea_state = state;
     sea.h_sig_m = 0.0;
     sea.omega_n_rad_s = 0.0;
     let (lo, hi) = sea.band();
@@ -158,9 +158,9 @@ pub struct Schedule {
 }
 
 impl Schedule {
-    /// The cell at `speed_kn` and sea state `ss`.
-    pub fn cell(&self, speed_kn: f64, ss: u32) -> Option<&Cell> {
-        self.cells.iter().find(|c| c.speed_kn == speed_kn && c.sea_state == ss)
+    /// The cell at `speed_kn` and sea state `state`.
+    pub fn cell(&self, speed_kn: f64, state: u32) -> Option<&Cell> {
+        self.cells.iter().find(|c| c.speed_kn == speed_kn && c.sea_state == state)
     }
 }
 
@@ -304,10 +304,10 @@ pub fn run(sc: &Scenario) -> Result<Schedule, String> {
     let mut cells = Vec::new();
     for &v in &speeds {
         let u = kn_to_m_s(v);
-        for ss in SEA_STATES {
-            let drift = slow_drift(sc, &table, u, ss);
+        for state in SEA_STATES {
+            let drift = slow_drift(sc, &table, u, state);
             let options: Vec<Candidate> = (1..=SETS).map(|n| evaluate(sc, &first_sets(n), v, &drift)).collect();
-            cells.push(cell_of(v, ss, drift, options, sc.plant.online.reserve_probability));
+            cells.push(cell_of(v, state, drift, options, sc.plant.online.reserve_probability));
         }
     }
     Ok(Schedule {
@@ -320,13 +320,13 @@ pub fn run(sc: &Scenario) -> Result<Schedule, String> {
 }
 
 /// A cell from its options.
-fn cell_of(v: f64, ss: u32, drift: SlowDrift, options: Vec<Candidate>, reserve: f64) -> Cell {
+fn cell_of(v: f64, state: u32, drift: SlowDrift, options: Vec<Candidate>, reserve: f64) -> Cell {
     let Choice { pick, reserve_decides, reserve_unmet, below_min_load } = choose(&options, reserve);
     let fuel = pick.and_then(|i| options[i].fuel_power_w);
     let four = options.iter().find(|o| o.count == SETS).and_then(|o| o.fuel_power_w);
     Cell {
         speed_kn: v,
-        sea_state: ss,
+        sea_state: state,
         drift,
         count: pick.map(|i| options[i].count),
         fuel_power_w: fuel,
@@ -342,9 +342,9 @@ fn cell_of(v: f64, ss: u32, drift: SlowDrift, options: Vec<Candidate>, reserve: 
 
 /// The exhaustive check at one cell: all 15 online sets evaluated, each with its own steady state;
 /// returns them and the least fuel among the admissible.
-pub fn exhaustive(sc: &Scenario, speed_kn: f64, ss: u32) -> Result<(Vec<Candidate>, Option<f64>), String> {
+pub fn exhaustive(sc: &Scenario, speed_kn: f64, state: u32) -> Result<(Vec<Candidate>, Option<f64>), String> {
     let table = sc.rao_table()?;
-    let drift = slow_drift(sc, &table, kn_to_m_s(speed_kn), ss);
+    let drift = slow_drift(sc, &table, kn_to_m_s(speed_kn), state);
     let all: Vec<Candidate> = (1u32..(1 << SETS))
         .map(|bits| {
             let sets: Vec<u32> = (0..SETS as u32).filter(|k| bits & (1 << k) != 0).map(|k| k + 1).collect();

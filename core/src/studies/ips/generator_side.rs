@@ -311,7 +311,7 @@ impl GeneratorSideParams {
         let torque = self.torque(&[iq, id, 0.0, 0.0, i_fd]);
         let x =
             [iq, id, 0.0, 0.0, i_fd, 2.0 * w / self.poles, torque / self.ki_t, idc, v_dc + self.r2 * idc, idc, v_dc];
-        let ss = GeneratorSteadyState {
+        let steady = GeneratorSteadyState {
             omega: w,
             v_fd,
             i_load,
@@ -329,27 +329,27 @@ impl GeneratorSideParams {
         // cos mu = 1 - 2 k2 i_dc / (k1 |v|), so mu = 60 deg at v~ / (k1 |v|) = 3/4. Past it the
         // equations still solve, but to nothing a diode bridge does (the bus goes negative near
         // 400 A at the default field): refused, with the way back.
-        if ss.cos_phi.is_nan() || ss.cos_phi < MODE_1_MIN_RATIO {
+        if steady.cos_phi.is_nan() || steady.cos_phi < MODE_1_MIN_RATIO {
             return Err(format!(
                 "the generator-side steady state at load current I = {i_load} A (omega = {omega_star} rad/s, v_fd = {v_fd} V) lies outside the rectifier model: the commutation overlap passes 60 degrees (v~ / (k1 |v|) = {:.3}; eqs. 4.8-4.10 hold from {MODE_1_MIN_RATIO} up; the bus would be at {:.1} V); lower the load current I or raise the field voltage v_fd",
-                ss.cos_phi, ss.v_dc
+                steady.cos_phi, steady.v_dc
             ));
         }
         let mut values = vec![
-            ("v_gs_mag", ss.v_gs_mag),
-            ("i_gs_mag", ss.i_gs_mag),
-            ("i_fd", ss.i_fd),
-            ("v_dc", ss.v_dc),
-            ("i_dc", ss.i_dc),
-            ("cos_phi", ss.cos_phi),
+            ("v_gs_mag", steady.v_gs_mag),
+            ("i_gs_mag", steady.i_gs_mag),
+            ("i_fd", steady.i_fd),
+            ("v_dc", steady.v_dc),
+            ("i_dc", steady.i_dc),
+            ("cos_phi", steady.cos_phi),
         ];
-        values.extend(STATES.iter().zip(ss.x.iter()).map(|(n, v)| (*n, *v)));
+        values.extend(STATES.iter().zip(steady.x.iter()).map(|(n, v)| (*n, *v)));
         super::check_steady(
             "generator-side",
             &format!("omega = {omega_star} rad/s, v_fd = {v_fd} V, I = {i_load} A"),
             &values,
         )?;
-        Ok(ss)
+        Ok(steady)
     }
 
     /// Analytic Jacobian of the rectifier voltages (v~, v_qs, v_ds) with respect to
@@ -447,8 +447,8 @@ impl GeneratorSideParams {
 
     /// Open-loop linear model (eqs. 4.39-4.42): input v_fd, output the droop feedback
     /// v_dc + K_d i_dc.
-    pub fn open_loop(&self, ss: &GeneratorSteadyState) -> LinearSystem {
-        let (a, b) = self.jacobian(&ss.x);
+    pub fn open_loop(&self, steady: &GeneratorSteadyState) -> LinearSystem {
+        let (a, b) = self.jacobian(&steady.x);
         let mut c = DMatrix::zeros(1, 11);
         c[(0, 10)] = 1.0;
         c[(0, 7)] = self.k_d;
@@ -457,8 +457,8 @@ impl GeneratorSideParams {
 
     /// Closed-loop model with the droop PI (eq. 4.48): one more state, the integral of the droop
     /// error; input the voltage set point, output the bus voltage.
-    pub fn closed_loop(&self, ss: &GeneratorSteadyState) -> LinearSystem {
-        let ol = self.open_loop(ss);
+    pub fn closed_loop(&self, steady: &GeneratorSteadyState) -> LinearSystem {
+        let ol = self.open_loop(steady);
         let n = 11;
         let mut a = DMatrix::zeros(n + 1, n + 1);
         for r in 0..n {
@@ -483,24 +483,24 @@ impl GeneratorSideParams {
     }
 
     /// Margins of the droop loop: L(s) = K(s) G(s), K the PI of eq. 4.48, G the open loop.
-    pub fn droop_margins(&self, ss: &GeneratorSteadyState) -> Margins {
-        let ol = self.open_loop(ss);
+    pub fn droop_margins(&self, steady: &GeneratorSteadyState) -> Margins {
+        let ol = self.open_loop(steady);
         let (kp, ki) = (self.kp_v, self.ki_v);
         margins(&|w: f64| ol.response(w) * num_complex::Complex64::new(kp, -ki / w), 1e-3, 1e6)
     }
 
     /// Numerical Jacobian of the nonlinear open-loop model at the steady state.
-    pub fn numerical_open_loop(&self, ss: &GeneratorSteadyState) -> DMatrix<f64> {
-        numerical_jacobian(&|x: &[f64]| self.rhs(x, ss.v_fd, ss.omega, ss.i_load), &ss.x)
+    pub fn numerical_open_loop(&self, steady: &GeneratorSteadyState) -> DMatrix<f64> {
+        numerical_jacobian(&|x: &[f64]| self.rhs(x, steady.v_fd, steady.omega, steady.i_load), &steady.x)
     }
 
     /// Nonlinear closed-loop dynamics (droop PI with a ceiling and anti-windup at 0 and `v_fd_max`):
     /// state = open-loop state plus the droop integrator; input the voltage set point.
-    pub fn closed_loop_rhs(&self, x: &[f64], v_star: f64, ss: &GeneratorSteadyState, v_fd_max: f64) -> Vec<f64> {
+    pub fn closed_loop_rhs(&self, x: &[f64], v_star: f64, steady: &GeneratorSteadyState, v_fd_max: f64) -> Vec<f64> {
         let e = v_star - x[10] - self.k_d * x[7];
         let unsat = self.kp_v * e + self.ki_v * x[11];
         let v_fd = unsat.clamp(0.0, v_fd_max);
-        let mut dx = self.rhs(&x[..11], v_fd, ss.omega, ss.i_load);
+        let mut dx = self.rhs(&x[..11], v_fd, steady.omega, steady.i_load);
         let winding_up = (unsat >= v_fd_max && e > 0.0) || (unsat <= 0.0 && e < 0.0);
         dx.push(if winding_up { 0.0 } else { e });
         dx
@@ -508,10 +508,10 @@ impl GeneratorSideParams {
 
     /// The closed-loop steady state vector: the open-loop one plus the integrator that holds v_fd,
     /// and the set point that makes it an equilibrium.
-    pub fn closed_loop_equilibrium(&self, ss: &GeneratorSteadyState) -> (Vec<f64>, f64) {
-        let v_star = ss.v_dc + self.k_d * ss.i_dc; // zero droop error at this point
-        let mut x = ss.x.to_vec();
-        x.push(ss.v_fd / self.ki_v);
+    pub fn closed_loop_equilibrium(&self, steady: &GeneratorSteadyState) -> (Vec<f64>, f64) {
+        let v_star = steady.v_dc + self.k_d * steady.i_dc; // zero droop error at this point
+        let mut x = steady.x.to_vec();
+        x.push(steady.v_fd / self.ki_v);
         (x, v_star)
     }
 }

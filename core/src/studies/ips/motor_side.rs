@@ -217,7 +217,7 @@ impl MotorSideParams {
             // V: the torque the machine makes; trim the reference if the estimates are off.
             let t_m = self.torque(&cur);
             if (t_m - t_star).abs() < 1e-10 * t_star || it == 50 {
-                let ss = MotorSteadyState {
+                let steady = MotorSteadyState {
                     t_star,
                     t_m0: t_m,
                     t_ref0: t_ref,
@@ -232,24 +232,24 @@ impl MotorSideParams {
                     t_threshold: self.torque_threshold(),
                     iterations: it,
                 };
-                let [i_qs, i_ds, i_qr, i_dr] = ss.currents;
+                let [i_qs, i_ds, i_qr, i_dr] = steady.currents;
                 super::check_steady(
                     "motor-side",
                     &format!("T* = {t_star} N m"),
                     &[
-                        ("t_m0", ss.t_m0),
-                        ("t_ref0", ss.t_ref0),
-                        ("omega_r0", ss.omega_r0),
-                        ("omega_s0", ss.omega_s0),
+                        ("t_m0", steady.t_m0),
+                        ("t_ref0", steady.t_ref0),
+                        ("omega_r0", steady.omega_r0),
+                        ("omega_s0", steady.omega_s0),
                         ("i_qs", i_qs),
                         ("i_ds", i_ds),
                         ("i_qr", i_qr),
                         ("i_dr", i_dr),
-                        ("v_s_mag", ss.v_s_mag),
-                        ("t_threshold", ss.t_threshold),
+                        ("v_s_mag", steady.v_s_mag),
+                        ("t_threshold", steady.t_threshold),
                     ],
                 )?;
-                return Ok(ss);
+                return Ok(steady);
             }
             t_ref *= t_star / t_m;
         }
@@ -352,25 +352,25 @@ impl MotorSideParams {
     }
 
     /// State vector at the steady state (five or six states).
-    pub fn steady_vector(&self, ss: &MotorSteadyState, six: bool) -> Vec<f64> {
-        let mut x = ss.currents.to_vec();
-        x.push(2.0 * ss.omega_r0 / self.poles);
+    pub fn steady_vector(&self, steady: &MotorSteadyState, six: bool) -> Vec<f64> {
+        let mut x = steady.currents.to_vec();
+        x.push(2.0 * steady.omega_r0 / self.poles);
         if six {
-            x.push(ss.t_ref0);
+            x.push(steady.t_ref0);
         }
         x
     }
 
     /// Open-loop linear model (eqs. 4.43-4.47): input stator voltage v_qs, output stator current
     /// magnitude. Five states below the torque threshold, six (with T**) above it.
-    pub fn open_loop(&self, ss: &MotorSteadyState) -> LinearSystem {
-        let six = ss.above_threshold;
-        let x = self.steady_vector(ss, six);
-        let (a, b) = self.open_loop_jacobian(&x, ss.t_ref0);
+    pub fn open_loop(&self, steady: &MotorSteadyState) -> LinearSystem {
+        let six = steady.above_threshold;
+        let x = self.steady_vector(steady, six);
+        let (a, b) = self.open_loop_jacobian(&x, steady.t_ref0);
         let n = x.len();
         let mut c = DMatrix::zeros(1, n);
-        c[(0, 0)] = x[0] / ss.i_s_mag;
-        c[(0, 1)] = x[1] / ss.i_s_mag;
+        c[(0, 0)] = x[0] / steady.i_s_mag;
+        c[(0, 1)] = x[1] / steady.i_s_mag;
         let mut states = vec!["i_qs", "i_ds", "i_qr", "i_dr", "omega_rm"];
         if six {
             states.push("t_ref");
@@ -380,10 +380,10 @@ impl MotorSideParams {
 
     /// Closed-loop linear model (ch. 4.4.2): the six-state model with the equivalent control
     /// substituted; input torque command T*, output measured torque T_m.
-    pub fn closed_loop(&self, ss: &MotorSteadyState) -> LinearSystem {
-        let x = self.steady_vector(ss, true);
-        let sign = ss.currents[0].signum();
-        let (mut a, b_v) = self.open_loop_jacobian(&x, ss.t_ref0);
+    pub fn closed_loop(&self, steady: &MotorSteadyState) -> LinearSystem {
+        let x = self.steady_vector(steady, true);
+        let sign = steady.currents[0].signum();
+        let (mut a, b_v) = self.open_loop_jacobian(&x, steady.t_ref0);
         let g = self.equivalent_voltage_gradient(&x, sign);
         for r in 0..6 {
             for c in 0..6 {
@@ -405,8 +405,8 @@ impl MotorSideParams {
 
     /// Margins of the torque-trim loop: L(s) = G(s) / (tau s), G the path from the torque
     /// reference T** to the measured torque with the equivalent control in place.
-    pub fn trim_margins(&self, ss: &MotorSteadyState) -> Margins {
-        let cl = self.closed_loop(ss);
+    pub fn trim_margins(&self, steady: &MotorSteadyState) -> Margins {
+        let cl = self.closed_loop(steady);
         // The plant: the first five rows of the closed loop, T** (state 6) as its input.
         let a = cl.a.view((0, 0), (5, 5)).into_owned();
         let b = cl.a.view((0, 5), (5, 1)).into_owned();
@@ -418,15 +418,15 @@ impl MotorSideParams {
 
     /// Numerical Jacobians of the nonlinear open-loop and closed-loop dynamics at the steady state
     /// (for checking the analytic linearizations).
-    pub fn numerical_open_loop(&self, ss: &MotorSteadyState) -> DMatrix<f64> {
-        let x = self.steady_vector(ss, ss.above_threshold);
-        numerical_jacobian(&|x: &[f64]| self.open_loop_rhs(x, ss.v_qs, ss.t_ref0, ss.t_star), &x)
+    pub fn numerical_open_loop(&self, steady: &MotorSteadyState) -> DMatrix<f64> {
+        let x = self.steady_vector(steady, steady.above_threshold);
+        numerical_jacobian(&|x: &[f64]| self.open_loop_rhs(x, steady.v_qs, steady.t_ref0, steady.t_star), &x)
     }
 
-    pub fn numerical_closed_loop(&self, ss: &MotorSteadyState) -> DMatrix<f64> {
-        let x = self.steady_vector(ss, true);
-        let sign = ss.currents[0].signum();
-        numerical_jacobian(&|x: &[f64]| self.closed_loop_rhs(x, ss.t_star, sign), &x)
+    pub fn numerical_closed_loop(&self, steady: &MotorSteadyState) -> DMatrix<f64> {
+        let x = self.steady_vector(steady, true);
+        let sign = steady.currents[0].signum();
+        numerical_jacobian(&|x: &[f64]| self.closed_loop_rhs(x, steady.t_star, sign), &x)
     }
 }
 
