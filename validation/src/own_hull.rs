@@ -98,7 +98,7 @@ pub(crate) fn own_hull() -> Result<Section, String> {
         .kind(Kind::Context),
     );
     let own = aes_core::sim::plant::Plant::new(&sc)?;
-    if let aes_core::sim::plant::Hull::Own { model, .. } = &own.hull {
+    if let aes_core::sim::plant::HullModel::Own { model, .. } = &own.hull_model {
         rows.push(
             explained(
                 "sway added mass Y_vdot' (over 1/2 rho L^3)",

@@ -495,7 +495,7 @@ impl Simulation {
         c.set_loops(p, x, ts);
         c.track_overload(p, x, t_now, ts);
         c.slip_loops(p, x, shaft_ref, t_now, ts);
-        if p.hull.turns() {
+        if p.hull_model.turns() {
             if let Some(lag) = c.heading_loop(x, max_turn_rate, ts) {
                 self.max_heading_lag = self.max_heading_lag.max(lag);
             }

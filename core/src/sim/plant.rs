@@ -109,9 +109,10 @@ pub struct Outputs {
     pub bus: [BusFlow; N_SHAFTS],
 }
 
-/// The hull model in use.
+/// The hull model in use (the scenario's `hull.model` built: surge alone, Table 2.3's maneuvering
+/// model or the own hull's; the geometry is `ship.hull`, `ship::hull`).
 #[derive(Debug, Clone, PartialEq)]
-pub enum Hull {
+pub enum HullModel {
     /// Eqs. 2.15-2.16.
     Surge,
     /// Eqs. 2.17-2.30, handing over to the surge model in surge between `lo` and `hi` [m/s].
@@ -126,10 +127,10 @@ pub enum Hull {
     Own { model: Box<OwnHull>, x_p: f64 },
 }
 
-impl Hull {
+impl HullModel {
     /// True for the 3-DOF models (heading, rudder and autopilot).
     pub fn turns(&self) -> bool {
-        !matches!(self, Hull::Surge)
+        !matches!(self, HullModel::Surge)
     }
 }
 
@@ -144,7 +145,7 @@ pub struct Plant {
     /// Present when the propellers follow the four-quadrant series.
     pub four_quadrant: Option<FourQuadrant>,
     pub surge: Surge,
-    pub hull: Hull,
+    pub hull_model: HullModel,
     /// Surge mass used by the equations of motion [kg].
     pub surge_mass: f64,
     /// The ship's length L of the maneuvering prime system [m].
@@ -182,13 +183,13 @@ impl Plant {
         // The hull's length, mass and rudder lever (or Tables 5.1/5.5's, as_printed.table_5_ship).
         let body = sc.ship_hull()?.rigid_body(&sc.as_printed);
         let surge = Surge::new(&sc.ship, body.mass_kg);
-        let hull = match (sc.hull.model, sc.hull.forces) {
-            (HullModelKind::Surge, _) => Hull::Surge,
+        let hull_model = match (sc.hull.model, sc.hull.forces) {
+            (HullModelKind::Surge, _) => HullModel::Surge,
             (HullModelKind::Maneuvering, ManeuveringForces::OwnHull) => {
                 let own = OwnHull::new(&sc.ship_hull()?, &sc.hull.own, surge.mass_total, sc.propeller.diameter_m)?;
-                Hull::Own { model: Box::new(own), x_p: body.rudder_x_aft_m }
+                HullModel::Own { model: Box::new(own), x_p: body.rudder_x_aft_m }
             }
-            (HullModelKind::Maneuvering, ManeuveringForces::Table23) => Hull::Maneuvering {
+            (HullModelKind::Maneuvering, ManeuveringForces::Table23) => HullModel::Maneuvering {
                 abkowitz: Box::new(Abkowitz::new(
                     &sc.hull.abkowitz,
                     sc.hull.symmetric_hull,
@@ -203,9 +204,9 @@ impl Plant {
                 hi: kn_to_m_s(sc.hull.handover_high_kn),
             },
         };
-        let surge_mass = match &hull {
-            Hull::Surge | Hull::Own { .. } => surge.mass_total,
-            Hull::Maneuvering { abkowitz, .. } => abkowitz.m11,
+        let surge_mass = match &hull_model {
+            HullModel::Surge | HullModel::Own { .. } => surge.mass_total,
+            HullModel::Maneuvering { abkowitz, .. } => abkowitz.m11,
         };
         let v_ref = sc.bus_voltage_ref_v();
         Ok(Plant {
@@ -219,7 +220,7 @@ impl Plant {
                 PropellerModelKind::FourQuadrant => Some(FourQuadrant::b4_70()?),
             },
             surge,
-            hull,
+            hull_model,
             surge_mass,
             hull_length: body.length_m,
             reversible: sc.plant.dc_link.rectifier == RectifierKind::Reversible,
@@ -280,13 +281,13 @@ impl Plant {
     /// Straight-line resistance of the hull at ship speed `u` [N] (what the calm-water map balances).
     pub fn straight_resistance(&self, u: f64) -> f64 {
         self.extra_resistance
-            + match &self.hull {
-                Hull::Surge => self.surge.resistance(u),
-                Hull::Maneuvering { abkowitz, eq_2_22_straight: true, lo, hi, .. } => {
+            + match &self.hull_model {
+                HullModel::Surge => self.surge.resistance(u),
+                HullModel::Maneuvering { abkowitz, eq_2_22_straight: true, lo, hi, .. } => {
                     let w = handover_weight(u, *lo, *hi);
                     (1.0 - w) * self.surge.resistance(u) - w * abkowitz.forces(u, 0.0, 0.0).x
                 }
-                Hull::Maneuvering { .. } | Hull::Own { .. } => self.surge.resistance(u),
+                HullModel::Maneuvering { .. } | HullModel::Own { .. } => self.surge.resistance(u),
             }
     }
 
@@ -355,12 +356,12 @@ impl Plant {
     /// Inflow at the stern (eqs. 2.26-2.27); the surge model goes straight.
     #[inline(always)]
     pub fn inflow(&self, u: f64, v: f64, r: f64) -> Inflow {
-        match &self.hull {
-            Hull::Surge => Inflow { speed: u, angle: 0.0, sin: 0.0, cos: 1.0 },
+        match &self.hull_model {
+            HullModel::Surge => Inflow { speed: u, angle: 0.0, sin: 0.0, cos: 1.0 },
             // One x_p for the rudder and the propellers' inflow, as eqs. 2.26-2.27.
-            Hull::Maneuvering { x_p, .. } => stern_inflow(u, v, r, *x_p),
+            HullModel::Maneuvering { x_p, .. } => stern_inflow(u, v, r, *x_p),
             // Astern the propellers meet the water from behind (the four-quadrant series).
-            Hull::Own { x_p, .. } => {
+            HullModel::Own { x_p, .. } => {
                 let i = stern_inflow(u, v, r, *x_p);
                 Inflow { speed: if u < 0.0 { -i.speed } else { i.speed }, ..i }
             }
@@ -515,14 +516,14 @@ impl Plant {
         // Power of the side force and yaw moment (hull, rudder, waves) into sway and yaw [W]: their
         // kinetic energy is in `stored_energy`, so the books need the work that made it.
         let mut side_power = 0.0;
-        let resistance = match &self.hull {
-            Hull::Surge => {
+        let resistance = match &self.hull_model {
+            HullModel::Surge => {
                 dx[SURGE] = self.surge.acceleration(thrust + h.sea.wave_fx - self.extra_resistance, u); // eq. 2.16
                 dx[SWAY] = 0.0;
                 dx[YAW_RATE] = 0.0;
                 self.surge.resistance(u) - h.sea.wave_fx + self.extra_resistance
             }
-            Hull::Maneuvering { abkowitz, rudder, x_p, eq_2_22_straight, lo, hi } => {
+            HullModel::Maneuvering { abkowitz, rudder, x_p, eq_2_22_straight, lo, hi } => {
                 let f = abkowitz.forces(u, v, r); // eqs. 2.22-2.24, hull terms
                 let (fx_r, fy_r) = rudder_force(rudder, self.rho, inflow, h.rudder); // eqs. 2.28-2.30
                 let x_hull = if *eq_2_22_straight {
@@ -546,7 +547,7 @@ impl Plant {
                 side_power = y * v + n * r;
                 -(x_hull + fx_r + h.sea.wave_fx)
             }
-            Hull::Own { model, .. } => {
+            HullModel::Own { model, .. } => {
                 let f = model.forces(u, v, r);
                 let each = thrust / N_SHAFTS as f64;
                 let (fx_r, fy_r, n_r) =
@@ -605,10 +606,10 @@ impl Plant {
         }
         e += 0.5 * self.surge_mass * x[SURGE] * x[SURGE];
         self.bus.add_stored_energy(&x[slots(Block::BusParts)], &mut e);
-        let block = match &self.hull {
-            Hull::Maneuvering { abkowitz, .. } => Some(&abkowitz.m22),
-            Hull::Own { model, .. } => Some(&model.m22),
-            Hull::Surge => None,
+        let block = match &self.hull_model {
+            HullModel::Maneuvering { abkowitz, .. } => Some(&abkowitz.m22),
+            HullModel::Own { model, .. } => Some(&model.m22),
+            HullModel::Surge => None,
         };
         if let Some(m) = block {
             // Sway and yaw, with the symmetric part of the mass block (eq. 2.21).

@@ -14,7 +14,7 @@ use crate::numerics::units::{kn_to_m_s, m_s_to_kn};
 use crate::numerics::Integrator;
 use crate::scenario::Scenario;
 use crate::ship::hull::N_SHAFTS;
-use crate::sim::plant::{Held, Hull, Plant, State, HEADING, NX, SURGE, SWAY, X_POS, YAW_RATE, Y_POS};
+use crate::sim::plant::{Held, HullModel, Plant, State, HEADING, NX, SURGE, SWAY, X_POS, YAW_RATE, Y_POS};
 use serde::Serialize;
 
 /// Time step of the maneuvers [s] (the hull's slowest motions take tens of seconds).
@@ -293,7 +293,7 @@ pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
 
 /// The static drift (0 to 12 deg) and pure yaw (r' 0 to 0.6) tables at the approach speed.
 fn captive(trial: &Trial, sc: &Scenario) -> Result<(Vec<CaptiveRow>, Vec<CaptiveRow>), String> {
-    let Hull::Own { model, .. } = &trial.plant.hull else {
+    let HullModel::Own { model, .. } = &trial.plant.hull_model else {
         return Ok((Vec::new(), Vec::new()));
     };
     let hull = sc.ship_hull()?;
