@@ -107,12 +107,29 @@ build_native() {
   cargo build --release -p aes-cli
 }
 
+# tests/ is its package's root, so cargo's automatic discovery (which looks in <root>/tests/) finds
+# none of its files: each is listed in tests/Cargo.toml, and a file left out is never compiled.
+check_tests_listed() {
+  local f missing=0
+  for f in tests/*.rs; do
+    [ "$f" = tests/lib.rs ] && continue
+    if ! grep -qx "path = \"${f#tests/}\"" tests/Cargo.toml; then
+      echo "$f is not a [[test]] in tests/Cargo.toml: it would never be compiled" >&2
+      missing=1
+    fi
+  done
+  return "$missing"
+}
+
 run_tests() {
   local log
   log="$(mktemp)"
   say "rustfmt check"
   cargo fmt --all -- --check
-  say "no import cycle between core's modules"
+  say "every tests/*.rs is a [[test]] in tests/Cargo.toml (none left uncompiled)"
+  check_tests_listed
+  say "no import cycle between core's modules or folders (and the check refuses fake cycles)"
+  python3 scripts/check_module_cycles.py --self-test
   python3 scripts/check_module_cycles.py
   say "no module of core imports a higher layer (and the check refuses a fake upward import)"
   python3 scripts/check_module_layers.py --self-test

@@ -8,6 +8,15 @@ is a path that names Y from X: `crate::a::b` (resolved to the longest module it 
 (`crate::run`). Test modules (`#[cfg(test)] mod`) may look up, and a file may use its own folders'
 mod.rs (the hub that declares it). The modules must form an acyclic order; prints it, or the cycle.
 
+Folders too: inside every folder (core/src itself included) its entries, files and sub-folders,
+each taken whole, must import each other without a cycle, so `ship/hull.rs -> sea/strip.rs` and
+`sea/strip.rs -> ship/sections.rs` fail although the files alone are acyclic, and so do peers of
+one layer in a ring (plant -> control -> sea -> plant). An import from a folder's mod.rs into its
+own files, or back, is the folder's business and no edge between entries.
+
+    check_module_cycles.py [REPO]      check REPO (default: this script's repository)
+    check_module_cycles.py --self-test fake trees with a file cycle, a folder pair and a folder ring must be refused
+
 `Scan` is shared with `check_module_layers.py`, which holds the folders to their layers.
 """
 import pathlib
@@ -146,28 +155,122 @@ def core_src(argv):
     return pathlib.Path(root) / "core" / "src"
 
 
-def main():
-    edges = Scan(core_src(sys.argv)).edges
+def find_cycle(edges):
+    """(None, the nodes leaves first) when `edges` is acyclic, else (a cycle as a node list, None)."""
     state, stack, order = {}, [], []
 
     def visit(n):
         state[n] = 1
         stack.append(n)
-        for m in sorted(edges[n]):
+        for m in sorted(edges.get(n, ())):
             if state.get(m) == 1:
-                cycle = stack[stack.index(m):] + [m]
-                print("import cycle between core modules: " + " -> ".join(cycle), file=sys.stderr)
-                sys.exit(1)
+                return stack[stack.index(m):] + [m]
             if m not in state:
-                visit(m)
+                found = visit(m)
+                if found:
+                    return found
         stack.pop()
         state[n] = 2
         order.append(n)
+        return None
 
     for n in sorted(edges):
         if n not in state:
-            visit(n)
-    print("core modules, no import cycle (leaves first): " + " ".join(order))
+            found = visit(n)
+            if found:
+                return found, None
+    return None, order
+
+
+def entry_edges(scan):
+    """{entry: {entry}} between the entries of each folder (a file or a sub-folder, taken whole),
+    and one import site for each such edge: (module, line, path as written)."""
+    edges, sites = {}, {}
+    for name, targets in scan.sites.items():
+        for target, line, path in targets:
+            a, b = name.split("::"), target.split("::")
+            i = 0
+            while i < min(len(a), len(b)) and a[i] == b[i]:
+                i += 1
+            if i == len(a) or i == len(b):
+                continue  # a folder's mod.rs and its own files
+            x, y = "::".join(a[:i + 1]), "::".join(b[:i + 1])
+            edges.setdefault(x, set()).add(y)
+            sites.setdefault((x, y), (name, line, path))
+    return edges, sites
+
+
+def check(src):
+    """The problem with `src`'s imports as printable lines (none: no cycle), and the modules' order."""
+    scan = Scan(src)
+    cycle, order = find_cycle(scan.edges)
+    if cycle:
+        return ["import cycle between core modules: " + " -> ".join(cycle)], None
+    edges, sites = entry_edges(scan)
+    cycle, _ = find_cycle(edges)
+    if cycle:
+        folder = cycle[0].rpartition("::")[0] or "core/src"
+        lines = [f"import cycle between the entries of {folder}: " + " -> ".join(cycle)]
+        for x, y in zip(cycle, cycle[1:]):
+            name, line, path = sites[(x, y)]
+            lines.append(f"  {x} -> {y}: {scan.modules[name].relative_to(src.parent.parent)}:{line} names `{path}`")
+        return lines, None
+    return [], order
+
+
+def fake_core(root, files):
+    """Writes `files` ({path under core/src: text}) under `root`; returns that core/src."""
+    src = pathlib.Path(root) / "core" / "src"
+    for rel, body in files.items():
+        (src / rel).parent.mkdir(parents=True, exist_ok=True)
+        (src / rel).write_text(body)
+    return src
+
+
+def self_test():
+    """Fake trees: files in a cycle; two folders whose files are acyclic but which import each other;
+    three folders in a ring; and one that passes (a folder's hub and its files both ways, a test
+    module looking up, folders one way)."""
+    import tempfile
+
+    base = {"lib.rs": "pub mod ship;\npub mod sea;\npub mod plant;\n",
+            "plant/mod.rs": "pub mod motor;\n", "plant/motor.rs": "",
+            "ship/mod.rs": "pub mod hull;\npub mod sections;\nuse hull::Hull;\n",
+            "ship/hull.rs": "use crate::sea::strip::Ship;\nuse super::sections;\nuse crate::ship::Thing;\n",
+            "ship/sections.rs": "#[cfg(test)]\nmod tests {\n    use crate::ship::hull::Hull;\n}\n",
+            "sea/mod.rs": "pub mod strip;\n", "sea/strip.rs": "use crate::plant::motor;\n"}
+    cases = [
+        ("files in a cycle", {"plant/motor.rs": "use crate::sea::strip::Ship;\n"},
+         "import cycle between core modules: plant::motor -> sea::strip -> plant::motor"),
+        ("two folders", {"sea/strip.rs": "use crate::ship::sections::HullOffsets;\n"},
+         "import cycle between the entries of core/src: sea -> ship -> sea"),
+        ("a ring of three", {"plant/motor.rs": "fn f() {\n    crate::ship::sections::g();\n}\n"},
+         "import cycle between the entries of core/src: plant -> ship -> sea -> plant"),
+        ("one way", {}, None),
+    ]
+    failed = []
+    for what, change, want in cases:
+        with tempfile.TemporaryDirectory() as root:
+            got, _ = check(fake_core(root, {**base, **change}))
+        print(f"  {what}: " + ("\n    ".join(got) if got else "no cycle"))
+        if (got[0] if got else None) != want:
+            failed.append(f"{what}: expected {want!r}")
+    if failed:
+        print("cycle check self-test FAILED:\n  " + "\n  ".join(failed), file=sys.stderr)
+        sys.exit(1)
+    print("cycle check self-test: a file cycle, a pair of folders and a ring of three are refused; "
+          "a folder's hub with its files, a test module looking up and one-way folders are not")
+
+
+def main():
+    if "--self-test" in sys.argv:
+        return self_test()
+    problems, order = check(core_src([a for a in sys.argv if not a.startswith("--")]))
+    if problems:
+        print("\n".join(problems), file=sys.stderr)
+        sys.exit(1)
+    print("core modules, no import cycle between files or between the entries of a folder (leaves first): "
+          + " ".join(order))
 
 
 if __name__ == "__main__":

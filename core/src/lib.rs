@@ -9,6 +9,7 @@
 pub mod as_printed;
 pub mod checks;
 pub mod control;
+pub mod geometry;
 pub mod numerics;
 pub mod output;
 pub mod params;

@@ -1,5 +1,6 @@
 //! Small numerical helpers shared by the physics modules.
 
+pub mod complex;
 pub mod fft;
 pub mod interp;
 pub mod units;

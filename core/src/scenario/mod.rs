@@ -442,12 +442,12 @@ impl Scenario {
         &self,
         each: &dyn crate::sea::seakeeping::tables::ForEach,
     ) -> Result<std::sync::Arc<crate::sea::seakeeping::tables::RaoTable>, String> {
-        crate::sea::rao_cache::rao_table_with(&self.table_spec(&self.ship_hull()?), each)
+        crate::ship::rao_cache::rao_table_with(&self.table_spec(&self.ship_hull()?), each)
     }
 
     /// The RAO table's values and their digest, for another web worker ([`Self::insert_rao_table`]).
     pub fn rao_table_values(&self) -> Result<Vec<f64>, String> {
-        crate::sea::rao_cache::rao_table_values(
+        crate::ship::rao_cache::rao_table_values(
             &self.table_spec(&self.ship_hull()?),
             &crate::sea::seakeeping::tables::Serial,
         )
@@ -456,12 +456,12 @@ impl Scenario {
     /// Takes the table another web worker built ([`Self::rao_table_values`]) if it is this
     /// scenario's.
     pub fn insert_rao_table(&self, values_and_digest: &[f64]) -> Result<(), String> {
-        crate::sea::rao_cache::insert_rao_table(&self.table_spec(&self.ship_hull()?), values_and_digest)
+        crate::ship::rao_cache::insert_rao_table(&self.table_spec(&self.ship_hull()?), values_and_digest)
     }
 
-    fn table_spec<'a>(&'a self, hull: &'a crate::ship::hull::ShipHull) -> crate::sea::rao_cache::TableSpec<'a> {
+    fn table_spec<'a>(&'a self, hull: &'a crate::ship::hull::ShipHull) -> crate::ship::rao_cache::TableSpec<'a> {
         let sk = &self.seakeeping;
-        crate::sea::rao_cache::TableSpec {
+        crate::ship::rao_cache::TableSpec {
             hull,
             grid: &sk.grid,
             printed: &self.as_printed,

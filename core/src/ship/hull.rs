@@ -18,8 +18,8 @@
 
 use crate::as_printed::AsPrintedParams;
 use crate::checks::{num, Validator};
+use crate::geometry::{HullOffsets, Hydrostatics};
 use crate::sea::seakeeping::strip::{BilgeKeels, MassProperties, Ship};
-use crate::ship::sections::{HullOffsets, Hydrostatics};
 use serde::{Deserialize, Serialize};
 use std::sync::{Arc, Mutex, OnceLock};
 
@@ -565,9 +565,9 @@ impl Ship {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::DTMB5415_OFFSETS;
+    use crate::numerics::complex::cabs;
     use crate::scenario::Scenario;
-    use crate::sea::seakeeping::complex::cabs;
-    use crate::ship::sections::DTMB5415_OFFSETS;
 
     fn resolve(spec: &HullSpec) -> Result<ShipHull, (String, String)> {
         spec.resolve(1025.0)

@@ -8,7 +8,7 @@
 
 use super::state_space::StateSpace;
 use crate::control::linear::log_space;
-use crate::sea::seakeeping::complex::cabs;
+use crate::numerics::complex::cabs;
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};

@@ -12,9 +12,9 @@
 //! so only the strips' potential damping is left: the beam-sea roll peak at Fn 0 and Fn 0.2, with
 //! and without the aft-end terms.
 
-use super::complex::cabs;
 use super::motions::response;
 use super::strip::{default_omega_grid, RadiationTable, Ship};
+use crate::numerics::complex::cabs;
 use std::f64::consts::PI;
 
 /// Froude numbers of the comparison: at rest and Fn 0.2.
@@ -182,8 +182,7 @@ mod tests {
     fn aft_end_terms_matter_less_for_a_stiffer_wigley() {
         let mut ship = Ship::wigley();
         let mass = crate::sea::seakeeping::strip::MassProperties { kg_m: 3.5, ..ship.mass_props };
-        ship =
-            Ship::new(&crate::ship::sections::HullOffsets::wigley(), ship.draft, mass, None, ship.rho, ship.g).unwrap();
+        ship = Ship::new(&crate::geometry::HullOffsets::wigley(), ship.draft, mass, None, ship.rho, ship.g).unwrap();
         let r = roll_peaks(&ship, "Wigley hull at KG 3.5 m").unwrap();
         print(&r);
         let (on, off) = (r.change_with_terms_pct(), r.change_without_terms_pct());

@@ -10,8 +10,8 @@
 //! form keeps a_1 and a_3 (eq. 2.33); the bulb form's zeta + B zeta/(zeta^2 - A) expands into
 //! a_{2n+1} = B A^n (eq. 2.35, see `bulb`). The radiation solver only needs the coefficients.
 
-use super::complex::cabs;
-use crate::ship::sections::{lewis, LewisForm};
+use crate::geometry::{lewis, LewisForm};
+use crate::numerics::complex::cabs;
 use num_complex::Complex64 as C;
 use std::f64::consts::PI;
 

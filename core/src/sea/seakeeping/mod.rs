@@ -3,7 +3,8 @@
 //! second-order mean forces, and the tables the time-domain simulation interpolates.
 
 pub mod aft_end;
-pub mod complex;
+/// Moved to numerics (control reads it too); the path other crates use.
+pub use crate::numerics::complex;
 pub mod conformal;
 pub mod motions;
 pub mod params;

@@ -4,12 +4,12 @@
 //! iteration (eqs. 2.44-2.45), and the natural periods. The ship, its strips and their sectional
 //! coefficients are `strip`'s; the axes and conventions are stated there.
 
-use super::complex::cexp;
 use super::radiation::Contour;
 use super::reflection::{reflection_force, ShortWaveForce};
 use super::roll_damping::components;
 use super::strip::{RadiationTable, Sect, Ship};
 use crate::as_printed::AsPrintedParams;
+use crate::numerics::complex::cexp;
 use num_complex::Complex64 as C;
 
 /// The ship's linear response to a regular wave of unit amplitude.

@@ -191,7 +191,7 @@ impl SeakeepingParams {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sea::seakeeping::complex::cabs;
+    use crate::numerics::complex::cabs;
     use crate::sea::seakeeping::motions::response;
     use crate::sea::seakeeping::strip::{default_omega_grid, Ship};
 

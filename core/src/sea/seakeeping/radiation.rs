@@ -24,8 +24,8 @@
 //! The damping follows also from the far-field wave (energy flux): b = rho omega pi^2 |Q|^2 for the
 //! source, rho omega pi^2 nu^2 |Q|^2 for the dipole; tests check the two routes agree.
 
-use super::complex::{cabs, cexp, exp_e1};
 use super::conformal::SectionMap;
+use crate::numerics::complex::{cabs, cexp, exp_e1};
 use crate::numerics::gauss_legendre;
 use nalgebra::DMatrix;
 use num_complex::Complex64 as C;
@@ -181,7 +181,7 @@ pub fn solve(map: &SectionMap, c: &Contour, omega: f64, rho: f64, g: f64, n_mult
             let zp = map.dz(zeta);
             let mut w = v[1] - map.scale / z;
             let mut dw = -v[1] + zeta * zp * map.scale / (z * z);
-            let mut sum = super::complex::cln(z / (zeta * map.scale));
+            let mut sum = crate::numerics::complex::cln(z / (zeta * map.scale));
             let mut dsum = zeta * zp / z - 1.0;
             for &(e, cj) in zc.iter().skip(1) {
                 sum += v[e] * (cj / e as f64);

@@ -21,7 +21,7 @@
 use super::conformal::{best_section_map, SectionMap};
 use super::radiation::{default_multipoles, solve, Contour, Radiation2d};
 use super::roll_damping::RollHull;
-use crate::ship::sections::HullOffsets;
+use crate::geometry::HullOffsets;
 use num_complex::Complex64 as C;
 use serde::{Deserialize, Serialize};
 
@@ -292,7 +292,7 @@ impl RadiationTable {
 mod tests {
     use super::*;
     use crate::as_printed::AsPrintedParams;
-    use crate::sea::seakeeping::complex::{cabs, carg};
+    use crate::numerics::complex::{cabs, carg};
     use crate::sea::seakeeping::motions::*;
     use std::f64::consts::PI;
     use std::sync::OnceLock;

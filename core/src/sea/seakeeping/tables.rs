@@ -632,7 +632,7 @@ pub fn rao_json(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sea::seakeeping::complex::cabs;
+    use crate::numerics::complex::cabs;
 
     /// At grid nodes the interpolation returns the direct strip-theory result; waves from port
     /// mirror those from starboard; between nodes it stays close to the direct result in heave

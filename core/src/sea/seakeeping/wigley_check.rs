@@ -10,8 +10,8 @@
 
 use super::motions::{heave_pitch_system, response};
 use super::strip::{MassProperties, RadiationTable, Ship};
-use crate::sea::seakeeping::complex::cabs;
-use crate::ship::sections::HullOffsets;
+use crate::geometry::HullOffsets;
+use crate::numerics::complex::cabs;
 use std::f64::consts::PI;
 
 /// Journee's (1992) Wigley III measurements (see the file's header for the normalisations).

@@ -10,7 +10,7 @@
 use std::f64::consts::PI;
 
 /// The DTMB 5415 offsets (full scale, metres), embedded.
-pub const DTMB5415_OFFSETS: &str = include_str!("../../data/dtmb5415_offsets.csv");
+pub const DTMB5415_OFFSETS: &str = include_str!("../data/dtmb5415_offsets.csv");
 
 /// Stations of the embedded Wigley hull (cosine-spaced; see `HullOffsets::wigley_sized`).
 pub const WIGLEY_STATIONS: usize = 19;
@@ -384,7 +384,7 @@ mod tests {
     fn section_areas_match_exact_ones() {
         let hull = HullOffsets::dtmb5415();
         let secs = hull.sections(T).unwrap();
-        let exact = include_str!("../../data/dtmb5415_sections.csv");
+        let exact = include_str!("../data/dtmb5415_sections.csv");
         let mut checked = 0;
         for line in exact.lines().filter(|l| !l.starts_with('#') && !l.starts_with("station")) {
             let f: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
