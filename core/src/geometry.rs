@@ -9,6 +9,9 @@
 
 use std::f64::consts::PI;
 
+/// Shafts of the ship, each with its propeller, motor and DC bus (port, starboard).
+pub const N_SHAFTS: usize = 2;
+
 /// The DTMB 5415 offsets (full scale, metres), embedded.
 pub const DTMB5415_OFFSETS: &str = include_str!("../data/dtmb5415_offsets.csv");
 

@@ -24,6 +24,7 @@
 use crate::checks::Validator;
 use serde::{Deserialize, Serialize};
 
+pub use crate::plant::bus_part::Demand;
 use crate::plant::bus_part::{Account, Book, BusFlow, BusNode, BusPart, CheckInfo, Column};
 use crate::signals::Signal;
 
@@ -138,15 +139,6 @@ impl BusLoadParams {
         };
         service + self.pulse_power_w
     }
-}
-
-/// What the loads of one bus demand at one instant [W].
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct Demand {
-    /// Ship service converter's output power.
-    pub ship_service_w: f64,
-    /// Pulsed load's power.
-    pub pulse_w: f64,
 }
 
 /// The ship service converter with its input filter, and the pulsed load, of one bus.

@@ -12,11 +12,20 @@
 //! Order matters where parts meet at the bus node: a part sees the load of the parts before it
 //! ([`BusNode::p_load`]), so storage, which levels the bus's load, comes last.
 
-use crate::plant::bus_loads::Demand;
 use crate::signals::Signal;
 
 /// Buses: one a shaft (the hull's count).
-pub const SHAFTS: usize = crate::ship::hull::N_SHAFTS;
+pub const SHAFTS: usize = crate::geometry::N_SHAFTS;
+
+/// What the loads' profiles of one bus demand at one instant [W] (`plant::bus_loads`), held over
+/// a step.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Demand {
+    /// Ship service converter's output power.
+    pub ship_service_w: f64,
+    /// Pulsed load's power.
+    pub pulse_w: f64,
+}
 
 /// How the energy books count an account.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

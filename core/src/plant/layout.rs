@@ -7,7 +7,7 @@ use crate::plant::bus_part::Account;
 use crate::plant::BusParts;
 
 /// Shafts (independent plants): the hull's count, owned by `ship_hull`.
-pub use crate::ship::hull::N_SHAFTS;
+pub use crate::geometry::N_SHAFTS;
 /// Turbine-generator sets per shaft.
 pub const SETS_PER_SHAFT: usize = 2;
 /// Turbine-generator sets in all.

@@ -23,8 +23,8 @@ use crate::sea::seakeeping::strip::{BilgeKeels, MassProperties, Ship};
 use serde::{Deserialize, Serialize};
 use std::sync::{Arc, Mutex, OnceLock};
 
-/// Shafts of the ship (port, starboard).
-pub const N_SHAFTS: usize = 2;
+/// Shafts of the ship (port, starboard): the geometry's.
+pub use crate::geometry::N_SHAFTS;
 
 /// Resolved hulls (and strip-ship checks) remembered, the oldest dropped first.
 const MEMO_SIZE: usize = 8;
