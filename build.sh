@@ -5,7 +5,7 @@
 #                         http://127.0.0.1:${PORT:-8080}
 #   ./build.sh build      set up and build only (native CLI and www/pkg)
 #   ./build.sh test       set up, then rustfmt check, the book's links and generated tables (docs/),
-#                         clippy (warnings denied), every native test
+#                         clippy and cargo doc (warnings denied), every native test
 #                         (release mode), the cluster recipes (GNU parallel and Slurm shards
 #                         merge to the single run), the wasm-bindgen tests in Node and the browser
 #                         end-to-end test in headless Chromium (screenshots in target/)
@@ -124,6 +124,8 @@ run_tests() {
   python3 scripts/check_module_layers.py
   say "clippy (warnings are errors)"
   cargo clippy --workspace --all-targets --release -- -D warnings
+  say "cargo doc builds without warnings (about 40-80 s on 2 cores)"
+  RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --workspace
   say "native tests (release)"
   cargo test --workspace --release 2>&1 | tee "$log"
   say "validation report: every row within its tolerance, docs/validation.md up to date"

@@ -1,6 +1,10 @@
 //! `aes-sim`: the command line of the All Electric Ship simulator. One module per command under
 //! `cmd/` (its arguments beside what it does); what they share is in `common`.
 
+// The doc comments of the arguments are clap's --help text, where `[m]` is a unit, not a link:
+// escaping it would print the backslashes.
+#![allow(rustdoc::broken_intra_doc_links)]
+
 mod cmd;
 mod common;
 mod study;
