@@ -34,10 +34,10 @@ enum Cmd {
     Signals(cmd::signals::Args),
     /// List every scenario parameter: path, unit, default, allowed values and label (`--json`
     /// for the full declarations: help, source, page group, per-unit base; `--markdown` for the
-    /// README's table).
+    /// book's table, docs/reference/parameters.md).
     Params(cmd::params::Args),
     /// List the plant's health checks each run's summary applies (its `warnings`): what, the
-    /// threshold and why (`--markdown` for the README's table).
+    /// threshold and why (`--markdown` for the book's table, docs/reference/health.md).
     Health(cmd::health::Args),
     /// Print a preset scenario as JSON (a starting point for your own).
     Preset(cmd::presets::Args),
