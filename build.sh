@@ -4,15 +4,17 @@
 #   ./build.sh            set up what is missing, build the wasm into www/pkg, serve www on
 #                         http://127.0.0.1:${PORT:-8080}
 #   ./build.sh build      set up and build only (native CLI and www/pkg)
-#   ./build.sh test       set up, then rustfmt check, clippy (warnings denied), every native test
+#   ./build.sh test       set up, then rustfmt check, the book's links and generated tables (docs/),
+#                         clippy and cargo doc (warnings denied), every native test
 #                         (release mode), the cluster recipes (GNU parallel and Slurm shards
 #                         merge to the single run), the wasm-bindgen tests in Node and the browser
 #                         end-to-end test in headless Chromium (screenshots in target/)
 #   ./build.sh bench      simulated seconds per wall second of the start-up preset
 #   ./build.sh fuzz       the property tests of every entry point (tests/fuzz.rs) with many more
 #                         cases (AES_FUZZ_CASES, default 20000; a few minutes), before releases
-#   ./build.sh docs       regenerate the README's tables of scenario parameters (from the registry)
-#                         and of the plant's health checks (from core/src/sim/health.rs)
+#   ./build.sh docs       regenerate the book's generated tables in docs/ (scripts/docs.py): the
+#                         scenario parameters (from the registry), the plant's health checks (from
+#                         core/src/sim/health.rs), the trace signals and one line per module
 #   ./build.sh golden     regenerate the golden records of every preset (tests/golden/) after a
 #                         deliberate physics change; review the diff before committing
 #
@@ -126,6 +128,9 @@ run_tests() {
   log="$(mktemp)"
   say "rustfmt check"
   cargo fmt --all -- --check
+  say "every link and anchor of the README, CONTRIBUTING.md and docs/ resolves (the check refuses broken ones)"
+  python3 scripts/check-links.py --self-test
+  python3 scripts/check-links.py
   say "every tests/*.rs is a [[test]] in tests/Cargo.toml (none left uncompiled)"
   check_tests_listed
   say "no import cycle between core's modules or folders (and the check refuses fake cycles)"
@@ -134,15 +139,17 @@ run_tests() {
   say "no module of core imports a higher layer (and the check refuses a fake upward import)"
   python3 scripts/check_module_layers.py --self-test
   python3 scripts/check_module_layers.py
-  say "the README's Layout names every module of www/js and core/src"
-  node scripts/check-layout.mjs
   say "clippy (warnings are errors)"
   cargo clippy --workspace --all-targets --release -- -D warnings
+  say "cargo doc builds without warnings (about 40-80 s on 2 cores)"
+  RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --workspace
   say "native tests (release)"
   cargo test --workspace --release 2>&1 | tee "$log"
   say "validation report: every row within its tolerance, docs/validation.md up to date"
   cargo build --release -p aes-cli
   ./target/release/aes-sim validate --check docs/validation.md
+  say "the book's generated tables are current (parameters, health checks, signals, modules)"
+  python3 scripts/docs.py --check
   say "cluster recipes: GNU parallel and Slurm shards merge to the single run (docs/cluster.md)"
   ensure_parallel
   scripts/check-sharding.sh target/release/aes-sim 2>&1 | tee -a "$log"
@@ -210,20 +217,10 @@ case "${1:-serve}" in
     git --no-pager diff --stat -- docs/validation.md docs/validation || true
     ;;
   docs)
-    # The README's scenario table, from the parameter registry (tests/registry.rs checks it).
+    # The book's generated tables (scripts/docs.py --check and tests/registry.rs check them).
     build_native
-    python3 - <<'PY'
-import subprocess
-text = open("README.md").read()
-for marker, cmd in (("params", "params"), ("health", "health")):
-    table = subprocess.check_output(["./target/release/aes-sim", cmd, "--markdown"], text=True).rstrip("\n") + "\n"
-    begin, end = f"<!-- {marker}:begin -->\n", f"<!-- {marker}:end -->"
-    a = text.index(begin) + len(begin)
-    b = text.index(end, a)
-    text = text[:a] + table + text[b:]
-open("README.md", "w").write(text)
-PY
-    git --no-pager diff --stat -- README.md || true
+    python3 scripts/docs.py
+    git --no-pager diff --stat -- docs || true
     ;;
   golden)
     UPDATE_GOLDEN=1 cargo test --release -p aes-tests --test golden

@@ -1,5 +1,5 @@
-//! The parameter registry reaches the page and the README: the page names no parameter the
-//! registry lacks, and the README's scenario table is the registry's.
+//! The parameter registry reaches the page and the book (docs/): the page names no parameter the
+//! registry lacks, and the book's scenario table is the registry's.
 
 use aes_core::scenario::registry;
 use std::path::Path;
@@ -62,42 +62,47 @@ fn a_stale_path_is_caught() {
     assert!(registry::find("sea.wave_height_m").is_none());
 }
 
-/// The README's text between its `<!-- NAME:begin -->` and `<!-- NAME:end -->` markers.
-fn readme_between(name: &str) -> String {
-    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md")).unwrap();
-    let (begin, end) = (format!("<!-- {name}:begin -->\n"), format!("<!-- {name}:end -->"));
-    let a = readme.find(&begin).unwrap_or_else(|| panic!("README has no {name}:begin marker")) + begin.len();
-    let b = readme[a..].find(&end).unwrap_or_else(|| panic!("README has no {name}:end marker")) + a;
-    readme[a..b].to_string()
+/// A page of the book (docs/, relative to it).
+fn book_page(page: &str) -> String {
+    std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs").join(page))
+        .unwrap_or_else(|e| panic!("docs/{page}: {e}"))
 }
 
-/// The README's scenario table is `aes-sim params --markdown` (regenerate with `./build.sh docs`).
+/// A book page's text between its `<!-- NAME:begin -->` and `<!-- NAME:end -->` markers.
+fn page_between(page: &str, name: &str) -> String {
+    let text = book_page(page);
+    let (begin, end) = (format!("<!-- {name}:begin -->\n"), format!("<!-- {name}:end -->"));
+    let a = text.find(&begin).unwrap_or_else(|| panic!("docs/{page} has no {name}:begin marker")) + begin.len();
+    let b = text[a..].find(&end).unwrap_or_else(|| panic!("docs/{page} has no {name}:end marker")) + a;
+    text[a..b].to_string()
+}
+
+/// The book's scenario table is `aes-sim params --markdown` (regenerate with `./build.sh docs`).
 #[test]
-fn the_readme_table_is_the_registry() {
+fn the_book_table_is_the_registry() {
     assert!(
-        readme_between("params") == registry::markdown_table(),
-        "README's scenario table is stale: run ./build.sh docs"
+        page_between("reference/parameters.md", "params") == registry::markdown_table(),
+        "docs/reference/parameters.md is stale: run ./build.sh docs"
     );
 }
 
-/// The README's list of health checks is `aes-sim health --markdown` (regenerate with
+/// The book's list of health checks is `aes-sim health --markdown` (regenerate with
 /// `./build.sh docs`).
 #[test]
-fn the_readme_health_checks_are_cores() {
+fn the_book_health_checks_are_cores() {
     assert!(
-        readme_between("health") == aes_core::sim::health::markdown(),
-        "README's health checks are stale: run ./build.sh docs"
+        page_between("reference/health.md", "health") == aes_core::sim::health::markdown(),
+        "docs/reference/health.md is stale: run ./build.sh docs"
     );
 }
 
-/// The README's paragraph on limits states issue 34's limits as core's constants hold them (a
-/// changed constant fails here until the README says so).
+/// The command line's page states issue 34's limits as core's constants hold them (a changed
+/// constant fails here until docs/cli.md says so).
 #[test]
-fn the_readme_states_the_limits_as_core_holds_them() {
+fn the_book_states_the_limits_as_core_holds_them() {
     use aes_core::sea::seakeeping::tables;
     use aes_core::studies::montecarlo;
-    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md")).unwrap();
-    let text = readme.split_whitespace().collect::<Vec<_>>().join(" ");
+    let text = book_page("cli.md").split_whitespace().collect::<Vec<_>>().join(" ");
     let thousands = |n: u64| {
         let s = n.to_string();
         let mut out = String::new();
@@ -125,7 +130,7 @@ fn the_readme_states_the_limits_as_core_holds_them() {
         format!("`bench --repeat` 1 to {}", aes_core::scenario::MAX_BENCH_REPEAT),
         format!("`validate --trials` 1 to {}", thousands(aes_validation::MAX_TRIALS)),
     ] {
-        assert!(text.contains(&want), "README does not say: {want}");
+        assert!(text.contains(&want), "docs/cli.md does not say: {want}");
     }
 }
 

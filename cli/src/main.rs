@@ -1,6 +1,10 @@
 //! `aes-sim`: the command line of the All Electric Ship simulator. One module per command under
 //! `cmd/` (its arguments beside what it does); what they share is in `common`.
 
+// The doc comments of the arguments are clap's --help text, where `[m]` is a unit, not a link:
+// escaping it would print the backslashes.
+#![allow(rustdoc::broken_intra_doc_links)]
+
 mod cmd;
 mod common;
 mod study;
@@ -30,10 +34,10 @@ enum Cmd {
     Signals(cmd::signals::Args),
     /// List every scenario parameter: path, unit, default, allowed values and label (`--json`
     /// for the full declarations: help, source, page group, per-unit base; `--markdown` for the
-    /// README's table).
+    /// book's table, docs/reference/parameters.md).
     Params(cmd::params::Args),
     /// List the plant's health checks each run's summary applies (its `warnings`): what, the
-    /// threshold and why (`--markdown` for the README's table).
+    /// threshold and why (`--markdown` for the book's table, docs/reference/health.md).
     Health(cmd::health::Args),
     /// Print a preset scenario as JSON (a starting point for your own).
     Preset(cmd::presets::Args),

@@ -30,7 +30,7 @@ crate::params! {
         /// turns at the encounter frequency. As printed: the phase gains (omega - omega0) dt on top,
         /// with omega at the speed and heading of the last RAO look-up.
         pub doppler_twice: bool = false => {
-            label: "Eqs. 2.55/2.59 as printed", source: "corrected by default (README: where the thesis was inconsistent)",
+            label: "Eqs. 2.55/2.59 as printed", source: "corrected by default (docs/thesis-inconsistencies.md)",
             help: "Doppler shift counted twice in the wave phase.",
         },
         /// Appendix A's two typos against STF (1970), which the thesis says it takes verbatim: eq. 5
@@ -38,7 +38,7 @@ crate::params! {
         /// even have A35's units) and eq. 17 prints +U A53^0 in B35 (STF: +U A33^0). Corrected: STF.
         /// As printed: the RAO table is computed with the printed A35 and B35.
         pub appendix_a_typos: bool = false => {
-            label: "Appendix A eqs. 5, 17 as printed", source: "corrected by default (README: where the thesis was inconsistent)",
+            label: "Appendix A eqs. 5, 17 as printed", source: "corrected by default (docs/thesis-inconsistencies.md)",
             help: "The two typos against STF (1970) in A35 and B35.",
         },
         /// Eq. 2.47 (second-order mean force, after Salvesen 1978) conjugates only the Froude-Krylov
@@ -47,7 +47,7 @@ crate::params! {
         /// (added resistance coefficient 1.0 at lambda/L = 4.8 and Fn 0.28, against 0.1 corrected and
         /// 0.01 by Gerritsma-Beukelman). As printed: ^F_j^D unconjugated.
         pub eq_2_47_conjugate: bool = false => {
-            label: "Eq. 2.47 as printed", source: "corrected by default (README: where the thesis was inconsistent)",
+            label: "Eq. 2.47 as printed", source: "corrected by default (docs/thesis-inconsistencies.md)",
             help: "Only the Froude-Krylov force conjugated in the mean drift force.",
         },
         /// Ch. 2.2.3 calls E_a "rms line-to-line", while eq. 2.8's v_DC = (3 sqrt(6)/pi) E_a is the
@@ -57,7 +57,7 @@ crate::params! {
         /// (and the field voltage ceiling) are sqrt(3) times larger, and the bus set point
         /// (`controllers.field.bus_voltage_ref_v`) is read as sqrt(3) times itself, 9731 V.
         pub ea_line_to_line: bool = false => {
-            label: "Eq. 2.8's E_a line to line", source: "corrected by default (README: where the thesis was inconsistent)",
+            label: "Eq. 2.8's E_a line to line", source: "corrected by default (docs/thesis-inconsistencies.md)",
             help: "The bus at sqrt 3 times the phase reading (9731 V).",
         },
         /// Eq. 2.5 prints Q_m = 3 eta_m |I_r|^2 R_rm / omega_rm: the rotor copper loss over the shaft
@@ -66,7 +66,7 @@ crate::params! {
         /// corrected torque (a motor that makes about 1 % of its torque at its working slip), with
         /// the shaft speed kept above 1 rad/s so that standstill stays finite.
         pub eq_2_5_copper_loss: bool = false => {
-            label: "Eq. 2.5 as printed", source: "corrected by default (README: where the thesis was inconsistent)",
+            label: "Eq. 2.5 as printed", source: "corrected by default (docs/thesis-inconsistencies.md)",
             help: "Motor torque as the rotor copper loss over shaft speed.",
         },
         /// Table 2.1's P = 12 is called pole pairs while ch. 2.2.2 writes omega_r = (P_m/2) omega_rm
@@ -74,7 +74,7 @@ crate::params! {
         /// (poles): `plant.motor.pole_pairs` counts poles, so the motor has half as many pole pairs,
         /// a 600 rpm machine at 60 Hz.
         pub motor_p_is_poles: bool = false => {
-            label: "Table 2.1's P as poles", source: "corrected by default (README: where the thesis was inconsistent)",
+            label: "Table 2.1's P as poles", source: "corrected by default (docs/thesis-inconsistencies.md)",
             help: "A 600 rpm motor: plant.motor.pole_pairs counts poles.",
         },
         /// Tables 5.1 and 5.5 give the ship L = 180 m, x_p = 75 m and m = 7e6 kg, while its hull, the
@@ -84,7 +84,7 @@ crate::params! {
         /// 75 m and the surge model's mass 7e6 kg (the seakeeping hull and the propellers' place stay
         /// the hull's: 75 m aft of the centre of gravity is behind a 142 m hull's stern).
         pub table_5_ship: bool = false => {
-            label: "Tables 5.1/5.5's ship", source: "corrected by default (README: where the thesis was inconsistent)",
+            label: "Tables 5.1/5.5's ship", source: "corrected by default (docs/thesis-inconsistencies.md)",
             help: "L = 180 m, x_p = 75 m, m = 7e6 kg in the maneuvering and surge models.",
         },
     }

@@ -56,7 +56,7 @@ impl fmt::Display for ScenarioError {
 
 impl std::error::Error for ScenarioError {}
 
-/// Longest value echoed in a message [characters]; longer values are cut with an ellipsis.
+/// Longest value echoed in a message \[characters\]; longer values are cut with an ellipsis.
 pub const MAX_VALUE_CHARS: usize = 60;
 
 /// Most problems of one scenario a message lists, and most bytes of them (one problem is at most

@@ -26,9 +26,9 @@ pub const MAX_STATIONS: usize = 200;
 pub const MAX_ROWS_PER_STATION: usize = 200;
 /// Most data rows in a hull file.
 pub const MAX_HULL_ROWS: usize = 20_000;
-/// Largest hull file [bytes].
+/// Largest hull file \[bytes\].
 pub const MAX_HULL_BYTES: usize = 2 << 20;
-/// Largest magnitude of a coordinate or half-breadth [m] (a ship, not an ocean).
+/// Largest magnitude of a coordinate or half-breadth \[m\] (a ship, not an ocean).
 pub const MAX_COORDINATE_M: f64 = 10_000.0;
 
 /// One station: its position and (z, half-breadth) rows with z increasing.
@@ -36,9 +36,9 @@ pub const MAX_COORDINATE_M: f64 = 10_000.0;
 pub struct Station {
     /// Station index as in the file (fractional stations allowed).
     pub index: f64,
-    /// Longitudinal position [m], forward from the aft perpendicular.
+    /// Longitudinal position \[m\], forward from the aft perpendicular.
     pub x: f64,
-    /// Heights above the baseline [m] and half-breadths [m], z strictly increasing.
+    /// Heights above the baseline \[m\] and half-breadths \[m\], z strictly increasing.
     pub z: Vec<f64>,
     pub half_breadth: Vec<f64>,
 }
@@ -53,11 +53,11 @@ pub struct HullOffsets {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Section {
     pub x: f64,
-    /// Full breadth at the waterline [m].
+    /// Full breadth at the waterline \[m\].
     pub beam: f64,
-    /// Local draft: waterline minus the section's lowest wetted point [m].
+    /// Local draft: waterline minus the section's lowest wetted point \[m\].
     pub draft: f64,
-    /// Immersed area [m^2] and its centroid height above the baseline [m].
+    /// Immersed area [m^2] and its centroid height above the baseline \[m\].
     pub area: f64,
     pub centroid_z: f64,
 }
@@ -69,12 +69,12 @@ pub struct Hydrostatics {
     pub volume: f64,
     /// Longitudinal centre of buoyancy [m from the aft perpendicular].
     pub lcb: f64,
-    /// Centre of buoyancy above the baseline [m].
+    /// Centre of buoyancy above the baseline \[m\].
     pub kb: f64,
-    /// Waterplane area [m^2] and its transverse second moment over the volume, BM_T [m].
+    /// Waterplane area [m^2] and its transverse second moment over the volume, BM_T \[m\].
     pub awp: f64,
     pub bmt: f64,
-    /// Second moment of the waterplane about its centroid, longitudinally, over the volume [m].
+    /// Second moment of the waterplane about its centroid, longitudinally, over the volume \[m\].
     pub bml: f64,
 }
 
@@ -196,7 +196,7 @@ impl HullOffsets {
         HullOffsets::wigley_sized(100.0, 10.0, 6.25, WIGLEY_STATIONS, WIGLEY_ROWS_BELOW_WL)
     }
 
-    /// The Wigley hull of length `lpp`, beam `beam` and draft `draft` [m], generated in code at
+    /// The Wigley hull of length `lpp`, beam `beam` and draft `draft` \[m\], generated in code at
     /// `stations` stations (at least 3) cosine-spaced from the AP (x = 0) to the FP (x = lpp), so
     /// they crowd the fine ends where the beam changes fastest and the zero-beam end stations,
     /// which strip theory leaves out, take little length with them; and `rows` equal steps in z
@@ -330,7 +330,7 @@ fn section(s: &Station, t: f64) -> Section {
 pub struct LewisForm {
     pub a1: f64,
     pub a3: f64,
-    /// Scale M: half-beam = M (1 + a1 + a3), draft = M (1 - a1 + a3) [m].
+    /// Scale M: half-beam = M (1 + a1 + a3), draft = M (1 - a1 + a3) \[m\].
     pub scale: f64,
     /// The area coefficient actually used (differs from the section's when clamped).
     pub sigma: f64,
@@ -365,7 +365,7 @@ impl LewisForm {
         PI / 4.0 * (1.0 - a1 * a1 - 3.0 * a3 * a3) / ((1.0 + a3) * (1.0 + a3) - a1 * a1)
     }
     /// A contour point at angle `theta` from the keel (0) to the waterline (pi/2), on one side:
-    /// (half-breadth, depth below the waterline) [m].
+    /// (half-breadth, depth below the waterline) \[m\].
     pub fn point(&self, theta: f64) -> (f64, f64) {
         let m = self.scale;
         (

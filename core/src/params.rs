@@ -1,11 +1,11 @@
 //! The scenario's parameters, declared once.
 //!
-//! Every section of the scenario is written with [`params!`]: one line per field gives its type,
+//! Every section of the scenario is written with [`params!`](crate::params!): one line per field gives its type,
 //! default and a [`Decl`] (label, unit, allowed range or choices, one-line help, source of the
 //! default, the page's form group, the per-unit base). From that one declaration come the struct
 //! and its `Default`, the range checks and their messages, the wording of the reader's type
 //! errors, `aes-sim params`, the wasm's `paramMeta()` (the page's form) and the README's scenario
-//! table. Choices are enums written with [`choices!`], which give each value its label.
+//! table. Choices are enums written with [`choices!`](crate::choices!), which give each value its label.
 //!
 //! Checks that relate fields (a hull's draft bounds its KG; the record interval is a whole number
 //! of steps) are the section's [`CrossCheck`], written by hand beside the physics.
@@ -343,7 +343,7 @@ impl<T: Section> Param for Vec<T> {
 /// How many items of a list are checked (a longer list is refused by its section, which says so).
 pub const MAX_LIST_ITEMS: usize = 10_000;
 
-/// A section of the scenario written with [`params!`].
+/// A section of the scenario written with [`params!`](crate::params!).
 pub trait Section: Param + Default {
     /// Appends the listing of every field under `prefix`.
     fn describe_fields(prefix: &str, default: &Self, out: &mut Vec<ParamMeta>);

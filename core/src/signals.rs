@@ -1,6 +1,6 @@
 //! The recorded signals, declared once.
 //!
-//! [`for_each_signal!`] is the one table: for every trace column its enum variant, name, unit,
+//! [`for_each_signal!`](crate::for_each_signal!) is the one table: for every trace column its enum variant, name, unit,
 //! short label, description and the expression that computes it from the simulator's recording
 //! context. This leaf module expands the table into [`Signal`] and [`SIGNALS`] (metadata only: the
 //! expressions are discarded here, so this module depends on nothing); `sim::record` expands the

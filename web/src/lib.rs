@@ -244,7 +244,7 @@ pub fn run_summary(json: JsValue) -> Result<String, JsError> {
 
 /// The IPS stability tool (thesis ch. 4) for the page's stability tab: `aes_core::studies::ips::study`,
 /// as `aes-sim ips bode` runs it. `side` is "generator" or "motor"; the operating point is omega
-/// [rad/s], v_fd [V] and I [A] (generator) or T* [N m] (motor); `closed` picks the closed-loop
+/// [rad/s], v_fd \[V\] and I \[A\] (generator) or T* [N m] (motor); `closed` picks the closed-loop
 /// model; Bode from `from_hz` to `to_hz` in `points` points. Returns the JSON of `aes-sim ips bode`:
 /// `steady_state`, `linear` (matrices, `poles`, `stable`), `margins` (closed loop) and `bode`.
 #[wasm_bindgen(js_name = ipsAnalysis)]
@@ -611,7 +611,7 @@ impl Sea {
         self.comps.len()
     }
 
-    /// Surface elevation [m, up] at the points (xs[i] north, ys[i] east) [m] at time t [s]
+    /// Surface elevation [m, up] at the points (xs\[i\] north, ys\[i\] east) \[m\] at time t \[s\]
     /// (eq. 2.55's superposition; at most 20,000 points a call).
     pub fn elevations(&mut self, t: f64, xs: &[f64], ys: &[f64]) -> Result<js_sys::Float64Array, JsError> {
         if !t.is_finite() {

@@ -5,7 +5,7 @@ use crate::common::{emit, Failure};
 // The command line of `aes-sim health`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// The README's table (Markdown).
+    /// The book's table, docs/reference/health.md (Markdown).
     #[arg(long)]
     markdown: bool,
 }

@@ -200,10 +200,10 @@ pub fn fourier_gain(t: &[f64], y: &[f64], omega: f64, input_amplitude: f64) -> B
 /// Classical stability margins of a loop transfer function L(j omega) (negative feedback).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Margins {
-    /// Gain margin [dB] at the lowest phase crossover (L real and negative); None if none.
+    /// Gain margin \[dB\] at the lowest phase crossover (L real and negative); None if none.
     pub gain_margin_db: Option<f64>,
     pub phase_crossover_rad_s: Option<f64>,
-    /// Phase margin [deg] at the lowest gain crossover (|L| = 1); None if none.
+    /// Phase margin \[deg\] at the lowest gain crossover (|L| = 1); None if none.
     pub phase_margin_deg: Option<f64>,
     pub gain_crossover_rad_s: Option<f64>,
 }

@@ -29,7 +29,7 @@ impl DiscretePi {
         self.kp * err + self.integral
     }
 
-    /// Clamps `unsat` to [`lo`, `hi`] and integrates `err` over `ts` [s] under the anti-windup
+    /// Clamps `unsat` to [`lo`, `hi`] and integrates `err` over `ts` \[s\] under the anti-windup
     /// rule; returns the clamped output.
     pub fn saturate(&mut self, unsat: f64, err: f64, lo: f64, hi: f64, ts: f64) -> f64 {
         if may_integrate(unsat, lo, hi, err) {
@@ -38,7 +38,7 @@ impl DiscretePi {
         unsat.clamp(lo, hi)
     }
 
-    /// One sample: error `err`, output limits [`lo`, `hi`], sample period `ts` [s].
+    /// One sample: error `err`, output limits [`lo`, `hi`], sample period `ts` \[s\].
     pub fn update(&mut self, err: f64, lo: f64, hi: f64, ts: f64) -> f64 {
         let unsat = self.unsaturated(err);
         self.saturate(unsat, err, lo, hi, ts)

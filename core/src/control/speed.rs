@@ -60,7 +60,7 @@ impl crate::params::CrossCheck for SpeedControlParams {}
 
 /// Speed step of the calm-water map [m/s].
 pub const MAP_STEP_M_S: f64 = 0.25;
-/// Highest ship speed of the calm-water map [knots] (the command range's top).
+/// Highest ship speed of the calm-water map \[knots\] (the command range's top).
 pub const MAP_TOP_KN: f64 = 40.0;
 
 /// The ship-speed loop's state: calm-water map, PI trim and ramp-limited shaft reference.

@@ -3,7 +3,7 @@
 //! turbine part-load curve, a station's half-breadths), and the two-column tables embedded as CSV.
 
 /// The segment of increasing `grid` holding `x` and the fraction along it: `(j, f)` with
-/// x = grid[j] + f (grid[j+1] - grid[j]); held at the ends (f = 0 below, (n-2, 1) above); a NaN
+/// x = grid\[j\] + f (grid[j+1] - grid\[j\]); held at the ends (f = 0 below, (n-2, 1) above); a NaN
 /// `x` gives the first point.
 pub fn bracket(grid: &[f64], x: f64) -> (usize, f64) {
     if grid.len() < 2 || x.is_nan() || x <= grid[0] {

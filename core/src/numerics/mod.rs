@@ -46,7 +46,7 @@ pub fn powi(x: f64, n: u32) -> f64 {
     result
 }
 
-/// One classical fourth-order Runge-Kutta step of dx/dt = f(t, x) from `t` over `dt` [s], the
+/// One classical fourth-order Runge-Kutta step of dx/dt = f(t, x) from `t` over `dt` \[s\], the
 /// stability tool's integrator and the simulator's default (`stepping.integrator`). `f(t, y, dx)` writes the derivative into
 /// every entry of `dx`. With a fixed-size array state nothing is allocated.
 pub fn rk4<S>(x: &mut S, t: f64, dt: f64, mut f: impl FnMut(f64, &S, &mut S))
@@ -80,7 +80,7 @@ where
 }
 
 /// One explicit midpoint (second-order Runge-Kutta) step of dx/dt = f(t, x) from `t` over `dt`
-/// [s]: the slope at the half step, found from the start's, carries the whole step. Two
+/// \[s\]: the slope at the half step, found from the start's, carries the whole step. Two
 /// evaluations instead of RK4's four; stable for a decaying real mode while |lambda dt| <= 2
 /// (RK4: 2.78); an undamped oscillation grows slowly (by (omega dt)^4 / 8 a step), harmless for
 /// the drive train's slow modes (omega dt below 0.01 at 5 ms). No allocation with a fixed-size array state.

@@ -473,7 +473,7 @@ pub enum Fact {
     Reaches { signal: &'static str, level: f64, from_s: f64, t_s: Option<f64> },
     /// Surface-loss onsets (beta_T leaves its submerged value) in the run.
     Onsets { count: usize },
-    /// Energy [J] burnt in the brake resistor (the time integral of its power).
+    /// Energy \[J\] burnt in the brake resistor (the time integral of its power).
     BrakeEnergy { value_j: f64 },
     /// A level of the model (`sim::health`'s thresholds), named.
     Level { name: &'static str, value: f64 },

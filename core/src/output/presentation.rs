@@ -33,19 +33,19 @@ pub struct PageConstants {
     pub motor_rated_power_w: f64,
     pub bus_voltage_ref_v: f64,
     pub turbine_rated_speed_rpm: f64,
-    /// Ship length of the maneuvering model [m] (the hull's Lpp, or Table 5.5's 180 m with
+    /// Ship length of the maneuvering model \[m\] (the hull's Lpp, or Table 5.5's 180 m with
     /// `as_printed.table_5_ship`).
     pub ship_length_m: f64,
-    /// Length between perpendiculars of the hull [m] (RAO plots against lambda/L).
+    /// Length between perpendiculars of the hull \[m\] (RAO plots against lambda/L).
     pub seakeeping_lpp_m: f64,
     /// Gravity [m/s^2] of the wave dispersion relation.
     pub gravity_m_s2: f64,
-    /// Calm-water hub depth h0 [m] and the shafts' offsets to port [m].
+    /// Calm-water hub depth h0 \[m\] and the shafts' offsets to port \[m\].
     pub hub_depth_m: f64,
     pub shaft_y_m: [f64; crate::ship::hull::N_SHAFTS],
-    /// Propeller radius R [m] (the disc drawn at the hub depth).
+    /// Propeller radius R \[m\] (the disc drawn at the hub depth).
     pub propeller_radius_m: f64,
-    /// Propeller hub aft of the centre of gravity [m] (eq. 2.56).
+    /// Propeller hub aft of the centre of gravity \[m\] (eq. 2.56).
     pub prop_x_aft_m: f64,
     /// When the live views turn a block to its warning colour.
     pub warnings: WarningLevels,
@@ -79,7 +79,7 @@ pub struct WarningLevels {
 }
 
 /// The stern-to-stem side profile and waterline of the seakeeping hull, for drawing: positions
-/// forward from the aft perpendicular [m], heights up from the calm waterline [m].
+/// forward from the aft perpendicular \[m\], heights up from the calm waterline \[m\].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct HullProfile {
     pub name: String,
@@ -88,9 +88,9 @@ pub struct HullProfile {
     /// Lowest point of each station (keel or bottom) and its highest (deck edge) [m, up].
     pub keel_z_m: Vec<f64>,
     pub deck_z_m: Vec<f64>,
-    /// Half-breadth at the calm waterline [m] (0 where the station is dry).
+    /// Half-breadth at the calm waterline \[m\] (0 where the station is dry).
     pub waterline_half_breadth_m: Vec<f64>,
-    /// Centre of gravity [m from the AP], draft [m], length between perpendiculars [m].
+    /// Centre of gravity [m from the AP], draft \[m\], length between perpendiculars \[m\].
     pub lcg_m: f64,
     pub draft_m: f64,
     pub lpp_m: f64,
@@ -139,14 +139,14 @@ pub struct HullSheet {
     pub profile: HullProfile,
     /// Every station's offsets: x from the AP, (z above the baseline, half-breadth) rows.
     pub stations: Vec<StationOffsets>,
-    /// Waterline above the baseline [m], beam at it [m], displaced volume [m^3] and mass [kg].
+    /// Waterline above the baseline \[m\], beam at it \[m\], displaced volume [m^3] and mass \[kg\].
     pub draft_m: f64,
     pub beam_m: f64,
     pub volume_m3: f64,
     pub mass_kg: f64,
-    /// Centre of buoyancy forward of the AP [m] and above the baseline [m]; transverse and
-    /// longitudinal metacentric radii [m]; centre of gravity above the baseline [m]; metacentric
-    /// heights [m]; waterplane area [m^2].
+    /// Centre of buoyancy forward of the AP \[m\] and above the baseline \[m\]; transverse and
+    /// longitudinal metacentric radii \[m\]; centre of gravity above the baseline \[m\]; metacentric
+    /// heights \[m\]; waterplane area [m^2].
     pub lcb_m: f64,
     pub kb_m: f64,
     pub bm_t_m: f64,
@@ -155,18 +155,18 @@ pub struct HullSheet {
     pub gm_t_m: f64,
     pub gm_l_m: f64,
     pub awp_m2: f64,
-    /// Radii of gyration [m] and bilge keels (length, breadth [m]; none: null).
+    /// Radii of gyration \[m\] and bilge keels (length, breadth \[m\]; none: null).
     pub k_m: [f64; 3],
     pub bilge_keels_m: Option<[f64; 2]>,
     /// Propeller hubs: x from the AP, shafts' offsets to port, height above the baseline,
-    /// calm-water depth h0 [m]; the propeller's diameter [m]; the rudder's x from the AP [m].
+    /// calm-water depth h0 \[m\]; the propeller's diameter \[m\]; the rudder's x from the AP \[m\].
     pub propeller_x_m: f64,
     pub shaft_y_m: [f64; crate::ship::hull::N_SHAFTS],
     pub hub_above_base_m: f64,
     pub hub_depth_m: f64,
     pub propeller_diameter_m: f64,
     pub rudder_x_m: f64,
-    /// Stations strip theory takes only approximately (x from the AP [m], why).
+    /// Stations strip theory takes only approximately (x from the AP \[m\], why).
     pub approximated_stations: Vec<(f64, String)>,
 }
 

@@ -130,7 +130,7 @@ impl BusLoadParams {
         self.ship_service_w > 0.0 || (self.ship_service_step_s > 0.0 && self.ship_service_step_to_w > 0.0)
     }
 
-    /// The largest power the loads of one bus draw at once [W].
+    /// The largest power the loads of one bus draw at once \[W\].
     pub fn peak_w(&self) -> f64 {
         let service = if self.ship_service_step_s > 0.0 {
             self.ship_service_w.max(self.ship_service_step_to_w)
@@ -146,7 +146,7 @@ impl BusLoadParams {
 pub struct BusLoads {
     pub ship_service: Option<ShipService>,
     pub params: BusLoadParams,
-    /// Voltage below which the loads' currents stop rising [V] ([`CPL_MIN_VOLTAGE_PU`]).
+    /// Voltage below which the loads' currents stop rising \[V\] ([`CPL_MIN_VOLTAGE_PU`]).
     pub v_min: f64,
 }
 
@@ -156,7 +156,7 @@ pub struct ShipService {
     pub l_h: f64,
     pub r_ohm: f64,
     pub c_f: f64,
-    /// Voltage below which its current stops rising [V] ([`CPL_MIN_VOLTAGE_PU`]).
+    /// Voltage below which its current stops rising \[V\] ([`CPL_MIN_VOLTAGE_PU`]).
     pub v_min: f64,
 }
 
@@ -166,17 +166,17 @@ pub struct FilterFlow {
     /// di_L/dt [A/s], dv_f/dt [V/s].
     pub di_l: f64,
     pub dv_f: f64,
-    /// Current the converter draws from the filter capacitor [A].
+    /// Current the converter draws from the filter capacitor \[A\].
     pub i_load: f64,
-    /// Power the converter takes (its output: constant power above its current limit) [W].
+    /// Power the converter takes (its output: constant power above its current limit) \[W\].
     pub p_load: f64,
-    /// Filter resistance loss R_f i_L^2 [W].
+    /// Filter resistance loss R_f i_L^2 \[W\].
     pub p_loss: f64,
 }
 
 impl ShipService {
     /// The filter's rates with the bus at `v_bus`, the filter at (`i_l`, `v_f`) and the converter
-    /// asking for `p` [W].
+    /// asking for `p` \[W\].
     pub fn flow(&self, v_bus: f64, i_l: f64, v_f: f64, p: f64) -> FilterFlow {
         let i_load = p / v_f.max(self.v_min);
         FilterFlow {
@@ -200,7 +200,7 @@ impl ShipService {
         Some((p / v_f, v_f))
     }
 
-    /// The largest constant power the filter feeds stably from a stiff bus at `v_bus` [W]: the
+    /// The largest constant power the filter feeds stably from a stiff bus at `v_bus` \[W\]: the
     /// smaller of the trace condition P < R_f C_f v_f^2 / L_f (damping against the load's
     /// negative resistance) and the determinant's P < v_f^2 / R_f, solved with v_f at its steady
     /// value for that P (bisection on the power).
@@ -228,7 +228,7 @@ impl ShipService {
 }
 
 impl BusLoads {
-    /// The loads of `p`, with the bus set point `v_ref` [V]; None without any load.
+    /// The loads of `p`, with the bus set point `v_ref` \[V\]; None without any load.
     pub fn new(p: &BusLoadParams, v_ref: f64) -> Option<BusLoads> {
         if !p.any() {
             return None;
@@ -245,7 +245,7 @@ impl BusLoads {
         })
     }
 
-    /// The ship service level at time `t` [s]: after the step (if any) its new level.
+    /// The ship service level at time `t` \[s\]: after the step (if any) its new level.
     pub fn ship_service_at(&self, t: f64) -> f64 {
         let p = &self.params;
         if p.ship_service_step_s > 0.0 && t >= p.ship_service_step_s {
@@ -255,7 +255,7 @@ impl BusLoads {
         }
     }
 
-    /// The pulsed load at time `t` [s]: a trapezoid every period.
+    /// The pulsed load at time `t` \[s\]: a trapezoid every period.
     pub fn pulse_at(&self, t: f64) -> f64 {
         let p = &self.params;
         if p.pulse_power_w <= 0.0 || t < p.pulse_start_s {
@@ -275,7 +275,7 @@ impl BusLoads {
         p.pulse_power_w * shape
     }
 
-    /// What the loads demand at time `t` [s].
+    /// What the loads demand at time `t` \[s\].
     pub fn demand(&self, t: f64) -> Demand {
         Demand { ship_service_w: self.ship_service_at(t), pulse_w: self.pulse_at(t) }
     }

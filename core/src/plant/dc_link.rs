@@ -19,13 +19,13 @@ pub const BRIDGE_CURRENT_RATIO: f64 = 2.449_489_742_783_178 / PI;
 /// Constants of one rectifier branch and the bus.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DcLink {
-    /// Bus capacitance C [F].
+    /// Bus capacitance C \[F\].
     pub capacitance: f64,
-    /// Notching resistance R_p [ohm].
+    /// Notching resistance R_p \[ohm\].
     pub r_p: f64,
-    /// Generator stator inductance (commutating) [H].
+    /// Generator stator inductance (commutating) \[H\].
     pub l_commutation: f64,
-    /// Equivalent DC resistance of the stator resistance, (18/pi^2) R_sg [ohm].
+    /// Equivalent DC resistance of the stator resistance, (18/pi^2) R_sg \[ohm\].
     pub r_stator_dc: f64,
     /// Inverter: largest fundamental phase rms voltage per volt of bus [-].
     pub inverter_voltage_ratio: f64,
@@ -34,16 +34,16 @@ pub struct DcLink {
 /// What one rectifier branch does at one instant.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct RectifierFlow {
-    /// DC current into the bus i_gDC [A] (eq. 2.9), never negative (diodes).
+    /// DC current into the bus i_gDC \[A\] (eq. 2.9), never negative (diodes).
     pub i_dc: f64,
-    /// Bridge DC voltage [V], eq. 2.8's v_DC: the bus voltage plus R_p i_gDC (eq. 2.9). Not the
+    /// Bridge DC voltage \[V\], eq. 2.8's v_DC: the bus voltage plus R_p i_gDC (eq. 2.9). Not the
     /// IPS study's `v_dc`, which is its bus after the DC filter.
     pub v_bridge: f64,
-    /// Generator electrical (air-gap) power 3 Re{E_a i_s^*} [W] (eq. 2.3, Table 5.6).
+    /// Generator electrical (air-gap) power 3 Re{E_a i_s^*} \[W\] (eq. 2.3, Table 5.6).
     pub p_generator: f64,
-    /// Stator copper loss 3 R_sg |i_s|^2 [W].
+    /// Stator copper loss 3 R_sg |i_s|^2 \[W\].
     pub p_stator_loss: f64,
-    /// Notching loss R_p i_gDC^2 [W].
+    /// Notching loss R_p i_gDC^2 \[W\].
     pub p_notching_loss: f64,
     /// Fundamental stator current |i_s| [A rms].
     pub i_s: f64,
@@ -54,7 +54,7 @@ pub struct RectifierFlow {
 pub const STATOR_DC_RESISTANCE_RATIO: f64 = 18.0 / (PI * PI);
 
 impl DcLink {
-    /// The link between a generator of stator resistance `r_s` [ohm] and inductance `l_s` [H]
+    /// The link between a generator of stator resistance `r_s` \[ohm\] and inductance `l_s` \[H\]
     /// and its bus.
     pub fn new(p: &DcLinkParams, r_s: f64, l_s: f64) -> DcLink {
         DcLink {
@@ -66,12 +66,12 @@ impl DcLink {
         }
     }
 
-    /// Commutation resistance (3/pi) omega L of eq. 2.8 at electrical speed `omega` [ohm].
+    /// Commutation resistance (3/pi) omega L of eq. 2.8 at electrical speed `omega` \[ohm\].
     pub fn commutation_resistance(&self, omega: f64) -> f64 {
         3.0 / PI * omega * self.l_commutation
     }
 
-    /// Resistance between the bridge's open-circuit voltage and the bus [ohm].
+    /// Resistance between the bridge's open-circuit voltage and the bus \[ohm\].
     pub fn total_resistance(&self, omega: f64) -> f64 {
         self.r_p + self.commutation_resistance(omega) + self.r_stator_dc
     }
@@ -96,7 +96,7 @@ impl DcLink {
         }
     }
 
-    /// Largest motor phase rms voltage the inverter can make from bus voltage `v_c` [V]: the
+    /// Largest motor phase rms voltage the inverter can make from bus voltage `v_c` \[V\]: the
     /// dynamic saturation of ch. 2.2.3 through which a sagging bus limits the motor.
     pub fn max_phase_voltage(&self, v_c: f64) -> f64 {
         self.inverter_voltage_ratio * v_c.max(0.0)

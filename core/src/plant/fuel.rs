@@ -28,7 +28,7 @@ pub fn efficiency_ratio(curve: &[(f64, f64)], f: f64) -> (f64, bool) {
     (curve[curve.len() - 1].1, false)
 }
 
-/// Fuel power [W] for shaft power `p` [W] of a turbine rated `p_rated` [W] with efficiency
+/// Fuel power \[W\] for shaft power `p` \[W\] of a turbine rated `p_rated` \[W\] with efficiency
 /// `eta_rated` at rated power; and whether the curve was extrapolated below 30 % load.
 pub fn fuel_power(curve: &[(f64, f64)], p: f64, p_rated: f64, eta_rated: f64) -> (f64, bool) {
     if p <= 0.0 {

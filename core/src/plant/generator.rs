@@ -16,21 +16,21 @@ use std::f64::consts::SQRT_2;
 /// Generator constants in SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SyncGenerator {
-    /// Stator resistance R_sg [ohm].
+    /// Stator resistance R_sg \[ohm\].
     pub r_s: f64,
-    /// Stator (commutating) inductance L_sg [H].
+    /// Stator (commutating) inductance L_sg \[H\].
     pub l_s: f64,
-    /// Mutual inductance M_g [H].
+    /// Mutual inductance M_g \[H\].
     pub m_g: f64,
     /// Pole pairs P_g / 2 [-].
     pub pole_pairs: f64,
-    /// Field resistance R_fg [ohm] and inductance L_fg [H].
+    /// Field resistance R_fg \[ohm\] and inductance L_fg \[H\].
     pub r_f: f64,
     pub l_f: f64,
     /// Friction Q_fric = mu1 + mu2 omega_t [N m].
     pub mu1: f64,
     pub mu2: f64,
-    /// Largest field voltage [V].
+    /// Largest field voltage \[V\].
     pub v_f_max: f64,
 }
 
@@ -57,12 +57,12 @@ impl SyncGenerator {
         self.pole_pairs * omega_t
     }
 
-    /// Phase rms emf E_a = M_g omega i_f / sqrt(2) [V] (ch. 2.2.1).
+    /// Phase rms emf E_a = M_g omega i_f / sqrt(2) \[V\] (ch. 2.2.1).
     pub fn emf(&self, omega_t: f64, i_f: f64) -> f64 {
         self.m_g * self.electrical_speed(omega_t) * i_f / SQRT_2
     }
 
-    /// Field current that gives phase emf `e_a` at shaft speed `omega_t` [A].
+    /// Field current that gives phase emf `e_a` at shaft speed `omega_t` \[A\].
     pub fn field_current_for(&self, e_a: f64, omega_t: f64) -> f64 {
         e_a * SQRT_2 / (self.m_g * self.electrical_speed(omega_t))
     }
@@ -82,11 +82,11 @@ impl SyncGenerator {
     }
 }
 
-/// Discrete PI on bus voltage error [V] acting on the field voltage [V], with feed-forward of the
+/// Discrete PI on bus voltage error \[V\] acting on the field voltage \[V\], with feed-forward of the
 /// no-load field voltage, a ceiling and anti-windup.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FieldController {
-    /// PI on the bus voltage error [V]; its integrator carries the steady field voltage [V].
+    /// PI on the bus voltage error \[V\]; its integrator carries the steady field voltage \[V\].
     pub pi: DiscretePi,
     pub v_ref: f64,
     pub v_f_max: f64,
@@ -97,7 +97,7 @@ impl FieldController {
         FieldController { pi: DiscretePi::new(p.kp, p.ki, v_f0), v_ref: p.bus_voltage_ref_v, v_f_max }
     }
 
-    /// One sample: returns the field voltage [V] to hold until the next.
+    /// One sample: returns the field voltage \[V\] to hold until the next.
     pub fn update(&mut self, v_bus: f64, ts: f64) -> f64 {
         self.pi.update(self.v_ref - v_bus, 0.0, self.v_f_max, ts)
     }

@@ -25,11 +25,11 @@ pub struct InductionMotor {
     pub l_m: f64,
     /// Pole pairs p: omega_r = p omega_rm.
     pub pole_pairs: f64,
-    /// Rated phase rms voltage [V].
+    /// Rated phase rms voltage \[V\].
     pub v_rated: f64,
     /// Rated electrical frequency [rad/s].
     pub omega_rated: f64,
-    /// Rated shaft power [W].
+    /// Rated shaft power \[W\].
     pub p_rated: f64,
     /// eta_m of eq. 2.5 [-].
     pub eta_m: f64,
@@ -41,13 +41,13 @@ pub struct InductionMotor {
 /// The motor's operating point.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct MotorPoint {
-    /// Electrical input 3 Re{v_m i_in^*} [W] (the inverter's output, Table 5.6).
+    /// Electrical input 3 Re{v_m i_in^*} \[W\] (the inverter's output, Table 5.6).
     pub p_in: f64,
-    /// Air-gap power [W].
+    /// Air-gap power \[W\].
     pub p_airgap: f64,
-    /// Stator copper loss [W].
+    /// Stator copper loss \[W\].
     pub p_stator_loss: f64,
-    /// Rotor copper loss [W].
+    /// Rotor copper loss \[W\].
     pub p_rotor_loss: f64,
     /// Electromagnetic torque Q_e [N m].
     pub torque_em: f64,

@@ -110,10 +110,10 @@ pub fn label(m: &[bool; SETS]) -> String {
 pub enum SetState {
     /// Breaker open, not burning.
     Offline,
-    /// Ordered on: delivers from `ready_at_s` [s].
+    /// Ordered on: delivers from `ready_at_s` \[s\].
     Starting { ready_at_s: f64 },
-    /// Breaker closed since `since_s` [s]; a stop order waiting for the minimum running time
-    /// stops it at `stop_at_s` [s].
+    /// Breaker closed since `since_s` \[s\]; a stop order waiting for the minimum running time
+    /// stops it at `stop_at_s` \[s\].
     Online { since_s: f64, stop_at_s: Option<f64> },
 }
 
@@ -153,7 +153,7 @@ impl Sets {
         self.online().iter().all(|&o| o)
     }
 
-    /// An order at `t` [s] that the sets of `wanted` run: an offline set in it starts (online after
+    /// An order at `t` \[s\] that the sets of `wanted` run: an offline set in it starts (online after
     /// the start-up time), an online set not in it stops (at once, or when its minimum running
     /// time is over). Returns what the order could not do at once, in words.
     pub fn order(&mut self, wanted: &[bool; SETS], t: f64) -> Vec<String> {
@@ -184,7 +184,7 @@ impl Sets {
         notes
     }
 
-    /// Moves the sets whose time has come at `t` [s] (a start-up finished, a waiting stop due);
+    /// Moves the sets whose time has come at `t` \[s\] (a start-up finished, a waiting stop due);
     /// true when the online set changed.
     pub fn advance(&mut self, t: f64) -> bool {
         let before = self.online();

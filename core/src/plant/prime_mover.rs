@@ -17,7 +17,7 @@ pub struct GasTurbine {
     pub rated_speed: f64,
     /// Inertia of turbine and generator rotor [kg m^2].
     pub inertia: f64,
-    /// Rated power [W].
+    /// Rated power \[W\].
     pub rated_power_w: f64,
 }
 
@@ -61,7 +61,7 @@ impl Governor {
         Governor { pi: DiscretePi::new(p.kp, p.ki, throttle0), slew: p.slew_rate_per_s, throttle: throttle0 }
     }
 
-    /// One controller sample of period `ts` [s] with speed error `err_pu` (set point minus speed,
+    /// One controller sample of period `ts` \[s\] with speed error `err_pu` (set point minus speed,
     /// per unit of the set point). Returns the throttle to hold until the next sample.
     pub fn update(&mut self, err_pu: f64, ts: f64) -> f64 {
         let cmd = self.pi.update(err_pu, 0.0, 1.0, ts);

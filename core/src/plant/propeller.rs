@@ -24,7 +24,7 @@ pub struct OpenWater {
 /// Thrust and torque of one propeller at one instant.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct PropellerLoad {
-    /// Thrust T_p [N] (eq. 2.13).
+    /// Thrust T_p \[N\] (eq. 2.13).
     pub thrust_n: f64,
     /// Shaft torque Q_p [N m] (eq. 2.13), including the rotative efficiency.
     pub torque_nm: f64,
@@ -35,7 +35,7 @@ pub struct PropellerLoad {
 /// What a propeller load depends on besides shaft and advance speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Conditions {
-    /// Diameter D [m].
+    /// Diameter D \[m\].
     pub diameter_m: f64,
     /// Water density [kg/m^3].
     pub rho: f64,
@@ -176,7 +176,7 @@ const N_FOURIER: usize = 21;
 
 /// Four-quadrant propeller: thrust and torque for any sign of advance speed and shaft speed, from
 /// the Wageningen B4-70 (P/D = 1.0) Fourier series of van Lammeren et al. (1969) as quoted by
-/// Smogeli (2006). Used for AC braking (thesis ch. 5.2.2, after Rubis [60]).
+/// Smogeli (2006). Used for AC braking (thesis ch. 5.2.2, after Rubis \[60\]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FourQuadrant {
     at: [f64; N_FOURIER],
@@ -215,7 +215,7 @@ impl FourQuadrant {
         Ok(fq)
     }
 
-    /// C_T(beta) and C_Q(beta) [-], beta the hydrodynamic pitch angle [rad]. The harmonics come from
+    /// C_T(beta) and C_Q(beta) [-], beta the hydrodynamic pitch angle \[rad\]. The harmonics come from
     /// one sine and cosine by the angle-addition recurrence (cheap and the same on every platform).
     pub fn coefficients(&self, beta: f64) -> (f64, f64) {
         let (s1, c1) = (libm::sin(beta), libm::cos(beta));
@@ -231,7 +231,7 @@ impl FourQuadrant {
         (ct, cq)
     }
 
-    /// Thrust [N] and shaft torque [N m] at shaft speed `n_hz` [rev/s] and advance speed `va`
+    /// Thrust \[N\] and shaft torque [N m] at shaft speed `n_hz` [rev/s] and advance speed `va`
     /// [m/s], any signs: beta = atan2(Va, 0.7 pi n D), T = C_T (1/2) rho V_r^2 (pi/4) D^2,
     /// Q = C_Q (1/2) rho V_r^2 (pi/4) D^3 / eta_R, V_r^2 = Va^2 + (0.7 pi n D)^2.
     pub fn load(&self, n_hz: f64, va: f64, c: &Conditions) -> PropellerLoad {

@@ -23,7 +23,7 @@ pub struct LossParams {
     pub ventilation_on: f64,
     /// h/R above which ventilation ends [-]: 1.3.
     pub ventilation_off: f64,
-    /// Thrust lost when fully ventilated [-]: 0.7 (ch. 2.3, after [65]).
+    /// Thrust lost when fully ventilated [-]: 0.7 (ch. 2.3, after \[65\]).
     pub ventilation_loss: f64,
     /// Propeller revolutions over which full lift returns (Wagner effect) [-]: 4.
     pub recovery_revolutions: f64,
@@ -73,7 +73,7 @@ impl Default for Ventilation {
 }
 
 impl Ventilation {
-    /// Advances by `dt` [s] with the hub at `h_over_r` and the shaft at `n_hz` [rev/s]: the loss
+    /// Advances by `dt` \[s\] with the hub at `h_over_r` and the shaft at `n_hz` [rev/s]: the loss
     /// arrives at once when ventilation starts; the lift returns at a rate that restores it fully
     /// over `recovery_revolutions` turns of the shaft.
     pub fn step(&mut self, p: &LossParams, h_over_r: f64, n_hz: f64, dt: f64) -> f64 {

@@ -45,7 +45,7 @@ pub const LOWPASS: usize = 2;
 /// power goes linearly to zero over it, so that the limits are not crossed by a jump.
 pub const SOC_TAPER: f64 = 0.02;
 
-/// Least time the taper takes to hand a storage's full power back to the turbines [s]: the taper
+/// Least time the taper takes to hand a storage's full power back to the turbines \[s\]: the taper
 /// is at least `power_w * HANDOVER_S` of energy wide, so near a limit the power decays with a
 /// time constant of at least this. With the 2 % taper alone a storage small beside its rating
 /// crossed its taper in tens of milliseconds and dropped its whole power on the turbines in a
@@ -55,13 +55,13 @@ pub const SOC_TAPER: f64 = 0.02;
 /// then eats the window the storage levels with).
 pub const HANDOVER_S: f64 = 1.0;
 
-/// Width of the taper at each charge limit [J]: the wider of [`SOC_TAPER`] of the capacity and
+/// Width of the taper at each charge limit \[J\]: the wider of [`SOC_TAPER`] of the capacity and
 /// [`HANDOVER_S`] of the rated power.
 pub fn taper_j(capacity_j: f64, power_w: f64) -> f64 {
     (SOC_TAPER * capacity_j).max(power_w * HANDOVER_S)
 }
 
-/// Time constant of the levelling filter's anti-windup [s]: how fast the turbines take over what
+/// Time constant of the levelling filter's anti-windup \[s\]: how fast the turbines take over what
 /// the storage's limits cut.
 pub const ANTI_WINDUP_S: f64 = 1.0;
 
@@ -215,27 +215,27 @@ pub struct Storage {
     /// Low-pass rate 2 pi f_c [1/s].
     pub corner_rad_s: f64,
     pub soc_return_s: f64,
-    /// Bus voltage set point [V].
+    /// Bus voltage set point \[V\].
     pub v_ref: f64,
 }
 
 /// What the storage does at one instant.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct StorageFlow {
-    /// dE/dt [W], di_b/dt [A/s], dP_lp/dt [W/s].
+    /// dE/dt \[W\], di_b/dt [A/s], dP_lp/dt [W/s].
     pub de: f64,
     pub di_b: f64,
     pub dp_lp: f64,
-    /// Power to the bus v i_b [W] (negative: charging).
+    /// Power to the bus v i_b \[W\] (negative: charging).
     pub p_bus: f64,
-    /// Converter and cell losses [W].
+    /// Converter and cell losses \[W\].
     pub p_loss: f64,
-    /// The controller's power reference [W].
+    /// The controller's power reference \[W\].
     pub p_ref: f64,
 }
 
 impl Storage {
-    /// The storage of `p` on a bus held at `v_ref` [V]; None without storage.
+    /// The storage of `p` on a bus held at `v_ref` \[V\]; None without storage.
     pub fn new(p: &StorageParams, v_ref: f64) -> Option<Storage> {
         (p.energy_j > 0.0).then(|| Storage {
             capacity_j: p.energy_j,
@@ -255,7 +255,7 @@ impl Storage {
         })
     }
 
-    /// Open-circuit voltage at stored energy `e` [V].
+    /// Open-circuit voltage at stored energy `e` \[V\].
     pub fn open_circuit_v(&self, e: f64) -> f64 {
         if self.ultracapacitor {
             self.voltage_v * libm::sqrt((e / self.capacity_j).max(1e-6))
@@ -264,7 +264,7 @@ impl Storage {
         }
     }
 
-    /// Cell current [A] and loss [W] at terminal power `p_t` [W] and stored energy `e` [J].
+    /// Cell current \[A\] and loss \[W\] at terminal power `p_t` \[W\] and stored energy `e` \[J\].
     pub fn cells(&self, p_t: f64, e: f64) -> (f64, f64) {
         let v = self.open_circuit_v(e);
         if self.r_ohm <= 0.0 {
@@ -275,7 +275,7 @@ impl Storage {
         (i, self.r_ohm * i * i)
     }
 
-    /// The controller's power reference [W] with the bus at `v_bus`, its load at `p_load`, the
+    /// The controller's power reference \[W\] with the bus at `v_bus`, its load at `p_load`, the
     /// low-passed load `p_lp` and the stored energy `e` (levelling + droop + charge return,
     /// limited and tapered at the charge limits).
     pub fn reference_w(&self, v_bus: f64, p_load: f64, p_lp: f64, e: f64) -> f64 {
@@ -295,7 +295,7 @@ impl Storage {
         (raw, p)
     }
 
-    /// The storage's rates with the bus at `v_bus`, its load `p_load` [W] and the states
+    /// The storage's rates with the bus at `v_bus`, its load `p_load` \[W\] and the states
     /// (`e`, `i_b`, `p_lp`).
     pub fn flow(&self, v_bus: f64, p_load: f64, e: f64, i_b: f64, p_lp: f64) -> StorageFlow {
         let (raw, p_ref) = self.reference_parts_w(v_bus, p_load, p_lp, e);

@@ -304,7 +304,7 @@ fn unknown_path(path: &str, value: &str) -> ScenarioError {
     one_error(path, value, &"no such parameter (see `aes-sim preset startup` for the names)")
 }
 
-/// Largest scenario text accepted [bytes].
+/// Largest scenario text accepted \[bytes\].
 pub const MAX_SCENARIO_BYTES: usize = 4 << 20;
 /// Deepest nesting accepted in a scenario file.
 pub const MAX_SCENARIO_DEPTH: usize = 32;

@@ -266,7 +266,7 @@ crate::params! {
     }
 }
 
-/// Longest step with `stepping.integrator = midpoint` [s] (see `SteppingParams`' checks).
+/// Longest step with `stepping.integrator = midpoint` \[s\] (see `SteppingParams`' checks).
 pub const MIDPOINT_MAX_DT_S: f64 = 0.008;
 
 fn is_one(n: &u32) -> bool {
@@ -422,7 +422,7 @@ impl Scenario {
         self.ship.hull.resolve(self.ship.water_density_kg_m3).map_err(|(f, e)| format!("ship.hull.{f}: {e}"))
     }
 
-    /// Puts the propeller hubs at calm-water depth `h0` [m] below this loading's waterline
+    /// Puts the propeller hubs at calm-water depth `h0` \[m\] below this loading's waterline
     /// (`ship.hull.hub_above_base_m` = draft - h0; ch. 5.3 and 5.4 vary h0).
     pub fn set_hub_depth_m(&mut self, h0: f64) {
         if let Ok(h) = self.ship_hull() {
@@ -470,7 +470,7 @@ impl Scenario {
         }
     }
 
-    /// The bus voltage set point the field control holds [V]: `controllers.field.bus_voltage_ref_v`,
+    /// The bus voltage set point the field control holds \[V\]: `controllers.field.bus_voltage_ref_v`,
     /// read as sqrt(3) times itself with `as_printed.ea_line_to_line` (eq. 2.8's E_a taken as the
     /// line-to-line emf puts the bus at sqrt(3) times the phase reading's voltage).
     pub fn bus_voltage_ref_v(&self) -> f64 {

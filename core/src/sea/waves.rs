@@ -19,7 +19,7 @@ pub const G: f64 = 9.81;
 /// One foot [m].
 const FOOT: f64 = 0.3048;
 
-/// Table 2.4: modal frequency omega_n [rad/s] and significant height H_1/3 [m] of sea states 2 to 6.
+/// Table 2.4: modal frequency omega_n [rad/s] and significant height H_1/3 \[m\] of sea states 2 to 6.
 pub fn sea_state(n: u32) -> Option<(f64, f64)> {
     let (w, h_ft) = match n {
         2 => (0.997, 0.984),
@@ -44,15 +44,15 @@ pub fn bretschneider(omega: f64, h_sig: f64, omega_n: f64) -> f64 {
 /// One regular wave component.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WaveComponent {
-    /// Amplitude [m].
+    /// Amplitude \[m\].
     pub amplitude: f64,
     /// Frequency in the earth frame [rad/s].
     pub omega: f64,
     /// Wave number [1/m].
     pub k: f64,
-    /// Direction of travel [rad].
+    /// Direction of travel \[rad\].
     pub direction: f64,
-    /// Phase [rad].
+    /// Phase \[rad\].
     pub phase: f64,
 }
 
@@ -61,7 +61,7 @@ pub struct WaveComponent {
 pub struct SeaSampling {
     pub h_sig: f64,
     pub omega_n: f64,
-    /// Mean direction of travel [rad].
+    /// Mean direction of travel \[rad\].
     pub direction: f64,
     /// Number of components N_s.
     pub components: usize,
@@ -125,7 +125,7 @@ pub fn m0(components: &[WaveComponent]) -> f64 {
 }
 
 impl WaveComponent {
-    /// Phase omega t - k (x cos mu + y sin mu) + phase at (x, y) [m] and time `t` [s], with the
+    /// Phase omega t - k (x cos mu + y sin mu) + phase at (x, y) \[m\] and time `t` \[s\], with the
     /// direction's cosine and sine `cos_mu`, `sin_mu` given (the seaway keeps them).
     pub fn phase_at(&self, cos_mu: f64, sin_mu: f64, x: f64, y: f64, t: f64) -> f64 {
         let along = x * cos_mu + y * sin_mu;
@@ -133,7 +133,7 @@ impl WaveComponent {
     }
 }
 
-/// Surface elevation at (x, y) [m] and time t [s] by superposition.
+/// Surface elevation at (x, y) \[m\] and time t \[s\] by superposition.
 pub fn elevation(components: &[WaveComponent], x: f64, y: f64, t: f64) -> f64 {
     components
         .iter()
@@ -141,7 +141,7 @@ pub fn elevation(components: &[WaveComponent], x: f64, y: f64, t: f64) -> f64 {
         .sum()
 }
 
-/// Surface elevation at many points (`xs[i]`, `ys[i]`) [m] at time t [s] into `out`: the sum of
+/// Surface elevation at many points (`xs[i]`, `ys[i]`) \[m\] at time t \[s\] into `out`: the sum of
 /// [`elevation`] with each component's direction taken once (a picture of the sea, not the step).
 pub fn elevations(components: &[WaveComponent], xs: &[f64], ys: &[f64], t: f64, out: &mut [f64]) {
     out.iter_mut().for_each(|e| *e = 0.0);
@@ -342,7 +342,7 @@ impl SeaParams {
         }
     }
 
-    /// (H_1/3 [m], modal frequency [rad/s]) of the random sea.
+    /// (H_1/3 \[m\], modal frequency [rad/s]) of the random sea.
     pub fn spectrum(&self) -> (f64, f64) {
         if self.h_sig_m > 0.0 && self.omega_n_rad_s > 0.0 {
             (self.h_sig_m, self.omega_n_rad_s)

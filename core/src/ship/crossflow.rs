@@ -23,14 +23,14 @@ pub fn hoerner_cd(curve: &[(f64, f64)], b_over_2t: f64) -> f64 {
 }
 
 /// The hull cut into strips for the cross-flow integral: each strip's position forward of the
-/// centre of gravity x [m] and its weight (1/2) rho T C_D dx [kg/m].
+/// centre of gravity x \[m\] and its weight (1/2) rho T C_D dx [kg/m].
 #[derive(Debug, Clone, PartialEq)]
 pub struct CrossFlow {
     strips: Vec<(f64, f64)>,
 }
 
 impl CrossFlow {
-    /// From sections given as (x forward of G [m], beam [m], draft [m]) in increasing x, water
+    /// From sections given as (x forward of G \[m\], beam \[m\], draft \[m\]) in increasing x, water
     /// density `rho` [kg/m^3]: the trapezoidal rule along the length.
     pub fn new(sections: &[(f64, f64, f64)], rho: f64) -> CrossFlow {
         let curve = hoerner_curve();
@@ -48,7 +48,7 @@ impl CrossFlow {
         CrossFlow { strips }
     }
 
-    /// Sway force [N] and yaw moment [N m] at sway speed `v` [m/s] and yaw rate `r` [rad/s] (the
+    /// Sway force \[N\] and yaw moment [N m] at sway speed `v` [m/s] and yaw rate `r` [rad/s] (the
     /// section at x moves sideways at v + x r).
     pub fn forces(&self, v: f64, r: f64) -> (f64, f64) {
         let (mut y, mut n) = (0.0, 0.0);

@@ -211,27 +211,27 @@ pub struct ShipHull {
     /// Name of the embedded hull or "custom".
     pub name: String,
     pub offsets: HullOffsets,
-    /// Waterline above the baseline [m] and the hydrostatics there.
+    /// Waterline above the baseline \[m\] and the hydrostatics there.
     pub draft_m: f64,
     pub hydrostatics: Hydrostatics,
-    /// Length between perpendiculars: the offsets' span [m]. The one length of every model.
+    /// Length between perpendiculars: the offsets' span \[m\]. The one length of every model.
     pub lpp_m: f64,
-    /// Largest waterline breadth [m].
+    /// Largest waterline breadth \[m\].
     pub beam_m: f64,
-    /// Displaced mass rho V [kg].
+    /// Displaced mass rho V \[kg\].
     pub mass_kg: f64,
     pub mass_props: MassProperties,
     pub bilge_keels: Option<BilgeKeels>,
-    /// Centre of gravity (= centre of buoyancy) forward of the AP [m].
+    /// Centre of gravity (= centre of buoyancy) forward of the AP \[m\].
     pub lcg_m: f64,
-    /// Propellers aft of the centre of gravity [m], shafts' offsets to port [m], calm-water hub
-    /// depth below the waterline [m].
+    /// Propellers aft of the centre of gravity \[m\], shafts' offsets to port \[m\], calm-water hub
+    /// depth below the waterline \[m\].
     pub prop_x_aft_m: f64,
     pub shaft_y_m: [f64; N_SHAFTS],
     pub hub_depth_m: f64,
-    /// Rudder aft of the centre of gravity [m] (x_p of eqs. 2.19, 2.26-2.27).
+    /// Rudder aft of the centre of gravity \[m\] (x_p of eqs. 2.19, 2.26-2.27).
     pub rudder_x_aft_m: f64,
-    /// Each rudder's lateral area [m^2] and span [m] (the hull's own maneuvering model).
+    /// Each rudder's lateral area [m^2] and span \[m\] (the hull's own maneuvering model).
     pub rudder_area_m2: f64,
     pub rudder_span_m: f64,
     pub rho: f64,
@@ -467,11 +467,11 @@ fn draft_for_mass(offsets: &HullOffsets, mass: f64, rho: f64, bottom: f64, top: 
 /// The length, mass and rudder lever the maneuvering and surge models use.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RigidBody {
-    /// L of the prime system (ch. 2.4) [m].
+    /// L of the prime system (ch. 2.4) \[m\].
     pub length_m: f64,
-    /// Displaced mass m [kg].
+    /// Displaced mass m \[kg\].
     pub mass_kg: f64,
-    /// Rudder aft of the centre of gravity, x_p of eqs. 2.19, 2.26-2.27 [m].
+    /// Rudder aft of the centre of gravity, x_p of eqs. 2.19, 2.26-2.27 \[m\].
     pub rudder_x_aft_m: f64,
 }
 

@@ -83,10 +83,10 @@ pub struct Abkowitz {
     symmetric: bool,
     /// Linearisation speed u0 [m/s].
     pub u0: f64,
-    /// Ship length L [m].
+    /// Ship length L \[m\].
     pub length: f64,
     rho: f64,
-    /// Surge mass m - X_udot [kg] (eq. 2.21).
+    /// Surge mass m - X_udot \[kg\] (eq. 2.21).
     pub m11: f64,
     /// Inverse of the sway-yaw block of eq. 2.21.
     inv22: [[f64; 2]; 2],
@@ -177,7 +177,7 @@ fn side_force_and_moment(
 }
 
 /// A steady turn of the hull with its rudder at surge `u` [m/s] and yaw rate `r` [rad/s]: the sway
-/// speed v [m/s] and rudder angle delta [rad] that make f_2 = f_3 = 0 (eqs. 2.23-2.24 with v_dot
+/// speed v [m/s] and rudder angle delta \[rad\] that make f_2 = f_3 = 0 (eqs. 2.23-2.24 with v_dot
 /// = r_dot = 0; the mass terms are in (Y_r - m u)), the point of the spiral-test curve delta(r).
 /// The rudder's side force F_y must cancel the hull's, so N_hull + x_p Y_hull = 0 fixes v (the
 /// root nearest v = 0, searched to |v| = U/2); then delta follows from F_y(delta) = -Y_hull

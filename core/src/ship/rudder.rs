@@ -36,7 +36,7 @@ crate::params! {
     }
 }
 
-/// Inflow at the stern (eqs. 2.26-2.27): speed V_a [m/s], angle alpha_a [rad] and the angle's
+/// Inflow at the stern (eqs. 2.26-2.27): speed V_a [m/s], angle alpha_a \[rad\] and the angle's
 /// sine and cosine (from the velocity components: no trigonometric call in the time loop).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Inflow {
@@ -46,7 +46,7 @@ pub struct Inflow {
     pub cos: f64,
 }
 
-/// The stern's inflow for surge `u`, sway `v` [m/s] and yaw rate `r` [rad/s], `x_p` [m] aft.
+/// The stern's inflow for surge `u`, sway `v` [m/s] and yaw rate `r` [rad/s], `x_p` \[m\] aft.
 pub fn stern_inflow(u: f64, v: f64, r: f64, x_p: f64) -> Inflow {
     let vs = v - x_p * r;
     let ux = u.abs().max(1e-6);
@@ -54,8 +54,8 @@ pub fn stern_inflow(u: f64, v: f64, r: f64, x_p: f64) -> Inflow {
     Inflow { speed: (u * u + vs * vs).sqrt(), angle: libm::atan2(vs, ux), sin: vs / hyp, cos: ux / hyp }
 }
 
-/// Rudder forces in the body frame [N] (eqs. 2.28, 2.30) with the stern's inflow `a` and rudder
-/// angle `delta` [rad]. Lift is signed by (alpha - delta), drag always opposes the inflow.
+/// Rudder forces in the body frame \[N\] (eqs. 2.28, 2.30) with the stern's inflow `a` and rudder
+/// angle `delta` \[rad\]. Lift is signed by (alpha - delta), drag always opposes the inflow.
 pub fn rudder_force(p: &RudderParams, rho: f64, a: &Inflow, delta: f64) -> (f64, f64) {
     let q = 0.5 * rho * p.area_m2 * a.speed * a.speed;
     let aoa = a.angle - delta;
@@ -115,13 +115,13 @@ crate::params! {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Autopilot {
     /// PI on the heading error taken as psi - psi_ref (positive rudder turns to port), so its
-    /// integrator holds minus the rudder's integral action [rad].
+    /// integrator holds minus the rudder's integral action \[rad\].
     pub pi: DiscretePi,
     pub kd: f64,
     pub max_angle: f64,
     pub swing_rate: f64,
     pub ka: f64,
-    /// Rudder angle now [rad].
+    /// Rudder angle now \[rad\].
     pub delta: f64,
     /// Yaw rate at the previous sample [rad/s] (for the yaw acceleration).
     last_rate_err: Option<f64>,
@@ -140,8 +140,8 @@ impl Autopilot {
         }
     }
 
-    /// One sample: heading error `err` = psi_ref - psi [rad], yaw rate error `rate_err` =
-    /// r_ref - r [rad/s]. Returns the rudder angle [rad] to hold. Positive rudder turns to port,
+    /// One sample: heading error `err` = psi_ref - psi \[rad\], yaw rate error `rate_err` =
+    /// r_ref - r [rad/s]. Returns the rudder angle \[rad\] to hold. Positive rudder turns to port,
     /// hence the minus sign.
     pub fn update(&mut self, err: f64, rate_err: f64, ts: f64) -> f64 {
         let accel_err = self.last_rate_err.map_or(0.0, |last| (rate_err - last) / ts);

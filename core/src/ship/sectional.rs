@@ -82,7 +82,7 @@ pub struct LinearDerivatives {
     pub nrdot: f64,
 }
 
-/// The regression of Clarke et al. (1983) for length `l`, beam `b`, draft `t` [m] and block
+/// The regression of Clarke et al. (1983) for length `l`, beam `b`, draft `t` \[m\] and block
 /// coefficient `cb`.
 pub fn clarke_1983(l: f64, b: f64, t: f64, cb: f64) -> LinearDerivatives {
     let k = -PI * (t / l) * (t / l);
@@ -128,7 +128,7 @@ pub struct SlipstreamRudders {
     /// rudders hang below a gap), which keeps the 35 degree turn's tactical diameter in the range
     /// destroyers show (3.1 L; with twice the aspect ratio 2.2 L).
     pub f_alpha: f64,
-    /// Distance aft of G [m].
+    /// Distance aft of G \[m\].
     pub x_aft: f64,
     /// Share of the rudder span in the slipstream, eta = D / span (at most 1).
     pub eta: f64,
@@ -137,14 +137,14 @@ pub struct SlipstreamRudders {
     pub gamma: f64,
     pub t_r: f64,
     pub a_h: f64,
-    /// x_H [m], forward of G.
+    /// x_H \[m\], forward of G.
     pub x_h: f64,
 }
 
 impl SlipstreamRudders {
-    /// The rudders' surge force, side force [N] and yaw moment [N m] at surge `u`, sway `v`
+    /// The rudders' surge force, side force \[N\] and yaw moment [N m] at surge `u`, sway `v`
     /// [m/s], yaw rate `r` [rad/s], with the propellers' axial inflow `u_a` [m/s] (after the wake)
-    /// and thrust `thrust_each` [N] each, rudder angle `delta` [rad] (positive turns to port), in
+    /// and thrust `thrust_each` \[N\] each, rudder angle `delta` \[rad\] (positive turns to port), in
     /// water of density `rho`.
     pub fn forces(&self, rho: f64, v: f64, r: f64, u_a: f64, thrust_each: f64, delta: f64) -> (f64, f64, f64) {
         // Momentum theory: the far slipstream's speed is sqrt(u_a^2 + 8 T / (rho pi D^2)); the
@@ -178,15 +178,15 @@ impl SlipstreamRudders {
 /// The model: masses, the linear derivatives, the cross-flow strips and the rudders.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OwnHull {
-    /// Ship length L [m], rigid-body mass m [kg].
+    /// Ship length L \[m\], rigid-body mass m \[kg\].
     pub length: f64,
     pub mass: f64,
-    /// Surge mass m - X_udot [kg] (the surge model's).
+    /// Surge mass m - X_udot \[kg\] (the surge model's).
     pub m11: f64,
     /// The sway-yaw mass block [kg, kg m; kg m, kg m^2] and its inverse.
     pub m22: [[f64; 2]; 2],
     inv22: [[f64; 2]; 2],
-    /// Sway added mass -Y_vdot [kg] (its share of the turn's speed loss).
+    /// Sway added mass -Y_vdot \[kg\] (its share of the turn's speed loss).
     pub sway_added: f64,
     /// The linear derivatives used (Clarke 1983) and the added masses from the sections, prime.
     pub derivatives: LinearDerivatives,
@@ -197,8 +197,8 @@ pub struct OwnHull {
 }
 
 impl OwnHull {
-    /// The model of `hull` with `p`, surge mass `m11` [kg] (the surge model's, eq. 2.16) and
-    /// propeller diameter `prop_d` [m]. Errors name what the sections cannot give.
+    /// The model of `hull` with `p`, surge mass `m11` \[kg\] (the surge model's, eq. 2.16) and
+    /// propeller diameter `prop_d` \[m\]. Errors name what the sections cannot give.
     pub fn new(hull: &ShipHull, p: &OwnHullParams, m11: f64, prop_d: f64) -> Result<OwnHull, String> {
         // Remembered by every input (a Monte Carlo study builds it once per trial).
         type Memo = Mutex<Vec<(String, OwnHull)>>;

@@ -7,9 +7,9 @@ use serde::{Deserialize, Serialize};
 /// Surge constants in SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Surge {
-    /// m + m_a [kg].
+    /// m + m_a \[kg\].
     pub mass_total: f64,
-    /// R_sp = c_r u |u| [N], c_r = rho C_r A_w / (2 (1 - t)) [kg/m].
+    /// R_sp = c_r u |u| \[N\], c_r = rho C_r A_w / (2 (1 - t)) [kg/m].
     pub c_r: f64,
     /// Wake fraction w [-].
     pub wake: f64,
@@ -25,7 +25,7 @@ impl Surge {
         }
     }
 
-    /// Eq. 2.15: hull/propeller resistance R_sp = (1/2) rho C_r A_w u^2 / (1 - t) [N].
+    /// Eq. 2.15: hull/propeller resistance R_sp = (1/2) rho C_r A_w u^2 / (1 - t) \[N\].
     pub fn resistance(&self, u: f64) -> f64 {
         self.c_r * u * u.abs()
     }

@@ -58,7 +58,7 @@ pub struct Conditioned {
     pub m0: f64,
     pub m2: f64,
     pub crossing_rate_per_s: f64,
-    /// The level of the hub's depth swing r = h - h0 [m] and the rate imposed at the event [m/s].
+    /// The level of the hub's depth swing r = h - h0 \[m\] and the rate imposed at the event [m/s].
     pub level_m: f64,
     pub rate_m_s: f64,
 }

@@ -15,16 +15,16 @@ use crate::signals::Signal;
 /// Turbine speed below which a gas turbine set is stalled by its load rather than governed
 /// [pu of the governor set point].
 pub const TURBINE_MIN_RUNNING_PU: f64 = 0.5;
-/// How long the turbines may stay below [`TURBINE_MIN_RUNNING_PU`] before a warning [s].
+/// How long the turbines may stay below [`TURBINE_MIN_RUNNING_PU`] before a warning \[s\].
 pub const TURBINE_MIN_RUNNING_FOR_S: f64 = 5.0;
 /// Turbine overspeed [pu of the governor set point]: an LM2500's overspeed protection trips near
 /// 1.1 (the same figure as `sim::limits`' note); any recorded row above it warns.
 pub const TURBINE_OVERSPEED_PU: f64 = 1.1;
 /// Lower edge of the bus voltage's allowed band [pu of the set point].
 pub const BUS_LOW_PU: f64 = 0.9;
-/// How long the bus may stay outside its band before a warning [s].
+/// How long the bus may stay outside its band before a warning \[s\].
 pub const BUS_OUTSIDE_FOR_S: f64 = 5.0;
-/// How long a motor may stay at its slip limit (rated power or peak torque) before a warning [s].
+/// How long a motor may stay at its slip limit (rated power or peak torque) before a warning \[s\].
 pub const MOTOR_AT_LIMIT_FOR_S: f64 = 30.0;
 /// Share of the run a propeller's disc may break the surface (h/R below
 /// [`DISK_AT_SURFACE_H_OVER_R`]) before a warning [-].
@@ -143,7 +143,7 @@ pub fn markdown() -> String {
 }
 
 /// The longest stretch of consecutive samples for which a condition held, found as the samples
-/// come: its length [s] and its start [s].
+/// come: its length \[s\] and its start \[s\].
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Stretch {
     since: Option<f64>,
@@ -152,7 +152,7 @@ pub struct Stretch {
 }
 
 impl Stretch {
-    /// One more sample at time `t`, covering `dt` [s], at which the condition holds or not.
+    /// One more sample at time `t`, covering `dt` \[s\], at which the condition holds or not.
     pub fn sample(&mut self, holds: bool, t: f64, dt: f64) {
         if !holds {
             self.since = None;
@@ -187,10 +187,10 @@ pub struct Tracked {
 
 /// Turbine speed below which a set at full throttle is falling [pu of the governor set point].
 pub const SET_FALLING_PU: f64 = 0.97;
-/// How long an online set may stay overloaded before a warning [s].
+/// How long an online set may stay overloaded before a warning \[s\].
 pub const SET_OVERLOADED_FOR_S: f64 = 10.0;
 
-/// Whether a set giving shaft power `p_w` [W] at turbine speed `w` [rad/s] is overloaded: above
+/// Whether a set giving shaft power `p_w` \[W\] at turbine speed `w` [rad/s] is overloaded: above
 /// its rating, or at full throttle with its speed falling below [`SET_FALLING_PU`].
 pub fn set_overloaded(p_w: f64, w: f64, plant: &super::plant::Plant) -> bool {
     let t = &plant.turbine;

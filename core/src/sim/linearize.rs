@@ -24,7 +24,7 @@ pub struct DriveTrainModel {
     /// Steady state: the full state vector and the held inputs.
     pub x0: State,
     pub held0: Held,
-    /// Per-unit bases of the outputs: turbine set point [rad/s], bus set point [V].
+    /// Per-unit bases of the outputs: turbine set point [rad/s], bus set point \[V\].
     pub turbine_speed_base: f64,
     pub bus_voltage_base: f64,
 }

@@ -141,13 +141,13 @@ pub struct LqgSet {
 }
 
 impl LqgSet {
-    /// At rest at the run's initial steady state (throttle, field voltage [V]).
+    /// At rest at the run's initial steady state (throttle, field voltage \[V\]).
     pub fn new(d: &LqgDesign, throttle0: f64, v_f0: f64) -> LqgSet {
         LqgSet { x: vec![0.0; d.n], u: [0.0; 2], base: [throttle0, v_f0], next: vec![0.0; d.n] }
     }
 
-    /// One sample of period `ts` [s] with turbine speed `omega_t` [rad/s] and bus voltage
-    /// `v_bus` [V]; returns the throttle and field voltage [V] to hold.
+    /// One sample of period `ts` \[s\] with turbine speed `omega_t` [rad/s] and bus voltage
+    /// `v_bus` \[V\]; returns the throttle and field voltage \[V\] to hold.
     pub fn update(&mut self, d: &LqgDesign, omega_t: f64, v_bus: f64, ts: f64) -> (f64, f64) {
         let e = [d.w_weight * (d.w_ref - omega_t) / d.w_ref, (d.v_ref - v_bus) / d.v_ref];
         let n = d.n;

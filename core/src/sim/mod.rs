@@ -118,7 +118,7 @@ pub mod limits {
     /// Turbine speed band, per unit of rated: a real LM2500 trips on overspeed near 1.1; three
     /// times rated is far past anything physical; slightly negative allows numerical noise at rest.
     pub const TURBINE_SPEED_PU: (f64, f64) = (-0.1, 3.0);
-    /// Field current [A]: about 200 times the 500 A of rated excitation.
+    /// Field current \[A\]: about 200 times the 500 A of rated excitation.
     pub const FIELD_CURRENT_A: f64 = 1.0e5;
     /// Bus voltage band, per unit of the set point: three times the set point would have
     /// destroyed the converters long before.
@@ -264,7 +264,7 @@ impl Simulation {
         Self::with_extra_resistance(scenario, 0.0)
     }
 
-    /// The same with a constant added resistance [N] in the hull (the fuel study's steady states
+    /// The same with a constant added resistance \[N\] in the hull (the fuel study's steady states
     /// in regular seas: the mean second-order force).
     pub fn with_extra_resistance(scenario: &Scenario, extra: f64) -> Result<Simulation, SimError> {
         Ok(Self::prepare(scenario, extra)?.start())
@@ -607,7 +607,7 @@ impl Simulation {
         }
     }
 
-    /// Simulated time now [s].
+    /// Simulated time now \[s\].
     pub fn time(&self) -> f64 {
         self.t
     }
@@ -777,17 +777,17 @@ impl Simulation {
         &self.plant
     }
 
-    /// Time of the first surface effect (beta_T < 1) so far [s].
+    /// Time of the first surface effect (beta_T < 1) so far \[s\].
     pub fn first_surface_event(&self) -> Option<f64> {
         self.first_event
     }
 
-    /// Record interval in steps and time step [s].
+    /// Record interval in steps and time step \[s\].
     pub fn record_every(&self) -> u64 {
         self.clock.rec_every
     }
 
-    /// Shaft power of each gas turbine now [W].
+    /// Shaft power of each gas turbine now \[W\].
     pub fn turbine_power(&mut self) -> [f64; N_SETS] {
         self.refresh_outputs();
         std::array::from_fn(|k| self.out.turbine_torque[k] * self.x[slot::turbine_speed(k)])

@@ -29,13 +29,13 @@ pub use crate::plant::layout::*;
 /// samples) and the sea's (updated by the seaway between steps).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Held {
-    /// Throttle of each turbine [fraction].
+    /// Throttle of each turbine \[fraction\].
     pub throttle: [f64; N_SETS],
-    /// Field voltage of each generator [V].
+    /// Field voltage of each generator \[V\].
     pub field_voltage: [f64; N_SETS],
     /// Slip speed of each motor [rad/s electrical].
     pub slip: [f64; N_SHAFTS],
-    /// Rudder angle [rad].
+    /// Rudder angle \[rad\].
     pub rudder: f64,
     /// What the sea does to the ship this step.
     pub sea: SeaInputs,
@@ -54,7 +54,7 @@ pub struct SeaInputs {
     /// Surface losses of each propeller, beta_T and beta_Q (ch. 2.3) [-].
     pub beta_t: [f64; N_SHAFTS],
     pub beta_q: [f64; N_SHAFTS],
-    /// Slowly varying second-order wave force, ship axes: forward and to starboard [N] (eq. 2.60).
+    /// Slowly varying second-order wave force, ship axes: forward and to starboard \[N\] (eq. 2.60).
     pub wave_fx: f64,
     pub wave_fy: f64,
     /// Slowly varying second-order yaw moment, bow to starboard [N m] (M_add, eq. 2.24).
@@ -91,17 +91,17 @@ pub struct Outputs {
     pub generator_torque: [f64; N_SETS],
     pub emf: [f64; N_SETS],
     pub rectifier: [RectifierFlow; N_SETS],
-    /// Largest motor phase voltage the inverter can make now [V].
+    /// Largest motor phase voltage the inverter can make now \[V\].
     pub motor_v_max: [f64; N_SHAFTS],
-    /// Motor phase voltage applied [V].
+    /// Motor phase voltage applied \[V\].
     pub motor_voltage: [f64; N_SHAFTS],
     pub motor: [MotorPoint; N_SHAFTS],
     pub propeller: [PropellerLoad; N_SHAFTS],
-    /// Total thrust [N].
+    /// Total thrust \[N\].
     pub thrust: f64,
-    /// Resistance in surge (hull and rudder drag) [N].
+    /// Resistance in surge (hull and rudder drag) \[N\].
     pub resistance: f64,
-    /// Brake resistor power of each bus [W].
+    /// Brake resistor power of each bus \[W\].
     pub brake_power: [f64; N_SHAFTS],
     /// Advance speed V_a at the propellers, before the wake fraction [m/s] (eq. 2.26).
     pub inflow_speed: f64,
@@ -116,14 +116,14 @@ pub enum HullModel {
     /// Eqs. 2.15-2.16.
     Surge,
     /// Eqs. 2.17-2.30, handing over to the surge model in surge between `lo` and `hi` [m/s].
-    /// The rudder stands `x_p` [m] aft of the centre of gravity (the hull's, `ship.hull`).
+    /// The rudder stands `x_p` \[m\] aft of the centre of gravity (the hull's, `ship.hull`).
     /// Straight-line resistance: eq. 2.15's at every speed, with Table 2.3's sway and yaw terms
     /// on top; with `eq_2_22_straight` (the thesis' ship, `as_printed.table_5_ship`) eq. 2.22's
     /// own polynomial X_0 + X_u du + ..., handed over from eq. 2.15 between `lo` and `hi` [m/s].
     Maneuvering { abkowitz: Box<Abkowitz>, rudder: RudderParams, x_p: f64, eq_2_22_straight: bool, lo: f64, hi: f64 },
     /// The hull's own model (ship/sectional.rs): from rest to full speed, its rudders in the
     /// propellers' slipstream; straight-line resistance eq. 2.15's. The propellers' inflow is
-    /// taken `x_p` [m] aft of G, as the Table 2.3 model's.
+    /// taken `x_p` \[m\] aft of G, as the Table 2.3 model's.
     Own { model: Box<OwnHull>, x_p: f64 },
 }
 
@@ -148,11 +148,11 @@ pub struct Plant {
     pub hull_model: HullModel,
     /// Surge mass used by the equations of motion [kg].
     pub surge_mass: f64,
-    /// The ship's length L of the maneuvering prime system [m].
+    /// The ship's length L of the maneuvering prime system \[m\].
     pub hull_length: f64,
     /// Reversible rectifiers (power may flow back into the generators).
     pub reversible: bool,
-    /// Brake resistor [ohm] (0: none) and the bus voltages where its chopper starts and saturates [V].
+    /// Brake resistor \[ohm\] (0: none) and the bus voltages where its chopper starts and saturates \[V\].
     pub brake_resistor: f64,
     pub brake_on_v: f64,
     pub brake_full_v: f64,
@@ -162,7 +162,7 @@ pub struct Plant {
     pub shaft_inertia: f64,
     pub beta_t: f64,
     pub beta_q: f64,
-    /// A constant added resistance [N] (the mean second-order force of a regular sea, for the
+    /// A constant added resistance \[N\] (the mean second-order force of a regular sea, for the
     /// steady states of the fuel study); 0 in a normal run.
     pub extra_resistance: f64,
     /// The other parts on each bus (`plant.loads`, `plant.storage`, ...; each None without).
@@ -278,7 +278,7 @@ impl Plant {
         }
     }
 
-    /// Straight-line resistance of the hull at ship speed `u` [N] (what the calm-water map balances).
+    /// Straight-line resistance of the hull at ship speed `u` \[N\] (what the calm-water map balances).
     pub fn straight_resistance(&self, u: f64) -> f64 {
         self.extra_resistance
             + match &self.hull_model {
@@ -306,7 +306,7 @@ impl Plant {
         crate::numerics::bisect(f, 0.0, b, 100)
     }
 
-    /// Brake resistor power at bus voltage `v_c` [W]: the chopper's duty rises linearly from 0 at
+    /// Brake resistor power at bus voltage `v_c` \[W\]: the chopper's duty rises linearly from 0 at
     /// `brake_on_v` to 1 at `brake_full_v`.
     pub fn brake_power(&self, v_c: f64) -> f64 {
         if self.brake_resistor <= 0.0 || v_c <= self.brake_on_v {
@@ -572,7 +572,7 @@ impl Plant {
 
     /// The multi-rate step's fast part: the drive train's derivatives with the hull held (its
     /// derivatives 0) and the propellers' inflow `va` [m/s] fixed over the slow step; the thrust
-    /// slot integrates the thrust itself [N] (its impulse over the step), the ship's is 0.
+    /// slot integrates the thrust itself \[N\] (its impulse over the step), the ship's is 0.
     pub fn drive_derivatives(&self, x: &State, h: &Held, va: f64, dx: &mut State) {
         let mut e = [0.0; N_ENERGY];
         self.drive(x, h, va, 1.0, None, dx, &mut e);
@@ -581,7 +581,7 @@ impl Plant {
     }
 
     /// The multi-rate step's slow part: the hull's derivatives under the mean thrust `thrust`
-    /// [N] with the drive train held (its derivatives 0); books the thrust's work at the hull's
+    /// \[N\] with the drive train held (its derivatives 0); books the thrust's work at the hull's
     /// speed and the work against the resistance.
     pub fn hull_derivatives(&self, x: &State, h: &Held, thrust: f64, heading: (f64, f64, f64), dx: &mut State) {
         let mut e = [0.0; N_ENERGY];
@@ -620,7 +620,7 @@ impl Plant {
     }
 }
 
-/// One step of `dt` [s] by `method` with the controls held (no allocation; the outputs are not
+/// One step of `dt` \[s\] by `method` with the controls held (no allocation; the outputs are not
 /// formed: `Plant::evaluate` gives them where they are wanted).
 pub fn plant_step(plant: &Plant, x: &mut State, h: &Held, dt: f64, method: Integrator) {
     // The stages' headings differ from the step's start by r dt at most: their sines and cosines
@@ -630,14 +630,14 @@ pub fn plant_step(plant: &Plant, x: &mut State, h: &Held, dt: f64, method: Integ
     method.step(x, 0.0, dt, |_, y, dx| plant.derivatives(y, h, heading, dx));
 }
 
-/// The multi-rate step's fast part: one step of `dt` [s] of the drive train with the hull held
+/// The multi-rate step's fast part: one step of `dt` \[s\] of the drive train with the hull held
 /// and the propellers' inflow `va` [m/s] fixed (see [`Plant::drive_derivatives`]).
 pub fn drive_step(plant: &Plant, x: &mut State, h: &Held, va: f64, dt: f64, method: Integrator) {
     method.step(x, 0.0, dt, |_, y, dx| plant.drive_derivatives(y, h, va, dx));
 }
 
-/// The multi-rate step's slow part: one step of `dt` [s] of the hull under the mean thrust
-/// `thrust` [N] with the drive train held (see [`Plant::hull_derivatives`]).
+/// The multi-rate step's slow part: one step of `dt` \[s\] of the hull under the mean thrust
+/// `thrust` \[N\] with the drive train held (see [`Plant::hull_derivatives`]).
 pub fn hull_step(plant: &Plant, x: &mut State, h: &Held, thrust: f64, dt: f64, method: Integrator) {
     let psi0 = x[HEADING];
     let heading = (psi0, libm::sin(psi0), libm::cos(psi0));

@@ -90,12 +90,12 @@ pub fn sea_of(sc: &Scenario) -> Result<(Vec<WaveComponent>, Option<Conditioned>)
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct SeaSample {
     pub t: f64,
-    /// Each shaft's hub depth below the surface [m] and its first two time derivatives (port,
+    /// Each shaft's hub depth below the surface \[m\] and its first two time derivatives (port,
     /// starboard).
     pub hub: [f64; N_SHAFTS],
     pub hub_rate: [f64; N_SHAFTS],
     pub hub_accel: [f64; N_SHAFTS],
-    /// Wave elevation at the port propeller [m].
+    /// Wave elevation at the port propeller \[m\].
     pub wave_stern: f64,
     /// Heave [m, up], pitch [rad, bow down], roll [rad, starboard down], sway [m, to starboard],
     /// yaw [rad, bow to starboard]: the first-order motions about the maneuvering track.
@@ -104,7 +104,7 @@ pub struct SeaSample {
     pub roll: f64,
     pub sway: f64,
     pub yaw: f64,
-    /// Slowly varying second-order force in ship axes [N]: forward and to starboard; and yaw
+    /// Slowly varying second-order force in ship axes \[N\]: forward and to starboard; and yaw
     /// moment [N m], bow to starboard (M_add of eqs. 2.19, 2.24).
     pub fx: f64,
     pub fy: f64,
@@ -112,7 +112,7 @@ pub struct SeaSample {
 }
 
 impl SeaSample {
-    /// A calm sea with the hubs at depth `h0` [m].
+    /// A calm sea with the hubs at depth `h0` \[m\].
     pub fn calm(h0: f64) -> SeaSample {
         SeaSample { hub: [h0; N_SHAFTS], ..Default::default() }
     }
@@ -432,8 +432,8 @@ impl Seaway {
         self.waves.clone()
     }
 
-    /// Looks the RAOs up again at speed `u` [m/s] and heading `psi` [rad] unless both are within
-    /// `du` [m/s] and `dpsi` [rad] of the last look-up's (`seakeeping.rao_refresh_speed_m_s`,
+    /// Looks the RAOs up again at speed `u` [m/s] and heading `psi` \[rad\] unless both are within
+    /// `du` [m/s] and `dpsi` \[rad\] of the last look-up's (`seakeeping.rao_refresh_speed_m_s`,
     /// `rao_refresh_heading_deg`); the first call always looks up, and so does a non-finite
     /// input, and every call with eqs. 2.55/2.59 as printed (their extra phase, the encounter
     /// frequency's excess over the look-up's speed, would drift for as long as it is skipped).
@@ -448,7 +448,7 @@ impl Seaway {
         true
     }
 
-    /// Looks the RAOs up again at speed `u` [m/s] and heading `psi` [rad].
+    /// Looks the RAOs up again at speed `u` [m/s] and heading `psi` \[rad\].
     ///
     /// LANES components at a time (structure of arrays, as `sample`): each component's arithmetic
     /// is the same, operation for operation, as one at a time, so the bits do not depend on the
@@ -624,7 +624,7 @@ impl Seaway {
         }
     }
 
-    /// Sums the components at time `t` [s] with the ship at (x, y) [m] moving at (xd, yd) [m/s].
+    /// Sums the components at time `t` \[s\] with the ship at (x, y) \[m\] moving at (xd, yd) [m/s].
     // The lane loops index several arrays by the lane: written as indices so that they vectorise.
     #[allow(clippy::needless_range_loop)]
     pub fn sample(&mut self, t: f64, x: f64, y: f64, xd: f64, yd: f64) -> SeaSample {
@@ -749,7 +749,7 @@ impl Seaway {
         s
     }
 
-    /// Mean second-order force per the first term of eq. 2.60, sum a_i^2 F_i, ship axes [N]
+    /// Mean second-order force per the first term of eq. 2.60, sum a_i^2 F_i, ship axes \[N\]
     /// (for tests: the time average of `fx`, `fy`).
     pub fn mean_force(&self) -> (f64, f64) {
         let sq = |w: &[f64]| w.iter().map(|w| w * w).sum::<f64>();

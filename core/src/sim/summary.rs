@@ -17,7 +17,7 @@ pub struct TraceStats {
     pub min: f64,
     pub max: f64,
     pub mean: f64,
-    /// Settling time [s] (see [`settling_time`]): only for a signal that has an order or a nominal
+    /// Settling time \[s\] (see [`settling_time`]): only for a signal that has an order or a nominal
     /// value ([`settling_target`]), moved away from it and came back to stay; None (JSON null)
     /// otherwise: a signal without an order, one that never left the band (nothing settled) and
     /// one that ends outside it or leaves it again too late (it does not settle).
@@ -67,7 +67,7 @@ pub fn settling_time(t: &[f64], col: &[f64], target: f64) -> Option<f64> {
     (t_end - settled >= SETTLED_HOLD_SHARE * (t_end - t0)).then_some(settled)
 }
 
-/// Table 5.6 power inventory [W], sums over machines.
+/// Table 5.6 power inventory \[W\], sums over machines.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct PowerInventory {
     pub turbine: f64,
@@ -95,7 +95,7 @@ pub struct Efficiencies {
     pub propeller: f64,
 }
 
-/// Energy books over the whole run [J].
+/// Energy books over the whole run \[J\].
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct EnergyBalance {
     /// Work of the turbines (input).

@@ -26,14 +26,14 @@ pub struct ControllerRun {
     pub bus_voltage_min_pu: f64,
     pub bus_voltage_max_pu: f64,
     /// Recovery of the bus voltage and of the turbine speed: time from the order (the second
-    /// command) until the signal is back within +-1 % of its set point for good [s]; None in
+    /// command) until the signal is back within +-1 % of its set point for good \[s\]; None in
     /// waves (the load never settles) or when it is not back by the end of the run.
     pub bus_recovery_s: Option<f64>,
     pub turbine_recovery_s: Option<f64>,
-    /// Fuel energy of the run [J] and the peak fuel power [W], all four prime movers.
+    /// Fuel energy of the run \[J\] and the peak fuel power \[W\], all four prime movers.
     pub fuel_energy_j: f64,
     pub fuel_power_peak_w: f64,
-    /// Largest field voltage [V] (what the exciter was asked for).
+    /// Largest field voltage \[V\] (what the exciter was asked for).
     pub field_voltage_max_v: f64,
 }
 

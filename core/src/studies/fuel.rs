@@ -34,7 +34,7 @@ pub struct FuelPoint {
     pub heading: &'static str,
     pub amplitude_ft: f64,
     pub omega_rad_s: f64,
-    /// Mean added resistance [N], shaft power and fuel power of one prime mover [W].
+    /// Mean added resistance \[N\], shaft power and fuel power of one prime mover \[W\].
     pub added_resistance_n: f64,
     pub turbine_power_w: f64,
     pub fuel_power_w: f64,

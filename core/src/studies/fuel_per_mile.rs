@@ -18,12 +18,12 @@ use serde::{Deserialize, Serialize};
 /// Lower heating value of marine gas oil [J/kg]: 42.7 MJ/kg (ISO 8217 DMA distillate, the usual
 /// figure for gas turbine fuel; the thesis gives fuel as power, not mass).
 pub const LHV_J_PER_KG: f64 = 42.7e6;
-/// One nautical mile [m].
+/// One nautical mile \[m\].
 pub const NAUTICAL_MILE_M: f64 = 1852.0;
 /// Most speeds and seeds of one study.
 pub const MAX_SPEEDS: usize = 50;
 pub const MAX_SEEDS: u64 = 1000;
-/// Slowest speed taken [kn]: per mile, fuel grows without bound as the speed goes to 0.
+/// Slowest speed taken \[kn\]: per mile, fuel grows without bound as the speed goes to 0.
 pub const MIN_SPEED_KN: f64 = 1.0;
 /// Exact moments' quantum: 2^-16 kg/nmi or kn (values to 2^29).
 const BITS: i32 = 16;
@@ -39,7 +39,7 @@ pub struct FuelPerMileSpec {
     pub from_s: f64,
 }
 
-/// Per speed: kilograms of fuel per nautical mile, and the mean speed through the water [kn].
+/// Per speed: kilograms of fuel per nautical mile, and the mean speed through the water \[kn\].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SpeedMoments {
     pub kg_per_nmi: ExactMoments,

@@ -21,13 +21,13 @@ use serde::Serialize;
 const DT_S: f64 = 0.1;
 /// Longest maneuver [s].
 const MAX_S: f64 = 1800.0;
-/// Hard-over rudder of the turning circle [deg] (IMO).
+/// Hard-over rudder of the turning circle \[deg\] (IMO).
 pub const TURNING_RUDDER_DEG: f64 = 35.0;
 /// Coasting stops at this speed [kn].
 const STOPPED_KN: f64 = 5.0;
 
-/// One sample of a maneuver: time [s], position [m] (north, east), heading [deg], speed [kn],
-/// rudder [deg] (positive turns to starboard, as a booklet plots it).
+/// One sample of a maneuver: time \[s\], position \[m\] (north, east), heading \[deg\], speed \[kn\],
+/// rudder \[deg\] (positive turns to starboard, as a booklet plots it).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Sample {
     pub t_s: f64,
@@ -57,7 +57,7 @@ pub struct ZigZag {
     pub rudder_deg: f64,
     pub first_overshoot_deg: f64,
     pub second_overshoot_deg: f64,
-    /// Distance run from the rudder order until the heading has changed by `rudder_deg` [m].
+    /// Distance run from the rudder order until the heading has changed by `rudder_deg` \[m\].
     pub initial_turning_m: f64,
     pub track: Vec<Sample>,
 }
@@ -70,7 +70,7 @@ pub struct Coasting {
     pub time_s: f64,
 }
 
-/// A row of the captive table: drift angle [deg] or r' = r L / U, and the side force and yaw
+/// A row of the captive table: drift angle \[deg\] or r' = r L / U, and the side force and yaw
 /// moment of the hull with its rudders at 0 deg and the propellers at the approach speed's
 /// thrust, as Y' = Y / ((1/2) rho L T U^2), N' = N / ((1/2) rho L^2 T U^2).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -223,7 +223,7 @@ fn zigzag(trial: &Trial, deg: f64) -> ZigZag {
     }
 }
 
-/// IMO's first-overshoot limit of the 10/10 zig-zag for L/V [s]: 10 deg below 10 s, 20 deg above
+/// IMO's first-overshoot limit of the 10/10 zig-zag for L/V \[s\]: 10 deg below 10 s, 20 deg above
 /// 30 s, 5 + (L/V)/2 between; and the second overshoot's: 25, 40, 17.5 + 0.75 L/V.
 pub fn zigzag_10_limits(l_over_v_s: f64) -> (f64, f64) {
     let a = l_over_v_s.clamp(10.0, 30.0);

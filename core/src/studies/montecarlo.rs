@@ -7,7 +7,7 @@
 //! Definitions:
 //! - Excess energy of a trial: the energy drawn by one motor over the run minus that drawn in the
 //!   same sea (same seed) with the propeller's surface losses switched off (its fully submerged
-//!   counterpart) [MJ]. It isolates what the surface effects cost, not the added resistance. The
+//!   counterpart) \[MJ\]. It isolates what the surface effects cost, not the added resistance. The
 //!   summary gives also the excess over the calm-water power at the ordered speed (which includes
 //!   the added resistance and every other effect of the sea).
 //! - Arrival time: the first instant beta_T < 1 on either shaft (ventilation or emergence); trials
@@ -21,7 +21,7 @@ use crate::studies::stats::{trial_seed, welch, ExactMoments, Histogram};
 use crate::studies::study::Study;
 use serde::{Deserialize, Serialize};
 
-/// Most memory one accumulator of a study may take [bytes]: its moment rows (envelopes, onset,
+/// Most memory one accumulator of a study may take \[bytes\]: its moment rows (envelopes, onset,
 /// periodogram) and kept traces, estimated by [`study_bytes`] and checked by [`check_study`]
 /// before the study starts (a native study holds about two per thread; its summary's JSON is
 /// about 1.5 times the rows' share). The presets keep at most 2.6 MB.
@@ -678,7 +678,7 @@ pub struct ExcessVsCalm {
     pub definition: &'static str,
 }
 
-/// Excess motor energy due to surface effects, per trial [MJ].
+/// Excess motor energy due to surface effects, per trial \[MJ\].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ExcessEnergy {
     pub mean: Option<f64>,
@@ -690,7 +690,7 @@ pub struct ExcessEnergy {
     pub vs_calm_water: ExcessVsCalm,
 }
 
-/// Arrival times of the first surface effect [s], with censoring at the run's end.
+/// Arrival times of the first surface effect \[s\], with censoring at the run's end.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ArrivalTimes {
     pub events: u64,
@@ -726,7 +726,7 @@ pub struct PeriodogramSummary {
     /// Trials that ran at least one whole segment, the ones averaged (a trial that stops at its
     /// first surface effect may end before one).
     pub trials: u64,
-    /// Welch's segment [s] (`monte_carlo.periodogram_segment_s`).
+    /// Welch's segment \[s\] (`monte_carlo.periodogram_segment_s`).
     pub segment_s: f64,
     pub freq_hz: Vec<f64>,
     pub unit: &'static str,

@@ -15,7 +15,7 @@
 //! Trial j's sea is seed s_j's (frequencies and directions of the scenario's sampler, Gaussian
 //! amplitudes) conditioned on one of its crossings; seeds' spectra differ a little, so seed s_j's
 //! crossing rate nu_j (its own Rice rate) is trial j's weight. The rate of events is
-//! E[nu] (estimated by the mean of nu_j, with its 95 % interval), the rate of events whose
+//! E\[nu\] (estimated by the mean of nu_j, with its 95 % interval), the rate of events whose
 //! consequence exceeds a threshold E[nu 1{c > threshold}] (the mean of nu_j 1_j, with its
 //! interval), and the distribution of a consequence given the event is weighted by nu_j.
 //! Rice's rate from the continuous spectrum stands beside them.
@@ -59,7 +59,7 @@ pub struct Consequence {
     pub larger_is_worse: bool,
 }
 
-/// The motor power before an event is its mean over this long [s].
+/// The motor power before an event is its mean over this long \[s\].
 pub const PRE_EVENT_S: f64 = 5.0;
 
 /// The consequences measured from the event to `window_s` after it.
@@ -87,7 +87,7 @@ pub const CONSEQUENCES: [Consequence; 5] = [
     Consequence { name: "brake_energy_mj", label: "energy burnt in the brake resistors", larger_is_worse: true },
 ];
 
-/// The consequences in `trace` of an event of shaft `shaft` at time `t` [s], over `[t, t + window]`,
+/// The consequences in `trace` of an event of shaft `shaft` at time `t` \[s\], over `[t, t + window]`,
 /// and h/R there: the one measure of a conditioned trial and of an event counted in a long run.
 pub fn consequences_at(r: &RunResult, shaft: usize, t: f64, window: f64) -> Option<([f64; 5], f64)> {
     let tr = &r.trace;
@@ -411,7 +411,7 @@ pub struct TrialLimits {
     place: [(&'static str, f64, f64); 4],
 }
 
-/// Farthest the propeller hub is from the still water surface at an event, above or below [m]:
+/// Farthest the propeller hub is from the still water surface at an event, above or below \[m\]:
 /// a hull's hub sits at most a few tens of metres deep, and the highest sea of the scenario's
 /// ranges (H_1/3 up to 20 m) with the ship's heave and pitch moves it by tens more.
 pub const MAX_HUB_DEPTH_M: f64 = 200.0;
@@ -651,7 +651,7 @@ pub struct RareSummary {
     pub rate: Rate,
     /// Rice's rate from the continuous spectrum (eq. 5.3) for the hub's depth swing [1/h].
     pub rice_per_hour: f64,
-    /// The hub's depth swing, standard deviation [m], and the level's depth below the calm hub
+    /// The hub's depth swing, standard deviation \[m\], and the level's depth below the calm hub
     /// in standard deviations.
     pub hub_sigma_m: f64,
     pub level_sigmas: f64,

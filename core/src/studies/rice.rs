@@ -119,10 +119,10 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
     }))
 }
 
-/// Rice's prediction (eqs. 5.1-5.3) of the first surface effect on either shaft: the level Z [m]
+/// Rice's prediction (eqs. 5.1-5.3) of the first surface effect on either shaft: the level Z \[m\]
 /// the hubs' motion must rise above (h/R below `threshold_h_over_r`), the rate [1/s] of the
-/// union of the two hubs' up-crossings, its mean arrival 1/rate [s] and the mean of
-/// min(arrival, cap) an exponential arrival gives censored at the run's duration [s]; the upper
+/// union of the two hubs' up-crossings, its mean arrival 1/rate \[s\] and the mean of
+/// min(arrival, cap) an exponential arrival gives censored at the run's duration \[s\]; the upper
 /// bound by the sum of the two rates; and each hub's own prediction.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RiceSummary {
@@ -143,14 +143,14 @@ pub struct RiceSummary {
     /// at t = 0, which Poisson arrivals from t = 0 do not count).
     pub start_past_level_probability: f64,
     /// The mean of min(arrival, cap) with those trials' arrivals at 0 and the others' exponential
-    /// at `rate_per_s`: (1 - p0) `mean_censored_s` [s]; what the trials' `mean_censored` estimates.
+    /// at `rate_per_s`: (1 - p0) `mean_censored_s` \[s\]; what the trials' `mean_censored` estimates.
     pub mean_censored_with_start_s: f64,
     pub hubs: [RiceHub; N_SHAFTS],
 }
 
-/// Rice's prediction for one hub alone: its offset to port [m], its depth spectrum's moments
+/// Rice's prediction for one hub alone: its offset to port \[m\], its depth spectrum's moments
 /// M0 [m^2] and M2 [m^2/s^2] (in the encounter frequency), the up-crossing rate of eq. 5.3 [1/s],
-/// 1/rate and the censored mean [s].
+/// 1/rate and the censored mean \[s\].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RiceHub {
     pub shaft: &'static str,

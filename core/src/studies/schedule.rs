@@ -45,7 +45,7 @@ const SENSITIVITY_STEP: f64 = 0.05;
 /// The sea's slowly varying added resistance in head seas at one speed (Newman's approximation).
 #[derive(Debug, Clone, Copy, Serialize)]
 pub struct SlowDrift {
-    /// Mean added resistance R [N].
+    /// Mean added resistance R \[N\].
     pub mean_n: f64,
     /// Rms bandwidth beta of the envelope's spectrum in encounter frequency [rad/s].
     pub bandwidth_rad_s: f64,
@@ -82,7 +82,7 @@ pub fn slow_drift(sc: &Scenario, table: &crate::sea::seakeeping::tables::RaoTabl
     SlowDrift { mean_n: m0, bandwidth_rad_s: (m2 / m0 - (m1 / m0) * (m1 / m0)).max(0.0).sqrt() }
 }
 
-/// Rice's up-crossing rate [1/s] of level `f` [N] by Newman's slowly varying force of `drift`
+/// Rice's up-crossing rate [1/s] of level `f` \[N\] by Newman's slowly varying force of `drift`
 /// (the squared envelope of a Gaussian process): beta sqrt(x / pi) e^{-x}, x = f / R.
 pub fn upcrossing_rate(drift: &SlowDrift, f: f64) -> f64 {
     if drift.mean_n <= 0.0 || f <= 0.0 {
@@ -92,7 +92,7 @@ pub fn upcrossing_rate(drift: &SlowDrift, f: f64) -> f64 {
     drift.bandwidth_rad_s * (x / PI).sqrt() * libm::exp(-x)
 }
 
-/// Chance of at least one up-crossing in `window_s` [s] at rate `nu` [1/s].
+/// Chance of at least one up-crossing in `window_s` \[s\] at rate `nu` [1/s].
 pub fn chance_in(nu: f64, window_s: f64) -> f64 {
     if nu.is_infinite() {
         1.0

@@ -43,7 +43,7 @@ pub struct BusModel {
     pub eigenvalues: Vec<[f64; 2]>,
     /// The largest real part [1/s]: negative where the plant is stable.
     pub spectral_abscissa: f64,
-    /// The frequency of the least damped mode [Hz].
+    /// The frequency of the least damped mode \[Hz\].
     pub least_damped_hz: f64,
 }
 
@@ -170,7 +170,7 @@ pub struct StabilityMap {
     /// Spectral abscissa [1/s] of each cell, a row per y value (None where the steady state or the
     /// model failed, with the reason in `failures`).
     pub abscissa: Vec<Vec<Option<f64>>>,
-    /// The frequency [Hz] of each cell's least damped mode (the one whose real part is the
+    /// The frequency \[Hz\] of each cell's least damped mode (the one whose real part is the
     /// abscissa), as `abscissa`.
     pub least_damped_hz: Vec<Vec<Option<f64>>>,
     /// For each y value, the x where the abscissa first crosses zero along the row (bisected
@@ -276,14 +276,14 @@ fn bisect_boundary(
     Ok(0.5 * (a + b))
 }
 
-/// Filter capacitances of the closed-form check [F].
+/// Filter capacitances of the closed-form check \[F\].
 pub const STIFF_BUS_FILTERS_F: [f64; 3] = [0.01, 0.02, 0.04];
 
 /// The map's simple case, checked against a closed form (the test and the validation report
 /// share it): the plant at 20 kn with a stiff bus (100 F, the range's top) feeding the ship
-/// service load through the default filter with capacitance `c_f` [F]. Returns the closed form
+/// service load through the default filter with capacitance `c_f` \[F\]. Returns the closed form
 /// R_f C_f v_f^2 / L_f and the boundary in ship service power bisected between half and 1.5 times
-/// it, as the map does between its cells [W].
+/// it, as the map does between its cells \[W\].
 pub fn stiff_bus_check(c_f: f64) -> Result<(f64, f64), String> {
     let mut sc = crate::scenario::presets::acceleration(false);
     sc.initial.speed_kn = 20.0;

@@ -430,7 +430,7 @@ impl Histogram {
 }
 
 /// One-sided power spectral density by Welch's method: Hann windows of `segment` samples with
-/// 50 % overlap, mean removed per segment. Returns (frequencies [Hz], PSD [unit^2/Hz]); its
+/// 50 % overlap, mean removed per segment. Returns (frequencies \[Hz\], PSD [unit^2/Hz]); its
 /// integral over frequency is the signal's variance (Parseval).
 pub fn welch(signal: &[f64], dt: f64, segment: usize) -> (Vec<f64>, Vec<f64>) {
     let seg = segment.min(signal.len()).max(2);

@@ -23,29 +23,29 @@ pub const AT_RATING: f64 = 0.99;
 /// One run's measures.
 #[derive(Debug, Clone, Serialize)]
 pub struct Cell {
-    /// Storage energy on each bus [J] (0: no storage).
+    /// Storage energy on each bus \[J\] (0: no storage).
     pub energy_j: f64,
-    /// Storage power rating on each bus [W].
+    /// Storage power rating on each bus \[W\].
     pub power_w: f64,
-    /// Standard deviation of the turbines' speed over the run [pu].
+    /// Standard deviation of the turbines' speed over the run \[pu\].
     pub turbine_speed_std_pu: f64,
-    /// Highest minus lowest turbine speed [pu].
+    /// Highest minus lowest turbine speed \[pu\].
     pub turbine_speed_range_pu: f64,
-    /// Lowest and highest bus voltage [pu].
+    /// Lowest and highest bus voltage \[pu\].
     pub bus_voltage_min_pu: f64,
     pub bus_voltage_max_pu: f64,
-    /// Mean fuel power of the turbines online [W].
+    /// Mean fuel power of the turbines online \[W\].
     pub fuel_power_mean_w: f64,
-    /// Mean shaft power of the turbines [W]: what the fuel paid for, whatever the curve.
+    /// Mean shaft power of the turbines \[W\]: what the fuel paid for, whatever the curve.
     pub turbine_power_mean_w: f64,
     /// Share of the run the online sets ran below the part-load curve's first point (30 % load),
     /// where the curve is extrapolated and gives too little fuel (no idle flow): a run whose
     /// turbines swing down there is charged too little fuel beside a steady one [-].
     pub below_curve_share: f64,
-    /// Net energy the storages gave the buses over the run [J] (their charge's fall, less losses):
+    /// Net energy the storages gave the buses over the run \[J\] (their charge's fall, less losses):
     /// the turbines must put it back later.
     pub storage_net_j: f64,
-    /// Energy burnt in the brake resistors [J].
+    /// Energy burnt in the brake resistors \[J\].
     pub brake_energy_j: f64,
     /// Lowest and highest state of charge (mean of the two storages) [-]; 0 without storage.
     pub soc_min: f64,

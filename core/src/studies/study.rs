@@ -46,7 +46,7 @@ pub struct Estimate {
     /// Units of work of one item ([`Study::item_work`]); absent when the items are not runs.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub item_work: Option<f64>,
-    /// Wall clock on the threads asked for [s] ([`wall_estimate_s`]); absent with `item_work`.
+    /// Wall clock on the threads asked for \[s\] ([`wall_estimate_s`]); absent with `item_work`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub seconds: Option<f64>,
 }

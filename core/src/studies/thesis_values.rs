@@ -19,7 +19,7 @@ pub const CSV: &str = include_str!("../../data/thesis_values.csv");
 /// Where the file lives in the repository (for messages).
 pub const PATH: &str = "core/data/thesis_values.csv";
 
-/// Table 5.7's keys at each speed [kn]: the generator, power electronics, motor and propeller
+/// Table 5.7's keys at each speed \[kn\]: the generator, power electronics, motor and propeller
 /// efficiencies, in that order (the validation report and tests/startup.rs compare with them).
 pub const TABLE_5_7: [(f64, [&str; 4]); 3] = [
     (

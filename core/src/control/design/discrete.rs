@@ -1,5 +1,5 @@
 //! Zero-order-hold discretisation: a continuous system x' = A x + B u whose input is held
-//! between samples T apart is exactly x[k+1] = Phi x[k] + Gamma u[k], with Phi = e^(A T) and
+//! between samples T apart is exactly x[k+1] = Phi x\[k\] + Gamma u\[k\], with Phi = e^(A T) and
 //! Gamma = (integral from 0 to T of e^(A s) ds) B. Both come from one exponential of the block
 //! matrix [[A, B], [0, 0]] T (Van Loan 1978), by Pade scaling and squaring (nalgebra's own
 //! exponential needs its std feature, which would bring run-time SIMD dispatch into every matrix
@@ -7,7 +7,7 @@
 
 use nalgebra::DMatrix;
 
-/// Phi and Gamma of `a`, `b` held over `ts` [s]; an error if the exponential is not finite.
+/// Phi and Gamma of `a`, `b` held over `ts` \[s\]; an error if the exponential is not finite.
 pub fn zero_order_hold(a: &DMatrix<f64>, b: &DMatrix<f64>, ts: f64) -> Result<(DMatrix<f64>, DMatrix<f64>), String> {
     let (n, m) = (a.nrows(), b.ncols());
     if a.ncols() != n || b.nrows() != n {

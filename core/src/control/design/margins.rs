@@ -15,13 +15,13 @@ use serde::Serialize;
 pub struct LoopMargins {
     /// Input channel (0-based).
     pub input: usize,
-    /// Gain increase that makes the loop marginally stable [dB], at a phase crossover where
+    /// Gain increase that makes the loop marginally stable \[dB\], at a phase crossover where
     /// |l| < 1; None when no phase crossover has |l| < 1 (unlimited upward).
     pub gain_margin_db: Option<f64>,
     /// Gain decrease that makes it marginally stable [dB, negative], at a phase crossover where
     /// |l| > 1; None when there is none (the loop tolerates any reduction).
     pub gain_reduction_margin_db: Option<f64>,
-    /// Phase margin at the worst gain crossover |l| = 1 [deg]: 180 + arg l wrapped to
+    /// Phase margin at the worst gain crossover |l| = 1 \[deg\]: 180 + arg l wrapped to
     /// (-180, 180], negative when the phase is past -180 degrees there; None when |l| never
     /// crosses 1 in the band searched.
     pub phase_margin_deg: Option<f64>,

@@ -37,7 +37,7 @@ pub struct RollPeak {
 pub struct AftEndRoll {
     /// The hull and its loading, for the report.
     pub hull: String,
-    /// Transverse metacentric height [m].
+    /// Transverse metacentric height \[m\].
     pub gm_t_m: f64,
     pub with_terms: [RollPeak; 2],
     pub without_terms: [RollPeak; 2],

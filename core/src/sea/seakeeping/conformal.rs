@@ -26,7 +26,7 @@ pub enum Form {
 /// An odd Laurent-series map z = M (zeta + sum a_k zeta^-k).
 #[derive(Debug, Clone, PartialEq)]
 pub struct SectionMap {
-    /// Scale M [m].
+    /// Scale M \[m\].
     pub scale: f64,
     /// a_1, a_3, a_5, ... (coefficient of zeta^-(2i+1) at index i).
     pub coeffs: Vec<f64>,
@@ -67,12 +67,12 @@ impl SectionMap {
         s * self.scale
     }
 
-    /// Half-beam at the waterline (zeta = 1) [m].
+    /// Half-beam at the waterline (zeta = 1) \[m\].
     pub fn half_beam(&self) -> f64 {
         self.scale * (1.0 + self.coeffs.iter().sum::<f64>())
     }
 
-    /// Draft on the centreline (zeta = -i) [m].
+    /// Draft on the centreline (zeta = -i) \[m\].
     pub fn draft(&self) -> f64 {
         // (-i)^-(2i+1) = i^(2i+1) = i (-1)^i.
         self.scale * (1.0 + self.coeffs.iter().enumerate().map(|(i, a)| if i % 2 == 0 { -a } else { *a }).sum::<f64>())
@@ -130,7 +130,7 @@ pub fn section_map(half_beam: f64, draft: f64, sigma: f64) -> Option<SectionMap>
     Some(lm)
 }
 
-/// Half-breadth of the mapped contour at `depth` below the waterline (the widest crossing) [m].
+/// Half-breadth of the mapped contour at `depth` below the waterline (the widest crossing) \[m\].
 pub fn half_breadth_at(map: &SectionMap, depth: f64) -> f64 {
     let n = 400;
     let pts: Vec<C> = (0..=n)
@@ -150,7 +150,7 @@ pub fn half_breadth_at(map: &SectionMap, depth: f64) -> f64 {
     best
 }
 
-/// RMS difference [m] between the mapped contour's half-breadths and a section's own
+/// RMS difference \[m\] between the mapped contour's half-breadths and a section's own
 /// (depth below the waterline, half-breadth) rows.
 pub fn profile_error(map: &SectionMap, profile: &[(f64, f64)]) -> f64 {
     if profile.is_empty() {

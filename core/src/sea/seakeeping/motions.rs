@@ -120,8 +120,8 @@ fn solve_small<const N: usize>(mut a: [[C; N]; N], mut b: [C; N]) -> [C; N] {
 }
 
 /// The response to a unit-amplitude regular wave of frequency `omega0` [rad/s] at ship speed `u`
-/// [m/s] and heading `beta` [rad] (180 deg head seas), with the nonlinear roll damping linearised
-/// at the roll amplitude reached in waves of amplitude `roll_wave_amplitude` [m] (eq. 2.45,
+/// [m/s] and heading `beta` \[rad\] (180 deg head seas), with the nonlinear roll damping linearised
+/// at the roll amplitude reached in waves of amplitude `roll_wave_amplitude` \[m\] (eq. 2.45,
 /// iterated to 0.1 %).
 pub fn response(
     ship: &Ship,
@@ -470,7 +470,7 @@ pub(super) fn response_parts(
     (r, unit_lever, system)
 }
 
-/// Zero-speed natural periods of heave and pitch [s] from the computed coefficients:
+/// Zero-speed natural periods of heave and pitch \[s\] from the computed coefficients:
 /// omega_n^2 = C / (M + A(omega_n)), solved by fixed-point iteration on the added mass.
 pub fn natural_periods(ship: &Ship, table: &RadiationTable) -> (f64, f64) {
     let (rho, g) = (ship.rho, ship.g);

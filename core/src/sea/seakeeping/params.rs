@@ -130,7 +130,7 @@ crate::choices! {
     }
 }
 
-/// Where a propeller hub is: `x_aft` [m] aft of the centre of gravity, `y` [m] to port of the
+/// Where a propeller hub is: `x_aft` \[m\] aft of the centre of gravity, `y` \[m\] to port of the
 /// centreline (STF axes).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HubPlace {
@@ -165,7 +165,7 @@ impl SternMotion {
         C::new(libm::cos(ph), libm::sin(ph))
     }
 
-    /// The phase of `hub_wave` [rad].
+    /// The phase of `hub_wave` \[rad\].
     pub fn hub_phase(self, k: f64, at: HubPlace, cos_beta: f64, sin_beta: f64) -> f64 {
         let y = match self {
             SternMotion::Consistent => at.y,

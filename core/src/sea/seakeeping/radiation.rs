@@ -37,7 +37,7 @@ pub struct Contour {
     /// Gauss-Legendre weights in the circle-plane angle theta in (-pi/2, 0).
     pub weight: Vec<f64>,
     pub zeta: Vec<C>,
-    /// Section-plane points [m].
+    /// Section-plane points \[m\].
     pub z: Vec<C>,
     /// z'(zeta) zeta: its direction is the outward normal (into the fluid), its modulus |dz/dtheta|.
     pub dzt: Vec<C>,
@@ -65,7 +65,7 @@ impl Contour {
 #[derive(Debug, Clone)]
 pub struct Radiation2d {
     pub omega: f64,
-    /// Added mass [kg/m] (a22, a33), [kg m] (a44), [kg] (a24).
+    /// Added mass [kg/m] (a22, a33), [kg m] (a44), \[kg\] (a24).
     pub a22: f64,
     pub a33: f64,
     pub a44: f64,

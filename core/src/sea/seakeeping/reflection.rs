@@ -40,7 +40,7 @@ crate::choices! {
 /// sum of each piece's force times its x) [N m/m^2], for the waterline of half-breadths
 /// `half_breadth` at stations `x` (increasing, forward of the centre of gravity) with drafts
 /// `draft`, in waves of number `k` [rad/m] and frequency `omega0` [rad/s] from heading `beta`
-/// [rad] at ship speed `u` [m/s]. The waterline closes to the centreline half a station beyond
+/// \[rad\] at ship speed `u` [m/s]. The waterline closes to the centreline half a station beyond
 /// the foremost station (as the strips' weights do) and ends aft in a transom as wide as the
 /// aftmost station.
 #[allow(clippy::too_many_arguments)]

@@ -11,21 +11,21 @@ use std::f64::consts::PI;
 /// What the component method needs to know about the hull.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RollHull {
-    /// Length, beam, draft [m], block and midship coefficients.
+    /// Length, beam, draft \[m\], block and midship coefficients.
     pub lpp: f64,
     pub beam: f64,
     pub draft: f64,
     pub cb: f64,
     pub cm: f64,
-    /// Height of the centre of gravity above the waterline [m] (OG in Ikeda's notation is its
+    /// Height of the centre of gravity above the waterline \[m\] (OG in Ikeda's notation is its
     /// negative: distance below the waterline).
     pub zg: f64,
-    /// Bilge keel length and breadth [m] (0 for none).
+    /// Bilge keel length and breadth \[m\] (0 for none).
     pub bk_length: f64,
     pub bk_breadth: f64,
 }
 
-/// The viscous parts of B44* at roll amplitude `phi_a` [rad], frequency `omega` [rad/s], speed
+/// The viscous parts of B44* at roll amplitude `phi_a` \[rad\], frequency `omega` [rad/s], speed
 /// `u` [m/s]: (friction, eddy, lift, bilge keel) [N m s/rad].
 pub fn components(h: &RollHull, phi_a: f64, omega: f64, u: f64, rho: f64, g: f64) -> [f64; 4] {
     let (l, b, d, cb) = (h.lpp, h.beam, h.draft, h.cb);

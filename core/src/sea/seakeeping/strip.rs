@@ -29,9 +29,9 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MassProperties {
-    /// Centre of gravity above the baseline [m].
+    /// Centre of gravity above the baseline \[m\].
     pub kg_m: f64,
-    /// Radii of gyration about the centre of gravity: roll, pitch, yaw [m].
+    /// Radii of gyration about the centre of gravity: roll, pitch, yaw \[m\].
     pub kxx_m: f64,
     pub kyy_m: f64,
     pub kzz_m: f64,
@@ -58,7 +58,7 @@ impl crate::params::CrossCheck for BilgeKeels {}
 /// One strip.
 #[derive(Debug, Clone)]
 pub struct Strip {
-    /// Position forward of the centre of gravity [m] and its trapezoid weight [m].
+    /// Position forward of the centre of gravity \[m\] and its trapezoid weight \[m\].
     pub xi: f64,
     pub weight: f64,
     pub beam: f64,
@@ -81,7 +81,7 @@ pub struct Ship {
     pub mass: f64,
     /// Longitudinal centre of gravity = centre of buoyancy [m from the AP].
     pub lcg: f64,
-    /// Centre of gravity above the waterline [m] and of buoyancy (negative, below).
+    /// Centre of gravity above the waterline \[m\] and of buoyancy (negative, below).
     pub zg: f64,
     pub zb: f64,
     pub gm_t: f64,
@@ -89,7 +89,7 @@ pub struct Ship {
     pub awp: f64,
     pub mass_props: MassProperties,
     /// Stations the section maps cannot represent exactly, kept as the nearest Lewis form (x from
-    /// the AP [m], why); and stations without beam or draft at this waterline, which carry no
+    /// the AP \[m\], why); and stations without beam or draft at this waterline, which carry no
     /// sectional force.
     pub approximated: Vec<(f64, String)>,
     pub roll: RollHull,
@@ -220,7 +220,7 @@ impl Ship {
 #[derive(Debug, Clone)]
 pub struct RadiationTable {
     pub omegas: Vec<f64>,
-    /// [strip][frequency]
+    /// \[strip\]\[frequency\]
     pub data: Vec<Vec<Radiation2d>>,
 }
 

@@ -109,7 +109,7 @@ impl SeakeepingGrid {
     pub fn speeds(&self) -> Vec<f64> {
         lin(0.0, self.speed_max_kn * crate::numerics::units::KNOT_M_S, self.n_speed)
     }
-    /// Headings [rad].
+    /// Headings \[rad\].
     pub fn headings(&self) -> Vec<f64> {
         lin(0.0, PI, self.n_heading)
     }
@@ -377,7 +377,7 @@ impl RaoTable {
 
     /// Interpolation (complex RAOs component-wise) at wave frequency `omega0` [rad/s], speed `u`
     /// [m/s] and heading `beta` [rad, any angle; 180 deg head seas]: Catmull-Rom's cubic in
-    /// frequency ([`frequency_weights`]), linear in speed and heading; values outside the grid are
+    /// frequency (`frequency_weights`), linear in speed and heading; values outside the grid are
     /// held at its edge.
     pub fn interpolate(&self, omega0: f64, u: f64, beta: f64) -> Rao {
         // Fold the heading into [0, pi]; beyond pi the waves come from port: mirror.
@@ -575,7 +575,7 @@ pub struct RaoReport {
 }
 
 /// RAOs of `ship` as the JSON of `aes-sim rao`: amplitudes (m/m for heave and sway, rad/m for
-/// roll, pitch and yaw) and phases [deg] relative to the wave crest at the centre of gravity.
+/// roll, pitch and yaw) and phases \[deg\] relative to the wave crest at the centre of gravity.
 pub fn rao_json(
     ship: &Ship,
     speed: f64,

@@ -24,7 +24,7 @@ pub const WIGLEY_III_D: f64 = 0.1875;
 /// Stations of our Wigley III (cosine-spaced) and rows below its waterline.
 pub const WIGLEY_III_STATIONS: usize = 31;
 pub const WIGLEY_III_ROWS: usize = 24;
-/// Our KG [m]. Journee's KG 0.17 m leaves the model unstable in roll (GM_T < 0: it was guided in
+/// Our KG \[m\]. Journee's KG 0.17 m leaves the model unstable in roll (GM_T < 0: it was guided in
 /// roll), which `Ship::new` refuses. KG enters head-sea heave and pitch only through C55's
 /// rho g V (z_B - z_G) and the pitch inertia's z_G^2, and 0.15 m raises those by 0.5 % and
 /// 0.2 % over KG 0.17 m while it keeps GM_T positive (+0.0096 m).
@@ -56,7 +56,7 @@ pub fn heave_pitch(ship: &Ship, table: &RadiationTable, froude: f64, lambda_over
     (cabs(r.heave), cabs(r.pitch) / r.k)
 }
 
-/// A Wigley III-form model of beam `beam` [m] (Journee's is 0.3 m) at Journee's length, draft
+/// A Wigley III-form model of beam `beam` \[m\] (Journee's is 0.3 m) at Journee's length, draft
 /// and loading: KG [`WIGLEY_III_KG`], k_yy = k_zz = 0.25 L (k_xx = 0.35 B, our choice: roll
 /// plays no part in head seas), mass from the displaced volume in fresh water, g = 9.81.
 pub fn wigley_iii_model(beam: f64, stations: usize) -> Result<Ship, String> {

@@ -35,7 +35,7 @@ pub const MODE_1_MIN_RATIO: f64 = 0.75;
 
 /// The operating points the steady state accepts (beyond them the model's numbers lose meaning;
 /// inside them it may still find no steady state, and says why): speed set point [rad/s
-/// electrical], field voltage [V], sink current [A].
+/// electrical], field voltage \[V\], sink current \[A\].
 pub const OMEGA_RANGE_RAD_S: RangeInclusive<f64> = 1.0..=5000.0;
 pub const V_FD_RANGE_V: RangeInclusive<f64> = 0.01..=1000.0;
 pub const LOAD_RANGE_A: RangeInclusive<f64> = 0.01..=1000.0;
@@ -45,24 +45,24 @@ pub const LOAD_RANGE_A: RangeInclusive<f64> = 0.01..=1000.0;
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct GeneratorSideParams {
-    /// Stator resistance r_s [ohm]. Not given; 0.07 (2 % on a 59 kW, 460 V base of 3.59 ohm).
+    /// Stator resistance r_s \[ohm\]. Not given; 0.07 (2 % on a 59 kW, 460 V base of 3.59 ohm).
     pub r_s: f64,
-    /// Stator leakage inductance L_ls [H]. Not given; 0.95 mH (0.1 pu).
+    /// Stator leakage inductance L_ls \[H\]. Not given; 0.95 mH (0.1 pu).
     pub l_ls: f64,
-    /// q-axis magnetizing inductance L_mq [H]. Not given; 6.7 mH (0.7 pu, a salient machine).
+    /// q-axis magnetizing inductance L_mq \[H\]. Not given; 6.7 mH (0.7 pu, a salient machine).
     pub l_mq: f64,
-    /// d-axis magnetizing inductance L_md [H]. Not given; 13.80 mH (1.45 pu), chosen so that the baseline
+    /// d-axis magnetizing inductance L_md \[H\]. Not given; 13.80 mH (1.45 pu), chosen so that the baseline
     /// field current (108.75 A) gives Table 4.1's 457.7 V at the terminals, the way the thesis
     /// estimated X_co.
     pub l_md: f64,
-    /// q and d damper resistances [ohm] and leakage inductances [H]. Not given; 0.05 ohm, 1.5 mH.
+    /// q and d damper resistances \[ohm\] and leakage inductances \[H\]. Not given; 0.05 ohm, 1.5 mH.
     pub r_kq: f64,
     pub l_lkq: f64,
     pub r_kd: f64,
     pub l_lkd: f64,
-    /// Field resistance r_fd [ohm]: v_fd / i_fd of Table 4.1, 28.5 / 108.75 = 0.2621.
+    /// Field resistance r_fd \[ohm\]: v_fd / i_fd of Table 4.1, 28.5 / 108.75 = 0.2621.
     pub r_fd: f64,
-    /// Field leakage inductance [H]. Not given; 1.5 mH.
+    /// Field leakage inductance \[H\]. Not given; 1.5 mH.
     pub l_lfd: f64,
     /// Turns ratio n_s / n_fd applied to the field voltage input (eq. 4.41). Not given; 1 (the
     /// thesis' Table 4.1 quotes v_fd and i_fd in the same referral).
@@ -74,9 +74,9 @@ pub struct GeneratorSideParams {
     /// Turbine speed PI on torque (eq. 4.7) [N m per rad/s, N m per rad]. Not given; 20 and 100.
     pub kp_t: f64,
     pub ki_t: f64,
-    /// Commutating reactance X_co [ohm]: 0.323 (the thesis' estimate).
+    /// Commutating reactance X_co \[ohm\]: 0.323 (the thesis' estimate).
     pub x_co: f64,
-    /// Filter (see the module note): R1 [ohm], L1 [H], C1 [F], R2, L2, C2, auxiliary load R3.
+    /// Filter (see the module note): R1 \[ohm\], L1 \[H\], C1 \[F\], R2, L2, C2, auxiliary load R3.
     /// Not given, except R3: 8258 ohm carries the 0.09 A between i_dc and I in Table 4.1.
     pub r1: f64,
     pub l1: f64,
@@ -85,7 +85,7 @@ pub struct GeneratorSideParams {
     pub l2: f64,
     pub c2: f64,
     pub r3: f64,
-    /// Droop control (eq. 4.13): set point [V], K_p,v [V/V], K_i,v [V/(V s)], droop K_d [V/A].
+    /// Droop control (eq. 4.13): set point \[V\], K_p,v [V/V], K_i,v [V/(V s)], droop K_d [V/A].
     /// Not given; 750 V, 0.02, 2.0, 0.5.
     pub v_ref: f64,
     pub kp_v: f64,
@@ -140,10 +140,10 @@ pub struct GeneratorSteadyState {
     pub v_gs_mag: f64,
     pub i_gs_mag: f64,
     pub i_fd: f64,
-    /// Rectifier output voltage, the thesis' v~_dc (eqs. 4.8-4.10, Table 4.1) [V].
+    /// Rectifier output voltage, the thesis' v~_dc (eqs. 4.8-4.10, Table 4.1) \[V\].
     pub v_rect_v: f64,
     /// Bus voltage after the DC filter, the thesis' v_dc (eqs. 4.12-4.13: the droop's
-    /// measurement and the motor side's source) [V].
+    /// measurement and the motor side's source) \[V\].
     pub v_dc: f64,
     pub i_dc: f64,
     pub cos_phi: f64,
@@ -238,8 +238,8 @@ impl GeneratorSideParams {
         ]
     }
 
-    /// Steady state for speed set point `omega_star` [rad/s electrical], field voltage `v_fd` [V]
-    /// and sink current `i_load` [A] (ch. 4.2.1), by Newton's method with a line search on the
+    /// Steady state for speed set point `omega_star` [rad/s electrical], field voltage `v_fd` \[V\]
+    /// and sink current `i_load` \[A\] (ch. 4.2.1), by Newton's method with a line search on the
     /// three unknowns (i_qs, i_ds, i_dc).
     pub fn steady_state(&self, omega_star: f64, v_fd: f64, i_load: f64) -> Result<GeneratorSteadyState, String> {
         super::check_input("omega", "rad/s", omega_star, &OMEGA_RANGE_RAD_S)?;

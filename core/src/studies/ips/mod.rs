@@ -108,10 +108,10 @@ where
     serde_path_to_error::deserialize(v).map_err(|e| format!("{}: {}", e.path(), e.inner()))
 }
 
-/// The frequencies a Bode plot may span [Hz].
+/// The frequencies a Bode plot may span \[Hz\].
 pub const BODE_HZ_RANGE: RangeInclusive<f64> = 1e-6..=1e7;
 
-/// `n` logarithmically spaced Bode frequencies [Hz] from `from_hz` to `to_hz`, after checking
+/// `n` logarithmically spaced Bode frequencies \[Hz\] from `from_hz` to `to_hz`, after checking
 /// the range (both in [`BODE_HZ_RANGE`], from below to, 2 to [`MAX_BODE_POINTS`] points).
 pub fn bode_frequencies(from_hz: f64, to_hz: f64, points: usize) -> Result<Vec<f64>, String> {
     if !(BODE_HZ_RANGE.contains(&from_hz) && BODE_HZ_RANGE.contains(&to_hz) && to_hz > from_hz) {

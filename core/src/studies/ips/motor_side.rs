@@ -31,14 +31,14 @@ pub const TORQUE_RANGE_NM: RangeInclusive<f64> = 0.01..=10_000.0;
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct MotorSideParams {
-    /// Stator resistance r_s [ohm]. Reconstruction (reproduces Table 4.2's 411.91 V): 0.117.
+    /// Stator resistance r_s \[ohm\]. Reconstruction (reproduces Table 4.2's 411.91 V): 0.117.
     pub r_s: f64,
-    /// Rotor resistance r_r [ohm]. Reconstruction (slip-power identity): 0.0530.
+    /// Rotor resistance r_r \[ohm\]. Reconstruction (slip-power identity): 0.0530.
     pub r_r: f64,
-    /// Stator and rotor leakage inductances [H]. Reconstruction: 1.335 mH each.
+    /// Stator and rotor leakage inductances \[H\]. Reconstruction: 1.335 mH each.
     pub l_ls: f64,
     pub l_lr: f64,
-    /// Magnetizing inductance L_m [H]. Reconstruction: 30.46 mH.
+    /// Magnetizing inductance L_m \[H\]. Reconstruction: 30.46 mH.
     pub l_m: f64,
     /// Number of poles P_m [-]: 4 (ch. 4.1).
     pub poles: f64,
@@ -49,13 +49,13 @@ pub struct MotorSideParams {
     pub kq0: f64,
     /// Water density [kg/m^3].
     pub rho: f64,
-    /// Propeller diameter D [m]. Not given; 0.29324 so that T* = 100 N m is carried at
+    /// Propeller diameter D \[m\]. Not given; 0.29324 so that T* = 100 N m is carried at
     /// omega_r = 377 rad/s, as Table 4.2 reports (eq. 4.31).
     pub diameter: f64,
     /// Maximum rotor flux lambda_r,max [V s]. Not given; 1.261, which puts the torque threshold at
     /// 150 N m: the 100 N m point (rotor flux 1.03 V s) lies below it, the 200 N m point above.
     pub lambda_r_max: f64,
-    /// Torque-trim time constant tau [s] of eq. 4.21. Not given; 0.05.
+    /// Torque-trim time constant tau \[s\] of eq. 4.21. Not given; 0.05.
     pub trim_tau: f64,
     /// Factor on the machine's r_r, L_r, L_m used by the AMTPA estimates (the primes of
     /// eq. 4.22) [-]; 1 means the estimates are exact.
@@ -97,7 +97,7 @@ pub struct MotorSteadyState {
     pub i_s_mag: f64,
     pub i_r_mag: f64,
     pub v_s_mag: f64,
-    /// The currents i_qs, i_ds, i_qr, i_dr [A] and the stator q voltage [V].
+    /// The currents i_qs, i_ds, i_qr, i_dr \[A\] and the stator q voltage \[V\].
     pub currents: [f64; 4],
     pub v_qs: f64,
     /// Whether the flux limit is active (T** above the threshold).

@@ -127,9 +127,9 @@ pub struct GeneratorReport {
     pub v_gs_mag: f64,
     pub i_gs_mag: f64,
     pub i_fd: f64,
-    /// Rectifier output voltage, Table 4.1's v~_dc [V].
+    /// Rectifier output voltage, Table 4.1's v~_dc \[V\].
     pub v_rect_v: f64,
-    /// Bus voltage after the DC filter, the thesis' v_dc of eqs. 4.12-4.13 [V].
+    /// Bus voltage after the DC filter, the thesis' v_dc of eqs. 4.12-4.13 \[V\].
     pub v_dc: f64,
     pub i_dc: f64,
     pub cos_phi: f64,
@@ -161,7 +161,7 @@ pub enum SteadyReport {
     Motor(MotorReport),
 }
 
-/// A Bode plot: frequencies [Hz], magnitude [dB] and phase [deg] (principal value).
+/// A Bode plot: frequencies \[Hz\], magnitude \[dB\] and phase \[deg\] (principal value).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct BodeReport {
     pub frequency_hz: Vec<f64>,

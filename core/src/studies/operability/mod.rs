@@ -61,7 +61,7 @@ pub struct SeaSpec {
     pub name: String,
     pub h_sig_m: f64,
     pub omega_n_rad_s: f64,
-    /// Peak period 2 pi / omega_n [s].
+    /// Peak period 2 pi / omega_n \[s\].
     pub tp_s: f64,
 }
 
@@ -90,7 +90,7 @@ pub fn table_2_4(states: &[u32]) -> Result<Vec<SeaSpec>, String> {
 #[derive(Debug, Clone, PartialEq)]
 pub struct PolarSpec {
     pub speeds_kn: Vec<f64>,
-    /// Wave headings relative to the ship [deg]: 180 head seas, 90 waves from starboard, 0
+    /// Wave headings relative to the ship \[deg\]: 180 head seas, 90 waves from starboard, 0
     /// following seas.
     pub headings_deg: Vec<f64>,
     pub seas: Vec<SeaSpec>,
@@ -327,7 +327,7 @@ impl Judge {
     }
 
     /// Criterion i's value in seas of the shape whose moments at H_1/3 = 1 m are `unit`, at
-    /// H_1/3 = `h` [m] (infinite: a propeller in the air in calm water).
+    /// H_1/3 = `h` \[m\] (infinite: a propeller in the air in calm water).
     pub fn value(&self, i: usize, unit: &Moments, h: f64) -> f64 {
         let c = &self.criteria[i];
         let point = || self.point_of[i];
@@ -402,7 +402,7 @@ fn local_draft(sections: &[crate::ship::sections::Section], x: f64) -> f64 {
 pub struct Cell {
     pub speed_kn: f64,
     pub heading_deg: f64,
-    /// The highest H_1/3 along the list of seas in which every criterion holds [m]; null when
+    /// The highest H_1/3 along the list of seas in which every criterion holds \[m\]; null when
     /// none limits it in any sea of the list's shapes.
     pub limiting_hs_m: Option<f64>,
     /// The criterion that sets it (index into `criteria`).
@@ -414,7 +414,7 @@ pub struct Cell {
     pub seas_passed: usize,
     /// Per sea, each criterion's value (null: a propeller in the air in calm water).
     pub values: Vec<Vec<Option<f64>>>,
-    /// Per sea, each criterion's limiting H_1/3 at that sea's spectral shape [m] (null: never).
+    /// Per sea, each criterion's limiting H_1/3 at that sea's spectral shape \[m\] (null: never).
     pub limit_hs_m: Vec<Vec<Option<f64>>>,
 }
 
@@ -586,7 +586,7 @@ pub struct CriterionOut {
 pub struct ScatterOut {
     pub name: String,
     pub source: String,
-    /// [speed][heading] share of the diagram's occurrences in which every criterion holds.
+    /// \[speed\]\[heading\] share of the diagram's occurrences in which every criterion holds.
     pub share: Vec<Vec<f64>>,
     pub per_speed: Vec<f64>,
     /// Mean over speeds and headings.
@@ -606,7 +606,7 @@ pub struct Polar {
     pub speeds_kn: Vec<f64>,
     pub headings_deg: Vec<f64>,
     pub seas: Vec<SeaSpec>,
-    /// [speed][heading], speeds outer.
+    /// \[speed\]\[heading\], speeds outer.
     pub cells: Vec<Cell>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub scatter: Option<ScatterOut>,
@@ -690,7 +690,7 @@ pub fn scenario_moments(sc: &Scenario, speed_kn: f64, heading_deg: f64) -> Resul
     Ok(d.moments(&Sea { h_sig_m: h, omega_n: wn, band }))
 }
 
-/// Speed [kn] of `u` [m/s] (for the JSON).
+/// Speed \[kn\] of `u` [m/s] (for the JSON).
 pub fn m_s_to_kn(u: f64) -> f64 {
     u / KNOT_M_S
 }

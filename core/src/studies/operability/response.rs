@@ -44,11 +44,11 @@ pub fn point_lateral(p: usize) -> usize {
 }
 
 /// Where the responses are taken, in STF axes with the RAOs' origin, on the calm waterline above
-/// the centre of gravity: x forward, y to port, z up [m].
+/// the centre of gravity: x forward, y to port, z up \[m\].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Places {
     pub points: Vec<[f64; 3]>,
-    /// The forward perpendicular and the slamming station, on the centreline: x [m].
+    /// The forward perpendicular and the slamming station, on the centreline: x \[m\].
     pub fp_x: f64,
     pub slam_x: f64,
     pub hubs: [HubPlace; N_SHAFTS],
@@ -106,7 +106,7 @@ impl Places {
     }
 }
 
-/// A Bretschneider sea (eq. 2.58): significant height [m], modal frequency [rad/s] and the band
+/// A Bretschneider sea (eq. 2.58): significant height \[m\], modal frequency [rad/s] and the band
 /// summed [rad/s].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sea {
@@ -122,8 +122,8 @@ impl Sea {
     }
 }
 
-/// Directions of the spreading sum: offsets from the mean [rad] and normalised weights of cos^h
-/// on (-90, 90) deg, by the midpoint rule on `step` [rad] (the same offsets for every mean
+/// Directions of the spreading sum: offsets from the mean \[rad\] and normalised weights of cos^h
+/// on (-90, 90) deg, by the midpoint rule on `step` \[rad\] (the same offsets for every mean
 /// heading, so mean headings a whole number of steps apart share their transfer functions); one
 /// direction of weight 1 for a long-crested sea (h = 0).
 pub fn spreading(h: f64, step: f64) -> Vec<(f64, f64)> {
@@ -194,7 +194,7 @@ impl<'a> SpeedResponses<'a> {
     }
 
     /// Per node and channel the spread sum of |H|^2 |omega_e|^n for n = 0, 2, 4 about the mean
-    /// heading `beta` [rad] with `dirs` ([`spreading`]).
+    /// heading `beta` \[rad\] with `dirs` ([`spreading`]).
     pub fn directional(&mut self, beta: f64, dirs: &[(f64, f64)]) -> Directional {
         let nc = self.places.channels();
         let mut g = vec![[0.0; 3]; self.nodes.len() * nc];

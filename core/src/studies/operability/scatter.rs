@@ -12,7 +12,7 @@ use std::f64::consts::PI;
 /// The IACS Rec. 34 North Atlantic diagram, embedded.
 pub const NORTH_ATLANTIC_CSV: &str = include_str!("../../../data/iacs_rec34_north_atlantic.csv");
 
-/// Largest scatter file [bytes], most H_1/3 and T_z classes.
+/// Largest scatter file \[bytes\], most H_1/3 and T_z classes.
 pub const MAX_SCATTER_BYTES: usize = 256 << 10;
 pub const MAX_CLASSES: usize = 100;
 /// Largest occurrence of one class: a diagram counts observations (IACS Rec. 34's add up to
@@ -24,7 +24,7 @@ pub const MAX_OCCURRENCE: f64 = 1.0e12;
 pub struct Scatter {
     pub name: String,
     pub source: String,
-    /// H_1/3 class centres [m] (rows) and T_z class centres [s] (columns).
+    /// H_1/3 class centres \[m\] (rows) and T_z class centres \[s\] (columns).
     pub hs_m: Vec<f64>,
     pub tz_s: Vec<f64>,
     /// [row][column] occurrences.
@@ -45,7 +45,7 @@ impl Scatter {
     }
 
     /// Parses the layout of the embedded file: lines starting with # are comments (the first is
-    /// kept as the source); a header `Hs_m\Tz_s,T1,T2,...` of T_z class centres [s]; then one row
+    /// kept as the source); a header `Hs_m\Tz_s,T1,T2,...` of T_z class centres \[s\]; then one row
     /// per H_1/3 class, `Hs,count1,count2,...`. Errors name the line.
     pub fn parse(text: &str, name: &str) -> Result<Scatter, String> {
         if text.len() > MAX_SCATTER_BYTES {
