@@ -57,7 +57,7 @@ pub struct Section {
     pub beam: f64,
     /// Local draft: waterline minus the section's lowest wetted point \[m\].
     pub draft: f64,
-    /// Immersed area [m^2] and its centroid height above the baseline \[m\].
+    /// Immersed area \[m^2\] and its centroid height above the baseline \[m\].
     pub area: f64,
     pub centroid_z: f64,
 }
@@ -65,13 +65,13 @@ pub struct Section {
 /// Hydrostatics at a waterline (even keel).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Hydrostatics {
-    /// Displaced volume [m^3].
+    /// Displaced volume \[m^3\].
     pub volume: f64,
     /// Longitudinal centre of buoyancy [m from the aft perpendicular].
     pub lcb: f64,
     /// Centre of buoyancy above the baseline \[m\].
     pub kb: f64,
-    /// Waterplane area [m^2] and its transverse second moment over the volume, BM_T \[m\].
+    /// Waterplane area \[m^2\] and its transverse second moment over the volume, BM_T \[m\].
     pub awp: f64,
     pub bmt: f64,
     /// Second moment of the waterplane about its centroid, longitudinally, over the volume \[m\].

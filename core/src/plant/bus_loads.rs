@@ -28,14 +28,14 @@ pub use crate::plant::bus_part::Demand;
 use crate::plant::bus_part::{Account, Book, BusFlow, BusNode, BusPart, CheckInfo, Column};
 use crate::signals::Signal;
 
-/// The ship service filter's states in its block of each bus: inductor current i_L [A], capacitor
-/// voltage v_f [V].
+/// The ship service filter's states in its block of each bus: inductor current i_L \[A\], capacitor
+/// voltage v_f \[V\].
 pub const FILTER_CURRENT: usize = 0;
 pub const FILTER_VOLTAGE: usize = 1;
 
 /// Oscillation of the ship service filter above which it is unstable rather than following the
 /// bus: the largest recorded |v_bus - R_f i_L - v_f| (the inductor's voltage) over the run's
-/// second half [pu of the bus set point].
+/// second half \[pu of the bus set point\].
 pub const FILTER_OSCILLATION_PU: f64 = 0.02;
 
 /// Voltage below which the ship service converter's current stops rising [pu of the bus set
@@ -163,7 +163,7 @@ pub struct ShipService {
 /// The ship service filter's rates and flows at one instant.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct FilterFlow {
-    /// di_L/dt [A/s], dv_f/dt [V/s].
+    /// di_L/dt \[A/s\], dv_f/dt \[V/s\].
     pub di_l: f64,
     pub dv_f: f64,
     /// Current the converter draws from the filter capacitor \[A\].
@@ -221,7 +221,7 @@ impl ShipService {
         crate::numerics::bisect(margin, 0.0, hi, 200)
     }
 
-    /// The filter's resonance 1 / sqrt(L_f C_f) [rad/s].
+    /// The filter's resonance 1 / sqrt(L_f C_f) \[rad/s\].
     pub fn resonance_rad_s(&self) -> f64 {
         1.0 / libm::sqrt(self.l_h * self.c_f)
     }

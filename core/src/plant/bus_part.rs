@@ -5,7 +5,7 @@
 //! format, the checks and the page's form), its states on each bus with their names, its energy
 //! accounts with how the books count them, its start from the steady state, its derivatives and
 //! flows, and the energy it stores. It is registered by one line in `plant_section!`
-//! (`plant/mod.rs`), which adds its section to `plant` and its slot to [`BusParts`]. The state
+//! (`plant/mod.rs`), which adds its section to `plant` and its slot to `BusParts`. The state
 //! layout, the number of energy accounts, the run's active states and the stability map's states
 //! are then computed from the list (`plant::layout`), never counted by hand.
 //!
@@ -17,7 +17,7 @@ use crate::signals::Signal;
 /// Buses: one a shaft (the hull's count).
 pub const SHAFTS: usize = crate::geometry::N_SHAFTS;
 
-/// What the loads' profiles of one bus demand at one instant [W] (`plant::bus_loads`), held over
+/// What the loads' profiles of one bus demand at one instant \[W\] (`plant::bus_loads`), held over
 /// a step.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Demand {
@@ -49,13 +49,13 @@ pub struct Account {
 /// The bus node of one shaft at one instant, as the parts see it in their order.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BusNode {
-    /// Bus voltage [V].
+    /// Bus voltage \[V\].
     pub v: f64,
     /// What the loads' profiles demand now (held over the step).
     pub demand: Demand,
-    /// Net current the parts so far draw from the bus [A] (negative: give).
+    /// Net current the parts so far draw from the bus \[A\] (negative: give).
     pub i_draw: f64,
-    /// Power taken from the bus by the motor's inverter and the parts so far [W]: what a storage
+    /// Power taken from the bus by the motor's inverter and the parts so far \[W\]: what a storage
     /// registered after them levels.
     pub p_load: f64,
 }
@@ -80,7 +80,7 @@ pub trait BusPart: Sized {
     /// Its energy accounts (summed over the buses).
     const ACCOUNTS: &'static [Account];
 
-    /// The part of `p` on a bus held at `v_ref` [V]; None when the scenario has none of it.
+    /// The part of `p` on a bus held at `v_ref` \[V\]; None when the scenario has none of it.
     fn build(p: &Self::Params, v_ref: f64) -> Option<Self>;
     /// Whether the scenario has it (its states and accounts count in a run's work).
     fn present(p: &Self::Params) -> bool;
@@ -91,46 +91,46 @@ pub trait BusPart: Sized {
     fn linearized(p: &Self::Params) -> bool {
         Self::present(p)
     }
-    /// Power it takes from a bus held at `v_bus` [V] in the steady state at t = 0 [W], or why
+    /// Power it takes from a bus held at `v_bus` \[V\] in the steady state at t = 0 \[W\], or why
     /// there is none.
     fn steady_input_w(&self, _v_bus: f64) -> Result<f64, String> {
         Ok(0.0)
     }
-    /// Its states `x` of one bus at the steady state: the bus at `v_bus` [V] carrying `p_load` [W]
+    /// Its states `x` of one bus at the steady state: the bus at `v_bus` \[V\] carrying `p_load` \[W\]
     /// (the motor's and every part's steady input).
     fn start(&self, v_bus: f64, p_load: f64, x: &mut [f64]);
     /// Its derivatives `dx` at its states `x` of one bus: adds its current and power to the
     /// node, its energies to `e` (its accounts, in order) and writes what it shows to `flow`.
     fn derivatives(&self, x: &[f64], node: &mut BusNode, dx: &mut [f64], e: &mut [f64], flow: &mut BusFlow);
-    /// Adds the energy it stores in the states `x` of one bus to `e` [J].
+    /// Adds the energy it stores in the states `x` of one bus to `e` \[J\].
     fn add_stored_energy(&self, _x: &[f64], _e: &mut f64) {}
     /// Its health checks, each with its threshold and reason (`aes-sim health`).
     fn checks() -> Vec<CheckInfo> {
         Vec::new()
     }
     /// Its health checks on a finished run of a scenario with section `p`: `t` the recorded
-    /// times [s], `column` a recorded signal; each check that fails adds its sentence to `out`.
+    /// times \[s\], `column` a recorded signal; each check that fails adds its sentence to `out`.
     fn assess(_p: &Self::Params, _t: &[f64], _column: Column<'_>, _out: &mut Vec<String>) {}
 }
 
 /// What the parts of one bus do at one instant (the trace's signals read it).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct BusFlow {
-    /// Ship service converter's output [W] and the power its filter takes from the bus [W].
+    /// Ship service converter's output \[W\] and the power its filter takes from the bus \[W\].
     pub ship_service_w: f64,
     pub ship_service_in_w: f64,
-    /// Ship service filter capacitor voltage [V] (0 without one).
+    /// Ship service filter capacitor voltage \[V\] (0 without one).
     pub filter_voltage_v: f64,
-    /// Pulsed load [W].
+    /// Pulsed load \[W\].
     pub pulse_w: f64,
-    /// Storage power to the bus [W] (negative: charging), its state of charge [-] (0 without).
+    /// Storage power to the bus \[W\] (negative: charging), its state of charge \[-\] (0 without).
     pub storage_w: f64,
     pub soc: f64,
 }
 
 /// Declares the plant's section of the scenario and its bus parts, in order. Each bus part is
 /// one line `name: Type,` with its doc comment: the part's parameters become `plant.name`, and
-/// [`BusParts`] holds it. (The macro keeps the section's fixed subsystems around the parts in the
+/// [`BusParts`](crate::plant::BusParts) holds it. (The macro keeps the section's fixed subsystems around the parts in the
 /// order the format has always had.)
 #[macro_export]
 macro_rules! plant_section {
@@ -171,7 +171,7 @@ macro_rules! plant_section {
             pub const ACCOUNTS: &'static [&'static [$crate::plant::bus_part::Account]] =
                 &[$(<$pty as $crate::plant::bus_part::BusPart>::ACCOUNTS),*];
 
-            /// The parts of `p` on buses held at `v_ref` [V].
+            /// The parts of `p` on buses held at `v_ref` \[V\].
             pub fn new(p: &PlantParams, v_ref: f64) -> BusParts {
                 BusParts { $($p: $crate::plant::bus_part::BusPart::build(&p.$p, v_ref),)* }
             }
@@ -201,8 +201,8 @@ macro_rules! plant_section {
             /// Energy accounts, all parts.
             pub const N_ACCOUNTS: usize = 0 $(+ <$pty as $crate::plant::bus_part::BusPart>::ACCOUNTS.len())*;
 
-            /// The power the bus carries in the steady state at t = 0: `p` [W] (the motor's) and
-            /// each part's input in order, with the bus at `v_bus` [V].
+            /// The power the bus carries in the steady state at t = 0: `p` \[W\] (the motor's) and
+            /// each part's input in order, with the bus at `v_bus` \[V\].
             pub fn steady_load_w(&self, v_bus: f64, p: f64) -> Result<f64, String> {
                 let mut p = p;
                 $(if let Some(x) = &self.$p {
@@ -274,7 +274,7 @@ macro_rules! plant_section {
                 $(<$pty as $crate::plant::bus_part::BusPart>::assess(&p.$p, t, column, out);)*
             }
 
-            /// Adds the energy every part stores on every bus to `e` [J], part by part.
+            /// Adds the energy every part stores on every bus to `e` \[J\], part by part.
             pub fn add_stored_energy(&self, x: &[f64], e: &mut f64) {
                 let mut _at = 0;
                 $(

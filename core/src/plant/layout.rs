@@ -19,21 +19,21 @@ const _: () = assert!(N_SETS == crate::plant::online::SETS);
 /// are one line there, and every slot follows from it (no offset is computed by hand).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Block {
-    /// Turbine shaft speed of each set [rad/s].
+    /// Turbine shaft speed of each set \[rad/s\].
     TurbineSpeed,
-    /// Field current of each set [A].
+    /// Field current of each set \[A\].
     FieldCurrent,
-    /// Bus voltage of each shaft [V].
+    /// Bus voltage of each shaft \[V\].
     BusVoltage,
-    /// Propeller shaft speed of each shaft [rad/s].
+    /// Propeller shaft speed of each shaft \[rad/s\].
     ShaftSpeed,
     /// The bus parts' states ([`BusParts`]): part by part in their order, each part's block bus by
     /// bus ([`part_slot`]).
     BusParts,
-    /// The hull: surge u, sway v [m/s], yaw rate r [rad/s], north x, east y [m], heading psi [rad]
+    /// The hull: surge u, sway v \[m/s\], yaw rate r \[rad/s\], north x, east y \[m\], heading psi \[rad\]
     /// ([`SURGE`] to [`HEADING`]).
     Hull,
-    /// The energy accumulators [J] ([`Energy`]).
+    /// The energy accumulators \[J\] ([`Energy`]).
     Energy,
 }
 
@@ -78,24 +78,24 @@ pub const NX: usize = {
     n
 };
 
-/// The slots of the drive train's states, by machine: `x[slot::bus_voltage(s)]` is a voltage,
+/// The slots of the drive train's states, by machine: `x\[slot::bus_voltage(s)\]` is a voltage,
 /// `slot::bus_voltage(s)` an index.
 pub mod slot {
     use super::{slots, Block};
 
-    /// Turbine shaft speed of set k [rad/s].
+    /// Turbine shaft speed of set k \[rad/s\].
     pub const fn turbine_speed(k: usize) -> usize {
         slots(Block::TurbineSpeed).start + k
     }
-    /// Field current of set k [A].
+    /// Field current of set k \[A\].
     pub const fn field_current(k: usize) -> usize {
         slots(Block::FieldCurrent).start + k
     }
-    /// Bus voltage of shaft s [V].
+    /// Bus voltage of shaft s \[V\].
     pub const fn bus_voltage(s: usize) -> usize {
         slots(Block::BusVoltage).start + s
     }
-    /// Propeller shaft speed of shaft s [rad/s].
+    /// Propeller shaft speed of shaft s \[rad/s\].
     pub const fn shaft_speed(s: usize) -> usize {
         slots(Block::ShaftSpeed).start + s
     }
@@ -162,19 +162,19 @@ const fn str_eq(a: &str, b: &str) -> bool {
     true
 }
 
-/// Ship surge speed u [m/s].
+/// Ship surge speed u \[m/s\].
 pub const SURGE: usize = slots(Block::Hull).start;
-/// Sway speed v [m/s].
+/// Sway speed v \[m/s\].
 pub const SWAY: usize = SURGE + 1;
-/// Yaw rate r [rad/s].
+/// Yaw rate r \[rad/s\].
 pub const YAW_RATE: usize = SURGE + 2;
-/// North position x [m].
+/// North position x \[m\].
 pub const X_POS: usize = SURGE + 3;
-/// East position y [m].
+/// East position y \[m\].
 pub const Y_POS: usize = SURGE + 4;
-/// Heading psi [rad], not wrapped.
+/// Heading psi \[rad\], not wrapped.
 pub const HEADING: usize = SURGE + 5;
-/// First energy accumulator [J]; see [`Energy`].
+/// First energy accumulator \[J\]; see [`Energy`].
 pub const ENERGY0: usize = slots(Block::Energy).start;
 /// The energy accumulators' slots.
 pub const ENERGY: std::ops::Range<usize> = slots(Block::Energy);

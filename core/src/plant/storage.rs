@@ -35,13 +35,13 @@ use crate::plant::bus_part::{Account, Book, BusFlow, BusNode, BusPart, CheckInfo
 use crate::signals::Signal;
 use serde::{Deserialize, Serialize};
 
-/// The storage's states in its block of each bus: stored energy E [J], converter bus-side
-/// current i_b [A], the low-passed bus load P_lp [W].
+/// The storage's states in its block of each bus: stored energy E \[J\], converter bus-side
+/// current i_b \[A\], the low-passed bus load P_lp \[W\].
 pub const ENERGY: usize = 0;
 pub const CURRENT: usize = 1;
 pub const LOWPASS: usize = 2;
 
-/// Width of the taper at each state-of-charge limit [fraction of the capacity]: the controller's
+/// Width of the taper at each state-of-charge limit \[fraction of the capacity\]: the controller's
 /// power goes linearly to zero over it, so that the limits are not crossed by a jump.
 pub const SOC_TAPER: f64 = 0.02;
 
@@ -210,9 +210,9 @@ pub struct Storage {
     pub e_max: f64,
     pub e_set: f64,
     pub tau_i: f64,
-    /// Droop gain [W/V]: P_rated / (d v_ref).
+    /// Droop gain \[W/V\]: P_rated / (d v_ref).
     pub droop_w_per_v: f64,
-    /// Low-pass rate 2 pi f_c [1/s].
+    /// Low-pass rate 2 pi f_c \[1/s\].
     pub corner_rad_s: f64,
     pub soc_return_s: f64,
     /// Bus voltage set point \[V\].
@@ -222,7 +222,7 @@ pub struct Storage {
 /// What the storage does at one instant.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct StorageFlow {
-    /// dE/dt \[W\], di_b/dt [A/s], dP_lp/dt [W/s].
+    /// dE/dt \[W\], di_b/dt \[A/s\], dP_lp/dt \[W/s\].
     pub de: f64,
     pub di_b: f64,
     pub dp_lp: f64,
@@ -282,7 +282,7 @@ impl Storage {
         self.reference_parts_w(v_bus, p_load, p_lp, e).1
     }
 
-    /// The reference before and after its limits [W].
+    /// The reference before and after its limits \[W\].
     fn reference_parts_w(&self, v_bus: f64, p_load: f64, p_lp: f64, e: f64) -> (f64, f64) {
         let raw = (p_load - p_lp) + self.droop_w_per_v * (self.v_ref - v_bus) + (e - self.e_set) / self.soc_return_s;
         let p = raw.clamp(-self.power_w, self.power_w);

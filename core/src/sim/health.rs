@@ -20,14 +20,14 @@ pub const TURBINE_MIN_RUNNING_FOR_S: f64 = 5.0;
 /// Turbine overspeed [pu of the governor set point]: an LM2500's overspeed protection trips near
 /// 1.1 (the same figure as `sim::limits`' note); any recorded row above it warns.
 pub const TURBINE_OVERSPEED_PU: f64 = 1.1;
-/// Lower edge of the bus voltage's allowed band [pu of the set point].
+/// Lower edge of the bus voltage's allowed band \[pu of the set point\].
 pub const BUS_LOW_PU: f64 = 0.9;
 /// How long the bus may stay outside its band before a warning \[s\].
 pub const BUS_OUTSIDE_FOR_S: f64 = 5.0;
 /// How long a motor may stay at its slip limit (rated power or peak torque) before a warning \[s\].
 pub const MOTOR_AT_LIMIT_FOR_S: f64 = 30.0;
 /// Share of the run a propeller's disc may break the surface (h/R below
-/// [`DISK_AT_SURFACE_H_OVER_R`]) before a warning [-].
+/// [`DISK_AT_SURFACE_H_OVER_R`]) before a warning \[-\].
 pub const PROPELLER_EMERGED_SHARE: f64 = 0.5;
 pub use crate::plant::bus_loads::FILTER_OSCILLATION_PU;
 
@@ -38,7 +38,7 @@ pub const SPEED_HELD_OVER_S: f64 = 60.0;
 pub const SPEED_HELD_KN: f64 = 2.0;
 pub const SPEED_HELD_SHARE: f64 = 0.2;
 
-/// The upper edge of the bus voltage's allowed band [pu of the set point]: the top of the brake
+/// The upper edge of the bus voltage's allowed band \[pu of the set point\]: the top of the brake
 /// chopper's band (`plant.dc_link.brake_on_pu` + `brake_band_pu`).
 pub fn bus_high_pu(sc: &Scenario) -> f64 {
     sc.plant.dc_link.brake_on_pu + sc.plant.dc_link.brake_band_pu
@@ -190,7 +190,7 @@ pub const SET_FALLING_PU: f64 = 0.97;
 /// How long an online set may stay overloaded before a warning \[s\].
 pub const SET_OVERLOADED_FOR_S: f64 = 10.0;
 
-/// Whether a set giving shaft power `p_w` \[W\] at turbine speed `w` [rad/s] is overloaded: above
+/// Whether a set giving shaft power `p_w` \[W\] at turbine speed `w` \[rad/s\] is overloaded: above
 /// its rating, or at full throttle with its speed falling below [`SET_FALLING_PU`].
 pub fn set_overloaded(p_w: f64, w: f64, plant: &super::plant::Plant) -> bool {
     let t = &plant.turbine;

@@ -21,15 +21,15 @@ pub(crate) struct Controllers {
     /// run throttles and field voltages instead of `governor` and `field`.
     pub(crate) lqg: Option<(lqg::LqgDesign, Vec<lqg::LqgSet>)>,
     pub(crate) slip: [SlipController; N_SHAFTS],
-    /// Last peak-torque slip of each motor (warm start of the inline solver) [rad/s].
+    /// Last peak-torque slip of each motor (warm start of the inline solver) \[rad/s\].
     pub(crate) peak_slip: [f64; N_SHAFTS],
     /// Ship speed loop (calm-water map, PI trim, ramp-limited shaft reference).
     pub(crate) speed: SpeedController,
     /// Whether the slip may go negative (AC braking).
     pub(crate) allow_braking: bool,
-    /// Last peak braking slip (warm start) [rad/s].
+    /// Last peak braking slip (warm start) \[rad/s\].
     pub(crate) peak_brake_slip: [f64; N_SHAFTS],
-    /// Heading: reference [rad] moving to the target at `heading_rate` [rad/s] (0: a step).
+    /// Heading: reference \[rad\] moving to the target at `heading_rate` \[rad/s\] (0: a step).
     pub(crate) psi_ref: f64,
     pub(crate) psi_target: f64,
     pub(crate) heading_rate: f64,
@@ -40,7 +40,7 @@ pub(crate) struct Controllers {
 }
 
 impl Controllers {
-    /// Ship speed: calm-water map plus PI trim, then the ramp-limited shaft reference [rad/s].
+    /// Ship speed: calm-water map plus PI trim, then the ramp-limited shaft reference \[rad/s\].
     /// Signed by the surge: a ship the waves carry astern is slower than any order ahead, and
     /// the loop drives ahead against it (with |U| it read as too fast and stopped the shafts).
     pub(crate) fn speed_loop(&mut self, x: &State, speed_cmd: f64, ts: f64) -> f64 {
@@ -83,7 +83,7 @@ impl Controllers {
         }
     }
 
-    /// Each motor's slip toward the shaft reference `shaft_ref` [rad/s], within its torque,
+    /// Each motor's slip toward the shaft reference `shaft_ref` \[rad/s\], within its torque,
     /// power and (braking) limits.
     pub(crate) fn slip_loops(&mut self, p: &Plant, x: &State, shaft_ref: f64, t_now: f64, ts: f64) {
         let c = self;
@@ -117,8 +117,8 @@ impl Controllers {
         }
     }
 
-    /// Heading: the reference ramps to the target at most at `max_turn_rate` [rad/s]; the
-    /// autopilot steers the rudder. Returns the heading error [rad] when the rudder is hard over.
+    /// Heading: the reference ramps to the target at most at `max_turn_rate` \[rad/s\]; the
+    /// autopilot steers the rudder. Returns the heading error \[rad\] when the rudder is hard over.
     pub(crate) fn heading_loop(&mut self, x: &State, max_turn_rate: f64, ts: f64) -> Option<f64> {
         let c = self;
         let gap = c.psi_target - c.psi_ref;

@@ -125,9 +125,9 @@ pub mod limits {
     pub const BUS_VOLTAGE_PU: (f64, f64) = (-0.1, 3.0);
     /// Shaft speed, multiple of the speed controller's largest reference.
     pub const SHAFT_SPEED_OF_MAX_REF: f64 = 3.0;
-    /// Ship speed [m/s]: 40 m/s is 78 knots, twice a destroyer's top speed.
+    /// Ship speed \[m/s\]: 40 m/s is 78 knots, twice a destroyer's top speed.
     pub const SURGE_M_S: f64 = 40.0;
-    /// Sway speed [m/s] and yaw rate [rad/s]: 20 m/s sideways or 29 deg/s of turn are beyond any
+    /// Sway speed \[m/s\] and yaw rate \[rad/s\]: 20 m/s sideways or 29 deg/s of turn are beyond any
     /// ship of this size.
     pub const SWAY_M_S: f64 = 20.0;
     pub const YAW_RATE_RAD_S: f64 = 0.5;
@@ -150,7 +150,7 @@ pub struct Simulation {
     stored0: f64,
     trace: Trace,
     warnings: Vec<String>,
-    /// Largest heading reference error seen with the rudder hard over [rad].
+    /// Largest heading reference error seen with the rudder hard over \[rad\].
     max_heading_lag: f64,
     /// The seaway (None in calm water), the propellers' ventilation states and the loss model.
     sea: Option<seaway::Seaway>,
@@ -158,13 +158,13 @@ pub struct Simulation {
     losses: LossParams,
     /// Each propeller's last (beta_T, beta_Q).
     last_beta: [(f64, f64); N_SHAFTS],
-    /// Calm-water hub depth [m] (the hull's) and each shaft's hub depth over the propeller
-    /// radius at the current step's midpoint, the loss model's input [-].
+    /// Calm-water hub depth \[m\] (the hull's) and each shaft's hub depth over the propeller
+    /// radius at the current step's midpoint, the loss model's input \[-\].
     hub0: f64,
     h_over_r: [f64; N_SHAFTS],
     fuel_curve: Vec<(f64, f64)>,
     fuel_extrapolated: bool,
-    /// Time of the first surface effect (beta_T < 1 on either shaft) [s].
+    /// Time of the first surface effect (beta_T < 1 on either shaft) \[s\].
     first_event: Option<f64>,
     /// Multi-rate stepping (`stepping.hull_substeps` > 1).
     multi: MultiRate,
@@ -178,10 +178,10 @@ struct MultiRate {
     substeps: u64,
     /// First drive-train step of the present hull step.
     start: u64,
-    /// The thrust account before the hull step [J] (its slot integrates the thrust [N s] over
+    /// The thrust account before the hull step \[J\] (its slot integrates the thrust \[N s\] over
     /// the drive-train steps).
     thrust_work: f64,
-    /// The propellers' inflow over the hull step [m/s].
+    /// The propellers' inflow over the hull step \[m/s\].
     va: f64,
     /// The hull's mean rate over its last step (surge, sway, yaw rate, x, y, heading), which
     /// carries the hull forward for the controllers and the seaway between its steps.
@@ -217,12 +217,12 @@ impl MultiRate {
 /// the seaway's refresh): the time step and, in steps, how often each loop samples.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Clock {
-    /// Time step [s] and the fixed-step method (`stepping.dt_s`, `stepping.integrator`).
+    /// Time step \[s\] and the fixed-step method (`stepping.dt_s`, `stepping.integrator`).
     dt: f64,
     method: crate::numerics::Integrator,
     /// Steps of the whole run.
     total_steps: u64,
-    /// The controllers' sample in steps, and its length [s].
+    /// The controllers' sample in steps, and its length \[s\].
     ctl_every: u64,
     ts: f64,
     /// The recorded rows, the sea's samples and the RAO refresh, in steps.
@@ -473,7 +473,7 @@ impl Simulation {
         h.tied = tied;
     }
 
-    /// Fastest turn the autopilot orders at the present speed [rad/s].
+    /// Fastest turn the autopilot orders at the present speed \[rad/s\].
     fn max_turn_rate(&self) -> f64 {
         self.max_turn_rate_at(&self.x)
     }
@@ -762,7 +762,7 @@ impl Simulation {
 
     /// The state vector now (for tests and analysis). With `stepping.hull_substeps` > 1 between hull
     /// steps the hull's states are those of its last step and the thrust account's slot holds
-    /// the thrust's impulse since then [N s].
+    /// the thrust's impulse since then \[N s\].
     pub fn state(&self) -> &State {
         &self.x
     }
@@ -886,7 +886,7 @@ pub fn run(scenario: &Scenario) -> Result<RunResult, SimError> {
     Ok(sim.finish())
 }
 
-/// Speed through the water sqrt(u^2 + v^2) [m/s]; written out (not `hypot`, which calls the
+/// Speed through the water sqrt(u^2 + v^2) \[m/s\]; written out (not `hypot`, which calls the
 /// platform's libm) so native and wasm runs agree to the bit.
 pub(crate) fn speed_through_water(x: &State) -> f64 {
     (x[SURGE] * x[SURGE] + x[SWAY] * x[SWAY]).sqrt()

@@ -33,7 +33,7 @@ pub struct Held {
     pub throttle: [f64; N_SETS],
     /// Field voltage of each generator \[V\].
     pub field_voltage: [f64; N_SETS],
-    /// Slip speed of each motor [rad/s electrical].
+    /// Slip speed of each motor \[rad/s electrical\].
     pub slip: [f64; N_SHAFTS],
     /// Rudder angle \[rad\].
     pub rudder: f64,
@@ -51,13 +51,13 @@ pub struct Held {
 /// The sea's inputs to the plant over one time step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SeaInputs {
-    /// Surface losses of each propeller, beta_T and beta_Q (ch. 2.3) [-].
+    /// Surface losses of each propeller, beta_T and beta_Q (ch. 2.3) \[-\].
     pub beta_t: [f64; N_SHAFTS],
     pub beta_q: [f64; N_SHAFTS],
     /// Slowly varying second-order wave force, ship axes: forward and to starboard \[N\] (eq. 2.60).
     pub wave_fx: f64,
     pub wave_fy: f64,
-    /// Slowly varying second-order yaw moment, bow to starboard [N m] (M_add, eq. 2.24).
+    /// Slowly varying second-order yaw moment, bow to starboard \[N m\] (M_add, eq. 2.24).
     pub wave_mz: f64,
 }
 
@@ -103,7 +103,7 @@ pub struct Outputs {
     pub resistance: f64,
     /// Brake resistor power of each bus \[W\].
     pub brake_power: [f64; N_SHAFTS],
-    /// Advance speed V_a at the propellers, before the wake fraction [m/s] (eq. 2.26).
+    /// Advance speed V_a at the propellers, before the wake fraction \[m/s\] (eq. 2.26).
     pub inflow_speed: f64,
     /// The bus's other loads and storage, each bus.
     pub bus: [BusFlow; N_SHAFTS],
@@ -115,11 +115,11 @@ pub struct Outputs {
 pub enum HullModel {
     /// Eqs. 2.15-2.16.
     Surge,
-    /// Eqs. 2.17-2.30, handing over to the surge model in surge between `lo` and `hi` [m/s].
+    /// Eqs. 2.17-2.30, handing over to the surge model in surge between `lo` and `hi` \[m/s\].
     /// The rudder stands `x_p` \[m\] aft of the centre of gravity (the hull's, `ship.hull`).
     /// Straight-line resistance: eq. 2.15's at every speed, with Table 2.3's sway and yaw terms
     /// on top; with `eq_2_22_straight` (the thesis' ship, `as_printed.table_5_ship`) eq. 2.22's
-    /// own polynomial X_0 + X_u du + ..., handed over from eq. 2.15 between `lo` and `hi` [m/s].
+    /// own polynomial X_0 + X_u du + ..., handed over from eq. 2.15 between `lo` and `hi` \[m/s\].
     Maneuvering { abkowitz: Box<Abkowitz>, rudder: RudderParams, x_p: f64, eq_2_22_straight: bool, lo: f64, hi: f64 },
     /// The hull's own model (ship/sectional.rs): from rest to full speed, its rudders in the
     /// propellers' slipstream; straight-line resistance eq. 2.15's. The propellers' inflow is
@@ -146,7 +146,7 @@ pub struct Plant {
     pub four_quadrant: Option<FourQuadrant>,
     pub surge: Surge,
     pub hull_model: HullModel,
-    /// Surge mass used by the equations of motion [kg].
+    /// Surge mass used by the equations of motion \[kg\].
     pub surge_mass: f64,
     /// The ship's length L of the maneuvering prime system \[m\].
     pub hull_length: f64,
@@ -255,7 +255,7 @@ impl Plant {
         Ok(self)
     }
 
-    /// Propeller thrust and torque at shaft speed `omega` [rad/s] with inflow speed `va` [m/s] at the
+    /// Propeller thrust and torque at shaft speed `omega` \[rad/s\] with inflow speed `va` \[m/s\] at the
     /// stern (eq. 2.12 with V_a for u: the advance speed is va (1 - w)).
     pub fn propeller_load(&self, omega: f64, va: f64) -> PropellerLoad {
         self.propeller_load_in_waves(omega, va, 1.0, 1.0)
@@ -291,7 +291,7 @@ impl Plant {
             }
     }
 
-    /// Shaft speed [rad/s] at which the propellers carry the straight-line resistance at `u` [m/s]
+    /// Shaft speed \[rad/s\] at which the propellers carry the straight-line resistance at `u` \[m/s\]
     /// (bisection: thrust rises monotonically with shaft speed at fixed ship speed).
     pub fn equilibrium_shaft_speed(&self, u: f64) -> f64 {
         let need = self.straight_resistance(u);
@@ -369,9 +369,9 @@ impl Plant {
     }
 
     /// The drive train's derivatives (turbines, fields, buses, shafts) with the propellers'
-    /// inflow `va` [m/s]; books every drive-train energy, the thrust's as thrust times `u_book`
+    /// inflow `va` \[m/s\]; books every drive-train energy, the thrust's as thrust times `u_book`
     /// (the ship speed; 1 gives the thrust itself, the multi-rate step's impulse). Returns the
-    /// total thrust [N].
+    /// total thrust \[N\].
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn drive(
@@ -473,8 +473,8 @@ impl Plant {
     }
 
     /// The other parts of bus `s` at bus voltage `v_c` with the motor's inverter taking `p_inv`
-    /// [W], in their order at the node: writes their derivatives, books their energies and
-    /// returns the net current they draw from the bus [A].
+    /// \[W\], in their order at the node: writes their derivatives, books their energies and
+    /// returns the net current they draw from the bus \[A\].
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn bus_parts(
@@ -499,7 +499,7 @@ impl Plant {
     }
 
     /// The hull's derivatives (surge, sway, yaw, position, heading) under the total thrust
-    /// `thrust` [N]; books the work against the resistance. Returns the resistance in surge [N].
+    /// `thrust` \[N\]; books the work against the resistance. Returns the resistance in surge \[N\].
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn hull_part(
@@ -571,7 +571,7 @@ impl Plant {
     }
 
     /// The multi-rate step's fast part: the drive train's derivatives with the hull held (its
-    /// derivatives 0) and the propellers' inflow `va` [m/s] fixed over the slow step; the thrust
+    /// derivatives 0) and the propellers' inflow `va` \[m/s\] fixed over the slow step; the thrust
     /// slot integrates the thrust itself \[N\] (its impulse over the step), the ship's is 0.
     pub fn drive_derivatives(&self, x: &State, h: &Held, va: f64, dx: &mut State) {
         let mut e = [0.0; N_ENERGY];
@@ -593,7 +593,7 @@ impl Plant {
         dx[ENERGY].copy_from_slice(&e);
     }
 
-    /// Kinetic and electric energy stored in the state [J]: turbine rotors, bus capacitors,
+    /// Kinetic and electric energy stored in the state \[J\]: turbine rotors, bus capacitors,
     /// propeller shafts, the bus parts and the ship (with its added mass).
     pub fn stored_energy(&self, x: &State) -> f64 {
         let mut e = 0.0;
@@ -631,7 +631,7 @@ pub fn plant_step(plant: &Plant, x: &mut State, h: &Held, dt: f64, method: Integ
 }
 
 /// The multi-rate step's fast part: one step of `dt` \[s\] of the drive train with the hull held
-/// and the propellers' inflow `va` [m/s] fixed (see [`Plant::drive_derivatives`]).
+/// and the propellers' inflow `va` \[m/s\] fixed (see [`Plant::drive_derivatives`]).
 pub fn drive_step(plant: &Plant, x: &mut State, h: &Held, va: f64, dt: f64, method: Integrator) {
     method.step(x, 0.0, dt, |_, y, dx| plant.drive_derivatives(y, h, va, dx));
 }
@@ -644,7 +644,7 @@ pub fn hull_step(plant: &Plant, x: &mut State, h: &Held, thrust: f64, dt: f64, m
     method.step(x, 0.0, dt, |_, y, dx| plant.hull_derivatives(y, h, thrust, heading, dx));
 }
 
-/// sin and cos of `psi` [rad]; with `near` = (psi0, sin psi0, cos psi0) and |psi - psi0| below
+/// sin and cos of `psi` \[rad\]; with `near` = (psi0, sin psi0, cos psi0) and |psi - psi0| below
 /// 0.01 rad by the rotation e^{i d} = 1 - d^2/2 + d^4/24 - d^6/720 + i (d - d^3/6 + d^5/120 -
 /// d^7/5040) (truncation below 3e-21), otherwise by libm.
 fn heading_sin_cos(psi: f64, near: Option<(f64, f64, f64)>) -> (f64, f64) {
