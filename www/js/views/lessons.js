@@ -4,7 +4,7 @@
 // Back and Forward move the controls and bring their run back, inside the lesson.
 import { DEFAULT_PRESET } from '../config.js';
 import { $ } from '../dom.js';
-import { setPhase, isBusy, getResult, status } from '../state.js';
+import { setPhase, isBusy, getResult, status, announce } from '../state.js';
 import { linkHash } from '../link.js';
 import { setPath } from '../form.js';
 import { REQUEST } from '../protocol.js';
@@ -146,10 +146,9 @@ async function lessonRun(ctx, settled = true) {
   if (res && res.columns && ctx.lesson) {
     res.preview = !settled;
     if (settled) {
-      window.__lessonLatencyMs = performance.now() - asked; // for the browser test: release to plot
-      window.__lessonRuns = (window.__lessonRuns || 0) + 1; // for the browser test: a rerun has landed
+      announce('lessonRun', { latencyMs: performance.now() - asked }); // release to plot
       explainShown(ctx);
-    } else window.__lessonPreviews = (window.__lessonPreviews || 0) + 1;
+    } else announce('lessonPreview', null);
   }
   if ($('lesson-lab')) $('lesson-lab').href = labHref(ctx.form);
   if (pending) { const p = pending; pending = null; lessonRun(ctx, p.settled); }
@@ -198,9 +197,6 @@ registerView({
         if (r && r.lesson && ctx.restoreResult()) explainShown(ctx); else if (!isBusy()) lessonRun(ctx, true);
       },
     });
-    // For the browser test: the scenario a lesson runs, as text, and the words of the shown run.
-    window.__scenarioText = () => JSON.stringify(form.current());
-    window.__lessonWords = () => { const r = getResult(); return r && r.lesson ? r.lesson.sentences.map(([s]) => s).join(' ') : null; };
   },
   // first: the page's start, with the form's study not chosen yet.
   route(ctx, hash, first) {
