@@ -1,7 +1,8 @@
 // The page's core: starts the simulator's worker, keeps one state for the form, the address bar and
 // the drawn results (Back and Forward), runs the form's values, and switches the tabs. Every tab,
 // fold and result view registers itself (views.js) in its module under views/, imported below in
-// the order its hooks run; main.js calls the hooks.
+// the order its hooks run; main.js calls the hooks. The views read the page's state from `ctx` and
+// change it only through its functions (setMode, keep, setLesson, run, ...).
 import { DEFAULT_PRESET, STUDIES, DEFAULT_PLOTS, studyTitle } from './config.js';
 import { $ } from './dom.js';
 import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
@@ -43,6 +44,8 @@ let signals = null;
 // belongs to (drawn.js).
 let mode = 'run';
 const drawn = new Drawn();
+let kept = null; // a kept run drawn muted under the next: {name, columns, summary}
+let lesson = null; // {def, defaults} while a lesson is open
 const stateKey = (m = mode) => `${m}|${form.name}|${JSON.stringify(form.scenario)}`;
 // The button that shows the form's values in this mode.
 const press = () => (modeView(mode) ? modeView(mode).button : 'Run');
@@ -348,9 +351,12 @@ const ctx = {
   get form() { return form; },
   get signals() { return signals; },
   get mode() { return mode; },
-  set mode(m) { mode = m; },
-  kept: null, // a kept run: {name, columns, summary}
-  lesson: null, // {def, scenario0} while a lesson is open (scenario0: the study with its settings)
+  get kept() { return kept; },
+  get lesson() { return lesson; },
+  // The views change the page's state through these, never by writing it.
+  setMode: (m) => { mode = m; },
+  keep: (run) => { kept = run; },
+  setLesson: (l) => { lesson = l; },
   plots, live, validate, studyInputs, stateKey, hereHash, follow, settle, remember: (...a) => drawn.remember(...a), showStale, clearResults, failed, run, onEdit, selectStudy, selectTab, cancel,
   forgetChecks: () => { validating++; }, // a check still on its way is of values left behind
   // The result of the form's values drawn again, if the page still has it (Back within a lesson).

@@ -54,8 +54,8 @@ async function openLesson(ctx, parsed) {
   pending = null;
   ctx.forgetChecks();
   if (parsed.index) {
-    ctx.lesson = null;
-    ctx.kept = null;
+    ctx.setLesson(null);
+    ctx.keep(null);
     document.body.classList.remove('lesson-waiting', 'lesson-answered');
     document.body.dataset.lessonView = '';
     lessons.showIndex(parsed.unknown);
@@ -70,13 +70,13 @@ async function openLesson(ctx, parsed) {
   } catch (e) { status(e.message, true); return; }
   if (mine !== opening) return;
   const same = ctx.lesson && ctx.lesson.def.name === def.name && lessons.def === def;
-  ctx.lesson = { def, defaults: o.defaults };
+  ctx.setLesson({ def, defaults: o.defaults });
   form.select(def.preset, JSON.parse(o.scenario));
-  ctx.mode = 'run';
+  ctx.setMode('run');
   document.body.dataset.lessonView = def.view;
   if (same) lessons.setValues(o.values);
   else {
-    ctx.kept = null;
+    ctx.keep(null);
     ctx.clearResults();
     lessons.open(def, o, labHref(form), answered.has(def.name));
   }
@@ -97,8 +97,8 @@ async function openLesson(ctx, parsed) {
 }
 
 function leaveLesson(ctx) {
-  ctx.lesson = null;
-  ctx.kept = null;
+  ctx.setLesson(null);
+  ctx.keep(null);
   document.body.classList.remove('lesson', 'lesson-waiting', 'lesson-answered');
   $('lessons-link').removeAttribute('aria-current');
   ctx.selectTab('tab-sim', false, false);
@@ -134,7 +134,7 @@ async function lessonRun(ctx, settled = true) {
   if (!ctx.lesson) return;
   if (isBusy()) { pending = { settled: settled || (pending && pending.settled) }; return; }
   const r = getResult();
-  if (settled || !ctx.kept) ctx.kept = r && r.columns && !r.preview ? { name: 'the run before', columns: r.columns, summary: r.summary } : ctx.kept;
+  if (settled || !ctx.kept) ctx.keep(r && r.columns && !r.preview ? { name: 'the run before', columns: r.columns, summary: r.summary } : ctx.kept);
   const asked = settledAt || performance.now();
   if (settled) settledAt = 0;
   const { def } = ctx.lesson;
