@@ -28,11 +28,20 @@ export function checker() {
   return { check, counts, finish };
 }
 
-export function launch() {
-  return chromium.launch({
+// The browser; every page of its contexts loads the page's test hooks (www/js/testhooks.js: the
+// window.__* names the tests read), asked for by a flag set before the page's scripts run.
+export async function launch() {
+  const browser = await chromium.launch({
     executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
   });
+  const newContext = browser.newContext.bind(browser);
+  browser.newContext = async (options) => {
+    const c = await newContext(options);
+    await c.addInitScript(() => { globalThis.aesTestHooks = true; });
+    return c;
+  };
+  return browser;
 }
 
 // A page of `ctx` at `url`, once the simulator is ready (Run enabled); console errors and

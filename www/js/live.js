@@ -15,6 +15,8 @@ import { fixed, hubText, mw, pct, rowAt, setsText, signed, steadySets } from './
 import { SternView } from './live/stern.js';
 
 // The page's own copy of the wasm, for pictures only (the worker runs the simulations).
+// Not behind the worker protocol: every frame asks the sea's elevations synchronously (Sea in
+// live/stern.js and live/plan.js); a round trip to a worker busy with a run would stall playback.
 let wasm = null;
 const loadWasm = () => (wasm = wasm || init());
 const reducedMotion = window.matchMedia('(prefers-reduced-motion: reduce)');
@@ -47,8 +49,6 @@ export class LiveViews {
     this.speedSel.addEventListener('change', () => { this.speed = Number(this.speedSel.value); this.rate = null; });
     this.scrub.addEventListener('input', () => this.seek(Number(this.scrub.value), { fromScrubber: true }));
     this.loop = (now) => this.frame(now);
-    // A test hook: what was drawn, frame times and the playback rate (no pixel-peeping).
-    window.__liveViews = this;
   }
 
   // After a run: the trace, pageConstants and the scenario. Resolves once the pictures are ready.

@@ -1,7 +1,8 @@
 // The page's core: starts the simulator's worker, keeps one state for the form, the address bar and
 // the drawn results (Back and Forward), runs the form's values, and switches the tabs. Every tab,
 // fold and result view registers itself (views.js) in its module under views/, imported below in
-// the order its hooks run; main.js calls the hooks.
+// the order its hooks run; main.js calls the hooks. The views read the page's state from `ctx` and
+// change it only through its functions (setMode, keep, setLesson, run, ...).
 import { DEFAULT_PRESET, STUDIES, DEFAULT_PLOTS, studyTitle } from './config.js';
 import { $ } from './dom.js';
 import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
@@ -10,9 +11,13 @@ import { linkHash, readLink } from './link.js';
 import { ScenarioForm } from './form.js';
 import { Signals } from './units.js';
 import { setRegistry } from './registry.js';
-import { PlotBox, drawRun, drawSeaExtras } from './plots.js';
+import { PlotBox } from './plots.js';
+import { drawRun } from './runplots.js';
+import { drawSeaExtras } from './seaextras.js';
 import { LiveViews } from './live.js';
 import { registerView, each, first, merged, tabView, modeView } from './views.js';
+import { currentTab, showTab, listenTabs } from './tabs.js';
+import { Drawn } from './drawn.js';
 import './views/summary.js';
 import './views/compare.js';
 import './views/hull.js';
@@ -36,12 +41,11 @@ let form = null;
 let signals = null;
 // One state (issue 29): the address bar says which tab, study, values and kind of result (one run
 // or its Monte Carlo) the page shows; every result drawn is kept under the key of the state it
-// belongs to, so Back and Forward restore inputs and results together, and a result is never
-// drawn under another study's inputs.
+// belongs to (drawn.js).
 let mode = 'run';
-let shown = null; // the key of the drawn result, or null
-const drawn = new Map(); // key -> {key, state, study, redraw()}: the last few results, for Back/Forward
-const DRAWN_MAX = 6;
+const drawn = new Drawn();
+let kept = null; // a kept run drawn muted under the next: {name, columns, summary}
+let lesson = null; // {def, defaults} while a lesson is open
 const stateKey = (m = mode) => `${m}|${form.name}|${JSON.stringify(form.scenario)}`;
 // The button that shows the form's values in this mode.
 const press = () => (modeView(mode) ? modeView(mode).button : 'Run');
@@ -63,32 +67,20 @@ const studyInputs = () => (form && form.scenario ? { study: form.name, title: st
 // unless that entry shows a result of other values: then it pushes, so Back returns to those
 // values and their result. A study, tab or mode change pushes.
 const hereHash = (view = null) => first('hash', ctx) || linkHash(form.name, form.preset(), form.scenario, { mode, tab: currentTab(), ...merged('linkState', ctx), view });
-const current = () => Boolean(shown) && drawn.has(shown) && drawn.get(shown).state === stateKey();
+const current = () => drawn.shows(stateKey());
 function follow(push) {
   const h = hereHash();
   const st = history.state || {};
   const owner = st.shown && drawn.get(st.shown);
   if (!push && owner && owner.state !== stateKey() && location.hash !== h) push = true;
-  history[push ? 'pushState' : 'replaceState']({ shown: current() ? shown : null }, '', h);
+  history[push ? 'pushState' : 'replaceState']({ shown: current() ? drawn.shown : null }, '', h);
 }
 // After a run or a Monte Carlo study: the entry of these inputs owns what is drawn (a new entry
 // when the mode changed, so Back returns to the other view).
 function settle() {
   const h = hereHash();
-  history[location.hash === h ? 'replaceState' : 'pushState']({ shown }, '', h);
+  history[location.hash === h ? 'replaceState' : 'pushState']({ shown: drawn.shown }, '', h);
 }
-
-// key: unique per result; state: the stateKey of the inputs it belongs to (a replayed Monte Carlo
-// trial belongs to its study's Monte Carlo state).
-// extra: {isCurrent()} for a result that belongs to something else than the form's values alone.
-function remember(key, state, redraw, extra = {}) {
-  drawn.delete(key);
-  drawn.set(key, { key, state, study: state.split('|')[1], redraw, ...extra });
-  while (drawn.size > DRAWN_MAX) drawn.delete(drawn.keys().next().value);
-  shown = key;
-}
-// The result of a state: its own run or study first, else a trial replayed from it.
-const resultOf = (state) => drawn.get(state) || [...drawn.values()].reverse().find((r) => r.state === state);
 
 // Nothing drawn: no summary, plots, live views or exports of another state.
 function clearResults() {
@@ -98,7 +90,7 @@ function clearResults() {
   $('summary-box').hidden = true;
   $('compare-box').hidden = true;
   setResult(null);
-  shown = null;
+  drawn.shown = null;
   showStale();
 }
 
@@ -107,7 +99,7 @@ function clearResults() {
 function showStale() {
   each('sync', ctx);
   const box = $('stale');
-  const r = shown && drawn.get(shown);
+  const r = drawn.current();
   if (r && r.study !== form.name) { clearResults(); return; }
   // A rare-event run belongs to the rare-event result it came from (the form's values and the
   // rare controls); every other result to the form's values in its mode.
@@ -230,8 +222,8 @@ function selectStudy(name, push = true) {
   form.select(name);
   form.save();
   mode = 'run';
-  const last = [...drawn.values()].reverse().find((r) => r.study === name);
-  if (last) { last.redraw(); shown = last.key; mode = last.state.split('|')[0]; } else clearResults();
+  const last = drawn.lastWhere((r) => r.study === name);
+  if (last) { last.redraw(); drawn.shown = last.key; mode = last.state.split('|')[0]; } else clearResults();
   follow(push);
   showStale();
 }
@@ -251,17 +243,16 @@ async function route() {
   form.markLinked(link.edited);
   mode = link.mode;
   const key = stateKey();
-  const r = resultOf(key);
+  const r = drawn.of(key);
   if (r) {
-    if (shown !== r.key) r.redraw();
-    shown = r.key;
+    drawn.show(r);
     status(`${studyTitle(link.name)}: the result of these values is back.`);
   } else {
     clearResults();
     status(`${studyTitle(link.name)}${link.edited.length ? `, ${link.edited.length} value(s) changed` : ''}: press ${press()} to see its result.`);
   }
   showStale();
-  history.replaceState({ shown: current() ? shown : null }, '', location.hash);
+  history.replaceState({ shown: current() ? drawn.shown : null }, '', location.hash);
 }
 
 // A failed request keeps the form and the earlier results; refused fields are marked.
@@ -322,7 +313,7 @@ async function run({ focus = true, trial = null, replay = null, order: plotOrder
   if (!given) mode = 'run';
   const markers = draw();
   if (preview) return;
-  remember(trial ? `trial ${trial.i}|${state}` : replay ? `${replay.name}|${state}` : state, state, draw, replay ? { isCurrent: replay.isCurrent } : {});
+  drawn.remember(trial ? `trial ${trial.i}|${state}` : replay ? `${replay.name}|${state}` : state, state, draw, replay ? { isCurrent: replay.isCurrent } : {});
   settle();
   showStale();
   const t = m.summary.final_time_s, wall = m.wall_ms / 1000;
@@ -345,37 +336,14 @@ function cancel() {
   startWorker();
 }
 
-// Tabs (ARIA pattern): the tab buttons of index.html in their order, each showing the panel it
-// controls; its view says where "Skip to the results" goes and what showing it does. Click, or
-// arrow keys / Home / End on the tab list.
 registerView({ id: 'sim', tab: 'sim', skip: '#results' });
-const TABS = [...$('tabs').querySelectorAll('[role="tab"]')].map((t) => t.id);
-const currentTab = () => (TABS.find((t) => $(t).getAttribute('aria-selected') === 'true') || TABS[0]).slice(4);
 // push: a tab the user picked is a step in the history (Back returns to the tab before).
 function selectTab(id, focus = false, push = true) {
-  const changed = currentTab() !== id.slice(4);
-  for (const tab of TABS) {
-    const on = tab === id;
-    $(tab).setAttribute('aria-selected', String(on));
-    $(tab).tabIndex = on ? 0 : -1;
-    $($(tab).getAttribute('aria-controls')).hidden = !on;
-  }
-  if (focus) $(id).focus();
-  // "Skip to the results" goes to the shown tab's results (the simulator's are hidden here).
-  const view = tabView(id.slice(4));
-  document.querySelector('a.skip').setAttribute('href', view.skip);
+  const { changed, view } = showTab(id, focus);
   if (view.shown) view.shown(ctx);
   if (changed && push && form) follow(true);
 }
-for (const tab of TABS) $(tab).addEventListener('click', () => selectTab(tab));
-$('tabs').addEventListener('keydown', (e) => {
-  const i = TABS.indexOf(document.activeElement.id);
-  if (i < 0) return;
-  const j = { ArrowRight: i + 1, ArrowLeft: i - 1, Home: 0, End: TABS.length - 1 }[e.key];
-  if (j === undefined) return;
-  e.preventDefault();
-  selectTab(TABS[(j + TABS.length) % TABS.length], true);
-});
+listenTabs(selectTab);
 
 // What the views see of the page: its state and the core's moves.
 const ctx = {
@@ -383,17 +351,19 @@ const ctx = {
   get form() { return form; },
   get signals() { return signals; },
   get mode() { return mode; },
-  set mode(m) { mode = m; },
-  kept: null, // a kept run: {name, columns, summary}
-  lesson: null, // {def, scenario0} while a lesson is open (scenario0: the study with its settings)
-  plots, live, validate, studyInputs, stateKey, hereHash, follow, settle, remember, showStale, clearResults, failed, run, onEdit, selectStudy, selectTab, cancel,
+  get kept() { return kept; },
+  get lesson() { return lesson; },
+  // The views change the page's state through these, never by writing it.
+  setMode: (m) => { mode = m; },
+  keep: (run) => { kept = run; },
+  setLesson: (l) => { lesson = l; },
+  plots, live, validate, studyInputs, stateKey, hereHash, follow, settle, remember: (...a) => drawn.remember(...a), showStale, clearResults, failed, run, onEdit, selectStudy, selectTab, cancel,
   forgetChecks: () => { validating++; }, // a check still on its way is of values left behind
   // The result of the form's values drawn again, if the page still has it (Back within a lesson).
   restoreResult: () => {
-    const r = resultOf(stateKey());
+    const r = drawn.of(stateKey());
     if (!r) return false;
-    if (shown !== r.key) r.redraw();
-    shown = r.key;
+    drawn.show(r);
     showStale();
     return true;
   },
@@ -416,4 +386,6 @@ $('reset').addEventListener('click', () => {
 });
 $('stale-run').addEventListener('click', () => (modeView(mode) ? modeView(mode).again(ctx) : run()));
 window.addEventListener('popstate', route);
+// The browser tests' hooks, for a page a test opened (it sets the flag before the page loads).
+if (globalThis.aesTestHooks) (await import('./testhooks.js')).install(ctx);
 startWorker();

@@ -6,9 +6,9 @@
 // other values of the study it is marked stale, under another study it is not shown.
 import { OPERABILITY } from './config.js';
 import { $, el, fmt } from './dom.js';
-import { fieldLine } from './protocol.js';
-import { stoppedText } from './long.js';
-import { StudyPool, progressText } from './pool.js';
+import { announce } from './state.js';
+import { StudyPool } from './pool.js';
+import { StudyFold } from './fold.js';
 import { colourScale, drawPolar, cellAt, cellCentre, margins } from './polar.js';
 
 // What a cell's click sets in the scenario: the polar does not read these (it judges the hull,
@@ -55,13 +55,12 @@ export class OperabilityTab {
     this.selected = null; // {j, i}
     this.geo = null;
     this.pool = new StudyPool(OPERABILITY.maxWorkers);
-    this.running = null; // {key}
+    this.fold = new StudyFold('op', { failed: 'The polar failed', cancel: () => this.cancel(), redFailures: true });
     this.touchSelected = null;
     const cv = $('op-canvas');
     this.canvas = cv;
     $('op-compute').addEventListener('click', () => this.compute());
     $('op-stale-run').addEventListener('click', () => this.compute());
-    $('op-cancel').addEventListener('click', () => this.cancel());
     cv.addEventListener('pointermove', (e) => { if (e.pointerType === 'mouse') this.pick(this.at(e), false); });
     cv.addEventListener('pointerleave', (e) => { if (e.pointerType === 'mouse' && document.activeElement !== cv) this.pick(null, false); });
     // A mouse click opens the cell; on a touch screen the first tap names it, a second opens it.
@@ -124,25 +123,17 @@ export class OperabilityTab {
     const inp = this.inputs();
     if (!inp) return;
     $('op-study').textContent = inp.title;
-    $('op-compute').disabled = Boolean(this.running) || inp.invalid;
+    this.fold.allow(!inp.invalid);
     // A refused value waits at its field on the Simulator tab; say so here too.
-    const refused = 'A value of the form is refused (marked at its field on the Simulator tab): correct it to compute.';
-    if (inp.invalid && !this.running) this.status(refused, true);
-    else if ($('op-status').textContent === refused) this.status('');
+    this.fold.refused(inp.invalid, 'A value of the form is refused (marked at its field on the Simulator tab): correct it to compute.');
     const key = this.keyOf(inp);
     const own = this.kept.get(key);
     if (own && own !== this.shown) this.show(own);
     else if (this.shown && this.shown.study !== inp.study) this.show(null);
-    const stale = Boolean(this.shown) && this.shown.key !== key;
-    $('op-stale').hidden = !stale;
-    $('op-results').classList.toggle('op-is-stale', stale);
-    if (stale) $('op-stale-text').textContent = 'This polar is of other values of this study than the simulator\'s form now (its hull, loading, hub depth or criteria may differ). Compute it again to judge the form\'s values.';
+    this.fold.markStale(Boolean(this.shown) && this.shown.key !== key, 'This polar is of other values of this study than the simulator\'s form now (its hull, loading, hub depth or criteria may differ). Compute it again to judge the form\'s values.');
   }
 
-  status(text, error = false) {
-    $('op-status').textContent = text;
-    $('op-status').className = error ? 'error' : '';
-  }
+  status(text, error = false) { this.fold.status(text, error); }
 
   cancel() { this.pool.cancel(); }
 
@@ -150,24 +141,20 @@ export class OperabilityTab {
   // to OPERABILITY.maxWorkers workers, then one worker joins them into the polar.
   async compute() {
     const inp = this.inputs();
-    if (!inp || this.running) return;
+    if (!inp || this.fold.busy) return;
     if (inp.invalid) return;
     const key = this.keyOf(inp);
     const scenario = JSON.stringify(inp.scenario);
     const req = this.request(inp.scenario);
     const n = req.speeds_kn.length;
     if (!n) { this.status('No speed of the grid is within the scenario\'s RAO table (seakeeping.grid.speed_max_kn).', true); return; }
-    this.running = { key };
-    $('op-compute').disabled = true;
-    $('op-cancel').disabled = false;
-    $('op-results').setAttribute('aria-busy', 'true');
     const started = performance.now();
     const spec = JSON.stringify({ scenario: inp.scenario, request: req });
-    try {
+    await this.fold.compute(async () => {
       const { summary: polar } = await this.pool.run({
         kind: 'operability', scenario, spec, n, item: 'speed',
         onStart: (k) => this.status(`Computing the polar: ${n} speeds x ${req.headings_deg.length} headings x ${req.sea_states.length} seas on ${k} worker${k > 1 ? 's' : ''}...`),
-        onProgress: (done) => this.progress(done, n, started),
+        onProgress: (done) => this.fold.progress(done, n, started, 'speed'),
       });
       const entry = { key, study: inp.study, title: inp.title, polar, ms: performance.now() - started };
       this.kept.delete(key);
@@ -176,23 +163,7 @@ export class OperabilityTab {
       this.selected = null;
       this.show(entry);
       this.status(`Done: ${polar.cells.length} cells in ${(entry.ms / 1000).toFixed(1)} s. Point at a cell to name it.`);
-    } catch (e) {
-      this.cancel();
-      if (e.cancelled) this.status(stoppedText(e));
-      else this.status(e.fields && e.fields.length ? `The scenario is refused: ${e.fields.slice(0, 3).map(fieldLine).join('; ')}` : `The polar failed: ${e.message}`, true);
-      $('op-progress').value = 0;
-      $('op-eta').textContent = '';
-    } finally {
-      this.running = null;
-      $('op-cancel').disabled = true;
-      $('op-results').setAttribute('aria-busy', 'false');
-      this.sync();
-    }
-  }
-
-  progress(done, n, started) {
-    $('op-progress').value = done / n;
-    $('op-eta').textContent = progressText(done, n, started, 'speed');
+    }, { after: () => this.sync() });
   }
 
   // Shows a kept polar (or none): the plot, its legend, tables and text alternative.
@@ -336,7 +307,7 @@ export class OperabilityTab {
     const worst = p.cells.filter((c) => !c.beyond_listed && c.limiting_hs_m !== null).reduce((a, c) => (a && a.limiting_hs_m <= c.limiting_hs_m ? a : c), null);
     const beyond = p.cells.filter((c) => c.beyond_listed).length;
     cv.setAttribute('aria-label', `Operability polar of ${this.shown.title}: ${p.speeds_kn.length} speeds from ${kn(p.speeds_kn[0])} to ${kn(p.speeds_kn[p.speeds_kn.length - 1])}, ${p.headings_deg.length} wave headings. ${beyond} of ${p.cells.length} cells pass every listed sea up to ${last.name}${worst ? `; the lowest limit is ${m2(worst.limiting_hs_m)} at ${kn(worst.speed_kn)}, ${deg(worst.heading_deg)}` : ''}. Arrow keys move between cells, Enter opens the simulator at the cell; the table under "The polar as a table" gives every cell.`);
-    // For the browser test: where a cell is drawn and its colour.
-    window.__operability = { polar: p, centre: (j, i) => cellCentre(p, this.geo, j, i), colour: (j, i) => this.scale.colourOf(p.cells[j * p.headings_deg.length + i]) };
+    // Where a cell is drawn and its colour (what a test checks of the drawing).
+    announce('operability', { polar: p, centre: (j, i) => cellCentre(p, this.geo, j, i), colour: (j, i) => this.scale.colourOf(p.cells[j * p.headings_deg.length + i]) });
   }
 }

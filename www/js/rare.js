@@ -10,9 +10,10 @@
 import { RARE, studyTitle } from './config.js';
 import { param, choiceLabel } from './registry.js';
 import { $, el, fmt } from './dom.js';
-import { REQUEST, WorkerClient, fieldLine } from './protocol.js';
-import { stoppedText } from './long.js';
-import { StudyPool, progressText, summarise } from './pool.js';
+import { REQUEST, WorkerClient } from './protocol.js';
+import { announce } from './state.js';
+import { StudyPool, summarise } from './pool.js';
+import { StudyFold } from './fold.js';
 
 const unitOf = (name) => RARE.units[name.slice(name.lastIndexOf('_') + 1)] || '-';
 const clone = (x) => JSON.parse(JSON.stringify(x));
@@ -45,13 +46,12 @@ export class RareView {
     this.kept = new Map(); // key -> entry
     this.shown = null;
     this.pool = new StudyPool(RARE.maxWorkers);
-    this.running = null;
+    this.fold = new StudyFold('rare', { failed: 'The rare-event study failed', cancel: () => this.cancel(), redFailures: true });
     this.ship = null; // the JSON of the ship section the hub depth's default belongs to
     this.hull = null; // {draft_m, hub_depth_m} of that ship
     this.plots = null; // a PlotBox, given by the page (setPlots)
     $('rare-compute').addEventListener('click', () => this.compute());
     $('rare-stale-run').addEventListener('click', () => this.compute());
-    $('rare-cancel').addEventListener('click', () => this.cancel());
     $('rare-wave').addEventListener('click', () => this.showWaveGroup());
     for (const id of ['rare-event', 'rare-shaft', 'rare-h0', 'rare-trials']) {
       $(id).addEventListener('change', () => this.sync());
@@ -128,24 +128,16 @@ export class RareView {
     $('rare-controls').hidden = Boolean(why);
     if (!why) this.followShip(inp.scenario);
     const c = this.controls();
-    $('rare-compute').disabled = Boolean(this.running) || Boolean(why) || inp.invalid || !this.hull;
-    const refused = 'A value of the form is refused (marked at its field): correct it to compute.';
-    if (inp.invalid && !this.running) this.status(refused, true);
-    else if ($('rare-status').textContent === refused) this.status('');
+    this.fold.allow(!why && !inp.invalid && this.hull);
+    this.fold.refused(inp.invalid, 'A value of the form is refused (marked at its field): correct it to compute.');
     const key = this.keyOf(inp, c);
     const own = this.kept.get(key);
     if (own && own !== this.shown) this.show(own);
     else if (this.shown && this.shown.study !== inp.study) this.show(null);
-    const stale = Boolean(this.shown) && this.shown.key !== key;
-    $('rare-stale').hidden = !stale;
-    $('rare-results').classList.toggle('rare-is-stale', stale);
-    if (stale) $('rare-stale-text').textContent = 'These results are of other values than the form\'s and the controls\' now (the study\'s values, the event, the shaft, the hub depth or the trials differ). Compute again to see these.';
+    this.fold.markStale(Boolean(this.shown) && this.shown.key !== key, 'These results are of other values than the form\'s and the controls\' now (the study\'s values, the event, the shaft, the hub depth or the trials differ). Compute again to see these.');
   }
 
-  status(text, error = false) {
-    $('rare-status').textContent = text;
-    $('rare-status').className = error ? 'error' : '';
-  }
+  status(text, error = false) { this.fold.status(text, error); }
 
   cancel() { this.pool.cancel(); }
 
@@ -163,7 +155,7 @@ export class RareView {
   // trials' scenario (the study's definition), then summarises them.
   async compute() {
     const inp = this.inputs();
-    if (!inp || this.running || inp.invalid || RareView.refusal(inp.scenario) || !this.hull) return;
+    if (!inp || this.fold.busy || inp.invalid || RareView.refusal(inp.scenario) || !this.hull) return;
     const c = this.controls();
     for (const id of ['rare-h0', 'rare-trials']) {
       if (c.errors[id]) $(id).setAttribute('aria-invalid', 'true'); else $(id).removeAttribute('aria-invalid');
@@ -174,10 +166,6 @@ export class RareView {
     const key = this.keyOf(inp, c);
     const study = JSON.stringify(this.scenarioOf(inp.scenario, c));
     const n = c.trials;
-    this.running = { key };
-    $('rare-compute').disabled = true;
-    $('rare-cancel').disabled = false;
-    $('rare-results').setAttribute('aria-busy', 'true');
     const started = performance.now();
     const chunk = Math.max(1, Math.min(25, Math.ceil(n / (this.pool.size(n) * 6))));
     let trial = null;
@@ -186,11 +174,11 @@ export class RareView {
       ({ scenario: trial } = await first.request(REQUEST.rareScenario, { scenario: study }));
       return this.specOf(trial, n);
     };
-    try {
+    await this.fold.compute(async () => {
       const { shards, summary } = await this.pool.run({
         kind: 'rare-events', scenario: study, spec: specOf, n, chunk, item: 'trial',
         onStart: (k) => this.status(`Rare events: the trials' scenario (a run in waves to the event's place), then ${n} trials on ${k} worker${k > 1 ? 's' : ''}...`),
-        onProgress: (done) => this.progress(done, n, started),
+        onProgress: (done) => this.fold.progress(done, n, started, 'trial'),
       });
       const entry = { key, study: inp.study, title: inp.title, controls: c, trial, shards, summary, ms: performance.now() - started };
       this.kept.delete(key);
@@ -199,23 +187,7 @@ export class RareView {
       this.show(entry);
       this.status(`Done: ${n} trials in ${(entry.ms / 1000).toFixed(1)} s.`);
       $('rare-results').focus(); // the results, in view (a phone's screen holds the controls)
-    } catch (e) {
-      this.cancel();
-      if (e.cancelled) this.status(stoppedText(e));
-      else this.status(e.fields && e.fields.length ? `The scenario is refused: ${e.fields.slice(0, 3).map(fieldLine).join('; ')}` : `The rare-event study failed: ${e.message}`, true);
-      $('rare-progress').value = 0;
-      $('rare-eta').textContent = '';
-    } finally {
-      this.running = null;
-      $('rare-cancel').disabled = true;
-      $('rare-results').setAttribute('aria-busy', 'false');
-      this.sync();
-    }
-  }
-
-  progress(done, n, started) {
-    $('rare-progress').value = done / n;
-    $('rare-eta').textContent = progressText(done, n, started, 'trial');
+    }, { after: () => this.sync() });
   }
 
   // The study's definition (core's rare::RareSpec) as JSON text: the trials' scenario (text, its
@@ -229,7 +201,7 @@ export class RareView {
     try {
       const { summary } = await summarise(this.helper(), 'rare-events', this.specOf(entry.trial, entry.controls.trials), entry.shards);
       entry.summary = summary;
-      if (this.shown === entry) { this.thresholdTable(summary); window.__rare = { summary, trial: entry.trial }; }
+      if (this.shown === entry) { this.thresholdTable(summary); announce('rare', { summary, trial: entry.trial }); }
     } catch (e) {
       if (!e.cancelled) this.status(`The thresholds could not be applied: ${e.message}`, true);
     }
@@ -240,7 +212,7 @@ export class RareView {
     $('rare-body').hidden = !entry;
     if (this.plots) this.plots.clear();
     $('rare-showing').textContent = '';
-    window.__rare = entry ? { summary: entry.summary, trial: entry.trial } : null;
+    announce('rare', entry ? { summary: entry.summary, trial: entry.trial } : null);
     if (!entry) return;
     const s = entry.summary;
     const r = s.rate;
@@ -341,7 +313,7 @@ export class RareView {
   // ship's place at the event is taken in that sea first (as each trial takes it in its own).
   async showWaveGroup() {
     const e = this.shown;
-    if (!e || this.running) return;
+    if (!e || this.fold.busy) return;
     const sc = JSON.parse(e.trial);
     sc.rare_event.shape = 'most_likely';
     $('rare-showing').textContent = 'Placing the ship at the event in the most likely wave group...';

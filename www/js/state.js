@@ -52,6 +52,20 @@ export function notice(text) {
   $('notice').hidden = !text;
 }
 
+// What a view has just shown (a study's result, a lesson's run landed), by name, for whoever
+// listens: the browser tests' hooks (testhooks.js) when a test loads them, nobody otherwise. A
+// listener hears the last of each name shown before it came, too.
+const lastShown = new Map();
+let listener = null; // one: the tests' hooks
+export function announce(name, value) {
+  lastShown.set(name, value);
+  if (listener) listener(name, value);
+}
+export function onAnnounce(f) {
+  listener = f;
+  for (const [name, value] of lastShown) f(name, value);
+}
+
 // "about 3.2 s left" from the elapsed wall time and the fraction done (empty early on).
 export function etaText(startedMs, fraction) {
   const elapsed = (performance.now() - startedMs) / 1000;

@@ -57,7 +57,7 @@ function showComparison(ctx, now) {
 function keep(ctx) {
   const r = getResult();
   if (!r || !r.columns) return;
-  ctx.kept = { name: r.name, columns: r.columns, summary: r.summary };
+  ctx.keep({ name: r.name, columns: r.columns, summary: r.summary });
   $('unkeep').hidden = false;
   status(`Kept: ${r.name}. The next runs draw over it, muted and dashed.`);
 }
@@ -93,7 +93,7 @@ registerView({
   id: 'compare',
   init(ctx) {
     $('keep').addEventListener('click', () => keep(ctx));
-    $('unkeep').addEventListener('click', () => { ctx.kept = null; $('unkeep').hidden = true; $('compare-box').hidden = true; status('The kept run is forgotten.'); });
+    $('unkeep').addEventListener('click', () => { ctx.keep(null); $('unkeep').hidden = true; $('compare-box').hidden = true; status('The kept run is forgotten.'); });
   },
   selected: showCompareButtons,
   drawRun: (ctx, m, name) => showComparison(ctx, { summary: m.summary, name }),

@@ -3,10 +3,10 @@
 // study pool (pool.js) with progress and Cancel, as a table and a plot. All of it is this module:
 // the fold's DOM, its inputs, the computation and the drawing.
 import { $, el, fmt, row } from '../dom.js';
-import { fieldLine } from '../protocol.js';
+import { announce } from '../state.js';
 import { PlotBox } from '../plots.js';
-import { stoppedText } from '../long.js';
-import { StudyPool, progressText } from '../pool.js';
+import { StudyPool } from '../pool.js';
+import { StudyFold } from '../fold.js';
 import { registerView } from '../views.js';
 
 // The page's defaults: six speeds, two seas each, 120 s runs measured over their second half
@@ -39,8 +39,7 @@ const TEMPLATE = `
 
 const pool = new StudyPool(FUEL.maxWorkers);
 let plots = null;
-let running = false;
-let shownKey = null; // the inputs the result shown belongs to
+let fold = null;
 
 // What a result depends on: the form's scenario and the fold's inputs.
 const keyOf = (inp, ask) => JSON.stringify([inp.scenario, ask.speeds, ask.seeds]);
@@ -71,51 +70,35 @@ function show(s) {
 
 async function compute(ctx) {
   const inp = ctx.studyInputs();
-  if (!inp || running) return;
+  if (!inp || fold.busy) return;
   const ask = inputs();
   $('fuel-err').textContent = ask.error || '';
   if (ask.error) return;
-  if (inp.invalid) { $('fuel-status').textContent = 'A value of the form is refused (marked at its field): correct it first.'; return; }
+  if (inp.invalid) { fold.status('A value of the form is refused (marked at its field): correct it first.'); return; }
   const sc = JSON.parse(JSON.stringify(inp.scenario));
   sc.sim.duration_s = FUEL.durationS;
   const scenario = JSON.stringify(sc);
   const spec = JSON.stringify({ scenario: sc, speeds_kn: ask.speeds, seeds: ask.seeds, from_s: FUEL.durationS / 2 });
   const n = ask.speeds.length * ask.seeds;
   const started = performance.now();
-  running = true;
-  $('fuel-compute').disabled = true;
-  $('fuel-cancel').disabled = false;
-  try {
+  await fold.compute(async () => {
     const { summary } = await pool.run({
       kind: 'fuel-per-mile', scenario, spec, n, item: 'run',
-      onStart: (k) => { $('fuel-status').textContent = `${n} runs of ${FUEL.durationS} s on ${k} worker${k > 1 ? 's' : ''}...`; },
-      onProgress: (done) => { $('fuel-progress').value = done / n; $('fuel-eta').textContent = progressText(done, n, started, 'run'); },
+      onStart: (k) => fold.status(`${n} runs of ${FUEL.durationS} s on ${k} worker${k > 1 ? 's' : ''}...`),
+      onProgress: (done) => fold.progress(done, n, started, 'run'),
     });
     show(summary);
-    shownKey = keyOf(inp, ask); // the inputs it was started with
-    $('fuel-status').textContent = `Done: ${n} runs in ${((performance.now() - started) / 1000).toFixed(1)} s (${inp.title}).`;
-    window.__fuel = summary;
-  } catch (e) {
-    pool.cancel();
-    $('fuel-progress').value = 0;
-    $('fuel-eta').textContent = '';
-    $('fuel-status').textContent = e.cancelled ? stoppedText(e) : e.fields && e.fields.length ? `The scenario is refused: ${e.fields.slice(0, 3).map(fieldLine).join('; ')}` : `The fuel study failed: ${e.message}`;
-  } finally {
-    running = false;
-    $('fuel-compute').disabled = false;
-    $('fuel-cancel').disabled = true;
-    sync(ctx); // inputs edited while it ran: the result is of the old ones
-  }
+    fold.shownKey = keyOf(inp, ask); // the inputs it was started with
+    fold.status(`Done: ${n} runs in ${((performance.now() - started) / 1000).toFixed(1)} s (${inp.title}).`);
+    announce('fuel', summary);
+  }, { after: () => sync(ctx) }); // inputs edited while it ran: the result is of the old ones
 }
 
 // A result of other inputs is not shown under these (it would read as theirs).
 function sync(ctx) {
   const inp = ctx.studyInputs();
   const ask = inputs();
-  if (!shownKey || !inp || (!ask.error && keyOf(inp, ask) === shownKey)) return;
-  shownKey = null;
-  $('fuel-body').hidden = true;
-  $('fuel-status').textContent = 'The study or the fold\'s inputs changed since the last result: compute again.';
+  if (inp) fold.drop(ask.error ? null : keyOf(inp, ask), 'The study or the fold\'s inputs changed since the last result: compute again.');
 }
 
 registerView({
@@ -124,8 +107,8 @@ registerView({
   init(ctx) {
     $('fuel-box').insertAdjacentHTML('beforeend', TEMPLATE);
     plots = new PlotBox($('fuel-plot'));
+    fold = new StudyFold('fuel', { failed: 'The fuel study failed', cancel: () => pool.cancel() });
     $('fuel-compute').addEventListener('click', () => compute(ctx));
-    $('fuel-cancel').addEventListener('click', () => pool.cancel());
     for (const id of ['fuel-speeds', 'fuel-seeds']) $(id).addEventListener('input', () => sync(ctx));
   },
 });

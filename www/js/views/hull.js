@@ -3,7 +3,8 @@
 // loader; both follow the scenario in the form.
 import { $ } from '../dom.js';
 import { isBusy, status } from '../state.js';
-import { HullPanel, HullPicker, num } from '../hull.js';
+import { HullPanel, HullPicker } from '../hull.js';
+import { num } from '../hulldraw.js';
 import { registerView } from '../views.js';
 
 let panel = null;

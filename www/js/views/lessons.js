@@ -4,7 +4,7 @@
 // Back and Forward move the controls and bring their run back, inside the lesson.
 import { DEFAULT_PRESET } from '../config.js';
 import { $ } from '../dom.js';
-import { setPhase, isBusy, getResult, status } from '../state.js';
+import { setPhase, isBusy, getResult, status, announce } from '../state.js';
 import { linkHash } from '../link.js';
 import { setPath } from '../form.js';
 import { REQUEST } from '../protocol.js';
@@ -54,8 +54,8 @@ async function openLesson(ctx, parsed) {
   pending = null;
   ctx.forgetChecks();
   if (parsed.index) {
-    ctx.lesson = null;
-    ctx.kept = null;
+    ctx.setLesson(null);
+    ctx.keep(null);
     document.body.classList.remove('lesson-waiting', 'lesson-answered');
     document.body.dataset.lessonView = '';
     lessons.showIndex(parsed.unknown);
@@ -70,13 +70,13 @@ async function openLesson(ctx, parsed) {
   } catch (e) { status(e.message, true); return; }
   if (mine !== opening) return;
   const same = ctx.lesson && ctx.lesson.def.name === def.name && lessons.def === def;
-  ctx.lesson = { def, defaults: o.defaults };
+  ctx.setLesson({ def, defaults: o.defaults });
   form.select(def.preset, JSON.parse(o.scenario));
-  ctx.mode = 'run';
+  ctx.setMode('run');
   document.body.dataset.lessonView = def.view;
   if (same) lessons.setValues(o.values);
   else {
-    ctx.kept = null;
+    ctx.keep(null);
     ctx.clearResults();
     lessons.open(def, o, labHref(form), answered.has(def.name));
   }
@@ -97,8 +97,8 @@ async function openLesson(ctx, parsed) {
 }
 
 function leaveLesson(ctx) {
-  ctx.lesson = null;
-  ctx.kept = null;
+  ctx.setLesson(null);
+  ctx.keep(null);
   document.body.classList.remove('lesson', 'lesson-waiting', 'lesson-answered');
   $('lessons-link').removeAttribute('aria-current');
   ctx.selectTab('tab-sim', false, false);
@@ -134,7 +134,7 @@ async function lessonRun(ctx, settled = true) {
   if (!ctx.lesson) return;
   if (isBusy()) { pending = { settled: settled || (pending && pending.settled) }; return; }
   const r = getResult();
-  if (settled || !ctx.kept) ctx.kept = r && r.columns && !r.preview ? { name: 'the run before', columns: r.columns, summary: r.summary } : ctx.kept;
+  if (settled || !ctx.kept) ctx.keep(r && r.columns && !r.preview ? { name: 'the run before', columns: r.columns, summary: r.summary } : ctx.kept);
   const asked = settledAt || performance.now();
   if (settled) settledAt = 0;
   const { def } = ctx.lesson;
@@ -146,10 +146,9 @@ async function lessonRun(ctx, settled = true) {
   if (res && res.columns && ctx.lesson) {
     res.preview = !settled;
     if (settled) {
-      window.__lessonLatencyMs = performance.now() - asked; // for the browser test: release to plot
-      window.__lessonRuns = (window.__lessonRuns || 0) + 1; // for the browser test: a rerun has landed
+      announce('lessonRun', { latencyMs: performance.now() - asked }); // release to plot
       explainShown(ctx);
-    } else window.__lessonPreviews = (window.__lessonPreviews || 0) + 1;
+    } else announce('lessonPreview', null);
   }
   if ($('lesson-lab')) $('lesson-lab').href = labHref(ctx.form);
   if (pending) { const p = pending; pending = null; lessonRun(ctx, p.settled); }
@@ -198,9 +197,6 @@ registerView({
         if (r && r.lesson && ctx.restoreResult()) explainShown(ctx); else if (!isBusy()) lessonRun(ctx, true);
       },
     });
-    // For the browser test: the scenario a lesson runs, as text, and the words of the shown run.
-    window.__scenarioText = () => JSON.stringify(form.current());
-    window.__lessonWords = () => { const r = getResult(); return r && r.lesson ? r.lesson.sentences.map(([s]) => s).join(' ') : null; };
   },
   // first: the page's start, with the form's study not chosen yet.
   route(ctx, hash, first) {

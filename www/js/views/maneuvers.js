@@ -3,8 +3,10 @@
 // the shafts held, drawn, and the booklet's table beside IMO MSC.137(76)'s limits. All of it is
 // this module: the fold's DOM, the request and the drawing; every number is the wasm's.
 import { $, el, fmt, row } from '../dom.js';
-import { REQUEST, fieldLine } from '../protocol.js';
+import { REQUEST } from '../protocol.js';
+import { announce } from '../state.js';
 import { PlotBox, sizedCanvas } from '../plots.js';
+import { StudyFold } from '../fold.js';
 import { registerView } from '../views.js';
 
 const TEMPLATE = `
@@ -24,7 +26,7 @@ const TEMPLATE = `
 </section>`;
 
 let plots = null;
-let shownKey = null; // the scenario the booklet shown belongs to
+let fold = null; // its shownKey: the scenario the result shown belongs to
 
 // The turning circle seen from above, in ship lengths: east to the right, north (the approach
 // course) up, a mark every 30 s.
@@ -80,33 +82,23 @@ function show(b) {
 async function compute(ctx) {
   const inp = ctx.studyInputs();
   if (!inp) return;
-  if (inp.invalid) { $('maneuvers-status').textContent = 'A value of the form is refused (marked at its field): correct it first.'; return; }
+  if (inp.invalid) { fold.status('A value of the form is refused (marked at its field): correct it first.'); return; }
   const scenario = JSON.stringify(inp.scenario);
-  $('maneuvers-compute').disabled = true;
-  $('maneuvers-status').textContent = 'Sailing the maneuvers...';
-  try {
+  await fold.compute(async () => {
+    fold.status('Sailing the maneuvers...');
     const { booklet } = await ctx.client.request(REQUEST.maneuvers, { scenario });
     show(booklet);
-    shownKey = scenario;
+    fold.shownKey = scenario;
     const failed = booklet.criteria.filter((c) => !c.pass).length;
-    $('maneuvers-status').textContent = `Done (${inp.title}): ${failed ? `${failed} of ${booklet.criteria.length} IMO criteria not met` : `all ${booklet.criteria.length} IMO criteria met`}.`;
-    window.__maneuvers = booklet;
-  } catch (e) {
-    $('maneuvers-body').hidden = true;
-    shownKey = null;
-    $('maneuvers-status').textContent = e.fields && e.fields.length ? `The scenario is refused: ${e.fields.slice(0, 3).map(fieldLine).join('; ')}` : `The maneuvers could not be sailed: ${e.message}`;
-  } finally {
-    $('maneuvers-compute').disabled = false;
-  }
+    fold.status(`Done (${inp.title}): ${failed ? `${failed} of ${booklet.criteria.length} IMO criteria not met` : `all ${booklet.criteria.length} IMO criteria met`}.`);
+    announce('maneuvers', booklet);
+  }, { onFail: () => { $('maneuvers-body').hidden = true; fold.shownKey = null; } });
 }
 
 // A booklet of another ship or speed is not shown under this one.
 function sync(ctx) {
   const inp = ctx.studyInputs();
-  if (!shownKey || (inp && JSON.stringify(inp.scenario) === shownKey)) return;
-  shownKey = null;
-  $('maneuvers-body').hidden = true;
-  $('maneuvers-status').textContent = 'The study changed since the booklet was computed: compute it again.';
+  fold.drop(inp ? JSON.stringify(inp.scenario) : null, 'The study changed since the booklet was computed: compute it again.');
 }
 
 registerView({
@@ -115,6 +107,7 @@ registerView({
   init(ctx) {
     $('maneuvers-box').insertAdjacentHTML('beforeend', TEMPLATE);
     plots = new PlotBox($('maneuvers-plots'));
+    fold = new StudyFold('maneuvers', { failed: 'The maneuvers could not be sailed' });
     $('maneuvers-compute').addEventListener('click', () => compute(ctx));
   },
 });

@@ -39,7 +39,7 @@ async function runMonteCarlo(ctx) {
     $('shown-what').hidden = true;
     showMonteCarlo(ctx.plots, out.summary, ctx.signals, out.constants, { onReplay: (i) => replayTrial(ctx, i), onPickBar: (h, b) => replayFromBar(ctx, h, b), thesis, study });
   };
-  ctx.mode = 'mc';
+  ctx.setMode('mc');
   draw();
   ctx.remember(state, state, draw);
   ctx.settle();

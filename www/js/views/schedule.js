@@ -3,9 +3,10 @@
 // its fuel saving against all four on hover or focus, and a click that opens the simulator at that
 // speed and sea with those sets online. Every number is the wasm's.
 import { $, el, fmt } from '../dom.js';
-import { REQUEST, fieldLine } from '../protocol.js';
-import { isBusy, status } from '../state.js';
+import { REQUEST } from '../protocol.js';
+import { isBusy, status, announce } from '../state.js';
 import { setPath } from '../form.js';
+import { StudyFold } from '../fold.js';
 import { registerView } from '../views.js';
 
 const TEMPLATE = `
@@ -33,7 +34,7 @@ const TEXT = ['#1b1b1b', '#1b1b1b', '#ffffff', '#ffffff'];
 // The sets a count runs on the page's simulator: one on each shaft's bus first.
 const SETS = [[1], [1, 3], [1, 2, 3], [1, 2, 3, 4]];
 
-let shownKey = null;
+let fold = null; // its shownKey: the scenario the result shown belongs to
 
 function words(c) {
   if (c.count == null) return `${c.speed_kn} kn in SS${c.sea_state}: beyond the plant`;
@@ -94,33 +95,23 @@ function show(ctx, s) {
 async function compute(ctx) {
   const inp = ctx.studyInputs();
   if (!inp) return;
-  if (inp.invalid) { $('schedule-status').textContent = 'A value of the form is refused (marked at its field): correct it first.'; return; }
+  if (inp.invalid) { fold.status('A value of the form is refused (marked at its field): correct it first.'); return; }
   const scenario = JSON.stringify(inp.scenario);
-  $('schedule-compute').disabled = true;
-  $('schedule-status').textContent = 'Computing the schedule...';
-  try {
+  await fold.compute(async () => {
+    fold.status('Computing the schedule...');
     const { schedule } = await ctx.client.request(REQUEST.schedule, { scenario });
     show(ctx, schedule);
-    shownKey = scenario;
+    fold.shownKey = scenario;
     const four = schedule.cells.filter((c) => c.count === 4).length;
-    $('schedule-status').textContent = `Done (${inp.title}): ${schedule.cells.length} cells, ${schedule.cells.length - four} of them with fewer than four sets online.`;
-    window.__schedule = schedule;
-  } catch (e) {
-    $('schedule-body').hidden = true;
-    shownKey = null;
-    $('schedule-status').textContent = e.fields && e.fields.length ? `The scenario is refused: ${e.fields.slice(0, 3).map(fieldLine).join('; ')}` : `The schedule could not be computed: ${e.message}`;
-  } finally {
-    $('schedule-compute').disabled = false;
-  }
+    fold.status(`Done (${inp.title}): ${schedule.cells.length} cells, ${schedule.cells.length - four} of them with fewer than four sets online.`);
+    announce('schedule', schedule);
+  }, { onFail: () => { $('schedule-body').hidden = true; fold.shownKey = null; } });
 }
 
 // A schedule of another plant is not shown under this one.
 function sync(ctx) {
   const inp = ctx.studyInputs();
-  if (!shownKey || (inp && JSON.stringify(inp.scenario) === shownKey)) return;
-  shownKey = null;
-  $('schedule-body').hidden = true;
-  $('schedule-status').textContent = 'The study changed since the schedule was computed: compute it again.';
+  fold.drop(inp ? JSON.stringify(inp.scenario) : null, 'The study changed since the schedule was computed: compute it again.');
 }
 
 registerView({
@@ -128,6 +119,7 @@ registerView({
   sync,
   init(ctx) {
     $('schedule-box').insertAdjacentHTML('beforeend', TEMPLATE);
+    fold = new StudyFold('schedule', { failed: 'The schedule could not be computed' });
     $('schedule-compute').addEventListener('click', () => compute(ctx));
   },
 });
