@@ -89,18 +89,32 @@ impl Trace {
 
     /// The trace as CSV text with a header row.
     pub fn to_csv(&self) -> String {
-        let mut s = crate::signals::names().collect::<Vec<_>>().join(",");
-        s.push('\n');
+        use std::io::Write;
+        let mut s = crate::signals::names().collect::<Vec<_>>().join(",").into_bytes();
+        s.push(b'\n');
+        // Display's text, written in place (no String per number) into one allocation of about
+        // 16 bytes a number; a number with the bits of the one above it (a fifth of a trace:
+        // zeros, held commands) copies that one's text. In WebAssembly the CSV was a quarter of
+        // a head-seas-ss6 run (about 5.9 ms of 21 ms; now about 3.5 ms).
+        s.reserve(self.len() * self.columns.len() * 16);
+        let mut above: Vec<(u64, usize, usize)> = vec![(0, 0, 0); self.columns.len()];
         for r in 0..self.len() {
             for (i, c) in self.columns.iter().enumerate() {
                 if i > 0 {
-                    s.push(',');
+                    s.push(b',');
                 }
-                s.push_str(&format!("{}", c[r]));
+                let (bits, at) = (c[r].to_bits(), s.len());
+                let (b, from, to) = above[i];
+                if r > 0 && b == bits {
+                    s.extend_from_within(from..to);
+                } else {
+                    let _ = write!(s, "{}", c[r]);
+                }
+                above[i] = (bits, at, s.len());
             }
-            s.push('\n');
+            s.push(b'\n');
         }
-        s
+        String::from_utf8(s).unwrap_or_default()
     }
 }
 
@@ -890,4 +904,38 @@ pub fn run(scenario: &Scenario) -> Result<RunResult, SimError> {
 /// platform's libm) so native and wasm runs agree to the bit.
 pub(crate) fn speed_through_water(x: &State) -> f64 {
     (x[SURGE] * x[SURGE] + x[SWAY] * x[SWAY]).sqrt()
+}
+
+#[cfg(test)]
+mod csv_tests {
+    use super::*;
+
+    /// The CSV is Display's text of every number, byte for byte, also where a number repeats the
+    /// one above it (its text copied), for zeros of both signs, NaN and infinities.
+    #[test]
+    fn to_csv_writes_display_text() {
+        let edge = [0.0, -0.0, f64::NAN, f64::INFINITY, -f64::INFINITY, 1e300, 5e-324, 0.1 + 0.2, 1.0];
+        let columns: Vec<Vec<f64>> = (0..N_SIGNALS)
+            .map(|i| {
+                (0..40)
+                    .map(|r| {
+                        if (r + i) % 3 == 0 {
+                            edge[(r / 3 + i) % edge.len()]
+                        } else {
+                            (r / 2) as f64 * 0.37 - i as f64
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        let trace = Trace { columns };
+        let mut want = crate::signals::names().collect::<Vec<_>>().join(",");
+        want.push('\n');
+        for r in 0..trace.len() {
+            let row: Vec<String> = trace.columns.iter().map(|c| format!("{}", c[r])).collect();
+            want.push_str(&row.join(","));
+            want.push('\n');
+        }
+        assert_eq!(trace.to_csv(), want);
+    }
 }
