@@ -100,12 +100,25 @@ fn stopped(e: &aes_core::SimError) -> String {
     }
 }
 
+/// A finished run's trace as CSV from its columns, `rows` values each, one after another in the
+/// order of `signalNames` (what the page kept of a run: its export needs no second run).
+#[wasm_bindgen(js_name = traceCsvOf)]
+pub fn trace_csv_of(data: Vec<f64>, rows: usize) -> Result<String, JsError> {
+    let n = aes_core::signals::N_SIGNALS;
+    if rows == 0 || data.len() != n * rows {
+        return Err(JsError::new(&format!(
+            "the trace's columns: {} values for {n} columns of {rows} rows",
+            data.len()
+        )));
+    }
+    Ok(aes_core::sim::Trace { columns: data.chunks(rows).map(|c| c.to_vec()).collect() }.to_csv())
+}
+
 /// A run in progress, advanced in chunks so a worker can report progress and honour cancel.
 #[wasm_bindgen]
 pub struct Run {
     sim: Option<Simulation>,
     summary_json: String,
-    trace_csv: String,
     columns: Vec<Vec<f64>>,
     /// The scenario and summary of the finished run (a lesson's explanation reads them).
     scenario: Scenario,
@@ -119,14 +132,7 @@ impl Run {
     pub fn new(json: JsValue) -> Result<Run, JsError> {
         let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
         let sim = Simulation::new(&sc).map_err(|e| JsError::new(&e.to_string()))?;
-        Ok(Run {
-            sim: Some(sim),
-            summary_json: String::new(),
-            trace_csv: String::new(),
-            columns: Vec::new(),
-            scenario: sc,
-            summary: None,
-        })
+        Ok(Run { sim: Some(sim), summary_json: String::new(), columns: Vec::new(), scenario: sc, summary: None })
     }
 
     /// Advances by at most `steps` time steps; returns the fraction done (1 when finished).
@@ -140,7 +146,6 @@ impl Run {
                 let r = sim.finish();
                 aes_core::checks::check_finite(&r.summary).map_err(|e| JsError::new(&e))?;
                 self.summary_json = serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default();
-                self.trace_csv = r.trace.to_csv();
                 self.columns = r.trace.columns;
                 self.summary = Some(r.summary);
             }
@@ -155,10 +160,11 @@ impl Run {
         self.summary_json.clone()
     }
 
-    /// The trace as CSV (after the run has finished).
+    /// The trace as CSV (after the run has finished; made when asked: the text of every number
+    /// costs a browser a fifth of a run in waves, and only an export wants it).
     #[wasm_bindgen(js_name = traceCsv)]
     pub fn trace_csv(&self) -> String {
-        self.trace_csv.clone()
+        aes_core::sim::Trace { columns: self.columns.clone() }.to_csv()
     }
 
     /// Names of the trace columns.

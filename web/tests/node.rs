@@ -47,6 +47,13 @@ fn startup_runs_in_chunks() {
     // The books close to round-off, as natively (measured -1.5e-13 for this 60 s run).
     assert!(rel.abs() < 1e-9, "{rel}");
     assert_eq!(run.column(JsValue::from("t_s")).unwrap().length(), 601);
+    // The export: the CSV made from the columns the page keeps is the run's own, header and 601 rows.
+    let csv = run.trace_csv();
+    let flat: Vec<f64> =
+        Run::signal_names().iter().flat_map(|n| run.column(JsValue::from(n.as_str())).unwrap().to_vec()).collect();
+    assert_eq!(aes_web::trace_csv_of(flat, 601).ok(), Some(csv.clone()));
+    assert_eq!(csv.lines().count(), 602);
+    assert!(aes_web::trace_csv_of(vec![1.0; 3], 601).is_err());
 }
 
 /// The stability tool answers in wasm as natively: Table 4.2's stator current at 100 N m.

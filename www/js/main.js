@@ -296,7 +296,7 @@ async function run({ focus = true, trial = null, replay = null, order: plotOrder
   const name = trial ? `${studyTitle(form.name)}, Monte Carlo trial ${trial.i} (sea seed ${seed})` : replay ? replay.name : form.runName(sc);
   setPhase('idle');
   const draw = () => {
-    setResult({ summary: m.summary, csv: m.csv, scenario: sc, text, columns: m.columns, name, study, lesson: m.lesson || null, wallMs: m.wall_ms });
+    setResult({ summary: m.summary, csv: !m.lesson, scenario: sc, text, columns: m.columns, name, study, lesson: m.lesson || null, wallMs: m.wall_ms });
     // A rare-event run says above its views what it is (a run of the form's values needs no line).
     $('shown-what').hidden = !replay;
     $('shown-what').textContent = replay ? `Shown: ${replay.words}. The ${replay.shaft} hub's h/R at the event (t = ${replay.at} s): ${replay.hrAt(m.columns)}.` : '';

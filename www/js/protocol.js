@@ -15,8 +15,11 @@
 
 export const REQUEST = {
   validate: 'validate', // {scenario} -> done {} | error with fields
+  // {columns: {name: Float64Array}} (a finished run's, every signal) -> done {csv}: the trace as CSV,
+  // made only when exported (core's Trace::to_csv: the native command's text to the byte).
+  traceCsv: 'trace-csv',
   // {scenario, live?, lesson?} -> progress {fraction, rows?, constants?} ... done {summary, columns,
-  // csv, wall_ms, constants, lesson?}; with live, progress carries the rows recorded since the last
+  // wall_ms, constants, lesson?}; with live, progress carries the rows recorded since the last
   // report ({name: Float64Array}) and the first also the page constants. With lesson ({name,
   // values}), done carries the run's explanation (lessonExplain: sentences, facts, verdict, next, at_s).
   run: 'run',

@@ -7,7 +7,7 @@ import { $ } from './dom.js';
 const PHASES = ['loading', 'idle', 'running', 'montecarlo'];
 let phase = 'loading';
 let formValid = true; // Run waits while a field is invalid
-let result = null; // the last result: {summary, csv, scenario}; csv is empty for Monte Carlo
+let result = null; // the last result: {summary, csv, scenario, columns}; csv: the trace can be exported (a run's, not a lesson's or Monte Carlo's)
 
 function render() {
   const idle = phase === 'idle';

@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, studyEstimate, trialScenario, raoJson, fuelStudy, maneuversBooklet, turbineSchedule, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen, stabilityPoint, stabilityMap } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, studyEstimate, trialScenario, raoJson, fuelStudy, maneuversBooklet, turbineSchedule, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen, traceCsvOf, stabilityPoint, stabilityMap } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -23,6 +23,14 @@ const constantsOf = (scenario) => JSON.parse(pageConstants(scenario));
 
 const handlers = {
   [REQUEST.validate]: (m) => { checked(m.scenario); return {}; },
+
+  [REQUEST.traceCsv]: (m) => {
+    const cols = signals.map(({ name }) => m.columns[name]);
+    const rows = cols.length && cols[0] ? cols[0].length : 0;
+    const flat = new Float64Array(cols.length * rows);
+    cols.forEach((c, i) => flat.set(c, i * rows));
+    return { csv: traceCsvOf(flat, rows) };
+  },
 
   [REQUEST.run]: (m, progress) => {
     const t0 = performance.now();
@@ -54,8 +62,7 @@ const handlers = {
       }
       // A lesson's run: its explanation from the same finished run (core's output::lessons).
       const lesson = m.lesson ? JSON.parse(run.lessonExplain(m.lesson.name, JSON.stringify(m.lesson.values))) : undefined;
-      // (A lesson has no export: its run skips the CSV text.)
-      return [{ summary: JSON.parse(run.summaryJson()), columns, csv: m.lesson ? '' : run.traceCsv(), wall_ms: performance.now() - t0, constants: constantsOf(m.scenario), lesson }, transfer];
+      return [{ summary: JSON.parse(run.summaryJson()), columns, wall_ms: performance.now() - t0, constants: constantsOf(m.scenario), lesson }, transfer];
     } finally {
       run.free();
     }

@@ -1,6 +1,7 @@
 // Sharing and exports of the simulator tab: "Copy link" (or the scenario as a file when its link
 // would be too long), the trace CSV and the summary JSON. A copied link shows under the buttons
 // until the study or a value changes: then it would share another scenario than the one on the page.
+import { REQUEST } from '../protocol.js';
 import { HULL } from '../config.js';
 import { $, download } from '../dom.js';
 import { getResult, status } from '../state.js';
@@ -42,9 +43,12 @@ registerView({
     $('share-file').addEventListener('click', () => {
       if (ctx.form) download(`${ctx.form.scenario.name || 'scenario'}-scenario.json`, JSON.stringify(ctx.form.current(), null, 1), 'application/json');
     });
-    $('export-csv').addEventListener('click', () => {
+    $('export-csv').addEventListener('click', async () => {
       const r = getResult();
-      if (r && r.csv) download(`${r.scenario.name}-trace.csv`, `# scenario: ${r.text || JSON.stringify(r.scenario)}\n${r.csv}`, 'text/csv');
+      if (!(r && r.csv && r.columns)) return;
+      // The text is made now, from the kept columns (a run does not spend its time on it).
+      const { csv } = await ctx.client.request(REQUEST.traceCsv, { columns: r.columns });
+      download(`${r.scenario.name}-trace.csv`, `# scenario: ${r.text || JSON.stringify(r.scenario)}\n${csv}`, 'text/csv');
     });
     $('export-json').addEventListener('click', () => {
       const r = getResult();
