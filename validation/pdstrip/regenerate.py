@@ -41,7 +41,7 @@ RHO_T = RHO / 1000.0
 
 # ---------------------------------------------------------------------------------------------
 # The hulls and their loading: as core/src/ship/hull.rs (`fn dtmb5415`, `fn wigley`) and
-# core/src/ship/sections.rs (`HullOffsets::wigley`, WIGLEY_STATIONS = 19, WIGLEY_ROWS_BELOW_WL = 24).
+# core/src/geometry.rs (`HullOffsets::wigley`, WIGLEY_STATIONS = 19, WIGLEY_ROWS_BELOW_WL = 24).
 # ---------------------------------------------------------------------------------------------
 HULLS = {
     "dtmb5415": dict(
@@ -104,7 +104,7 @@ def case_fn(hull, fn, kn):
 
 
 # ---------------------------------------------------------------------------------------------
-# Offsets and hydrostatics, as core/src/ship/sections.rs computes them.
+# Offsets and hydrostatics, as core/src/geometry.rs computes them.
 # ---------------------------------------------------------------------------------------------
 def read_offsets_csv(path):
     stations = []

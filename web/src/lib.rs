@@ -177,7 +177,7 @@ impl Run {
     /// `lessonOpen` gives them): `aes_core::output::lessons::explain` as JSON.
     #[wasm_bindgen(js_name = lessonExplain)]
     pub fn lesson_explain(&self, name: JsValue, values: JsValue) -> Result<String, JsError> {
-        let l = lessons::lesson(&text(&name, "the lesson's name")?).ok_or_else(|| JsError::new("no such lesson"))?;
+        let l = lessons::lesson(&text(&name, "the lesson's name")?).map_err(|e| JsError::new(&e))?;
         let values: serde_json::Map<String, serde_json::Value> =
             serde_json::from_str(&text(&values, "the lesson's values")?).map_err(|e| JsError::new(&e.to_string()))?;
         let summary = self.summary.as_ref().ok_or_else(|| JsError::new("the run has not finished"))?;
@@ -228,7 +228,7 @@ pub fn lesson_meta() -> String {
 /// text), `values`, `defaults`, `refused` (a sentence per value refused; the lesson's own used)}.
 #[wasm_bindgen(js_name = lessonOpen)]
 pub fn lesson_open(name: JsValue, values: JsValue) -> Result<String, JsError> {
-    let l = lessons::lesson(&text(&name, "the lesson's name")?).ok_or_else(|| JsError::new("no such lesson"))?;
+    let l = lessons::lesson(&text(&name, "the lesson's name")?).map_err(|e| JsError::new(&e))?;
     let given: serde_json::Map<String, serde_json::Value> =
         serde_json::from_str(&text(&values, "the lesson's values")?).map_err(|e| JsError::new(&e.to_string()))?;
     let given: Vec<(String, String)> =

@@ -26,9 +26,7 @@ pub fn run(a: Args) -> Result<(), Failure> {
         emit(&text.join("\n"))?;
         return Ok(());
     };
-    let names: Vec<&str> = lessons::lessons().iter().map(|l| l.name).collect();
-    let l = lessons::lesson(&name)
-        .ok_or_else(|| format!("no lesson named '{}' (try: {})", shorten(&name), names.join(", ")))?;
+    let l = lessons::lesson(&name)?;
     let mut given = Vec::new();
     for v in &a.values {
         given.push(v.split_once('=').ok_or_else(|| format!("--value '{}': expected PATH=VALUE", shorten(v)))?);

@@ -21,53 +21,68 @@ pub use crate::ship::hull_forces::HullForces;
 use crate::ship::rudder::{rudder_force, stern_inflow, RudderParams};
 use serde::{Deserialize, Serialize};
 
-crate::params! {
-    /// Table 2.3 (22-knot test), non-dimensional, in units of 1e-5 (as printed).
-    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-    #[serde(deny_unknown_fields, default)]
-    pub struct AbkowitzCoefficients {
-        pub xudot_minus_m: f64 = -646.9 => { label: "X_udot - m", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub x0: f64 = -65.01 => { label: "X_0", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub xu: f64 = -167.3 => { label: "X_u", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub xuu: f64 = -178.1 => { label: "X_uu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub xuuu: f64 = -80.78 => { label: "X_uuu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub xvr_plus_m: f64 = 93.65 => { label: "X_vr + m", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub xvv: f64 = -268.7 => { label: "X_vv", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub xrr: f64 = -101.58 => { label: "X_rr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub xvvu: f64 = -496.4 => { label: "X_vvu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub xrru: f64 = -79.74 => { label: "X_rru", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub xvru: f64 = 117.2 => { label: "X_vru", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yvdot_minus_m: f64 = -939.0 => { label: "Y_vdot - m", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub y0: f64 = 3.216 => { label: "Y_0", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub y0u: f64 = 6.836 => { label: "Y_0u", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub y0uu: f64 = 3.590 => { label: "Y_0uu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yrdot: f64 = -13.17 => { label: "Y_rdot", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yr_minus_mu: f64 = -381.6 => { label: "Y_r - m u", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yrrr: f64 = -156.8 => { label: "Y_rrr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yv: f64 = -124.6 => { label: "Y_v", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yvvv: f64 = -39.94 => { label: "Y_vvv", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yvvr: f64 = -3704.0 => { label: "Y_vvr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yvrr: f64 = -4580.0 => { label: "Y_vrr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yvu: f64 = -2140.0 => { label: "Y_vu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yvuu: f64 = -1332.0 => { label: "Y_vuu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yru: f64 = -543.5 => { label: "Y_ru", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub yruu: f64 = -111.4 => { label: "Y_ruu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nrdot_minus_iz: f64 = -55.08 => { label: "N_rdot - I_z", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub n0: f64 = -6.813 => { label: "N_0", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub n0u: f64 = -17.38 => { label: "N_0u", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub n0uu: f64 = -10.57 => { label: "N_0uu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nvdot: f64 = 16.85 => { label: "N_vdot", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nv: f64 = -308.8 => { label: "N_v", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nvvv: f64 = -3857.0 => { label: "N_vvv", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nr: f64 = -219.9 => { label: "N_r", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nrrr: f64 = -442.0 => { label: "N_rrr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nvvr: f64 = -1666.0 => { label: "N_vvr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nvrr: f64 = -14820.0 => { label: "N_vrr", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nvu: f64 = -900.5 => { label: "N_vu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nvuu: f64 = -671.1 => { label: "N_vuu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nru: f64 = -607.0 => { label: "N_ru", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-        pub nruu: f64 = -561.8 => { label: "N_ruu", unit: "1e-5", range: -1.0e6..=1.0e6, source: "Table 2.3", help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5." },
-    }
+// Every Abkowitz coefficient shares its unit, range, source and help: one line each below.
+macro_rules! abkowitz_coefficients {
+    ($($field:ident = $default:expr, $label:literal;)*) => {
+        crate::params! {
+            /// Table 2.3 (22-knot test), non-dimensional, in units of 1e-5 (as printed).
+            #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+            #[serde(deny_unknown_fields, default)]
+            pub struct AbkowitzCoefficients {
+                $(pub $field: f64 = $default => {
+                    label: $label,
+                    unit: "1e-5",
+                    range: -1.0e6..=1.0e6,
+                    source: "Table 2.3",
+                    help: "Abkowitz coefficient, non-dimensional (prime system) x 1e5.",
+                },)*
+            }
+        }
+    };
+}
+
+abkowitz_coefficients! {
+    xudot_minus_m = -646.9, "X_udot - m";
+    x0 = -65.01, "X_0";
+    xu = -167.3, "X_u";
+    xuu = -178.1, "X_uu";
+    xuuu = -80.78, "X_uuu";
+    xvr_plus_m = 93.65, "X_vr + m";
+    xvv = -268.7, "X_vv";
+    xrr = -101.58, "X_rr";
+    xvvu = -496.4, "X_vvu";
+    xrru = -79.74, "X_rru";
+    xvru = 117.2, "X_vru";
+    yvdot_minus_m = -939.0, "Y_vdot - m";
+    y0 = 3.216, "Y_0";
+    y0u = 6.836, "Y_0u";
+    y0uu = 3.590, "Y_0uu";
+    yrdot = -13.17, "Y_rdot";
+    yr_minus_mu = -381.6, "Y_r - m u";
+    yrrr = -156.8, "Y_rrr";
+    yv = -124.6, "Y_v";
+    yvvv = -39.94, "Y_vvv";
+    yvvr = -3704.0, "Y_vvr";
+    yvrr = -4580.0, "Y_vrr";
+    yvu = -2140.0, "Y_vu";
+    yvuu = -1332.0, "Y_vuu";
+    yru = -543.5, "Y_ru";
+    yruu = -111.4, "Y_ruu";
+    nrdot_minus_iz = -55.08, "N_rdot - I_z";
+    n0 = -6.813, "N_0";
+    n0u = -17.38, "N_0u";
+    n0uu = -10.57, "N_0uu";
+    nvdot = 16.85, "N_vdot";
+    nv = -308.8, "N_v";
+    nvvv = -3857.0, "N_vvv";
+    nr = -219.9, "N_r";
+    nrrr = -442.0, "N_rrr";
+    nvvr = -1666.0, "N_vvr";
+    nvrr = -14820.0, "N_vrr";
+    nvu = -900.5, "N_vu";
+    nvuu = -671.1, "N_vuu";
+    nru = -607.0, "N_ru";
+    nruu = -561.8, "N_ruu";
 }
 
 /// Lowest speed used to non-dimensionalise [m/s]: below it the ship is all but stopped and the

@@ -1,0 +1,288 @@
+//! The lessons of the page (a few controls on one study, a question, an explanation): their
+//! definitions and the claims each run supports. One owner for both the page (through the wasm)
+//! and the native test that checks every claim against the run's own trace over a grid of
+//! control values (tests/lessons.rs).
+//!
+//! A claim is data ([`Fact`]): a statistic of named signals over a named window, a count of
+//! surface-loss onsets, an energy, or a comparison of two of them. The sentences are written from
+//! the facts, and a sentence is only chosen when its fact holds (a rise is called a rise only
+//! when the window's peak exceeds its start by the stated margin). "Try this next" names the
+//! values to set and the effect promised ([`Promise`]), which the test checks by running them.
+//!
+//! One file per lesson holds its definition and its explainer, registered by one line in
+//! [`lessons`]; `facts` holds the fact language. A lesson carries its own explainer, so a run is
+//! always explained by the lesson it ran, and an unknown name is refused ([`lesson`]).
+
+use crate::checks::shorten;
+use crate::scenario::presets::preset;
+use crate::scenario::Scenario;
+use serde::Serialize;
+
+mod battery;
+mod braking;
+mod bus;
+mod engines;
+mod facts;
+mod power;
+mod sign;
+mod turn;
+mod waves;
+
+use facts::Book;
+pub use facts::{onsets, stat, Explanation, Fact, Measure, Next, Promise, Relation, Run, Stat};
+
+/// A control of a lesson.
+#[derive(Debug, Clone, Serialize)]
+pub struct Control {
+    /// The scenario path the control sets (a link's key; a maneuver order is `commands.N.*` with
+    /// its index).
+    pub path: &'static str,
+    /// Paths set to the same value (the ordered speed with the initial speed, so the ship starts
+    /// steady instead of settling to its order while the story happens).
+    pub with_paths: &'static [&'static str],
+    /// Plain words.
+    pub label: &'static str,
+    /// Shown after the value ("" for none; a ratio says so in `label`).
+    pub unit: &'static str,
+    #[serde(flatten)]
+    pub kind: ControlKind,
+}
+
+#[derive(Debug, Clone, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum ControlKind {
+    /// A slider over `stops`, its values in order (the thumb's positions: the label shows the
+    /// stop under the thumb). `log`: the stops are equal steps in decades.
+    Slider { stops: Vec<f64>, log: bool },
+    /// One of `values` (each with its label and the settings that go with it).
+    Toggle {
+        values: &'static [&'static str],
+        labels: &'static [&'static str],
+        settings: &'static [&'static [(&'static str, &'static str)]],
+    },
+}
+
+/// A lesson.
+#[derive(Debug, Clone, Serialize)]
+pub struct Lesson {
+    pub name: &'static str,
+    pub title: &'static str,
+    pub preset: &'static str,
+    /// Settings of the lesson over its preset (the run's length).
+    pub set: &'static [(&'static str, &'static str)],
+    /// What the lesson is about, in plain words, before anything runs.
+    pub story: &'static str,
+    pub controls: Vec<Control>,
+    pub question: &'static str,
+    pub answers: &'static [&'static str],
+    /// Plot ids of the page (www/js/config.js PLOTS) and its live view.
+    pub plots: &'static [&'static str],
+    pub view: &'static str,
+    /// What a finished run shows (the lesson's own file writes it).
+    #[serde(skip)]
+    explain: Explainer,
+}
+
+/// Writes a lesson's explanation of a run into the book.
+type Explainer = fn(&mut Book, &Given) -> Explanation;
+
+/// What an explainer is given besides the run: the controls' values and the run's scenario.
+struct Given<'a> {
+    values: &'a serde_json::Map<String, serde_json::Value>,
+    sc: serde_json::Value,
+}
+
+impl Given<'_> {
+    /// A control's number (a number, or text that reads as one; NaN when absent).
+    fn num(&self, p: &str) -> f64 {
+        self.values.get(p).and_then(|v| v.as_f64().or_else(|| v.as_str()?.parse().ok())).unwrap_or(f64::NAN)
+    }
+    /// A control's choice ("" when absent).
+    fn text(&self, p: &str) -> String {
+        self.values.get(p).and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default()
+    }
+}
+
+const SPEED_KN: &str = "initial.speed_kn";
+const ORDER_KN: &[&str] = &["commands.0.speed_kn"];
+
+fn slider(path: &'static str, label: &'static str, unit: &'static str, lo: f64, hi: f64, step: f64) -> Control {
+    // Rounded to a millionth so that 0.15 + 10 x 0.25 reads 2.65.
+    let n = libm::round((hi - lo) / step) as usize;
+    let stops = (0..=n).map(|k| libm::round((lo + step * k as f64) * 1e6) / 1e6).collect();
+    Control { path, with_paths: &[], label, unit, kind: ControlKind::Slider { stops, log: false } }
+}
+
+/// A slider in decades from `lo` to `hi` in the 1-2-5 steps of a meter's ranges (1e-4, 2e-4,
+/// 5e-4, 1e-3 ...): a gain's effect shows on a log scale, and every stop reads short.
+fn decades(path: &'static str, label: &'static str, unit: &'static str, lo: f64, hi: f64) -> Control {
+    let first = libm::floor(libm::log10(lo)) as i32;
+    let last = libm::ceil(libm::log10(hi)) as i32;
+    let stops = (first..=last)
+        .flat_map(|e| [1.0, 2.0, 5.0].map(|m| format!("{m}e{e}").parse::<f64>().unwrap_or(f64::NAN)))
+        .filter(|x| *x >= lo * (1.0 - 1e-9) && *x <= hi * (1.0 + 1e-9))
+        .collect();
+    Control { path, with_paths: &[], label, unit, kind: ControlKind::Slider { stops, log: true } }
+}
+
+fn speed(lo: f64, hi: f64) -> Control {
+    Control { with_paths: ORDER_KN, ..slider(SPEED_KN, "Ship speed (start and order)", "kn", lo, hi, 1.0) }
+}
+
+/// Every lesson, in the order the index lists them: one line per lesson, whose file holds it.
+pub fn lessons() -> Vec<Lesson> {
+    vec![
+        power::lesson(),
+        waves::lesson(),
+        turn::lesson(),
+        braking::lesson(),
+        bus::lesson(),
+        engines::lesson(),
+        sign::lesson(),
+        battery::lesson(),
+    ]
+}
+
+/// The lesson of that name; another name is refused with the names there are.
+pub fn lesson(name: &str) -> Result<Lesson, String> {
+    let all = lessons();
+    let names: Vec<&str> = all.iter().map(|l| l.name).collect();
+    let refused = format!("no lesson named '{}' (try: {})", shorten(name), names.join(", "));
+    all.into_iter().find(|l| l.name == name).ok_or(refused)
+}
+
+/// A lesson's scenario for the given control values (text, as a link carries them): a value
+/// outside the control's span, or not one of its values, is refused with a message and the
+/// lesson's own value is used.
+#[derive(Debug, Clone, Serialize)]
+pub struct Opened {
+    #[serde(skip)]
+    pub scenario: Scenario,
+    /// The values used, by control path (numbers as JSON numbers, choices as text).
+    pub values: serde_json::Map<String, serde_json::Value>,
+    /// The values used when no link sets them.
+    pub defaults: serde_json::Map<String, serde_json::Value>,
+    /// One sentence per refused value.
+    pub refused: Vec<String>,
+}
+
+/// The value at a dotted path of a scenario's JSON.
+fn at_path<'a>(v: &'a serde_json::Value, path: &str) -> Option<&'a serde_json::Value> {
+    path.split('.').try_fold(v, |v, k| match v {
+        serde_json::Value::Array(a) => a.get(k.parse::<usize>().ok()?),
+        _ => v.get(k),
+    })
+}
+
+fn number(v: &serde_json::Value, path: &str) -> f64 {
+    at_path(v, path).and_then(|x| x.as_f64()).unwrap_or(f64::NAN)
+}
+
+impl Control {
+    /// A value (text) if the control allows it.
+    fn accept(&self, text: &str) -> Result<serde_json::Value, String> {
+        match &self.kind {
+            ControlKind::Toggle { values, labels, .. } => values
+                .iter()
+                .position(|v| *v == text)
+                .map(|i| serde_json::Value::from(values[i]))
+                .ok_or_else(|| format!("{}: \"{}\" is not one of {}", self.label, shorten(text), labels.join(", "))),
+            ControlKind::Slider { stops, log } => {
+                let (lo, hi) = (stops[0], stops[stops.len() - 1]);
+                match text.trim().parse::<f64>() {
+                    // A value inside the span moves to the nearest stop (the thumb shows it).
+                    Ok(x) if x.is_finite() && x >= lo * (1.0 - 1e-9) && x <= hi * (1.0 + 1e-9) => {
+                        let d = |s: f64| if *log { (libm::log(s) - libm::log(x)).abs() } else { (s - x).abs() };
+                        let best = stops.iter().copied().min_by(|a, b| d(*a).total_cmp(&d(*b))).unwrap_or(lo);
+                        Ok(serde_json::Value::from(best))
+                    }
+                    _ => Err(format!(
+                        "{}: {} is outside this lesson's range, {} to {}{}",
+                        self.label,
+                        shorten(text),
+                        lo,
+                        hi,
+                        unit_after(self.unit)
+                    )),
+                }
+            }
+        }
+    }
+
+    /// The (path, value text) pairs that a value sets.
+    fn sets(&self, value: &serde_json::Value) -> Vec<(&'static str, String)> {
+        let text = as_text(value);
+        let mut out: Vec<(&'static str, String)> =
+            std::iter::once(self.path).chain(self.with_paths.iter().copied()).map(|p| (p, text.clone())).collect();
+        if let ControlKind::Toggle { values, settings, .. } = &self.kind {
+            if let Some(i) = values.iter().position(|v| *v == text) {
+                out.extend(settings.get(i).copied().unwrap_or_default().iter().map(|(p, v)| (*p, v.to_string())));
+            }
+        }
+        out
+    }
+}
+
+/// A JSON value as a link writes it (a whole number without its ".0").
+fn as_text(v: &serde_json::Value) -> String {
+    match v {
+        serde_json::Value::String(s) => s.clone(),
+        serde_json::Value::Number(n) => match n.as_f64() {
+            Some(x) if x.fract() == 0.0 && x.abs() < 1e15 => format!("{}", x as i64),
+            _ => n.to_string(),
+        },
+        v => v.to_string(),
+    }
+}
+
+fn unit_after(unit: &str) -> String {
+    if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    }
+}
+
+/// Opens a lesson with the values a link gives (path, text).
+pub fn open(l: &Lesson, given: &[(&str, &str)]) -> Result<Opened, String> {
+    let base = preset(l.preset).ok_or_else(|| format!("lesson {}: no preset {}", l.name, l.preset))?;
+    let base = base.with_overrides(l.set).map_err(|e| format!("lesson {}: {e}", l.name))?;
+    let root = base.to_value();
+    let mut defaults = serde_json::Map::new();
+    let mut values = serde_json::Map::new();
+    let mut refused = Vec::new();
+    let mut sets: Vec<(&str, String)> = Vec::new();
+    for c in &l.controls {
+        let own = at_path(&root, c.path).cloned().unwrap_or(serde_json::Value::Null);
+        // A toggle's study value is one of its values (the resistor's 1 ohm); any other is its first.
+        let own = match &c.kind {
+            ControlKind::Toggle { values, .. } => {
+                let t = as_text(&own);
+                serde_json::Value::from(*values.iter().find(|v| **v == t).unwrap_or(&values[0]))
+            }
+            _ => own,
+        };
+        // A slider's study value moves to its stop, so the thumb and the label agree.
+        let own = c.accept(&as_text(&own)).unwrap_or(own);
+        defaults.insert(c.path.to_string(), own.clone());
+        let v = match given.iter().find(|(p, _)| *p == c.path) {
+            Some((_, text)) => c.accept(text).unwrap_or_else(|e| {
+                refused.push(e);
+                own
+            }),
+            None => own,
+        };
+        sets.extend(c.sets(&v));
+        values.insert(c.path.to_string(), v);
+    }
+    let pairs: Vec<(&str, &str)> = sets.iter().map(|(p, v)| (*p, v.as_str())).collect();
+    let scenario = base.with_overrides(&pairs).map_err(|e| format!("lesson {}: {e}", l.name))?;
+    Ok(Opened { scenario, values, defaults, refused })
+}
+
+/// Explains a finished run of lesson `l` (`values`: the controls' values, as `open` gives them)
+/// by the lesson's own explainer.
+pub fn explain(l: &Lesson, values: &serde_json::Map<String, serde_json::Value>, run: &Run) -> Explanation {
+    let given = Given { values, sc: run.scenario.to_value() };
+    (l.explain)(&mut Book::new(run), &given)
+}
