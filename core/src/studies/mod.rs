@@ -29,6 +29,8 @@ macro_rules! for_each_study {
             $crate::studies::rare::RareEvents,
             $crate::studies::operability::study::OperabilityPolar,
             $crate::studies::fuel_per_mile::FuelPerMileStudy,
+            $crate::studies::storage_sizing::StorageSizing,
+            $crate::studies::stability_map::StabilityMapStudy,
         );
     };
 }
