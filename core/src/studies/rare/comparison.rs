@@ -105,3 +105,97 @@ pub fn paired(a: &[TrialRecord], b: &[TrialRecord]) -> Result<Paired, String> {
         .collect();
     Ok(Paired { trials: a.len(), consequences })
 }
+
+/// The definition of a comparison of two plants: the two studies (the second from [`with_plant`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PairedSpec {
+    pub first: RareSpec,
+    pub second: RareSpec,
+}
+
+/// One trial in both plants.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PairedRecord {
+    pub first: TrialRecord,
+    pub second: TrialRecord,
+}
+
+/// The JSON of `aes-sim rare --against`: both summaries and the paired consequences (the keys in
+/// this order, as the command has always printed them).
+#[derive(Debug, Clone, Serialize)]
+pub struct PairedSummary {
+    pub first: RareSummary,
+    pub paired: Paired,
+    pub second: RareSummary,
+}
+
+/// The same trials in two plants on the study pipeline: item i is trial i in each.
+pub struct RarePair {
+    spec: PairedSpec,
+    first: RareEvents,
+    second: RareEvents,
+}
+
+impl Study for RarePair {
+    const KIND: &'static str = "rare-against";
+    const ITEM: &'static str = "trial";
+    type Spec = PairedSpec;
+    type Shared = (Trials, Trials);
+    type Part = Vec<PairedRecord>;
+    type Summary = PairedSummary;
+
+    fn new(spec: PairedSpec) -> Result<RarePair, String> {
+        if spec.first.trials != spec.second.trials {
+            return Err("the two plants' studies must have as many trials".into());
+        }
+        let (first, second) = (RareEvents::new(spec.first.clone())?, RareEvents::new(spec.second.clone())?);
+        Ok(RarePair { spec, first, second })
+    }
+    fn spec(&self) -> &PairedSpec {
+        &self.spec
+    }
+    fn scenario(&self) -> &Scenario {
+        self.first.scenario()
+    }
+    fn items(&self) -> u64 {
+        self.first.items()
+    }
+    /// A trial in each plant.
+    fn item_work(&self) -> Option<f64> {
+        Some(trial_work(self.first.scenario()) + trial_work(self.second.scenario()))
+    }
+    /// Each plant's seakeeping tables are built as its trials ask (as before the pipeline).
+    fn needs_rao_table(&self) -> bool {
+        false
+    }
+    fn prepare(&self) -> Result<(Trials, Trials), String> {
+        Ok((self.first.prepare()?, self.second.prepare()?))
+    }
+    fn run(&self, (a, b): &(Trials, Trials), i: u64) -> Result<Vec<PairedRecord>, String> {
+        Ok(vec![PairedRecord { first: a.run(i)?, second: b.run(i)? }])
+    }
+    fn empty(&self) -> Vec<PairedRecord> {
+        Vec::new()
+    }
+    fn merge(&self, acc: &mut Vec<PairedRecord>, other: &Vec<PairedRecord>) -> Result<(), String> {
+        crate::studies::study::merge_records(acc, other, |t| t.first.trial, "trial")
+    }
+    /// Each plant's records as its own study checks them.
+    fn check_part(&self, part: &Vec<PairedRecord>, ranges: &[(u64, u64)]) -> Result<(), String> {
+        let (a, b) = split(part);
+        self.first.check_part(&a, ranges).map_err(|e| format!("first: {e}"))?;
+        self.second.check_part(&b, ranges).map_err(|e| format!("second: {e}"))
+    }
+    fn summary(&self, part: &Vec<PairedRecord>, ranges: &[(u64, u64)]) -> Result<PairedSummary, String> {
+        let (a, b) = split(part);
+        let (first, second) = (self.first.summary(&a, ranges)?, self.second.summary(&b, ranges)?);
+        Ok(PairedSummary { first, paired: paired(&a, &b)?, second })
+    }
+}
+
+/// A paired part as the two plants' records.
+fn split(part: &[PairedRecord]) -> (Vec<TrialRecord>, Vec<TrialRecord>) {
+    part.iter().map(|p| (p.first.clone(), p.second.clone())).unzip()
+}
