@@ -108,7 +108,7 @@ pub fn execute<S: Study>(
             );
         }
     }
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
+    let pool = pool(threads)?;
     // The seakeeping tables first, their parts on every thread (once, shared by every item): a
     // line on stderr if they take more than a second (a fine grid), so a long silence is
     // explained.
@@ -150,6 +150,11 @@ pub fn execute<S: Study>(
         return write_shard::<S>(&shard, out.as_ref());
     }
     finish((s, shard), cmd, out.as_ref(), emit)
+}
+
+/// The worker threads every study runs on: the one place a thread pool is built.
+pub fn pool(threads: usize) -> Result<rayon::ThreadPool, String> {
+    rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))
 }
 
 /// The items of `--trial-range` (all `items` without it), checked with the `--partial` it needs:

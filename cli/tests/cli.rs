@@ -593,3 +593,63 @@ fn rare_events_whole_sharded_and_replayed() {
     assert!(!ok && err.contains("sea.kind must be \"random\""), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `aes-sim storage-sizing`, `aes-sim stability-map` and `aes-sim rare --against` on the study
+/// pipeline: the whole study and two shards merged (by the command's `--merge` and by `aes-sim merge`) print the same bytes;
+/// storage sizing lacking a size is refused by name.
+#[test]
+fn storage_sizing_and_stability_map_shard_and_merge() {
+    let dir = std::env::temp_dir().join(format!("aes-sweeps-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let sizing =
+        ["storage-sizing", "--energy-mj", "25,100", "--power-mw", "5", "--duration-s", "20", "--json", "--quiet"];
+    let map = [
+        "stability-map",
+        "preset:acceleration",
+        "--set",
+        "initial.speed_kn=20",
+        "--set",
+        "commands.0.speed_kn=20",
+        "--x",
+        "plant.loads.ship_service_w=1e6:2e7:4",
+        "--y",
+        "plant.loads.filter_capacitance_f=0.01:0.04:3",
+        "--quiet",
+    ];
+    let against = [
+        "rare",
+        "preset:head-seas-ss6",
+        "--against",
+        "preset:head-seas-ss6-storage",
+        "--trials",
+        "4",
+        "--set",
+        "rare_event.time_s=20",
+        "--set",
+        "rare_event.window_s=5",
+        "--set",
+        "sim.duration_s=25",
+        "--quiet",
+    ];
+    // Storage sizing: the run without storage and two sizes; the map: three rows; four trials.
+    for (name, base, split, n) in
+        [("sizing", &sizing[..], "0..1", 3), ("map", &map[..], "0..2", 3), ("against", &against[..], "0..2", 4)]
+    {
+        let (ok, whole, err) = aes_sim(base);
+        assert!(ok, "{name}: {err}");
+        let (a, b) = (dir.join(format!("{name}-a.json")), dir.join(format!("{name}-b.json")));
+        let rest = format!("{}..{n}", split.split_once("..").unwrap().1);
+        for (range, file) in [(split, &a), (rest.as_str(), &b)] {
+            let (ok, _, err) =
+                aes_sim(&[base, &["--trial-range", range, "--partial", file.to_str().unwrap()]].concat());
+            assert!(ok, "{name} {range}: {err}");
+        }
+        let (ok, merged, err) = aes_sim(&[base, &["--merge", b.to_str().unwrap(), a.to_str().unwrap()]].concat());
+        assert!(ok && merged == whole, "{name}: {err}");
+        let (ok, merged, err) = aes_sim(&["merge", a.to_str().unwrap(), b.to_str().unwrap()]);
+        assert!(ok && merged == whole, "{name}: {err}");
+    }
+    let (ok, _, err) = aes_sim(&["merge", dir.join("sizing-a.json").to_str().unwrap()]);
+    assert!(!ok && err.contains("the study lacks sizes 1..3 (of 3)"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -45,7 +45,7 @@ pub struct Args {
     /// head-seas-ss6). Every trial runs in both plants through the same conditioned sea; prints both
     /// summaries and the consequences trial by trial (the second minus the first, with 95 %
     /// intervals).
-    #[arg(long, value_name = "FILE", conflicts_with_all = ["range", "merge", "partial", "brute_force"])]
+    #[arg(long, value_name = "FILE", conflicts_with = "brute_force")]
     against: Option<String>,
     /// Override one parameter (repeatable; applied to both scenarios with --against).
     #[arg(long = "set", value_name = "PATH=VALUE")]
@@ -122,7 +122,13 @@ pub fn run(a: Args) -> Result<(), Failure> {
         let other_sc = load(other, &a.sets)?;
         let spec_b =
             rare::with_plant(&spec, &raw, &other_sc).map_err(|e| format!("--against {}: {e}", shorten(other)))?;
-        return compare_plants(spec, spec_b, a.shards.threads, a.shards.allow_long);
+        // The same trials in two plants: a study of its own on the pipeline (its estimate, its
+        // shards), both summaries and the paired consequences.
+        let pair = rare::RarePair::new(rare::PairedSpec { first: spec, second: spec_b })?;
+        return execute(pair, &a.shards, "rare", &a.file, |_, s| {
+            aes_core::checks::check_finite(s)?;
+            emit_json(s)
+        });
     }
     let study = RareEvents::new(spec)?;
     let brute_force = a.brute_force;
@@ -131,33 +137,6 @@ pub fn run(a: Args) -> Result<(), Failure> {
         None => emit_json(summary),
         Some(hours) => compare_brute_force(study, summary, hours, threads),
     })
-}
-
-/// The same trials in two plants (`--against`): both summaries and the paired consequences.
-fn compare_plants(a: RareSpec, b: RareSpec, threads: Option<usize>, allow_long: bool) -> Result<(), Failure> {
-    let (study_a, study_b) = (RareEvents::new(a)?, RareEvents::new(b)?);
-    let n = crate::study::threads(threads, "rare");
-    let trials = study_a.items();
-    use aes_core::studies::study::{wall_estimate_s, Platform};
-    let work = trials as f64 * (rare::trial_work(study_a.scenario()) + rare::trial_work(study_b.scenario()));
-    crate::study::check_budget(
-        "rare",
-        &format!("{trials} trials in each of two plants"),
-        wall_estimate_s(1, work, n, Platform::Native),
-        n,
-        allow_long,
-    )?;
-    let (ta, tb) = (rare::Trials { sc: study_a.scenario().clone() }, rare::Trials { sc: study_b.scenario().clone() });
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(n).build().map_err(|e| format!("--threads: {e}"))?;
-    let pairs = pool.install(|| {
-        use rayon::prelude::*;
-        (0..trials).into_par_iter().map(|i| Ok((ta.run(i)?, tb.run(i)?))).collect::<Result<Vec<_>, String>>()
-    })?;
-    let (ra, rb): (Vec<_>, Vec<_>) = pairs.into_iter().unzip();
-    let (sa, sb) = (study_a.summary(&ra, &[(0, trials)])?, study_b.summary(&rb, &[(0, trials)])?);
-    let paired = rare::paired(&ra, &rb)?;
-    aes_core::checks::check_finite(&(&sa, &sb, &paired))?;
-    emit_json(&serde_json::json!({ "first": sa, "second": sb, "paired": paired }))
 }
 
 /// The brute-force runs for `hours` of sea and each one's length [s]: long enough to hold the
@@ -179,7 +158,7 @@ fn compare_brute_force(
 ) -> Result<(), Failure> {
     let trial_sc = &study.spec().scenario;
     let threads = crate::study::threads(threads, "rare");
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
+    let pool = crate::study::pool(threads)?;
     let (runs, run_s) = brute_force_runs(trial_sc, hours);
     let brute = pool.install(|| -> Result<rare::BruteForce, String> {
         use rayon::prelude::*;

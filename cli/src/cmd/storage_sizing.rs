@@ -1,8 +1,12 @@
 //! `aes-sim storage-sizing`: how big a storage the scenario's seaway needs (thesis ch. 5.2.2,
-//! 6.1; core/src/studies/storage_sizing.rs): one run per storage size beside the run without.
+//! 6.1; core/src/studies/storage_sizing.rs): one run per storage size beside the run without,
+//! whole or one shard of it (the study pipeline's flags: `--trial-range` over the sizes, item 0
+//! the run without storage).
 
 use crate::common::{emit, emit_json, load, shorten, Failure};
-use aes_core::studies::storage_sizing::{self, Cell, Sizing};
+use crate::study::{execute, ShardArgs};
+use aes_core::studies::storage_sizing::{Cell, Sizing, StorageSizing, StorageSizingSpec};
+use aes_core::studies::study::Study;
 
 // The command line of `aes-sim storage-sizing`.
 #[derive(clap::Args)]
@@ -21,15 +25,11 @@ pub struct Args {
     /// settles about its set point and the cycling is counted over many wave groups.
     #[arg(long = "duration-s", default_value_t = 600.0)]
     duration_s: f64,
-    /// Worker threads (default: all cores). The numbers do not depend on it.
-    #[arg(long)]
-    threads: Option<usize>,
     /// Print the study as JSON (every size's measures and warnings).
     #[arg(long)]
     json: bool,
-    /// Run a study estimated to take longer than an hour on its threads (refused without it).
-    #[arg(long)]
-    allow_long: bool,
+    #[command(flatten)]
+    shards: ShardArgs,
     /// Override one parameter (repeatable), e.g. `--set plant.loads.pulse_power_w=5e6`.
     #[arg(long = "set", value_name = "PATH=VALUE")]
     sets: Vec<String>,
@@ -50,33 +50,18 @@ pub fn run(a: Args) -> Result<(), Failure> {
     let mut sc = load(&a.file, &a.sets)?;
     sc.sim.duration_s = a.duration_s;
     sc.validate().map_err(|e| format!("--duration-s: {e}"))?;
-    let energies = list("--energy-mj", &a.energy_mj, 1e6)?;
-    let powers = list("--power-mw", &a.power_mw, 1e6)?;
-    let mut runs = vec![storage_sizing::without(&sc)];
-    runs.extend(storage_sizing::sizes(&sc, &energies, &powers)?);
-    let threads = crate::study::threads(a.threads, "storage-sizing");
-    let work: f64 = runs.iter().map(|s| s.work()).sum();
-    use aes_core::studies::study::{wall_estimate_s, Platform};
-    crate::study::check_budget(
-        "storage-sizing",
-        &format!("{} runs of {} s", runs.len(), aes_core::checks::num(a.duration_s)),
-        wall_estimate_s(1, work, threads, Platform::Native),
-        threads,
-        a.allow_long,
-    )?;
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| format!("--threads: {e}"))?;
-    let mut cells = pool.install(|| {
-        use rayon::prelude::*;
-        runs.par_iter().map(storage_sizing::run_cell).collect::<Result<Vec<_>, _>>()
-    })?;
-    let without = cells.remove(0);
-    let s = Sizing { scenario: sc.name.clone(), duration_s: sc.sim.duration_s, without, cells };
-    if a.json {
-        emit_json(&s)
-    } else {
-        aes_core::checks::check_finite(&s)?;
-        emit(&table(&s))
-    }
+    let energies_j = list("--energy-mj", &a.energy_mj, 1e6)?;
+    let powers_w = list("--power-mw", &a.power_mw, 1e6)?;
+    let study = StorageSizing::new(StorageSizingSpec { scenario: sc, energies_j, powers_w })?;
+    let json = a.json;
+    execute(study, &a.shards, "storage-sizing", &a.file, |_, s| {
+        if json {
+            emit_json(s)
+        } else {
+            aes_core::checks::check_finite(s)?;
+            emit(&table(s))
+        }
+    })
 }
 
 /// One row of the table.

@@ -27,8 +27,11 @@ macro_rules! for_each_study {
         $m!(
             $crate::studies::montecarlo::MonteCarlo,
             $crate::studies::rare::RareEvents,
+            $crate::studies::rare::RarePair,
             $crate::studies::operability::study::OperabilityPolar,
             $crate::studies::fuel_per_mile::FuelPerMileStudy,
+            $crate::studies::storage_sizing::StorageSizing,
+            $crate::studies::stability_map::StabilityMapStudy,
         );
     };
 }

@@ -17,9 +17,10 @@
 use crate::scenario::{BusParts, Scenario};
 use crate::sim::plant::{part_slot, slot, Outputs, NX, N_SETS, N_SHAFTS, SURGE};
 use crate::sim::Simulation;
+use crate::studies::study::{merge_records, records_of, Study};
 use nalgebra::DMatrix;
 use num_complex::Complex64;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// Relative step of the central differences.
 const STEP: f64 = 1e-6;
@@ -121,7 +122,8 @@ pub fn linearize(sc: &Scenario) -> Result<BusModel, String> {
 }
 
 /// One axis of a map: a scenario number by its path and the values it takes.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Axis {
     pub path: String,
     pub values: Vec<f64>,
@@ -206,41 +208,144 @@ pub fn check_grid(x: &Axis, y: &Axis) -> Result<(), String> {
     Ok(())
 }
 
-/// The map of `sc` over `x` and `y`. Each row (a y value) is computed alone: the map of a part
-/// of `y`'s values is that part of the whole map's rows, bit for bit.
+/// Most failures a map lists (and a row keeps).
+const MAX_FAILURES: usize = 10;
+
+/// The map of `sc` over `x` and `y`: its rows (y values) one after another on the study pipeline
+/// ([`StabilityMapStudy`]). Each row is computed alone: the map of a part of `y`'s values is that
+/// part of the whole map's rows, bit for bit.
 pub fn map(sc: &Scenario, x: &Axis, y: &Axis) -> Result<StabilityMap, String> {
-    check_grid(x, y)?;
-    let (mut abscissa, mut least_damped_hz, mut boundary_x, mut failures) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    for &yv in &y.values {
-        let models: Vec<Option<BusModel>> = x
-            .values
-            .iter()
-            .map(|&xv| match set(sc, &x.path, xv).and_then(|s| set(&s, &y.path, yv)).and_then(|s| linearize(&s)) {
-                Ok(m) => Some(m),
-                Err(e) => {
-                    if failures.len() < 10 {
-                        failures.push(format!("{} = {xv}, {} = {yv}: {e}", x.path, y.path));
-                    }
-                    None
+    let spec = StabilityMapSpec { scenario: sc.clone(), x: x.clone(), y: y.clone() };
+    crate::studies::study::run_all(&StabilityMapStudy::new(spec)?)
+}
+
+/// One row of a map (a y value): its cells, its boundary and its first failures.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MapRow {
+    /// The row's index among the y values.
+    pub item: u64,
+    pub abscissa: Vec<Option<f64>>,
+    pub least_damped_hz: Vec<Option<f64>>,
+    pub boundary_x: Option<f64>,
+    pub failures: Vec<String>,
+}
+
+/// Row `j` of the map of `sc` over `x` and `y`.
+fn map_row(sc: &Scenario, x: &Axis, y: &Axis, j: usize) -> MapRow {
+    let yv = y.values[j];
+    let mut failures = Vec::new();
+    let models: Vec<Option<BusModel>> = x
+        .values
+        .iter()
+        .map(|&xv| match set(sc, &x.path, xv).and_then(|s| set(&s, &y.path, yv)).and_then(|s| linearize(&s)) {
+            Ok(m) => Some(m),
+            Err(e) => {
+                if failures.len() < MAX_FAILURES {
+                    failures.push(format!("{} = {xv}, {} = {yv}: {e}", x.path, y.path));
                 }
-            })
-            .collect();
-        let row: Vec<Option<f64>> = models.iter().map(|m| m.as_ref().map(|m| m.spectral_abscissa)).collect();
-        least_damped_hz.push(models.iter().map(|m| m.as_ref().map(|m| m.least_damped_hz)).collect());
-        // The first change of sign along the row, bisected between its two cells (the abscissa
-        // is a slow mode's until the unstable one overtakes it: not linear between cells).
-        let cross = row.windows(2).zip(x.values.windows(2)).find_map(|(a, xs)| match (a[0], a[1]) {
-            (Some(a0), Some(a1)) if (a0 < 0.0) != (a1 < 0.0) => {
-                let (lo, hi) = if a0 < 0.0 { (xs[0], xs[1]) } else { (xs[1], xs[0]) };
-                bisect_boundary(sc, &x.path, lo, hi, (&y.path, yv), 40).ok()
+                None
             }
-            _ => None,
-        });
-        abscissa.push(row);
-        boundary_x.push(cross);
+        })
+        .collect();
+    let row: Vec<Option<f64>> = models.iter().map(|m| m.as_ref().map(|m| m.spectral_abscissa)).collect();
+    let least_damped_hz = models.iter().map(|m| m.as_ref().map(|m| m.least_damped_hz)).collect();
+    // The first change of sign along the row, bisected between its two cells (the abscissa
+    // is a slow mode's until the unstable one overtakes it: not linear between cells).
+    let boundary_x = row.windows(2).zip(x.values.windows(2)).find_map(|(a, xs)| match (a[0], a[1]) {
+        (Some(a0), Some(a1)) if (a0 < 0.0) != (a1 < 0.0) => {
+            let (lo, hi) = if a0 < 0.0 { (xs[0], xs[1]) } else { (xs[1], xs[0]) };
+            bisect_boundary(sc, &x.path, lo, hi, (&y.path, yv), 40).ok()
+        }
+        _ => None,
+    });
+    MapRow { item: j as u64, abscissa: row, least_damped_hz, boundary_x, failures }
+}
+
+/// The definition of a map: the scenario and its two axes.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StabilityMapSpec {
+    pub scenario: Scenario,
+    pub x: Axis,
+    pub y: Axis,
+}
+
+/// The stability map on the study pipeline: item j is the row of the j-th y value.
+pub struct StabilityMapStudy {
+    spec: StabilityMapSpec,
+}
+
+impl Study for StabilityMapStudy {
+    const KIND: &'static str = "stability-map";
+    const ITEM: &'static str = "row";
+    type Spec = StabilityMapSpec;
+    type Shared = ();
+    type Part = Vec<MapRow>;
+    type Summary = StabilityMap;
+
+    /// The grid's size checked (the command line checks each axis first with [`Axis::checked`];
+    /// a cell the scenario refuses is a failure of the map, as before the pipeline).
+    fn new(spec: StabilityMapSpec) -> Result<StabilityMapStudy, String> {
+        check_grid(&spec.x, &spec.y)?;
+        Ok(StabilityMapStudy { spec })
     }
-    Ok(StabilityMap { x: x.clone(), y: y.clone(), abscissa, least_damped_hz, boundary_x, failures })
+    fn spec(&self) -> &StabilityMapSpec {
+        &self.spec
+    }
+    fn scenario(&self) -> &Scenario {
+        &self.spec.scenario
+    }
+    fn items(&self) -> u64 {
+        self.spec.y.values.len() as u64
+    }
+    /// Linearisations, not runs: no seakeeping table.
+    fn needs_rao_table(&self) -> bool {
+        false
+    }
+    fn prepare(&self) -> Result<(), String> {
+        Ok(())
+    }
+    fn run(&self, _: &(), i: u64) -> Result<Vec<MapRow>, String> {
+        Ok(vec![map_row(&self.spec.scenario, &self.spec.x, &self.spec.y, i as usize)])
+    }
+    fn empty(&self) -> Vec<MapRow> {
+        Vec::new()
+    }
+    fn merge(&self, acc: &mut Vec<MapRow>, other: &Vec<MapRow>) -> Result<(), String> {
+        merge_records(acc, other, |r| r.item, Self::ITEM)
+    }
+    /// One row per item of the ranges, each as wide as the x axis.
+    fn check_part(&self, part: &Vec<MapRow>, ranges: &[(u64, u64)]) -> Result<(), String> {
+        let n = self.spec.x.values.len();
+        for (r, i) in records_of(part, ranges, |r| r.item, Self::ITEM)? {
+            if r.abscissa.len() != n || r.least_damped_hz.len() != n || r.failures.len() > MAX_FAILURES {
+                return Err(format!("row {i}: need {n} cells and at most {MAX_FAILURES} failures"));
+            }
+        }
+        Ok(())
+    }
+    /// The rows merged so far (a map lacking rows lacks them in its y axis too), the first
+    /// failures in row order.
+    fn summary(&self, part: &Vec<MapRow>, _: &[(u64, u64)]) -> Result<StabilityMap, String> {
+        let y = &self.spec.y;
+        let mut m = StabilityMap {
+            x: self.spec.x.clone(),
+            y: Axis { path: y.path.clone(), values: part.iter().map(|r| y.values[r.item as usize]).collect() },
+            abscissa: Vec::new(),
+            least_damped_hz: Vec::new(),
+            boundary_x: Vec::new(),
+            failures: Vec::new(),
+        };
+        for r in part {
+            m.abscissa.push(r.abscissa.clone());
+            m.least_damped_hz.push(r.least_damped_hz.clone());
+            m.boundary_x.push(r.boundary_x);
+            m.failures.extend(r.failures.iter().cloned());
+        }
+        m.failures.truncate(MAX_FAILURES);
+        Ok(m)
+    }
 }
 
 /// The x of the boundary at `y` between `lo` (stable) and `hi` (unstable), by bisection on the

@@ -8,11 +8,16 @@
 //! Every cell is the scenario's own run with `plant.storage.energy_j` and `power_w` set (the
 //! other storage fields as the scenario has them), the whole run measured: the sizes compare on
 //! one sea (the scenario's seed), as a design sweep should.
+//!
+//! On the study pipeline ([`StorageSizing`]): item 0 is the run without storage, item k the k-th
+//! size (energies outer, powers inner); a part keeps each item's cell, so shards merge to the
+//! bits of one run.
 
 use crate::scenario::Scenario;
 use crate::signals::Signal;
 use crate::sim::RunResult;
-use serde::Serialize;
+use crate::studies::study::{merge_records, records_of, Study};
+use serde::{Deserialize, Serialize};
 
 /// Most storage sizes in one study (each a run of the scenario).
 pub const MAX_SIZES: usize = 100;
@@ -21,7 +26,8 @@ pub const MAX_SIZES: usize = 100;
 pub const AT_RATING: f64 = 0.99;
 
 /// One run's measures.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Cell {
     /// Storage energy on each bus \[J\] (0: no storage).
     pub energy_j: f64,
@@ -66,7 +72,7 @@ pub struct Cell {
 }
 
 /// The study: the run without storage, then every size.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Sizing {
     pub scenario: String,
     pub duration_s: f64,
@@ -181,9 +187,108 @@ pub fn run_cell(sc: &Scenario) -> Result<Cell, String> {
     Ok(measure(sc, &r))
 }
 
-/// The whole study on one thread (the command line spreads the cells over threads with
-/// [`sizes`] and [`run_cell`]).
+/// The whole study, one item after another (the command line spreads the items over threads,
+/// with the same result).
 pub fn run(sc: &Scenario, energies_j: &[f64], powers_w: &[f64]) -> Result<Sizing, String> {
-    let cells = sizes(sc, energies_j, powers_w)?.iter().map(run_cell).collect::<Result<Vec<_>, _>>()?;
-    Ok(Sizing { scenario: sc.name.clone(), duration_s: sc.sim.duration_s, without: run_cell(&without(sc))?, cells })
+    let spec = StorageSizingSpec { scenario: sc.clone(), energies_j: energies_j.to_vec(), powers_w: powers_w.to_vec() };
+    crate::studies::study::run_all(&StorageSizing::new(spec)?)
+}
+
+/// The definition: the scenario (its run length included) and the sizes on each bus.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StorageSizingSpec {
+    pub scenario: Scenario,
+    pub energies_j: Vec<f64>,
+    pub powers_w: Vec<f64>,
+}
+
+/// One item's cell.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SizeRecord {
+    pub item: u64,
+    pub cell: Cell,
+}
+
+/// Storage sizing on the study pipeline.
+pub struct StorageSizing {
+    spec: StorageSizingSpec,
+    /// Item k's scenario: the run without storage, then the sizes.
+    runs: Vec<Scenario>,
+}
+
+impl StorageSizing {
+    /// The energy and power of item `i` (0 and 0 for the run without storage).
+    fn size_of(&self, i: u64) -> (f64, f64) {
+        match i.checked_sub(1) {
+            None => (0.0, 0.0),
+            Some(k) => {
+                let p = self.spec.powers_w.len() as u64;
+                (self.spec.energies_j[(k / p) as usize], self.spec.powers_w[(k % p) as usize])
+            }
+        }
+    }
+}
+
+impl Study for StorageSizing {
+    const KIND: &'static str = "storage-sizing";
+    const ITEM: &'static str = "size";
+    type Spec = StorageSizingSpec;
+    type Shared = ();
+    type Part = Vec<SizeRecord>;
+    type Summary = Sizing;
+
+    fn new(spec: StorageSizingSpec) -> Result<StorageSizing, String> {
+        spec.scenario.validate().map_err(|e| format!("its scenario is not valid: {e}"))?;
+        let mut runs = vec![without(&spec.scenario)];
+        runs.extend(sizes(&spec.scenario, &spec.energies_j, &spec.powers_w)?);
+        Ok(StorageSizing { spec, runs })
+    }
+    fn spec(&self) -> &StorageSizingSpec {
+        &self.spec
+    }
+    fn scenario(&self) -> &Scenario {
+        &self.spec.scenario
+    }
+    fn items(&self) -> u64 {
+        self.runs.len() as u64
+    }
+    /// The runs' mean work (a storage adds states): the estimate of the whole study is their sum.
+    fn item_work(&self) -> Option<f64> {
+        Some(self.runs.iter().map(|s| s.work()).sum::<f64>() / self.runs.len() as f64)
+    }
+    fn prepare(&self) -> Result<(), String> {
+        Ok(())
+    }
+    fn run(&self, _: &(), i: u64) -> Result<Vec<SizeRecord>, String> {
+        Ok(vec![SizeRecord { item: i, cell: run_cell(&self.runs[i as usize])? }])
+    }
+    fn empty(&self) -> Vec<SizeRecord> {
+        Vec::new()
+    }
+    fn merge(&self, acc: &mut Vec<SizeRecord>, other: &Vec<SizeRecord>) -> Result<(), String> {
+        merge_records(acc, other, |r| r.item, Self::ITEM)
+    }
+    /// One cell per item of the ranges, each of its item's size.
+    fn check_part(&self, part: &Vec<SizeRecord>, ranges: &[(u64, u64)]) -> Result<(), String> {
+        for (r, i) in records_of(part, ranges, |r| r.item, Self::ITEM)? {
+            let (e, p) = self.size_of(i);
+            if r.cell.energy_j.to_bits() != e.to_bits() || r.cell.power_w.to_bits() != p.to_bits() {
+                return Err(format!("size {i}: its cell is not of this size ({e} J, {p} W)"));
+            }
+        }
+        Ok(())
+    }
+    /// Needs every size: the table compares each with the run without storage.
+    fn summary(&self, part: &Vec<SizeRecord>, ranges: &[(u64, u64)]) -> Result<Sizing, String> {
+        let lacking = crate::studies::study::missing(ranges, self.items());
+        if let Some((a, b)) = lacking.first() {
+            return Err(format!("the study lacks sizes {a}..{b} (of {}): merge every shard", self.items()));
+        }
+        let mut cells: Vec<Cell> = part.iter().map(|r| r.cell.clone()).collect();
+        let without = cells.remove(0);
+        let sc = &self.spec.scenario;
+        Ok(Sizing { scenario: sc.name.clone(), duration_s: sc.sim.duration_s, without, cells })
+    }
 }
