@@ -10,7 +10,7 @@ use serde::Serialize;
 /// The studies compared, by preset name.
 pub const STUDIES: &[&str] = &["acceleration", "ac-braking", "head-seas-ss6"];
 
-/// Half-width of the band around the set point that counts as recovered [per unit].
+/// Half-width of the band around the set point that counts as recovered \[per unit\].
 pub const RECOVERY_BAND: f64 = 0.01;
 
 /// One run's figures.
@@ -19,7 +19,7 @@ pub struct ControllerRun {
     pub study: String,
     /// "pi" or "lqg_ltr".
     pub controller: ControllerDesign,
-    /// Lowest and highest turbine speed [per unit of rated].
+    /// Lowest and highest turbine speed \[per unit of rated\].
     pub turbine_speed_min_pu: f64,
     pub turbine_speed_max_pu: f64,
     /// Lowest and highest bus voltage [per unit of the set point].

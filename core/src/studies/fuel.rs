@@ -4,7 +4,7 @@
 use crate::plant::fuel::{fuel_power, part_load_curve};
 use std::ops::RangeInclusive;
 
-/// Wave frequencies the study takes [rad/s] (the RAO table's span and more), and how many at once
+/// Wave frequencies the study takes \[rad/s\] (the RAO table's span and more), and how many at once
 /// (each is ten steady states).
 pub const OMEGA_RANGE_RAD_S: RangeInclusive<f64> = 0.1..=5.0;
 pub const MAX_OMEGAS: usize = 200;

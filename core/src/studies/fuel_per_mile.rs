@@ -15,7 +15,7 @@ use crate::studies::stats::{trial_seed, ExactMoments};
 use crate::studies::study::Study;
 use serde::{Deserialize, Serialize};
 
-/// Lower heating value of marine gas oil [J/kg]: 42.7 MJ/kg (ISO 8217 DMA distillate, the usual
+/// Lower heating value of marine gas oil \[J/kg\]: 42.7 MJ/kg (ISO 8217 DMA distillate, the usual
 /// figure for gas turbine fuel; the thesis gives fuel as power, not mass).
 pub const LHV_J_PER_KG: f64 = 42.7e6;
 /// One nautical mile \[m\].

@@ -17,13 +17,13 @@ use crate::ship::hull::N_SHAFTS;
 use crate::sim::plant::{Held, HullModel, Plant, State, HEADING, NX, SURGE, SWAY, X_POS, YAW_RATE, Y_POS};
 use serde::Serialize;
 
-/// Time step of the maneuvers [s] (the hull's slowest motions take tens of seconds).
+/// Time step of the maneuvers \[s\] (the hull's slowest motions take tens of seconds).
 const DT_S: f64 = 0.1;
-/// Longest maneuver [s].
+/// Longest maneuver \[s\].
 const MAX_S: f64 = 1800.0;
 /// Hard-over rudder of the turning circle \[deg\] (IMO).
 pub const TURNING_RUDDER_DEG: f64 = 35.0;
-/// Coasting stops at this speed [kn].
+/// Coasting stops at this speed \[kn\].
 const STOPPED_KN: f64 = 5.0;
 
 /// One sample of a maneuver: time \[s\], position \[m\] (north, east), heading \[deg\], speed \[kn\],
@@ -45,7 +45,7 @@ pub struct Turning {
     pub transfer_m: f64,
     pub tactical_diameter_m: f64,
     pub steady_diameter_m: f64,
-    /// Steady speed over the approach speed [-].
+    /// Steady speed over the approach speed \[-\].
     pub speed_ratio: f64,
     pub steady_yaw_rate_deg_s: f64,
     pub track: Vec<Sample>,
@@ -122,8 +122,8 @@ impl Trial {
         N_SHAFTS as f64 * self.plant.propeller_load(self.omega, inflow.speed).thrust_n
     }
 
-    /// Runs from straight running at the approach speed; `order(t, heading change [deg],
-    /// speed [m/s])` gives the rudder order [rad, positive to starboard] or None to stop.
+    /// Runs from straight running at the approach speed; `order(t, heading change \[deg\],
+    /// speed \[m/s\])` gives the rudder order [rad, positive to starboard] or None to stop.
     fn run(&self, propelled: bool, mut order: impl FnMut(f64, f64, f64) -> Option<f64>) -> Vec<Sample> {
         let mut x: State = [0.0; NX];
         x[SURGE] = self.u0;

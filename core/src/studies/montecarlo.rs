@@ -385,7 +385,7 @@ impl Partial {
     }
 }
 
-/// Energy of one motor over a trace [J] (trapezoid over the recorded rows of `im_power_pu`).
+/// Energy of one motor over a trace \[J\] (trapezoid over the recorded rows of `im_power_pu`).
 fn motor_energy(sc: &Scenario, pu: &[f64], dt: f64) -> f64 {
     let p = sc.plant.motor.rated_power_w;
     pu.windows(2).map(|w| 0.5 * (w[0] + w[1]) * p * dt).sum()

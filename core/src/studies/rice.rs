@@ -120,7 +120,7 @@ pub fn rice_summary(sc: &Scenario) -> Result<Option<RiceSummary>, String> {
 }
 
 /// Rice's prediction (eqs. 5.1-5.3) of the first surface effect on either shaft: the level Z \[m\]
-/// the hubs' motion must rise above (h/R below `threshold_h_over_r`), the rate [1/s] of the
+/// the hubs' motion must rise above (h/R below `threshold_h_over_r`), the rate \[1/s\] of the
 /// union of the two hubs' up-crossings, its mean arrival 1/rate \[s\] and the mean of
 /// min(arrival, cap) an exponential arrival gives censored at the run's duration \[s\]; the upper
 /// bound by the sum of the two rates; and each hub's own prediction.
@@ -149,7 +149,7 @@ pub struct RiceSummary {
 }
 
 /// Rice's prediction for one hub alone: its offset to port \[m\], its depth spectrum's moments
-/// M0 [m^2] and M2 [m^2/s^2] (in the encounter frequency), the up-crossing rate of eq. 5.3 [1/s],
+/// M0 \[m^2\] and M2 \[m^2/s^2\] (in the encounter frequency), the up-crossing rate of eq. 5.3 \[1/s\],
 /// 1/rate and the censored mean \[s\].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RiceHub {

@@ -37,9 +37,9 @@ use std::f64::consts::PI;
 
 /// The sea states of the schedule (Table 2.4).
 pub const SEA_STATES: [u32; 5] = [2, 3, 4, 5, 6];
-/// Frequencies of the spectral sums [-].
+/// Frequencies of the spectral sums \[-\].
 const N_OMEGA: usize = 120;
-/// The step of added resistance for dP/dR, share of the calm-water thrust power's force [-].
+/// The step of added resistance for dP/dR, share of the calm-water thrust power's force \[-\].
 const SENSITIVITY_STEP: f64 = 0.05;
 
 /// The sea's slowly varying added resistance in head seas at one speed (Newman's approximation).
@@ -47,11 +47,11 @@ const SENSITIVITY_STEP: f64 = 0.05;
 pub struct SlowDrift {
     /// Mean added resistance R \[N\].
     pub mean_n: f64,
-    /// Rms bandwidth beta of the envelope's spectrum in encounter frequency [rad/s].
+    /// Rms bandwidth beta of the envelope's spectrum in encounter frequency \[rad/s\].
     pub bandwidth_rad_s: f64,
 }
 
-/// The mean and bandwidth of the slowly varying added resistance at ship speed `u` [m/s] in sea
+/// The mean and bandwidth of the slowly varying added resistance at ship speed `u` \[m/s\] in sea
 /// state `state`, long-crested head seas, from the RAO table's mean force per amplitude squared.
 pub fn slow_drift(sc: &Scenario, table: &crate::sea::seakeeping::tables::RaoTable, u: f64, state: u32) -> SlowDrift {
     let (wn, h) = sea_state(state).unwrap_or((0.507, 5.0));
@@ -82,7 +82,7 @@ pub fn slow_drift(sc: &Scenario, table: &crate::sea::seakeeping::tables::RaoTabl
     SlowDrift { mean_n: m0, bandwidth_rad_s: (m2 / m0 - (m1 / m0) * (m1 / m0)).max(0.0).sqrt() }
 }
 
-/// Rice's up-crossing rate [1/s] of level `f` \[N\] by Newman's slowly varying force of `drift`
+/// Rice's up-crossing rate \[1/s\] of level `f` \[N\] by Newman's slowly varying force of `drift`
 /// (the squared envelope of a Gaussian process): beta sqrt(x / pi) e^{-x}, x = f / R.
 pub fn upcrossing_rate(drift: &SlowDrift, f: f64) -> f64 {
     if drift.mean_n <= 0.0 || f <= 0.0 {
@@ -92,7 +92,7 @@ pub fn upcrossing_rate(drift: &SlowDrift, f: f64) -> f64 {
     drift.bandwidth_rad_s * (x / PI).sqrt() * libm::exp(-x)
 }
 
-/// Chance of at least one up-crossing in `window_s` \[s\] at rate `nu` [1/s].
+/// Chance of at least one up-crossing in `window_s` \[s\] at rate `nu` \[1/s\].
 pub fn chance_in(nu: f64, window_s: f64) -> f64 {
     if nu.is_infinite() {
         1.0
@@ -110,11 +110,11 @@ pub struct Candidate {
     /// None: the sets cannot drive this speed (throttle past full, or the motors' limit).
     pub turbine_power_w: Option<f64>,
     pub fuel_power_w: Option<f64>,
-    /// Least load of a set [pu of rating].
+    /// Least load of a set \[pu of rating\].
     pub load_pu: Option<f64>,
-    /// dP/dR at the point [W/N].
+    /// dP/dR at the point \[W/N\].
     pub sensitivity_w_per_n: Option<f64>,
-    /// Chance of an overload in the reserve window [-].
+    /// Chance of an overload in the reserve window \[-\].
     pub overload_chance: Option<f64>,
     /// Whether each set carries at least the minimum load (one set always may).
     pub min_load_ok: bool,
@@ -131,11 +131,11 @@ pub struct Cell {
     /// The chosen number of sets online (None: not even four drive this speed).
     pub count: Option<usize>,
     pub fuel_power_w: Option<f64>,
-    /// Fuel energy per nautical mile [J/nmi].
+    /// Fuel energy per nautical mile \[J/nmi\].
     pub fuel_per_nmi_j: Option<f64>,
     /// All four online.
     pub fuel_power_four_w: Option<f64>,
-    /// (four - chosen) / four [-].
+    /// (four - chosen) / four \[-\].
     pub saving: Option<f64>,
     /// The reserve, not fuel, decides: fewer sets would burn less but overload too often.
     pub reserve_decides: bool,
@@ -175,8 +175,8 @@ pub fn speeds(sc: &Scenario) -> Vec<f64> {
     v
 }
 
-/// The steady state of `sets` at `speed_kn` with added resistance `r` [N]: each set's shaft power
-/// [W], or None when the sets cannot drive it.
+/// The steady state of `sets` at `speed_kn` with added resistance `r` \[N\]: each set's shaft power
+/// \[W\], or None when the sets cannot drive it.
 fn steady_power(sc: &Scenario, sets: &[u32], speed_kn: f64, r: f64) -> Option<Vec<f64>> {
     let mut calm = sc.clone();
     calm.sea.kind = SeaKind::Calm;

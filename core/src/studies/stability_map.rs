@@ -37,12 +37,12 @@ pub const MAX_AXIS_VALUES: usize = 200;
 pub struct BusModel {
     /// State names, in the order of the matrix.
     pub states: Vec<String>,
-    /// dz/dt = A z with z each state over its scale (its steady value, at least 1) [1/s].
+    /// dz/dt = A z with z each state over its scale (its steady value, at least 1) \[1/s\].
     #[serde(skip)]
     pub a: DMatrix<f64>,
-    /// Eigenvalues [1/s], real and imaginary parts.
+    /// Eigenvalues \[1/s\], real and imaginary parts.
     pub eigenvalues: Vec<[f64; 2]>,
-    /// The largest real part [1/s]: negative where the plant is stable.
+    /// The largest real part \[1/s\]: negative where the plant is stable.
     pub spectral_abscissa: f64,
     /// The frequency of the least damped mode \[Hz\].
     pub least_damped_hz: f64,
@@ -169,7 +169,7 @@ impl Axis {
 pub struct StabilityMap {
     pub x: Axis,
     pub y: Axis,
-    /// Spectral abscissa [1/s] of each cell, a row per y value (None where the steady state or the
+    /// Spectral abscissa \[1/s\] of each cell, a row per y value (None where the steady state or the
     /// model failed, with the reason in `failures`).
     pub abscissa: Vec<Vec<Option<f64>>>,
     /// The frequency \[Hz\] of each cell's least damped mode (the one whose real part is the

@@ -275,12 +275,12 @@ impl ExactMoments {
         }
     }
 
-    /// Raw moment E[x^k] (k = 1..4).
+    /// Raw moment E\[x^k\] (k = 1..4).
     fn raw(&self, k: usize) -> f64 {
         self.sums[k - 1] as f64 / self.n.max(1) as f64 / libm::pow(self.scale(), k as f64)
     }
 
-    /// The mean; within [min, max], which the values' quantisation to the grid could leave by
+    /// The mean; within \[min, max\], which the values' quantisation to the grid could leave by
     /// a grid step (a mean above the largest value, measured 5e-6 rpm over 60 trials).
     pub fn mean(&self) -> f64 {
         if self.n == 0 {
@@ -430,7 +430,7 @@ impl Histogram {
 }
 
 /// One-sided power spectral density by Welch's method: Hann windows of `segment` samples with
-/// 50 % overlap, mean removed per segment. Returns (frequencies \[Hz\], PSD [unit^2/Hz]); its
+/// 50 % overlap, mean removed per segment. Returns (frequencies \[Hz\], PSD \[unit^2/Hz\]); its
 /// integral over frequency is the signal's variance (Parseval).
 pub fn welch(signal: &[f64], dt: f64, segment: usize) -> (Vec<f64>, Vec<f64>) {
     let seg = segment.min(signal.len()).max(2);
@@ -465,7 +465,7 @@ pub fn welch(signal: &[f64], dt: f64, segment: usize) -> (Vec<f64>, Vec<f64>) {
 }
 
 /// Rice's mean rate of up-crossings of level `z` by a zero-mean Gaussian process with spectral
-/// moments m0 and m2 [1/s]: (1 / 2 pi) sqrt(m2 / m0) exp(-z^2 / (2 m0)).
+/// moments m0 and m2 \[1/s\]: (1 / 2 pi) sqrt(m2 / m0) exp(-z^2 / (2 m0)).
 pub fn rice_upcrossing_rate(m0: f64, m2: f64, z: f64) -> f64 {
     (m2 / m0).sqrt() / (2.0 * PI) * libm::exp(-z * z / (2.0 * m0))
 }
@@ -492,7 +492,7 @@ impl GaussianPair {
         self.c / (self.m0[0] * self.m0[1]).sqrt()
     }
 
-    /// The rate at which the pair enters the set {y1 > z or y2 > z} [1/s]: the up-crossings of z
+    /// The rate at which the pair enters the set {y1 > z or y2 > z} \[1/s\]: the up-crossings of z
     /// by y1 while y2 < z plus those of y2 while y1 < z (Rice's formula for the union of the two
     /// levels, from the trivariate normal of (y_j, y_j', y_k)). It lies between the larger of the
     /// two single rates and their sum; for two identical processes it is their common rate, for
@@ -523,7 +523,7 @@ impl GaussianPair {
         1.0 - both_below
     }
 
-    /// The rate of up-crossings of z by y_j while the other is below z [1/s]:
+    /// The rate of up-crossings of z by y_j while the other is below z \[1/s\]:
     /// p(y_j = z) int_0^inf v p(y_j' = v | y_j = z) P(y_k < z | y_j = z, y_j' = v) dv, the integral
     /// by the midpoint rule over 0 to 10 standard deviations of y_j' (4000 points).
     fn upcrossing_while_other_below(&self, j: usize, z: f64) -> f64 {

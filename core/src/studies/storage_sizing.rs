@@ -46,22 +46,22 @@ pub struct Cell {
     pub turbine_power_mean_w: f64,
     /// Share of the run the online sets ran below the part-load curve's first point (30 % load),
     /// where the curve is extrapolated and gives too little fuel (no idle flow): a run whose
-    /// turbines swing down there is charged too little fuel beside a steady one [-].
+    /// turbines swing down there is charged too little fuel beside a steady one \[-\].
     pub below_curve_share: f64,
     /// Net energy the storages gave the buses over the run \[J\] (their charge's fall, less losses):
     /// the turbines must put it back later.
     pub storage_net_j: f64,
     /// Energy burnt in the brake resistors \[J\].
     pub brake_energy_j: f64,
-    /// Lowest and highest state of charge (mean of the two storages) [-]; 0 without storage.
+    /// Lowest and highest state of charge (mean of the two storages) \[-\]; 0 without storage.
     pub soc_min: f64,
     pub soc_max: f64,
     /// Share of the run the charge spent in the taper before either limit, where the controller
     /// gives or takes less and less (`plant::storage::taper_j`: at least a second of the rated
     /// power wide, so a storage small beside its rating lives in it and never reaches its
-    /// rating) [-].
+    /// rating) \[-\].
     pub taper_share: f64,
-    /// Share of the run the storages spent at their power rating [-] (of the two buses' sum, as
+    /// Share of the run the storages spent at their power rating \[-\] (of the two buses' sum, as
     /// the cycles: right for the symmetric head-seas runs, where both buses give and take alike).
     pub at_rating_share: f64,
     /// Equivalent full cycles an hour: the energy through the storages' terminals, both ways,

@@ -47,14 +47,14 @@ impl Relation {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "fact", rename_all = "snake_case")]
 pub enum Fact {
-    /// `value` is the `stat` of `signals` over [from_s, to_s] (every signal the plot shows).
+    /// `value` is the `stat` of `signals` over \[from_s, to_s\] (every signal the plot shows).
     /// `t_s`: the time of that value (the row's time for `At`).
     Stat { signals: Vec<&'static str>, stat: Stat, from_s: f64, to_s: f64, value: f64, t_s: f64 },
     /// The first time at or after `from_s` that `signal` reaches `level` from below (None: never).
     Reaches { signal: &'static str, level: f64, from_s: f64, t_s: Option<f64> },
     /// Surface-loss onsets (beta_T leaves its submerged value) in the run.
     Onsets { count: usize },
-    /// Energy [J] burnt in the brake resistor (the time integral of its power).
+    /// Energy \[J\] burnt in the brake resistor (the time integral of its power).
     BrakeEnergy { value_j: f64 },
     /// A level of the model (`sim::health`'s thresholds), named.
     Level { name: &'static str, value: f64 },
@@ -119,7 +119,7 @@ pub struct Run<'a> {
     pub summary: &'a Summary,
 }
 
-/// Rows of `t` in [from, to].
+/// Rows of `t` in \[from, to\].
 pub(super) fn window(t: &[f64], from: f64, to: f64) -> std::ops::Range<usize> {
     let a = t.partition_point(|&x| x < from - 1e-9);
     let b = t.partition_point(|&x| x <= to + 1e-9);
@@ -184,7 +184,7 @@ impl<'a> Book<'a> {
         self.facts.push(f);
         self.facts.len() - 1
     }
-    /// A statistic over [from, to]: (fact index, value, time of the value).
+    /// A statistic over \[from, to\]: (fact index, value, time of the value).
     pub(super) fn stat(&mut self, signals: &[&'static str], s: Stat, from: f64, to: f64) -> (usize, f64, f64) {
         let (value, t) = stat(self.run.trace, signals, s, from, to);
         let to = if s == Stat::At { from } else { to };

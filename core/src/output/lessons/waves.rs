@@ -3,7 +3,7 @@
 use super::facts::*;
 use super::*;
 
-/// The top of the `waves` lesson's hub slider [m] (the hub 3.0 m deep at the 5415's draft).
+/// The top of the `waves` lesson's hub slider \[m\] (the hub 3.0 m deep at the 5415's draft).
 const HUB_TOP_M: f64 = 3.15;
 
 pub(super) fn lesson() -> Lesson {

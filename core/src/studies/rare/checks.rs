@@ -8,13 +8,13 @@ use super::*;
 /// finite, so a tampered shard cannot move a rate, a quantile or a replay's `--set` line.
 pub struct TrialLimits {
     seed: u64,
-    /// Highest crossing rate of the study's sea [1/s].
+    /// Highest crossing rate of the study's sea \[1/s\].
     max_rate_per_s: f64,
     /// h/R the hub can have at the event: a depth at most [`MAX_HUB_DEPTH_M`] from the surface.
     h_over_r: (f64, f64),
     /// (lowest, highest, unit, why) of each consequence, in the order of [`CONSEQUENCES`].
     values: [(f64, f64, &'static str, &'static str); 5],
-    /// Farthest the ship can be from its start at the event [m].
+    /// Farthest the ship can be from its start at the event \[m\].
     max_reach_m: f64,
     /// The declared ranges of `rare_event.ship_x_m`, `ship_y_m`, `ship_heading_deg` and
     /// `ship_speed_kn`: a trial's place is echoed into its replay's `--set` lines, which must be
@@ -22,7 +22,7 @@ pub struct TrialLimits {
     place: [(&'static str, f64, f64); 4],
 }
 
-/// Farthest the propeller hub is from the still water surface at an event, above or below [m]:
+/// Farthest the propeller hub is from the still water surface at an event, above or below \[m\]:
 /// a hull's hub sits at most a few tens of metres deep, and the highest sea of the scenario's
 /// ranges (H_1/3 up to 20 m) with the ship's heave and pitch moves it by tens more.
 pub const MAX_HUB_DEPTH_M: f64 = 200.0;

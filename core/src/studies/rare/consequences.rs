@@ -9,7 +9,7 @@ pub struct Consequence {
     pub larger_is_worse: bool,
 }
 
-/// The motor power before an event is its mean over this long [s].
+/// The motor power before an event is its mean over this long \[s\].
 pub const PRE_EVENT_S: f64 = 5.0;
 
 /// The consequences measured from the event to `window_s` after it.
@@ -37,7 +37,7 @@ pub const CONSEQUENCES: [Consequence; 5] = [
     Consequence { name: "brake_energy_mj", label: "energy burnt in the brake resistors", larger_is_worse: true },
 ];
 
-/// The consequences in `trace` of an event of shaft `shaft` at time `t` [s], over `[t, t + window]`,
+/// The consequences in `trace` of an event of shaft `shaft` at time `t` \[s\], over `\[t, t + window\]`,
 /// and h/R there: the one measure of a conditioned trial and of an event counted in a long run.
 pub fn consequences_at(r: &RunResult, shaft: usize, t: f64, window: f64) -> Option<([f64; 5], f64)> {
     let tr = &r.trace;

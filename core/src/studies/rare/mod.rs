@@ -15,8 +15,8 @@
 //! Trial j's sea is seed s_j's (frequencies and directions of the scenario's sampler, Gaussian
 //! amplitudes) conditioned on one of its crossings; seeds' spectra differ a little, so seed s_j's
 //! crossing rate nu_j (its own Rice rate) is trial j's weight. The rate of events is
-//! E[nu] (estimated by the mean of nu_j, with its 95 % interval), the rate of events whose
-//! consequence exceeds a threshold E[nu 1{c > threshold}] (the mean of nu_j 1_j, with its
+//! E\[nu\] (estimated by the mean of nu_j, with its 95 % interval), the rate of events whose
+//! consequence exceeds a threshold E\[nu 1{c > threshold}\] (the mean of nu_j 1_j, with its
 //! interval), and the distribution of a consequence given the event is weighted by nu_j.
 //! Rice's rate from the continuous spectrum stands beside them.
 
@@ -38,7 +38,7 @@ pub use comparison::*;
 pub use consequences::*;
 pub use summary::*;
 
-/// The pilot run's speed is averaged over this long before the event [s].
+/// The pilot run's speed is averaged over this long before the event \[s\].
 const SPEED_AVERAGE_S: f64 = 60.0;
 
 /// Runs to the event that correct the ship's place in a trial's own sea before the trial (with
@@ -70,7 +70,7 @@ pub struct TrialRecord {
     pub trial: u64,
     /// The sea's seed: `aes-sim run` with this `sim.seed` and the study's scenario replays it.
     pub seed: u64,
-    /// This sea's crossing rate of the level [1/s] (the trial's weight).
+    /// This sea's crossing rate of the level \[1/s\] (the trial's weight).
     pub crossing_rate_per_s: f64,
     /// h/R of the hub at the event's time as the run recorded it (the level, up to the ship's
     /// small departure from its ordered track).
@@ -358,7 +358,7 @@ mod tests {
         sc
     }
 
-    /// The head-seas study (25 kn, SS6 head seas) with the hub at `h0` [m], the sea conditioned
+    /// The head-seas study (25 kn, SS6 head seas) with the hub at `h0` \[m\], the sea conditioned
     /// on the port hub falling through h/R 1.1.
     fn study(h0: f64) -> Scenario {
         let mut sc = preset("head-seas-ss6").unwrap();

@@ -25,7 +25,7 @@ impl Rate {
         }
     }
 
-    /// The mean of `x` [1/s] with the normal 95 % interval of its standard error (the event's
+    /// The mean of `x` \[1/s\] with the normal 95 % interval of its standard error (the event's
     /// rate: the seeds' crossing rates differ only through the sampled spectrum).
     fn mean_of(x: &[f64]) -> Rate {
         let n = x.len() as f64;
@@ -35,7 +35,7 @@ impl Rate {
         Rate::per_hour(mean, (mean - 1.96 * se).max(0.0), mean + 1.96 * se)
     }
 
-    /// The rate of events past a threshold, sum_j nu_j 1_j / n [1/s], with the event's mean rate
+    /// The rate of events past a threshold, sum_j nu_j 1_j / n \[1/s\], with the event's mean rate
     /// `nu` times Wilson's 95 % score interval of the share k of n trials past it: right for few
     /// trials past it as for many (for k = 0 its top is 3.84 / (n + 3.84), the rule of three's
     /// kin).
@@ -94,9 +94,9 @@ pub struct RareSummary {
     /// sampled frequencies and directions of `sea.components` waves), not a count's: no trial
     /// waits for an event.
     pub rate: Rate,
-    /// Rice's rate from the continuous spectrum (eq. 5.3) for the hub's depth swing [1/h].
+    /// Rice's rate from the continuous spectrum (eq. 5.3) for the hub's depth swing \[1/h\].
     pub rice_per_hour: f64,
-    /// The hub's depth swing, standard deviation [m], and the level's depth below the calm hub
+    /// The hub's depth swing, standard deviation \[m\], and the level's depth below the calm hub
     /// in standard deviations.
     pub hub_sigma_m: f64,
     pub level_sigmas: f64,
@@ -141,7 +141,7 @@ fn quantile(sorted: &[(f64, f64)], q: f64) -> f64 {
     sorted.last().map(|x| x.0).unwrap_or(f64::NAN)
 }
 
-/// The summary of a study's trials; `thresholds[k]` are consequence k's thresholds.
+/// The summary of a study's trials; `thresholds\[k\]` are consequence k's thresholds.
 pub fn summary(sc: &Scenario, trials: &[TrialRecord], thresholds: &[Vec<f64>; 5]) -> Result<RareSummary, String> {
     if trials.is_empty() {
         return Err("no trials".into());
