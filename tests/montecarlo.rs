@@ -194,7 +194,7 @@ fn arrival_times_agree_with_rice() {
 /// Poisson law's 11.7 s (2,000 trials: 9.3 to 10.2 s over two seed sets; the old RAO table's 400
 /// trials had passed within two standard errors by chance, 1,500 gave 10.4 to 11.3 s against 12.8).
 /// The single hub shows the same at shallow levels and agreement from 2 standard deviations
-/// (`eq_2_57_arrivals_are_poisson_at_two_sigma` and README); at 2.6 the union's first passage
+/// (`eq_2_57_arrivals_are_poisson_at_two_sigma` and docs/studies/monte-carlo.md); at 2.6 the union's first passage
 /// comes 6 % later than Poisson's. Asserted here: the trials' mean lies between the sum bound's
 /// and one hub's predictions, far from the latter.
 #[test]

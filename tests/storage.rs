@@ -11,7 +11,7 @@ fn std_dev(x: &[f64]) -> f64 {
     (x.iter().map(|v| (v - m) * (v - m)).sum::<f64>() / x.len() as f64).sqrt()
 }
 
-/// With the README's suggested storage the turbines' speed swings at least halve and the bus's
+/// With storage sizing's suggested storage (docs/studies/storage-sizing.md) the turbines' speed swings at least halve and the bus's
 /// lowest voltage is higher (measured: standard deviation 0.066 -> 0.0006 pu, lowest bus 0.830 ->
 /// 0.978 pu); the storage's own books close (what left the cells = what reached the buses + its
 /// losses, to 1e-6 of the energy it moved; measured 3e-15) and the whole run's books close to

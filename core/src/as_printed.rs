@@ -1,6 +1,6 @@
 //! The thesis as printed: one switch per place where the thesis' equations disagree with each
-//! other, with their sources or with its own figures, and we chose a corrected form (README,
-//! "Where the thesis was inconsistent"). Every switch defaults to `false`, the corrected form;
+//! other, with their sources or with its own figures, and we chose a corrected form (docs/thesis-
+//! inconsistencies.md). Every switch defaults to `false`, the corrected form;
 //! `true` runs the equation as printed, so a reader can see how far each choice moves the numbers
 //! (`aes-sim validate`, section "As printed") and how close the thesis' own equations come to its
 //! own figures (preset `as-printed`).
@@ -14,7 +14,7 @@
 //! stay as a loop, and `seakeeping.ventilation_on_h_over_r` / `ventilation_off_h_over_r` already
 //! set its ends); the sign fixes of ch. 4's stability analysis, which is a study of its own
 //! (`core/src/studies/ips`), not a scenario run; eq. 2.34's Lewis area coefficient and eq. 2.35's
-//! bulb map (README) are not switches yet.
+//! bulb map (docs/thesis-inconsistencies.md) are not switches yet.
 
 use serde::{Deserialize, Serialize};
 

@@ -4,7 +4,7 @@
 //! default and a [`Decl`] (label, unit, allowed range or choices, one-line help, source of the
 //! default, the page's form group, the per-unit base). From that one declaration come the struct
 //! and its `Default`, the range checks and their messages, the wording of the reader's type
-//! errors, `aes-sim params`, the wasm's `paramMeta()` (the page's form) and the README's scenario
+//! errors, `aes-sim params`, the wasm's `paramMeta()` (the page's form) and the book's scenario
 //! table. Choices are enums written with [`choices!`](crate::choices!), which give each value its label.
 //!
 //! Checks that relate fields (a hull's draft bounds its KG; the record interval is a whole number

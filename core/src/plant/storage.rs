@@ -78,7 +78,7 @@ crate::params! {
     #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
     #[serde(deny_unknown_fields, default)]
     pub struct StorageParams {
-        /// The README's suggested size for head-seas-ss6 is the "with storage" preset's.
+        /// Storage sizing's suggested size (docs/studies/storage-sizing.md) for head-seas-ss6 is the "with storage" preset's.
         pub energy_j: f64 = 0.0 => {
             label: "Storage energy", unit: "J", range: 1.0e5..=1.0e12, empty: "none", group: "plant",
             source: "none by default; the with-storage preset's size for head-seas-ss6",

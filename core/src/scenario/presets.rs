@@ -251,7 +251,7 @@ pub fn head_seas_ss6() -> Scenario {
     s
 }
 
-/// The storage of the "with storage" preset on each bus (the README's suggested size for
+/// The storage of the "with storage" preset on each bus (storage sizing's suggested size, docs/studies/storage-sizing.md, for
 /// head-seas-ss6 at the ballast hub depth): 200 MJ (56 kWh) at 10 MW, levelling above 0.02 Hz.
 pub fn suggested_storage() -> crate::scenario::StorageParams {
     crate::scenario::StorageParams { energy_j: 200.0e6, power_w: 10.0e6, corner_hz: 0.02, ..Default::default() }

@@ -1,6 +1,6 @@
 //! The registry of the scenario's parameters: every declaration of `params!` in scenario order
 //! (`aes-sim params`, the wasm's `paramMeta()`), look-ups by dotted path, "did you mean" hints,
-//! fields that exclude each other, and the README's table.
+//! fields that exclude each other, and the book's table (docs/reference/parameters.md).
 
 use crate::checks::num;
 use crate::params::{ParamMeta, Section};
@@ -126,7 +126,7 @@ fn edit_distance(a: &str, b: &str) -> usize {
     row[b.len()]
 }
 
-/// The README's scenario table: every parameter with its unit, default, allowed values and
+/// The book's scenario table (docs/reference/parameters.md): every parameter with its unit, default, allowed values and
 /// label, section by section.
 pub fn markdown_table() -> String {
     let mut s = String::from("| parameter | unit | default | allowed | what it is |\n|---|---|---|---|---|\n");

@@ -52,7 +52,7 @@ crate::params! {
         /// The head-seas study's ship averages 24.6 kn over the first 100 s in SS6 (lowest 22.5-24.2
         /// kn over seeds 1-10 at h0 = 6 m) and 24.9 kn from 120 to 200 s, while the speed trim
         /// answers the added resistance; at 5 standard deviations the rate of events is 1.7 times
-        /// higher at 25 kn than at 23.9 kn (README), so the event waits for the settled speed.
+        /// higher at 25 kn than at 23.9 kn (docs/studies/rare-events.md), so the event waits for the settled speed.
         pub time_s: f64 = 150.0 => {
             label: "Conditioned: time of the event", unit: "s", range: 0.0..=1.0e5,
             source: "our choice: after the ship's speed has settled in waves (about 120 s in SS6 head seas)",

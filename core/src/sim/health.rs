@@ -2,7 +2,7 @@
 //! real plant to have, each with its threshold and reason declared once here. The model itself
 //! runs on past every one of them (its divergence limits, `sim::limits`, are far wider); a check
 //! that fails adds a sentence to the summary's `warnings`, saying when, how long and how far.
-//! The README's list (`aes-sim health --markdown`) and the page's live drive train
+//! The book's table (docs/reference/health.md, `aes-sim health --markdown`) and the page's live drive train
 //! (`output::presentation::WarningLevels`) read these declarations.
 
 use super::Trace;
@@ -133,7 +133,8 @@ pub fn checks() -> Vec<CheckInfo> {
     .collect()
 }
 
-/// The README's list of the checks (between its `health:begin` and `health:end` markers).
+/// The book's table of the checks (docs/reference/health.md, between its `health:begin` and
+/// `health:end` markers).
 pub fn markdown() -> String {
     let mut s = String::from("| check | warns when | why |\n|---|---|---|\n");
     for c in checks() {
@@ -395,7 +396,7 @@ mod tests {
         assert_eq!(Stretch::of(&t, &x, |v| v > 5.0).longest_s, 0.0);
     }
 
-    /// Every check is in the README's table with its threshold and reason.
+    /// Every check is in the book's table with its threshold and reason.
     #[test]
     fn every_check_has_a_threshold_and_a_reason() {
         let md = markdown();

@@ -235,7 +235,7 @@ impl Summary {
         }
     }
 
-    /// The public JSON form (documented in the README).
+    /// The public JSON form (documented in docs/cli.md).
     pub fn to_json_value(&self) -> serde_json::Value {
         serde_json::to_value(self).unwrap_or_default()
     }

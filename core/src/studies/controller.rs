@@ -1,7 +1,7 @@
 //! PI against LQG/LTR (thesis ch. 3.1 applied to the ch. 5.2 studies): the acceleration, AC
 //! braking and head seas SS6 presets run with each controller, and what a power-system engineer
 //! compares: turbine dip, bus-voltage excursion, settling, fuel (`aes-sim design compare`, the
-//! README's table).
+//! the table in docs/studies/controller-design.md).
 
 use crate::scenario::{ControllerDesign, LqgLtrParams};
 use crate::signals::Signal;

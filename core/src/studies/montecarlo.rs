@@ -735,7 +735,7 @@ pub struct PeriodogramSummary {
     pub max: Vec<Option<f64>>,
 }
 
-/// The public summary of a study (documented in the README).
+/// The public summary of a study (documented in docs/studies/monte-carlo.md).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct StudySummary {
     pub trials: u64,

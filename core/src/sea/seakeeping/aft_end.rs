@@ -1,4 +1,4 @@
-//! STF's aft-end terms and the roll damping they add at speed (README, "Roll, sway and yaw at
+//! STF's aft-end terms and the roll damping they add at speed (docs/model.md, "Roll, sway and yaw at
 //! speed"). Salvesen-Tuck-Faltinsen (1970) keep, at forward speed, terms of the aftmost strip with
 //! beam (superscript A) in every coefficient and exciting force: U a22^A, U a24^A and U a44^A in
 //! B22, B24 and B44 (Appendix A eqs. 13, 14, 18) and the terms that go with them. A hull ending in

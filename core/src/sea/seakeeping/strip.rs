@@ -486,7 +486,7 @@ mod tests {
 
     /// `as_printed.eq_2_47_conjugate`: eq. 2.47 as printed does not vanish in long head waves: at
     /// lambda/L = 4.8 and Fn 0.28 the added resistance coefficient sigma_aw = R / (rho g B^2 / L) is
-    /// 0.113 corrected and 0.994 as printed (the README's 0.1 and 1.0; asserted: under 0.2, and
+    /// 0.113 corrected and 0.994 as printed (about 0.1 and 1.0; asserted: under 0.2, and
     /// 0.8 to 1.2); the RAOs are the same.
     #[test]
     fn eq_2_47_as_printed_keeps_long_wave_resistance() {

@@ -170,7 +170,7 @@ pub struct BodeReport {
 }
 
 /// What the IPS tool answers: the JSON of `aes-sim ips` and of the page's `ipsAnalysis`, keys as
-/// the README lists them.
+/// docs/studies/ips-stability.md lists them.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct IpsResponse {
     pub steady_state: SteadyReport,
@@ -379,7 +379,7 @@ mod tests {
         let bode = b.bode.unwrap();
         assert_eq!(bode.frequency_hz.len(), OperatingPoint::default().points);
         assert!(b.margins.is_none() && b.linear.unwrap().stable);
-        // The JSON keys of `aes-sim ips` (README) and of the page.
+        // The JSON keys of `aes-sim ips` (docs/studies/ips-stability.md) and of the page.
         let v = serde_json::to_value(run(&request(Side::Generator, Analysis::Bode, true)).unwrap()).unwrap();
         for key in ["v_gs_mag", "i_gs_mag", "i_fd", "v_rect_v", "v_dc", "i_dc", "cos_phi", "parameters"] {
             assert!(!v["steady_state"][key].is_null(), "{key}");

@@ -468,7 +468,7 @@ mod tests {
     /// hours after the 150 s warm-up, 385 events); conditioned: 160 trials. The simulated seconds
     /// each needs for the same interval width are printed; at this depth, where events come every
     /// few minutes, brute force is as cheap; the gain grows as the event gets rarer (the benchmark
-    /// `aes-sim rare --brute-force` measures it at h0 = 5 m, README).
+    /// `aes-sim rare --brute-force` measures it at h0 = 5 m, docs/studies/rare-events.md).
     #[test]
     fn conditioned_rates_agree_with_brute_force() {
         let sc = study(4.5);
