@@ -3,7 +3,9 @@
 //! bus it is a positive resistance beside the constant-power loads, so it damps where they do not
 //! (a constant-power load's small-signal resistance is -v^2 / P).
 //!
-//! The smallest complete bus part (`plant::bus_part`): no state, one energy account.
+//! The smallest complete bus part (`plant::bus_part`): no state, one energy account. It has no
+//! trace signal of its own yet, so the page's form leaves it out (no `group`): the page's power
+//! inventory reads the loads' signals and would not see it.
 
 use crate::plant::bus_part::{Account, Book, BusFlow, BusNode, BusPart};
 use serde::{Deserialize, Serialize};
@@ -15,9 +17,9 @@ crate::params! {
     pub struct LoadBankParams {
         /// 10 ohm on the 5618 V bus is 3.2 MW, a tenth of a shaft's sets' rating.
         pub resistance_ohm: f64 = 0.0 => {
-            label: "Load bank resistance", unit: "Ω", range: 0.1..=1.0e5, empty: "none", group: "plant",
+            label: "Load bank resistance", unit: "Ω", range: 0.1..=1.0e5, empty: "none",
             source: "none by default (a shipyard's resistive load bank for generator trials)",
-            help: "Resistance of the load bank across each bus: it takes v²/R (10 Ω on 5618 V is 3.2 MW).",
+            help: "Resistance of the load bank across each bus: it takes v²/R (10 Ω on 5618 V is 3.2 MW). Its energy is in energy_j.bus_loads; it has no trace signal yet, so the page does not offer it.",
         },
     }
 }
