@@ -306,62 +306,30 @@ pub fn stability_point(json: JsValue) -> Result<String, JsError> {
     serde_json::to_string(&m).map_err(|e| JsError::new(&e.to_string()))
 }
 
-/// One axis of a stability map from the page's numbers: `n` a whole number, the rest checked by
-/// `Axis::checked` (the parameter's own range, named).
-fn map_axis(
-    sc: &Scenario,
+/// One axis of a stability map (`aes-sim stability-map --x PATH=FROM:TO:N`) from the page's
+/// numbers, checked as the command checks it (`n` a whole number from 2 to `MAX_AXIS_VALUES`,
+/// both ends a value the scenario takes at `path`, named with `which`, e.g. "x axis"), as the
+/// JSON of `stability_map::Axis`: the page puts two of them and the scenario into the spec of the
+/// "stability-map" study (`studyRange`, `studySummary`), so its values are the command's.
+#[wasm_bindgen(js_name = stabilityAxis)]
+pub fn stability_axis(
+    json: JsValue,
     which: &str,
-    path: &JsValue,
+    path: JsValue,
     from: f64,
     to: f64,
     n: f64,
-) -> Result<stability_map::Axis, String> {
-    let path = path.as_string().ok_or_else(|| format!("{which}: the parameter's path must be a string"))?;
+) -> Result<String, JsError> {
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let path =
+        path.as_string().ok_or_else(|| JsError::new(&format!("{which}: the parameter's path must be a string")))?;
     let max = stability_map::MAX_AXIS_VALUES;
     if !(n.fract() == 0.0 && (2.0..=max as f64).contains(&n)) {
         let shown = if n.is_finite() { aes_core::checks::num(n) } else { "a value that is not a finite number".into() };
-        return Err(format!("{which}: {shown} values of {path}: a whole number from 2 to {max}"));
+        return Err(JsError::new(&format!("{which}: {shown} values of {path}: a whole number from 2 to {max}")));
     }
-    stability_map::Axis::checked(sc, which, &path, from, to, n as usize)
-}
-
-/// Rows `row_from..row_to` of the stability map of a scenario over two parameters (`aes-sim
-/// stability-map FILE --x PATH=FROM:TO:N --y PATH=FROM:TO:N`): each axis a scenario number by
-/// its path, from, to and its number of values. The whole map is checked first (each axis, two
-/// different parameters, at most `MAX_CELLS` cells), then the rows asked are computed: a row is
-/// computed alone, so the rows of several calls put together are the command's map bit for bit
-/// (the page's worker reports its progress between calls). Returns `stability_map::StabilityMap`
-/// as JSON with `y.values` those of the rows asked.
-#[wasm_bindgen(js_name = stabilityMap)]
-#[allow(clippy::too_many_arguments)]
-pub fn stability_map_rows(
-    json: JsValue,
-    x_path: JsValue,
-    x_from: f64,
-    x_to: f64,
-    x_n: f64,
-    y_path: JsValue,
-    y_from: f64,
-    y_to: f64,
-    y_n: f64,
-    row_from: u32,
-    row_to: u32,
-) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let x = map_axis(&sc, "x axis", &x_path, x_from, x_to, x_n).map_err(|e| JsError::new(&e))?;
-    let y = map_axis(&sc, "y axis", &y_path, y_from, y_to, y_n).map_err(|e| JsError::new(&e))?;
-    stability_map::check_grid(&x, &y).map_err(|e| JsError::new(&e))?;
-    let (a, b) = (row_from as usize, row_to as usize);
-    if !(a < b && b <= y.values.len()) {
-        return Err(JsError::new(&format!(
-            "rows {a} to {b}: the map has rows 0 to {} (the first below the second)",
-            y.values.len()
-        )));
-    }
-    let rows = stability_map::Axis { path: y.path.clone(), values: y.values[a..b].to_vec() };
-    let m = stability_map::map(&sc, &x, &rows).map_err(|e| JsError::new(&e))?;
-    aes_core::checks::check_finite(&m).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&m).map_err(|e| JsError::new(&e.to_string()))
+    let axis = stability_map::Axis::checked(&sc, which, &path, from, to, n as usize).map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&axis).map_err(|e| JsError::new(&e.to_string()))
 }
 
 /// The LQG/LTR design (thesis ch. 3.1) for a scenario's drive train and `controllers.lqg_ltr`

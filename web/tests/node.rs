@@ -398,55 +398,66 @@ fn boundary_checks_in_wasm() {
     assert!(message(mc_summary(&j, vec![bad]).unwrap_err()).contains("sum of squares"));
 }
 
-/// The bus stability map's exports (issue 44) refuse bad input with the field, its value and
-/// what is allowed, and the map's rows computed a few at a time are the whole map's bit for bit.
+/// The bus stability map (issue 44) in wasm: its axes refuse bad input with the field, its value
+/// and what is allowed, the study its grid, and the map's rows computed in shards of the
+/// "stability-map" study are the native map bit for bit.
 #[wasm_bindgen_test]
 fn stability_map_refuses_bad_input_by_name() {
+    use aes_core::scenario::Scenario;
+    use aes_core::studies::stability_map;
     let mut sc: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("startup")).unwrap()).unwrap();
     let at_rest = JsValue::from(sc.to_string());
     assert!(message(stability_point(at_rest).unwrap_err()).contains("initial.speed_kn = 0"));
     sc["initial"]["speed_kn"] = serde_json::json!(25.0);
     let json = sc.to_string();
     let (p, c) = ("plant.loads.ship_service_w", "plant.loads.filter_capacitance_f");
-    #[allow(clippy::too_many_arguments)]
-    let call = |xp: JsValue, xf: f64, xt: f64, xn: f64, yp: &str, yf: f64, yt: f64, yn: f64, a: u32, b: u32| {
-        stability_map_rows(JsValue::from(&json), xp, xf, xt, xn, JsValue::from(yp), yf, yt, yn, a, b)
+    let axis = |which: &str, path: JsValue, from: f64, to: f64, n: f64| {
+        stability_axis(JsValue::from(&json), which, path, from, to, n)
     };
     let refused = |r: Result<String, wasm_bindgen::JsError>, want: &str| {
         let m = message(r.unwrap_err());
         assert!(m.contains(want), "{m} lacks {want}");
     };
     refused(
-        call(p.into(), 0.0, 16e6, 500.0, c, 0.007, 0.015, 3.0, 0, 1),
+        axis("x axis", p.into(), 0.0, 16e6, 500.0),
         "x axis: 500 values of plant.loads.ship_service_w: a whole number from 2 to 200",
     );
-    refused(call(p.into(), 0.0, 16e6, 2.5, c, 0.007, 0.015, 3.0, 0, 1), "x axis: 2.5 values");
+    refused(axis("x axis", p.into(), 0.0, 16e6, 2.5), "x axis: 2.5 values");
     refused(
-        call(p.into(), f64::NAN, 16e6, 5.0, c, 0.007, 0.015, 3.0, 0, 1),
+        axis("x axis", p.into(), f64::NAN, 16e6, 5.0),
         "x axis: from a value that is not a finite number to 16000000",
     );
     refused(
-        call(p.into(), 0.0, 16e6, 5.0, c, 0.007, 5.0, 3.0, 0, 1),
+        axis("y axis", c.into(), 0.007, 5.0, 3.0),
         "y axis: plant.loads.filter_capacitance_f = 5: Ship service filter C must be a number from",
     );
+    refused(axis("y axis", "plant.loads.filter_capacitance".into(), 0.007, 0.015, 3.0), "no such parameter");
+    refused(axis("x axis", 1.0.into(), 0.0, 16e6, 5.0), "x axis: the parameter's path must be a string");
+    // The grid is the study's to refuse: the spec of two checked axes, as the page puts it together.
+    let spec = |x: &str, y: &str| format!(r#"{{"scenario":{json},"x":{x},"y":{y}}}"#);
+    let kind = || JsValue::from("stability-map");
+    let x = axis("x axis", p.into(), 0.0, 16e6, 5.0).unwrap();
+    let same = axis("y axis", p.into(), 1e6, 2e6, 3.0).unwrap();
+    let many =
+        (axis("x axis", p.into(), 0.0, 16e6, 200.0).unwrap(), axis("y axis", c.into(), 0.007, 0.015, 200.0).unwrap());
     refused(
-        call(p.into(), 0.0, 16e6, 5.0, "plant.loads.filter_capacitance", 0.007, 0.015, 3.0, 0, 1),
-        "no such parameter",
+        study_range(kind(), JsValue::from(spec(&x, &same)), 0, 1).map(|_| String::new()),
+        "both axes are plant.loads.ship_service_w",
     );
-    refused(call(p.into(), 0.0, 16e6, 5.0, p, 1e6, 2e6, 3.0, 0, 1), "both axes are plant.loads.ship_service_w");
-    refused(call(p.into(), 0.0, 16e6, 200.0, c, 0.007, 0.015, 200.0, 0, 1), "at most 10000");
-    refused(call(p.into(), 0.0, 16e6, 5.0, c, 0.007, 0.015, 3.0, 2, 2), "rows 2 to 2: the map has rows 0 to 3");
-    refused(
-        call(1.0.into(), 0.0, 16e6, 5.0, c, 0.007, 0.015, 3.0, 0, 1),
-        "x axis: the parameter's path must be a string",
-    );
-    // Rows 0..1 and 1..3 put together are rows 0..3.
-    let rows = |a, b| -> serde_json::Value {
-        serde_json::from_str(&call(p.into(), 0.0, 16e6, 5.0, c, 0.007, 0.015, 3.0, a, b).unwrap()).unwrap()
-    };
-    let (whole, first, rest) = (rows(0, 3), rows(0, 1), rows(1, 3));
-    for k in ["abscissa", "least_damped_hz", "boundary_x"] {
-        let joined: Vec<_> = first[k].as_array().unwrap().iter().chain(rest[k].as_array().unwrap()).cloned().collect();
-        assert_eq!(serde_json::Value::from(joined), whole[k], "{k}");
-    }
+    refused(study_range(kind(), JsValue::from(spec(&many.0, &many.1)), 0, 1).map(|_| String::new()), "at most 10000");
+    // Rows 0..1 and 1..3 as two shards summarised are the native map of the same axes.
+    let y = axis("y axis", c.into(), 0.007, 0.015, 3.0).unwrap();
+    let s = spec(&x, &y);
+    let shards =
+        vec![bytes(study_range(kind(), JsValue::from(&s), 1, 3)), bytes(study_range(kind(), JsValue::from(&s), 0, 1))];
+    let page: serde_json::Value =
+        serde_json::from_str(&study_summary(kind(), JsValue::from(&s), shards).unwrap()).unwrap();
+    let scenario = Scenario::from_json(&json).unwrap();
+    let native = stability_map::map(
+        &scenario,
+        &stability_map::Axis::checked(&scenario, "x axis", p, 0.0, 16e6, 5).unwrap(),
+        &stability_map::Axis::checked(&scenario, "y axis", c, 0.007, 0.015, 3).unwrap(),
+    )
+    .unwrap();
+    assert_eq!(page, serde_json::to_value(&native).unwrap());
 }

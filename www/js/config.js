@@ -204,7 +204,7 @@ export const IPS = { steps: { torque_nm: 1, load_a: 0.5, v_fd_v: 'any' }, poleMa
 // number of values; the unit each parameter's SI unit is shown in (a power of ten: MW, mF); the
 // map's height [px] (less on a phone) and its colours (diverging: stable blue, unstable red).
 // The labels, units and allowed ranges are the registry's (paramMeta); every number drawn is the
-// wasm's (stabilityMap, stabilityPoint).
+// wasm's (the "stability-map" study, stabilityPoint).
 export const BUSMAP = {
   pairs: [
     { id: 'filter', x: ['plant.loads.ship_service_w', 0, 16e6, 41], y: ['plant.loads.filter_capacitance_f', 0.007, 0.015, 17] },

@@ -50,11 +50,11 @@ export const REQUEST = {
   // -> done {result} (the JSON of `aes-sim ips bode`)
   ips: 'ips',
   design: 'design', // {scenario} -> done {result} (LQG/LTR design and analysis, ch. 3.1)
-  // The bus stability map (issue 44): {scenario, x: {path, from, to, n}, y: {...}} -> progress
-  // {rows, of} ... done {point, map}: `point` the plant linearised at the scenario's own values
-  // (stabilityPoint: eigenvalues, spectral_abscissa, least_damped_hz), `map` the JSON of
-  // `aes-sim stability-map --x ... --y ...` (stabilityMap, computed a few rows a call).
-  stabilityMap: 'stability-map',
+  // The bus stability map (issue 44): {scenario (JSON text), x: {path, from, to, n}, y: {...}} ->
+  // done {point, spec}: `point` the plant linearised at the scenario's own values (stabilityPoint:
+  // eigenvalues, spectral_abscissa, least_damped_hz), `spec` the JSON text of the
+  // "stability-map" study (its axes checked by stabilityAxis), which the study pool runs.
+  stabilitySpec: 'stability-spec',
   // Rare events by conditioned simulation (issue 32). {scenario} -> done {scenario}: the scenario
   // every trial runs, as JSON text (rareScenario: the ship's place at the event from a run in
   // waves); the scenario must have a random sea and rare_event.level_h_over_r set.

@@ -17,7 +17,8 @@ export function install(ctx) {
     } else if (name === 'lessonPreview') {
       window.__lessonPreviews = (window.__lessonPreviews || 0) + 1;
     } else {
-      // hullPanel, operability, rare, fuel, maneuvers, schedule: the last one shown.
+      // hullPanel, operability, rare, fuel, maneuvers, schedule, busmap (the
+      // stability map) and busmapCell (its cell said): the last one shown.
       window[`__${name}`] = value;
     }
   });

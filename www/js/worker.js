@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, studyEstimate, trialScenario, raoJson, fuelStudy, maneuversBooklet, turbineSchedule, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen, traceCsvOf, stabilityPoint, stabilityMap } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, studyEstimate, trialScenario, raoJson, fuelStudy, maneuversBooklet, turbineSchedule, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen, traceCsvOf, stabilityPoint, stabilityAxis } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -123,25 +123,14 @@ const handlers = {
   [REQUEST.rarePlace]: (m) => ({ scenario: rarePlace(checked(m.scenario), m.passes) }),
 
   [REQUEST.design]: (m) => ({ result: JSON.parse(designLqgLtr(checked(m.scenario))) }),
-  // The operating point first (its error names the field: a speed of 0 kn), then the map a row
-  // at a time with progress; each row is computed alone, so the rows put together are the
-  // command line's map.
-  [REQUEST.stabilityMap]: (m, progress) => {
+  // The operating point first (its error names the field: a speed of 0 kn), then each axis checked
+  // as the command line checks it; the spec is put together from their texts unparsed (the
+  // scenario's numbers as the page sent them).
+  [REQUEST.stabilitySpec]: (m) => {
     const sc = checked(m.scenario);
     const point = JSON.parse(stabilityPoint(sc));
-    const { x, y } = m;
-    let map = null, last = performance.now();
-    for (let r = 0; r < y.n; r++) {
-      const part = JSON.parse(stabilityMap(sc, x.path, x.from, x.to, x.n, y.path, y.from, y.to, y.n, r, r + 1));
-      if (!map) map = part;
-      else {
-        map.y.values.push(...part.y.values);
-        for (const k of ['abscissa', 'least_damped_hz', 'boundary_x']) map[k].push(...part[k]);
-        map.failures.push(...part.failures.slice(0, Math.max(0, 10 - map.failures.length)));
-      }
-      if (performance.now() - last > PROGRESS_EVERY_MS) { progress({ rows: r + 1, of: y.n }); last = performance.now(); }
-    }
-    return { point, map };
+    const axis = (which, a) => stabilityAxis(sc, which, a.path, a.from, a.to, a.n);
+    return { point, spec: `{"scenario":${sc},"x":${axis('x axis', m.x)},"y":${axis('y axis', m.y)}}` };
   },
   [REQUEST.ips]: (m) => {
     const { side, closed, point: p } = m.args;
