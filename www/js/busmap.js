@@ -166,7 +166,8 @@ export class BusMap {
     let point = null;
     await this.fold.compute(async () => {
       const { summary: map } = await this.pool.run({
-        kind: 'stability-map', scenario: r.scenario, n, item: 'row',
+        // A run in calm water has no seaway: its workers need no RAO table.
+        kind: 'stability-map', scenario: r.scenario, n, item: 'row', rao: ((r.sc.sea || {}).kind || 'calm') !== 'calm',
         spec: async (w) => {
           const m = await w.request(REQUEST.stabilitySpec, { scenario: r.scenario, x: r.x, y: r.y });
           point = m.point;

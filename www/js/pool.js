@@ -27,7 +27,8 @@ export class StudyPool {
   }
 
   // Runs items 0..n of the study `kind` over size(n) workers, `chunk` items a request.
-  // scenario: the JSON text whose RAO table the items read. spec: the study's definition as JSON
+  // scenario: the JSON text whose RAO table the items read (rao = false: a study that reads none,
+  // the bus stability map's linearisation, skips building it). spec: the study's definition as JSON
   // text, or an async function (first worker) -> spec, for a study whose definition a worker
   // computes first (rare events: the ship's place at the event). onProgress(done, n) after each
   // chunk; onStart(k) once the workers are chosen. A study estimated long on them (core's
@@ -36,7 +37,7 @@ export class StudyPool {
   // first worker merges and summarises the shards (with the page constants of `scenario` when
   // `constants`). Resolves to {spec, shards (binary, in item order), summary, constants?}; the
   // workers wait in `idle` afterwards.
-  async run({ kind, scenario, spec, n, chunk = 1, constants = false, item = 'item', onStart = () => {}, onProgress = () => {} }) {
+  async run({ kind, scenario, spec, n, chunk = 1, constants = false, rao = true, item = 'item', onStart = () => {}, onProgress = () => {} }) {
     const k = this.size(n);
     let failed = null;
     this.workers = Array.from({ length: k }, () => {
@@ -53,7 +54,7 @@ export class StudyPool {
     try {
       const first = this.workers[0];
       await first.ready;
-      const { values } = await first.request(REQUEST.raoTable, { scenario });
+      const { values } = rao ? await first.request(REQUEST.raoTable, { scenario }) : {};
       const definition = typeof spec === 'function' ? await spec(first) : spec;
       const { estimate } = await first.request(REQUEST.studyEstimate, { kind, spec: definition, workers: k });
       if (!(await startLong(estimate, k, item))) {
