@@ -3,6 +3,7 @@
 //! motor, the propeller with its surface losses, and the turbines' fuel; the other loads on each
 //! bus and its energy storage (ch. 6.1).
 
+pub mod blade;
 pub mod bus_loads;
 pub mod bus_part;
 pub mod dc_link;
