@@ -25,7 +25,8 @@ function render() {
 export function setPhase(p) {
   if (!PHASES.includes(p)) throw new Error(`no phase '${p}'`);
   phase = p;
-  if (p === 'running' || p === 'montecarlo') progress(0, '');
+  // Loading (the page's start, or a fresh worker after Cancel): no share of work is done.
+  if (p === 'running' || p === 'montecarlo' || p === 'loading') progress(0, '');
   else $('eta').textContent = '';
   render();
 }
