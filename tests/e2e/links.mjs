@@ -2,7 +2,7 @@
 // called that; a value between slider stops is said where the student sees it; one bad value in
 // a simulator link loses only itself; the maneuvers' refusal names what would make them run, with
 // a one-click fix; Cancel clears the progress; a study that prepares says so; values that change
-// nothing add no history entry. Screenshots of the error states at 1366x768 and 390x844.
+// nothing add no history entry. Screenshots of the error states at 1366x768, 1920x1080 and 390x844.
 // Usage: node tests/e2e/links.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR
 import { mkdirSync } from 'node:fs';
 import { assert, checker, launch, openPage } from './lib.mjs';
@@ -13,7 +13,7 @@ mkdirSync(shots, { recursive: true });
 const { check, finish } = checker();
 const errors = [];
 const browser = await launch();
-const SIZES = [[1366, 768], [390, 844]];
+const SIZES = [[1366, 768], [1920, 1080], [390, 844]];
 const b64 = (x) => Buffer.from(JSON.stringify(x)).toString('base64url');
 const context = (w, h) => browser.newContext({ viewport: { width: w, height: h }, hasTouch: w < 600 });
 // An element's box inside the viewport (top and bottom both on screen).
@@ -62,6 +62,29 @@ for (const [w, h] of SIZES) {
     await c.close();
   });
 }
+
+await check('a link\'s bad optional parts (the live views\' place, the tab) are said and lose only themselves', async () => {
+  const c = await context(1366, 768);
+  const p = await openPage(c, `${base}#v=2&preset=turn-90&d=${b64({ sim: { seed: 7 } })}&tab=nope&at=abc&speed=2`, base, errors);
+  await p.waitForFunction(() => /^Done/.test(document.getElementById('status').textContent), null, { timeout: 60000 });
+  const notice = await p.textContent('#notice');
+  assert(/place in the live views \(at="abc", speed="2"\) is not used: at is a time from 0 to 1e7 s/.test(notice), notice);
+  assert(/tab="nope" is not one of sim, design, ips, operability: sim is used/.test(notice), notice);
+  assert((await p.$eval('#preset', (s) => s.value)) === 'turn-90' && (await p.inputValue('#f-sim-seed')) === '7', 'the study or its value was dropped');
+  await c.close();
+});
+
+await check('a hand-edited address with one bad value keeps the rest, says it, and the address shows the values used', async () => {
+  const c = await context(1366, 768);
+  const p = await openPage(c, `${base}#v=2&preset=turn-90`, base, errors);
+  await p.evaluate((h) => { location.hash = h; }, `v=2&preset=turn-45&d=${b64({ initial: { speed_kn: 'fast' }, sim: { seed: 9 } })}`);
+  await p.waitForFunction(() => /was refused/.test(document.getElementById('notice').textContent), null, { timeout: 10000 });
+  assert(/Initial speed \[kn\] \(initial\.speed_kn\) = "fast" was refused/.test(await p.textContent('#notice')), await p.textContent('#notice'));
+  assert((await p.$eval('#preset', (s) => s.value)) === 'turn-45' && (await p.inputValue('#f-sim-seed')) === '9', 'the rest of the address was dropped');
+  const d = new URLSearchParams(await p.evaluate(() => location.hash.slice(1))).get('d');
+  assert(d && !/speed_kn/.test(Buffer.from(d, 'base64url').toString()), 'the address still carries the refused value');
+  await c.close();
+});
 
 // The booklet of the default study (the surge hull) from a fresh page: the refusal and the button.
 async function refusedBooklet(c) {

@@ -144,8 +144,9 @@ async function openLink(hash) {
     }
     dropped = e.fields;
     link.scenario = kept;
-    notice(`${dropped.map((f) => form.refusedLine(f, link.name)).join(' ')} The link's other values are kept.`);
   }
+  const said = [...dropped.map((f) => form.refusedLine(f, link.name)), ...link.ignored];
+  if (said.length) notice(`${said.join(' ')} The link's other values are kept.`);
   return { ...link, edited: form.modified(link.scenario, link.name), dropped };
 }
 
@@ -268,7 +269,8 @@ async function route() {
     status(`${studyTitle(link.name)}${link.edited.length ? `, ${link.edited.length} value(s) changed` : ''}: press ${press()} to see its result.`);
   }
   showStale();
-  history.replaceState({ shown: current() ? drawn.shown : null }, '', location.hash);
+  // An address with a refused value now says the values shown (the notice says what was refused).
+  history.replaceState({ shown: current() ? drawn.shown : null }, '', link.dropped.length ? hereHash() : location.hash);
 }
 
 // A failed request keeps the form and the earlier results; refused fields are marked.

@@ -184,7 +184,7 @@ export class RareView {
     await this.fold.compute(async () => {
       const { shards, summary } = await this.pool.run({
         kind: 'rare-events', scenario: study, spec: specOf, n, chunk, item: 'trial',
-        onStart: (k) => this.status(`Rare events: the trials' scenario (a run in waves to the event's place), then ${n} trials on ${k} worker${k > 1 ? 's' : ''}...`),
+        onStart: (k) => this.status(`Rare events: ${n} trials on ${k} worker${k > 1 ? 's' : ''}...`),
         onProgress: (done, _, preparing) => (preparing ? this.preparing(n) : this.fold.progress(done, n, started, 'trial')),
       });
       const entry = { key, study: inp.study, title: inp.title, controls: c, trial, shards, summary, ms: performance.now() - started };
