@@ -5,7 +5,7 @@
 // nothing add no history entry. Screenshots of the error states at 1366x768, 1920x1080 and 390x844.
 // Usage: node tests/e2e/links.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR
 import { mkdirSync } from 'node:fs';
-import { assert, checker, launch, openPage } from './lib.mjs';
+import { assert, axeFindings, checker, launch, openPage } from './lib.mjs';
 
 const base = process.argv[2];
 const shots = process.argv[3];
@@ -15,7 +15,10 @@ const errors = [];
 const browser = await launch();
 const SIZES = [[1366, 768], [1920, 1080], [390, 844]];
 const b64 = (x) => Buffer.from(JSON.stringify(x)).toString('base64url');
-const context = (w, h) => browser.newContext({ viewport: { width: w, height: h }, hasTouch: w < 600 });
+// bypassCSP: axe-core is injected as an inline script (the page's own policy forbids those).
+const context = (w, h) => browser.newContext({ viewport: { width: w, height: h }, hasTouch: w < 600, bypassCSP: true });
+// axe-core finds nothing serious in an error state.
+const axeClean = async (p) => { const v = await axeFindings(p); assert(!v.length, v.join(' | ')); };
 // An element's box inside the viewport (top and bottom both on screen).
 const inView = (p, sel) => p.$eval(sel, (e) => { const r = e.getBoundingClientRect(); return r.top >= 0 && r.bottom <= innerHeight && r.height > 0; });
 
@@ -35,6 +38,7 @@ for (const [w, h] of SIZES) {
     assert((await p.textContent('#lesson-commands-1-heading_deg-out')).trim() === '105 deg', 'the slider does not show the stop used');
     assert(/commands\.1\.heading_deg=105/.test(await p.evaluate(() => location.hash)), 'the address does not carry the stop used');
     await p.screenshot({ path: `${shots}/links-lesson-${w}x${h}.png` });
+    await axeClean(p);
     await c.close();
   });
 }
@@ -55,6 +59,7 @@ for (const [w, h] of SIZES) {
     await p.screenshot({ path: `${shots}/links-simulator-${w}x${h}.png` });
     await p.$eval('#f-initial-speed_kn-field', (e) => e.scrollIntoView({ block: 'center' }));
     await p.screenshot({ path: `${shots}/links-simulator-field-${w}x${h}.png` });
+    await axeClean(p);
     // Typing a value of one's own there takes the link's word away.
     await p.fill('#f-initial-speed_kn', '20');
     await p.dispatchEvent('#f-initial-speed_kn', 'change');
@@ -105,6 +110,7 @@ for (const [w, h] of SIZES) {
     const p = await refusedBooklet(c);
     await p.$eval('#maneuvers-box', (e) => e.scrollIntoView({ block: 'start' }));
     await p.screenshot({ path: `${shots}/links-maneuvers-${w}x${h}.png` });
+    await axeClean(p);
     await p.click('#maneuvers-fix-model');
     await bookletDone(p);
     assert((await p.inputValue('#f-hull-model')) === 'maneuvering', 'the field was not set');
