@@ -127,10 +127,16 @@ await check('the maneuvers\' other fix opens the turning study the message names
   await c.close();
 });
 
-await check('Cancel clears the Monte Carlo progress (bar and words)', async () => {
+await check('Monte Carlo says it prepares (its bar without a share), and Cancel clears its progress (bar and words)', async () => {
   const c = await context(1366, 768);
   const p = await openPage(c, `${base}#v=2&preset=mc-arrival&d=${b64({ monte_carlo: { trials: 400 } })}`, base, errors);
   await p.waitForFunction(() => !document.getElementById('mc-run').disabled, null, { timeout: 60000 });
+  // Every status line with the bar's state as it was said (the preparation may be short).
+  await p.evaluate(() => {
+    window.seenStatus = [];
+    new MutationObserver(() => window.seenStatus.push({ text: document.getElementById('status').textContent, share: document.getElementById('progress').hasAttribute('value') }))
+      .observe(document.getElementById('status'), { childList: true, characterData: true, subtree: true });
+  });
   await p.click('#mc-run');
   await p.waitForFunction(() => document.getElementById('progress').value > 0.05 || document.querySelector('#long-study[open]'), null, { timeout: 60000 });
   if (await p.$('#long-study[open]')) {
@@ -140,6 +146,8 @@ await check('Cancel clears the Monte Carlo progress (bar and words)', async () =
   await p.click('#cancel');
   await p.waitForFunction(() => document.getElementById('status').textContent === 'Cancelled.', null, { timeout: 10000 });
   await p.waitForTimeout(300);
+  const seen = await p.evaluate(() => window.seenStatus);
+  assert(seen.some((x) => /^Monte Carlo: preparing/.test(x.text) && !x.share), `no preparing line with a bar without a share: ${JSON.stringify(seen.slice(0, 4))}`);
   const left = await p.evaluate(() => ({ value: document.getElementById('progress').value, eta: document.getElementById('eta').textContent }));
   assert(left.value === 0 && left.eta === '', `after Cancel the bar shows ${left.value} and "${left.eta}"`);
   await c.close();
@@ -162,7 +170,7 @@ await check('rare events say they are preparing (not "0 of n trials") until the 
   await c.close();
 });
 
-await check('a lesson value released where it was, or "Set it" of values already set, adds no history entry', async () => {
+await check('a lesson value released where it was adds no history entry; a new value adds one', async () => {
   const c = await context(1366, 768);
   const p = await c.newPage();
   p.on('pageerror', (e) => errors.push(String(e)));

@@ -25,8 +25,8 @@ async function runMonteCarlo(ctx) {
   let out;
   try {
     out = await monteCarlo.run(ctx.client, sc, (done, k, preparing) => {
-      if (preparing) { status(`Monte Carlo: preparing (the sea's response table), then ${n} trials on ${k} workers...`); return; }
-      if (done === 0) { status(`Monte Carlo: ${n} trials on ${k} workers...`); return; }
+      if (preparing) { progress(null); status(`Monte Carlo: preparing (the sea's response table), then ${n} trials on ${k} workers...`); return; }
+      if (done === 0) { progress(0); status(`Monte Carlo: ${n} trials on ${k} workers...`); return; }
       const secs = (performance.now() - started) / 1000;
       progress(done / n, secs > 0.5 ? `${done} of ${n} trials, about ${((secs * (n - done)) / done).toFixed(1)} s left` : '');
     });
