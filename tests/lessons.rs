@@ -366,3 +366,27 @@ fn a_link_value_outside_a_control_is_refused_with_its_range_and_the_default_used
     assert_eq!(o.refused.len(), 1);
     assert_eq!(o.values["plant.dc_link.brake_resistor_ohm"], "1");
 }
+
+/// A link's text that is no number is called that (with the range), not "outside the range"; a
+/// value between two stops is moved to the nearest and said, and a stop itself is not.
+#[test]
+fn a_link_value_that_is_no_number_is_said_so_and_a_snapped_value_is_said() {
+    let l = lessons::lesson("turn").unwrap();
+    let o = lessons::open(&l, &[("commands.1.heading_deg", "abc")]).unwrap();
+    assert_eq!(o.refused.len(), 1, "{:?}", o.refused);
+    assert!(o.refused[0].contains("\"abc\" is not a number; this lesson's range is 15 to 180 deg"), "{}", o.refused[0]);
+    assert!(!o.refused[0].contains("outside"), "{}", o.refused[0]);
+    let o = lessons::open(&l, &[("commands.1.heading_deg", "NaN")]).unwrap();
+    assert!(o.refused[0].contains("is not a number"), "{}", o.refused[0]);
+    let o = lessons::open(&l, &[("commands.1.heading_deg", "100")]).unwrap();
+    assert!(o.refused.is_empty(), "{:?}", o.refused);
+    assert_eq!(o.values["commands.1.heading_deg"], 105.0);
+    assert_eq!(o.snapped.len(), 1, "{:?}", o.snapped);
+    assert!(
+        o.snapped[0].contains("100 deg lies between this lesson's stops; the nearest, 105 deg, is used"),
+        "{}",
+        o.snapped[0]
+    );
+    let o = lessons::open(&l, &[("commands.1.heading_deg", "105")]).unwrap();
+    assert!(o.snapped.is_empty() && o.refused.is_empty(), "{:?} {:?}", o.snapped, o.refused);
+}

@@ -188,6 +188,8 @@ export class ScenarioForm {
     else if (v === undefined) deletePath(this.scenario, path);
     else setPath(this.scenario, path, v);
     this.setError(path, '');
+    const note = $(fieldId(path) + '-field').querySelector('.link-refused');
+    if (note) note.remove(); // the link's refused value is no longer what the field is about
     this.save();
     this.onEdit();
   }
@@ -212,10 +214,44 @@ export class ScenarioForm {
     this.onValidity(this.invalid.size === 0);
   }
 
-  // Marks the fields a link changed from the study's values.
-  markLinked(paths) {
+  // Marks the fields a link changed from the study's values, and says at each field whose value
+  // the link could not use (`refused`: the checks' fields) why and what stands in its place.
+  markLinked(paths, refused = []) {
     for (const d of document.querySelectorAll('.field.linked')) d.classList.remove('linked');
     for (const p of paths) { const d = $(fieldId(p) + '-field'); if (d) d.classList.add('linked'); }
+    for (const e of document.querySelectorAll('.link-refused')) e.remove();
+    for (const f of refused) {
+      const d = $(fieldId(f.path) + '-field');
+      if (d) d.append(el('div', { className: 'ferr link-refused', attrs: { role: 'note' }, textContent: this.refusedLine(f) }));
+    }
+  }
+
+  // A link's value the checks refused, for people: the field's label, the value (shortened), what
+  // is allowed and the study's value used instead.
+  refusedLine(f, name = this.name) {
+    const m = this.byPath.get(f.path);
+    const label = m ? `${m.label}${m.unit && m.unit !== '-' ? ` [${m.unit}]` : ''} (${f.path})` : f.path;
+    const value = String(f.value == null ? '' : f.value);
+    const own = getPath(this.preset(name), f.path);
+    const unit = m && m.unit && m.unit !== '-' ? ` ${m.unit}` : '';
+    const used = own == null ? 'its default' : `the study's value, ${show(own)}${unit},`;
+    return `The link's ${label} = ${value.length > 24 ? `${value.slice(0, 24)}...` : value} was refused (${f.message}); ${used} is used.`;
+  }
+
+  // `scenario` of study `name` with each refused field back at the study's value (or left out where
+  // the study sets none): the rest of a link is kept when one of its values is bad. Null when a
+  // refused field is not a place the study's values can fill.
+  withoutRefused(name, scenario, fields) {
+    const out = JSON.parse(JSON.stringify(scenario));
+    const preset = this.preset(name);
+    for (const f of fields) {
+      const keys = String(f.path || '').split('.');
+      const parent = keys.length > 1 ? getPath(out, keys.slice(0, -1).join('.')) : out;
+      if (!f.path || keys.some((k) => k === '' || k === '__proto__') || parent == null || typeof parent !== 'object') return null;
+      const own = getPath(preset, f.path);
+      if (own === undefined) deletePath(out, f.path); else setPath(out, f.path, JSON.parse(JSON.stringify(own)));
+    }
+    return out;
   }
 
   select(name, scenario) {

@@ -79,29 +79,39 @@ export function linkHash(name, preset, scenario, { view = null, mode = 'run', ta
   return hash;
 }
 
+// A link's text as a message quotes it: at most 24 characters.
+const quote = (x) => { const t = String(x); return `"${t.length > 24 ? `${t.slice(0, 24)}...` : t}"`; };
+
 // The design tab's tuning in a link: an object of finite numbers (the tab checks their ranges),
-// or null when absent or damaged (a bad part only loses the tuning, never the scenario).
-function readDesign(params) {
+// or null when absent or damaged (a bad part only loses the tuning, never the scenario: said in
+// `ignored`).
+function readDesign(params, ignored) {
   const d = params.get('design');
-  if (!d || d.length > 2000) return null;
+  if (!d) return null;
+  const lost = () => { ignored.push('The link\'s design tab tuning (design=...) is damaged: the tab\'s own is used.'); return null; };
+  if (d.length > 2000) return lost();
   try {
     const t = JSON.parse(b64urlDecode(d));
-    if (!isObject(t) || !Object.values(t).every((x) => typeof x === 'number' && Number.isFinite(x))) return null;
+    if (!isObject(t) || !Object.values(t).every((x) => typeof x === 'number' && Number.isFinite(x))) return lost();
     return t;
-  } catch (_) { return null; }
+  } catch (_) { return lost(); }
 }
 
 // The live views' place in a link: {at, speed} when both are sensible numbers, else null (a bad
-// value only loses the place, never the scenario).
-function readView(params) {
+// value only loses the place, never the scenario: said in `ignored`).
+function readView(params, ignored) {
   if (!params.has('at')) return null;
   const at = Number(params.get('at')), speed = Number(params.get('speed') || 1);
-  if (!(Number.isFinite(at) && at >= 0 && at <= 1e7 && Number.isFinite(speed) && speed > 0 && speed <= 1000)) return null;
+  if (!(Number.isFinite(at) && at >= 0 && at <= 1e7 && Number.isFinite(speed) && speed > 0 && speed <= 1000)) {
+    ignored.push(`The link's place in the live views (at=${quote(params.get('at'))}, speed=${quote(params.get('speed') || 1)}) is not used: at is a time from 0 to 1e7 s, speed a number above 0 up to 1000.`);
+    return null;
+  }
   return { at, speed };
 }
 
 // Reads a hash (without '#'): null when there is none, {refused: reason} when it cannot be used,
-// else {name, scenario} (not yet validated). `presets` maps names to scenario JSON text.
+// else {name, scenario, view, mode, tab, design, ignored} (not yet validated; ignored: a sentence
+// for each optional part that could not be used). `presets` maps names to scenario JSON text.
 export function readLink(hash, presets) {
   if (!hash) return null;
   const refuse = (reason) => ({ refused: reason });
@@ -123,7 +133,13 @@ export function readLink(hash, presets) {
     if (!isObject(parsed)) return refuse('its scenario part is not an object');
     scenario = merge(scenario, v < 2 ? migrate(parsed) : parsed);
   }
-  const mode = MODES.includes(params.get('mode')) ? params.get('mode') : 'run';
-  const tab = TABS.includes(params.get('tab')) ? params.get('tab') : 'sim';
-  return { name, scenario, view: readView(params), mode, tab, design: readDesign(params) };
+  const ignored = [];
+  const choice = (key, allowed, fallback) => {
+    if (!params.has(key) || allowed.includes(params.get(key))) return params.get(key) || fallback;
+    ignored.push(`The link's ${key}=${quote(params.get(key))} is not one of ${allowed.join(', ')}: ${fallback} is used.`);
+    return fallback;
+  };
+  const mode = choice('mode', MODES, 'run');
+  const tab = choice('tab', TABS, 'sim');
+  return { name, scenario, view: readView(params, ignored), mode, tab, design: readDesign(params, ignored), ignored };
 }

@@ -73,6 +73,8 @@ function follow(push) {
   const st = history.state || {};
   const owner = st.shown && drawn.get(st.shown);
   if (!push && owner && owner.state !== stateKey() && location.hash !== h) push = true;
+  // The address is the whole state: an identical one is no step in the history.
+  if (location.hash === h) push = false;
   history[push ? 'pushState' : 'replaceState']({ shown: current() ? drawn.shown : null }, '', h);
 }
 // After a run or a Monte Carlo study: the entry of these inputs owns what is drawn (a new entry
@@ -116,21 +118,36 @@ function showStale() {
 }
 
 // The scenario of a hash: null without one, {refused: true} (after saying why) when it cannot be
-// used, else {name, scenario, edited}, validated.
+// used, else {name, scenario, edited, dropped}, validated. A value the checks refuse loses only
+// itself (dropped: those fields, said in the notice): the study's value stands in, the rest of the
+// link is kept.
 async function openLink(hash) {
   const link = readLink(hash, form.presets);
   if (!link) return null;
+  notice(''); // what an earlier link's notice said is not of this one
   const refuse = (why) => {
     notice(`This link could not be used: ${why}. Showing the ${studyTitle(DEFAULT_PRESET)} study instead.`);
     return { refused: true };
   };
   if (link.refused) return refuse(link.refused);
+  let dropped = [];
   try {
     await validate(link.scenario);
   } catch (e) {
-    return refuse(e.fields.length ? e.fields.slice(0, 3).map(fieldLine).join('; ') : e.message);
+    if (!e.fields.length) return refuse(e.message);
+    const kept = form.withoutRefused(link.name, link.scenario, e.fields);
+    try {
+      if (!kept) throw e;
+      await validate(kept);
+    } catch (_) {
+      return refuse(e.fields.slice(0, 3).map(fieldLine).join('; '));
+    }
+    dropped = e.fields;
+    link.scenario = kept;
   }
-  return { ...link, edited: form.modified(link.scenario, link.name) };
+  const said = [...dropped.map((f) => form.refusedLine(f, link.name)), ...link.ignored];
+  if (said.length) notice(`${said.join(' ')} The link's other values are kept.`);
+  return { ...link, edited: form.modified(link.scenario, link.name), dropped };
 }
 
 // A link to a tab with work of its own (the operability polar) does it; false for other tabs.
@@ -163,9 +180,9 @@ async function onReady(m) {
     status(`Your edits are back${ok.edited.length ? ` (${ok.edited.length} value(s) changed from the study)` : ''}: press ${press()}.`);
     return;
   }
-  if (ok && (ok.edited.length || ok.view || modeView(ok.mode))) {
+  if (ok && (ok.edited.length || ok.dropped.length || ok.view || modeView(ok.mode))) {
     form.select(ok.name, ok.scenario);
-    form.markLinked(ok.edited);
+    form.markLinked(ok.edited, ok.dropped);
     mode = ok.mode;
     follow(false);
     setPhase('idle');
@@ -240,7 +257,7 @@ async function route() {
   each('restore', ctx, link);
   form.select(link.name, link.scenario);
   form.save();
-  form.markLinked(link.edited);
+  form.markLinked(link.edited, link.dropped);
   mode = link.mode;
   const key = stateKey();
   const r = drawn.of(key);
@@ -252,7 +269,8 @@ async function route() {
     status(`${studyTitle(link.name)}${link.edited.length ? `, ${link.edited.length} value(s) changed` : ''}: press ${press()} to see its result.`);
   }
   showStale();
-  history.replaceState({ shown: current() ? drawn.shown : null }, '', location.hash);
+  // An address with a refused value now says the values shown (the notice says what was refused).
+  history.replaceState({ shown: current() ? drawn.shown : null }, '', link.dropped.length ? hereHash() : location.hash);
 }
 
 // A failed request keeps the form and the earlier results; refused fields are marked.

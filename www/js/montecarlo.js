@@ -21,14 +21,14 @@ export class MonteCarlo {
 
   // Runs trials 0..n of `sc` on the pool, about ten chunks a worker (progress after each, and few
   // shards to merge: each carries whole envelopes), merged and summarised by the pool's first
-  // worker. onProgress(done, k) after each chunk. Resolves to {summary, constants}. (`client`,
+  // worker. onProgress(done, k, preparing) after each chunk (preparing: before the first trial). Resolves to {summary, constants}. (`client`,
   // the page's own worker, is not needed: the pool's workers hold the RAO table.)
   async run(client, sc, onProgress) {
     const n = Number(sc.monte_carlo.trials);
     const scenario = JSON.stringify(sc);
     const k = this.pool.size(n);
     const chunk = Math.max(1, Math.ceil(n / (k * 10)));
-    return this.pool.run({ kind: 'monte-carlo', scenario, spec: scenario, n, chunk, constants: true, item: 'trial', onProgress: (done) => onProgress(done, k) });
+    return this.pool.run({ kind: 'monte-carlo', scenario, spec: scenario, n, chunk, constants: true, item: 'trial', onProgress: (done, _, preparing) => onProgress(done, k, preparing) });
   }
 }
 

@@ -31,7 +31,9 @@ export class StudyPool {
   // the bus stability map's linearisation, skips building it). spec: the study's definition as JSON
   // text, or an async function (first worker) -> spec, for a study whose definition a worker
   // computes first (rare events: the ship's place at the event). onProgress(done, n) after each
-  // chunk; onStart(k) once the workers are chosen. A study estimated long on them (core's
+  // chunk (and onProgress(0, n, true) first, while the first worker prepares: the RAO table, the
+  // definition, the estimate; then onProgress(0, n, false) as the items start); onStart(k) once
+  // the workers are chosen. A study estimated long on them (core's
   // study::estimate) starts only when the user says so in the dialog of long.js; else it fails,
   // cancelled and `declined`, with the estimate in its message (its items named `item`). Then the
   // first worker merges and summarises the shards (with the page constants of `scenario` when
@@ -50,7 +52,7 @@ export class StudyPool {
     for (let a = 0; a < n; a += chunk) queue.push([a, Math.min(n, a + chunk)]);
     const shards = new Array(queue.length);
     let done = 0;
-    onProgress(0, n);
+    onProgress(0, n, true);
     try {
       const first = this.workers[0];
       await first.ready;
@@ -65,6 +67,7 @@ export class StudyPool {
         throw e;
       }
       let next = 0;
+      onProgress(0, n, false);
       await Promise.all(this.workers.map(async (w, i) => {
         await w.ready;
         // The first worker keeps its own table; each other one loads it with its first chunk.

@@ -139,6 +139,13 @@ export class RareView {
 
   status(text, error = false) { this.fold.status(text, error); }
 
+  // Before the first trial (the sea's table and a run in waves to the event's place take seconds):
+  // the bar moves without a share and its line says what is being done, not "0 of n".
+  preparing(n) {
+    $('rare-progress').removeAttribute('value');
+    $('rare-eta').textContent = `Preparing the trials (the sea's response table, then a run in waves to the event's place); the first of ${n} starts after.`;
+  }
+
   cancel() { this.pool.cancel(); }
 
   thresholds() {
@@ -177,8 +184,8 @@ export class RareView {
     await this.fold.compute(async () => {
       const { shards, summary } = await this.pool.run({
         kind: 'rare-events', scenario: study, spec: specOf, n, chunk, item: 'trial',
-        onStart: (k) => this.status(`Rare events: the trials' scenario (a run in waves to the event's place), then ${n} trials on ${k} worker${k > 1 ? 's' : ''}...`),
-        onProgress: (done) => this.fold.progress(done, n, started, 'trial'),
+        onStart: (k) => this.status(`Rare events: ${n} trials on ${k} worker${k > 1 ? 's' : ''}...`),
+        onProgress: (done, _, preparing) => (preparing ? this.preparing(n) : this.fold.progress(done, n, started, 'trial')),
       });
       const entry = { key, study: inp.study, title: inp.title, controls: c, trial, shards, summary, ms: performance.now() - started };
       this.kept.delete(key);

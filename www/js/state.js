@@ -25,8 +25,10 @@ function render() {
 export function setPhase(p) {
   if (!PHASES.includes(p)) throw new Error(`no phase '${p}'`);
   phase = p;
-  if (p === 'running' || p === 'montecarlo') progress(0, '');
+  // Loading (the page's start, or a fresh worker after Cancel): no share of work is done.
+  if (p === 'running' || p === 'montecarlo' || p === 'loading') progress(0, '');
   else $('eta').textContent = '';
+  if (!$('progress').hasAttribute('value')) $('progress').value = 0; // a study that ended while it prepared
   render();
 }
 export function getPhase() { return phase; }
@@ -37,8 +39,9 @@ export function setFormValid(v) { formValid = v; render(); }
 export function setResult(r) { result = r; render(); }
 export function getResult() { return result; }
 
+// fraction null: work with no share to show yet (a study preparing): the bar moves without one.
 export function progress(fraction, eta = '') {
-  $('progress').value = fraction;
+  if (fraction === null) $('progress').removeAttribute('value'); else $('progress').value = fraction;
   $('eta').textContent = eta;
 }
 

@@ -35,6 +35,9 @@ pub fn run(a: Args) -> Result<(), Failure> {
     for r in &o.refused {
         eprintln!("refused: {r}");
     }
+    for s in &o.snapped {
+        eprintln!("moved to a stop: {s}");
+    }
     let r = aes_core::run(&o.scenario).map_err(|e| e.to_string())?;
     let e =
         lessons::explain(&l, &o.values, &lessons::Run { scenario: &o.scenario, trace: &r.trace, summary: &r.summary });

@@ -233,7 +233,10 @@ pub fn zigzag_10_limits(l_over_v_s: f64) -> (f64, f64) {
 /// The booklet of `sc` at its first ordered speed (or its initial speed).
 pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
     if sc.hull.model == crate::ship::maneuvering::HullModelKind::Surge {
-        return Err("hull.model: \"surge\" goes straight only; the maneuvers need \"maneuvering\"".into());
+        // Named by the field and a study that turns, so the reader knows what would make it run.
+        return Err("hull.model: \"surge\" goes straight only; the maneuvers need hull.model = \"maneuvering\" \
+             (or a study that turns, such as turn-360)"
+            .into());
     }
     let plant = Plant::new(sc)?;
     let approach_kn = sc.commands.iter().find_map(|c| c.speed_kn).unwrap_or(sc.initial.speed_kn);
@@ -313,4 +316,23 @@ fn captive(trial: &Trial, sc: &Scenario) -> Result<(Vec<CaptiveRow>, Vec<Captive
         CaptiveRow { drift_deg, r_prime, y_prime: y / q, n_prime: (f.n + nr) / (q * l) }
     };
     Ok(((0..=6).map(|i| row(2.0 * i as f64, 0.0)).collect(), (0..=6).map(|i| row(0.0, 0.1 * i as f64)).collect()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The refusal of a straight-line hull names the field and a study that turns, and that study
+    /// does give a booklet (the advice is one the reader can follow).
+    #[test]
+    fn a_surge_hull_is_refused_naming_the_field_and_a_study_that_runs() {
+        let sc = crate::scenario::presets::preset("startup").expect("startup");
+        let e = booklet(&sc).expect_err("the surge model cannot turn");
+        assert!(e.contains("hull.model = \"maneuvering\"") && e.contains("turn-360"), "{e}");
+        let turn = crate::scenario::presets::preset("turn-360").expect("turn-360");
+        assert!(booklet(&turn).is_ok(), "the study the message names must run");
+        let mut switched = sc.clone();
+        switched.hull.model = crate::ship::maneuvering::HullModelKind::Maneuvering;
+        assert!(booklet(&switched).is_ok(), "the field the message names must make it run");
+    }
 }

@@ -84,6 +84,8 @@ export class LessonView {
     const refused = opened.refused.length ? [el('div', { id: 'lesson-refused', className: 'error', attrs: { role: 'alert' } },
       el('p', { textContent: 'This link\'s values could not all be used; the lesson\'s own stand in their place:' }),
       el('ul', {}, ...opened.refused.map((r) => el('li', { textContent: r }))))] : [];
+    // A link's value between two stops runs at the nearest: said, as the address now carries it.
+    if (opened.snapped && opened.snapped.length) refused.push(el('p', { id: 'lesson-snapped', className: 'lesson-snapped', attrs: { role: 'status' }, textContent: `${opened.snapped.join('. ')}.` }));
     $('lesson-box').replaceChildren(
       el('p', { className: 'lesson-nav' }, el('a', { href: '#lessons', textContent: 'All lessons' }), ' · ', el('a', { href: labHref, id: 'lesson-lab', textContent: 'Open in the full simulator (Lab)' })),
       el('h2', { id: 'lesson-title', textContent: def.title }),

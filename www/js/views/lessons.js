@@ -182,9 +182,11 @@ registerView({
           if (c.kind === 'toggle') for (const [q, y] of c.settings[c.values.indexOf(String(x))] || []) setPath(form.scenario, q, y);
         }
         // A settled value is a step in the history (Back returns to the one before).
+        // (Values that change nothing, "Set it" of values already set, are no step.)
         if (settled) {
           settledAt = performance.now();
-          history.pushState({ shown: null }, '', lessons.hash(ctx.lesson.defaults));
+          const h = lessons.hash(ctx.lesson.defaults);
+          if (location.hash !== h) history.pushState({ shown: null }, '', h);
         }
         lessonRun(ctx, settled);
       },

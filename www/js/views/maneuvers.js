@@ -3,6 +3,8 @@
 // the shafts held, drawn, and the booklet's table beside IMO MSC.137(76)'s limits. All of it is
 // this module: the fold's DOM, the request and the drawing; every number is the wasm's.
 import { $, el, fmt, row } from '../dom.js';
+import { studyTitle } from '../config.js';
+import { choiceLabel } from '../registry.js';
 import { REQUEST } from '../protocol.js';
 import { announce } from '../state.js';
 import { PlotBox, sizedCanvas } from '../plots.js';
@@ -19,6 +21,7 @@ const TEMPLATE = `
     <button id="maneuvers-compute" type="button">Compute the booklet</button>
   </div>
   <div id="maneuvers-status" role="status" aria-live="polite"></div>
+  <div id="maneuvers-fix" class="row buttons" hidden></div>
   <div id="maneuvers-body" hidden>
     <div id="maneuvers-table" class="scroll" tabindex="0" role="region" aria-label="The booklet: IMO criteria"></div>
     <div id="maneuvers-plots"></div>
@@ -79,9 +82,29 @@ function show(b) {
   }
 }
 
+// A hull that goes straight only cannot sail them: one click sets the field the refusal names, or
+// opens a study that turns (core's message names both), and computes.
+const TURNING_STUDY = 'turn-360';
+function offerFixes(ctx, sc) {
+  const box = $('maneuvers-fix');
+  box.hidden = !sc.hull || sc.hull.model === 'maneuvering';
+  if (box.hidden) return;
+  const model = el('button', { type: 'button', id: 'maneuvers-fix-model', textContent: `Use the hull model "${choiceLabel('hull.model', 'maneuvering')}" and compute` });
+  model.addEventListener('click', () => {
+    const f = $('f-hull-model');
+    f.value = 'maneuvering';
+    f.dispatchEvent(new Event('change'));
+    compute(ctx);
+  });
+  const study = el('button', { type: 'button', id: 'maneuvers-fix-study', textContent: `Open "${studyTitle(TURNING_STUDY)}" and compute` });
+  study.addEventListener('click', () => { ctx.selectStudy(TURNING_STUDY); compute(ctx); });
+  box.replaceChildren(model, study);
+}
+
 async function compute(ctx) {
   const inp = ctx.studyInputs();
   if (!inp) return;
+  $('maneuvers-fix').hidden = true;
   if (inp.invalid) { fold.status('A value of the form is refused (marked at its field): correct it first.'); return; }
   const scenario = JSON.stringify(inp.scenario);
   await fold.compute(async () => {
@@ -92,12 +115,13 @@ async function compute(ctx) {
     const failed = booklet.criteria.filter((c) => !c.pass).length;
     fold.status(`Done (${inp.title}): ${failed ? `${failed} of ${booklet.criteria.length} IMO criteria not met` : `all ${booklet.criteria.length} IMO criteria met`}.`);
     announce('maneuvers', booklet);
-  }, { onFail: () => { $('maneuvers-body').hidden = true; fold.shownKey = null; } });
+  }, { onFail: () => { $('maneuvers-body').hidden = true; fold.shownKey = null; offerFixes(ctx, inp.scenario); } });
 }
 
 // A booklet of another ship or speed is not shown under this one.
 function sync(ctx) {
   const inp = ctx.studyInputs();
+  if (inp && inp.scenario.hull && inp.scenario.hull.model === 'maneuvering') $('maneuvers-fix').hidden = true;
   fold.drop(inp ? JSON.stringify(inp.scenario) : null, 'The study changed since the booklet was computed: compute it again.');
 }
 

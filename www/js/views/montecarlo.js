@@ -24,8 +24,9 @@ async function runMonteCarlo(ctx) {
   const started = performance.now();
   let out;
   try {
-    out = await monteCarlo.run(ctx.client, sc, (done, k) => {
-      if (done === 0) { status(`Monte Carlo: ${n} trials on ${k} workers...`); return; }
+    out = await monteCarlo.run(ctx.client, sc, (done, k, preparing) => {
+      if (preparing) { progress(null); status(`Monte Carlo: preparing (the sea's response table), then ${n} trials on ${k} workers...`); return; }
+      if (done === 0) { progress(0); status(`Monte Carlo: ${n} trials on ${k} workers...`); return; }
       const secs = (performance.now() - started) / 1000;
       progress(done / n, secs > 0.5 ? `${done} of ${n} trials, about ${((secs * (n - done)) / done).toFixed(1)} s left` : '');
     });

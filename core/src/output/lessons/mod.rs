@@ -164,6 +164,9 @@ pub struct Opened {
     pub defaults: serde_json::Map<String, serde_json::Value>,
     /// One sentence per refused value.
     pub refused: Vec<String>,
+    /// One sentence per value moved to the slider's nearest stop (a link's 100 deg between stops
+    /// 90 and 105 is run as 105 deg, and the page says so).
+    pub snapped: Vec<String>,
 }
 
 /// The value at a dotted path of a scenario's JSON.
@@ -196,8 +199,17 @@ impl Control {
                         let best = stops.iter().copied().min_by(|a, b| d(*a).total_cmp(&d(*b))).unwrap_or(lo);
                         Ok(serde_json::Value::from(best))
                     }
-                    _ => Err(format!(
+                    // Text that is no number is told as such, not as a number out of range.
+                    Ok(x) if !x.is_nan() => Err(format!(
                         "{}: {} is outside this lesson's range, {} to {}{}",
+                        self.label,
+                        shorten(text),
+                        lo,
+                        hi,
+                        unit_after(self.unit)
+                    )),
+                    _ => Err(format!(
+                        "{}: \"{}\" is not a number; this lesson's range is {} to {}{}",
                         self.label,
                         shorten(text),
                         lo,
@@ -251,6 +263,7 @@ pub fn open(l: &Lesson, given: &[(&str, &str)]) -> Result<Opened, String> {
     let mut defaults = serde_json::Map::new();
     let mut values = serde_json::Map::new();
     let mut refused = Vec::new();
+    let mut snapped = Vec::new();
     let mut sets: Vec<(&str, String)> = Vec::new();
     for c in &l.controls {
         let own = at_path(&root, c.path).cloned().unwrap_or(serde_json::Value::Null);
@@ -266,10 +279,28 @@ pub fn open(l: &Lesson, given: &[(&str, &str)]) -> Result<Opened, String> {
         let own = c.accept(&as_text(&own)).unwrap_or(own);
         defaults.insert(c.path.to_string(), own.clone());
         let v = match given.iter().find(|(p, _)| *p == c.path) {
-            Some((_, text)) => c.accept(text).unwrap_or_else(|e| {
-                refused.push(e);
-                own
-            }),
+            Some((_, text)) => match c.accept(text) {
+                Ok(v) => {
+                    let asked = text.trim().parse::<f64>().ok();
+                    if let (Some(x), Some(used)) = (asked, v.as_f64()) {
+                        if (used - x).abs() > 1e-9 * x.abs().max(1.0) {
+                            snapped.push(format!(
+                                "{}: {}{} lies between this lesson's stops; the nearest, {}{}, is used",
+                                c.label,
+                                shorten(text),
+                                unit_after(c.unit),
+                                as_text(&v),
+                                unit_after(c.unit)
+                            ));
+                        }
+                    }
+                    v
+                }
+                Err(e) => {
+                    refused.push(e);
+                    own
+                }
+            },
             None => own,
         };
         sets.extend(c.sets(&v));
@@ -277,7 +308,7 @@ pub fn open(l: &Lesson, given: &[(&str, &str)]) -> Result<Opened, String> {
     }
     let pairs: Vec<(&str, &str)> = sets.iter().map(|(p, v)| (*p, v.as_str())).collect();
     let scenario = base.with_overrides(&pairs).map_err(|e| format!("lesson {}: {e}", l.name))?;
-    Ok(Opened { scenario, values, defaults, refused })
+    Ok(Opened { scenario, values, defaults, refused, snapped })
 }
 
 /// Explains a finished run of lesson `l` (`values`: the controls' values, as `open` gives them)
