@@ -88,6 +88,22 @@ for (const [w, h] of SIZES) {
       const l0 = await layout(p);
       await stepFirst(p);
       marksAgree(await marks(p), true, `${name} after a change`);
+      if (name === 'waves') {
+        // Redrawn with the run before (dashed) on it, the h/R plot's levels, band edges and event
+        // markers are stroked solid (uPlot left the kept lines' dash on the canvas before).
+        const strokes = await p.$eval('#plots .chart', async (c) => {
+          const u = c.uplot, ctx = u.ctx, seen = [], stroke = ctx.stroke;
+          ctx.stroke = function (...a) { seen.push({ style: String(ctx.strokeStyle), dash: ctx.getLineDash().length }); return stroke.apply(this, a); };
+          // uPlot draws on its next commit: wait a frame, twice (the second redraw inherits the
+          // first's last pattern).
+          for (let k = 0; k < 2; k++) { u.redraw(false, true); await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 30))); }
+          ctx.stroke = stroke;
+          return seen;
+        });
+        const marksDrawn = strokes.filter((x) => ['#b03a2e', '#7b241c', '#4a0f0a', '#a04000'].includes(x.style));
+        assert(marksDrawn.length >= 4 && marksDrawn.every((x) => x.dash === 0), `h/R plot: ${marksDrawn.filter((x) => x.dash).length} of ${marksDrawn.length} level, band or event strokes dashed`);
+        assert(strokes.some((x) => x.dash > 0), 'h/R plot: the run before is not drawn dashed');
+      }
       const l1 = await layout(p);
       assert(Math.abs(l1.live - l0.live) <= 1 && l1.legends.every((x, i) => Math.abs(x - l0.legends[i]) <= 1),
         `${name}: after a change the live view moved from ${Math.round(l0.live)} to ${Math.round(l1.live)} px, the legends from ${l0.legends.map(Math.round)} to ${l1.legends.map(Math.round)} px`);
@@ -100,7 +116,7 @@ for (const [w, h] of SIZES) {
   });
 }
 
-await check('the Lab: every time plot of head seas draws its own lines solid, levels and bands labelled; one spelling (disc); the stern picture\'s thrust words agree with beta_T', async () => {
+await check('the Lab: every time plot of head seas draws its own lines solid; one spelling (disc); the stern picture\'s thrust words agree with beta_T', async () => {
   const c = await browser.newContext({ viewport: { width: 1366, height: 768 } });
   const p = await open(`${base}#v=2&preset=head-seas-ss6`, c);
   const st = await pressAndWait(p);
