@@ -183,6 +183,8 @@ run_tests() {
   node tests/e2e/maneuvers.mjs "http://127.0.0.1:$port/" "$shots" target/release/aes-sim 2>&1 | tee -a "$log"
   say "browser test: links and errors that help (issue 55)"
   node tests/e2e/links.mjs "http://127.0.0.1:$port/" "$shots" 2>&1 | tee -a "$log"
+  say "browser test: one meaning per mark, units, the phone and the projector (issue 55)"
+  node tests/e2e/marks.mjs "http://127.0.0.1:$port/" "$shots" 2>&1 | tee -a "$log"
   kill "$server" 2>/dev/null || true
   trap - EXIT
   # One closing line for the whole suite (pipefail has already stopped us on any failure).

@@ -214,8 +214,9 @@ await check('live views: the plots\' cursor follows the playback and a click on 
 await check('compare runs: "compare with eq. 2.57 as printed" draws both runs on one plot and a table of differences', async () => {
   await page.click('text=Compare with eq. 2.57 as printed');
   await page.waitForFunction(() => !document.getElementById('compare-box').hidden && /^Done/.test(document.getElementById('status').textContent), null, { timeout: 60000 });
-  const legend = await page.$eval('#plots .plot', (p) => p.querySelector('.u-legend').textContent);
-  assert(/kept run/.test(legend), `no kept run in the first plot's legend: ${legend}`);
+  // One legend entry for the kept run, drawn dashed, its lines the only dashed ones.
+  const legend = await page.$eval('#plots .plot', (p) => ({ kept: p.querySelector('.legend-kept').textContent, dash: p.querySelector('.legend-kept line').getAttribute('stroke-dasharray'), own: p.querySelector('.chart').uplot.series.slice(1).filter((s) => !/kept run/.test(s.label) && s.dash).length }));
+  assert(legend.kept.length > 0 && legend.dash && legend.own === 0, `the first plot's legend: ${JSON.stringify(legend)}`);
   const series = await page.$eval('#plots .plot', (p) => p.querySelector('.chart').uplot.series.length);
   assert(series >= 3, `${series} series`);
   const rows = await page.$$eval('#compare-table tbody tr', (r) => r.length);

@@ -153,7 +153,7 @@ for (const [w, h] of SIZES) {
             assert(inView(await onScreen(p, '#plots .plot')) || w < 600, 'the plot is out of view');
             assert((await firstSeries(p)) !== before, 'the plot did not change');
             assert((await p.textContent('#lesson-observe .lesson-explain')) === (await explainedText(p)), 'the words are not those of the final run');
-            const legend = await p.$$eval('#plots .chart', (cs) => (cs[0].querySelectorAll('.u-legend .u-series:not([hidden]) .u-label').length - 1) + '|' + [...cs[0].querySelectorAll('.u-legend .u-label')].map((x) => x.textContent).join('|'));
+            const legend = await p.$eval('#plots .plot .legend', (l) => [...l.children].filter((x) => x.style.visibility !== 'hidden').length + '|' + [...l.children].filter((x) => x.style.visibility !== 'hidden').map((x) => x.textContent).join('|'));
             assert(/run before/.test(legend), `the run before is not drawn (${legend.slice(0, 160)})`);
             const series = await p.$eval('#plots .chart', (c) => c.uplot.series.length - 1);
             const entries = Number(legend.split('|')[0]);

@@ -157,7 +157,7 @@ await check('the bus stability map: the command line\'s map bit for bit, its cel
   await p.dispatchEvent('#busmap-speed', 'input');
   assert(!(await p.getAttribute('#busmap-body', 'class') || '').includes('stale'), 'the map of the boxes\' values is dimmed');
   await p.click('#tab-sim');
-  await setField(p, 'plant.loads.ship_service_w', 5e6);
+  await setField(p, 'plant.loads.ship_service_w', 5); // [MW] (the form shows power in MW)
   await p.click('#tab-ips');
   await p.waitForFunction(() => document.getElementById('busmap-body').classList.contains('stale'), null, { timeout: 5000 });
   assert((await p.textContent('#busmap-status')).includes('compute it again'), await p.textContent('#busmap-status'));

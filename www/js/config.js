@@ -1,6 +1,7 @@
 // Presentation choices only: what the page shows and how. Every number of the model (ratings,
 // levels, bands, lengths, gravity) comes from the wasm (signalMeta, pageConstants); units and
 // labels of recorded signals come from signalMeta. Nothing here is a physics value.
+import { RUDDER_SIGN } from './units.js';
 
 // The scenario form is made from the wasm's paramMeta (labels, units, help, ranges, choices and
 // each parameter's group are declared once, in core). Here only where a group goes on the page
@@ -62,7 +63,7 @@ export const STUDIES = {
     watch: 'One regular head wave of 1 ft: fuel power against calm water. After the run the page sweeps wave frequencies and heights (Fig. 5-12, below the run\'s plots).',
     compare: [{ label: 'calm water', set: { 'sea.kind': 'calm' } }] },
   'head-seas-ss6': { title: 'Head seas, sea state 6: ventilation', plots: ['hr', 'beta', 'motor', 'rpm', 'bus'], params: ['ship.hull.hub_above_base_m', 'seakeeping.stern_motion', 'sea.sea_state', 'sim.seed'],
-    watch: 'h/R against the shaded ventilation band: each time it dips below 1.1 the propeller draws air (orange markers), thrust and torque drop (beta), the propeller races and the motor power falls. Below 1 the disk breaks the surface. Each event is a sudden load rejection for the plant: the turbines overspeed (up to 14 % with seed 1) and dip as much when the propeller bites again, the bus voltage follows them (0.83 to 1.14 pu), then both ring for tens of seconds (bus plot), far beyond the 0.2 % (turbines) and 2 % (bus) they move in these seas when the propellers stay down.',
+    watch: 'h/R against the shaded ventilation band: each time it dips below 1.1 the propeller draws air (orange markers), thrust and torque drop (beta), the propeller races and the motor power falls. Below 1 the disc breaks the surface. Each event is a sudden load rejection for the plant: the turbines overspeed (up to 14 % with seed 1) and dip as much when the propeller bites again, the bus voltage follows them (0.83 to 1.14 pu), then both ring for tens of seconds (bus plot), far beyond the 0.2 % (turbines) and 2 % (bus) they move in these seas when the propellers stay down.',
     compare: [{ label: 'eq. 2.57 as printed', set: { 'seakeeping.stern_motion': 'thesis_eq_2_57' } }, { label: 'fully loaded (the hull\'s own hub height)', set: { 'ship.hull.hub_above_base_m': null } }, { label: 'with storage', preset: 'head-seas-ss6-storage' }],
     note: 'The sign of eq. 2.57: as printed, the stern\'s own motion is added to the wave instead of taken from it, so the hub depth swings by wave plus motion and surface effects come several times as often; with the consistent sign the stern rides the long waves of SS6 and a fully loaded ship (h0 = 6 m) keeps its propellers down.' },
   'head-seas-ss6-storage': { title: 'Head seas, sea state 6, with storage on each bus', plots: ['bus', 'storage', 'motor', 'hr'], params: ['plant.storage.energy_j', 'plant.storage.power_w', 'plant.storage.corner_hz', 'sim.seed'],
@@ -98,21 +99,23 @@ export const studyTitle = (name) => (STUDIES[name] && STUDIES[name].title) || na
 // pageConstants. `events`: markers where surface losses start. `only`: drawn when it holds.
 // `key`: a line under the plot saying what its numbers mean. `asked`: drawn only where a study or
 // lesson lists it (the turbine load alone; the Lab has it in the power inventory).
-// Colours: distinct and >= 3:1 against white; a reference (order) is grey and dashed.
-const REF = { color: '#6b6b6b', dash: [6, 4] };
+// Colours: distinct and >= 3:1 against white. A run's own lines are solid, told apart by colour
+// and width (a dash means the kept run: runplots.js); a reference (order) is grey and thin; on a
+// plot of several, the first is widest, so that a later one drawn over it leaves it in view.
+const REF = { color: '#6b6b6b', width: 1.2 };
 export const PLOTS = [
-  { id: 'speed', title: 'Ship speed', series: [{ signal: 'ship_speed_kn', color: '#0b5cad' }, { signal: 'speed_cmd_kn', ...REF }] },
-  { id: 'rpm', title: 'Propeller speed', events: true, series: [{ signal: 'prop_rpm', color: '#0b5cad' }, { signal: 'prop_rpm_ref', ...REF }] },
-  { id: 'bus', title: 'Bus voltage and turbine speed', series: [{ signal: 'bus_voltage_pu', color: '#b03a2e' }, { signal: 'turbine_speed_pu', color: '#1e7b3c', dash: [8, 3] }] },
+  { id: 'speed', title: 'Ship speed', series: [{ signal: 'ship_speed_kn', color: '#0b5cad', width: 2.4 }, { signal: 'speed_cmd_kn', ...REF }] },
+  { id: 'rpm', title: 'Propeller speed', events: true, series: [{ signal: 'prop_rpm', color: '#0b5cad', width: 2.4 }, { signal: 'prop_rpm_ref', ...REF }] },
+  { id: 'bus', title: 'Bus voltage and turbine speed', series: [{ signal: 'bus_voltage_pu', color: '#b03a2e', width: 2.6 }, { signal: 'turbine_speed_pu', color: '#1e7b3c', width: 1.4 }] },
   { id: 'motor', title: 'Motor power', events: true, series: [{ signal: 'im_power_pu', color: '#6c3483' }] },
-  { id: 'inventory', title: 'Power inventory', prefix: 'M', series: [{ signal: 'p_turbine_w', color: '#1e7b3c' }, { signal: 'p_generator_w', color: '#b9770e', dash: [10, 3] }, { signal: 'p_inverter_w', color: '#0b5cad', dash: [3, 3] }, { signal: 'p_motor_w', color: '#6c3483', dash: [10, 3, 2, 3] }, { signal: 'p_ship_w', color: '#1b1b1b' }] },
-  { id: 'rudder', title: 'Heading and rudder', series: [{ signal: 'heading_deg', color: '#0b5cad' }, { signal: 'heading_ref_deg', ...REF }, { signal: 'rudder_deg', label: 'rudder (+ to port)', axisName: 'rudder', color: '#a04000', axis: 'right' }] },
-  { id: 'hr', title: 'Hub depth over propeller radius', yLabel: 'h/R [-]', sea: true, hOverR: true, events: true, series: [{ signal: 'h_over_r', label: 'h/R port', color: '#0b5cad' }, { signal: 'h_over_r_stbd', label: 'h/R starboard', color: '#1b1b1b', dash: [6, 3] }] },
-  { id: 'beta', title: 'Thrust and torque kept under surface losses', sea: true, events: true, series: [{ signal: 'beta_t', color: '#b03a2e' }, { signal: 'beta_q', color: '#6c3483', dash: [6, 3] }] },
-  { id: 'wave', title: 'Wave at the stern and hub depth', sea: true, series: [{ signal: 'wave_stern_m', color: '#0b5cad' }, { signal: 'hub_depth_m', color: '#1b1b1b', dash: [6, 3] }] },
+  { id: 'inventory', title: 'Power inventory', prefix: 'M', series: [{ signal: 'p_turbine_w', color: '#1e7b3c', width: 4.2 }, { signal: 'p_generator_w', color: '#b9770e', width: 3.2 }, { signal: 'p_inverter_w', color: '#0b5cad', width: 2.3 }, { signal: 'p_motor_w', color: '#6c3483', width: 1.5 }, { signal: 'p_ship_w', color: '#1b1b1b', width: 1.2 }] },
+  { id: 'rudder', title: 'Heading and rudder', key: RUDDER_SIGN, series: [{ signal: 'heading_deg', color: '#0b5cad', width: 2.4 }, { signal: 'heading_ref_deg', ...REF }, { signal: 'rudder_deg', label: 'rudder (+ to port)', axisName: 'rudder', color: '#a04000', axis: 'right' }] },
+  { id: 'hr', title: 'Hub depth over propeller radius', yLabel: 'h/R [-]', sea: true, hOverR: true, events: true, series: [{ signal: 'h_over_r', label: 'h/R port', color: '#0b5cad', width: 2.6 }, { signal: 'h_over_r_stbd', label: 'h/R starboard', color: '#1b1b1b', width: 1.2 }] },
+  { id: 'beta', title: 'Thrust and torque kept under surface losses', sea: true, events: true, series: [{ signal: 'beta_t', color: '#b03a2e', width: 2.6 }, { signal: 'beta_q', color: '#6c3483', width: 1.4 }] },
+  { id: 'wave', title: 'Wave at the stern and hub depth', sea: true, series: [{ signal: 'wave_stern_m', color: '#0b5cad', width: 2.6 }, { signal: 'hub_depth_m', color: '#1b1b1b', width: 1.4 }] },
   { id: 'heave', title: 'Heave', sea: true, series: [{ signal: 'heave_m', label: 'heave (up)', color: '#117a65' }] },
-  { id: 'pitch', title: 'Pitch and roll', sea: true, series: [{ signal: 'pitch_deg', label: 'pitch (bow down)', color: '#a04000' }, { signal: 'roll_deg', label: 'roll (starboard down)', color: '#5b2c6f', dash: [6, 3] }] },
-  { id: 'force', title: 'Second-order wave force', sea: true, prefix: 'k', key: 'The slowly varying force of wave groups (Newman\'s approximation of the mean drift force, Salvesen\'s method): it peaks when a group passes, at any time, the start too. Below zero is physics: waves from abaft the beam push the ship on (negative added resistance), as in a turn out of head seas.', series: [{ signal: 'added_resistance_n', color: '#b03a2e' }, { signal: 'drift_force_n', label: 'drift force (to starboard)', color: '#0b5cad', dash: [6, 3] }] },
+  { id: 'pitch', title: 'Pitch and roll', sea: true, series: [{ signal: 'pitch_deg', label: 'pitch (bow down)', color: '#a04000', width: 2.6 }, { signal: 'roll_deg', label: 'roll (starboard down)', color: '#5b2c6f', width: 1.4 }] },
+  { id: 'force', title: 'Second-order wave force', sea: true, prefix: 'k', key: 'The slowly varying force of wave groups (Newman\'s approximation of the mean drift force, Salvesen\'s method): it peaks when a group passes, at any time, the start too. Below zero is physics: waves from abaft the beam push the ship on (negative added resistance), as in a turn out of head seas.', series: [{ signal: 'added_resistance_n', color: '#b03a2e', width: 2.6 }, { signal: 'drift_force_n', label: 'drift force (to starboard)', color: '#0b5cad', width: 1.4 }] },
   { id: 'fuel', title: 'Fuel power, the turbines online', prefix: 'M', series: [{ signal: 'fuel_power_w', color: '#6e2c00' }] },
   { id: 'load', title: 'Turbine load, the turbines online', prefix: 'M', asked: true, series: [{ signal: 'p_turbine_w', color: '#1e7b3c' }] },
   { id: 'storage', title: 'Storage power, both buses (negative: charging)', prefix: 'M', series: [{ signal: 'storage_power_w', color: '#117a65' }], only: (c) => c.storage_power_w.some((v) => v !== 0) },
@@ -146,8 +149,8 @@ export const KEY_FIGURES = [
 ];
 
 
-// The h/R plot: the ventilation hysteresis band, the region where the disk is at or above the
-// surface, and the levels of pageConstants (dashed, labelled). Colours >= 3:1 on white.
+// The h/R plot: the ventilation hysteresis band, the region where the disc is at or above the
+// surface, and the levels of pageConstants (solid, labelled). Colours >= 3:1 on white.
 export const LEVEL_COLORS = ['#b03a2e', '#7b241c', '#4a0f0a'];
 export const BAND_FILL = 'rgba(211, 84, 0, 0.28)';
 export const BAND_EDGE = '#a04000';

@@ -6,6 +6,7 @@ import { $, el } from './dom.js';
 import { migrate } from './registry.js';
 import { fieldLine } from './protocol.js';
 import { diff } from './link.js';
+import { fieldUnit, fromShown } from './units.js';
 
 function getPath(obj, path) { return path.split('.').reduce((o, k) => (o == null ? undefined : o[k]), obj); }
 export function setPath(obj, path, value) {
@@ -29,10 +30,14 @@ export function leafPaths(d, prefix = '') {
   return Object.keys(d).flatMap((k) => leafPaths(d[k], prefix ? `${prefix}.${k}` : k));
 }
 
+// The unit a field shows (power in MW, energy in MJ) and the factor from SI to it.
+const shownUnit = (m) => (m.unit && m.unit !== '-' ? fieldUnit(m.unit) : { unit: '', factor: 1 });
+const shownValue = (m, v) => (typeof v === 'number' && m ? v * shownUnit(m).factor : v);
+
 // A field's help line: what it does, what is allowed and where its default comes from.
 function helpText(m) {
-  const unit = m.unit && m.unit !== '-' ? ` ${m.unit}` : '';
-  const range = m.min != null && m.max != null ? ` From ${show(m.min)} to ${show(m.max)}${unit}.` : '';
+  const { unit: u } = shownUnit(m), unit = u ? ` ${u}` : '';
+  const range = m.min != null && m.max != null ? ` From ${show(shownValue(m, m.min))} to ${show(shownValue(m, m.max))}${unit}.` : '';
   const empty = m.empty ? (m.empty_is === 'null' ? ` Empty: ${m.empty}.` : ` 0: ${m.empty}.`) : '';
   const source = m.source ? ` Source: ${m.source}.` : '';
   return `${m.help}${range}${empty}${source}`;
@@ -100,7 +105,7 @@ export class ScenarioForm {
         const derived = FORM_PLACES.derived[m.path];
         const h = el('div', { className: 'help', id: id + '-help' }, el('span', { textContent: helpText(m) }), el('span', { className: 'preset-value' }),
           ...(derived ? [el('output', { className: 'derived', id: `${id}-derived`, htmlFor: id })] : []));
-        const unit = m.unit && m.unit !== '-' ? m.unit : '';
+        const { unit } = shownUnit(m);
         const div = el('div', { className: 'field', id: id + '-field' },
           el('label', { htmlFor: id, textContent: unit ? `${m.label} [${unit}]` : m.label }),
           input, h, el('div', { className: 'ferr', id: id + '-err' }));
@@ -142,11 +147,12 @@ export class ScenarioForm {
   fill() {
     const preset = this.preset();
     for (const input of $('controls').querySelectorAll('[data-path]')) {
+      const m = this.byPath.get(input.dataset.path);
       const v = getPath(this.scenario, input.dataset.path);
-      input.value = v == null ? '' : show(v);
+      input.value = v == null ? '' : show(shownValue(m, v));
       const p = getPath(preset, input.dataset.path);
       const opt = input.tagName === 'SELECT' ? [...input.options].find((o) => o.value === String(p)) : null;
-      $(input.id + '-help').querySelector('.preset-value').textContent = p == null ? '' : ` Study value: ${opt ? opt.text : show(p)}.`;
+      $(input.id + '-help').querySelector('.preset-value').textContent = p == null ? '' : ` Study value: ${opt ? opt.text : show(shownValue(m, p))}.`;
     }
     $('f-commands').value = JSON.stringify(this.scenario.commands, null, 1);
   }
@@ -180,7 +186,7 @@ export class ScenarioForm {
       v = v === 'true' ? true : v === 'false' ? false : v;
     } else {
       if (!this.checkNumber(input)) return;
-      v = v.trim() === '' ? undefined : Number(v);
+      v = v.trim() === '' ? undefined : fromShown(Number(v), shownUnit(this.byPath.get(path)).factor);
     }
     // An emptied optional field: null where the study sets a value (a link carries the change),
     // else no key at all.

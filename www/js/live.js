@@ -11,7 +11,7 @@ import { LIVE } from './config.js';
 import { el } from './dom.js';
 import { TrainView, storageText } from './live/drivetrain.js';
 import { PlanView } from './live/plan.js';
-import { fixed, hubText, mw, pct, rowAt, setsText, signed, steadySets } from './live/shared.js';
+import { fixed, hubText, mw, pct, rowAt, rudderText, setsText, signed, steadySets } from './live/shared.js';
 import { SternView } from './live/stern.js';
 
 // The page's own copy of the wasm, for pictures only (the worker runs the simulations).
@@ -250,7 +250,7 @@ export class LiveViews {
     const parts = [`At ${this.t.toFixed(1)} s: turbines${running} ${mw(v('p_turbine_w') / sets.n)} each at ${v('turbine_speed_pu').toFixed(3)} pu speed${v('turbine_speed_pu') > w.turbine_overspeed_pu ? ' (OVERSPEED)' : v('turbine_speed_pu') < w.turbine_min_running_pu ? ' (STALLED)' : ''}`,
       `generators ${mw(v('p_generator_w') / sets.n)} each`, `buses at ${v('bus_voltage_pu').toFixed(3)} pu (${(v('bus_voltage_v') / 1e3).toFixed(2)} kV)`,
       `motors ${mw(v('p_motor_w') / 2)} each (${v('im_power_pu').toFixed(2)} pu)`, `propellers ${v('prop_rpm_1').toFixed(0)} and ${v('prop_rpm_2').toFixed(0)} rpm`,
-      `ship ${v('ship_speed_kn').toFixed(1)} kn, heading ${fixed(v('heading_deg'), 0)}°, rudder ${v('rudder_deg').toFixed(1)}°${v('rudder_deg') > 0.05 ? ' (to port)' : v('rudder_deg') < -0.05 ? ' (to starboard)' : ''}`];
+      `ship ${v('ship_speed_kn').toFixed(1)} kn, heading ${fixed(v('heading_deg'), 0)}°, rudder ${rudderText(v('rudder_deg'))}`];
     if (v('brake_power_w') > 0) parts.push(`brake resistors ${mw(v('brake_power_w'))}`);
     // Each bus's share, as the picture draws it (the trace records the sums and the mean charge).
     if (this.parts.storage) parts.push(`storage on each bus ${pct(v('storage_soc'))} charged, ${storageText(v('storage_power_w') / 2)}`);
@@ -262,7 +262,7 @@ export class LiveViews {
 
   // The disc's state at the playback time (the stern view draws it, the text alternative says it).
   discState() {
-    // The levels of eq. 2.14 on h/R (pageConstants): disk at the surface, disk out of the water.
+    // The levels of eq. 2.14 on h/R (pageConstants): disc at the surface, disc out of the water.
     const hr = this.v('h_over_r'), bt = this.v('beta_t'), lv = this.k.h_over_r_levels.map((l) => l.value);
     if (hr <= Math.min(...lv)) return { text: 'disc out of the water', loud: true };
     if (hr < Math.max(...lv)) return { text: 'disc breaks the surface', loud: true };

@@ -2,7 +2,7 @@
 // changes (ResizeObserver), with their PNG export and table of numbers. What a run draws in it is
 // runplots.js; the plots asked of the worker after a run in waves, seaextras.js.
 import uPlot from '../vendor/uPlot.esm.js';
-import { EVENT_COLOR } from './config.js';
+import { EVENT_COLOR, KEPT_STYLE } from './config.js';
 import { el, fmt, downloadUrl } from './dom.js';
 
 const plotHeight = () => parseFloat(getComputedStyle(document.body).getPropertyValue('--plot-h')) || 240;
@@ -67,6 +67,35 @@ export function presentPlots(big) {
   }
 }
 
+// A line's width when its plot names none [CSS px].
+const LINE_WIDTH = 1.8;
+const SVG = 'http://www.w3.org/2000/svg';
+
+// A legend swatch: a short stretch of the line as drawn (colour, width, dash pattern).
+function swatch({ color, stroke, width = LINE_WIDTH, dash = null }) {
+  const svg = document.createElementNS(SVG, 'svg');
+  for (const [k, v] of Object.entries({ width: 30, height: 10, viewBox: '0 0 30 10', 'aria-hidden': 'true', class: 'swatch-line' })) svg.setAttribute(k, v);
+  const ln = document.createElementNS(SVG, 'line');
+  for (const [k, v] of Object.entries({ x1: 1, y1: 5, x2: 29, y2: 5, stroke: color || stroke, 'stroke-width': width, ...(dash ? { 'stroke-dasharray': dash.join(' ') } : {}) })) ln.setAttribute(k, v);
+  svg.append(ln);
+  return svg;
+}
+
+// The legend under a line plot: every line of the run with its pattern, and one entry for a kept
+// run's lines (`keptKey`, see PlotBox.line), its place held while there is none.
+function legend(series, keptKey) {
+  const own = series.filter((s) => !s.kept);
+  const keptOne = series.find((s) => s.kept);
+  const items = own.map((s) => el('li', {}, swatch(s), s.label));
+  if (keptKey !== undefined) {
+    // Grey: it stands for every kept line, each drawn faint in its own line's colour.
+    const li = el('li', { className: 'legend-kept' }, swatch(KEPT_STYLE), keptKey || 'the run before');
+    if (!keptOne) li.style.visibility = 'hidden';
+    items.push(li);
+  }
+  return el('ul', { className: 'legend', attrs: { 'aria-label': 'Lines' } }, ...items);
+}
+
 // A box of plots. clear() starts a new generation: plots that arrive late for an older one
 // (after an asynchronous request) are dropped. `more`: a second container for the plots that do
 // not tell the study's story (one click away).
@@ -111,17 +140,23 @@ export class PlotBox {
   // hbands: [{from, to, fill, edge?}] shaded across the plot; levels: [{value, label, color}];
   // markers: x values of events; key: a line under the plot saying what the shading means.
   // vlines: [{x, label, color, dash}] dashed vertical lines labelled at the top (quantiles).
-  line(title, x, series, axes, { generation, scales = {}, more = false, hbands = [], levels = [], markers = [], vlines = [], key = null, time = false } = {}) {
+  // keptKey: the legend's one entry for a kept run's lines (series with `kept: true`), a string
+  // (its name) or '' (none now: its place is kept, so a run kept later does not move the page
+  // under the plot); undefined: no such entry.
+  line(title, x, series, axes, { generation, scales = {}, more = false, hbands = [], levels = [], markers = [], vlines = [], key = null, time = false, keptKey } = {}) {
     const div = this.panel(title, generation, more);
     if (!div) return null;
     const chart = el('div', { className: 'chart' });
-    div.append(chart);
+    div.append(chart, legend(series, keptKey));
     const yScales = {};
     for (const a of axes) yScales[a.scale] = scales[a.scale] || {};
     const overlay = (u) => {
       const { ctx } = u;
       const { left, top, width, height } = u.bbox;
       ctx.save();
+      // uPlot leaves the last dashed series' pattern on the context: bands, levels and markers
+      // are solid.
+      ctx.setLineDash([]);
       ctx.beginPath(); ctx.rect(left, top, width, height); ctx.clip();
       const sc = axes[0].scale;
       for (const b of hbands) {
@@ -134,11 +169,11 @@ export class PlotBox {
         }
       }
       const dpr = devicePixelRatio || 1;
+      // Levels solid and labelled: a dash on a plot means a kept run.
       for (const l of levels) {
         const y = u.valToPos(l.value, sc, true);
-        ctx.strokeStyle = l.color; ctx.lineWidth = 1.5 * dpr; ctx.setLineDash([6 * dpr, 4 * dpr]);
+        ctx.strokeStyle = l.color; ctx.lineWidth = 1.5 * dpr;
         ctx.beginPath(); ctx.moveTo(left, y); ctx.lineTo(left + width, y); ctx.stroke();
-        ctx.setLineDash([]);
       }
       for (const v of vlines) {
         const X = u.valToPos(v.x, 'x', true);
@@ -212,8 +247,9 @@ export class PlotBox {
       height: plotHeight(),
       scales: { x: { time: false, ...(x.distr ? { distr: x.distr } : {}), ...(x.range ? { range: () => x.range } : {}) }, ...yScales },
       axes: [{ label: x.label, values: ticks }, ...axes.map((a, i) => ({ scale: a.scale, label: a.label, values: ticks, size: 60, ...(i ? { side: 1, grid: { show: false } } : {}) }))],
-      series: [{ label: x.label }, ...series.map(({ data, color, ...rest }) => ({ stroke: color, width: 1.8, scale: axes[0].scale, spanGaps: true, ...rest }))],
-      legend: { live: false },
+      series: [{ label: x.label }, ...series.map(({ data, color, kept, ...rest }) => ({ stroke: color, width: LINE_WIDTH, scale: axes[0].scale, spanGaps: true, ...rest }))],
+      // The legend is the page's own (legend()): it draws each line's pattern.
+      legend: { show: false },
       // No horizontal cursor line: parked at mid-height by the live views' cursor, it read as a
       // threshold.
       // One cursor across the box's time plots, and across any other plots that share their x

@@ -47,9 +47,10 @@ function runPlot(box, spec, cols, signals, constants, kept, more, markers) {
     const scale = 'y:' + key;
     const scaled = (d) => (factor === 1 ? d : Array.from(d, (v) => (v == null ? null : v * factor)));
     const label = s.label || signals.label(s.signal);
-    const { signal, axis, axisName, ...style } = s;
+    // The run's own lines are solid (told apart by colour and width): a dash means the kept run.
+    const { signal, axis, axisName, dash, ...style } = s;
     g.series.push({ ...style, data: scaled(pairs[k][0]), base, label, axisName: axisName || label, scale });
-    if (keptCols) g.kept.push({ data: scaled(pairs[k][1]), label: `${label}, kept run (${kept.name})`, color: s.color + '88', dash: KEPT_STYLE.dash, width: KEPT_STYLE.width, scale });
+    if (keptCols) g.kept.push({ data: scaled(pairs[k][1]), label: `${label}, kept run (${kept.name})`, color: s.color + '88', dash: KEPT_STYLE.dash, width: KEPT_STYLE.width, scale, kept: true });
   });
   if (groups.size > 2) throw new Error(`plot '${spec.title}': more than two axes`);
   const axes = [];
@@ -71,7 +72,8 @@ function runPlot(box, spec, cols, signals, constants, kept, more, markers) {
   for (const g of groups.values()) series.push(...g.kept);
   const units = [...new Set(axes.map((a) => a.unit))];
   const title = `${spec.title} [${units.join('; ')}]`;
-  const opts = { more, time: true, markers: spec.events ? markers : [] };
+  // The legend's entry for the kept run: one, short, its place held when there is none.
+  const opts = { more, time: true, markers: spec.events ? markers : [], keptKey: keptCols ? fitLabel(kept.name || 'the run before', 40) : '' };
   if (spec.hOverR) {
     const lv = constants.h_over_r_levels;
     opts.hbands = constants.h_over_r_bands.map((b) => ({ from: b.from, to: b.to, fill: BAND_FILL, edge: BAND_EDGE }));
@@ -79,7 +81,7 @@ function runPlot(box, spec, cols, signals, constants, kept, more, markers) {
     opts.hbands.unshift({ from: surface, to: Math.min(...lv.map((l) => l.value), ...Array.from(cols.h_over_r)) - 1, fill: SURFACE_FILL });
     opts.levels = lv.map((l, j) => ({ value: l.value, label: l.label, color: LEVEL_COLORS[j % LEVEL_COLORS.length] }));
     const sw = (fill) => el('span', { className: 'swatch', attrs: { style: `background:${fill}` } });
-    opts.key = [sw(BAND_FILL), ...constants.h_over_r_bands.map((b) => `${b.label}; `), sw(SURFACE_FILL), `below ${surface}: the disk breaks the surface; `,
+    opts.key = [sw(BAND_FILL), ...constants.h_over_r_bands.map((b) => `${b.label}; `), sw(SURFACE_FILL), `below ${surface}: the disc breaks the surface; `,
       el('span', { textContent: `▼ ${markers.length} loss onsets` })];
     const lo = Math.min(...lv.map((l) => l.value));
     opts.scales = { [axes[0].scale]: { range: (u, min, max) => [Math.min(min, lo - 0.2), Math.max(max, 2)] } };
@@ -88,17 +90,7 @@ function runPlot(box, spec, cols, signals, constants, kept, more, markers) {
   } else if (spec.key) {
     opts.key = [spec.key];
   }
-  const u = box.line(title, { data: x, label: `time [${signals.meta('t_s').unit}]` }, series, axes, opts);
-  // One legend entry for the kept run, not one per line it has: its lines share one style.
-  const nKept = [...groups.values()].reduce((n, g) => n + g.kept.length, 0);
-  if (nKept && u && u.root) {
-    const rows = [...u.root.querySelectorAll('.u-legend .u-series')].slice(1 + series.length - nKept);
-    rows.forEach((r, i) => {
-      if (i) r.hidden = true;
-      else r.querySelector('.u-label').textContent = `faint dashed: ${kept.name || 'the run before'}`;
-    });
-  }
-  return u;
+  return box.line(title, { data: x, label: `time [${signals.meta('t_s').unit}]` }, series, axes, opts);
 }
 
 // Every plot of a run: the study's plots first (`order`: PLOTS ids and 'track'), the others under

@@ -58,3 +58,13 @@ export function quantity(value, unit) {
   const v = value / PREFIX[prefix];
   return `${Number(v.toPrecision(4))} ${prefix}${unit}`;
 }
+
+// The unit a form field shows for a parameter declared in `unit`, as the lessons write it: power
+// in MW, energy in MJ (the scenario keeps SI). {unit, factor}: shown value = SI value times factor.
+const FIELD_PREFIX = { W: 'M', J: 'M' };
+export function fieldUnit(unit) { return withPrefix(unit, FIELD_PREFIX[unit] || ''); }
+// A shown value back to SI, without the float noise of the division (21.5 MW is 21500000 W).
+export function fromShown(x, factor) { return factor === 1 ? x : Number((x / factor).toPrecision(15)); }
+
+// The page's one rudder sign (the model's: core's ship/rudder.rs), said under every plot of it.
+export const RUDDER_SIGN = 'Rudder angle in the model\'s sign: + turns the ship to port, − to starboard (the live view says the side in words).';

@@ -230,9 +230,9 @@ impl PageConstants {
                 ),
             }],
             h_over_r_levels: vec![
-                Level { value: DISK_AT_SURFACE_H_OVER_R, label: "disk reaches the surface".into() },
+                Level { value: DISK_AT_SURFACE_H_OVER_R, label: "disc reaches the surface".into() },
                 Level { value: HUB_AT_SURFACE_H_OVER_R, label: "hub at the surface".into() },
-                Level { value: DISK_OUT_H_OVER_R, label: "disk out of the water".into() },
+                Level { value: DISK_OUT_H_OVER_R, label: "disc out of the water".into() },
             ],
             motor_rated_power_w: sc.plant.motor.rated_power_w,
             bus_voltage_ref_v: sc.bus_voltage_ref_v(),

@@ -242,7 +242,7 @@ pub fn head_seas_ss6() -> Scenario {
          only h0 = 3.5 m below the calm surface and their tips 1.25 m below it (the hull keeps the 5415's \
          draft, mass and RAOs; only the hub moves). As the stern rises and falls in the waves \
          the hub depth swings by about 2 m: with the consistent hub depth (the stern follows the long waves) \
-         the propellers ventilate six or seven times each in the 80 s (h/R below 1.1; seed 1), the disks reach the \
+         the propellers ventilate six or seven times each in the 80 s (h/R below 1.1; seed 1), the discs reach the \
          surface two to four times, and the motor's power drops to 0.14-0.33 pu in the deepest dips. Fully loaded \
          (h0 = 6 m, the thesis' depth) they stay down; with the hub depth of eq. 2.57 as printed \
          (seakeeping.stern_motion) they ventilate at either depth, far more often."

@@ -3,7 +3,7 @@
 // are trace values at the playback time; the waterline comes from the wasm's hullProfile and the
 // wave field from the run's own wave components summed in Rust (Sea). No physics here.
 import { LIVE } from '../config.js';
-import { C, View, fixed, rowAt } from './shared.js';
+import { C, View, fixed, rowAt, rudderText } from './shared.js';
 
 export class PlanView extends View {
   constructor(onResize) {
@@ -81,7 +81,8 @@ export class PlanView extends View {
       g.fillStyle = C.text; g.fillText(text, x, y);
     };
     label(`heading ${fixed(v('heading_deg'), 0)}°, ${v('ship_speed_kn').toFixed(1)} kn`, 8, 6);
-    label(`rudder ${Math.abs(v('rudder_deg')).toFixed(1)}°${v('rudder_deg') > 0.05 ? ' to port' : v('rudder_deg') < -0.05 ? ' to starboard' : ''} (drawn ×3)`, 8, 10 + fs);
+    // The model's sign, as the plots and the booklet give it (+ turns to port), with its word.
+    label(`rudder ${rudderText(v('rudder_deg'))} (drawn ×3)`, 8, 10 + fs);
     label(`drift ${v('drift_angle_deg').toFixed(1)}° (dashed: course over ground)`, 8, 14 + 2 * fs);
     label('N ↑', w - 8, 6, 'right');
     const from_deg = L.from;

@@ -22,6 +22,11 @@ export const pct = (x) => (Number.isFinite(x) ? `${(100 * x).toFixed(1)} %` : '�
 // The hub's place against the local surface (eq. 2.57 as printed can put it above).
 export const hubText = (hub) => (hub >= 0 ? `hub ${hub.toFixed(2)} m below the surface` : `hub ${(-hub).toFixed(2)} m above the surface`);
 export const signed = (x, d = 2) => `${x >= 0 ? '+' : '−'}${Math.abs(x).toFixed(d)}`;
+// A rudder angle [deg] in the model's sign (+ turns the ship to port; core's ship/rudder.rs), with
+// the side in words: "−5.0° (to starboard)". The plots and the booklet use the same sign.
+export const rudderText = (deg) => `${deg > 0.05 || deg < -0.05 ? signed(deg, 1) : '0.0'}°${deg > 0.05 ? ' (to port)' : deg < -0.05 ? ' (to starboard)' : ''}`;
+// β_T, the share of the open-water thrust a propeller keeps under surface losses (eq. 2.14), in words.
+export const thrustKeptText = (b) => `β_T ${b.toFixed(2)}: ${b >= 0.995 ? 'all its thrust' : b < 0.005 ? 'no thrust left' : `${(100 * b).toFixed(0)} % of its thrust`}`;
 
 // A canvas that follows its box's width at a CSS height; draw() redraws after a resize.
 export class View {

@@ -4,7 +4,7 @@
 // from the wasm's hullProfile, the surface from the run's own wave components summed in Rust
 // (Sea), the propeller's place and radius and the h/R levels from pageConstants. No physics here.
 import { LIVE } from '../config.js';
-import { C, View, hubText, signed } from './shared.js';
+import { C, View, hubText, signed, thrustKeptText } from './shared.js';
 
 export class SternView extends View {
   constructor(onResize) {
@@ -106,9 +106,9 @@ export class SternView extends View {
       for (let b = 0; b < 7; b++) { const a = (b / 7) * 2 * Math.PI + 0.4; g.beginPath(); g.arc(dx + Math.cos(a) * rpx * 0.8, dz - Math.sin(a) * rpx * 0.8, 3 + (b % 3), 0, 2 * Math.PI); g.fill(); }
     }
     L.drawn.stern = { hub_depth_m: hub, wave_stern_m: waveStern, kernel_wave_stern_m: kernelAtHub, h_over_r: v('h_over_r'), disc_top_px: dz - rpx, surface_px: surfPx,
-      disc_out_of_water: dz - rpx < surfPx, state: state.text, surface_at_hub_m: surf(hx) };
+      disc_out_of_water: dz - rpx < surfPx, state: state.text, surface_at_hub_m: surf(hx), beta_t: v('beta_t'), thrust_text: thrustKeptText(v('beta_t')) };
     // Labels: a box in the top left corner (never over the disc).
-    const lines = [[`h/R ${v('h_over_r').toFixed(2)}: ${state.text}`, state.loud], [`β_T ${v('beta_t').toFixed(2)} (thrust kept)`, false],
+    const lines = [[`h/R ${v('h_over_r').toFixed(2)}: ${state.text}`, state.loud], [L.drawn.stern.thrust_text, false],
       [hubText(hub), false], [`wave at the stern ${signed(waveStern)} m`, false],
       [`heave ${signed(heave)} m, pitch ${signed(v('pitch_deg'), 1)}° bow down`, false]];
     const fs = Math.max(11, Math.min(L.big ? 20 : 15, Math.round(w / 45)));

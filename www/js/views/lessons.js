@@ -79,6 +79,8 @@ async function openLesson(ctx, parsed) {
     ctx.keep(null);
     ctx.clearResults();
     lessons.open(def, o, labHref(form), answered.has(def.name));
+    // Another lesson opens at its top, not at the index's scroll.
+    window.scrollTo(0, 0);
   }
   history.replaceState(history.state, '', lessons.hash(o.defaults));
   const done = answered.has(def.name);
