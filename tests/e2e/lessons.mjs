@@ -7,7 +7,9 @@
 // to the new plot against the native run of the same scenario (medians per lesson printed); the
 // engines lesson's list-valued control (the sets running) stepped and set by "Try this next", its
 // words and fuel figure against the native run; the battery lesson's drive-train storage block
-// against the native trace; axe-core finds no serious violation before and after a run.
+// against the native trace; axe-core finds no serious violation before and after a run; every
+// lesson about a change answered, changed, and its verdict with both numbers against the native
+// one (issue 55).
 // Usage: node tests/e2e/lessons.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR [path of aes-sim]
 import { mkdirSync, readFileSync, writeFileSync, existsSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
@@ -408,6 +410,41 @@ await check('one value per lesson: the page says the words the native claim chec
     const words = execFileSync(native, ['lesson', name, '--value', value], { encoding: 'utf8' }).split('\n')[1];
     assert(page === words, `${name} ${value}:\n page:   ${page}\n native: ${words}`);
     if (name === 'battery') await storageBlockAgrees(p);
+    await p.close();
+  }
+  await ctx.close();
+});
+
+// The predict-observe-explain loop (issue 55): each lesson about a change, answered, then the
+// question's control moved one step; the verdict on the prediction (#lesson-verdict) gives the
+// run before's number and the run now's and is the native `aes-sim lesson --before default
+// --answer N` verdict for the same values, to the character.
+const CHANGES = { waves: 'ship.hull.hub_above_base_m', sign: 'seakeeping.stern_motion', braking: 'plant.dc_link.brake_resistor_ohm', bus: 'controllers.field.kp', engines: 'plant.online.sets', battery: 'plant.storage.energy_j' };
+await check('every lesson about a change, answered and changed, says its verdict with the numbers before and now, the same as aes-sim lesson\'s (issue 55)', async () => {
+  assert(existsSync(native), `no native ${native}`);
+  const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  let n = 0;
+  for (const [name, path] of Object.entries(CHANGES)) {
+    const p = await openPage(ctx, `${base}#lesson=${name}`, base, errors);
+    await idle(p);
+    const answer = n++ % 3;
+    await p.click(`#lesson-a${answer}`);
+    await p.waitForFunction(() => document.querySelector('#lesson-observe .lesson-explain'), null, { timeout: 60000 });
+    await done(p);
+    const first = await p.textContent('#lesson-verdict');
+    assert(/One run (cannot answer|shows one choice)|does not answer/.test(first), `${name}: the first run's verdict: ${first}`);
+    const lat = await mark(p);
+    await keyStep(p, `#lesson-${path.replace(/\./g, '-')}`);
+    await rerun(p, lat);
+    await p.waitForTimeout(200);
+    const page = await p.textContent('#lesson-verdict');
+    const values = await p.evaluate(() => [...new URLSearchParams(location.hash.slice(1))].filter(([k]) => k !== 'lesson').map(([k, v]) => `${k}=${v}`));
+    assert(values.some((v) => v.startsWith(`${path}=`)), `${name}: the address does not carry the change: ${values.join(' ')}`);
+    const args = ['lesson', name, '--before', 'default', '--answer', String(answer + 1), ...values.flatMap((v) => ['--value', v])];
+    const words = execFileSync(native, args, { encoding: 'utf8' }).split('\n')[0];
+    assert(page === words, `${name} ${values.join(' ')}:\n page:   ${page}\n native: ${words}`);
+    assert(/You predicted: /.test(page) && / before \(/.test(page) && / now \(/.test(page) && /\d/.test(page), `${name}: no verdict with both numbers: ${page}`);
+    console.log(`     ${name}: ${page}`);
     await p.close();
   }
   await ctx.close();

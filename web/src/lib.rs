@@ -174,16 +174,22 @@ impl Run {
     }
 
     /// What the finished run shows as lesson `name` with the controls' `values` (JSON, as
-    /// `lessonOpen` gives them): `aes_core::output::lessons::explain` as JSON.
+    /// `lessonOpen` gives them), and with `before` (JSON `{values, reading, answer}` of the run
+    /// before, or `null`) the verdict on the prediction: `aes_core::output::lessons::explain_after`
+    /// as JSON.
     #[wasm_bindgen(js_name = lessonExplain)]
-    pub fn lesson_explain(&self, name: JsValue, values: JsValue) -> Result<String, JsError> {
+    pub fn lesson_explain(&self, name: JsValue, values: JsValue, before: JsValue) -> Result<String, JsError> {
         let l = lessons::lesson(&text(&name, "the lesson's name")?).map_err(|e| JsError::new(&e))?;
         let values: serde_json::Map<String, serde_json::Value> =
             serde_json::from_str(&text(&values, "the lesson's values")?).map_err(|e| JsError::new(&e.to_string()))?;
+        let before: Option<lessons::Before> = match before.as_string() {
+            Some(t) => serde_json::from_str(&t).map_err(|e| JsError::new(&format!("the run before: {e}")))?,
+            None => None,
+        };
         let summary = self.summary.as_ref().ok_or_else(|| JsError::new("the run has not finished"))?;
         let trace = aes_core::sim::Trace { columns: self.columns.clone() };
         let run = lessons::Run { scenario: &self.scenario, trace: &trace, summary };
-        Ok(serde_json::to_string(&lessons::explain(&l, &values, &run)).unwrap_or_default())
+        Ok(serde_json::to_string(&lessons::explain_after(&l, &values, &run, before.as_ref())).unwrap_or_default())
     }
 
     /// One trace column as a Float64Array (after the run has finished).

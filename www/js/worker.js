@@ -61,7 +61,7 @@ const handlers = {
         transfer.push(columns[name].buffer);
       }
       // A lesson's run: its explanation from the same finished run (core's output::lessons).
-      const lesson = m.lesson ? JSON.parse(run.lessonExplain(m.lesson.name, JSON.stringify(m.lesson.values))) : undefined;
+      const lesson = m.lesson ? JSON.parse(run.lessonExplain(m.lesson.name, JSON.stringify(m.lesson.values), m.lesson.before ? JSON.stringify(m.lesson.before) : null)) : undefined;
       return [{ summary: JSON.parse(run.summaryJson()), columns, wall_ms: performance.now() - t0, constants: constantsOf(m.scenario), lesson }, transfer];
     } finally {
       run.free();

@@ -14,6 +14,14 @@ pub struct Args {
     /// (repeatable).
     #[arg(long = "value")]
     values: Vec<String>,
+    /// The run before a change, for the verdict on a prediction: its controls' values as
+    /// `--value` takes them (repeatable), or `default` for the lesson's own values. The run
+    /// before runs too, and the verdict compares the two on the question's number.
+    #[arg(long = "before")]
+    before: Vec<String>,
+    /// The answer predicted, by its place in the lesson's list (1 for the first), for the verdict.
+    #[arg(long)]
+    answer: Option<usize>,
     /// The whole explanation as JSON (the facts each sentence rests on, the promise of "try
     /// this next"), not only its words.
     #[arg(long)]
@@ -27,27 +35,57 @@ pub fn run(a: Args) -> Result<(), Failure> {
         return Ok(());
     };
     let l = lessons::lesson(&name)?;
-    let mut given = Vec::new();
-    for v in &a.values {
-        given.push(v.split_once('=').ok_or_else(|| format!("--value '{}': expected PATH=VALUE", shorten(v)))?);
+    let pairs = |flag: &str, list: &[String]| -> Result<Vec<(String, String)>, Failure> {
+        let mut out = Vec::new();
+        for v in list.iter().filter(|v| v.as_str() != "default") {
+            let (p, x) = v.split_once('=').ok_or_else(|| format!("--{flag} '{}': expected PATH=VALUE", shorten(v)))?;
+            out.push((p.to_string(), x.to_string()));
+        }
+        Ok(out)
+    };
+    if let Some(n) = a.answer {
+        if n == 0 || n > l.answers.len() {
+            return Err(
+                format!("--answer {n}: expected 1 to {} (the lesson's answers in order)", l.answers.len()).into()
+            );
+        }
     }
-    let o = lessons::open(&l, &given)?;
-    for r in &o.refused {
-        eprintln!("refused: {r}");
-    }
-    for s in &o.snapped {
-        eprintln!("moved to a stop: {s}");
-    }
-    let r = aes_core::run(&o.scenario).map_err(|e| e.to_string())?;
-    let e =
-        lessons::explain(&l, &o.values, &lessons::Run { scenario: &o.scenario, trace: &r.trace, summary: &r.summary });
+    // One run of the lesson with the values of a flag, explained (against the run before, if any).
+    let explained = |flag: &str, list: &[String], before: Option<&lessons::Before>| {
+        let given = pairs(flag, list)?;
+        let given: Vec<(&str, &str)> = given.iter().map(|(p, v)| (p.as_str(), v.as_str())).collect();
+        let o = lessons::open(&l, &given)?;
+        for r in &o.refused {
+            eprintln!("refused (--{flag}): {r}");
+        }
+        for s in &o.snapped {
+            eprintln!("moved to a stop (--{flag}): {s}");
+        }
+        let r = aes_core::run(&o.scenario).map_err(|e| e.to_string())?;
+        let run = lessons::Run { scenario: &o.scenario, trace: &r.trace, summary: &r.summary };
+        let e = lessons::explain_after(&l, &o.values, &run, before);
+        Ok::<_, Failure>((o.values, e))
+    };
+    // The run before: its reading is what the verdict compares the run now with.
+    let before = if a.before.is_empty() {
+        None
+    } else {
+        let (values, e) = explained("before", &a.before, None)?;
+        let reading = e.reading.map(|x| x.value).ok_or_else(|| {
+            format!("lesson {}: its question is answered by one run, not by a change (no --before)", l.name)
+        })?;
+        Some(lessons::Before { values, reading, answer: a.answer.map(|n| n - 1) })
+    };
+    let (_, e) = explained("value", &a.values, before.as_ref())?;
     if a.json {
         return emit_json(&e);
     }
     let words: Vec<&str> = e.sentences.iter().map(|(s, _)| s.as_str()).collect();
-    let verdict = match e.right {
-        Some(i) => format!("The run shows: {}.", l.answers[i]),
-        None => e.verdict_note.clone(),
+    let verdict = match (&e.verdict, e.right) {
+        (Some(v), _) => v.text.clone(),
+        (None, Some(i)) => format!("The run shows: {}.", l.answers[i]),
+        (None, None) if before.is_some() => "The two runs have the same values: change one and compare.".to_string(),
+        (None, None) => e.verdict_note.clone(),
     };
     emit(&format!("{}\n{}\nTry this next: {}", verdict, words.join(" "), e.next.text))?;
     Ok(())

@@ -37,6 +37,7 @@ export class LessonView {
     this.answer = null;
     this.isAnswered = false;
     this.before = null;
+    this.reference = null; // the settled run before: {values, reading, answer} (core's lessons::Before)
   }
 
   // The index of lessons, in the lesson box: a first visit starts with the first lesson.
@@ -58,6 +59,7 @@ export class LessonView {
     this.answer = null; // the answer chosen (null: skipped)
     this.isAnswered = answered;
     this.before = null;
+    this.reference = null;
     this.current = { ...opened.values };
     const controls = def.controls.map((c) => this.control(c, opened.values[c.path]));
     // A radio group (the ARIA pattern): arrows move between the answers without choosing; Enter,
@@ -191,16 +193,24 @@ export class LessonView {
     return `#${params.toString()}`;
   }
 
+  // The run before, for the verdict on the next run (null: none yet, or a lesson one run answers).
+  referenceRun() { return this.reference; }
+
   // After a run: the explanation core computed from it (sentences true of this run), the verdict
-  // on the prediction (the first run after it), and what to try next with a button that sets it.
-  explain(e) {
+  // on the prediction (the first run after it, or core's verdict against the run before once the
+  // question's change is made), and what to try next with a button that sets it. values: the
+  // controls' values the run had.
+  explain(e, values = this.current) {
     const def = this.def;
     const parts = [];
-    if (typeof this.answer === 'number' && this.before === null) {
-      const verdict = e.right === null ? ` ${e.verdict_note}` : e.right === this.answer ? ' The run agrees.' : ` The run shows: ${def.answers[e.right]}.`;
-      parts.push(el('p', { className: 'lesson-verdict', textContent: `You predicted: ${def.answers[this.answer]}.${verdict}` }));
+    const verdict = (text) => el('p', { id: 'lesson-verdict', className: 'lesson-verdict', textContent: text });
+    if (e.verdict) {
+      parts.push(verdict(e.verdict.text));
+    } else if (typeof this.answer === 'number' && this.before === null) {
+      const shows = e.right === null ? ` ${e.verdict_note}` : e.right === this.answer ? ' The run agrees.' : ` The run shows: ${def.answers[e.right]}.`;
+      parts.push(verdict(`You predicted: ${def.answers[this.answer]}.${shows}`));
     } else if (e.right === null && e.verdict_note && this.before === null) {
-      parts.push(el('p', { className: 'lesson-verdict', textContent: e.verdict_note }));
+      parts.push(verdict(e.verdict_note));
     }
     parts.push(el('p', { className: 'lesson-explain', textContent: e.sentences.map(([s]) => s).join(' ') }));
     const tryIt = el('button', { type: 'button', id: 'lesson-try', textContent: 'Set it' });
@@ -214,5 +224,6 @@ export class LessonView {
     if (this.before) parts.push(el('p', { className: 'hint', textContent: 'The faint dashed lines are the run before this one.' }));
     $('lesson-observe').replaceChildren(...parts);
     this.before = true;
+    this.reference = e.reading ? { values: { ...values }, reading: e.reading.value, answer: this.answer } : null;
   }
 }

@@ -116,7 +116,7 @@ function explainShown(ctx) {
   if (!lesson || !res || !res.columns || res.study !== lesson.def.preset || !res.lesson) return;
   // The screen stays where the hand is: the control being moved and the plot do not scroll away.
   if (lessons.isAnswered) {
-    lessons.explain(res.lesson);
+    lessons.explain(res.lesson, res.lessonValues);
     ctx.live.pause();
     ctx.live.place({ at: res.lesson.at_s, speed: 2 }, { scroll: false });
     return;
@@ -143,10 +143,14 @@ async function lessonRun(ctx, settled = true) {
   // A preview while dragging runs the start of the story, short enough for several a second (the
   // last settled run's pace); the release runs it whole, with its words.
   const preview = settled ? null : previewSeconds(r, ctx.form.scenario.sim.duration_s);
-  await ctx.run({ focus: false, order: def.plots, lesson: settled ? { name: def.name, values: lessons.values() } : null, preview });
+  // A settled run carries the run before (its values, reading and the answer) for core's verdict.
+  const values = lessons.values();
+  const before = lessons.referenceRun();
+  await ctx.run({ focus: false, order: def.plots, lesson: settled ? { name: def.name, values, ...(before ? { before } : {}) } : null, preview });
   const res = getResult();
   if (res && res.columns && ctx.lesson) {
     res.preview = !settled;
+    res.lessonValues = values;
     if (settled) {
       announce('lessonRun', { latencyMs: performance.now() - asked }); // release to plot
       explainShown(ctx);

@@ -1,12 +1,16 @@
 //! The `battery` lesson, "A battery smooths the waves": its definition and its explainer.
 
 use super::facts::*;
+use super::verdict::Change;
 use super::*;
 use crate::sim::health::{BUS_LOW_PU, TURBINE_OVERSPEED_PU};
 
 /// The `battery` lesson's controls: the storage's energy and power rating on each bus.
 const BATTERY_J: &str = "plant.storage.energy_j";
 const BATTERY_W: &str = "plant.storage.power_w";
+
+/// Turbine speed swings closer than this \[pu\] are "about the same".
+const BATTERY_BY_PU: f64 = 0.002;
 
 pub(super) fn lesson() -> Lesson {
     Lesson {
@@ -46,7 +50,36 @@ pub(super) fn lesson() -> Lesson {
         plots: &["bus", "storage"],
         view: "train",
         explain,
+        change: Some(Change {
+            paths: &[BATTERY_J],
+            names: &["battery:"],
+            what: "the turbines' speed swing",
+            unit: "pu",
+            scale: 1.0,
+            digits: 4,
+            measure: |_| Measure::Swing { signal: "turbine_speed_pu", from_s: 0.0 },
+            by: BATTERY_BY_PU,
+            decide: steadier,
+            hint: "choose the battery's energy",
+        }),
     }
+}
+
+/// A swing smaller by more than the margin is steadier; under a quarter of the one before, the
+/// swing "almost vanishes".
+/// A difference of charge in percentage points ("8 points above").
+fn pct_points(d: f64) -> String {
+    let n = libm::round(100.0 * d.abs());
+    let w = if d >= 0.0 { "above" } else { "below" };
+    format!("{n:.0} point{} {w}", if n == 1.0 { "" } else { "s" })
+}
+
+fn steadier(away: f64, toward: f64, by: f64) -> Result<usize, &'static str> {
+    Ok(match Relation::of(toward, away, by) {
+        Relation::Less if toward < 0.25 * away => 0,
+        Relation::Less => 1,
+        _ => 2,
+    })
 }
 
 fn explain(b: &mut Book, g: &Given) -> Explanation {
@@ -174,15 +207,18 @@ fn battery(b: &mut Book, sc: &serde_json::Value, energy_j: f64, power_w: f64, en
         let edge = (floor + crate::plant::storage::taper_j(energy_j, power_w) / energy_j).min(1.0);
         let lv =
             b.push(Fact::Level { name: "lowest charge where the controller starts to give less [-]", value: edge });
+        let fl = b.push(Fact::Level { name: "lowest allowed charge [-]", value: floor });
         if b.compare((smin.0, smin.1), (lv, edge), 0.0) != Relation::More {
             let i = b.last();
             b.say(
                 format!(
-                    "Below {} % the controller gives less and less, down to nothing at its lowest allowed charge ({} %), and the turbines take back the swings the battery no longer takes: here the charge got down there.",
+                    "From {} % of charge down to its lowest allowed charge ({} %) the controller gives less and less, and the turbines take back the swings the battery no longer takes: here the charge went down to {} %, {} its floor.",
                     f(100.0 * edge, 0),
-                    f(100.0 * floor, 0)
+                    f(100.0 * floor, 0),
+                    f(100.0 * smin.1, 0),
+                    pct_points(smin.1 - floor)
                 ),
-                &[smin.0, lv, i],
+                &[smin.0, lv, i, fl],
             );
         }
     } else {

@@ -1,6 +1,7 @@
 //! The `braking` lesson, "Braking: where the ship's energy goes": its definition and its explainer.
 
 use super::facts::*;
+use super::verdict::Change;
 use super::*;
 
 pub(super) fn lesson() -> Lesson {
@@ -32,6 +33,21 @@ pub(super) fn lesson() -> Lesson {
         plots: &["bus", "brake"],
         view: "train",
         explain,
+        change: Some(Change {
+            paths: &["plant.dc_link.brake_resistor_ohm"],
+            names: &[""],
+            what: "the turbines' rise in speed after the order",
+            unit: "pu",
+            scale: 1.0,
+            digits: 3,
+            measure: |sc| Measure::Rise { signal: "turbine_speed_pu", from_s: number(sc, "commands.1.t_s") },
+            by: 0.005,
+            decide: |away, toward, by| match Relation::of(toward, away, by) {
+                Relation::More => Ok(0),
+                _ => Err("Without the resistor the turbines sped up no more than with it: from this speed there is little energy to return; start from a higher speed."),
+            },
+            hint: "switch the brake resistor off",
+        }),
     }
 }
 

@@ -1,6 +1,7 @@
 //! The `bus` lesson, "How the bus voltage is held": its definition and its explainer.
 
 use super::facts::*;
+use super::verdict::{by_relation, Change};
 use super::*;
 use crate::sim::health::{BUS_LOW_PU, TURBINE_MIN_RUNNING_PU};
 
@@ -20,15 +21,31 @@ pub(super) fn lesson() -> Lesson {
         plots: &["bus"],
         view: "train",
         explain,
+        change: Some(Change {
+            paths: &["controllers.field.kp", "controllers.field.ki"],
+            names: &["Kp", "Ki"],
+            what: "the lowest bus voltage after the order",
+            unit: "pu",
+            scale: 1.0,
+            digits: 3,
+            measure: |sc| Measure::Stat { signals: vec!["bus_voltage_pu"], stat: Stat::Min, from_s: number(sc, "commands.1.t_s") },
+            // Half a percent of the rated voltage: the bus band's scale is a tenth.
+            by: 0.005,
+            // A higher lowest voltage is a smaller dip.
+            decide: |away, toward, by| Ok(by_relation(away, toward, by, [0, 1, 2])),
+            hint: "raise a gain of the field controller",
+        }),
     }
 }
 
 fn explain(b: &mut Book, g: &Given) -> Explanation {
     let end = b.end;
-    bus(b, &g.sc, g.num("controllers.field.kp"), g.num("controllers.field.ki"), end)
+    let own = |p: &str| g.defaults.get(p).and_then(|v| v.as_f64()).unwrap_or(f64::NAN);
+    bus(b, &g.sc, (own("controllers.field.kp"), own("controllers.field.ki")), end)
 }
 
-fn bus(b: &mut Book, sc: &serde_json::Value, kp: f64, ki: f64, end: f64) -> Explanation {
+/// `own`: the lesson's own gains (Kp, Ki), which "back to" names.
+fn bus(b: &mut Book, sc: &serde_json::Value, own: (f64, f64), end: f64) -> Explanation {
     let t0 = number(sc, "commands.1.t_s");
     let (bi, bmin, tmin) = b.stat(&["bus_voltage_pu"], Stat::Min, t0, end);
     let tu = b.stat(&["turbine_speed_pu"], Stat::Min, t0, end);
@@ -75,15 +92,17 @@ fn bus(b: &mut Book, sc: &serde_json::Value, kp: f64, ki: f64, end: f64) -> Expl
     }
     let turb = Measure::Stat { signals: vec!["turbine_speed_pu"], stat: Stat::Min, from_s: t0 };
     let next = if stalled {
+        let (kp, ki) = (value_text(own.0), value_text(own.1));
         Next {
-            text: "Set both gains back to 0.0001: the turbines keep running.".into(),
-            set: vec![("controllers.field.kp", "0.0001".into()), ("controllers.field.ki", "0.0001".into())],
+            text: format!("Set the gains back to the lesson's own, proportional {kp} and integral {ki}: the turbines keep running."),
+            set: vec![("controllers.field.kp", kp), ("controllers.field.ki", ki)],
             promise: Promise { measure: turb, relation: Relation::More, by: 0.1 },
         }
     } else if back != Relation::More {
+        let ki = value_text(own.1);
         Next {
-            text: "Set the integral gain to 0.0005: summing the error over time brings the bus back by the end.".into(),
-            set: vec![("controllers.field.ki", "0.0005".into())],
+            text: format!("Set the integral gain to the lesson's own {ki}: summing the error over time brings the bus back by the end."),
+            set: vec![("controllers.field.ki", ki)],
             promise: Promise {
                 measure: Measure::Stat { signals: vec!["bus_voltage_pu"], stat: Stat::At, from_s: end },
                 relation: Relation::More,
@@ -98,6 +117,5 @@ fn bus(b: &mut Book, sc: &serde_json::Value, kp: f64, ki: f64, end: f64) -> Expl
             promise: Promise { measure: turb, relation: Relation::Less, by: 0.1 },
         }
     };
-    let _ = (kp, ki);
     b.done(None, "One run cannot answer a question about a change: move a gain and compare the new run with the faint earlier one.".into(), next, tmin)
 }

@@ -1,7 +1,12 @@
 //! The `engines` lesson, "How many engines?": its definition and its explainer.
 
 use super::facts::*;
+use super::verdict::{by_relation, Change};
 use super::*;
+
+/// Mean fuel powers closer than this \[W\] are "about the same" (a fiftieth of one set's 21.5 MW
+/// rating at cruise).
+const ENGINES_BY_W: f64 = 0.4e6;
 
 pub(super) fn lesson() -> Lesson {
     Lesson {
@@ -41,6 +46,19 @@ pub(super) fn lesson() -> Lesson {
         plots: &["fuel", "load"],
         view: "train",
         explain,
+        change: Some(Change {
+            paths: &["plant.online.sets"],
+            names: &["sets running:"],
+            what: "the mean fuel power",
+            unit: "MW",
+            scale: 1e6,
+            digits: 2,
+            measure: |_| Measure::Mean { signal: "fuel_power_w", from_s: 0.0 },
+            by: ENGINES_BY_W,
+            // The later choice runs fewer sets: less fuel there is "one carrying the whole load".
+            decide: |away, toward, by| Ok(by_relation(away, toward, by, [1, 0, 2])),
+            hint: "change the gas turbines running",
+        }),
     }
 }
 

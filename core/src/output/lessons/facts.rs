@@ -3,6 +3,7 @@
 //! explainers share.
 
 use super::number;
+use super::verdict::{Reading, Verdict};
 use crate::scenario::Scenario;
 use crate::signals::Signal;
 use crate::sim::summary::Summary;
@@ -86,6 +87,16 @@ pub enum Measure {
         from_s: f64,
     },
     Onsets,
+    /// How far `signal` moves at or after `from_s` (its highest less its lowest).
+    Swing {
+        signal: &'static str,
+        from_s: f64,
+    },
+    /// The mean of `signal`'s rows at or after `from_s`.
+    Mean {
+        signal: &'static str,
+        from_s: f64,
+    },
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -110,6 +121,10 @@ pub struct Explanation {
     pub next: Next,
     /// The instant the live picture shows (the one the words quote).
     pub at_s: f64,
+    /// The number the question is about, in this run (a lesson about a change).
+    pub reading: Option<Reading>,
+    /// The verdict on the prediction against the run before (given one that differs).
+    pub verdict: Option<Verdict>,
 }
 
 /// The run a lesson explains.
@@ -220,6 +235,8 @@ impl<'a> Book<'a> {
             verdict_note,
             next,
             at_s,
+            reading: None,
+            verdict: None,
         }
     }
 }

@@ -26,10 +26,12 @@ mod facts;
 mod power;
 mod sign;
 mod turn;
+mod verdict;
 mod waves;
 
 use facts::Book;
 pub use facts::{onsets, stat, Explanation, Fact, Measure, Next, Promise, Relation, Run, Stat};
+pub use verdict::{measure, Before, Reading, Verdict};
 
 /// A control of a lesson.
 #[derive(Debug, Clone, Serialize)]
@@ -81,6 +83,9 @@ pub struct Lesson {
     /// What a finished run shows (the lesson's own file writes it).
     #[serde(skip)]
     explain: Explainer,
+    /// The change the question is about and the reading that decides it (None: one run answers).
+    #[serde(skip)]
+    change: Option<verdict::Change>,
 }
 
 /// Writes a lesson's explanation of a run into the book.
@@ -89,6 +94,8 @@ type Explainer = fn(&mut Book, &Given) -> Explanation;
 /// What an explainer is given besides the run: the controls' values and the run's scenario.
 struct Given<'a> {
     values: &'a serde_json::Map<String, serde_json::Value>,
+    /// The lesson's own values (a "back to" names them, never a number typed twice).
+    defaults: serde_json::Map<String, serde_json::Value>,
     sc: serde_json::Value,
 }
 
@@ -314,6 +321,26 @@ pub fn open(l: &Lesson, given: &[(&str, &str)]) -> Result<Opened, String> {
 /// Explains a finished run of lesson `l` (`values`: the controls' values, as `open` gives them)
 /// by the lesson's own explainer.
 pub fn explain(l: &Lesson, values: &serde_json::Map<String, serde_json::Value>, run: &Run) -> Explanation {
-    let given = Given { values, sc: run.scenario.to_value() };
-    (l.explain)(&mut Book::new(run), &given)
+    explain_after(l, values, run, None)
+}
+
+/// Explains a run as [`explain`] does, with its reading (the number the question is about) and,
+/// given the run before (its values, reading and the student's answer), the verdict on the
+/// prediction.
+pub fn explain_after(
+    l: &Lesson,
+    values: &serde_json::Map<String, serde_json::Value>,
+    run: &Run,
+    before: Option<&Before>,
+) -> Explanation {
+    let defaults = open(l, &[]).map(|o| o.defaults).unwrap_or_default();
+    let given = Given { values, defaults, sc: run.scenario.to_value() };
+    let mut e = (l.explain)(&mut Book::new(run), &given);
+    if let Some(ch) = &l.change {
+        let m = (ch.measure)(&given.sc);
+        let value = measure(run, &m);
+        e.verdict = before.and_then(|b| verdict::verdict(l, b, values, value));
+        e.reading = Some(Reading { measure: m, value });
+    }
+    e
 }

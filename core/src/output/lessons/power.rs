@@ -19,6 +19,7 @@ pub(super) fn lesson() -> Lesson {
         plots: &["inventory"],
         view: "train",
         explain,
+        change: None,
     }
 }
 
@@ -54,7 +55,7 @@ fn power(b: &mut Book, order: f64, end: f64) -> Explanation {
     let worst = (0..4).min_by(|&i, &j| passed[i].total_cmp(&passed[j])).unwrap_or(3);
     b.say(
         format!(
-            "Each stage keeps back a little: the generators pass on {}, the power electronics {}, the motors {}, the propellers {}; the largest loss is the {}'.",
+            "Each stage keeps back part of what it gets: the generators pass on {}, the power electronics {}, the motors {}, the propellers {}; the largest loss is the {}'.",
             pct(passed[0]),
             pct(passed[1]),
             pct(passed[2]),

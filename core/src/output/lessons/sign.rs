@@ -1,6 +1,7 @@
 //! The `sign` lesson, "One sign in one equation": its definition and its explainer.
 
 use super::facts::*;
+use super::verdict::onsets_change;
 use super::*;
 
 pub(super) fn lesson() -> Lesson {
@@ -9,7 +10,7 @@ pub(super) fn lesson() -> Lesson {
         title: "One sign in one equation",
         preset: "head-seas-ss6",
         set: &[("sim.duration_s", "60")],
-        story: "A wave crest lifts the water at the stern, and it lifts the stern too, so the propeller stays at about the same depth under the surface. The thesis this simulator follows prints its depth formula with the stern's motion added the other way round: as if the stern sank whenever the water rose. One sign, and the propeller seems to swing twice as far.",
+        story: "A wave crest lifts the water at the stern, and it lifts the stern too: the propeller's depth is the water's rise less the stern's. The thesis this simulator follows prints its depth formula with the stern's motion added the other way round: as if the stern sank whenever the water rose.",
         controls: vec![
             Control {
                 path: "seakeeping.stern_motion",
@@ -29,6 +30,7 @@ pub(super) fn lesson() -> Lesson {
         plots: &["hr"],
         view: "stern",
         explain,
+        change: Some(onsets_change(&["seakeeping.stern_motion"], &["stern:"], "switch how the stern moves in the depth formula")),
     }
 }
 
@@ -51,10 +53,14 @@ fn sign(b: &mut Book, sc: &serde_json::Value, printed: bool, sea: f64, end: f64)
     } else {
         ("thesis_eq_2_57", format!("Switch to the thesis' printed sign: the lowest h/R falls{much}."), Relation::Less)
     };
-    b.say(
-        if printed { "This run uses the printed sign: the stern's motion adds to the wave's instead of cancelling it, so the hub seems to swing more." } else { "This run lets the stern follow the waves: its motion cancels much of the wave's, so the hub stays at about the same depth." }.into(),
-        &[],
-    );
+    // The range the plot shows, in numbers: no word for how far it swings but its own ends.
+    let hi = b.stat(&HR[..1], Stat::Max, 0.0, end);
+    let how = if printed {
+        "This run uses the printed sign: the stern's motion is added to the wave's instead of taken from it"
+    } else {
+        "This run lets the stern rise and fall with the waves: its motion is taken from the wave's"
+    };
+    b.say(format!("{how}; the port shaft's h/R ran from {} to {}.", f(low.1, 2), f(hi.1, 2)), &[low.0, hi.0]);
     let next = Next {
         text: words,
         set: vec![("seakeeping.stern_motion", to.into())],

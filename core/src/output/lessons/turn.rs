@@ -22,6 +22,7 @@ pub(super) fn lesson() -> Lesson {
         plots: &["motor", "speed"],
         view: "plan",
         explain,
+        change: None,
     }
 }
 
@@ -79,7 +80,7 @@ fn turn(b: &mut Book, sc: &serde_json::Value, heading: f64, speed: f64, end: f64
             };
             b.say(
                 format!(
-                    "While the ship turns, the rudder is over and the hull moves a little sideways, so the propellers meet the water at an angle: the motors' power rose from {} pu at the order to {} pu ({} more) at {} s, {when}.",
+                    "While the ship turns, the rudder is over and the hull moves sideways, so the propellers meet the water at an angle: the motors' power rose from {} pu at the order to {} pu ({} more) at {} s, {when}.",
                     f(p0.1, 3),
                     f(pmax, 3),
                     pct(pmax / p0.1 - 1.0),

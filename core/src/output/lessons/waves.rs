@@ -1,6 +1,7 @@
 //! The `waves` lesson, "Waves unload the propeller": its definition and its explainer.
 
 use super::facts::*;
+use super::verdict::onsets_change;
 use super::*;
 
 /// The top of the `waves` lesson's hub slider \[m\] (the hub 3.0 m deep at the 5415's draft).
@@ -23,6 +24,7 @@ pub(super) fn lesson() -> Lesson {
         plots: &["hr", "motor"],
         view: "stern",
         explain,
+        change: Some(onsets_change(&["ship.hull.hub_above_base_m"], &["hub"], "move the propeller hub's height")),
     }
 }
 
