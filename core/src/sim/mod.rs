@@ -3,6 +3,7 @@
 //! and honours cancel between chunks); `run` does it in one go.
 
 pub mod conditioned;
+mod heading_hold;
 pub mod health;
 pub mod linearize;
 mod loops;
@@ -164,8 +165,8 @@ pub struct Simulation {
     stored0: f64,
     trace: Trace,
     warnings: Vec<String>,
-    /// Largest heading reference error seen with the rudder hard over \[rad\].
-    max_heading_lag: f64,
+    /// Headings lost with the rudder hard over, sorted by cause (an ordered turn or the waves).
+    heading_hold: heading_hold::HeadingHold,
     /// The seaway (None in calm water), the propellers' ventilation states and the loss model.
     sea: Option<seaway::Seaway>,
     vent: [Ventilation; N_SHAFTS],
@@ -338,7 +339,7 @@ impl Simulation {
             stored0: 0.0,
             trace,
             warnings: crate::plant::storage::ignored_without_energy(&scenario.plant.storage).into_iter().collect(),
-            max_heading_lag: 0.0,
+            heading_hold: heading_hold::HeadingHold::default(),
             sea: seaway::Seaway::new(scenario).map_err(SimError::Setup)?,
             vent: [Ventilation::default(); N_SHAFTS],
             losses: scenario.seakeeping.loss_params(),
@@ -510,9 +511,20 @@ impl Simulation {
         c.track_overload(p, x, t_now, ts);
         c.slip_loops(p, x, shaft_ref, t_now, ts);
         if p.hull_model.turns() {
-            if let Some(lag) = c.heading_loop(x, max_turn_rate, ts) {
-                self.max_heading_lag = self.max_heading_lag.max(lag);
-            }
+            let ref_before = c.psi_ref;
+            let lag = c.heading_loop(x, max_turn_rate, ts);
+            let rudder = c.held.rudder;
+            let sample = heading_hold::Sample {
+                ramping: c.psi_ref != ref_before,
+                saturated: lag.is_some(),
+                err: lag.unwrap_or(0.0),
+                // Positive rudder turns the bow to port (a negative moment); M_add is positive
+                // bow to starboard, so it opposes a positive rudder when positive.
+                wave_against: if rudder >= 0.0 { c.held.sea.wave_mz } else { -c.held.sea.wave_mz },
+                rudder_max: heading_hold::rudder_moment_at_limit(p, x, self.out.thrust, c.autopilot.max_angle),
+                speed: speed_through_water(x),
+            };
+            self.heading_hold.observe(&sample);
         }
     }
 
@@ -812,13 +824,8 @@ impl Simulation {
         self.refresh_outputs();
         let energy: [f64; N_ENERGY] = self.x[ENERGY].try_into().unwrap_or([0.0; N_ENERGY]);
         let stored_change = self.plant.stored_energy(&self.x) - self.stored0;
-        if self.max_heading_lag > deg_to_rad(15.0) {
-            self.warnings.push(format!(
-                "the heading reference ran up to {:.0} degrees ahead of the ship with the rudder hard over: \
-                 the ordered turn is faster than full rudder can give at this speed",
-                rad_to_deg(self.max_heading_lag)
-            ));
-        }
+        let lost = self.heading_hold.warnings(self.sea.is_some());
+        self.warnings.extend(lost);
         let health = health::assess(&self.scenario, &self.trace, &self.ctl.tracked);
         self.warnings.extend(health);
         let summary = Summary::build(

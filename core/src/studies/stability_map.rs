@@ -143,6 +143,14 @@ impl Axis {
         if !(2..=MAX_AXIS_VALUES).contains(&n) {
             return Err(format!("{which}: {n} values: from 2 to {MAX_AXIS_VALUES}"));
         }
+        if let Some(held) = held_controller(path) {
+            return Err(format!(
+                "{which}: {path}: the map holds the {held} at its steady output: its settings do not move it; \
+                 axes that do: the plant's and the ship's parameters (plant.*, ship.*, e.g. \
+                 plant.loads.ship_service_w, plant.loads.filter_capacitance_f), initial.speed_kn and \
+                 controllers.field.bus_voltage_ref_v (the operating point)"
+            ));
+        }
         if !(lo.is_finite() && hi.is_finite() && lo < hi) {
             let shown = |v: f64| {
                 if v.is_finite() {
@@ -179,6 +187,25 @@ pub struct StabilityMap {
     /// between its cells; None where it does not within the row).
     pub boundary_x: Vec<Option<f64>>,
     pub failures: Vec<String>,
+}
+
+/// The controller a `controllers.` path sets, when the map cannot move with it: the linearisation
+/// holds every discrete controller at its steady output (`Held`), so only the bus voltage's set
+/// point, which moves the operating point, is an axis among them.
+fn held_controller(path: &str) -> Option<&'static str> {
+    let rest = path.strip_prefix("controllers.")?;
+    if rest == "field.bus_voltage_ref_v" {
+        return None;
+    }
+    Some(match rest.split('.').next().unwrap_or("") {
+        "governor" => "governor",
+        "field" => "exciter (the field controller)",
+        "slip" => "motors' slip controller",
+        "speed" => "speed controller",
+        "autopilot" => "autopilot",
+        "lqg_ltr" => "LQG/LTR controller",
+        _ => "controllers",
+    })
 }
 
 /// The scenario with `path` set to `value`.
@@ -416,6 +443,22 @@ pub fn stiff_bus_check(c_f: f64) -> Result<(f64, f64), String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 55: a governor or exciter gain cannot move the map (the controllers are held at their
+    /// steady outputs; the map was flat at -3.3e-5 1/s from field K_p 1e-5 to 1 and governor K_p 1
+    /// to 1000): such an axis is refused by name with the axes that do move it; a plant axis and
+    /// the bus voltage's set point are still taken.
+    #[test]
+    fn an_axis_the_map_holds_still_is_refused_by_name() {
+        let sc = crate::scenario::presets::acceleration(false);
+        for (path, held) in [("controllers.governor.kp", "governor"), ("controllers.field.kp", "exciter")] {
+            let e = Axis::checked(&sc, "--x", path, 1.0, 10.0, 3).unwrap_err();
+            assert!(e.contains(path) && e.contains(held) && e.contains("do not move it"), "{e}");
+            assert!(e.contains("plant.loads.ship_service_w"), "{e}");
+        }
+        assert!(Axis::checked(&sc, "--x", "plant.loads.ship_service_w", 1e6, 2e7, 3).is_ok());
+        assert!(Axis::checked(&sc, "--y", "controllers.field.bus_voltage_ref_v", 5000.0, 6000.0, 3).is_ok());
+    }
 
     /// At 20 knots in calm water with a 2 MW ship service load on each bus (well inside its
     /// 4.7 MW limit) every mode decays; the filter's resonance (25.2 Hz alone) is there at 26.2 Hz,

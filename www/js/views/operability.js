@@ -42,7 +42,8 @@ const TEMPLATE = `
       A click on a cell (a second tap on a touch screen, Enter on the focused plot or a button of the table) opens the Simulator tab at its
       speed (the first order's, and the ship starts at it) and wave heading in the first sea the cell fails (the highest listed sea where it passes them all), with the
       maneuvering hull model that waves need: press Run there. The run sails the hull's own maneuvering model, which holds its speed order
-      at every speed and heading of this polar in sea states 4 to 6; a run that cannot hold it says why in its warnings.</p>
+      at every speed and heading of this polar in sea states 4 to 6; its heading it holds only where the rudders beat the waves' yaw moment
+      (at the lowest speeds in quartering seas they do not, as at sea): a run that loses its speed or its heading says why in its warnings.</p>
     <details id="op-grid-box"><summary id="op-grid-summary">The polar as a table: limiting H_1/3 [m] by speed and heading</summary>
       <div id="op-grid" class="scroll" tabindex="0" role="region" aria-label="Limiting H_1/3 by speed and heading"></div>
     </details>
