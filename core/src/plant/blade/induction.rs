@@ -15,7 +15,7 @@ pub fn wrench(z: u32, tan_beta_w: f64, rc: f64, rv: f64) -> (f64, f64) {
     let y0 = 1.0 / tan_beta_w;
     let s = libm::sqrt(1.0 + y * y);
     let s0 = libm::sqrt(1.0 + y0 * y0);
-    let a = libm::pow((s0 * s0) / (s * s), 0.25);
+    let a = libm::sqrt(s0 / s);
     let b = ((9.0 * y0 * y0 + 2.0) / (s0 * s0 * s0) + (3.0 * y * y - 2.0) / (s * s * s)) / (24.0 * zf);
     // U = [y0 (s - 1) exp(s - s0) / (y (s0 - 1))]^Z, taken through its logarithm for large Z.
     let ln_u = zf * (libm::log(y0 * (s - 1.0) / (y * (s0 - 1.0))) + s - s0);

@@ -123,6 +123,12 @@ impl LiftingLine {
 
     /// The open-water point at advance ratio `j`.
     pub fn solve(&self, j: f64) -> Result<Analysis, String> {
+        self.solve_from(j, None)
+    }
+
+    /// The open-water point at advance ratio `j`, starting from a neighbouring point's circulation
+    /// and inflow (a curve's points then take a few iterations each instead of tens).
+    pub fn solve_from(&self, j: f64, start: Option<&Analysis>) -> Result<Analysis, String> {
         if !(j.is_finite() && ADVANCE_RATIO.contains(&j)) {
             return Err(format!(
                 "j: {} is outside {}..={}",
@@ -137,6 +143,12 @@ impl LiftingLine {
         let mut tan_bi: Vec<f64> =
             self.rc.iter().zip(&self.tan_pitch).map(|(&x, &tp)| 0.5 * (j / (PI * x) + tp)).collect();
         let mut gamma = vec![0.0; m];
+        if let Some(a) = start.filter(|a| a.sections.len() == m) {
+            for (i, s) in a.sections.iter().enumerate() {
+                gamma[i] = 2.0 * PI * s.circulation;
+                tan_bi[i] = libm::tan(s.beta_i_rad).max(MIN_TAN_BETA_W);
+            }
+        }
         let mut converged = false;
         let mut state = Vec::new();
         for _ in 0..MAX_ITERATIONS {

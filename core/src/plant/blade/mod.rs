@@ -113,5 +113,10 @@ pub fn analyse(g: &BladeGeometry, j: f64, flow: &Flow) -> Result<Analysis, Strin
 /// circulation, so a curve costs less than its points one by one).
 pub fn open_water(g: &BladeGeometry, js: &[f64], flow: &Flow) -> Result<Vec<Analysis>, String> {
     let ll = lifting_line::LiftingLine::new(g, flow)?;
-    js.iter().map(|&j| ll.solve(j)).collect()
+    let mut out: Vec<Analysis> = Vec::with_capacity(js.len());
+    for &j in js {
+        let a = ll.solve_from(j, out.last())?;
+        out.push(a);
+    }
+    Ok(out)
 }
