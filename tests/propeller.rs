@@ -4,8 +4,8 @@
 //! energy limit of the actuator disc. Nothing is fitted to any of them: every constant of the
 //! model comes from a published method (see core/src/plant/blade/).
 //!
-//! DTMB 4119 runs at n = 10 rev/s (D = 0.3048 m, fresh water at 15 degC): the rate of the DTRC
-//! tests as the ITTC 1998 propulsor workshop states it (V = 2.54 m/s at J = 0.833). The B-series
+//! DTMB 4119 runs at n = 10 rev/s (D = 0.3048 m, fresh water at 15 degC): the rate commonly
+//! quoted for the DTRC tests (V = 2.54 m/s at J = 0.833). The B-series
 //! runs at D = 0.5 m, 10.4 rev/s, which puts the 0.75 R chord Reynolds number near 2e6, the
 //! Reynolds number of Oosterveld & van Oossanen's polynomials.
 

@@ -1,6 +1,6 @@
 //! Velocities induced at a lifting line by Z helical trailing vortices of constant pitch, one per
 //! blade: Wrench's (1957) closed-form approximation of Lerbs' induction factors, as written in
-//! Kerwin's lecture notes (MIT 13.04, "Hydrofoils and Propellers", 2001, eqs. 186-189). The tests
+//! Kerwin's lecture notes (MIT 13.04, "Hydrofoils and Propellers", 2001). The tests
 //! check it against a direct Biot-Savart sum over discretised helices.
 
 use std::f64::consts::PI;

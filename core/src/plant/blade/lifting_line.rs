@@ -14,7 +14,7 @@ use super::section_lift::lift;
 use super::{Analysis, BladeGeometry, Flow, SectionLoad, ADVANCE_RATIO};
 use std::f64::consts::PI;
 
-/// Horseshoe vortices on the blade (Kerwin's PVL uses 10 to 20; 20 moves KT by under 0.5 % from 40).
+/// Horseshoe vortices on the blade (Kerwin's PVL uses 10 to 20).
 pub const PANELS: usize = 20;
 /// Newton and wake-alignment iterations before a point is called unconverged.
 const MAX_ITERATIONS: usize = 200;

@@ -33,7 +33,7 @@ pub struct Flow {
 }
 
 impl Flow {
-    /// Sea water at 15 degC (ITTC 2011 fresh/sea water tables: nu = 1.1892e-6 m^2/s, rho = 1026.0 kg/m^3).
+    /// Sea water at 15 degC (nu = 1.1892e-6 m^2/s, rho = 1026.0 kg/m^3, near the ITTC 2011 sea water table).
     pub fn sea_water(diameter_m: f64, rev_per_s: f64) -> Flow {
         Flow { diameter_m, rev_per_s, kinematic_viscosity_m2_s: 1.1892e-6, density_kg_m3: 1026.0 }
     }
