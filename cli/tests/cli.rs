@@ -653,3 +653,22 @@ fn storage_sizing_and_stability_map_shard_and_merge() {
     assert!(!ok && err.contains("the study lacks sizes 1..3 (of 3)"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `run --propeller-csv`: DTMB 4119's table runs on the geometry model and the summary names the
+/// hand-over; a chord of zero inside the blade is refused by row and column, exit status 1.
+#[test]
+fn run_on_a_blade_table() {
+    let table = concat!(env!("CARGO_MANIFEST_DIR"), "/../core/data/dtmb4119_geometry.csv");
+    let (ok, out, err) =
+        aes_sim(&["run", "preset:startup", "--set", "sim.duration_s=5", "--propeller-csv", table, "--blades", "3"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["propeller"]["geometry"], "custom");
+    assert!(v["propeller"]["note"].as_str().unwrap().contains("four-quadrant B4-70 series scaled"), "{out}");
+    let bad = std::env::temp_dir().join(format!("aes_bad_blade_{}.csv", std::process::id()));
+    let text = std::fs::read_to_string(table).unwrap().replace("0.50,0.4392", "0.50,0.0");
+    std::fs::write(&bad, text).unwrap();
+    let (ok, _, err) = aes_sim(&["run", "preset:startup", "--propeller-csv", bad.to_str().unwrap()]);
+    let _ = std::fs::remove_file(&bad);
+    assert!(!ok && err.contains("row 4 (r/R 0.5), column c_D: a chord of 0"), "{err}");
+}
