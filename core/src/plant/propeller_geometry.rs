@@ -196,22 +196,21 @@ pub fn b_series_equivalent(
     hub_ratio: f64,
 ) -> Result<BladeGeometry, String> {
     let z = blades as f64;
+    let b4 = crate::plant::blade::geometry::parse_rows(B4_70_CSV).map_err(|e| format!("b4_70_geometry.csv: {e}"))?;
+    if b4.len() != B_SERIES_BR.len() {
+        return Err(format!("b4_70_geometry.csv: {} rows; the series' tables have {}", b4.len(), B_SERIES_BR.len()));
+    }
     let mut rows = Vec::new();
-    let lines = B4_70_CSV.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with('#'));
-    for (i, line) in lines.skip(1).enumerate() {
-        let bad = || format!("b4_70_geometry.csv row {}: cannot read '{line}'", i + 1);
-        let f: Vec<f64> = line.split(',').map(|x| x.trim().parse::<f64>().unwrap_or(0.0)).collect();
-        if f.len() != 7 || i >= B_SERIES_BR.len() {
-            return Err(bad());
-        }
-        let (r, c4, pk, t4_d, f4_c) = (f[0], f[1], f[2], f[3], f[5]);
-        let c_d = c4 * B4_70_BLADES / B4_70_AREA * area_ratio / z;
-        let t_d = t4_d + (B4_70_BLADES - z) * B_SERIES_BR[i];
+    for (i, r4) in b4.iter().enumerate() {
+        let c_d = r4.c_d * B4_70_BLADES / B4_70_AREA * area_ratio / z;
+        // The tip (chord 0) carries no section: thickness and camber 0 there.
         let tip = c_d <= 0.0;
+        let t4_d = r4.t0_c * r4.c_d;
+        let t_d = t4_d + (B4_70_BLADES - z) * B_SERIES_BR[i];
         let t0_c = if tip { 0.0 } else { t_d / c_d };
-        let f0_c = if tip || c4 <= 0.0 { 0.0 } else { f4_c * t0_c / (t4_d / c4) };
-        let p_d = pitch_ratio * if blades == 4 { pk } else { 1.0 };
-        rows.push(Row { r_r: r, c_d, p_d, f0_c, t0_c, skew_deg: 0.0, rake_d: 0.0 });
+        let f0_c = if tip { 0.0 } else { r4.f0_c * t0_c / r4.t0_c };
+        let p_d = pitch_ratio * if blades == 4 { r4.p_d } else { 1.0 };
+        rows.push(Row { r_r: r4.r_r, c_d, p_d, f0_c, t0_c, skew_deg: 0.0, rake_d: 0.0 });
     }
     let g = BladeGeometry { blades, hub_ratio, meanline: MeanLine::default(), thickness: Thickness::default(), rows };
     g.check()?;
@@ -222,13 +221,14 @@ pub fn b_series_equivalent(
 mod tests {
     use super::*;
 
-    /// B4-70 P/D 1 reproduces the table it is derived from (chords, pitch, thickness to 1e-12),
+    /// B4-70 P/D 1 reproduces the table it is derived from (chord and pitch to 1e-12, t/D to 1e-4),
     /// and its expanded area ratio (`area_ratio`: hub to an elliptic tip) is 0.70 within 3 %.
     #[test]
     fn b4_70_round_trip_and_area() {
         let g = b_series_equivalent(4, 1.0, 0.70, B_SERIES_HUB).unwrap();
         assert!((g.rows[0].c_d - 0.2908).abs() < 1e-12 && (g.rows[0].p_d - 0.822).abs() < 1e-12);
-        assert!((g.rows[3].t0_c * g.rows[3].c_d - 0.0240).abs() < 1e-12);
+        // t/D = 0.0240 at r/R 0.5; the table gives t/c to four figures.
+        assert!((g.rows[3].t0_c * g.rows[3].c_d - 0.0240).abs() < 1e-4);
         let area = crate::plant::propeller_table::area_ratio;
         let a = area(&g);
         assert!((a - 0.70).abs() < 0.03 * 0.70, "Ae/A0 = {a}");
