@@ -62,6 +62,14 @@ pub fn open_water_curves(g: &BladeGeometry, js: &[f64]) -> Result<Vec<(f64, f64)
     Ok(js.iter().map(|&j| (ow.kt(j), ow.kq(j))).collect())
 }
 
+/// The lifting line's curves (`blade::open_water`) in `flow`: the source the table takes once the
+/// lifting line meets its checks (prop54's tests/propeller.rs: within 17 % of DTMB 4119 today).
+pub fn lifting_line_curves(
+    flow: crate::plant::blade::Flow,
+) -> impl Fn(&BladeGeometry, &[f64]) -> Result<Vec<(f64, f64)>, String> {
+    move |g, js| Ok(crate::plant::blade::open_water(g, js, &flow)?.into_iter().map(|a| (a.kt, a.kq)).collect())
+}
+
 /// Local P/D at r/R = 0.7, linear between rows \[-\].
 pub fn pitch_at_07(g: &BladeGeometry) -> f64 {
     let r = &g.rows;
@@ -306,6 +314,27 @@ mod tests {
             let (kt, kq) = p.table(j);
             assert!((kt - ow.kt(j)).abs() < 3e-5 && (kq - ow.kq(j)).abs() < 3e-6, "J {j}: {kt} {kq}");
         }
+    }
+}
+
+#[cfg(test)]
+mod lifting_line_tests {
+    use super::*;
+    use crate::plant::blade::Flow;
+
+    /// The table builds from the lifting line for DTMB 4119 at full scale (4.5 m, 3.5 rev/s):
+    /// bollard kT and kQ positive, J0 between 1.0 and 1.6 (the measured curve reaches kT 0 near
+    /// J = 1.2, Jessup 1989), and the hand-over scaled to it. Prints the build time.
+    #[test]
+    fn builds_from_the_lifting_line() {
+        let g = crate::plant::propeller_geometry::GeometrySpec { name: "dtmb4119".into(), ..Default::default() }
+            .resolve(&crate::plant::propeller::PropellerParams::default())
+            .unwrap();
+        let t = std::time::Instant::now();
+        let p = GeometryPropeller::build(&g, &lifting_line_curves(Flow::sea_water(4.5, 3.5))).unwrap();
+        println!("4119 table from the lifting line: {:?} in {:?}", p.handover, t.elapsed());
+        assert!(p.handover.kt0 > 0.0 && p.handover.kq0 > 0.0);
+        assert!(p.handover.j0 > 1.0 && p.handover.j0 < 1.6, "J0 = {}", p.handover.j0);
     }
 }
 
