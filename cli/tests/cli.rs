@@ -679,3 +679,22 @@ fn propeller_from_a_blade_table() {
         assert!(!ok && err.contains(said), "{err}");
     }
 }
+
+/// `run --propeller-csv`: DTMB 4119's table runs on the geometry model and the summary names the
+/// hand-over; a chord of zero inside the blade is refused by row and column, exit status 1.
+#[test]
+fn run_on_a_blade_table() {
+    let table = concat!(env!("CARGO_MANIFEST_DIR"), "/../core/data/dtmb4119_geometry.csv");
+    let (ok, out, err) =
+        aes_sim(&["run", "preset:startup", "--set", "sim.duration_s=5", "--propeller-csv", table, "--blades", "3"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["propeller"]["geometry"], "custom");
+    assert!(v["propeller"]["note"].as_str().unwrap().contains("four-quadrant B4-70 series scaled"), "{out}");
+    let bad = std::env::temp_dir().join(format!("aes_bad_blade_{}.csv", std::process::id()));
+    let text = std::fs::read_to_string(table).unwrap().replace("0.50,0.4392", "0.50,0.0");
+    std::fs::write(&bad, text).unwrap();
+    let (ok, _, err) = aes_sim(&["run", "preset:startup", "--propeller-csv", bad.to_str().unwrap()]);
+    let _ = std::fs::remove_file(&bad);
+    assert!(!ok && err.contains("row 4 (r/R 0.5), column c_D: a chord of 0"), "{err}");
+}

@@ -257,6 +257,16 @@ macro_rules! whole_number {
 }
 whole_number!(u32, u64, usize);
 
+/// A whole number that may be left out (its declaration says what that means).
+impl Param for Option<u32> {
+    const KIND: &'static str = "integer";
+    fn check(&self, field: &str, d: &Decl, v: &mut Validator) {
+        if let Some(x) = self.filter(|x| !in_range(*x as f64, d)) {
+            refuse::<Self>(field, d, x, v);
+        }
+    }
+}
+
 impl Param for bool {
     const KIND: &'static str = "switch";
     fn check(&self, _: &str, _: &Decl, _: &mut Validator) {}

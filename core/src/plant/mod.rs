@@ -15,7 +15,9 @@ pub mod motor;
 pub mod online;
 pub mod prime_mover;
 pub mod propeller;
+pub mod propeller_geometry;
 pub mod propeller_losses;
+pub mod propeller_table;
 pub mod storage;
 
 crate::plant_section! {

@@ -334,10 +334,26 @@ crate::params! {
             label: "Fixed torque loss beta_Q", unit: "-", range: 0.0..=1.0, source: "eq. 2.13: 1 in deep calm water",
             help: "Torque kept, held for the whole run.",
         },
+        /// The blades `model = "geometry"` analyses; the other models ignore it.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        pub geometry: Option<crate::plant::propeller_geometry::GeometrySpec> = None => {},
     }
 }
 
-impl crate::params::CrossCheck for PropellerParams {}
+impl crate::params::CrossCheck for PropellerParams {
+    fn cross_check(&self, v: &mut crate::checks::Validator) {
+        match (&self.geometry, self.model) {
+            (Some(g), _) => v.section("geometry", |v| g.validate(self, v)),
+            (None, PropellerModelKind::Geometry) => v.fail(
+                "geometry",
+                "null",
+                "model = \"geometry\" needs a blade geometry: {\"name\": \"b_series\"} (the ship's B-series \
+                 equivalent), \"dtmb4119\", or \"custom\" with its rows",
+            ),
+            _ => {}
+        }
+    }
+}
 
 crate::choices! {
     /// Which open-water model the propellers follow.
@@ -346,6 +362,9 @@ crate::choices! {
         BSeries = "b_series", "Wageningen B-series (ahead only)",
         /// Four-quadrant B4-70 Fourier series (ch. 5.2.2): any sign of thrust, torque and speed.
         FourQuadrant = "four_quadrant", "four-quadrant B4-70 (ahead and astern)",
+        /// From `propeller.geometry`'s blades (ch. 3.2), first quadrant; the four-quadrant series,
+        /// scaled to the geometry's bollard and zero-thrust points, astern and past zero thrust.
+        Geometry = "geometry", "from the blade geometry (astern: four-quadrant, scaled)",
     }
 }
 

@@ -15,6 +15,7 @@ use crate::plant::generator::SyncGenerator;
 use crate::plant::motor::{InductionMotor, MotorPoint};
 use crate::plant::prime_mover::GasTurbine;
 use crate::plant::propeller::{Conditions, FourQuadrant, OpenWater, PropellerLoad};
+use crate::plant::propeller_table::GeometryPropeller;
 use crate::plant::BusParts;
 use crate::scenario::{HullModelKind, PropellerModelKind, RectifierKind, Scenario};
 use crate::ship::maneuvering::{handover_weight, Abkowitz, ManeuveringForces};
@@ -144,6 +145,8 @@ pub struct Plant {
     pub open_water: OpenWater,
     /// Present when the propellers follow the four-quadrant series.
     pub four_quadrant: Option<FourQuadrant>,
+    /// Present when the propellers follow their blade geometry (`propeller.model = "geometry"`).
+    pub geometry: Option<GeometryPropeller>,
     pub surge: Surge,
     pub hull_model: HullModel,
     /// Surge mass used by the equations of motion \[kg\].
@@ -216,8 +219,18 @@ impl Plant {
             motor: InductionMotor::new_as(&sc.plant.motor, &sc.as_printed),
             open_water: OpenWater::from_params(&sc.propeller)?,
             four_quadrant: match sc.propeller.model {
-                PropellerModelKind::BSeries => None,
+                PropellerModelKind::BSeries | PropellerModelKind::Geometry => None,
                 PropellerModelKind::FourQuadrant => Some(FourQuadrant::b4_70()?),
+            },
+            geometry: match (sc.propeller.model, &sc.propeller.geometry) {
+                (PropellerModelKind::Geometry, Some(spec)) => {
+                    let g = spec.resolve(&sc.propeller).map_err(|(f, e)| format!("propeller.geometry.{f}: {e}"))?;
+                    Some(GeometryPropeller::new(&g)?)
+                }
+                (PropellerModelKind::Geometry, None) => {
+                    return Err("propeller.geometry: the geometry model needs one".into())
+                }
+                _ => None,
             },
             surge,
             hull_model,
@@ -272,9 +285,29 @@ impl Plant {
             beta_t: self.beta_t * bt,
             beta_q: self.beta_q * bq,
         };
+        if let Some(g) = &self.geometry {
+            return g.load(n, va, &c);
+        }
         match &self.four_quadrant {
             None => self.open_water.load(n, va, &c),
             Some(fq) => fq.load(n, va, &c),
+        }
+    }
+
+    /// Open-water efficiency eta_0 = J kT / (2 pi kQ) at advance ratio `j` of the propellers'
+    /// model (the geometry's table, 0 outside its first quadrant; else the B-series) \[-\].
+    pub fn open_water_efficiency(&self, j: f64) -> f64 {
+        match &self.geometry {
+            Some(g) if (0.0..=g.handover.j0).contains(&j) => {
+                let (kt, kq) = g.table(j);
+                if kq > 0.0 {
+                    j * kt / (2.0 * PI * kq)
+                } else {
+                    0.0
+                }
+            }
+            Some(_) => 0.0,
+            None => self.open_water.efficiency(j),
         }
     }
 

@@ -111,7 +111,7 @@ impl Recording<'_> {
         self.out.propeller[s].advance_ratio
     }
     pub fn open_water_efficiency(&self, s: usize) -> f64 {
-        self.plant.open_water.efficiency(self.out.propeller[s].advance_ratio)
+        self.plant.open_water_efficiency(self.out.propeller[s].advance_ratio)
     }
     pub fn beta_t(&self) -> f64 {
         self.plant.beta_t * self.mean_shaft(|s| self.ctl.held.sea.beta_t[s])

@@ -138,6 +138,62 @@ pub struct Summary {
     pub efficiency: Efficiencies,
     pub energy_j: EnergyBalance,
     pub warnings: Vec<String>,
+    /// With `propeller.model = "geometry"`: the geometry's table and where the run left it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub propeller: Option<GeometryNote>,
+}
+
+/// What a run on a propeller's blade geometry says about it: the points the four-quadrant series
+/// is scaled to and the recorded rows outside the geometry's own first quadrant (a shaft at rest
+/// or turning astern, J < 0, or J past zero thrust), where the scaled series carried the load.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GeometryNote {
+    /// `propeller.geometry.name`.
+    pub geometry: String,
+    pub handover: crate::plant::propeller_table::Handover,
+    /// Recorded rows handed over to the scaled four-quadrant series, and the first one's time \[s\]
+    /// (None: the run stayed in the first quadrant).
+    pub rows_handed_over: usize,
+    pub first_handover_s: Option<f64>,
+    /// The same in words.
+    pub note: String,
+}
+
+impl GeometryNote {
+    fn of(scenario: &Scenario, trace: &Trace) -> Option<GeometryNote> {
+        use crate::scenario::PropellerModelKind;
+        let spec = scenario
+            .propeller
+            .geometry
+            .as_ref()
+            .filter(|_| scenario.propeller.model == PropellerModelKind::Geometry)?;
+        let g = spec.resolve(&scenario.propeller).ok()?;
+        let h = crate::plant::propeller_table::GeometryPropeller::new(&g).ok()?.handover;
+        let (t, j) = (trace.get(Signal::TS), trace.get(Signal::AdvanceRatio));
+        let (n1, n2) = (trace.get(Signal::PropRpm1), trace.get(Signal::PropRpm2));
+        let out = |i: usize| n1[i] <= 0.0 || n2[i] <= 0.0 || j[i] < 0.0 || j[i] > h.j0;
+        let rows: Vec<usize> = (0..t.len().min(j.len()).min(n1.len()).min(n2.len())).filter(|&i| out(i)).collect();
+        let first = rows.first().map(|&i| t[i]);
+        let place = match first {
+            None => "the run stayed there".to_string(),
+            Some(t0) => format!("{} recorded rows handed over, the first at t = {t0:.1} s", rows.len()),
+        };
+        let note = format!(
+            "propeller.geometry \"{}\": its own table for 0 <= J <= J0 = {:.3} (kT(0) = {:.4}, 10 kQ(0) = {:.4}); \
+             astern and past zero thrust the four-quadrant B4-70 series scaled to these points: {place}",
+            spec.name,
+            h.j0,
+            h.kt0,
+            10.0 * h.kq0
+        );
+        Some(GeometryNote {
+            geometry: spec.name.clone(),
+            handover: h,
+            rows_handed_over: rows.len(),
+            first_handover_s: first,
+            note,
+        })
+    }
 }
 
 fn ratio(a: f64, b: f64) -> f64 {
@@ -232,6 +288,7 @@ impl Summary {
                 relative_residual: ratio(residual, e(Energy::Turbine)),
             },
             warnings,
+            propeller: GeometryNote::of(scenario, trace),
         }
     }
 
