@@ -2,6 +2,7 @@
 //! (beside it) the analyses that turn a geometry into open-water thrust, torque and cavitation.
 
 pub mod geometry;
+pub mod panel;
 pub mod section_shape;
 
 pub use geometry::{BladeGeometry, MeanLine, Row, Thickness};
