@@ -653,3 +653,29 @@ fn storage_sizing_and_stability_map_shard_and_merge() {
     assert!(!ok && err.contains("the study lacks sizes 1..3 (of 3)"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn propeller_from_a_blade_table() {
+    let csv = concat!(env!("CARGO_MANIFEST_DIR"), "/../core/data/dtmb4119_geometry.csv");
+    let (ok, out, err) = aes_sim(&["propeller", csv, "--blades", "3", "--hub-ratio", "0.2", "--j", "0:1.2:25"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let rows = v["open_water"].as_array().unwrap();
+    assert_eq!(rows.len(), 25);
+    // Bollard pull first, thrust falling with J; every row has j, kt, kq, eta.
+    assert!(rows[0]["kt"].as_f64().unwrap() > rows[24]["kt"].as_f64().unwrap());
+    assert!(rows.iter().all(|r| ["j", "kt", "kq", "eta"].iter().all(|k| r[k].is_f64())));
+    let (ok, out, _) =
+        aes_sim(&["propeller", csv, "--blades", "3", "--hub-ratio", "0.2", "--at-j", "0.833", "--markdown"]);
+    assert!(ok && out.contains("| r/R | chord [m] | G |") && out.contains("At J = 0.833"), "{out}");
+    for (args, said) in [
+        (vec!["--blades", "1", "--hub-ratio", "0.2"], "blades: 1 is outside 2..=7"),
+        (vec!["--blades", "3", "--hub-ratio", "0.2", "--j", "0:9:3"], "--j TO: 9 is outside 0..=2.5"),
+        (vec!["--blades", "3", "--hub-ratio", "0.2", "--rpm", "0"], "--rpm: 0 is outside 6..=12000"),
+    ] {
+        let mut all = vec!["propeller", csv];
+        all.extend(args);
+        let (ok, _, err) = aes_sim(&all);
+        assert!(!ok && err.contains(said), "{err}");
+    }
+}

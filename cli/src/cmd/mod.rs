@@ -13,6 +13,7 @@ pub mod merge;
 pub mod operability;
 pub mod params;
 pub mod presets;
+pub mod propeller;
 pub mod rao;
 pub mod rare;
 pub mod run;

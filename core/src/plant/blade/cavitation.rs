@@ -42,6 +42,13 @@ pub struct SectionFlow {
     pub v_star_m_s: f64,
 }
 
+impl From<&super::SectionLoad> for SectionFlow {
+    /// The lifting line's load at a section, as the cavitation check reads it.
+    fn from(l: &super::SectionLoad) -> SectionFlow {
+        SectionFlow { r_r: l.r_r, chord_m: l.chord_m, alpha_rad: l.alpha_rad, v_star_m_s: l.v_star_m_s }
+    }
+}
+
 /// Local cavitation number of a section at radius `r_m` \[m\] with the blade at 12 o'clock and
 /// the hub `hub_depth_m` \[m\] below the surface: (p_atm + rho g (h - r) - p_v) / (0.5 rho V*^2).
 pub fn sigma_local(w: &Water, hub_depth_m: f64, r_m: f64, v_star_m_s: f64) -> f64 {
@@ -250,5 +257,33 @@ mod tests {
             flows.iter().map(|f| SectionFlow { v_star_m_s: f.v_star_m_s * inc / n, ..*f }).collect();
         let at_inc = b.sections(&w, &scaled, 6.0).iter().map(|c| c.margin).fold(f64::INFINITY, f64::min);
         assert!(at_inc.abs() < 1e-9, "margin at inception {at_inc}");
+    }
+
+    /// The same propeller and point with the lifting line's own section loads (branch prop54's
+    /// `analyse`, induced velocities included; its KT is still high at this J). Measured: r/R
+    /// 0.20 to 0.57 keep a margin (+0.69 to +0.03), r/R 0.63 to 0.97 cavitate lightly (-0.04 to
+    /// -0.09), and the two outermost control points (r/R 0.989, 0.999: margins -1.5 and -29)
+    /// carry the tip's large angles onto the r/R 0.95 section's bucket. A 2D section does not
+    /// describe the tip (its vortex cavitates first), so those points dominate the onset depth
+    /// (h/R 1313): a scenario should take the onset from r/R <= 0.95 until that is settled.
+    #[test]
+    fn dtmb_4119_with_the_lifting_lines_loads() {
+        let g = BladeGeometry::from_csv(P4119, 3, 0.2).unwrap();
+        let d = 4.5;
+        let a = crate::plant::blade::analyse(&g, 0.833, &crate::plant::blade::Flow::sea_water(d, 3.0)).unwrap();
+        let flows: Vec<SectionFlow> = a.sections.iter().map(SectionFlow::from).collect();
+        let b = PropellerBuckets::new(&g, d).unwrap();
+        let w = Water::default();
+        let s = b.sections(&w, &flows, 6.0);
+        assert!(!s.is_empty() && s.iter().all(|c| c.margin.is_finite()));
+        let onset = b.onset_h_over_r(&w, &flows);
+        assert!(onset.is_finite(), "onset h/R {onset}");
+        for c in &s {
+            if c.r_r < 0.6 {
+                assert!(c.margin > 0.0, "r/R {} margin {}", c.r_r, c.margin);
+            } else if c.r_r < 0.98 {
+                assert!((-0.1..0.0).contains(&c.margin), "r/R {} margin {}", c.r_r, c.margin);
+            }
+        }
     }
 }

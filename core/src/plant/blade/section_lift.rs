@@ -1,0 +1,37 @@
+//! Lift of a blade section in the linear range: thin-wing theory about the mean line's ideal angle,
+//! C_L = C_Li + 2 pi (alpha - alpha_i) (Abbott & von Doenhoff 1959, ch. 4.3 and 6.4), with the
+//! lifting-surface camber factor dividing the camber (so both the ideal lift and the ideal angle).
+
+use super::lifting_surface::Corrections;
+use super::mean_line;
+use std::f64::consts::PI;
+
+/// Thin-wing lift slope dC_L/d alpha \[1/rad\].
+pub const LIFT_SLOPE: f64 = 2.0 * PI;
+
+/// Section lift coefficient at angle of attack `alpha_rad` from the nose-tail line, for camber
+/// ratio `f0_c` and the lifting-surface factors `k` \[-\], and its slope dC_L/d alpha \[1/rad\].
+pub fn lift(alpha_rad: f64, f0_c: f64, k: &Corrections) -> (f64, f64) {
+    let f = f0_c / k.camber;
+    (mean_line::ideal_lift(f) + LIFT_SLOPE * (alpha_rad - mean_line::ideal_angle_rad(f)), LIFT_SLOPE)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn thin_wing_limits() {
+        // Uncorrected: a flat plate lifts 2 pi alpha; the tabulated mean line lifts 1 at 1.54 deg.
+        let (cl, slope) = lift(0.05, 0.0, &Corrections::NONE);
+        assert!((cl - 2.0 * PI * 0.05).abs() < 1e-12 && (slope - 2.0 * PI).abs() < 1e-12);
+        let (cl, _) = lift(1.54f64.to_radians(), 0.0679, &Corrections::NONE);
+        assert!((cl - 1.0).abs() < 1e-12);
+        // A camber factor of 2 halves the camber (C_Li 0.5, alpha_i 0.77 deg) and keeps the slope:
+        // C_L = 0.5 + 2 pi (1.54 - 0.77) deg = 0.5844.
+        let (cl2, slope2) = lift(1.54f64.to_radians(), 0.0679, &Corrections { camber: 2.0 });
+        assert!((cl2 - (0.5 + 2.0 * PI * 0.77f64.to_radians())).abs() < 1e-12 && slope2 == LIFT_SLOPE);
+        // Symmetry: no camber, no angle, no lift.
+        assert_eq!(lift(0.0, 0.0, &Corrections { camber: 1.7 }).0, 0.0);
+    }
+}
