@@ -6,13 +6,16 @@
 //! ([`induction`]), a hub image, section lift from the mean line ([`mean_line`], [`section_lift`],
 //! [`lifting_surface`]) and a Reynolds-number-dependent section drag ([`friction`]).
 
+pub mod cavitation;
 pub mod friction;
 pub mod geometry;
 pub mod induction;
 pub mod lifting_line;
 pub mod lifting_surface;
 pub mod mean_line;
+pub mod panel;
 pub mod section_lift;
+pub mod section_shape;
 
 pub use geometry::{BladeGeometry, MeanLine, Row, Thickness};
 
