@@ -3,7 +3,6 @@
 //! explainers share.
 
 use super::number;
-use super::verdict::{Reading, Verdict};
 use crate::scenario::Scenario;
 use crate::signals::Signal;
 use crate::sim::summary::Summary;
@@ -286,4 +285,31 @@ pub(super) fn depth(b: &mut Book, sc: &serde_json::Value, end: f64) -> (usize, f
         b.say(format!("Surface losses started {n} time{}: each time a propeller draws air or breaks the surface it loses thrust, its load drops and its motor races.", if n == 1 { "" } else { "s" }), &[on]);
     }
     port
+}
+
+/// The number a lesson's question is about, measured in one run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Reading {
+    pub measure: Measure,
+    pub value: f64,
+}
+
+/// The verdict on a prediction, from the run before and the run now.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Verdict {
+    /// What the page and `aes-sim lesson` say.
+    pub text: String,
+    /// The reading before and now (the question's measure, SI or pu).
+    pub before: f64,
+    pub now: f64,
+    /// Readings within `by` of each other are "about the same".
+    pub by: f64,
+    /// The run nearer the question's change against the other (More: its reading is larger).
+    pub relation: Relation,
+    /// The answer the two runs show (None: the change is not the question's, or the runs cannot
+    /// tell; the text says why).
+    pub right: Option<usize>,
+    /// The student's answer (None: skipped) and whether the runs agree with it.
+    pub answer: Option<usize>,
+    pub agrees: Option<bool>,
 }

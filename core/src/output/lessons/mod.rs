@@ -31,7 +31,8 @@ mod waves;
 
 use facts::Book;
 pub use facts::{onsets, stat, Explanation, Fact, Measure, Next, Promise, Relation, Run, Stat};
-pub use verdict::{measure, Before, Reading, Verdict};
+pub use facts::{Reading, Verdict};
+pub use verdict::{measure, Before};
 
 /// A control of a lesson.
 #[derive(Debug, Clone, Serialize)]

@@ -3,17 +3,12 @@
 //! number the question is about (its [`Reading`]), and the answer the two runs show is said with
 //! both numbers side by side, or "about the same" when they differ by no more than the margin.
 
-use super::facts::{col, f, nearest, onsets, stat, submerged, value_text, window, Measure, Relation, Run, Stat};
+use super::facts::{
+    col, f, nearest, onsets, stat, submerged, value_text, window, Measure, Relation, Run, Stat, Verdict,
+};
 use super::{as_text, Control, ControlKind, Lesson};
 use crate::signals::Signal;
-use serde::{Deserialize, Serialize};
-
-/// The number a lesson's question is about, measured in one run.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Reading {
-    pub measure: Measure,
-    pub value: f64,
-}
+use serde::Deserialize;
 
 /// The run before a change, as the page keeps it: its controls' values, its reading and the
 /// answer the student chose (None: skipped), so the run after can be compared with it.
@@ -23,26 +18,6 @@ pub struct Before {
     pub reading: f64,
     #[serde(default)]
     pub answer: Option<usize>,
-}
-
-/// The verdict on a prediction, from the run before and the run now.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Verdict {
-    /// What the page and `aes-sim lesson` say.
-    pub text: String,
-    /// The reading before and now (the question's measure, SI or pu).
-    pub before: f64,
-    pub now: f64,
-    /// Readings within `by` of each other are "about the same".
-    pub by: f64,
-    /// The run nearer the question's change against the other (More: its reading is larger).
-    pub relation: Relation,
-    /// The answer the two runs show (None: the change is not the question's, or the runs cannot
-    /// tell; the text says why).
-    pub right: Option<usize>,
-    /// The student's answer (None: skipped) and whether the runs agree with it.
-    pub answer: Option<usize>,
-    pub agrees: Option<bool>,
 }
 
 /// What a lesson's question is about: the controls it changes and the reading that decides it.
