@@ -3,7 +3,7 @@
 //! series taking over astern and past zero thrust (ch. 5.2.2), scaled to the geometry's own
 //! bollard and zero-thrust points so the hand-over is continuous.
 
-use crate::plant::blade::BladeGeometry;
+use crate::plant::blade::{BladeGeometry, Flow};
 use crate::plant::propeller::{Conditions, FourQuadrant, OpenWater, PropellerLoad};
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -54,20 +54,26 @@ pub struct GeometryPropeller {
 /// What produces the first quadrant: kT and kQ at each advance ratio of `js`.
 pub type Curves = dyn Fn(&BladeGeometry, &[f64]) -> Result<Vec<(f64, f64)>, String>;
 
-/// The open-water curves of a geometry. Until the lifting line is merged this is the B-series
-/// polynomial of the geometry's equivalent (Z, P/D at 0.7 R, expanded area from the chords),
-/// within the series' ranges.
-pub fn open_water_curves(g: &BladeGeometry, js: &[f64]) -> Result<Vec<(f64, f64)>, String> {
+/// The B-series polynomial of the geometry's equivalent (Z, P/D at 0.7 R, expanded area from the
+/// chords), within the series' ranges: a comparison curve, not the geometry model's.
+pub fn b_series_equivalent_curves(g: &BladeGeometry, js: &[f64]) -> Result<Vec<(f64, f64)>, String> {
     let ow = OpenWater::b_series(pitch_at_07(g).clamp(0.5, 1.4), area_ratio(g).clamp(0.3, 1.05), g.blades.clamp(2, 7))?;
     Ok(js.iter().map(|&j| (ow.kt(j), ow.kq(j))).collect())
 }
 
-/// The lifting line's curves (`blade::open_water`) in `flow`: the source the table takes once the
-/// lifting line meets its checks (prop54's tests/propeller.rs: within 17 % of DTMB 4119 today).
-pub fn lifting_line_curves(
-    flow: crate::plant::blade::Flow,
-) -> impl Fn(&BladeGeometry, &[f64]) -> Result<Vec<(f64, f64)>, String> {
+/// The lifting line's curves (`blade::open_water`) in `flow`: the geometry model's table.
+pub fn lifting_line_curves(flow: Flow) -> impl Fn(&BladeGeometry, &[f64]) -> Result<Vec<(f64, f64)>, String> {
     move |g, js| Ok(crate::plant::blade::open_water(g, js, &flow)?.into_iter().map(|a| (a.kt, a.kq)).collect())
+}
+
+/// The flow the scenario's table is analysed in: sea water, the propeller's diameter, and the
+/// motor's synchronous speed f / p (300 rpm for the thesis' direct-drive motor, its ch. 5 rating).
+/// A stated shaft speed rather than the ordered speed's rpm, because the table is built before
+/// the run and the rpm there would need the run; the speed only sets the sections' Reynolds
+/// numbers (drag), which change slowly with it.
+pub fn design_flow(sc: &crate::scenario::Scenario) -> Flow {
+    let m = &sc.plant.motor;
+    Flow::sea_water(sc.propeller.diameter_m, m.rated_frequency_hz / m.pole_pairs.max(1) as f64)
 }
 
 /// Local P/D at r/R = 0.7, linear between rows \[-\].
@@ -128,23 +134,24 @@ fn monotone_cubic(x: &[f64], y: &[f64], at: f64) -> f64 {
 }
 
 impl GeometryPropeller {
-    /// The table of `g` from `curves`, remembered per geometry (a run, its Monte Carlo trials and
-    /// the page's repeated runs build it once).
-    pub fn new(g: &BladeGeometry) -> Result<GeometryPropeller, String> {
-        type Cache = Mutex<Vec<(BladeGeometry, GeometryPropeller)>>;
+    /// The table of `g` from the lifting line in `flow`, remembered per geometry and flow (a run,
+    /// its Monte Carlo trials and the page's repeated runs build it once).
+    pub fn new(g: &BladeGeometry, flow: Flow) -> Result<GeometryPropeller, String> {
+        type Cache = Mutex<Vec<((BladeGeometry, Flow), GeometryPropeller)>>;
         static CACHE: OnceLock<Cache> = OnceLock::new();
         let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
         if let Ok(c) = cache.lock() {
-            if let Some((_, p)) = c.iter().find(|(k, _)| k == g) {
+            if let Some((_, p)) = c.iter().find(|((kg, kf), _)| kg == g && *kf == flow) {
                 return Ok(p.clone());
             }
         }
-        let p = GeometryPropeller::build(g, &open_water_curves)?;
+        flow.check().map_err(|e| format!("propeller.geometry: the design flow's {e}"))?;
+        let p = GeometryPropeller::build(g, &lifting_line_curves(flow))?;
         if let Ok(mut c) = cache.lock() {
             if c.len() >= MAX_TABLES {
                 c.remove(0);
             }
-            c.push((g.clone(), p.clone()));
+            c.push(((g.clone(), flow), p.clone()));
         }
         Ok(p)
     }
@@ -283,7 +290,7 @@ mod tests {
     #[test]
     fn handover_is_continuous() {
         let g = b_series_equivalent(5, 1.0, 0.75, 0.167).unwrap();
-        let p = GeometryPropeller::new(&g).unwrap();
+        let p = GeometryPropeller::new(&g, Flow::sea_water(4.0, 5.0)).unwrap();
         let (ct0, cq0) = kt_kq(&p, 1.0, 0.0);
         let d = 4.0;
         let at = |beta: f64| {
@@ -306,7 +313,7 @@ mod tests {
     #[test]
     fn table_reproduces_its_curves() {
         let g = b_series_equivalent(5, 1.0, 0.75, 0.167).unwrap();
-        let p = GeometryPropeller::build(&g, &open_water_curves).unwrap();
+        let p = GeometryPropeller::build(&g, &b_series_equivalent_curves).unwrap();
         let ow = OpenWater::b_series(pitch_at_07(&g), area_ratio(&g), 5).unwrap();
         assert!((p.handover.j0 - ow.j_max).abs() < 1e-6, "{} vs {}", p.handover.j0, ow.j_max);
         for i in 0..=40 {
@@ -343,23 +350,45 @@ mod run_tests {
     use crate::scenario::presets::preset;
     use crate::scenario::PropellerModelKind;
 
-    /// head-seas-ss6 on the ship's B-series-equivalent geometry (through the table and its
-    /// derived chords, thickness and area) against the polynomial: the mean turbine power, ship
-    /// speed and shaft speed within 2 %, and the run stays in the first quadrant (no hand-over).
+    /// head-seas-ss6 on the ship's B-series-equivalent geometry (Z 5, P/D 1.0, Ae/A0 0.75), now
+    /// through the lifting line's table, against the polynomial of the same Z, P/D, Ae/A0. The two
+    /// curves are different models: on B4-70 the lifting line is 3-16 % off the polynomial over
+    /// J 0.2-0.8 (docs/propeller.md), so the run differs where the propeller's coefficients enter.
+    /// Measured: turbine power -5.4 %, shaft speed -3.0 %, ship speed +0.03 %, thrust +0.1 %.
+    /// At the run's mean J 0.74 the lifting line's kT is 14 % and its kQ 8 % above the polynomial's.
+    /// Asserted: power within 8 % and rpm within 5 % (the stronger kT turns the shaft slower;
+    /// power follows kQ n^3), ship speed and thrust within 1 % (the speed order holds
+    /// the speed, so the thrust is the hull's resistance at it, whichever curve makes it). The run
+    /// stays in the first quadrant, and the summary's note names the lifting line.
     #[test]
     fn head_seas_on_the_b_series_equivalent_matches_the_polynomial() {
         let base = preset("head-seas-ss6").unwrap();
         let mut geo = base.clone();
         geo.propeller.model = PropellerModelKind::Geometry;
         geo.propeller.geometry = Some(Default::default());
+        let g = geo.propeller.geometry.as_ref().unwrap().resolve(&geo.propeller).unwrap();
+        let flow = super::design_flow(&geo);
+        let t = std::time::Instant::now();
+        let p = super::GeometryPropeller::build(&g, &super::lifting_line_curves(flow)).unwrap();
+        println!("table for the default geometry at {flow:?}: {:?} in {:?}", p.handover, t.elapsed());
         let (a, b) = (crate::sim::run(&base).unwrap().summary, crate::sim::run(&geo).unwrap().summary);
-        for name in ["p_turbine_w", "ship_speed_kn", "prop_rpm", "thrust_kn"] {
+        let j = b.signals["advance_ratio"].mean;
+        let ow = crate::plant::propeller::OpenWater::from_params(&base.propeller).unwrap();
+        println!(
+            "mean J {j:.3}: lifting line kT {:.4} kQ {:.5}, polynomial kT {:.4} kQ {:.5}",
+            p.table(j).0,
+            p.table(j).1,
+            ow.kt(j),
+            ow.kq(j)
+        );
+        for (name, tol) in [("p_turbine_w", 0.08), ("ship_speed_kn", 0.01), ("prop_rpm", 0.05), ("thrust_kn", 0.01)] {
             let (x, y) = (a.signals[name].mean, b.signals[name].mean);
-            println!("{name}: b_series {x:.5e}, geometry {y:.5e}");
-            assert!((y - x).abs() < 0.02 * x.abs(), "{name}: {x} vs {y}");
+            println!("{name}: b_series {x:.5e}, geometry {y:.5e}, {:+.2} %", 100.0 * (y - x) / x);
+            assert!((y - x).abs() < tol * x.abs(), "{name}: {x} vs {y}");
         }
         assert!(a.propeller.is_none());
         let note = b.propeller.unwrap();
+        assert!(note.note.contains("from the lifting line"), "{}", note.note);
         assert_eq!(note.rows_handed_over, 0, "{}", note.note);
     }
 }

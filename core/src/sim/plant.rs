@@ -225,7 +225,7 @@ impl Plant {
             geometry: match (sc.propeller.model, &sc.propeller.geometry) {
                 (PropellerModelKind::Geometry, Some(spec)) => {
                     let g = spec.resolve(&sc.propeller).map_err(|(f, e)| format!("propeller.geometry.{f}: {e}"))?;
-                    Some(GeometryPropeller::new(&g)?)
+                    Some(GeometryPropeller::new(&g, crate::plant::propeller_table::design_flow(sc))?)
                 }
                 (PropellerModelKind::Geometry, None) => {
                     return Err("propeller.geometry: the geometry model needs one".into())

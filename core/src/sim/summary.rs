@@ -168,7 +168,8 @@ impl GeometryNote {
             .as_ref()
             .filter(|_| scenario.propeller.model == PropellerModelKind::Geometry)?;
         let g = spec.resolve(&scenario.propeller).ok()?;
-        let h = crate::plant::propeller_table::GeometryPropeller::new(&g).ok()?.handover;
+        let flow = crate::plant::propeller_table::design_flow(scenario);
+        let h = crate::plant::propeller_table::GeometryPropeller::new(&g, flow).ok()?.handover;
         let (t, j) = (trace.get(Signal::TS), trace.get(Signal::AdvanceRatio));
         let (n1, n2) = (trace.get(Signal::PropRpm1), trace.get(Signal::PropRpm2));
         let out = |i: usize| n1[i] <= 0.0 || n2[i] <= 0.0 || j[i] < 0.0 || j[i] > h.j0;
@@ -179,9 +180,10 @@ impl GeometryNote {
             Some(t0) => format!("{} recorded rows handed over, the first at t = {t0:.1} s", rows.len()),
         };
         let note = format!(
-            "propeller.geometry \"{}\": its own table for 0 <= J <= J0 = {:.3} (kT(0) = {:.4}, 10 kQ(0) = {:.4}); \
-             astern and past zero thrust the four-quadrant B4-70 series scaled to these points: {place}",
+            "propeller.geometry \"{}\": its own table from the lifting line (at n = {:.2} rev/s) for 0 <= J <= J0 = {:.3} \
+             (kT(0) = {:.4}, 10 kQ(0) = {:.4}); astern and past zero thrust the four-quadrant B4-70 series scaled to these points: {place}",
             spec.name,
+            flow.rev_per_s,
             h.j0,
             h.kt0,
             10.0 * h.kq0
