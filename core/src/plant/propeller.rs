@@ -340,10 +340,21 @@ crate::params! {
     }
 }
 
+impl PropellerParams {
+    /// The B-series propeller these parameters describe (a "b_series" geometry is its equivalent).
+    pub fn b_series_of(&self) -> crate::plant::propeller_geometry::BSeriesOf {
+        crate::plant::propeller_geometry::BSeriesOf {
+            blades: self.blades,
+            pitch_ratio: self.pitch_ratio,
+            blade_area_ratio: self.blade_area_ratio,
+        }
+    }
+}
+
 impl crate::params::CrossCheck for PropellerParams {
     fn cross_check(&self, v: &mut crate::checks::Validator) {
         match (&self.geometry, self.model) {
-            (Some(g), _) => v.section("geometry", |v| g.validate(self, v)),
+            (Some(g), _) => v.section("geometry", |v| g.validate(&self.b_series_of(), v)),
             (None, PropellerModelKind::Geometry) => v.fail(
                 "geometry",
                 "null",

@@ -4,7 +4,6 @@
 
 use crate::checks::Validator;
 use crate::plant::blade::{BladeGeometry, MeanLine, Row, Thickness};
-use crate::plant::propeller::PropellerParams;
 use serde::{Deserialize, Serialize};
 
 /// DTMB 4119's table (Epps & Kimball 2013, Table 3; core/data, with its source lines).
@@ -114,6 +113,18 @@ impl From<&Row> for GeometryRow {
     }
 }
 
+/// The scenario's B-series propeller, of which a geometry named "b_series" is the equivalent
+/// (kept apart from the propeller's parameters so that this module does not read them back).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BSeriesOf {
+    /// Blades Z \[-\].
+    pub blades: u32,
+    /// Pitch ratio P/D \[-\].
+    pub pitch_ratio: f64,
+    /// Expanded blade area ratio Ae/A0 \[-\].
+    pub blade_area_ratio: f64,
+}
+
 impl GeometrySpec {
     /// A custom geometry from a CSV blade table (the header of core/data/dtmb4119_geometry.csv).
     pub fn from_csv(text: &str, blades: u32, hub_ratio: f64) -> Result<GeometrySpec, String> {
@@ -129,7 +140,7 @@ impl GeometrySpec {
     /// The checked geometry this section names for the propeller `p` (its B-series Z, P/D and
     /// Ae/A0 for the B-series equivalent). Errors are (field, message), the field under
     /// `propeller.geometry`; a bad table's message names its row and column.
-    pub fn resolve(&self, p: &PropellerParams) -> Result<BladeGeometry, (String, String)> {
+    pub fn resolve(&self, p: &BSeriesOf) -> Result<BladeGeometry, (String, String)> {
         let named = |field: &str| -> Result<(), (String, String)> {
             if field == "rows" && !self.rows.is_empty() || field == "blades" && self.blades.is_some() {
                 return Err((field.into(), format!("is for name = \"custom\"; \"{}\" has its own", self.name)));
@@ -177,7 +188,7 @@ impl GeometrySpec {
     }
 
     /// Checks the section for the propeller `p` (called by `propeller`'s cross check).
-    pub fn validate(&self, p: &PropellerParams, v: &mut Validator) {
+    pub fn validate(&self, p: &BSeriesOf, v: &mut Validator) {
         if let Err((field, msg)) = self.resolve(p) {
             v.fail(&field, "", msg);
         }
@@ -240,7 +251,7 @@ mod tests {
 
     #[test]
     fn named_and_custom_resolve_or_are_refused_by_name() {
-        let p = PropellerParams::default();
+        let p = crate::plant::propeller::PropellerParams::default().b_series_of();
         let g = GeometrySpec { name: "dtmb4119".into(), ..GeometrySpec::default() }.resolve(&p).unwrap();
         assert_eq!((g.blades, g.rows.len()), (3, 10));
         let custom = GeometrySpec::from_csv(DTMB_4119_CSV, 3, 0.2).unwrap();

@@ -224,7 +224,9 @@ impl Plant {
             },
             geometry: match (sc.propeller.model, &sc.propeller.geometry) {
                 (PropellerModelKind::Geometry, Some(spec)) => {
-                    let g = spec.resolve(&sc.propeller).map_err(|(f, e)| format!("propeller.geometry.{f}: {e}"))?;
+                    let g = spec
+                        .resolve(&sc.propeller.b_series_of())
+                        .map_err(|(f, e)| format!("propeller.geometry.{f}: {e}"))?;
                     Some(GeometryPropeller::new(&g, crate::plant::propeller_table::design_flow(sc))?)
                 }
                 (PropellerModelKind::Geometry, None) => {

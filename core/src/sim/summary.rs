@@ -167,7 +167,7 @@ impl GeometryNote {
             .geometry
             .as_ref()
             .filter(|_| scenario.propeller.model == PropellerModelKind::Geometry)?;
-        let g = spec.resolve(&scenario.propeller).ok()?;
+        let g = spec.resolve(&scenario.propeller.b_series_of()).ok()?;
         let flow = crate::plant::propeller_table::design_flow(scenario);
         let h = crate::plant::propeller_table::GeometryPropeller::new(&g, flow).ok()?.handover;
         let (t, j) = (trace.get(Signal::TS), trace.get(Signal::AdvanceRatio));
