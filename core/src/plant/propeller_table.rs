@@ -66,16 +66,6 @@ pub fn lifting_line_curves(flow: Flow) -> impl Fn(&BladeGeometry, &[f64]) -> Res
     move |g, js| Ok(crate::plant::blade::open_water(g, js, &flow)?.into_iter().map(|a| (a.kt, a.kq)).collect())
 }
 
-/// The flow the scenario's table is analysed in: sea water, the propeller's diameter, and the
-/// motor's synchronous speed f / p (300 rpm for the thesis' direct-drive motor, its ch. 5 rating).
-/// A stated shaft speed rather than the ordered speed's rpm, because the table is built before
-/// the run and the rpm there would need the run; the speed only sets the sections' Reynolds
-/// numbers (drag), which change slowly with it.
-pub fn design_flow(sc: &crate::scenario::Scenario) -> Flow {
-    let m = &sc.plant.motor;
-    Flow::sea_water(sc.propeller.diameter_m, m.rated_frequency_hz / m.pole_pairs.max(1) as f64)
-}
-
 /// Local P/D at r/R = 0.7, linear between rows \[-\].
 pub fn pitch_at_07(g: &BladeGeometry) -> f64 {
     let r = &g.rows;
@@ -335,7 +325,7 @@ mod lifting_line_tests {
     #[test]
     fn builds_from_the_lifting_line() {
         let g = crate::plant::propeller_geometry::GeometrySpec { name: "dtmb4119".into(), ..Default::default() }
-            .resolve(&crate::plant::propeller::PropellerParams::default())
+            .resolve(&crate::plant::propeller::PropellerParams::default().b_series_of())
             .unwrap();
         let t = std::time::Instant::now();
         let p = GeometryPropeller::build(&g, &lifting_line_curves(Flow::sea_water(4.5, 3.5))).unwrap();
@@ -366,8 +356,8 @@ mod run_tests {
         let mut geo = base.clone();
         geo.propeller.model = PropellerModelKind::Geometry;
         geo.propeller.geometry = Some(Default::default());
-        let g = geo.propeller.geometry.as_ref().unwrap().resolve(&geo.propeller).unwrap();
-        let flow = super::design_flow(&geo);
+        let g = geo.propeller.geometry.as_ref().unwrap().resolve(&geo.propeller.b_series_of()).unwrap();
+        let flow = geo.propeller_design_flow();
         let t = std::time::Instant::now();
         let p = super::GeometryPropeller::build(&g, &super::lifting_line_curves(flow)).unwrap();
         println!("table for the default geometry at {flow:?}: {:?} in {:?}", p.handover, t.elapsed());

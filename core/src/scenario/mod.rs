@@ -481,6 +481,19 @@ impl Scenario {
         }
     }
 
+    /// The flow the scenario's table is analysed in: sea water, the propeller's diameter, and the
+    /// motor's synchronous speed f / p (300 rpm for the thesis' direct-drive motor, its ch. 5 rating).
+    /// A stated shaft speed rather than the ordered speed's rpm, because the table is built before
+    /// the run and the rpm there would need the run; the speed only sets the sections' Reynolds
+    /// numbers (drag), which change slowly with it.
+    pub fn propeller_design_flow(&self) -> crate::plant::blade::Flow {
+        let m = &self.plant.motor;
+        crate::plant::blade::Flow::sea_water(
+            self.propeller.diameter_m,
+            m.rated_frequency_hz / m.pole_pairs.max(1) as f64,
+        )
+    }
+
     /// The field control's parameters with the set point of `bus_voltage_ref_v`.
     pub fn field_control(&self) -> FieldControlParams {
         FieldControlParams { bus_voltage_ref_v: self.bus_voltage_ref_v(), ..self.controllers.field.clone() }

@@ -227,7 +227,7 @@ impl Plant {
                     let g = spec
                         .resolve(&sc.propeller.b_series_of())
                         .map_err(|(f, e)| format!("propeller.geometry.{f}: {e}"))?;
-                    Some(GeometryPropeller::new(&g, crate::plant::propeller_table::design_flow(sc))?)
+                    Some(GeometryPropeller::new(&g, sc.propeller_design_flow())?)
                 }
                 (PropellerModelKind::Geometry, None) => {
                     return Err("propeller.geometry: the geometry model needs one".into())

@@ -168,7 +168,7 @@ impl GeometryNote {
             .as_ref()
             .filter(|_| scenario.propeller.model == PropellerModelKind::Geometry)?;
         let g = spec.resolve(&scenario.propeller.b_series_of()).ok()?;
-        let flow = crate::plant::propeller_table::design_flow(scenario);
+        let flow = scenario.propeller_design_flow();
         let h = crate::plant::propeller_table::GeometryPropeller::new(&g, flow).ok()?.handover;
         let (t, j) = (trace.get(Signal::TS), trace.get(Signal::AdvanceRatio));
         let (n1, n2) = (trace.get(Signal::PropRpm1), trace.get(Signal::PropRpm2));
