@@ -203,7 +203,8 @@ mod tests {
             // hull's offsets, a single-rate run's sub-steps.
             let left_out = m.default.is_null()
                 || m.path.starts_with("ship.hull.bilge_keels")
-                || ["ship.hull.offsets_csv", "stepping.hull_substeps"].contains(&m.path.as_str());
+                || ["ship.hull.offsets_csv", "stepping.hull_substeps"].contains(&m.path.as_str())
+                || m.path.starts_with("propeller.geometry.");
             assert!(listed || left_out, "{} is not in the scenario", m.path);
             assert_eq!(paths.iter().filter(|p| **p == m.path).count(), 1, "{} twice", m.path);
         }
@@ -285,6 +286,16 @@ mod tests {
     #[test]
     fn ranges_are_enforced_with_their_messages() {
         let base = Scenario::default();
+        // The blade geometry is an optional section: its fields are checked where it is given.
+        let mut with_blades = Scenario::default();
+        with_blades.propeller.geometry = Some(
+            crate::plant::propeller_geometry::GeometrySpec::from_csv(
+                include_str!("../../data/dtmb4119_geometry.csv"),
+                3,
+                0.2,
+            )
+            .unwrap(),
+        );
         let mut checked = 0;
         for m in all() {
             let (Some(lo), Some(hi)) = (m.min, m.max) else { continue };
@@ -294,6 +305,7 @@ mod tests {
             let outside = if m.kind == "integer" { hi + 1.0 } else { hi + (hi - lo).abs().max(1.0) };
             // A list's field at its first item.
             let path = m.path.replace(".N.", ".0.");
+            let base = if path.starts_with("propeller.geometry.") { &with_blades } else { &base };
             let e = base.with_override(&path, &num(outside)).unwrap_err();
             assert!(e.0.iter().any(|f| f.path == path && f.message == m.message()), "{path} = {outside}: {e}");
             checked += 1;
