@@ -170,6 +170,26 @@ await check('rare events say they are preparing (not "0 of n trials") until the 
   await c.close();
 });
 
+await check('a fold on the worker pool (fuel per mile) says it prepares, its bar without a share, then counts', async () => {
+  const c = await context(1366, 768);
+  const p = await openPage(c, `${base}#v=2&preset=head-seas-ss6`, base, errors);
+  await p.$eval('#fuel-box', (e) => { e.open = true; });
+  await p.fill('#fuel-speeds', '12, 24');
+  await p.fill('#fuel-seeds', '2');
+  await p.evaluate(() => {
+    window.seenEta = [];
+    new MutationObserver(() => window.seenEta.push({ text: document.getElementById('fuel-eta').textContent, share: document.getElementById('fuel-progress').hasAttribute('value') }))
+      .observe(document.getElementById('fuel-eta'), { childList: true, characterData: true, subtree: true });
+  });
+  await p.click('#fuel-compute');
+  await p.waitForFunction(() => /^Done|failed|refused|Cancelled/.test(document.getElementById('fuel-status').textContent), null, { timeout: 120000 });
+  const seen = await p.evaluate(() => window.seenEta);
+  assert(seen.length && /^Preparing the workers/.test(seen[0].text) && /first of 4 runs/.test(seen[0].text) && !seen[0].share, `first words: ${JSON.stringify(seen.slice(0, 3))}`);
+  assert(!seen.some((x) => /^0 of 4/.test(x.text)), `"0 of 4" was said: ${JSON.stringify(seen)}`);
+  assert(/^4 of 4 runs/.test(await p.textContent('#fuel-eta')), `after: ${await p.textContent('#fuel-eta')}`);
+  await c.close();
+});
+
 await check('a lesson value released where it was adds no history entry; a new value adds one', async () => {
   const c = await context(1366, 768);
   const p = await c.newPage();

@@ -174,7 +174,7 @@ export class BusMap {
           return m.spec;
         },
         onStart: (k) => this.fold.status(`Linearising the plant at ${cells} points on ${k} worker${k > 1 ? 's' : ''}...`),
-        onProgress: (done) => this.fold.progress(done, n, started, 'row'),
+        onProgress: (done, _, preparing) => this.fold.progress(done, n, started, 'row', preparing),
       });
       this.shown = { request: r, key: this.stateKey(), point, map, sc: r.sc };
       announce('busmap', { request: { scenario: r.scenario, x: r.x, y: r.y }, point, map });

@@ -31,7 +31,14 @@ export class StudyFold {
     if (this.redFailures) s.className = error ? 'error' : '';
   }
 
-  progress(done, n, started, item) {
+  // `preparing`: before the first item (the workers build what every item needs): the bar has no
+  // share, and the words say so instead of "0 of n".
+  progress(done, n, started, item, preparing = false) {
+    if (preparing) {
+      this.el('progress').removeAttribute('value');
+      this.el('eta').textContent = `Preparing the workers; the first of ${n} ${item}s starts after.`;
+      return;
+    }
     this.el('progress').value = done / n;
     this.el('eta').textContent = progressText(done, n, started, item);
   }

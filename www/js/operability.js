@@ -154,7 +154,7 @@ export class OperabilityTab {
       const { summary: polar } = await this.pool.run({
         kind: 'operability', scenario, spec, n, item: 'speed',
         onStart: (k) => this.status(`Computing the polar: ${n} speeds x ${req.headings_deg.length} headings x ${req.sea_states.length} seas on ${k} worker${k > 1 ? 's' : ''}...`),
-        onProgress: (done) => this.fold.progress(done, n, started, 'speed'),
+        onProgress: (done, _, preparing) => this.fold.progress(done, n, started, 'speed', preparing),
       });
       const entry = { key, study: inp.study, title: inp.title, polar, ms: performance.now() - started };
       this.kept.delete(key);

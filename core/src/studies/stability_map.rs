@@ -151,6 +151,13 @@ impl Axis {
                  controllers.field.bus_voltage_ref_v (the operating point)"
             ));
         }
+        if path.starts_with("stepping.") || path.starts_with("sim.") {
+            return Err(format!(
+                "{which}: {path}: the map linearises the plant and does not step it in time: the time step and \
+                 the run's settings do not move it; axes that do: the plant's and the ship's parameters (plant.*, \
+                 ship.*), initial.speed_kn and controllers.field.bus_voltage_ref_v"
+            ));
+        }
         if !(lo.is_finite() && hi.is_finite() && lo < hi) {
             let shown = |v: f64| {
                 if v.is_finite() {
@@ -209,9 +216,23 @@ fn held_controller(path: &str) -> Option<&'static str> {
 }
 
 /// The scenario with `path` set to `value`.
+/// `sc` with `path` set to `value`, on the finest time step: a linearisation does not step in time,
+/// so the rules a step must keep (a ship service filter's resonance resolved by it) must not
+/// refuse a cell. The step does not enter the linearisation (the same eigenvalues on any step).
 fn set(sc: &Scenario, path: &str, value: f64) -> Result<Scenario, String> {
-    sc.with_override(path, &crate::checks::num(value)).map_err(|e| e.to_string())
+    let finest = crate::checks::num(LINEARISATION_DT_S);
+    sc.with_overrides(&[
+        (path, &crate::checks::num(value)),
+        ("stepping.dt_s", &finest),
+        ("stepping.integrator", "rk4"),
+        ("stepping.hull_substeps", "1"),
+    ])
+    .map_err(|e| e.to_string())
 }
+
+/// The step the map's scenarios carry \[s\]: the smallest `stepping.dt_s` takes, a whole fraction of
+/// every sample period and record interval the presets use.
+const LINEARISATION_DT_S: f64 = 1e-5;
 
 /// The spectral abscissa with the two parameters set.
 pub fn abscissa_at(sc: &Scenario, x: (&str, f64), y: (&str, f64)) -> Result<f64, String> {
@@ -458,6 +479,33 @@ mod tests {
         }
         assert!(Axis::checked(&sc, "--x", "plant.loads.ship_service_w", 1e6, 2e7, 3).is_ok());
         assert!(Axis::checked(&sc, "--y", "controllers.field.bus_voltage_ref_v", 5000.0, 6000.0, 3).is_ok());
+        let e = Axis::checked(&sc, "--x", "stepping.dt_s", 1e-4, 1e-3, 3).unwrap_err();
+        assert!(e.contains("does not step it in time"), "{e}");
+    }
+
+    /// The time step's rules do not refuse a cell: head seas at 5 ms cannot resolve a ship service
+    /// filter (the step must be at most 1.26 ms for its 25.2 Hz), yet the map of its ship service
+    /// load and filter has every cell, and a cell's eigenvalues are those of the same scenario
+    /// on a 1 ms step, bit for bit (the step does not enter the linearisation).
+    #[test]
+    fn a_linearisation_does_not_apply_the_time_steps_rules() {
+        let sc = crate::scenario::presets::preset("head-seas-ss6").unwrap();
+        assert!(sc.with_override("plant.loads.ship_service_w", "2e6").is_err(), "the step rule holds for a run");
+        let x = Axis::checked(&sc, "--x", "plant.loads.ship_service_w", 1e6, 4e6, 2).unwrap();
+        let y = Axis::checked(&sc, "--y", "plant.loads.filter_capacitance_f", 0.01, 0.04, 2).unwrap();
+        let m = map(&sc, &x, &y).unwrap();
+        assert!(m.failures.is_empty(), "{:?}", m.failures);
+        assert!(m.abscissa.iter().flatten().all(|a| a.is_some()), "{:?}", m.abscissa);
+        let run = sc
+            .with_overrides(&[
+                ("stepping.dt_s", "0.001"),
+                ("stepping.integrator", "rk4"),
+                ("stepping.hull_substeps", "1"),
+                ("plant.loads.ship_service_w", "1000000"),
+                ("plant.loads.filter_capacitance_f", "0.01"),
+            ])
+            .unwrap();
+        assert_eq!(Some(linearize(&run).unwrap().spectral_abscissa), m.abscissa[0][0]);
     }
 
     /// At 20 knots in calm water with a 2 MW ship service load on each bus (well inside its

@@ -85,7 +85,7 @@ async function compute(ctx) {
     const { summary } = await pool.run({
       kind: 'fuel-per-mile', scenario, spec, n, item: 'run',
       onStart: (k) => fold.status(`${n} runs of ${FUEL.durationS} s on ${k} worker${k > 1 ? 's' : ''}...`),
-      onProgress: (done) => fold.progress(done, n, started, 'run'),
+      onProgress: (done, _, preparing) => fold.progress(done, n, started, 'run', preparing),
     });
     show(summary);
     fold.shownKey = keyOf(inp, ask); // the inputs it was started with
