@@ -691,6 +691,10 @@ fn run_on_a_blade_table() {
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(v["propeller"]["geometry"], "custom");
     assert!(v["propeller"]["note"].as_str().unwrap().contains("four-quadrant B4-70 series scaled"), "{out}");
+    // The derived cavitation onset is said beside the generic ventilation onset.
+    let onset = v["propeller"]["cavitation_onset_h_over_r"].as_f64().unwrap();
+    assert!(onset.is_finite(), "{out}");
+    assert!(v["propeller"]["note"].as_str().unwrap().contains("12 o'clock"), "{out}");
     let bad = std::env::temp_dir().join(format!("aes_bad_blade_{}.csv", std::process::id()));
     let text = std::fs::read_to_string(table).unwrap().replace("0.50,0.4392", "0.50,0.0");
     std::fs::write(&bad, text).unwrap();

@@ -155,6 +155,13 @@ pub struct GeometryNote {
     /// (None: the run stayed in the first quadrant).
     pub rows_handed_over: usize,
     pub first_handover_s: Option<f64>,
+    /// The hub depth over tip radius below which a blade section at 12 o'clock cavitates (2D
+    /// sections, steady: `blade::cavitation`), at the run's mean first-quadrant J and shaft speed
+    /// (None: the run never turned ahead in its first quadrant, or the analysis failed) \[-\].
+    pub cavitation_onset_h_over_r: Option<f64>,
+    /// The J and shaft speed \[rev/s\] it was found at.
+    pub cavitation_at_j: Option<f64>,
+    pub cavitation_at_rev_per_s: Option<f64>,
     /// The same in words.
     pub note: String,
 }
@@ -175,6 +182,12 @@ impl GeometryNote {
         let out = |i: usize| n1[i] <= 0.0 || n2[i] <= 0.0 || j[i] < 0.0 || j[i] > h.j0;
         let rows: Vec<usize> = (0..t.len().min(j.len()).min(n1.len()).min(n2.len())).filter(|&i| out(i)).collect();
         let first = rows.first().map(|&i| t[i]);
+        // The run's mean operating point ahead, in its own first quadrant.
+        let ahead: Vec<usize> = (0..t.len().min(j.len()).min(n1.len())).filter(|&i| !out(i)).collect();
+        let mean = |c: &[f64]| ahead.iter().map(|&i| c[i]).sum::<f64>() / ahead.len().max(1) as f64;
+        let (j_mean, n_mean) = (mean(j), mean(n1) / 60.0);
+        let onset =
+            (!ahead.is_empty()).then(|| cavitation_onset(&g, scenario.propeller.diameter_m, j_mean, n_mean)).flatten();
         let place = match first {
             None => "the run stayed there".to_string(),
             Some(t0) => format!("{} recorded rows handed over, the first at t = {t0:.1} s", rows.len()),
@@ -188,14 +201,41 @@ impl GeometryNote {
             h.kt0,
             10.0 * h.kq0
         );
+        let note = match onset {
+            Some(o) if o < crate::plant::propeller_losses::DISK_AT_SURFACE_H_OVER_R => format!(
+                "{note}. Its sections at 12 o'clock do not cavitate while the disc is under water at the run's mean J = \
+                 {j_mean:.3} and {n_mean:.2} rev/s (onset h/R {o:.2}: steady 2D sections, no tip vortex)"
+            ),
+            Some(o) => format!(
+                "{note}. Its sections at 12 o'clock cavitate with the hub shallower than h/R = {o:.2} at the run's mean J = \
+                 {j_mean:.3} and {n_mean:.2} rev/s (steady 2D sections, no tip vortex); the surface-loss model's ventilation \
+                 still starts at its generic h/R {:.1}",
+                crate::plant::propeller_losses::LossParams::default().ventilation_on
+            ),
+            None => note,
+        };
         Some(GeometryNote {
             geometry: spec.name.clone(),
             handover: h,
             rows_handed_over: rows.len(),
             first_handover_s: first,
+            cavitation_onset_h_over_r: onset,
+            cavitation_at_j: onset.map(|_| j_mean),
+            cavitation_at_rev_per_s: onset.map(|_| n_mean),
             note,
         })
     }
+}
+
+/// The h/R below which `g`'s sections cavitate at 12 o'clock, at advance ratio `j` and `n`
+/// \[rev/s\] in sea water (the lifting line's section loads on the sections' buckets).
+fn cavitation_onset(g: &crate::plant::blade::BladeGeometry, diameter_m: f64, j: f64, n: f64) -> Option<f64> {
+    use crate::plant::blade::{analyse, cavitation, Flow};
+    let a = analyse(g, j, &Flow::sea_water(diameter_m, n)).ok()?;
+    let flows: Vec<cavitation::SectionFlow> = a.sections.iter().map(cavitation::SectionFlow::from).collect();
+    let b = cavitation::PropellerBuckets::cached(g, diameter_m).ok()?;
+    let h = b.onset_h_over_r(&cavitation::Water::default(), &flows);
+    h.is_finite().then_some(h)
 }
 
 fn ratio(a: f64, b: f64) -> f64 {

@@ -109,6 +109,30 @@ impl PropellerBuckets {
         Ok(PropellerBuckets { r_r, buckets, radius_m: 0.5 * diameter_m })
     }
 
+    /// The buckets of `geometry` at `diameter_m`, remembered (a run's summary, its Monte Carlo
+    /// trials and the page's repeated runs build them once: about 20 ms a section).
+    pub fn cached(geometry: &BladeGeometry, diameter_m: f64) -> Result<std::sync::Arc<PropellerBuckets>, String> {
+        use std::sync::{Arc, Mutex, OnceLock};
+        type Cache = Mutex<Vec<((BladeGeometry, u64), Arc<PropellerBuckets>)>>;
+        static CACHE: OnceLock<Cache> = OnceLock::new();
+        const MAX: usize = 8;
+        let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
+        let key = (geometry.clone(), diameter_m.to_bits());
+        if let Ok(c) = cache.lock() {
+            if let Some((_, b)) = c.iter().find(|(k, _)| *k == key) {
+                return Ok(b.clone());
+            }
+        }
+        let b = Arc::new(PropellerBuckets::new(geometry, diameter_m)?);
+        if let Ok(mut c) = cache.lock() {
+            if c.len() >= MAX {
+                c.remove(0);
+            }
+            c.push((key, b.clone()));
+        }
+        Ok(b)
+    }
+
     /// The bucket nearest `r_r` (the flows are given at the table's radii).
     fn bucket(&self, r_r: f64) -> &Bucket {
         let k = (0..self.r_r.len())
