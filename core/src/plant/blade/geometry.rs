@@ -38,13 +38,13 @@ pub struct Row {
 
 /// The allowed range of each column, in [`COLUMNS`]' order: a wider table is refused, not clamped.
 pub const RANGES: [(f64, f64); 7] = [
-    (0.05, 1.0),  // r/R
-    (0.0, 1.5),   // c/D: 0 only at the tip (checked apart)
-    (0.2, 3.0),   // P/D: from a slow tug to a fast racing screw
-    (-0.1, 0.15), // f0/c
-    (0.0, 0.4),   // t0/c
-    (-90.0, 90.0),
-    (-0.5, 0.5),
+    (0.05, 1.0),   // r/R: from inside the smallest hub to the tip
+    (0.0, 1.5),    // c/D: 0 only at the tip (checked apart); wide-bladed screws stay under 0.6
+    (0.2, 3.0),    // P/D: from a slow tug to a fast racing screw
+    (-0.1, 0.15),  // f0/c: a thin section's mean line; past 0.1 it is no propeller section
+    (0.0, 0.4),    // t0/c: a root section is at most about 0.3 thick
+    (-90.0, 90.0), // skew: a blade cannot sweep past the radial line at a right angle
+    (-0.5, 0.5),   // rake/D: beyond half a diameter the blade is no longer a disc
 ];
 
 impl Row {
