@@ -393,6 +393,19 @@ impl crate::params::CrossCheck for Scenario {
                 "Tables 5.1 and 5.5's ship (L 180 m) goes with the thesis' hull forces: hull.forces = \"table_2_3\"",
             );
         }
+        if self.seakeeping.ventilation_onset == crate::plant::propeller_losses::VentilationOnset::Derived
+            && self.propeller.model != PropellerModelKind::Geometry
+        {
+            v.fail(
+                "seakeeping.ventilation_onset",
+                "derived",
+                format!(
+                    "needs propeller.model = \"geometry\" (the onset comes from the blades' sections); propeller.model \
+                     is {}",
+                    serde_json::to_string(&self.propeller.model).unwrap_or_default()
+                ),
+            );
+        }
         self.validate_steps(v);
         self.validate_work(v);
         self.validate_bus_steps(v);

@@ -9,6 +9,7 @@ pub mod linearize;
 mod loops;
 pub mod lqg;
 pub mod plant;
+pub mod propeller_cavitation;
 mod record;
 pub mod seaway;
 mod steady;
@@ -291,6 +292,8 @@ impl Simulation {
         let mut plant = Plant::new(scenario).map_err(SimError::Setup)?;
         let hub0 = scenario.ship_hull().map_err(SimError::Setup)?.hub_depth_m;
         plant.extra_resistance = extra;
+        // The ventilation loop: generic, or derived from the blades at the run's calm point.
+        let losses = propeller_cavitation::onset(scenario, &plant).map_err(SimError::Setup)?.losses;
         let clock = Clock::new(scenario);
         let trace = Trace::with_capacity(clock.rows());
 
@@ -342,7 +345,7 @@ impl Simulation {
             heading_hold: heading_hold::HeadingHold::default(),
             sea: seaway::Seaway::new(scenario).map_err(SimError::Setup)?,
             vent: [Ventilation::default(); N_SHAFTS],
-            losses: scenario.seakeeping.loss_params(),
+            losses,
             last_beta: [(1.0, 1.0); N_SHAFTS],
             hub0,
             h_over_r: [2.0 * hub0 / scenario.propeller.diameter_m; N_SHAFTS],

@@ -162,6 +162,18 @@ pub struct GeometryNote {
     /// The J and shaft speed \[rev/s\] it was found at.
     pub cavitation_at_j: Option<f64>,
     pub cavitation_at_rev_per_s: Option<f64>,
+    /// The ventilation loop the run used (`seakeeping.ventilation_onset`) and the h/R it started
+    /// at \[-\]; with "derived", the blades' cavitation onset h/R it came from and the calm point
+    /// (the run's fastest ordered speed) it was found at.
+    pub ventilation_onset: crate::plant::propeller_losses::VentilationOnset,
+    pub ventilation_on_h_over_r: f64,
+    pub generic_ventilation_on_h_over_r: f64,
+    pub derived_from_cavitation_h_over_r: Option<f64>,
+    pub derived_at: Option<crate::sim::propeller_cavitation::CalmPoint>,
+    /// The lowest ship speed at which a section at 12 o'clock cavitates in calm water, the shaft
+    /// at the ship's self-propulsion speed and the hub at the scenario's calm-water depth (None:
+    /// none up to 40 kn, or the analysis failed).
+    pub calm_inception: Option<crate::sim::propeller_cavitation::Inception>,
     /// The same in words.
     pub note: String,
 }
@@ -169,6 +181,7 @@ pub struct GeometryNote {
 impl GeometryNote {
     fn of(scenario: &Scenario, trace: &Trace) -> Option<GeometryNote> {
         use crate::scenario::PropellerModelKind;
+        use crate::sim::propeller_cavitation as pc;
         let spec = scenario
             .propeller
             .geometry
@@ -186,8 +199,19 @@ impl GeometryNote {
         let ahead: Vec<usize> = (0..t.len().min(j.len()).min(n1.len())).filter(|&i| !out(i)).collect();
         let mean = |c: &[f64]| ahead.iter().map(|&i| c[i]).sum::<f64>() / ahead.len().max(1) as f64;
         let (j_mean, n_mean) = (mean(j), mean(n1) / 60.0);
-        let onset =
-            (!ahead.is_empty()).then(|| cavitation_onset(&g, scenario.propeller.diameter_m, j_mean, n_mean)).flatten();
+        let u_mean = mean(trace.get(Signal::ShipSpeedKn));
+        let onset = (!ahead.is_empty())
+            .then(|| {
+                let p = pc::CalmPoint { ship_speed_kn: u_mean, rev_per_s: n_mean, j: j_mean };
+                pc::check_at(&g, scenario.propeller.diameter_m, p, 0.0).ok().map(|c| c.onset_h_over_r)
+            })
+            .flatten()
+            .filter(|h| h.is_finite());
+        let plant = crate::sim::plant::Plant::new(scenario).ok();
+        let used = plant.as_ref().and_then(|p| pc::onset(scenario, p).ok());
+        let inception = plant.as_ref().and_then(|p| pc::scenario_inception(scenario, p).ok().flatten());
+        let generic_on = scenario.seakeeping.ventilation_on_h_over_r;
+        let on = used.map_or(generic_on, |o| o.losses.ventilation_on);
         let place = match first {
             None => "the run stayed there".to_string(),
             Some(t0) => format!("{} recorded rows handed over, the first at t = {t0:.1} s", rows.len()),
@@ -208,11 +232,25 @@ impl GeometryNote {
             ),
             Some(o) => format!(
                 "{note}. Its sections at 12 o'clock cavitate with the hub shallower than h/R = {o:.2} at the run's mean J = \
-                 {j_mean:.3} and {n_mean:.2} rev/s (steady 2D sections, no tip vortex); the surface-loss model's ventilation \
-                 still starts at its generic h/R {:.1}",
-                crate::plant::propeller_losses::LossParams::default().ventilation_on
+                 {j_mean:.3} and {n_mean:.2} rev/s (steady 2D sections, no tip vortex)"
             ),
             None => note,
+        };
+        let note = match used.and_then(|o| o.at.zip(o.cavitation_h_over_r)) {
+            Some((p, h)) => format!(
+                "{note}; ventilation starts at the derived h/R {on:.2} (generic {generic_on:.2}): the blades' cavitation \
+                 onset h/R {h:.2} at {} held between 1 (tips at the surface) and the generic onset",
+                pc::describe(&p)
+            ),
+            None => format!("{note}; ventilation starts at the generic h/R {on:.2}"),
+        };
+        let note = match &inception {
+            Some(i) => format!(
+                "{note}. In calm water a section cavitates from {} with the hub {:.2} m deep",
+                pc::describe(&i.at),
+                i.hub_depth_m
+            ),
+            None => format!("{note}. In calm water no section cavitates up to 40 kn"),
         };
         Some(GeometryNote {
             geometry: spec.name.clone(),
@@ -222,20 +260,15 @@ impl GeometryNote {
             cavitation_onset_h_over_r: onset,
             cavitation_at_j: onset.map(|_| j_mean),
             cavitation_at_rev_per_s: onset.map(|_| n_mean),
+            ventilation_onset: scenario.seakeeping.ventilation_onset,
+            ventilation_on_h_over_r: on,
+            generic_ventilation_on_h_over_r: generic_on,
+            derived_from_cavitation_h_over_r: used.and_then(|o| o.cavitation_h_over_r),
+            derived_at: used.and_then(|o| o.at),
+            calm_inception: inception,
             note,
         })
     }
-}
-
-/// The h/R below which `g`'s sections cavitate at 12 o'clock, at advance ratio `j` and `n`
-/// \[rev/s\] in sea water (the lifting line's section loads on the sections' buckets).
-fn cavitation_onset(g: &crate::plant::blade::BladeGeometry, diameter_m: f64, j: f64, n: f64) -> Option<f64> {
-    use crate::plant::blade::{analyse, cavitation, Flow};
-    let a = analyse(g, j, &Flow::sea_water(diameter_m, n)).ok()?;
-    let flows: Vec<cavitation::SectionFlow> = a.sections.iter().map(cavitation::SectionFlow::from).collect();
-    let b = cavitation::PropellerBuckets::cached(g, diameter_m).ok()?;
-    let h = b.onset_h_over_r(&cavitation::Water::default(), &flows);
-    h.is_finite().then_some(h)
 }
 
 fn ratio(a: f64, b: f64) -> f64 {

@@ -29,6 +29,14 @@ impl Default for Water {
     }
 }
 
+impl Water {
+    /// The water of a lifting-line flow: its density, with the vapour pressure at 15 deg C
+    /// (1 705 Pa for fresh and sea water alike to the precision of ITTC 7.5-02-01-03's table).
+    pub fn of(flow: &super::Flow) -> Water {
+        Water { rho_kg_m3: flow.density_kg_m3, ..Water::default() }
+    }
+}
+
 /// The flow at one blade section.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SectionFlow {
@@ -67,6 +75,9 @@ pub struct SectionCavitation {
     pub min_cp: MinPressure,
     /// sigma - max(-Cp_min): negative where the section cavitates \[-\].
     pub margin: f64,
+    /// Whether a 2D section describes this radius (inside the outermost row with a chord);
+    /// outboard of it the tip vortex rules, and the margin only carries the tip's angles.
+    pub sectioned: bool,
     /// The bucket at this sigma: the angles of attack \[rad\] between which neither side
     /// cavitates (face cavitation below the first, back cavitation above the second); None when
     /// sigma is below the bucket's bottom.
@@ -161,6 +172,7 @@ impl PropellerBuckets {
                     sigma,
                     min_cp,
                     margin: sigma - min_cp.both(),
+                    sectioned: self.sectioned(f.r_r),
                     bucket_rad: bucket_edges(b, sigma),
                 }
             })
@@ -199,6 +211,47 @@ impl PropellerBuckets {
                 (cp > 0.0 && sigma_ref > 0.0).then(|| n_ref_hz * (sigma_ref / cp).sqrt())
             })
             .min_by(f64::total_cmp)
+    }
+}
+
+/// The cavitation check of one open-water point: which radii cavitate with the hub at a depth.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointCavitation {
+    /// Advance ratio J and shaft speed n \[rev/s\] of the point.
+    pub j: f64,
+    pub rev_per_s: f64,
+    /// Hub depth below the calm surface \[m\].
+    pub hub_depth_m: f64,
+    /// Each control point of the lifting line, root to tip.
+    pub sections: Vec<SectionCavitation>,
+    /// The sectioned radii r/R that cavitate (the tip's points are not among them).
+    pub cavitating_r_r: Vec<f64>,
+    /// The least margin over the sectioned radii \[-\]: negative when one cavitates.
+    pub worst_margin: f64,
+    /// The hub depth over tip radius h/R at which the first sectioned radius cavitates \[-\].
+    pub onset_h_over_r: f64,
+}
+
+/// The cavitation check of the lifting line's `analysis` (at `rev_per_s` \[rev/s\]) on `buckets`,
+/// the blade at 12 o'clock and the hub `hub_depth_m` \[m\] deep, in `water`.
+pub fn check_point(
+    buckets: &PropellerBuckets,
+    water: &Water,
+    analysis: &super::Analysis,
+    rev_per_s: f64,
+    hub_depth_m: f64,
+) -> PointCavitation {
+    let flows: Vec<SectionFlow> = analysis.sections.iter().map(SectionFlow::from).collect();
+    let sections = buckets.sections(water, &flows, hub_depth_m);
+    let inside = || sections.iter().filter(|c| c.sectioned);
+    PointCavitation {
+        j: analysis.j,
+        rev_per_s,
+        hub_depth_m,
+        cavitating_r_r: inside().filter(|c| c.cavitates()).map(|c| c.r_r).collect(),
+        worst_margin: inside().map(|c| c.margin).fold(f64::INFINITY, f64::min),
+        onset_h_over_r: buckets.onset_h_over_r(water, &flows),
+        sections,
     }
 }
 

@@ -59,6 +59,15 @@ crate::params! {
             label: "Torque loss exponent m", unit: "-", range: 0.1..=2.0, source: "ch. 2.3: 0.85",
             help: "beta_Q = beta_T^m.",
         },
+        /// Generic: the two numbers above. Derived (`propeller.model = "geometry"` only): the loop
+        /// starts where the blades' own cavitation at 12 o'clock, at the run's calm-water point,
+        /// says a low-pressure region reaches the surface, between h/R 1 (the tips at the surface)
+        /// and `ventilation_on_h_over_r`; the band is kept. Why not the cavitation depth itself:
+        /// `propeller_losses::VentilationOnset`.
+        pub ventilation_onset: crate::plant::propeller_losses::VentilationOnset = Default::default() => {
+            label: "Ventilation onset", source: "ch. 2.3 (generic); ch. 3.2.2 and our criterion (derived, docs/cavitation.md)",
+            help: "Generic: the h/R above. Derived (propeller.model = geometry): from the blades' cavitation at 12 o'clock at the run's speed, between 1 (tips at the surface) and the generic onset.",
+        },
         /// Quasi-steady speed and heading, ch. 2.5.4.
         pub rao_refresh_s: f64 = 0.25 => {
             label: "RAO look-up interval", unit: "s", range: 1.0e-5..=10.0, source: "our choice (tests/multirate.rs)",
