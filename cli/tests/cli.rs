@@ -680,6 +680,70 @@ fn propeller_from_a_blade_table() {
     }
 }
 
+/// `propeller --depth-m`: DTMB 4119 at 4.5 m and 180 rpm in sea water, J = 0.833, hub 6 m deep:
+/// the cavitation check names the radii that cavitate (some do, some do not), and sigma at one
+/// radius is the hand computation (p_atm + rho g (h - r) - p_v) / (0.5 rho V*^2) with the section's
+/// own V* (from `at_j`), to 1e-9; the margin is sigma - max(-Cp_min). A scenario gives its
+/// calm-water inception speed; bad flags are refused by name, value and range.
+#[test]
+fn propeller_cavitation_margins() {
+    let csv = concat!(env!("CARGO_MANIFEST_DIR"), "/../core/data/dtmb4119_geometry.csv");
+    let base = ["propeller", csv, "--blades", "3", "--hub-ratio", "0.2", "--diameter-m", "4.5", "--rpm", "180"];
+    let (ok, out, err) = aes_sim(&[&base[..], &["--water", "sea", "--at-j", "0.833", "--depth-m", "6"]].concat());
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let point = &v["cavitation"]["points"][0];
+    let sections = point["sections"].as_array().unwrap();
+    let inside: Vec<&serde_json::Value> = sections.iter().filter(|s| s["sectioned"] == true).collect();
+    let cav = point["cavitating_r_r"].as_array().unwrap();
+    assert!(!cav.is_empty() && cav.len() < inside.len(), "some radii cavitate, some do not: {cav:?}");
+    for s in &inside {
+        let m = s["margin"].as_f64().unwrap();
+        assert_eq!(s["cavitates"].as_bool().unwrap(), m < 0.0);
+        let cp = s["minus_cp_min_back"].as_f64().unwrap().max(s["minus_cp_min_face"].as_f64().unwrap());
+        assert!((m - (s["sigma"].as_f64().unwrap() - cp)).abs() < 1e-12);
+    }
+    // sigma by hand at the tenth control point: sea water of the flow (rho 1026.0), p_atm 101 325 Pa,
+    // p_v 1 705 Pa, g 9.80665 m/s^2, r = r/R x 2.25 m.
+    let k = 10;
+    let (r_r, v_star) =
+        (v["at_j"]["sections"][k]["r_r"].as_f64().unwrap(), v["at_j"]["sections"][k]["v_star_m_s"].as_f64().unwrap());
+    let hand = (101_325.0 + 1026.0 * 9.80665 * (6.0 - r_r * 2.25) - 1_705.0) / (0.5 * 1026.0 * v_star * v_star);
+    let sigma = sections[k]["sigma"].as_f64().unwrap();
+    println!("r/R {r_r:.4}: V* {v_star:.3} m/s, sigma {sigma:.6} (hand {hand:.6}); cavitating r/R {cav:?}");
+    assert!((sigma - hand).abs() < 1e-9 * hand, "{sigma} vs {hand}");
+    let (ok, md, _) =
+        aes_sim(&[&base[..], &["--water", "sea", "--at-j", "0.833", "--depth-m", "6", "--markdown"]].concat());
+    assert!(ok && md.contains("| J | worst margin | onset h/R | cavitating r/R |") && md.contains("(tip)"), "{md}");
+    // Deep enough, nothing cavitates.
+    let (ok, out, _) = aes_sim(&[&base[..], &["--water", "sea", "--at-j", "0.833", "--depth-m", "40"]].concat());
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert!(ok && v["cavitation"]["points"][0]["cavitating_r_r"].as_array().unwrap().is_empty(), "{out}");
+    // A scenario: its calm-water inception.
+    let (ok, out, err) = aes_sim(&[
+        "propeller",
+        "preset:head-seas-ss6",
+        "--set",
+        "propeller.geometry={\"name\":\"dtmb4119\"}",
+        "--j",
+        "0.8:0.8:1",
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let kn = v["scenario"]["calm_inception"]["at"]["ship_speed_kn"].as_f64().unwrap();
+    assert!(kn > 1.0 && kn < 40.0, "{out}");
+    for (args, said) in [
+        (vec!["--depth-m", "1"], "--depth-m: 1 is outside 2.25..=1000"),
+        (vec!["--depth-m", "nan"], "--depth-m: NaN is outside"),
+        (vec!["--rpm", "1e9"], "--rpm: 1000000000 is outside 6..=12000"),
+    ] {
+        let (ok, _, err) = aes_sim(&[&base[..8], &args[..]].concat());
+        assert!(!ok && err.contains(said), "{err}");
+    }
+    let (ok, _, err) = aes_sim(&["propeller", "preset:startup", "--blades", "3"]);
+    assert!(!ok && err.contains("--blades: a scenario's geometry has its own"), "{err}");
+}
+
 /// `run --propeller-csv`: DTMB 4119's table runs on the geometry model and the summary names the
 /// hand-over; a chord of zero inside the blade is refused by row and column, exit status 1.
 #[test]
