@@ -1,4 +1,5 @@
-//! `aes-sim bench`: realtime factor of a preset, or the time to build the RAO tables.
+//! `aes-sim bench`: realtime factor of a preset, the time to build the RAO tables, or the time
+//! of a propeller's open-water curve from its blades.
 
 use crate::common::{emit_json, load, read_bounded, shorten, Failure, Threads};
 use aes_core::sea::seakeeping::strip::{default_omega_grid, Ship};
@@ -9,7 +10,7 @@ use std::time::Instant;
 // The command line of `aes-sim bench`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// Preset to time.
+    /// Preset to time, `seakeeping` (the RAO tables) or `propeller` (DTMB 4119's open-water curve).
     #[arg(default_value = "startup")]
     name: String,
     /// Repetitions (the best is reported).
@@ -31,6 +32,8 @@ pub fn run(Args { name, repeat, hull, sets }: Args) -> Result<(), Failure> {
     }
     if name == "seakeeping" {
         seakeeping(repeat, hull, sets)
+    } else if name == "propeller" {
+        propeller(repeat)
     } else {
         preset(name, repeat, sets)
     }
@@ -139,6 +142,65 @@ fn seakeeping(repeat: u32, hull: Option<String>, sets: Vec<String>) -> Result<()
         });
     }
     emit_json(&out)?;
+    Ok(())
+}
+
+/// `aes-sim bench propeller`: DTMB 4119's open-water curve at 25 advance ratios (what `aes-sim
+/// propeller` computes by default; issue 54's target is under 50 ms natively), and beside it
+/// the other parts a propeller analysis may ask for: the sections' cavitation buckets, the
+/// margins at the 25 points, and a run's first-quadrant table. Best of `repeat` each.
+fn propeller(repeat: u32) -> Result<(), Failure> {
+    use aes_core::plant::blade::{self, cavitation};
+    let spec = aes_core::plant::propeller_geometry::GeometrySpec { name: "dtmb4119".into(), ..Default::default() };
+    let g = spec
+        .resolve(&aes_core::plant::propeller::PropellerParams::default().b_series_of())
+        .map_err(|(f, e)| format!("propeller.geometry.{f}: {e}"))?;
+    let flow = blade::Flow::fresh_water(0.3048, 10.0);
+    let js: Vec<f64> = (0..25).map(|k| 1.2 * k as f64 / 24.0).collect();
+    let best = |f: &mut dyn FnMut() -> Result<(), String>| -> Result<f64, String> {
+        let mut b = f64::INFINITY;
+        for _ in 0..repeat {
+            let t0 = Instant::now();
+            f()?;
+            b = b.min(t0.elapsed().as_secs_f64());
+        }
+        Ok(b)
+    };
+    let mut curve = Vec::new();
+    let curve_s = best(&mut || {
+        curve = blade::open_water(&g, &js, &flow)?;
+        Ok(())
+    })?;
+    let mut buckets = None;
+    let buckets_s = best(&mut || {
+        buckets = Some(cavitation::PropellerBuckets::new(&g, flow.diameter_m)?);
+        Ok(())
+    })?;
+    let b = buckets.ok_or("no buckets")?;
+    let w = cavitation::Water::of(&flow);
+    let margins_s = best(&mut || {
+        for a in &curve {
+            std::hint::black_box(cavitation::check_point(&b, &w, a, flow.rev_per_s, 1.0));
+        }
+        Ok(())
+    })?;
+    let table_s = best(&mut || {
+        let curves = aes_core::plant::propeller_table::lifting_line_curves(blade::Flow::sea_water(4.5, 5.0));
+        std::hint::black_box(aes_core::plant::propeller_table::GeometryPropeller::build(&g, &curves)?);
+        Ok(())
+    })?;
+    emit_json(&serde_json::json!({
+        "workload": "DTMB 4119 (D 0.3048 m, 10 rev/s, fresh water): the lifting line at 25 advance ratios, J 0 to 1.2",
+        "open_water_25_j_s": curve_s,
+        "converged": curve.iter().filter(|a| a.converged).count(),
+        // Only with --depth-m (or a scenario): a panel solution per section.
+        "cavitation_buckets_s": buckets_s,
+        "buckets": b.buckets.len(),
+        "margins_25_j_s": margins_s,
+        // A run on the geometry model builds this once per geometry and flow.
+        "run_table_s": table_s,
+        "repeat": repeat,
+    }))?;
     Ok(())
 }
 
