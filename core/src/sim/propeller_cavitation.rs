@@ -135,10 +135,45 @@ pub fn calm_inception(
     plant: &Plant,
     hub_depth_m: f64,
 ) -> Result<Option<Inception>, String> {
+    // Remembered: a run's summary, its Monte Carlo trials and the page's repeated runs ask again.
+    // The search is deterministic, and depends on the plant only through the calm points it
+    // visits; an entry is reused when the same blades, diameter and depth give the same points
+    // (bit for bit) at the speeds it visited.
+    type Entry = ((BladeGeometry, u64, u64), Vec<CalmPoint>, Option<Inception>);
+    static CACHE: std::sync::OnceLock<std::sync::Mutex<Vec<Entry>>> = std::sync::OnceLock::new();
+    const MAX: usize = 8;
+    let cache = CACHE.get_or_init(Default::default);
+    let key = (g.clone(), diameter_m.to_bits(), hub_depth_m.to_bits());
+    let same = |visited: &[CalmPoint]| visited.iter().all(|p| calm_point(plant, p.ship_speed_kn) == *p);
+    if let Ok(c) = cache.lock() {
+        if let Some((_, _, r)) = c.iter().find(|(k, v, _)| *k == key && same(v)) {
+            return Ok(*r);
+        }
+    }
+    let mut visited = Vec::new();
+    let r = search_inception(g, diameter_m, plant, hub_depth_m, &mut visited)?;
+    if let Ok(mut c) = cache.lock() {
+        if c.len() >= MAX {
+            c.remove(0);
+        }
+        c.push((key, visited, r));
+    }
+    Ok(r)
+}
+
+/// `calm_inception`'s fixed point, noting the calm points it visits in `visited`.
+fn search_inception(
+    g: &BladeGeometry,
+    diameter_m: f64,
+    plant: &Plant,
+    hub_depth_m: f64,
+    visited: &mut Vec<CalmPoint>,
+) -> Result<Option<Inception>, String> {
     let b = PropellerBuckets::cached(g, diameter_m)?;
     let mut u = 15.0;
     for _ in 0..40 {
         let p = calm_point(plant, u);
+        visited.push(p);
         let flow = Flow::sea_water(diameter_m, p.rev_per_s);
         let a = analyse(g, p.j, &flow)?;
         let flows: Vec<_> = a.sections.iter().map(crate::plant::blade::cavitation::SectionFlow::from).collect();
@@ -152,6 +187,7 @@ pub fn calm_inception(
                 return Ok(None);
             }
             let at = calm_point(plant, next);
+            visited.push(at);
             let c = check_at(g, diameter_m, at, hub_depth_m)?;
             let first =
                 c.sections.iter().filter(|s| s.sectioned).min_by(|x, y| x.margin.total_cmp(&y.margin)).map(|s| s.r_r);
@@ -274,5 +310,13 @@ mod tests {
             assert!(u > last && u < FASTEST_KN, "{u} after {last}");
             last = u;
         }
+        // Remembered for the same plant; another speed-to-rpm relation (more resistance, so more
+        // rpm at each speed) is not given the remembered answer: it incepts slower.
+        let again = calm_inception(&g, d, &plant, 3.5).unwrap().unwrap();
+        let mut heavier = plant.clone();
+        heavier.extra_resistance = 2.0e5;
+        let other = calm_inception(&g, d, &heavier, 3.5).unwrap().unwrap();
+        assert_eq!(again, calm_inception(&g, d, &plant, 3.5).unwrap().unwrap());
+        assert!(other.at.ship_speed_kn < again.at.ship_speed_kn, "{other:?} vs {again:?}");
     }
 }
