@@ -166,6 +166,13 @@ fn scenario(a: &Args) -> Result<Subject, String> {
     };
     let flow = Flow::sea_water(sc.propeller.diameter_m, n);
     flow.check().map_err(|e| format!("--rpm: the shaft speed's {e}"))?;
+    if a.depth_m.is_none() && depth < 0.5 * flow.diameter_m {
+        return Err(format!(
+            "the scenario's calm-water hub depth {depth:.2} m (ship.hull) is less than the propeller's radius {} m: the \
+             blade at 12 o'clock would be out of the water; give --depth-m",
+            0.5 * flow.diameter_m
+        ));
+    }
     check_depth(depth, flow.diameter_m)?;
     let inception = pc::calm_inception(&g, sc.propeller.diameter_m, &plant, depth)?;
     Ok(Subject {
