@@ -172,6 +172,8 @@ pub struct Simulation {
     sea: Option<seaway::Seaway>,
     vent: [Ventilation; N_SHAFTS],
     losses: LossParams,
+    /// Where the ventilation loop starts and why (`seakeeping.ventilation_onset`), for the summary.
+    onset: propeller_cavitation::Onset,
     /// Each propeller's last (beta_T, beta_Q).
     last_beta: [(f64, f64); N_SHAFTS],
     /// Calm-water hub depth \[m\] (the hull's) and each shaft's hub depth over the propeller
@@ -293,7 +295,7 @@ impl Simulation {
         let hub0 = scenario.ship_hull().map_err(SimError::Setup)?.hub_depth_m;
         plant.extra_resistance = extra;
         // The ventilation loop: generic, or derived from the blades at the run's calm point.
-        let losses = propeller_cavitation::onset(scenario, &plant).map_err(SimError::Setup)?.losses;
+        let onset = propeller_cavitation::onset(scenario, &plant).map_err(SimError::Setup)?;
         let clock = Clock::new(scenario);
         let trace = Trace::with_capacity(clock.rows());
 
@@ -345,7 +347,8 @@ impl Simulation {
             heading_hold: heading_hold::HeadingHold::default(),
             sea: seaway::Seaway::new(scenario).map_err(SimError::Setup)?,
             vent: [Ventilation::default(); N_SHAFTS],
-            losses,
+            losses: onset.losses,
+            onset,
             last_beta: [(1.0, 1.0); N_SHAFTS],
             hub0,
             h_over_r: [2.0 * hub0 / scenario.propeller.diameter_m; N_SHAFTS],
@@ -840,6 +843,8 @@ impl Simulation {
             stored_change,
             std::mem::take(&mut self.warnings),
         );
+        let summary =
+            Summary { propeller: summary::GeometryNote::of(&self.scenario, &self.trace, &self.onset), ..summary };
         RunResult { trace: self.trace, summary }
     }
 }

@@ -179,7 +179,12 @@ pub struct GeometryNote {
 }
 
 impl GeometryNote {
-    fn of(scenario: &Scenario, trace: &Trace) -> Option<GeometryNote> {
+    /// The note of a run of `scenario` that recorded `trace` with the ventilation onset `used`.
+    pub(crate) fn of(
+        scenario: &Scenario,
+        trace: &Trace,
+        used: &crate::sim::propeller_cavitation::Onset,
+    ) -> Option<GeometryNote> {
         use crate::scenario::PropellerModelKind;
         use crate::sim::propeller_cavitation as pc;
         let spec = scenario
@@ -207,11 +212,11 @@ impl GeometryNote {
             })
             .flatten()
             .filter(|h| h.is_finite());
+        // Calm water: the plant without the run's added resistance.
         let plant = crate::sim::plant::Plant::new(scenario).ok();
-        let used = plant.as_ref().and_then(|p| pc::onset(scenario, p).ok());
         let inception = plant.as_ref().and_then(|p| pc::scenario_inception(scenario, p).ok().flatten());
         let generic_on = scenario.seakeeping.ventilation_on_h_over_r;
-        let on = used.map_or(generic_on, |o| o.losses.ventilation_on);
+        let on = used.losses.ventilation_on;
         let place = match first {
             None => "the run stayed there".to_string(),
             Some(t0) => format!("{} recorded rows handed over, the first at t = {t0:.1} s", rows.len()),
@@ -236,7 +241,7 @@ impl GeometryNote {
             ),
             None => note,
         };
-        let note = match used.and_then(|o| o.at.zip(o.cavitation_h_over_r)) {
+        let note = match used.at.zip(used.cavitation_h_over_r) {
             Some((p, h)) => format!(
                 "{note}; ventilation starts at the derived h/R {on:.2} (generic {generic_on:.2}): the blades' cavitation \
                  onset h/R {h:.2} at {} held between 1 (tips at the surface) and the generic onset",
@@ -260,11 +265,11 @@ impl GeometryNote {
             cavitation_onset_h_over_r: onset,
             cavitation_at_j: onset.map(|_| j_mean),
             cavitation_at_rev_per_s: onset.map(|_| n_mean),
-            ventilation_onset: scenario.seakeeping.ventilation_onset,
+            ventilation_onset: used.kind,
             ventilation_on_h_over_r: on,
             generic_ventilation_on_h_over_r: generic_on,
-            derived_from_cavitation_h_over_r: used.and_then(|o| o.cavitation_h_over_r),
-            derived_at: used.and_then(|o| o.at),
+            derived_from_cavitation_h_over_r: used.cavitation_h_over_r,
+            derived_at: used.at,
             calm_inception: inception,
             note,
         })
@@ -363,7 +368,8 @@ impl Summary {
                 relative_residual: ratio(residual, e(Energy::Turbine)),
             },
             warnings,
-            propeller: GeometryNote::of(scenario, trace),
+            // Set by the run, which knows the ventilation onset it used (`GeometryNote::of`).
+            propeller: None,
         }
     }
 
