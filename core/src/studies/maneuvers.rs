@@ -1,7 +1,8 @@
 //! Standard maneuvers of a scenario's ship, as a trials booklet gives them (IMO resolution
 //! MSC.137(76), "Standards for ship manoeuvrability", and its explanatory notes MSC/Circ.1053):
 //! the 35 degree turning circle, the 10/10 and 20/20 zig-zags with the initial turning ability, a
-//! coasting stop, and a static drift and pure yaw table of the hull's own forces, the way captive
+//! coasting stop, the full-astern stopping test (`studies::stopping`, through the whole drive
+//! train), and a static drift and pure yaw table of the hull's own forces, the way captive
 //! model tests are reported.
 //!
 //! The hull moves under the scenario's maneuvering model with its propellers held at the shaft
@@ -103,6 +104,11 @@ pub struct Booklet {
     pub zigzag_10: ZigZag,
     pub zigzag_20: ZigZag,
     pub coasting: Coasting,
+    /// The full-astern stopping test (the drive train simulated: `studies::stopping`), or None
+    /// and why it could not run (Table 2.3's hull holds ahead only).
+    pub stopping: Option<crate::studies::stopping::Stopping>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stopping_refused: Option<String>,
     pub static_drift: Vec<CaptiveRow>,
     pub pure_yaw: Vec<CaptiveRow>,
     pub criteria: Vec<Criterion>,
@@ -256,6 +262,7 @@ pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
     let end = coast[coast.len() - 1];
     let coasting = Coasting { to_kn: STOPPED_KN, track_reach_m: end.x_m, time_s: end.t_s };
     let (static_drift, pure_yaw) = captive(&trial, sc)?;
+    let stopping = crate::studies::stopping::stopping_test(sc, approach_kn, l);
     let l_over_v = l / u0;
     let (first_limit, second_limit) = zigzag_10_limits(l_over_v);
     let crit = |name: &str, value: f64, limit: f64, unit: &str| Criterion {
@@ -265,7 +272,7 @@ pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
         unit: unit.into(),
         pass: value <= limit,
     };
-    let criteria = vec![
+    let mut criteria = vec![
         crit("turning ability: advance", turning.advance_m / l, 4.5, "L"),
         crit("turning ability: tactical diameter", turning.tactical_diameter_m / l, 5.0, "L"),
         crit(
@@ -278,6 +285,18 @@ pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
         crit("yaw checking: 10/10 second overshoot", zigzag_10.second_overshoot_deg, second_limit, "deg"),
         crit("yaw checking: 20/20 first overshoot", zigzag_20.first_overshoot_deg, 25.0, "deg"),
     ];
+    criteria.extend(stopping.as_ref().ok().map(|s| {
+        use crate::studies::stopping::{IMO_TRACK_REACH_ALLOWED_L, IMO_TRACK_REACH_L};
+        let name = format!(
+            "stopping ability: track reach in the full-astern test (naval ship: a reference; up to \
+             {IMO_TRACK_REACH_ALLOWED_L} L may be allowed)"
+        );
+        crit(&name, s.track_reach_l, IMO_TRACK_REACH_L, "L")
+    }));
+    let (stopping, stopping_refused) = match stopping {
+        Ok(s) => (Some(s), None),
+        Err(e) => (None, Some(e)),
+    };
     Ok(Booklet {
         scenario: sc.name.clone(),
         model: format!("{:?}", sc.hull.forces),
@@ -288,6 +307,8 @@ pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
         zigzag_10,
         zigzag_20,
         coasting,
+        stopping,
+        stopping_refused,
         static_drift,
         pure_yaw,
         criteria,
