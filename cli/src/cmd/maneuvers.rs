@@ -86,6 +86,17 @@ pub fn to_markdown(b: &Booklet) -> String {
         for r in b.static_drift.iter().chain(&b.pure_yaw) {
             s += &format!("| {:.0} | {:.1} | {:.5} | {:.5} |\n", r.drift_deg, r.r_prime, r.y_prime, r.n_prime);
         }
+        if let Some(bare) = &b.bare_drift {
+            s += &format!(
+                "\nStatic drift of the bare hull (rudders and propellers off), as captive tests of a bare hull report it; \
+                 the side force's slope at 2 deg: bare hull {:.3}, with its rudders {:.3}, Clarke et al. (1983)'s \
+                 bare-hull regression {:.3} per rad.\n\n| drift [deg] | Y' | N' |\n|---|---|---|\n",
+                bare.slope_bare_per_rad, bare.slope_appended_per_rad, bare.slope_clarke_per_rad
+            );
+            for r in &bare.rows {
+                s += &format!("| {:.0} | {:.5} | {:.5} |\n", r.drift_deg, r.y_prime, r.n_prime);
+            }
+        }
     }
     s
 }

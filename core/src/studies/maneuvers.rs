@@ -110,6 +110,10 @@ pub struct Booklet {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stopping_refused: Option<String>,
     pub static_drift: Vec<CaptiveRow>,
+    /// The same static drift of the bare hull and its slope beside Clarke's regression (None
+    /// without the hull's own forces).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bare_drift: Option<BareDrift>,
     pub pure_yaw: Vec<CaptiveRow>,
     pub criteria: Vec<Criterion>,
 }
@@ -309,10 +313,47 @@ pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
         coasting,
         stopping,
         stopping_refused,
+        bare_drift: bare_drift(&trial, sc)?,
         static_drift,
         pure_yaw,
         criteria,
     })
+}
+
+/// Static drift as captive tests of a bare hull report it: the rows with the rudders and
+/// propellers off, and the side force's slope at small drift (its 2 deg point, Y' per rad in the
+/// table's normalisation) of the bare hull, of the appended ship and of Clarke et al.'s (1983)
+/// bare-hull regression, Y'_v = -pi (T/L)^2 (1 + 0.40 C_B B/T) over (1/2) rho L^2 U^2, times L/T.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BareDrift {
+    pub rows: Vec<CaptiveRow>,
+    pub slope_bare_per_rad: f64,
+    pub slope_appended_per_rad: f64,
+    pub slope_clarke_per_rad: f64,
+}
+
+/// [`BareDrift`] of the trial's hull (None without the hull's own forces).
+fn bare_drift(trial: &Trial, sc: &Scenario) -> Result<Option<BareDrift>, String> {
+    let HullModel::Own { model, .. } = &trial.plant.hull_model else {
+        return Ok(None);
+    };
+    let hull = sc.ship_hull()?;
+    let (l, t, u) = (model.length, hull.draft_m, trial.u0);
+    let q = 0.5 * hull.rho * l * t * u * u;
+    let row = |drift_deg: f64| {
+        let b = drift_deg.to_radians();
+        let f = model.forces(u * libm::cos(b), u * libm::sin(b), 0.0);
+        CaptiveRow { drift_deg, r_prime: 0.0, y_prime: f.y / q, n_prime: f.n / (q * l) }
+    };
+    let rows: Vec<CaptiveRow> = (0..=6).map(|i| row(2.0 * i as f64)).collect();
+    let (appended, _) = captive(trial, sc)?;
+    let two = 2f64.to_radians();
+    Ok(Some(BareDrift {
+        slope_bare_per_rad: rows[1].y_prime / two,
+        slope_appended_per_rad: appended.get(1).map_or(f64::NAN, |r| r.y_prime / two),
+        slope_clarke_per_rad: model.derivatives.yv * l / t,
+        rows,
+    }))
 }
 
 /// The static drift (0 to 12 deg) and pure yaw (r' 0 to 0.6) tables at the approach speed.
