@@ -115,7 +115,7 @@ impl SpeedController {
 
     /// Lets the reference go astern: the astern map made by `equilibrium(u)` (the shaft speed
     /// [rad/s], negative, at which the propellers carry the hull's resistance at ship speed u < 0
-    /// [m/s]), every 0.25 m/s down to `limit_kn` [kn] (negative).
+    /// [m/s]), every 0.25 m/s down to `limit_kn` \[kn\] (negative).
     pub fn with_astern(mut self, limit_kn: f64, equilibrium: impl Fn(f64) -> f64) -> SpeedController {
         let n_map = (kn_to_m_s(-limit_kn) / MAP_STEP_M_S).ceil() as usize + 1;
         self.astern_map = (0..n_map).map(|i| equilibrium(-(i as f64) * MAP_STEP_M_S)).collect();
