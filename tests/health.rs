@@ -87,13 +87,21 @@ fn a_started_set_delivers_only_after_its_startup_time() {
     sc.plant.online.sets = vec![1];
     sc.plant.online.startup_time_s = 10.0;
     sc.commands = vec![
-        Command { t_s: 0.0, speed_kn: Some(12.0), heading_deg: None, heading_rate_deg_s: None, online_sets: None },
+        Command {
+            t_s: 0.0,
+            speed_kn: Some(12.0),
+            heading_deg: None,
+            heading_rate_deg_s: None,
+            online_sets: None,
+            crash_stop: false,
+        },
         Command {
             t_s: 5.0,
             speed_kn: None,
             heading_deg: None,
             heading_rate_deg_s: None,
             online_sets: Some(vec![1, 3]),
+            crash_stop: false,
         },
     ];
     sc.sim.duration_s = 25.0;

@@ -32,6 +32,7 @@ fn straight_ahead_equilibrium_balances_x0() {
         heading_deg: None,
         heading_rate_deg_s: None,
         online_sets: None,
+        crash_stop: false,
     }];
     s.sim.duration_s = 60.0;
     let r = run(&s);

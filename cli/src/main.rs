@@ -87,7 +87,7 @@ enum Cmd {
     Merge(cmd::merge::Args),
     /// The standard maneuvers of a scenario's ship (IMO MSC.137(76)): the 35 degree turning circle,
     /// the 10/10 and 20/20 zig-zags, a coasting stop and the hull's static drift and pure yaw
-    /// forces, with IMO's verdicts; JSON (`--markdown` for the booklet's tables).
+    /// forces, with IMO's verdicts, and the full-astern stopping test through the drive train; JSON (`--markdown` for the booklet's tables).
     Maneuvers(cmd::maneuvers::Args),
     /// The fuel study of ch. 5.2.4 (Fig. 5-12): fuel power of one prime mover in regular head and
     /// bow seas of 1 to 5 ft over wave frequency; JSON rows on standard output.

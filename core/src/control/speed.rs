@@ -47,7 +47,8 @@ crate::params! {
             source: "our design: keeps the turbines' load rise within their slew limit",
             help: "Rate limit of the shaft speed reference; 0 for a step.",
         },
-        /// The motor is rated near 300 rpm and ch. 5.2.1 shows it overrunning that at full ahead.
+        /// The motor is rated near 300 rpm and ch. 5.2.1 shows it overrunning that at full ahead;
+        /// astern the same limit holds.
         pub max_shaft_rpm: f64 = 320.0 => {
             label: "Largest shaft speed", unit: "rpm", range: 1.0..=2000.0,
             source: "our design: the 300 rpm motor overruns at full ahead (ch. 5.2.1)",
@@ -82,6 +83,13 @@ pub struct SpeedController {
     /// The last ordered speed's bits and its mapped shaft speed (the order holds for many
     /// samples).
     last_map: Option<(u64, f64)>,
+    /// Astern map: equilibrium shaft speed [rad/s] (negative) at ship speeds 0, -MAP_STEP_M_S, ...
+    /// down to the astern limit; empty unless the run orders astern (then the reference may go
+    /// below zero).
+    astern_map: Vec<f64>,
+    /// Full astern at once (a crash stop order): the reference steps to zero, then ramps astern,
+    /// until the next speed order.
+    pub full_astern: bool,
 }
 
 impl SpeedController {
@@ -100,11 +108,32 @@ impl SpeedController {
             shaft_ref: 0.0,
             map: (0..n_map).map(|i| equilibrium(i as f64 * MAP_STEP_M_S)).collect(),
             last_map: None,
+            astern_map: Vec::new(),
+            full_astern: false,
         }
     }
 
-    /// The calm-water map at ship speed `u` [m/s] (linear interpolation, held at the ends).
+    /// Lets the reference go astern: the astern map made by `equilibrium(u)` (the shaft speed
+    /// [rad/s], negative, at which the propellers carry the hull's resistance at ship speed u < 0
+    /// [m/s]), every 0.25 m/s down to `limit_kn` \[kn\] (negative).
+    pub fn with_astern(mut self, limit_kn: f64, equilibrium: impl Fn(f64) -> f64) -> SpeedController {
+        let n_map = (kn_to_m_s(-limit_kn) / MAP_STEP_M_S).ceil() as usize + 1;
+        self.astern_map = (0..n_map).map(|i| equilibrium(-(i as f64) * MAP_STEP_M_S)).collect();
+        self.last_map = None;
+        self
+    }
+
+    /// Whether the reference may go astern (the run orders astern).
+    pub fn astern(&self) -> bool {
+        !self.astern_map.is_empty()
+    }
+
+    /// The calm-water map at ship speed `u` [m/s] (linear interpolation, held at the ends; below
+    /// zero the astern map when the run has one).
     pub fn map_speed(&self, u: f64) -> f64 {
+        if u < 0.0 && !self.astern_map.is_empty() {
+            return crate::numerics::interp::uniform(&self.astern_map, MAP_STEP_M_S, -u);
+        }
         crate::numerics::interp::uniform(&self.map, MAP_STEP_M_S, u)
     }
 
@@ -126,15 +155,19 @@ impl SpeedController {
             }
         };
         let err_u = u_cmd - u;
-        let trim_max = (self.trim_limit * map).max(self.trim_floor);
+        // Astern the map is negative: the trim's span is a share of its size.
+        let trim_max = (self.trim_limit * map.abs()).max(self.trim_floor);
         let unsat = self.pi.unsaturated(err_u);
         let trim = unsat.clamp(-trim_max, trim_max);
-        let target = (map + trim).clamp(0.0, self.max_shaft_speed);
-        let next_ref = if self.ramp > 0.0 {
-            self.shaft_ref + (target - self.shaft_ref).clamp(-self.ramp * ts, self.ramp * ts)
-        } else {
-            target
-        };
+        let lowest = if self.astern_map.is_empty() { 0.0 } else { -self.max_shaft_speed };
+        let target = (map + trim).clamp(lowest, self.max_shaft_speed);
+        // Full astern at once: the reference drops to zero in one sample (braking the shafts
+        // loads no turbine: the motors return power), then ramps astern like any order (the ramp
+        // keeps the turbines' load rise within their slew limit; without it the bus fell to 0.46
+        // pu as both motors took rated power astern the moment the shafts passed zero).
+        let from = if self.full_astern { self.shaft_ref.min(0.0) } else { self.shaft_ref };
+        let next_ref =
+            if self.ramp > 0.0 { from + (target - from).clamp(-self.ramp * ts, self.ramp * ts) } else { target };
         // Anti-windup: the trim integrates only while neither it nor the ramp is limiting, so a
         // long acceleration does not leave it wound up (which would overshoot the ordered speed).
         let limited = unsat.abs() > trim_max || (next_ref - target).abs() > 1e-12;

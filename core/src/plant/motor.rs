@@ -156,6 +156,27 @@ impl InductionMotor {
         self.peak_slip_dir(omega_rm, v_max, guess, -1.0)
     }
 
+    /// The peak of `dir` Q(`dir` x) over x > 0 found by a scan and a golden section around its
+    /// best point, so the global one (`dir` = 1: motoring, -1: braking). Near and through zero
+    /// shaft speed the volts-per-hertz torque curve has two humps (the field reverses where
+    /// omega_e = 0, x = p |omega_rm|), and the warm-started Newton of [`Self::peak_torque_slip`]
+    /// may settle on the lesser one, leaving a reversing shaft with a third of its braking torque;
+    /// runs that go astern use this instead.
+    pub fn peak_slip_scan(&self, omega_rm: f64, v_max: f64, dir: f64) -> f64 {
+        let q = |x: f64| dir * self.shaft_torque(omega_rm, dir * x, v_max);
+        const N: usize = 24;
+        let (lo, hi) = (1e-3, 20.0 * self.r_r / (self.l_s + self.l_r));
+        let ratio = libm::pow(hi / lo, 1.0 / (N - 1) as f64);
+        let xs: Vec<f64> = (0..N)
+            .scan(lo / ratio, |x, _| {
+                *x *= ratio;
+                Some(*x)
+            })
+            .collect();
+        let best = (0..N).max_by(|&a, &b| q(xs[a]).total_cmp(&q(xs[b]))).unwrap_or(0);
+        golden_max(q, xs[best.saturating_sub(1)], xs[(best + 1).min(N - 1)], 40)
+    }
+
     /// Peak of dir * Q(dir * x) over x > 0.
     fn peak_slip_dir(&self, omega_rm: f64, v_max: f64, guess: f64, dir: f64) -> f64 {
         let q = |x: f64| dir * self.shaft_torque(omega_rm, dir * x, v_max);
@@ -175,27 +196,7 @@ impl InductionMotor {
             x = next;
         }
         // Golden section on a generous bracket.
-        let (mut a, mut b) = (1e-6, 20.0 * self.r_r / (self.l_s + self.l_r));
-        let g = (5f64.sqrt() - 1.0) / 2.0;
-        let mut c = b - g * (b - a);
-        let mut d = a + g * (b - a);
-        let (mut fc, mut fd) = (q(c), q(d));
-        for _ in 0..80 {
-            if fc > fd {
-                b = d;
-                d = c;
-                fd = fc;
-                c = b - g * (b - a);
-                fc = q(c);
-            } else {
-                a = c;
-                c = d;
-                fc = fd;
-                d = a + g * (b - a);
-                fd = q(d);
-            }
-        }
-        0.5 * (a + b)
+        golden_max(q, 1e-6, 20.0 * self.r_r / (self.l_s + self.l_r), 80)
     }
 
     /// Whether slip `omega_s` [rad/s] lies below both upper limits of the slip controller at
@@ -275,6 +276,32 @@ impl InductionMotor {
         }
         0.5 * (a + b)
     }
+}
+
+/// The maximum of `q` between `a` and `b` by `iterations` steps of the golden section (one maximum
+/// there assumed): the middle of the last bracket.
+fn golden_max(q: impl Fn(f64) -> f64, a: f64, b: f64, iterations: usize) -> f64 {
+    let (mut a, mut b) = (a, b);
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    let mut c = b - g * (b - a);
+    let mut d = a + g * (b - a);
+    let (mut fc, mut fd) = (q(c), q(d));
+    for _ in 0..iterations {
+        if fc > fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = q(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = q(d);
+        }
+    }
+    0.5 * (a + b)
 }
 
 /// Discrete PI on electrical rotor speed error giving the slip speed command, saturated to

@@ -56,7 +56,7 @@ crate::params! {
         pub plant: PlantParams = PlantParams::default() => {},
         pub controllers: ControllerParams = ControllerParams::default() => {},
         /// Time-stamped commands; the latest command whose time has come is in force.
-        pub commands: Vec<Command> = vec![Command { t_s: 0.0, speed_kn: Some(25.0), heading_deg: None, heading_rate_deg_s: None, online_sets: None }] => {},
+        pub commands: Vec<Command> = vec![Command { t_s: 0.0, speed_kn: Some(25.0), heading_deg: None, heading_rate_deg_s: None, online_sets: None, crash_stop: false }] => {},
         pub initial: InitialConditions = InitialConditions::default() => {},
         pub sim: SimSettings = SimSettings::default() => {},
         pub stepping: SteppingParams = SteppingParams::default() => {},
@@ -159,10 +159,20 @@ crate::params! {
         pub t_s: f64 = 0.0 => {
             label: "Order time", unit: "s", range: 0.0..=1.0e7, help: "When the order takes effect.",
         },
+        /// Negative orders go astern, down to [`ASTERN_LIMIT_KN`].
         #[serde(default, skip_serializing_if = "Option::is_none")]
         pub speed_kn: Option<f64> = None => {
-            label: "Ordered speed", unit: "kn", range: 0.0..=40.0, empty: "keep the previous order",
-            help: "Ship speed ordered.",
+            label: "Ordered speed", unit: "kn", range: ASTERN_LIMIT_KN..=40.0, empty: "keep the previous order",
+            source: "astern to -15 kn, our choice: the hull's astern resistance is its ahead curve mirrored (ASTERN_LIMIT_KN)",
+            help: "Ship speed ordered; negative is astern (needs propeller.model four_quadrant or geometry and controllers.slip.allow_braking).",
+        },
+        /// Full astern at once (the crash stop): the speed order becomes the astern limit and the
+        /// shaft reference steps to zero (the motors brake the shafts within their braking
+        /// limits), then ramps astern at the shaft ramp. A later speed order ends it.
+        #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+        pub crash_stop: bool = false => {
+            label: "Crash stop", source: "IMO MSC.137(76) 5.3.4's full-astern stopping test",
+            help: "Full astern at once: orders the astern limit; the shaft reference steps to zero, then ramps astern (needs what an astern order needs).",
         },
         /// Not wrapped: 360 means one full turn to starboard.
         #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -308,6 +318,20 @@ pub const MAX_ENVELOPE_SIGNALS: usize = 20;
 impl crate::params::CrossCheck for ControllerParams {}
 impl crate::params::CrossCheck for PlantParams {}
 impl crate::params::CrossCheck for InitialConditions {}
+
+/// Fastest ordered speed astern \[kn\] (negative). Our choice, not the motors' limit: on eq.
+/// 2.15's resistance, which is the ahead curve mirrored (the thesis knows no other), the motors'
+/// rated power would drive the ship at 31.6 kn astern (tests/astern.rs), which no warship does;
+/// neither that mirrored hull nor the rudders in reversed flow are checked against astern data,
+/// so orders stop at half the ahead top speed (a shaft then takes 4.1 MW).
+pub const ASTERN_LIMIT_KN: f64 = -15.0;
+
+impl Command {
+    /// Whether this order takes the ship astern (a negative speed or a crash stop).
+    pub fn astern(&self) -> bool {
+        self.crash_stop || self.speed_kn.is_some_and(|kn| kn < 0.0)
+    }
+}
 
 impl crate::params::CrossCheck for Command {
     fn cross_check(&self, v: &mut Validator) {
@@ -671,8 +695,54 @@ impl Scenario {
                 }
             });
         }
-        if self.commands.first().and_then(|c| c.speed_kn).is_none() {
-            v.fail("commands.0.speed_kn", "missing", "the first command must order a ship speed (0 to 40 knots)");
+        self.validate_astern(v);
+        if self.commands.first().and_then(|c| c.speed_kn).is_none()
+            && !self.commands.first().is_some_and(|c| c.crash_stop)
+        {
+            v.fail(
+                "commands.0.speed_kn",
+                "missing",
+                "the first command must order a ship speed (-15 to 40 knots) or a crash stop",
+            );
+        }
+    }
+}
+
+impl Scenario {
+    /// Astern orders need a propeller model for every quadrant, a hull model that holds astern and
+    /// a drive that may brake (the shafts go through zero against the windmilling propeller).
+    fn validate_astern(&self, v: &mut Validator) {
+        let Some((i, cmd)) = self.commands.iter().enumerate().take(MAX_COMMANDS).find(|(_, c)| c.astern()) else {
+            return;
+        };
+        let (field, value) = match cmd.speed_kn {
+            Some(kn) if !cmd.crash_stop => (format!("commands.{i}.speed_kn"), crate::checks::num(kn)),
+            _ => (format!("commands.{i}.crash_stop"), "true".to_string()),
+        };
+        if self.propeller.model == crate::plant::propeller::PropellerModelKind::BSeries {
+            v.fail(
+                &field,
+                &value,
+                "an astern order needs propeller.model = \"four_quadrant\" or \"geometry\" (the B-series \
+                 polynomials hold ahead only)",
+            );
+        }
+        if !self.controllers.slip.allow_braking {
+            v.fail(
+                &field,
+                &value,
+                "an astern order needs controllers.slip.allow_braking = true (without braking the windmilling \
+                 propellers hold the shafts ahead)",
+            );
+        }
+        if self.hull.model == HullModelKind::Maneuvering
+            && self.hull.forces == crate::ship::maneuvering::ManeuveringForces::Table23
+        {
+            v.fail(
+                &field,
+                &value,
+                "an astern order needs hull.forces = \"own_hull\" (Table 2.3's polynomials were fitted ahead)",
+            );
         }
     }
 }
@@ -722,7 +792,7 @@ mod tests {
         assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("stepping.integrator.midpoint", "5"));
         let e = Scenario::from_json(r#"{"commands": [{"t_s": 0}, {"t_s": 5, "speed_kn": [1]}]}"#).unwrap_err();
         assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("commands.1.speed_kn", "[1]"));
-        assert!(e.0[0].message.starts_with("Ordered speed must be a number from 0 to 40 kn"), "{}", e.0[0].message);
+        assert!(e.0[0].message.starts_with("Ordered speed must be a number from -15 to 40 kn"), "{}", e.0[0].message);
     }
 
     #[test]

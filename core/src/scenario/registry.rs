@@ -200,10 +200,11 @@ mod tests {
         for m in &all {
             let listed = leaves.contains(&m.path);
             // Left out of the JSON at their defaults: optional fields, the bilge keels, a custom
-            // hull's offsets, a single-rate run's sub-steps.
+            // hull's offsets, a single-rate run's sub-steps, an order that is no crash stop.
             let left_out = m.default.is_null()
                 || m.path.starts_with("ship.hull.bilge_keels")
-                || ["ship.hull.offsets_csv", "stepping.hull_substeps"].contains(&m.path.as_str())
+                || ["ship.hull.offsets_csv", "stepping.hull_substeps", "commands.N.crash_stop"]
+                    .contains(&m.path.as_str())
                 || m.path.starts_with("propeller.geometry.");
             assert!(listed || left_out, "{} is not in the scenario", m.path);
             assert_eq!(paths.iter().filter(|p| **p == m.path).count(), 1, "{} twice", m.path);
@@ -314,7 +315,7 @@ mod tests {
         let e = base.with_override("commands.0.speed_kn", "41").unwrap_err();
         assert_eq!(
             e.to_string(),
-            "commands.0.speed_kn = 41: Ordered speed must be a number from 0 to 40 kn, or left out (keep the previous order)"
+            "commands.0.speed_kn = 41: Ordered speed must be a number from -15 to 40 kn, or left out (keep the previous order)"
         );
         // An order's 0 is not "unset": a heading rate of 0 is refused.
         let e = base.with_override("commands.0.heading_rate_deg_s", "0").unwrap_err();

@@ -327,6 +327,8 @@ pub fn assess(sc: &Scenario, trace: &Trace, tracked: &Tracked) -> Vec<String> {
         out.push(w);
     }
 
+    out.extend(astern_braking(sc, trace));
+
     let limit = sc.controllers.speed.max_shaft_rpm;
     for (k, sig) in [Signal::PropRpm1, Signal::PropRpm2].into_iter().enumerate() {
         let col = trace.get(sig);
@@ -343,6 +345,39 @@ pub fn assess(sc: &Scenario, trace: &Trace, tracked: &Tracked) -> Vec<String> {
     out
 }
 
+/// A run with an astern order whose bus rose over its band or whose turbines oversped after the
+/// order, while the motors returned power: says so in words, with the power they returned (the
+/// crash stop's energy had nowhere to go fast enough).
+fn astern_braking(sc: &Scenario, trace: &Trace) -> Option<String> {
+    let t_order = sc.commands.iter().find(|c| c.astern())?.t_s;
+    let t = trace.get(Signal::TS);
+    let from = t.partition_point(|&x| x < t_order);
+    let (bus, turbine, p_inv) =
+        (trace.get(Signal::BusVoltagePu), trace.get(Signal::TurbineSpeedPu), trace.get(Signal::PInverterW));
+    let high = bus_high_pu(sc);
+    let braking = |i: &usize| p_inv[*i] < 0.0;
+    let bus_top = (from..t.len()).filter(braking).map(|i| bus[i]).fold(f64::NEG_INFINITY, f64::max);
+    let turbine_top = (from..t.len()).filter(braking).map(|i| turbine[i]).fold(f64::NEG_INFINITY, f64::max);
+    let mut what = Vec::new();
+    if bus_top > high {
+        what.push(format!("the bus rose to {bus_top:.3} pu, over its band's top of {high:.2} pu"));
+    }
+    if turbine_top > TURBINE_OVERSPEED_PU {
+        what.push(format!("the turbines oversped to {turbine_top:.3} pu (trip near {TURBINE_OVERSPEED_PU} pu)"));
+    }
+    if what.is_empty() {
+        return None;
+    }
+    let regen = (from..t.len()).map(|i| -p_inv[i]).fold(0.0, f64::max);
+    Some(format!(
+        "during the astern order from t = {t_order:.1} s the motors braked the shafts and returned up to {:.1} MW to \
+         the buses: {}; the brake resistors and storage did not take it fast enough (plant.dc_link.brake_resistor_ohm, \
+         plant.storage)",
+        regen / 1e6,
+        what.join(" and ")
+    ))
+}
+
 /// The "speed order not held" finding, with its likely cause in words (`motors`: the slip-limit
 /// findings per motor).
 fn speed_not_held(t: &[f64], trace: &Trace, motors: &[String]) -> Option<String> {
@@ -357,7 +392,9 @@ fn speed_not_held(t: &[f64], trace: &Trace, motors: &[String]) -> Option<String>
         return None;
     }
     let mean = |col: &[f64]| col[from..].iter().sum::<f64>() / (col.len() - from) as f64;
-    let got = mean(speed);
+    // The trace's speed is the speed through the water, unsigned: under an astern order the
+    // ship is taken to be going astern.
+    let got = if order < 0.0 { -mean(speed) } else { mean(speed) };
     let band = SPEED_HELD_KN.max(SPEED_HELD_SHARE * order.abs());
     if (got - order).abs() <= band {
         return None;

@@ -87,10 +87,19 @@ impl Controllers {
     /// power and (braking) limits.
     pub(crate) fn slip_loops(&mut self, p: &Plant, x: &State, shaft_ref: f64, t_now: f64, ts: f64) {
         let c = self;
+        // Runs that go astern take the motors through zero shaft speed: their peak slips come
+        // from the global search (`peak_slip_scan`).
+        let astern = c.speed.astern();
         for s in 0..N_SHAFTS {
             let w_rm = x[slot::shaft_speed(s)];
             let v_max = p.dc_link.max_phase_voltage(x[slot::bus_voltage(s)]);
             let err = p.motor.pole_pairs * (shaft_ref - w_rm);
+            if w_rm < 0.0 && c.allow_braking {
+                let (slip, at_limit) = c.slip_astern(p, s, w_rm, v_max, err, ts);
+                c.held.slip[s] = slip;
+                c.tracked.slip_limit[s].sample(at_limit, t_now, ts);
+                continue;
+            }
             // The upper slip limit (power-limited slip below the peak-torque slip) takes two
             // iterative solves; it changes nothing unless the PI's output or integrator would
             // reach it. Both are below it when the torque there still rises with slip (below the
@@ -101,12 +110,20 @@ impl Controllers {
             let limit = if p.motor.below_slip_limits(w_rm, v_max, reach, p.motor.p_rated) {
                 f64::INFINITY
             } else {
-                let peak = p.motor.peak_torque_slip(w_rm, v_max, c.peak_slip[s]);
+                let peak = if astern {
+                    p.motor.peak_slip_scan(w_rm, v_max, 1.0)
+                } else {
+                    p.motor.peak_torque_slip(w_rm, v_max, c.peak_slip[s])
+                };
                 c.peak_slip[s] = peak;
                 p.motor.power_limited_slip(w_rm, v_max, peak, p.motor.p_rated)
             };
             let lower = if c.allow_braking {
-                let peak_b = p.motor.peak_braking_slip(w_rm, v_max, c.peak_brake_slip[s]);
+                let peak_b = if astern {
+                    p.motor.peak_slip_scan(w_rm, v_max, -1.0)
+                } else {
+                    p.motor.peak_braking_slip(w_rm, v_max, c.peak_brake_slip[s])
+                };
                 c.peak_brake_slip[s] = peak_b;
                 p.motor.power_limited_braking_slip(w_rm, v_max, peak_b, p.motor.p_rated)
             } else {
@@ -115,6 +132,22 @@ impl Controllers {
             c.held.slip[s] = c.slip[s].update(err, lower, limit, ts);
             c.tracked.slip_limit[s].sample(c.held.slip[s] >= limit, t_now, ts);
         }
+    }
+
+    /// Motor `s`'s slip with its shaft turning astern (`w_rm` < 0 \[rad/s\]): the circuit is its own
+    /// mirror image, Q(-omega_rm, -omega_s) = -Q(omega_rm, omega_s) (the volts-per-hertz law takes
+    /// |omega_e|), so motoring astern is negative slip within the ahead motoring limits at
+    /// |omega_rm| (peak torque and rated power), and braking an astern shaft positive slip within
+    /// the braking limits there. Only runs that may brake come here (astern orders need it).
+    /// Returns the slip [rad/s] and whether it is at the motoring limit.
+    fn slip_astern(&mut self, p: &Plant, s: usize, w_rm: f64, v_max: f64, err: f64, ts: f64) -> (f64, bool) {
+        let w = -w_rm;
+        let peak = p.motor.peak_slip_scan(w, v_max, 1.0);
+        let motoring = p.motor.power_limited_slip(w, v_max, peak, p.motor.p_rated);
+        let peak_b = p.motor.peak_slip_scan(w, v_max, -1.0);
+        let braking = p.motor.power_limited_braking_slip(w, v_max, peak_b, p.motor.p_rated);
+        let slip = self.slip[s].update(err, motoring, braking, ts);
+        (slip, slip <= -motoring)
     }
 
     /// Heading: the reference ramps to the target at most at `max_turn_rate` \[rad/s\]; the
@@ -131,7 +164,10 @@ impl Controllers {
             0.0
         };
         let err = c.psi_ref - x[HEADING];
-        c.held.rudder = c.autopilot.update(err, r_ref - x[YAW_RATE], ts);
+        // Going astern the water meets the rudders from behind and their side force reverses: the
+        // autopilot steers with its errors negated, or it would turn the ship away from its course.
+        let sign = if x[SURGE] < 0.0 { -1.0 } else { 1.0 };
+        c.held.rudder = c.autopilot.update(sign * err, sign * (r_ref - x[YAW_RATE]), ts);
         (c.held.rudder.abs() >= c.autopilot.max_angle - 1e-9).then_some(err.abs())
     }
 }

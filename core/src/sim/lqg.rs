@@ -107,6 +107,7 @@ pub fn design_model(sc: &Scenario) -> Result<(DriveTrainModel, StateSpace), SimE
         heading_deg: None,
         heading_rate_deg_s: None,
         online_sets: None,
+        crash_stop: false,
     }];
     // Only the steady state is needed: no long trace.
     op.sim.duration_s = op.stepping.dt_s.max(op.stepping.controller_sample_s);

@@ -305,7 +305,10 @@ impl Simulation {
         calm.beta_t = 1.0;
         calm.beta_q = 1.0;
         calm.extra_resistance = 0.0;
-        let speed = SpeedController::new(&scenario.controllers.speed, |u| calm.equilibrium_shaft_speed(u));
+        let mut speed = SpeedController::new(&scenario.controllers.speed, |u| calm.equilibrium_shaft_speed(u));
+        if scenario.commands.iter().any(|c| c.astern()) {
+            speed = speed.with_astern(crate::scenario::ASTERN_LIMIT_KN, |u| calm.equilibrium_shaft_speed_astern(u));
+        }
 
         let mut sim = Simulation {
             scenario: scenario.clone(),
@@ -435,7 +438,11 @@ impl Simulation {
         let mut ordered = false;
         while self.next_command < cmds.len() && cmds[self.next_command].t_s <= self.t + 0.5 * self.clock.dt {
             let cmd = &cmds[self.next_command];
-            if let Some(kn) = cmd.speed_kn {
+            if cmd.crash_stop {
+                self.speed_cmd = kn_to_m_s(crate::scenario::ASTERN_LIMIT_KN);
+            }
+            self.ctl.speed.full_astern = cmd.crash_stop || (self.ctl.speed.full_astern && cmd.speed_kn.is_none());
+            if let Some(kn) = cmd.speed_kn.filter(|_| !cmd.crash_stop) {
                 self.speed_cmd = kn_to_m_s(kn);
                 let h = &self.scenario.hull;
                 if h.model == HullModelKind::Maneuvering

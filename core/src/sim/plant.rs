@@ -341,6 +341,23 @@ impl Plant {
         crate::numerics::bisect(f, 0.0, b, 100)
     }
 
+    /// Astern: the shaft speed \[rad/s\] (negative) at which the propellers carry the hull's
+    /// resistance at `u` < 0 \[m/s\] (eq. 2.15's u |u| pushes ahead), by bisection on the reversed
+    /// shaft: thrust falls monotonically as the shaft turns faster astern. 0 when no astern thrust
+    /// is needed.
+    pub fn equilibrium_shaft_speed_astern(&self, u: f64) -> f64 {
+        let need = self.straight_resistance(u);
+        let f = |w: f64| N_SHAFTS as f64 * self.propeller_load(w, u).thrust_n - need;
+        if need >= 0.0 || f(0.0) <= 0.0 {
+            return 0.0;
+        }
+        let mut b = -10.0;
+        while f(b) > 0.0 && b > -1.0e3 {
+            b *= 2.0;
+        }
+        crate::numerics::bisect(f, b, 0.0, 100)
+    }
+
     /// Brake resistor power at bus voltage `v_c` \[W\]: the chopper's duty rises linearly from 0 at
     /// `brake_on_v` to 1 at `brake_full_v`.
     pub fn brake_power(&self, v_c: f64) -> f64 {

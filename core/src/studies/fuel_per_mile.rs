@@ -91,7 +91,14 @@ impl FuelPerMileStudy {
         if !ordered {
             sc.commands.insert(
                 0,
-                Command { t_s: 0.0, speed_kn: Some(v), heading_deg: None, heading_rate_deg_s: None, online_sets: None },
+                Command {
+                    t_s: 0.0,
+                    speed_kn: Some(v),
+                    heading_deg: None,
+                    heading_rate_deg_s: None,
+                    online_sets: None,
+                    crash_stop: false,
+                },
             );
         }
         sc

@@ -1,7 +1,8 @@
 //! Standard maneuvers of a scenario's ship, as a trials booklet gives them (IMO resolution
 //! MSC.137(76), "Standards for ship manoeuvrability", and its explanatory notes MSC/Circ.1053):
 //! the 35 degree turning circle, the 10/10 and 20/20 zig-zags with the initial turning ability, a
-//! coasting stop, and a static drift and pure yaw table of the hull's own forces, the way captive
+//! coasting stop, the full-astern stopping test (`studies::stopping`, through the whole drive
+//! train), and a static drift and pure yaw table of the hull's own forces, the way captive
 //! model tests are reported.
 //!
 //! The hull moves under the scenario's maneuvering model with its propellers held at the shaft
@@ -103,7 +104,16 @@ pub struct Booklet {
     pub zigzag_10: ZigZag,
     pub zigzag_20: ZigZag,
     pub coasting: Coasting,
+    /// The full-astern stopping test (the drive train simulated: `studies::stopping`), or None
+    /// and why it could not run (Table 2.3's hull holds ahead only).
+    pub stopping: Option<crate::studies::stopping::Stopping>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stopping_refused: Option<String>,
     pub static_drift: Vec<CaptiveRow>,
+    /// The same static drift of the bare hull and its slope beside Clarke's regression (None
+    /// without the hull's own forces).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bare_drift: Option<BareDrift>,
     pub pure_yaw: Vec<CaptiveRow>,
     pub criteria: Vec<Criterion>,
 }
@@ -256,6 +266,7 @@ pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
     let end = coast[coast.len() - 1];
     let coasting = Coasting { to_kn: STOPPED_KN, track_reach_m: end.x_m, time_s: end.t_s };
     let (static_drift, pure_yaw) = captive(&trial, sc)?;
+    let stopping = crate::studies::stopping::stopping_test(sc, approach_kn, l);
     let l_over_v = l / u0;
     let (first_limit, second_limit) = zigzag_10_limits(l_over_v);
     let crit = |name: &str, value: f64, limit: f64, unit: &str| Criterion {
@@ -265,7 +276,7 @@ pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
         unit: unit.into(),
         pass: value <= limit,
     };
-    let criteria = vec![
+    let mut criteria = vec![
         crit("turning ability: advance", turning.advance_m / l, 4.5, "L"),
         crit("turning ability: tactical diameter", turning.tactical_diameter_m / l, 5.0, "L"),
         crit(
@@ -278,6 +289,18 @@ pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
         crit("yaw checking: 10/10 second overshoot", zigzag_10.second_overshoot_deg, second_limit, "deg"),
         crit("yaw checking: 20/20 first overshoot", zigzag_20.first_overshoot_deg, 25.0, "deg"),
     ];
+    criteria.extend(stopping.as_ref().ok().map(|s| {
+        use crate::studies::stopping::{IMO_TRACK_REACH_ALLOWED_L, IMO_TRACK_REACH_L};
+        let name = format!(
+            "stopping ability: track reach in the full-astern test (naval ship: a reference; up to \
+             {IMO_TRACK_REACH_ALLOWED_L} L may be allowed)"
+        );
+        crit(&name, s.track_reach_l, IMO_TRACK_REACH_L, "L")
+    }));
+    let (stopping, stopping_refused) = match stopping {
+        Ok(s) => (Some(s), None),
+        Err(e) => (None, Some(e)),
+    };
     Ok(Booklet {
         scenario: sc.name.clone(),
         model: format!("{:?}", sc.hull.forces),
@@ -288,10 +311,49 @@ pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
         zigzag_10,
         zigzag_20,
         coasting,
+        stopping,
+        stopping_refused,
+        bare_drift: bare_drift(&trial, sc)?,
         static_drift,
         pure_yaw,
         criteria,
     })
+}
+
+/// Static drift as captive tests of a bare hull report it: the rows with the rudders and
+/// propellers off, and the side force's slope at small drift (its 2 deg point, Y' per rad in the
+/// table's normalisation) of the bare hull, of the appended ship and of Clarke et al.'s (1983)
+/// bare-hull regression, Y'_v = -pi (T/L)^2 (1 + 0.40 C_B B/T) over (1/2) rho L^2 U^2, times L/T.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BareDrift {
+    pub rows: Vec<CaptiveRow>,
+    pub slope_bare_per_rad: f64,
+    pub slope_appended_per_rad: f64,
+    pub slope_clarke_per_rad: f64,
+}
+
+/// [`BareDrift`] of the trial's hull (None without the hull's own forces).
+fn bare_drift(trial: &Trial, sc: &Scenario) -> Result<Option<BareDrift>, String> {
+    let HullModel::Own { model, .. } = &trial.plant.hull_model else {
+        return Ok(None);
+    };
+    let hull = sc.ship_hull()?;
+    let (l, t, u) = (model.length, hull.draft_m, trial.u0);
+    let q = 0.5 * hull.rho * l * t * u * u;
+    let row = |drift_deg: f64| {
+        let b = drift_deg.to_radians();
+        let f = model.forces(u * libm::cos(b), u * libm::sin(b), 0.0);
+        CaptiveRow { drift_deg, r_prime: 0.0, y_prime: f.y / q, n_prime: f.n / (q * l) }
+    };
+    let rows: Vec<CaptiveRow> = (0..=6).map(|i| row(2.0 * i as f64)).collect();
+    let (appended, _) = captive(trial, sc)?;
+    let two = 2f64.to_radians();
+    Ok(Some(BareDrift {
+        slope_bare_per_rad: rows[1].y_prime / two,
+        slope_appended_per_rad: appended.get(1).map_or(f64::NAN, |r| r.y_prime / two),
+        slope_clarke_per_rad: model.derivatives.yv * l / t,
+        rows,
+    }))
 }
 
 /// The static drift (0 to 12 deg) and pure yaw (r' 0 to 0.6) tables at the approach speed.

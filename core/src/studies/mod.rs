@@ -16,6 +16,7 @@ pub mod rice;
 pub mod schedule;
 pub mod stability_map;
 pub mod stats;
+pub mod stopping;
 pub mod storage_sizing;
 pub mod study;
 pub mod thesis_values;

@@ -16,8 +16,9 @@ const TEMPLATE = `
 <section class="maneuvers" aria-labelledby="maneuvers-h">
   <p class="about">The ship of the form as it stands, from its first ordered speed with its shafts held at that speed's
     calm-water rpm, as a trials booklet gives it: the turning circle with 35&deg; of rudder and the zig-zags, each beside
-    the limit of IMO's standards for ship manoeuvrability. Only the hull, its rudders and propellers move here; the power
-    plant is not simulated.</p>
+    the limit of IMO's standards for ship manoeuvrability. Only the hull, its rudders and propellers move in these; the
+    full-astern stopping test (its track reach in the table, IMO's 15 L a reference for a naval ship) runs the whole
+    power plant through the crash stop.</p>
   <div class="row buttons">
     <button id="maneuvers-compute" type="button">Compute the booklet</button>
   </div>
