@@ -123,8 +123,25 @@ fn said(c: &Control, name: &str, v: &serde_json::Value) -> String {
         ControlKind::Slider { .. } => {
             let x = position(c, v).unwrap_or(f64::NAN);
             let unit = if c.unit.is_empty() { String::new() } else { format!(" {}", c.unit) };
-            format!("{name} {}{unit}", value_text(x))
+            if name.is_empty() {
+                format!("{}{unit}", value_text(x))
+            } else {
+                format!("{name} {}{unit}", value_text(x))
+            }
         }
+    }
+}
+
+/// A control's label as a name inside a sentence: the words before its first parenthesis or colon,
+/// first letter lower-cased ("Sea state (2: smooth ...)" -> "sea state"); a control that moved
+/// besides the question's own is said by this name, never by an empty one.
+fn short_label(c: &Control) -> String {
+    let cut = c.label.find(['(', ':']).unwrap_or(c.label.len());
+    let words = c.label[..cut].trim();
+    let mut chars = words.chars();
+    match chars.next() {
+        Some(first) => first.to_lowercase().chain(chars).collect(),
+        None => c.path.to_string(),
     }
 }
 
@@ -168,7 +185,7 @@ pub(super) fn verdict(
             .collect();
         parts.join(", ")
     };
-    let others: Vec<&str> = moved.iter().filter(|m| !ch.paths.contains(&m.path)).map(|m| m.label).collect();
+    let others: Vec<String> = moved.iter().filter(|m| !ch.paths.contains(&m.path)).map(|m| short_label(m)).collect();
     // The question's controls that moved, and which way (up the control's order or down).
     let ways: Vec<f64> = ours
         .iter()
@@ -210,8 +227,17 @@ pub(super) fn verdict(
             "One of the question's controls went up and another down: move them the same way.".to_string()
         };
         let ctx = |vals: &serde_json::Map<String, serde_json::Value>| {
-            let parts: Vec<String> =
-                moved.iter().map(|c| said(c, "", vals.get(c.path).unwrap_or(&serde_json::Value::Null))).collect();
+            let parts: Vec<String> = moved
+                .iter()
+                .map(|c| {
+                    // A toggle's choice names itself ("no brake resistor"); a slider's number needs its name.
+                    let name = match c.kind {
+                        ControlKind::Slider { .. } => short_label(c),
+                        ControlKind::Toggle { .. } => String::new(),
+                    };
+                    said(c, &name, vals.get(c.path).unwrap_or(&serde_json::Value::Null))
+                })
+                .collect();
             parts.join(", ")
         };
         v.text = format!("{predicted}{why} {}", numbers(ctx(&before.values), ctx(values)));
@@ -245,4 +271,58 @@ pub(super) fn verdict(
 fn capital(s: &str) -> String {
     let mut c = s.chars();
     c.next().map(|x| x.to_uppercase().chain(c).collect()).unwrap_or_default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::output::lessons::{lessons, open};
+
+    /// Another value of control `c` than `v`: the next stop or choice (the previous one at the end).
+    fn other(c: &Control, v: &serde_json::Value) -> serde_json::Value {
+        match &c.kind {
+            ControlKind::Slider { stops, .. } => {
+                let x = position(c, v).unwrap();
+                let i = stops.iter().position(|s| (s - x).abs() <= 1e-9 * s.abs().max(1e-12)).unwrap_or(0);
+                let j = if i + 1 < stops.len() { i + 1 } else { i - 1 };
+                serde_json::json!(stops[j])
+            }
+            ControlKind::Toggle { values, .. } => {
+                let i = position(c, v).unwrap() as usize;
+                serde_json::json!(values[(i + 1) % values.len()])
+            }
+        }
+    }
+
+    /// Every control of every change lesson, moved alone or beside the question's own: the verdict
+    /// names each value it prints (it printed "5 before ( 6), 7 now ( 5)" for a control that was
+    /// not the question's), and never says NaN.
+    #[test]
+    fn a_verdict_names_every_value_it_says() {
+        let mut checked = 0;
+        for l in lessons().iter().filter(|l| l.change.is_some()) {
+            let defaults = open(l, &[]).unwrap().defaults;
+            let question = l.change.as_ref().unwrap().paths[0];
+            for c in &l.controls {
+                let mut now = defaults.clone();
+                now.insert(c.path.to_string(), other(c, &defaults[c.path]));
+                if c.path != question {
+                    // Beside the question's change: the "more than one change" sentence.
+                    let q = l.controls.iter().find(|k| k.path == question).unwrap();
+                    now.insert(q.path.to_string(), other(q, &defaults[q.path]));
+                }
+                let before = Before { values: defaults.clone(), reading: 5.0, answer: Some(0) };
+                let v = verdict(l, &before, &now, 7.0).expect("a moved control gives a verdict");
+                for bad in ["( ", "(, ", " , ", "NaN", "()"] {
+                    assert!(!v.text.contains(bad), "lesson {} moving {}: {bad:?} in {:?}", l.name, c.path, v.text);
+                }
+                if l.name == "waves" && c.path == "sea.sea_state" {
+                    assert!(v.text.contains("(sea state moved too)"), "{}", v.text);
+                    assert!(v.text.contains("5 before (sea state 6, propeller hub above the keel 2.65 m)"), "{}", v.text);
+                }
+                checked += 1;
+            }
+        }
+        assert!(checked >= 8, "only {checked} controls checked");
+    }
 }
