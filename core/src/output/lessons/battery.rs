@@ -61,6 +61,7 @@ pub(super) fn lesson() -> Lesson {
             by: BATTERY_BY_PU,
             decide: steadier,
             hint: "choose the battery's energy",
+            shown: &[],
         }),
     }
 }

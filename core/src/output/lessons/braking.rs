@@ -47,6 +47,7 @@ pub(super) fn lesson() -> Lesson {
                 _ => Err("Without the resistor the turbines sped up no more than with it: from this speed there is little energy to return; start from a higher speed."),
             },
             hint: "switch the brake resistor off",
+            shown: &[],
         }),
     }
 }

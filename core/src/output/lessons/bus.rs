@@ -34,6 +34,7 @@ pub(super) fn lesson() -> Lesson {
             // A higher lowest voltage is a smaller dip.
             decide: |away, toward, by| Ok(by_relation(away, toward, by, [0, 1, 2])),
             hint: "raise a gain of the field controller",
+            shown: &[],
         }),
     }
 }
@@ -53,6 +54,30 @@ fn bus(b: &mut Book, sc: &serde_json::Value, own: (f64, f64), end: f64) -> Expla
         format!("At {} s the motors take full power. The bus dipped to {} pu ({} s in) and the turbines slowed to {} pu: a generator's voltage falls with its speed, and the field controller raises its field current to make up for it.", f(t0, 0), f(bmin, 3), f(tmin, 1), f(tu.1, 3)),
         &[bi, tu.0],
     );
+    // What the controller did by the dip: the field voltage then against before the order. A small
+    // gain barely moves it, so the dip is the turbines' slowing alone (the reason a small change
+    // of gain "hardly changes" the dip).
+    let f0 = b.at("field_voltage_v", t0);
+    let fmin = b.at("field_voltage_v", tmin);
+    let rose = b.compare(fmin, f0, 0.0);
+    let cmp_f = b.last();
+    let said = if rose == Relation::More {
+        format!(
+            "By the dip the controller had raised the field voltage from {} V to {} V ({} more) while the bus was {} low.",
+            f(f0.1, 1),
+            f(fmin.1, 1),
+            pct(fmin.1 / f0.1 - 1.0),
+            pct(1.0 - bmin)
+        )
+    } else {
+        format!(
+            "By the dip the controller had not raised the field voltage ({} V before the order, {} V then) while the bus was {} low.",
+            f(f0.1, 1),
+            f(fmin.1, 1),
+            pct(1.0 - bmin)
+        )
+    };
+    b.say(said, &[f0.0, fmin.0, cmp_f, bi]);
     let bend = b.at("bus_voltage_pu", end);
     let low = b.push(Fact::Level { name: "bus band's lower edge [pu]", value: BUS_LOW_PU });
     let back = Relation::of(bend.1, BUS_LOW_PU, 0.0);

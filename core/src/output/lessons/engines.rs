@@ -58,6 +58,8 @@ pub(super) fn lesson() -> Lesson {
             // The later choice runs fewer sets: less fuel there is "one carrying the whole load".
             decide: |away, toward, by| Ok(by_relation(away, toward, by, [1, 0, 2])),
             hint: "change the gas turbines running",
+            // The runs may compare four sets with two, or two with one: what the answers mean then.
+            shown: &["the fewer sets burning less fuel", "the more sets burning less fuel", "about the same fuel either way"],
         }),
     }
 }

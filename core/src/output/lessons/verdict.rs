@@ -43,6 +43,10 @@ pub(super) struct Change {
     pub decide: fn(away: f64, toward: f64, by: f64) -> Result<usize, &'static str>,
     /// How to make the question's change, said when another control was moved.
     pub hint: &'static str,
+    /// What each answer means for any two settings of the question's controls, where the runs
+    /// may compare other settings than the question's two ("fewer sets burn less" for "one
+    /// carrying the whole load" when the runs are four sets against two); empty: the answers.
+    pub shown: &'static [&'static str],
 }
 
 /// The usual decision: more (beyond the margin) is answer `more`, less is `less`, about the same
@@ -74,6 +78,7 @@ pub(super) fn onsets_change(
         by: 1.0,
         decide: |away, toward, by| Ok(by_relation(away, toward, by, [0, 1, 2])),
         hint,
+        shown: &[],
     }
 }
 
@@ -256,10 +261,17 @@ pub(super) fn verdict(
             v.right = Some(right);
             v.agrees = before.answer.map(|a| a == right);
             let shows = l.answers[right];
-            let end = match before.answer {
-                Some(a) if a == right => format!("The runs agree with your prediction: {shows}."),
-                Some(a) => format!("The runs show \"{shows}\", not \"{}\".", l.answers[a]),
-                None => format!("The runs show: {shows}."),
+            let end = match (ch.shown.get(right), before.answer) {
+                (None, Some(a)) if a == right => format!("The runs agree with your prediction: {shows}."),
+                (None, Some(a)) => format!("The runs show \"{shows}\", not \"{}\".", l.answers[a]),
+                (None, None) => format!("The runs show: {shows}."),
+                (Some(general), Some(a)) if a == right => {
+                    format!("The runs show {general}, as your prediction \"{shows}\" says.")
+                }
+                (Some(general), Some(a)) => {
+                    format!("The runs show {general}, the way of \"{shows}\", not \"{}\".", l.answers[a])
+                }
+                (Some(general), None) => format!("The runs show {general}, the way of \"{shows}\"."),
             };
             v.text = format!("{predicted}{nums}{about} {end}");
         }
@@ -318,7 +330,11 @@ mod tests {
                 }
                 if l.name == "waves" && c.path == "sea.sea_state" {
                     assert!(v.text.contains("(sea state moved too)"), "{}", v.text);
-                    assert!(v.text.contains("5 before (sea state 6, propeller hub above the keel 2.65 m)"), "{}", v.text);
+                    assert!(
+                        v.text.contains("5 before (sea state 6, propeller hub above the keel 2.65 m)"),
+                        "{}",
+                        v.text
+                    );
                 }
                 checked += 1;
             }
