@@ -43,9 +43,11 @@ pub struct SectionFlow {
 }
 
 impl From<&super::SectionLoad> for SectionFlow {
-    /// The lifting line's load at a section, as the cavitation check reads it.
+    /// The lifting line's load at a section, as the cavitation check reads it: the 2D section at
+    /// the angle where it meets the flow as the blade does (the same distance from its ideal angle
+    /// as the blade from Morgan's corrected one; the bucket is about the ideal angle).
     fn from(l: &super::SectionLoad) -> SectionFlow {
-        SectionFlow { r_r: l.r_r, chord_m: l.chord_m, alpha_rad: l.alpha_rad, v_star_m_s: l.v_star_m_s }
+        SectionFlow { r_r: l.r_r, chord_m: l.chord_m, alpha_rad: l.alpha_2d_rad, v_star_m_s: l.v_star_m_s }
     }
 }
 
@@ -293,12 +295,13 @@ mod tests {
     }
 
     /// The same propeller and point with the lifting line's own section loads (branch prop54's
-    /// `analyse`, induced velocities and Morgan's 1968 corrections included; its KT is still 10 %
-    /// high at this J). Measured: r/R 0.20 to 0.57 keep a margin (+0.51 to +0.01), r/R 0.63 to
-    /// 0.94 cavitate lightly (-0.04 to -0.08), and the three outermost control points (r/R 0.970,
-    /// 0.989, 0.999: margins -0.35, -2.4 and -31) carry the tip's large angles onto the r/R 0.95
-    /// section's bucket. A 2D section does not describe the tip (its vortex cavitates first), so
-    /// the onset is taken from the sectioned radii (r/R <= 0.95), h/R 5.93.
+    /// `analyse`, induced velocities and Morgan's 1968 corrections included, each section at its
+    /// equivalent 2D angle; its KT is still 10 % high at this J). Measured: r/R 0.20 to 0.57 keep a
+    /// margin (+0.71 to +0.05), r/R 0.63 to 0.94 cavitate lightly (-0.02 to -0.07), and the three
+    /// outermost control points (r/R 0.970, 0.989, 0.999: margins -0.15, -1.7 and -29) carry the
+    /// tip's large angles onto the r/R 0.95 section's bucket. A 2D section does not describe the
+    /// tip (its vortex cavitates first), so the onset is taken from the sectioned radii
+    /// (r/R <= 0.95), h/R 5.22.
     #[test]
     fn dtmb_4119_with_the_lifting_lines_loads() {
         let g = BladeGeometry::from_csv(P4119, 3, 0.2).unwrap();
@@ -310,7 +313,7 @@ mod tests {
         let s = b.sections(&w, &flows, 6.0);
         assert!(!s.is_empty() && s.iter().all(|c| c.margin.is_finite()));
         let onset = b.onset_h_over_r(&w, &flows);
-        // Measured: h/R 5.93 (hub 13.3 m): shallower than that the sections from r/R 0.63 out
+        // Measured: h/R 5.22 (hub 11.7 m): shallower than that the sections from r/R 0.63 out
         // cavitate, as they do at 6 m; at the onset depth the worst sectioned margin is zero.
         assert!(onset.is_finite() && onset > 6.0 / (0.5 * d), "onset h/R {onset}");
         let inside: Vec<SectionFlow> = flows.iter().copied().filter(|f| f.r_r <= 0.95 + 1e-9).collect();

@@ -11,7 +11,7 @@
 use super::friction::section_drag;
 use super::induction::wrench;
 use super::lifting_surface::{self, Corrections};
-use super::section_lift::lift;
+use super::section_lift::{equivalent_2d_angle_rad, lift};
 use super::{Analysis, BladeGeometry, Flow, SectionLoad, ADVANCE_RATIO};
 use std::f64::consts::PI;
 
@@ -132,6 +132,11 @@ impl LiftingLine {
         (a, t)
     }
 
+    /// Morgan's lifting-surface factors at control point `i` with inflow tan(beta_i) `tan_bi`.
+    fn corrections(&self, i: usize, tan_bi: f64) -> Corrections {
+        lifting_surface::morgan_1968(self.blades, self.ear, self.btf, self.rc[i], tan_bi)
+    }
+
     /// The open-water point at advance ratio `j`.
     pub fn solve(&self, j: f64) -> Result<Analysis, String> {
         self.solve_from(j, None)
@@ -165,9 +170,7 @@ impl LiftingLine {
         for _ in 0..MAX_ITERATIONS {
             let tan_bw = self.wake_pitch(&tan_bi, &gamma);
             let (ia, it) = self.influence(&tan_bw, rh);
-            let corr: Vec<Corrections> = (0..m)
-                .map(|i| lifting_surface::morgan_1968(self.blades, self.ear, self.btf, self.rc[i], tan_bi[i]))
-                .collect();
+            let corr: Vec<Corrections> = (0..m).map(|i| self.corrections(i, tan_bi[i])).collect();
             // One Newton step on F(G) = G - V* c C_L(alpha(G)) / 2 with the wake frozen.
             let mut jac = vec![0.0; m * m];
             let mut rhs = vec![0.0; m];
@@ -254,6 +257,7 @@ impl LiftingLine {
                 circulation: g / (2.0 * PI),
                 beta_i_rad: beta,
                 alpha_rad: alpha,
+                alpha_2d_rad: equivalent_2d_angle_rad(alpha, self.f0_c[i], &self.corrections(i, libm::tan(beta))),
                 v_star_m_s: v * nd,
                 cl,
                 cd,

@@ -14,10 +14,23 @@ pub const LIFT_SLOPE: f64 = 2.0 * PI;
 /// Section lift coefficient at angle of attack `alpha_rad` from the nose-tail line, for camber
 /// ratio `f0_c` and the lifting-surface factors `k` \[-\], and its slope dC_L/d alpha \[1/rad\].
 pub fn lift(alpha_rad: f64, f0_c: f64, k: &Corrections) -> (f64, f64) {
-    let f = f0_c / k.camber;
-    // Morgan et al. 1968: alpha_i(3D) = k_a alpha_i(2D, f0/c / k_c) + k_t BTF.
-    let ideal = k.ideal_angle * mean_line::ideal_angle_rad(f) + k.thickness_angle_rad;
-    (mean_line::ideal_lift(f) + LIFT_SLOPE * (alpha_rad - ideal), LIFT_SLOPE)
+    let ideal = ideal_angle_rad(f0_c, k);
+    (mean_line::ideal_lift(f0_c / k.camber) + LIFT_SLOPE * (alpha_rad - ideal), LIFT_SLOPE)
+}
+
+/// The blade's ideal angle from the nose-tail line with the lifting-surface factors `k`: Morgan et
+/// al. 1968's alpha_i(3D) = k_a alpha_i(2D, f0/c / k_c) + k_t BTF \[rad\]; at it the blade meets the
+/// flow shock-free, as its 2D section does at its own ideal angle.
+pub fn ideal_angle_rad(f0_c: f64, k: &Corrections) -> f64 {
+    k.ideal_angle * mean_line::ideal_angle_rad(f0_c / k.camber) + k.thickness_angle_rad
+}
+
+/// The angle from the nose-tail line at which the section's own 2D shape meets the flow as the
+/// blade does at `alpha_rad`: the same distance from the ideal angle (the 2D section's, against
+/// the blade's [`ideal_angle_rad`]) \[rad\]. The leading edge's pressure peak, which sets the
+/// cavitation bucket, follows that distance.
+pub fn equivalent_2d_angle_rad(alpha_rad: f64, f0_c: f64, k: &Corrections) -> f64 {
+    alpha_rad - ideal_angle_rad(f0_c, k) + mean_line::ideal_angle_rad(f0_c)
 }
 
 #[cfg(test)]
@@ -41,6 +54,11 @@ mod tests {
         let morgan = Corrections { camber: 2.0, ideal_angle: 2.0, thickness_angle_rad: 0.01 };
         let (cl3, _) = lift(1.54f64.to_radians(), 0.0679, &morgan);
         assert!((cl3 - (0.5 - 2.0 * PI * 0.01)).abs() < 1e-12, "{cl3}");
+        // The equivalent 2D angle: unchanged without corrections; at the blade's ideal angle, the
+        // section's own ideal angle.
+        assert_eq!(equivalent_2d_angle_rad(0.03, 0.02, &Corrections::NONE), 0.03);
+        let at_ideal = equivalent_2d_angle_rad(ideal_angle_rad(0.0679, &morgan), 0.0679, &morgan);
+        assert!((at_ideal - 1.54f64.to_radians()).abs() < 1e-12);
         // Symmetry: no camber, no angle, no thickness, no lift.
         assert_eq!(lift(0.0, 0.0, &Corrections { camber: 1.7, ..Corrections::NONE }).0, 0.0);
     }
