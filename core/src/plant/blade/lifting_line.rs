@@ -322,7 +322,7 @@ mod tests {
     #[test]
     fn converged_in_the_number_of_panels() {
         // DTMB 4119 from heavy load (J 0.3) to design (0.833): 10, 20 and 80 horseshoes agree on
-        // KT and KQ to 0.5 % (measured: 0.3 % at 10, under 0.05 % at 20). A wake pitch taken from
+        // KT and KQ to 0.5 % (measured: under 0.1 % at 10 and at 20). A wake pitch taken from
         // each trailer's own inflow near the tip did not converge (KT at J 0.5 fell 18 % from 20 to 60).
         let g = BladeGeometry::from_csv(P4119, 3, 0.2).unwrap();
         let flow = Flow::fresh_water(0.3048, 10.0);
