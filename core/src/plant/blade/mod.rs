@@ -80,6 +80,11 @@ pub struct SectionLoad {
     pub beta_i_rad: f64,
     /// Angle of attack from the section's nose-tail line (geometric pitch angle minus beta_i) \[rad\].
     pub alpha_rad: f64,
+    /// The angle from the nose-tail line at which the section's own 2D shape meets the flow as the
+    /// blade does: `alpha_rad` less the blade's ideal angle (Morgan's lifting-surface corrections)
+    /// plus the section's own; the cavitation buckets are read at it \[rad\].
+    #[serde(default)]
+    pub alpha_2d_rad: f64,
     /// Total inflow speed at the section V* \[m/s\].
     pub v_star_m_s: f64,
     /// Section lift coefficient \[-\].
