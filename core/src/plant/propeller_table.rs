@@ -342,7 +342,7 @@ mod run_tests {
 
     /// head-seas-ss6 on the ship's B-series-equivalent geometry (Z 5, P/D 1.0, Ae/A0 0.75), now
     /// through the lifting line's table, against the polynomial of the same Z, P/D, Ae/A0. The two
-    /// curves are different models: on B4-70 the lifting line is 3-16 % off the polynomial over
+    /// curves are different models: on B4-70 the lifting line is up to 12 % off the polynomial over
     /// J 0.2-0.8 (docs/propeller.md), so the run differs where the propeller's coefficients enter.
     /// Measured: turbine power -6.2 %, shaft speed -3.2 %, ship speed +0.18 %, thrust +0.7 %.
     /// At the run's mean J 0.745 the lifting line's kT is 16 % and its kQ 8 % above the polynomial's.
