@@ -724,3 +724,37 @@ fn the_head_seas_watch_texts_quote_their_own_runs() {
         }
     }
 }
+
+/// The numbers in the other studies' "What to watch" that a run can give: the quarter turn in
+/// sea state 6 (its mean added resistance against sea state 3's, and their ratio) and the crash
+/// stop (the time from the order to the lowest ship speed), each as its own preset's run prints
+/// it. The wave heights of the quarter turn's text are the sea states' (Table 2.4), said beside
+/// their square.
+#[test]
+fn the_quarter_turn_and_crash_stop_watch_texts_quote_their_own_runs() {
+    use aes_core::scenario::presets::preset;
+    let mean = |r: &RunResult, s: &str| col(r, s).iter().sum::<f64>() / col(r, s).len() as f64;
+    let ss3 = run(&preset("quarter-turn-ss3").unwrap()).unwrap();
+    let ss6 = run(&preset("quarter-turn-ss6").unwrap()).unwrap();
+    let (m3, m6) = (mean(&ss3, "added_resistance_n"), mean(&ss6, "added_resistance_n"));
+    let text = watch_text("quarter-turn-ss6");
+    let words = format!(
+        "About {:.0} times the mean added resistance of sea state 3 ({:.0} kN against {:.0} kN over the run)",
+        m6 / m3,
+        m6 / 1e3,
+        m3 / 1e3
+    );
+    assert!(text.contains(&words), "the runs give \"{words}\"; the text says: {text}");
+    let sq = |a: f64, b: f64| format!("({a:.1} m / {b:.1} m)^2 = {:.0}", (a / b) * (a / b));
+    let heights = sq(aes_core::sea::waves::sea_state(6).unwrap().1, aes_core::sea::waves::sea_state(3).unwrap().1);
+    assert!(text.contains(&heights), "the sea states give \"{heights}\"; the text says: {text}");
+
+    let sc = preset("crash-stop").unwrap();
+    let order = sc.commands.iter().find(|c| c.crash_stop).expect("the crash stop's order").t_s;
+    let r = run(&sc).unwrap();
+    let v = col(&r, "ship_speed_kn");
+    let lowest = (0..v.len()).min_by(|&a, &b| v[a].total_cmp(&v[b])).unwrap();
+    let words = format!("falls to zero about {:.0} s after the order", col(&r, "t_s")[lowest] - order);
+    let text = watch_text("crash-stop");
+    assert!(text.contains(&words), "the run gives \"{words}\"; the text says: {text}");
+}
