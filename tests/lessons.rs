@@ -707,7 +707,8 @@ fn the_head_seas_watch_texts_quote_their_own_runs() {
             said.push(number);
         }
         // Every number of the text is one of these, or a level named (h/R 1 and 1.1, seed 1), or
-        // the swing with the propellers down (0.2 % and 2 %: another run, not checked here).
+        // the swing with the propellers down (0.2 % and 2 %: another run, checked in
+        // the_quarter_turn_and_crash_stop_watch_texts_quote_their_own_runs).
         let mut numbers: Vec<String> = Vec::new();
         let mut cur = String::new();
         for c in text.chars().chain(std::iter::once(' ')) {
@@ -727,7 +728,8 @@ fn the_head_seas_watch_texts_quote_their_own_runs() {
 
 /// The numbers in the other studies' "What to watch" that a run can give: the quarter turn in
 /// sea state 6 (its mean added resistance against sea state 3's, and their ratio) and the crash
-/// stop (the time from the order to the lowest ship speed), each as its own preset's run prints
+/// stop (the time from the order to the lowest ship speed) and head-seas-ss6's swings with the
+/// propellers kept down, each as its own preset's run prints
 /// it. The wave heights of the quarter turn's text are the sea states' (Table 2.4), said beside
 /// their square.
 #[test]
@@ -748,6 +750,21 @@ fn the_quarter_turn_and_crash_stop_watch_texts_quote_their_own_runs() {
     let sq = |a: f64, b: f64| format!("({a:.1} m / {b:.1} m)^2 = {:.0}", (a / b) * (a / b));
     let heights = sq(aes_core::sea::waves::sea_state(6).unwrap().1, aes_core::sea::waves::sea_state(3).unwrap().1);
     assert!(text.contains(&heights), "the sea states give \"{heights}\"; the text says: {text}");
+
+    // head-seas-ss6's swings "when the propellers stay down": its own run without surface losses,
+    // the turbines' and the bus's highest less lowest over the run.
+    let mut calm = preset("head-seas-ss6").unwrap();
+    calm.seakeeping.surface_losses = false;
+    let r = run(&calm).unwrap();
+    let swing =
+        |s: &str| 100.0 * (extreme(&r, &[s], Stat::Max, 0.0, end(&r)) - extreme(&r, &[s], Stat::Min, 0.0, end(&r)));
+    let words = format!(
+        "far beyond the {:.1} % (turbines) and {:.0} % (bus) they move in these seas when the propellers stay down",
+        swing("turbine_speed_pu"),
+        swing("bus_voltage_pu")
+    );
+    let text = watch_text("head-seas-ss6");
+    assert!(text.contains(&words), "the run gives \"{words}\"; the text says: {text}");
 
     let sc = preset("crash-stop").unwrap();
     let order = sc.commands.iter().find(|c| c.crash_stop).expect("the crash stop's order").t_s;
