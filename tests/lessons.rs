@@ -728,7 +728,8 @@ fn the_head_seas_watch_texts_quote_their_own_runs() {
 
 /// The numbers in the other studies' "What to watch" that a run can give: the quarter turn in
 /// sea state 6 (its mean added resistance against sea state 3's, and their ratio) and the crash
-/// stop (the time from the order to the lowest ship speed) and head-seas-ss6's swings with the
+/// stop (the time from the order to the lowest ship speed), the thesis as printed (its heave and
+/// its bus) and head-seas-ss6's swings with the
 /// propellers kept down, each as its own preset's run prints
 /// it. The wave heights of the quarter turn's text are the sea states' (Table 2.4), said beside
 /// their square.
@@ -765,6 +766,17 @@ fn the_quarter_turn_and_crash_stop_watch_texts_quote_their_own_runs() {
     );
     let text = watch_text("head-seas-ss6");
     assert!(text.contains(&words), "the run gives \"{words}\"; the text says: {text}");
+
+    // The thesis as printed: the largest heave and the bus's set point, where the run starts.
+    let r = run(&preset("as-printed").unwrap()).unwrap();
+    let heave = col(&r, "heave_m").iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+    let text = watch_text("as-printed");
+    for words in [
+        format!("heaves by about {heave:.0} m in SS6"),
+        format!("The bus starts at its set point, {:.1} kV", col(&r, "bus_voltage_v")[0] / 1e3),
+    ] {
+        assert!(text.contains(&words), "the run gives \"{words}\"; the text says: {text}");
+    }
 
     let sc = preset("crash-stop").unwrap();
     let order = sc.commands.iter().find(|c| c.crash_stop).expect("the crash stop's order").t_s;
