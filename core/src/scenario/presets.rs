@@ -131,7 +131,7 @@ pub fn acceleration_lqg_ltr() -> Scenario {
     s.name = "acceleration-lqg-ltr".into();
     s.description = "The acceleration from 25 knots to full ahead (thesis ch. 5.2.1) with one LQG/LTR controller \
          per turbine-generator set (thesis ch. 3.1, designed on our own drive train at 25 knots) in place of the \
-         governor and field PIs, with the turbines' speed weighted 10 times the bus voltage: the step from 0.4 to \
+         governor and field PIs, with the turbines' speed weighted 10 times the bus voltage: the step from 0.34 to \
          1 pu of motor power is more than the turbines can follow, and with equal weights the compensator holds the \
          bus by taking the turbines' kinetic energy until they stall (0.14 pu). Weighted, they slow to 0.69 pu and \
          the bus dips 40 %, as with the PIs: no linear design rides out this step. Compare with the \
