@@ -15,6 +15,7 @@ use crate::numerics::units::{kn_to_m_s, m_s_to_kn};
 use crate::numerics::Integrator;
 use crate::scenario::Scenario;
 use crate::ship::hull::N_SHAFTS;
+use crate::ship::maneuvering::ManeuveringForces;
 use crate::sim::plant::{Held, HullModel, Plant, State, HEADING, NX, SURGE, SWAY, X_POS, YAW_RATE, Y_POS};
 use serde::Serialize;
 
@@ -233,6 +234,39 @@ fn zigzag(trial: &Trial, deg: f64) -> ZigZag {
     }
 }
 
+/// A maneuver's track that stayed physical, or a refusal naming the maneuver, the hull forces and
+/// the range they hold: at a fixed shaft speed (or none) a ship cannot gain speed in a turn, a
+/// zig-zag or a coast, so a speed past its approach speed by half (or any number that is not
+/// finite) is the hull model diverging, and no verdict may be given on its numbers.
+fn held_physical(sc: &Scenario, name: &str, track: &[Sample], approach_kn: f64) -> Result<(), String> {
+    let limit_kn = 1.5 * approach_kn;
+    let bad = track.iter().find(|s| {
+        ![s.t_s, s.x_m, s.y_m, s.heading_deg, s.speed_kn].iter().all(|v| v.is_finite()) || s.speed_kn > limit_kn
+    });
+    // The run stops before the first state that is not finite, after the speed has run away.
+    let Some(s) = bad.copied() else {
+        return Ok(());
+    };
+    let forces = serde_json::to_value(sc.hull.forces).ok().and_then(|v| v.as_str().map(str::to_string));
+    let forces = forces.unwrap_or_default();
+    let range = <ManeuveringForces as crate::params::Param>::choices()
+        .iter()
+        .find(|(n, _)| *n == forces)
+        .map_or(String::new(), |(_, label)| format!(" ({label})"));
+    let speed = match s.speed_kn {
+        v if !v.is_finite() => "not a number".to_string(),
+        v if v < 1e6 => format!("{v:.1} kn"),
+        v => format!("{v:.2e} kn"),
+    };
+    Err(format!(
+        "the {name} diverged under hull.forces = \"{forces}\"{range}: at t = {:.1} s the speed was {speed}, \
+         past 1.5 times the approach speed of {approach_kn} kn, which a ship at a fixed shaft speed cannot reach; \
+         these hull forces do not hold this maneuver, so the booklet judges none of its numbers (hull.forces = \
+         \"own_hull\" holds it)",
+        s.t_s
+    ))
+}
+
 /// IMO's first-overshoot limit of the 10/10 zig-zag for L/V \[s\]: 10 deg below 10 s, 20 deg above
 /// 30 s, 5 + (L/V)/2 between; and the second overshoot's: 25, 40, 17.5 + 0.75 L/V.
 pub fn zigzag_10_limits(l_over_v_s: f64) -> (f64, f64) {
@@ -259,10 +293,23 @@ pub fn booklet(sc: &Scenario) -> Result<Booklet, String> {
     let trial = Trial { plant, omega, u0, rate: sc.rudder.swing_rate_rad_s };
     let hard = TURNING_RUDDER_DEG.to_radians();
     let track = trial.run(true, |_, change, _| (change < 540.0).then_some(hard));
+    let held = |name: &str, track: &[Sample]| held_physical(sc, name, track, approach_kn);
+    held("turning circle", &track)?;
     let turning = turning(track, approach_kn)?;
     let zigzag_10 = zigzag(&trial, 10.0);
+    held("10/10 zig-zag", &zigzag_10.track)?;
     let zigzag_20 = zigzag(&trial, 20.0);
+    held("20/20 zig-zag", &zigzag_20.track)?;
+    for z in [&zigzag_10, &zigzag_20] {
+        if !(z.first_overshoot_deg.is_finite() && z.second_overshoot_deg.is_finite()) {
+            return Err(format!(
+                "the {0}/{0} zig-zag did not reach its heading checks within {MAX_S} s, so it has no overshoots to judge",
+                z.rudder_deg
+            ));
+        }
+    }
     let coast = trial.run(false, |_, _, speed| (m_s_to_kn(speed) > STOPPED_KN).then_some(0.0));
+    held("coasting stop", &coast)?;
     let end = coast[coast.len() - 1];
     let coasting = Coasting { to_kn: STOPPED_KN, track_reach_m: end.x_m, time_s: end.t_s };
     let (static_drift, pure_yaw) = captive(&trial, sc)?;
@@ -386,6 +433,18 @@ mod tests {
 
     /// The refusal of a straight-line hull names the field and a study that turns, and that study
     /// does give a booklet (the advice is one the reader can follow).
+    #[test]
+    fn a_diverging_maneuver_is_refused_naming_it_and_the_hull_forces() {
+        // Table 2.3's polynomials as printed run away in the turning circle (the advance was
+        // -2e21 m and judged "pass" against IMO's 4.5 L before this refusal).
+        let sc = crate::scenario::presets::preset("as-printed").unwrap();
+        let e = booklet(&sc).unwrap_err();
+        for words in ["the turning circle diverged", "hull.forces = \"table_2_3\"", "Table 2.3", "judges none"] {
+            assert!(e.contains(words), "{words:?} not in {e}");
+        }
+        assert!(!e.contains("NaN") && !e.contains("inf"), "{e}");
+    }
+
     #[test]
     fn a_surge_hull_is_refused_naming_the_field_and_a_study_that_runs() {
         let sc = crate::scenario::presets::preset("startup").expect("startup");
