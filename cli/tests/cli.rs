@@ -766,3 +766,21 @@ fn run_on_a_blade_table() {
     let _ = std::fs::remove_file(&bad);
     assert!(!ok && err.contains("row 4 (r/R 0.5), column c_D: a chord of 0"), "{err}");
 }
+
+/// A lesson value that the run would not use is an error naming it: a path that is no control of
+/// the lesson (a typo, another lesson's control, an empty path) or a value the control refuses;
+/// before, each exited 0 and ran the lesson's defaults.
+#[test]
+fn lesson_values_that_would_be_ignored_are_refused() {
+    for (value, words) in [
+        ("foo.bar=5", "'foo.bar' is not a control of lesson waves; its controls are sea.sea_state"),
+        ("controllers.field.kp=0.001", "'controllers.field.kp' is not a control of lesson waves"),
+        ("=5", "an empty path is not a control of lesson waves"),
+        ("sea.sea_state=abc", "\"abc\" is not a number; this lesson's range is 2 to 6"),
+        ("sea.sea_state=99", "99 is outside this lesson's range, 2 to 6"),
+    ] {
+        let (ok, out, err) = aes_sim(&["lesson", "waves", "--value", value]);
+        assert!(!ok && out.is_empty(), "--value {value}: exit 0 with {out}");
+        assert!(err.contains(words), "--value {value}: {err}");
+    }
+}

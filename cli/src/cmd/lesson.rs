@@ -39,6 +39,18 @@ pub fn run(a: Args) -> Result<(), Failure> {
         let mut out = Vec::new();
         for v in list.iter().filter(|v| v.as_str() != "default") {
             let (p, x) = v.split_once('=').ok_or_else(|| format!("--{flag} '{}': expected PATH=VALUE", shorten(v)))?;
+            // A path that is no control of this lesson would be ignored by the run: refused by name.
+            if !l.controls.iter().any(|c| c.path == p) {
+                let paths: Vec<&str> = l.controls.iter().map(|c| c.path).collect();
+                let what = if p.is_empty() { "an empty path".to_string() } else { format!("'{}'", shorten(p)) };
+                return Err(format!(
+                    "--{flag} '{}': {what} is not a control of lesson {}; its controls are {}",
+                    shorten(v),
+                    l.name,
+                    paths.join(", ")
+                )
+                .into());
+            }
             out.push((p.to_string(), x.to_string()));
         }
         Ok(out)
@@ -55,8 +67,11 @@ pub fn run(a: Args) -> Result<(), Failure> {
         let given = pairs(flag, list)?;
         let given: Vec<(&str, &str)> = given.iter().map(|(p, v)| (p.as_str(), v.as_str())).collect();
         let o = lessons::open(&l, &given)?;
-        for r in &o.refused {
-            eprintln!("refused (--{flag}): {r}");
+        // A refused value is an error here (a link keeps the rest and says so; a command must
+        // not run something other than what it was given).
+        if !o.refused.is_empty() {
+            let said: Vec<String> = o.refused.iter().map(|r| format!("--{flag}: {r}")).collect();
+            return Err(said.join("; ").into());
         }
         for s in &o.snapped {
             eprintln!("moved to a stop (--{flag}): {s}");
