@@ -27,6 +27,23 @@ impl From<&str> for Failure {
 
 /// Writes text to standard output; a closed pipe ends the command quietly (exit 0).
 pub fn emit(text: &str) -> Result<(), Failure> {
+    // Every human-readable output passes here: a scenario's name or a file's text never reaches
+    // the terminal raw (ESC, BEL, CR), as errors and JSON already escape them; newlines and tabs
+    // are the output's own layout.
+    let text: String =
+        if text.chars().any(|c| c.is_control() && c != '\n' && c != '\t') {
+            text.chars()
+                .map(|c| {
+                    if c.is_control() && c != '\n' && c != '\t' {
+                        c.escape_default().to_string()
+                    } else {
+                        c.to_string()
+                    }
+                })
+                .collect()
+        } else {
+            text.to_string()
+        };
     let mut out = std::io::stdout().lock();
     let r = out.write_all(text.as_bytes()).and_then(|()| out.write_all(b"\n")).and_then(|()| out.flush());
     match r {

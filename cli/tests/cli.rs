@@ -784,3 +784,35 @@ fn lesson_values_that_would_be_ignored_are_refused() {
         assert!(err.contains(words), "--value {value}: {err}");
     }
 }
+
+/// A storage sizing of no length was a table of zeros; it is refused naming the field and the
+/// least it needs.
+#[test]
+fn a_storage_sizing_of_no_length_is_refused() {
+    let (ok, out, err) = aes_sim(&["storage-sizing", "preset:startup", "--duration-s", "0"]);
+    assert!(!ok && out.is_empty(), "{out}");
+    assert!(err.contains("sim.duration_s = 0: a storage sizing needs at least 10 s"), "{err}");
+}
+
+/// Human-readable tables escape the control characters of a scenario's name (ESC, BEL, CR,
+/// newline), as errors and JSON do.
+#[test]
+fn tables_escape_a_scenarios_control_characters() {
+    let (ok, text, _) = aes_sim(&["preset", "turn-360"]);
+    assert!(ok);
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["name"] = serde_json::json!("evil\u{1b}[31m\u{7}\r\nname");
+    let path = std::env::temp_dir().join(format!("aes-cli-evil-{}.json", std::process::id()));
+    std::fs::write(&path, v.to_string()).unwrap();
+    let p = path.to_str().unwrap();
+    for args in [
+        vec!["maneuvers", p, "--markdown"],
+        vec!["storage-sizing", p, "--energy-mj", "25", "--power-mw", "5", "--duration-s", "10"],
+    ] {
+        let (ok, out, err) = aes_sim(&args);
+        assert!(ok, "{args:?}: {err}");
+        assert!(!out.chars().any(|c| c.is_control() && c != '\n'), "{args:?}: {out:?}");
+        assert!(out.contains("evil\\u{1b}[31m\\u{7}\\r\\nname"), "{args:?}: {out}");
+    }
+    std::fs::remove_file(&path).ok();
+}

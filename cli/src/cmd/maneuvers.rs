@@ -1,6 +1,6 @@
 //! `aes-sim maneuvers`: the standard maneuvers booklet (IMO MSC.137(76)) of a scenario's ship.
 
-use crate::common::{emit_json, load, Failure};
+use crate::common::{emit, emit_json, load, Failure};
 use aes_core::studies::maneuvers::{booklet, Booklet};
 
 // The command line of `aes-sim maneuvers`.
@@ -24,8 +24,7 @@ pub fn run(Args { file, sets, markdown, no_tracks }: Args) -> Result<(), Failure
     let sc = load(&file, &sets)?;
     let mut b = booklet(&sc)?;
     if markdown {
-        print!("{}", to_markdown(&b));
-        return Ok(());
+        return emit(to_markdown(&b).trim_end_matches('\n'));
     }
     if no_tracks {
         b.turning.track.clear();
@@ -47,7 +46,11 @@ pub fn to_markdown(b: &Booklet) -> String {
     let t = &b.turning;
     let mut s = format!(
         "Maneuvers of `{}` ({} forces, L = {:.1} m) from {:.1} kn with the shafts held at {:.0} rpm.\n\n",
-        b.scenario, b.model, l, b.approach_kn, b.shaft_rpm
+        crate::common::shorten(&b.scenario),
+        b.model,
+        l,
+        b.approach_kn,
+        b.shaft_rpm
     );
     s += "| maneuver | value | in ship lengths |\n|---|---|---|\n";
     for (name, m) in [

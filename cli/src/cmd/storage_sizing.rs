@@ -109,7 +109,8 @@ fn table(s: &Sizing) -> String {
          brake: energy burnt [MJ]; given: net energy the storages gave the buses [MJ]; charge: lowest-highest,\n\
          and the share of the run in the taper before a limit (where the storage gives or takes less and less);\n\
          rating: share of the run at the power rating; cycles: equivalent full cycles an hour.\n\n",
-        s.scenario, s.duration_s
+        crate::common::shorten(&s.scenario),
+        s.duration_s
     );
     t.push_str(
         "  E MJ  P MW | speed std     | bus pu      | turb. | fuel MW, <30 % load  | brake | given  | charge, taper   | rating | cycles | warnings\n",

@@ -231,6 +231,10 @@ impl StorageSizing {
     }
 }
 
+/// The shortest run a sizing compares \[s\]: about one modal wave period (6.3 s in sea state 2,
+/// 12.4 s in sea state 6, Table 2.4), the least that shows a swing of the load.
+pub const MIN_DURATION_S: f64 = 10.0;
+
 impl Study for StorageSizing {
     const KIND: &'static str = "storage-sizing";
     const ITEM: &'static str = "size";
@@ -241,6 +245,14 @@ impl Study for StorageSizing {
 
     fn new(spec: StorageSizingSpec) -> Result<StorageSizing, String> {
         spec.scenario.validate().map_err(|e| format!("its scenario is not valid: {e}"))?;
+        // A run of no length has no swings to compare: its table would be zeros.
+        let d = spec.scenario.sim.duration_s;
+        if !(d >= MIN_DURATION_S) {
+            return Err(format!(
+                "sim.duration_s = {d}: a storage sizing needs at least {MIN_DURATION_S} s (the storages' effect is on \
+                 the load's swings, which a shorter run does not show)"
+            ));
+        }
         let mut runs = vec![without(&spec.scenario)];
         runs.extend(sizes(&spec.scenario, &spec.energies_j, &spec.powers_w)?);
         Ok(StorageSizing { spec, runs })
