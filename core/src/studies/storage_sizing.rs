@@ -247,7 +247,7 @@ impl Study for StorageSizing {
         spec.scenario.validate().map_err(|e| format!("its scenario is not valid: {e}"))?;
         // A run of no length has no swings to compare: its table would be zeros.
         let d = spec.scenario.sim.duration_s;
-        if !(d >= MIN_DURATION_S) {
+        if d.is_nan() || d < MIN_DURATION_S {
             return Err(format!(
                 "sim.duration_s = {d}: a storage sizing needs at least {MIN_DURATION_S} s (the storages' effect is on \
                  the load's swings, which a shorter run does not show)"
