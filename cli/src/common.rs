@@ -171,8 +171,9 @@ impl OutFile {
     }
 }
 
-/// The temporary file being written is removed when SIGINT or SIGTERM stops the command
-/// (Ctrl-C, a scheduler's kill); the signal then ends the command as it would have.
+/// The temporary file being written is removed when SIGINT, SIGTERM, SIGHUP or SIGQUIT stops the
+/// command (Ctrl-C, a scheduler's kill, a closed terminal, Ctrl-\\); the signal then ends the
+/// command as it would have.
 #[cfg(unix)]
 mod on_signal {
     use std::sync::atomic::{AtomicPtr, Ordering};
@@ -196,11 +197,11 @@ mod on_signal {
     }
 
     /// Marks `path` as the temporary file being written (None: none now). The handler is
-    /// installed at the first call, for SIGINT and SIGTERM, unless the signal was ignored (a
+    /// installed at the first call, for SIGINT, SIGTERM, SIGHUP and SIGQUIT, unless the signal was ignored (a
     /// command started with `nohup`, or in the background by a script, stays deaf to it).
     pub fn writing(path: Option<&std::path::Path>) {
         INSTALLED.call_once(|| {
-            for sig in [libc::SIGINT, libc::SIGTERM] {
+            for sig in [libc::SIGINT, libc::SIGTERM, libc::SIGHUP, libc::SIGQUIT] {
                 // SAFETY: the handler only calls async-signal-safe functions.
                 unsafe {
                     let before = libc::signal(sig, remove_and_stop as *const () as libc::sighandler_t);

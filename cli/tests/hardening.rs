@@ -629,15 +629,23 @@ fn class14_every_message_is_short_and_escaped() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// Issue 46, case 7: a command stopped by SIGTERM while it writes its output removes its
+/// Issue 46, case 7 and issue 57, case 7: a command stopped by SIGTERM, SIGHUP or SIGQUIT while it writes its output removes its
 /// temporary file (and ends by the signal as before). The trace of a 2,000 s run recorded every
 /// 0.01 s (200,000 rows) takes long enough to write that the temporary file is seen and the
 /// signal sent before the rename.
 #[cfg(unix)]
 #[test]
 fn class15_a_stopped_write_leaves_no_temporary_file() {
+    // SIGTERM 15, SIGHUP 1 (a closed terminal: it left 25-102 MB behind), SIGQUIT 3 on Linux.
+    for (name, number) in [("TERM", 15), ("HUP", 1), ("QUIT", 3)] {
+        stopped_write_leaves_no_temporary_file(name, number);
+    }
+}
+
+#[cfg(unix)]
+fn stopped_write_leaves_no_temporary_file(name: &str, number: i32) {
     use std::os::unix::process::ExitStatusExt;
-    let dir = scratch("harden15");
+    let dir = scratch(&format!("harden15-{name}"));
     let out = dir.join("trace.csv");
     let temporary = |dir: &std::path::Path| {
         std::fs::read_dir(dir)
@@ -663,12 +671,11 @@ fn class15_a_stopped_write_leaves_no_temporary_file() {
         std::thread::sleep(Duration::from_micros(200));
     }
     let seen = writing(&dir);
-    let killed = Command::new("kill").args(["-TERM", &child.id().to_string()]).status().unwrap();
+    let killed = Command::new("kill").args([&format!("-{name}"), &child.id().to_string()]).status().unwrap();
     let status = child.wait().unwrap();
-    assert!(seen && killed.success(), "the temporary file was not seen before the command ended");
-    // SIGTERM is 15 on Linux.
-    assert_eq!(status.signal(), Some(15), "{status:?}");
-    assert!(!temporary(&dir), "a temporary file is left");
+    assert!(seen && killed.success(), "SIG{name}: the temporary file was not seen before the command ended");
+    assert_eq!(status.signal(), Some(number), "SIG{name}: {status:?}");
+    assert!(!temporary(&dir), "SIG{name}: a temporary file is left");
     assert!(!out.exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
