@@ -816,3 +816,30 @@ fn tables_escape_a_scenarios_control_characters() {
     }
     std::fs::remove_file(&path).ok();
 }
+
+/// A setting's error names what is wrong: an empty path, a value addressed as a section (named by
+/// the deepest real path, not its parent), and an optional section `aes-sim params` lists but the
+/// preset leaves unset (before: "no such parameter" for all three).
+#[test]
+fn set_errors_name_the_deepest_real_path() {
+    for (set, words) in [
+        ("=5", "(empty path) = 5: a setting needs a parameter's path before its '='"),
+        ("ship.hull.propeller_x_m.x=5", "ship.hull.propeller_x_m is a single value, not a section: it has no field x"),
+        ("ship.hull.bilge_keels.length_m=20", "needs ship.hull.bilge_keels.breadth_m (Bilge keel breadth)"),
+    ] {
+        let (ok, _, err) = aes_sim(&["run", "preset:startup", "--set", set, "--set", "sim.duration_s=1"]);
+        assert!(!ok, "--set {set}");
+        assert!(err.contains(words) && !err.contains("no such parameter"), "--set {set}: {err}");
+    }
+    let (ok, _, err) = aes_sim(&[
+        "run",
+        "preset:startup",
+        "--set",
+        "ship.hull.bilge_keels.length_m=20",
+        "--set",
+        "ship.hull.bilge_keels.breadth_m=0.6",
+        "--set",
+        "sim.duration_s=1",
+    ]);
+    assert!(ok || !err.contains("no such parameter"), "{err}");
+}

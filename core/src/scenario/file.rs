@@ -185,19 +185,44 @@ fn arrays_for_objects(input: &serde_json::Value, schema: &serde_json::Value, pat
 
 /// Writes `value_text` (JSON, or else a string) at dotted `path` of a scenario's JSON.
 fn set_path(root: &mut serde_json::Value, path: &str, value_text: &str) -> Result<(), ScenarioError> {
+    if path.is_empty() {
+        return Err(one_error(
+            "(empty path)",
+            value_text,
+            &"a setting needs a parameter's path before its '=' (`aes-sim params` lists them)",
+        ));
+    }
     let new_value: serde_json::Value =
         serde_json::from_str(value_text).unwrap_or_else(|_| serde_json::Value::String(value_text.to_string()));
+    // A path the registry declares may pass through an optional section that is unset here
+    // (ship.hull.bilge_keels): the section is made, and the reader then asks for what it lacks.
+    let declared = crate::scenario::registry::find(path).is_some();
     let mut node = root;
     let parts: Vec<&str> = path.split('.').collect();
     for (i, part) in parts.iter().enumerate() {
         let last = i + 1 == parts.len();
         let here = parts[..=i].join(".");
+        if declared && node.is_null() {
+            *node = serde_json::Value::Object(serde_json::Map::new());
+        }
         node = match node {
             serde_json::Value::Object(map) => {
                 if !map.contains_key(*part) {
-                    if last {
+                    if last || declared {
                         // Optional fields (e.g. commands.N.heading_deg) are absent when unset.
                         map.insert(part.to_string(), serde_json::Value::Null);
+                    } else if crate::scenario::registry::find(&here)
+                        .is_some_and(|m| !["section", "pair", "list"].contains(&m.kind))
+                    {
+                        // An unset optional value, not a section: named as the deepest real path.
+                        return Err(one_error(
+                            path,
+                            value_text,
+                            &format!(
+                                "{here} is a single value, not a section: it has no field {}",
+                                parts[i + 1..].join(".")
+                            ),
+                        ));
                     } else {
                         return Err(unknown_path(&here, value_text));
                     }
@@ -211,7 +236,15 @@ fn set_path(root: &mut serde_json::Value, path: &str, value_text: &str) -> Resul
                     one_error(&here, value_text, &format!("index out of range (0 to {})", len.saturating_sub(1)))
                 })?
             }
-            _ => return Err(unknown_path(&here, value_text)),
+            // A value, not a section: the deepest real path is the one before this part.
+            _ => {
+                let parent = parts[..i].join(".");
+                return Err(one_error(
+                    path,
+                    value_text,
+                    &format!("{parent} is a single value, not a section: it has no field {}", parts[i..].join(".")),
+                ));
+            }
         };
     }
     *node = new_value;
