@@ -787,3 +787,26 @@ fn the_quarter_turn_and_crash_stop_watch_texts_quote_their_own_runs() {
     let text = watch_text("crash-stop");
     assert!(text.contains(&words), "the run gives \"{words}\"; the text says: {text}");
 }
+
+/// acceleration-lqg-ltr's "What to watch": the step of motor power it quotes (before the order,
+/// against both motors' rating) and, on the thesis' own ship with equal weights, the bus held
+/// within 5 %.
+#[test]
+fn the_lqg_watch_text_quotes_its_own_runs() {
+    use aes_core::scenario::presets::preset;
+    let sc = preset("acceleration-lqg-ltr").unwrap();
+    let order = sc.commands[1].t_s;
+    let r = run(&sc).unwrap();
+    let before = value_at(&r, "p_motor_w", order) / (2.0 * sc.plant.motor.rated_power_w);
+    let text = watch_text("acceleration-lqg-ltr");
+    let words = format!("The step from {before:.2} to 1 pu of motor power");
+    assert!(text.contains(&words), "the run gives \"{words}\"; the text says: {text}");
+    let mut own = sc.clone();
+    own.as_printed.table_5_ship = true;
+    own.hull.forces = aes_core::ship::maneuvering::ManeuveringForces::Table23;
+    own.controllers.lqg_ltr.turbine_speed_weight = 1.0;
+    let r = run(&own).unwrap();
+    let dip = 1.0 - extreme(&r, &["bus_voltage_pu"], Stat::Min, order, end(&r));
+    assert!(text.contains("equal weights hold the bus within 5 %"), "{text}");
+    assert!((0.0..0.05).contains(&dip), "the thesis' ship with equal weights dips {dip}");
+}
