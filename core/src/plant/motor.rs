@@ -167,12 +167,13 @@ impl InductionMotor {
         const N: usize = 24;
         let (lo, hi) = (1e-3, 20.0 * self.r_r / (self.l_s + self.l_r));
         let ratio = libm::pow(hi / lo, 1.0 / (N - 1) as f64);
-        let xs: Vec<f64> = (0..N)
-            .scan(lo / ratio, |x, _| {
-                *x *= ratio;
-                Some(*x)
-            })
-            .collect();
+        // On the stack: this runs at every controller sample of a run that goes astern.
+        let mut xs = [0.0; N];
+        let mut x = lo / ratio;
+        for v in xs.iter_mut() {
+            x *= ratio;
+            *v = x;
+        }
         let best = (0..N).max_by(|&a, &b| q(xs[a]).total_cmp(&q(xs[b]))).unwrap_or(0);
         golden_max(q, xs[best.saturating_sub(1)], xs[(best + 1).min(N - 1)], 40)
     }
