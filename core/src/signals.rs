@@ -24,9 +24,9 @@ macro_rules! for_each_signal {
     ($callback:ident) => {
         $callback! {
             TS, "t_s", "s", "time", "Simulated time.", |r| r.t;
-            ShipSpeedKn, "ship_speed_kn", "kn", "ship speed",
-                "Speed through the water, sqrt(u^2 + v^2).", |r| r.ship_speed_kn();
-            SpeedCmdKn, "speed_cmd_kn", "kn", "ordered speed", "Ship speed in force from the orders.",
+            ShipSpeedKn, "ship_speed_kn", "kn", "ship speed (unsigned)",
+                "Speed through the water, sqrt(u^2 + v^2): positive ahead and astern.", |r| r.ship_speed_kn();
+            SpeedCmdKn, "speed_cmd_kn", "kn", "ordered speed (negative: astern)", "Ship speed in force from the orders (negative: astern).",
                 |r| r.speed_cmd_kn();
             PropRpm, "prop_rpm", "rpm", "propeller speed", "Propeller shaft speed, mean of the two shafts.",
                 |r| r.mean_shaft(|s| r.shaft_rpm(s));
