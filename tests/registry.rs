@@ -234,3 +234,48 @@ fn the_stability_tab_takes_its_inputs_from_the_declarations() {
         }
     }
 }
+
+/// Every field a model choice leaves unused (`registry::UNUSED_WITH`) changes nothing in a turn
+/// run under that choice, bit for bit, and the run's warnings name it; a field the choice does
+/// use (its own rudder area) does change the run, so the comparison can fail.
+#[test]
+fn fields_a_model_leaves_unused_change_nothing_and_are_named() {
+    use aes_core::sim::run;
+    let all = registry::all();
+    for u in &registry::UNUSED_WITH {
+        let mut base = aes_core::scenario::presets::preset("turn-90").unwrap();
+        base.sim.duration_s = 40.0;
+        let base = base.with_override(u.choice, u.value).unwrap();
+        let reference = run(&base).unwrap();
+        let yaw = reference.trace.get(aes_core::signals::Signal::YawRateDegS);
+        assert!(yaw.iter().any(|r| r.abs() > 0.1), "{}: the ship does not turn", u.value);
+        assert!(reference.summary.warnings.iter().all(|w| !w.contains("not used")), "{:?}", reference.summary.warnings);
+        // Each plain field, and the first field of each section.
+        let paths = u.fields.iter().map(|f| match f.strip_suffix('.') {
+            Some(_) => all.iter().find(|m| m.path.starts_with(f)).unwrap().path.clone(),
+            None => f.to_string(),
+        });
+        for path in paths {
+            let m = registry::find(&path).unwrap();
+            let value = match &m.default {
+                serde_json::Value::Bool(b) => (!b).to_string(),
+                serde_json::Value::Number(x) => (0.9 * x.as_f64().unwrap()).to_string(),
+                _ => "3.0".to_string(),
+            };
+            let changed = base.with_override(&path, &value).unwrap();
+            let r = run(&changed).unwrap();
+            assert_eq!(r.trace.columns, reference.trace.columns, "{path} = {value} changed the run");
+            let w = r.summary.warnings.join("\n");
+            assert!(
+                w.contains(&format!("{} = \"{}\": ", u.choice, u.value)) && w.contains(&format!("{path} = ")),
+                "{path}: {w}"
+            );
+            assert!(m.unused_with.contains(&format!("{} = \"{}\"", u.choice, u.value)), "{path}");
+        }
+    }
+    // The own hull's rudders do move the run under the own hull's forces.
+    let mut sc = aes_core::scenario::presets::preset("turn-90").unwrap();
+    sc.sim.duration_s = 40.0;
+    let used = sc.with_override("ship.hull.rudder_area_m2", "3.0").unwrap();
+    assert_ne!(run(&used).unwrap().trace.columns, run(&sc).unwrap().trace.columns);
+}

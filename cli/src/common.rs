@@ -270,7 +270,14 @@ pub fn load(file: &str, sets: &[String]) -> Result<Scenario, String> {
     // All at once: fields that change together (a significant height with its peak frequency)
     // are checked together. An error names its field.
     if !pairs.is_empty() {
-        let what = if pairs.len() == 1 { format!("--set {}", shorten(pairs[0].0)) } else { "--set".to_string() };
+        // Every flag's path is named (the error's field may be another that they move together),
+        // the first few of a long list.
+        const NAMED: usize = 4;
+        let mut paths: Vec<String> = pairs.iter().take(NAMED).map(|(p, _)| shorten(p)).collect();
+        if pairs.len() > NAMED {
+            paths.push(format!("and {} more", pairs.len() - NAMED));
+        }
+        let what = format!("--set {}", paths.join(", "));
         sc = sc.with_overrides(&pairs).map_err(|e| format!("{what}: {e}"))?;
     }
     Ok(sc)

@@ -401,6 +401,14 @@ fn overrides_that_belong_together_are_checked_together() {
     }
     let (ok, _, err) = aes_sim(&["run", "preset:head-seas-ss6", "--set", "sea.omega_n_rad_s=0.5"]);
     assert!(!ok && err.contains("sea.h_sig_m = 0: must be set too when sea.omega_n_rad_s is"), "{err}");
+    // Beside another flag, the one that moved the refused field is still named.
+    let (ok, _, err) = aes_sim(&["run", "preset:startup", "--set", "sim.duration_s=1", "--set", "stepping.dt_s=0.003"]);
+    assert!(
+        !ok && err.starts_with(
+            "aes-sim: --set sim.duration_s, stepping.dt_s: stepping.controller_sample_s = 0.005: must be a whole number"
+        ),
+        "{err}"
+    );
 }
 
 /// A scenario or a section given as an array is refused (serde would fill it field by field in

@@ -147,6 +147,18 @@ pub fn num(x: f64) -> String {
     }
 }
 
+/// A derived number (a bound worked out from other fields: 0.1 L T is 7.1000000000000005) to four
+/// significant digits, without trailing zeros.
+pub fn short(x: f64) -> String {
+    if !x.is_finite() || x == 0.0 {
+        return num(x);
+    }
+    let digits = (3 - libm::floor(libm::log10(x.abs())) as i32).clamp(0, 12) as usize;
+    let text = format!("{x:.digits$}");
+    let text = if text.contains('.') { text.trim_end_matches('0').trim_end_matches('.') } else { &text };
+    text.to_string()
+}
+
 /// Collects the problems of a scenario; sections nest the paths.
 #[derive(Debug, Default)]
 pub struct Validator {
@@ -450,6 +462,17 @@ mod tests {
     struct P {
         mass_kg: f64,
         blades: u32,
+    }
+
+    /// A derived bound to four significant digits.
+    #[test]
+    fn short_numbers() {
+        assert_eq!(short(7.1000000000000005), "7.1");
+        assert_eq!(short(0.07100000000000001), "0.071");
+        assert_eq!(short(-14.200000000000001), "-14.2");
+        assert_eq!(short(123456.0), "123456");
+        assert_eq!(short(0.0), "0");
+        assert_eq!(short(f64::NAN), "NaN");
     }
 
     /// A range that other fields closed up says so instead of "from 3 to 0.4".

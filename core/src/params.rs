@@ -121,6 +121,10 @@ pub struct ParamMeta {
     pub base: &'static str,
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
     pub excludes: &'static [&'static str],
+    /// The model choices under which the field is not used, as `path = "value"`
+    /// (`registry::UNUSED_WITH` owns them); set away from its default there, a run warns.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub unused_with: Vec<String>,
 }
 
 impl ParamMeta {
@@ -149,6 +153,7 @@ impl ParamMeta {
             group: d.group,
             base: d.base,
             excludes: d.excludes,
+            unused_with: Vec::new(),
         }
     }
 

@@ -31,7 +31,15 @@ pub fn run(Args { json, markdown }: Args) -> Result<(), Failure> {
                 _ if !m.choices.is_empty() => m.choices.iter().map(|c| c.value).collect::<Vec<_>>().join(" | "),
                 _ => m.kind.to_string(),
             };
-            text.push_str(&format!("{:<44} {:<10} {:<14} {:<28} {}\n", m.path, m.unit, default, range, m.label));
+            let unused = if m.unused_with.is_empty() {
+                String::new()
+            } else {
+                format!(" (not used with {})", m.unused_with.join(" or "))
+            };
+            text.push_str(&format!(
+                "{:<44} {:<10} {:<14} {:<28} {}{unused}\n",
+                m.path, m.unit, default, range, m.label
+            ));
         }
         emit(text.trim_end())?;
     }

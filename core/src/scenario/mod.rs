@@ -546,7 +546,18 @@ impl Scenario {
         let l = &self.plant.loads;
         if l.has_ship_service() {
             let w = 1.0 / (l.filter_inductance_h * l.filter_capacitance_f).sqrt();
-            if w * dt > FILTER_STEP_PER_RAD || self.stepping.integrator != Integrator::Rk4 {
+            // The integrator is blamed when it is the problem, the step only when it is too long.
+            if self.stepping.integrator != Integrator::Rk4 {
+                v.fail(
+                    "stepping.integrator",
+                    "midpoint",
+                    format!(
+                        "must be rk4 with a ship service load (plant.loads.ship_service_w > 0): its filter \
+                         resonates at {:.1} Hz, an undamped oscillation the midpoint rule makes grow",
+                        w / (2.0 * std::f64::consts::PI)
+                    ),
+                );
+            } else if w * dt > FILTER_STEP_PER_RAD {
                 v.fail(
                     "stepping.dt_s",
                     dt,
@@ -830,6 +841,30 @@ mod tests {
         s.stepping.dt_s = 0.01;
         s.stepping.controller_sample_s = 0.01;
         s.validate().unwrap();
+    }
+
+    /// With a ship service filter the integrator is blamed when it is the problem (a step well
+    /// inside the filter's bound with the midpoint rule), the step only when it is too long.
+    #[test]
+    fn ship_service_filter_blames_what_is_wrong() {
+        let mut s = Scenario::default();
+        s.plant.loads.ship_service_w = 1e6;
+        s.stepping.integrator = Integrator::Midpoint;
+        s.stepping.dt_s = 1e-4;
+        s.stepping.controller_sample_s = 1e-3;
+        s.stepping.sea_sample_s = 1e-3;
+        let e = s.validate().unwrap_err();
+        assert_eq!(e.0.len(), 1, "{e}");
+        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("stepping.integrator", "midpoint"), "{e}");
+        assert!(e.0[0].message.starts_with("must be rk4 with a ship service load"), "{e}");
+        s.stepping.integrator = Integrator::Rk4;
+        s.validate().unwrap();
+        s.stepping.dt_s = 5e-3;
+        s.stepping.controller_sample_s = 5e-3;
+        s.stepping.sea_sample_s = 5e-3;
+        let e = s.validate().unwrap_err();
+        assert_eq!((e.0[0].path.as_str(), e.0[0].value.as_str()), ("stepping.dt_s", "0.005"), "{e}");
+        assert!(e.0[0].message.starts_with("must be at most 1.26e-3 s"), "{e}");
     }
 
     #[test]

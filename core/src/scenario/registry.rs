@@ -17,8 +17,93 @@ fn list() -> &'static [ParamMeta] {
     LIST.get_or_init(|| {
         let mut out = Vec::new();
         <crate::Scenario as Section>::describe_fields("", &crate::Scenario::default(), &mut out);
+        for m in &mut out {
+            m.unused_with = unused_with(&m.path).map(|u| format!("{} = \"{}\"", u.choice, u.value)).collect();
+        }
         out
     })
+}
+
+/// Fields a choice of model leaves unused: under `choice = value`, the fields `fields` (a path
+/// ending in '.' is a whole section) change nothing: they belong to `owner`, and the choice reads
+/// `instead`.
+pub struct Unused {
+    pub choice: &'static str,
+    pub value: &'static str,
+    pub fields: &'static [&'static str],
+    pub owner: &'static str,
+    pub instead: &'static str,
+}
+
+/// Every such choice (the plant's `HullModel::Own` reads neither the Table 2.3 coefficients nor
+/// the `rudder` section's area and slopes; `HullModel::Maneuvering` reads neither the own hull's
+/// factors nor the hull's rudders). `tests/registry.rs` runs each field changed under its choice
+/// and finds the run unchanged.
+pub const UNUSED_WITH: [Unused; 2] = [
+    Unused {
+        choice: "hull.forces",
+        value: "own_hull",
+        fields: &[
+            "rudder.area_m2",
+            "rudder.lift_slope",
+            "rudder.drag_slope",
+            "hull.abkowitz.",
+            "hull.linearization_speed_kn",
+            "hull.symmetric_hull",
+            "hull.handover_low_kn",
+            "hull.handover_high_kn",
+        ],
+        owner: "the Table 2.3 forces",
+        instead: "the hull's own forces take the rudders of ship.hull (rudder_area_m2, rudder_span_m) and the \
+                  factors of hull.own",
+    },
+    Unused {
+        choice: "hull.forces",
+        value: "table_2_3",
+        fields: &["hull.own.", "ship.hull.rudder_area_m2", "ship.hull.rudder_span_m"],
+        owner: "the hull's own forces",
+        instead: "the Table 2.3 forces take the rudder section's area and slopes",
+    },
+];
+
+/// The choices under which the field at `path` is unused.
+fn unused_with(path: &str) -> impl Iterator<Item = &'static Unused> + '_ {
+    UNUSED_WITH
+        .iter()
+        .filter(move |u| u.fields.iter().any(|f| if f.ends_with('.') { path.starts_with(f) } else { path == *f }))
+}
+
+/// The run's warnings for fields set away from their defaults under a choice of model that does
+/// not use them, one per choice, in a scenario's JSON: "hull.forces = \"own_hull\": rudder.area_m2
+/// = 500.0 set here is not used (...)".
+pub fn ignored(root: &serde_json::Value) -> Vec<String> {
+    let mut out = Vec::new();
+    for u in &UNUSED_WITH {
+        if at(root, u.choice).and_then(|v| v.as_str()) != Some(u.value) {
+            continue;
+        }
+        let set: Vec<String> = list()
+            .iter()
+            .filter(|m| unused_with(&m.path).any(|x| std::ptr::eq(x, u)))
+            .filter_map(|m| {
+                let v = at(root, &m.path).filter(|v| is_set(m, Some(v)) && **v != m.default)?;
+                Some(format!("{} = {}", m.path, crate::checks::shorten(&v.to_string())))
+            })
+            .collect();
+        if !set.is_empty() {
+            out.push(format!(
+                "{} = \"{}\": {} set here {} not used ({} to {}; {})",
+                u.choice,
+                u.value,
+                set.join(", "),
+                if set.len() == 1 { "is" } else { "are" },
+                if set.len() == 1 { "it belongs" } else { "they belong" },
+                u.owner,
+                u.instead
+            ));
+        }
+    }
+    out
 }
 
 /// The parameter at a dotted path (`commands.3.t_s` finds `commands.N.t_s`; a pair's element
@@ -152,7 +237,10 @@ pub fn markdown_table() -> String {
             k => k.into(),
         };
         let unit = if m.unit.is_empty() { "" } else { m.unit };
-        let what = if m.source.is_empty() { m.label.to_string() } else { format!("{} ({})", m.label, m.source) };
+        let mut what = if m.source.is_empty() { m.label.to_string() } else { format!("{} ({})", m.label, m.source) };
+        if !m.unused_with.is_empty() {
+            what.push_str(&format!("; not used with {}", m.unused_with.join(" or ")));
+        }
         s.push_str(&format!(
             "| `{}` | {} | {} | {} | {} |\n",
             m.path,

@@ -17,7 +17,7 @@
 //! numbers instead (core/src/as_printed.rs).
 
 use crate::as_printed::AsPrintedParams;
-use crate::checks::{num, Validator};
+use crate::checks::{num, short, Validator};
 use crate::geometry::{HullOffsets, Hydrostatics};
 use crate::sea::seakeeping::strip::{BilgeKeels, MassProperties, Ship};
 use serde::{Deserialize, Serialize};
@@ -304,10 +304,16 @@ impl HullSpec {
                 return Err(("mass_kg".into(), "give the draft or the mass, not both".into()));
             }
             (Some(t), None, _) => {
-                if !(t > bottom && t <= top) {
+                // Above the baseline (the keel, z = 0; a sonar dome may reach below it) and the
+                // lowest offset.
+                if !(t > bottom.max(0.0) && t <= top) {
                     return Err((
                         "draft_m".into(),
-                        format!("must be above the lowest offset ({bottom} m) and within every station's data (up to {top} m)"),
+                        format!(
+                            "must be above the baseline and the lowest offset (more than {} m) and within every \
+                             station's data (up to {top} m)",
+                            bottom.max(0.0)
+                        ),
                     ));
                 }
                 t
@@ -420,9 +426,38 @@ impl HullSpec {
         for (i, y) in h.shaft_y_m.iter().enumerate() {
             v.range(&format!("shaft_y_m.{i}"), *y, -b, b);
         }
-        v.range("hub_above_base_m", t - h.hub_depth_m, -t, t);
-        v.range("rudder_area_m2", h.rudder_area_m2, 0.001 * l * t, 0.1 * l * t);
-        v.range("rudder_span_m", h.rudder_span_m, 0.1 * t, 2.0 * t);
+        // The propeller's and rudders' ranges scale with the draft. A part the user left to the
+        // hull's own (the 5415's 4 m rudder span) that a draft of the user's no longer fits is the
+        // draft's fault, and the draft is named; a part the user set is checked as usual.
+        let loading = match (self.draft_m, self.mass_kg) {
+            (Some(d), _) => Some(("draft_m", d)),
+            (None, Some(m)) => Some(("mass_kg", m)),
+            (None, None) => None,
+        };
+        let mut misfits = Vec::new();
+        for (field, own, value, lo, hi) in [
+            ("hub_above_base_m", self.hub_above_base_m, t - h.hub_depth_m, -t, t),
+            ("rudder_area_m2", self.rudder_area_m2, h.rudder_area_m2, 0.001 * l * t, 0.1 * l * t),
+            ("rudder_span_m", self.rudder_span_m, h.rudder_span_m, 0.1 * t, 2.0 * t),
+        ] {
+            if own.is_none() && loading.is_some() && !(value >= lo && value <= hi) {
+                misfits.push(format!("{field} = {} outside {} to {}", short(value), short(lo), short(hi)));
+            } else {
+                v.range(field, value, lo, hi);
+            }
+        }
+        if let (Some((field, value)), false) = (loading, misfits.is_empty()) {
+            v.fail(
+                field,
+                num(value),
+                format!(
+                    "at a draft of {} m the hull's own propeller and rudders do not fit ({}); give a deeper \
+                     loading or set those fields too",
+                    short(t),
+                    misfits.join(", ")
+                ),
+            );
+        }
         if v.is_ok() {
             if let Err(e) = h.strip_ship_check() {
                 v.fail("offsets_csv", format!("{} stations", h.offsets.stations.len()), e);
@@ -686,6 +721,34 @@ mod tests {
         assert!(e.contains("GM_T") && e.contains("unstable"), "{e}");
         let e = check(HullSpec { shaft_y_m: Some([30.0, -5.0]), ..Default::default() });
         assert!(e.contains("ship.hull.shaft_y_m.0 = 30"), "{e}");
+    }
+
+    /// A draft of the user's that the hull's own propeller and rudders no longer fit is blamed on
+    /// the draft (one error, naming the parts); a draft at or below the keel is refused as such;
+    /// parts the user set with the shallow draft are checked as themselves.
+    #[test]
+    fn a_shallow_draft_is_blamed_on_the_draft() {
+        let check = |spec: HullSpec| {
+            let mut v = Validator::new();
+            v.section("ship.hull", |v| spec.validate(v, 1025.0));
+            v.finish().map_err(|e| e.to_string())
+        };
+        let e = check(HullSpec { draft_m: Some(0.0), ..Default::default() }).unwrap_err();
+        assert!(e.starts_with("ship.hull.draft_m = 0: must be above the baseline"), "{e}");
+        let e = check(HullSpec { draft_m: Some(-1.0), ..Default::default() }).unwrap_err();
+        assert!(e.starts_with("ship.hull.draft_m = -1: must be above the baseline"), "{e}");
+        let e = check(HullSpec { draft_m: Some(0.5), ..Default::default() }).unwrap_err();
+        assert_eq!(e.lines().count(), 1, "{e}");
+        assert!(
+            e.starts_with(
+                "ship.hull.draft_m = 0.5: at a draft of 0.5 m the hull's own propeller and rudders do not fit"
+            ) && e.contains("rudder_area_m2 = 15.4 outside 0.071 to 7.1")
+                && e.contains("rudder_span_m = 4 outside 0.05 to 1"),
+            "{e}"
+        );
+        let e = check(HullSpec { draft_m: Some(0.5), rudder_span_m: Some(8.0), ..Default::default() }).unwrap_err();
+        assert!(e.contains("ship.hull.rudder_span_m = 8: must be a number from 0.05 to 1"), "{e}");
+        check(HullSpec { draft_m: Some(2.5), ..Default::default() }).unwrap();
     }
 
     /// `as_printed.table_5_ship` gives Tables 5.1/5.5's L, m and x_p; off, the hull's.

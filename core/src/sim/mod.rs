@@ -346,7 +346,10 @@ impl Simulation {
             speed_cmd: 0.0,
             stored0: 0.0,
             trace,
-            warnings: crate::plant::storage::ignored_without_energy(&scenario.plant.storage).into_iter().collect(),
+            warnings: crate::plant::storage::ignored_without_energy(&scenario.plant.storage)
+                .into_iter()
+                .chain(crate::scenario::registry::ignored(&scenario.to_value()))
+                .collect(),
             heading_hold: heading_hold::HeadingHold::default(),
             sea: seaway::Seaway::new(scenario).map_err(SimError::Setup)?,
             vent: [Ventilation::default(); N_SHAFTS],
