@@ -12,6 +12,7 @@
 
 mod analytic;
 mod as_printed;
+mod blade;
 mod chapter_2;
 mod chapter_4;
 mod chapter_5;
@@ -24,12 +25,14 @@ mod rows;
 mod runs;
 mod second_order_and_fuel;
 mod snnm;
+mod stopping;
 pub mod svg_plot;
 
 pub use markdown::markdown;
 
 use crate::analytic::analytic;
 use crate::as_printed::as_printed;
+use crate::blade::propeller_from_geometry;
 use crate::chapter_2::table_2_4;
 use crate::chapter_4::{table_4_1, table_4_2};
 use crate::chapter_5::{chapter_5, table_5_7};
@@ -40,6 +43,7 @@ use crate::peer_code::pdstrip_rows;
 use crate::rows::within;
 use crate::runs::{head_seas, run, startup_to};
 use crate::second_order_and_fuel::second_order_and_fuel;
+use crate::stopping::stopping;
 use crate::svg_plot::{check_well_formed, svg, Plot};
 use aes_core::scenario::SternMotion;
 use serde::Serialize;
@@ -87,7 +91,7 @@ pub enum Kind {
     Fitted,
     /// A closed form, a limit or a conservation law; no thesis number is involved.
     Analytic,
-    /// Model experiments (Journee 1992).
+    /// Model experiments (Journee 1992; Jessup 1989; the B-series' regression of its model tests).
     Experiment,
     /// Another code, run by us on the same hull (PDStrip).
     PeerCode,
@@ -286,6 +290,8 @@ pub fn sections(size: Size) -> Result<Vec<Section>, String> {
         analytic,
         second_order_and_fuel(&hs_base)?,
         wigley_iii_experiments()?,
+        propeller_from_geometry()?,
+        stopping()?,
         pdstrip_rows()?,
         printed,
     ])
@@ -388,7 +394,7 @@ mod tests {
         );
         assert!(md.contains("(a sensitivity, not a comparison) | 1 | 1 shown |"), "{md}");
         assert!(md.contains("a thesis number copied into a parameter | 1 | 1 within |"), "{md}");
-        assert!(md.contains("(Journee 1992, Wigley III) | 1 | 1 pass"), "{md}");
+        assert!(md.contains("(Journee 1992, Wigley III; Jessup 1989, DTMB 4119; the B-series) | 1 | 1 pass"), "{md}");
         assert!(md.contains("1 row(s) fail"), "{md}");
         assert!(md.contains("| pass, at a chosen input | chosen input: a rate |"), "{md}");
     }

@@ -27,6 +27,8 @@ pub fn markdown(sections: &[Section], size: Size) -> String {
          Tables 4.1 and 4.2, core/data/purdue_testbed_params.md); the Wigley hull (Wigley 1934's parabolic \
          form at L/B 10, B/T 1.6, generated in code at L = 100 m; checked against its closed-form hydrostatics); \
          Journee's (1992) model experiments on the Wigley III (Delft report 909, core/data/journee1992_wigley_iii.csv); \
+         Jessup's (1989) open-water tests of DTMB 4119 (core/data/dtmb4119_open_water.csv); Morgan, Silovic and \
+         Denny's (1968) lifting-surface corrections (core/data/morgan1968_lifting_surface.csv); \
          PDStrip, a second strip code we run ourselves (validation/pdstrip/).\n\n",
     ));
     let num = |x: f64| {
@@ -205,7 +207,11 @@ fn opening(sections: &[Section], size: Size) -> String {
             "analytic and conservation checks (closed forms, limits, energy books)",
             compared(Kind::Analytic),
         ),
-        (Kind::Experiment, "model experiments (Journee 1992, Wigley III)", compared(Kind::Experiment)),
+        (
+            Kind::Experiment,
+            "model experiments (Journee 1992, Wigley III; Jessup 1989, DTMB 4119; the B-series)",
+            compared(Kind::Experiment),
+        ),
         (Kind::PeerCode, "another strip code run on the same hull (PDStrip)", compared(Kind::PeerCode)),
         (
             Kind::AsPrinted,
