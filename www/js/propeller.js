@@ -15,7 +15,7 @@ import { num } from './hulldraw.js';
 import { drawOutline } from './propellerdraw.js';
 
 const clone = (x) => JSON.parse(JSON.stringify(x));
-const NAMED = { b_series: 'the ship\'s B-series equivalent (its Z, P/D, Ae/A0)', dtmb4119: 'DTMB 4119 (3 blades, model basin propeller)' };
+const NAMED = { b_series: 'the ship\'s B-series equivalent (its Z, P/D, Ae/A0)', dtmb4119: 'DTMB 4119 (3 blades, scaled to the ship\'s diameter)' };
 // The picker's value of a scenario: its named geometry, "custom", or "model" (no blades: the
 // study's own propeller model runs).
 const pickOf = (sc) => (sc.propeller.model === 'geometry' && sc.propeller.geometry ? sc.propeller.geometry.name : 'model');

@@ -13,7 +13,8 @@ export function drawOutline(canvas, sheet) {
   const xs = rows.flatMap((r) => [r.leading_d, r.trailing_d]);
   const half = Math.max(0.2, ...xs.map(Math.abs)) * 1.1; // x/D either side of the generator line
   const r0 = 0, r1 = 1.06;
-  const m = { l: 52, r: 12, t: 26, b: 42 };
+  // Room on the left for tick labels of three decimals and the axis title beside them.
+  const m = { l: 66, r: 12, t: 26, b: 42 };
   // Pixels per D: the width's or the tallest drawing's, whichever is smaller.
   const scaleOf = (w) => Math.min((w - m.l - m.r) / (2 * half), PROPELLER.outlineMaxPx / (0.5 * (r1 - r0)));
   const { g, w, h } = prepare(canvas, (W) => m.t + m.b + 0.5 * (r1 - r0) * scaleOf(W));
