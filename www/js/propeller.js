@@ -15,6 +15,8 @@ import { num } from './hulldraw.js';
 import { drawOutline } from './propellerdraw.js';
 
 const clone = (x) => JSON.parse(JSON.stringify(x));
+// The named blades in the heading when the study's own model runs.
+const SHORT = { b_series: 'its B-series equivalent', dtmb4119: 'DTMB 4119' };
 const NAMED = { b_series: 'the ship\'s B-series equivalent (its Z, P/D, Ae/A0)', dtmb4119: 'DTMB 4119 (3 blades, scaled to the ship\'s diameter)' };
 // The picker's value of a scenario: its named geometry, "custom", or "model" (no blades: the
 // study's own propeller model runs).
@@ -194,7 +196,9 @@ export class PropellerPanel {
     const s = this.sheet;
     if (!s || this.root.hidden || !this.fold.open) return;
     const name = s.name === 'custom' ? `your blade table${this.custom ? ` (${this.custom.file})` : ''}` : NAMED[s.name] || s.name;
-    this.heading.textContent = `The propeller: ${s.runs_it ? name : `${name}, shown beside the study's ${choiceLabel('propeller.model', this.deps ? this.deps.form.scenario.propeller.model : 'b_series')} model`}`;
+    // Not run: the study's own model runs; the blades drawn are what picking them would run.
+    const model = choiceLabel('propeller.model', this.deps ? this.deps.form.scenario.propeller.model : 'b_series');
+    this.heading.textContent = s.runs_it ? `The propeller: ${name}` : `The propeller: ${model}, the study's model; blades drawn: ${SHORT[s.name] || name}`;
     const e = s.series;
     const rpm = s.flow.rev_per_s * 60;
     this.note.textContent = `${s.blades} blades, P/D at 0.7 R ${num(s.pitch_07)}, Ae/A0 ${num(s.area_ratio)} (from the chords), hub ${num(s.hub_ratio)} D, at the study's diameter D = ${num(s.flow.diameter_m)} m. `
