@@ -115,11 +115,12 @@ const handlers = {
 
   [REQUEST.hullSheet]: (m) => ({ sheet: JSON.parse(hullSheet(checked(m.scenario))) }),
 
+  // The scenario is checked by propellerCurves itself; only a refusal asks for the fields by name.
   [REQUEST.propeller]: (m) => {
-    const sc = checked(m.scenario);
     const t0 = performance.now();
-    const sheet = JSON.parse(propellerCurves(sc));
-    return { sheet, wall_ms: performance.now() - t0 };
+    let text;
+    try { text = propellerCurves(m.scenario); } catch (e) { checked(m.scenario); throw e; }
+    return { sheet: JSON.parse(text), wall_ms: performance.now() - t0 };
   },
   [REQUEST.propellerCsv]: (m) => ({ geometry: JSON.parse(propellerGeometryCsv(m.text, m.blades, m.hub_ratio)) }),
 
