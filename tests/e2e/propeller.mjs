@@ -117,6 +117,11 @@ await check('a bad blade table is refused with the core\'s words (row and column
   const sc = JSON.parse(await p.evaluate(() => window.__scenarioText()));
   assert(sc.propeller.geometry.name === 'custom' && sc.propeller.geometry.rows.length === 10 && sc.propeller.geometry.rows[9].skew_deg === 20, JSON.stringify(sc.propeller.geometry).slice(0, 300));
   assert((await p.$eval('#propeller-geometry', (s) => s.selectedOptions[0].textContent)).includes('skew4119.csv'), 'the picker does not name the file');
+  // Four blades typed beside it: the table is read again with them and runs.
+  await p.fill('#propeller-blades', '4');
+  await p.dispatchEvent('#propeller-blades', 'change');
+  await p.waitForFunction(() => window.__propellerPanel.sheet && window.__propellerPanel.sheet.blades === 4, null, { timeout: 30000 });
+  assert(JSON.parse(await p.evaluate(() => window.__scenarioText())).propeller.geometry.blades === 4, 'the four blades are not in the scenario');
   const hash = await p.evaluate(() => location.hash);
   console.log(`     a 10-row blade table rides in the address: ${hash.length} characters`);
   await foldFits(p, '#propeller-box', `${shots}/propeller-skewed-1366x768.png`, ['heading-order', 'empty-table-header', 'scrollable-region-focusable']);

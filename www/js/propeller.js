@@ -66,6 +66,7 @@ export class PropellerPanel {
     this.plots = new PlotBox(this.plotsBox);
     this.select.addEventListener('change', () => this.pick(this.select.value));
     this.file.addEventListener('change', () => { if (this.file.files[0]) this.loadFile(this.file.files[0]); });
+    for (const f of [this.blades, this.hub]) f.addEventListener('change', () => this.reread());
   }
 
   // The form and its commit (after the simulator loaded): validate(sc) resolves or throws {fields};
@@ -77,7 +78,10 @@ export class PropellerPanel {
     const g = sc.propeller.geometry;
     if (sc.propeller.model === 'geometry' && g && g.name === 'custom') {
       const same = this.custom && JSON.stringify(this.custom.spec) === JSON.stringify(g);
-      this.custom = { spec: clone(g), file: same ? this.custom.file : 'from the address or the scenario' };
+      this.custom = same ? this.custom : { spec: clone(g), file: 'from the address or the scenario', text: null };
+      // The fields beside the file say the table's own blades and hub ratio.
+      this.blades.value = g.blades;
+      this.hub.value = g.hub_ratio == null ? '' : g.hub_ratio;
     }
     const own = sc.propeller.model === 'geometry' ? 'b_series' : sc.propeller.model;
     const opts = [
@@ -139,12 +143,19 @@ export class PropellerPanel {
     if (file.size > PROPELLER.maxFileBytes) { this.fileError(`${file.name} is ${(file.size / 1048576).toFixed(1)} MiB: a blade table is a few kB`); return; }
     let text;
     try { text = await file.text(); } catch (e) { this.fileError(`${file.name} could not be read: ${e.message}`); return; }
+    await this.readTable(text, file.name);
+  }
+
+  // A blade table's text (from file `name`) with the blades and hub ratio of the fields beside it.
+  async readTable(text, name) {
+    const { say } = this.deps;
+    const field = (input) => Number(input.value === '' ? NaN : input.value);
     let geometry;
     try {
-      ({ geometry } = await this.client().request(REQUEST.propellerCsv, { text, blades: Number(this.blades.value === '' ? NaN : this.blades.value), hub_ratio: Number(this.hub.value === '' ? NaN : this.hub.value) }));
+      ({ geometry } = await this.client().request(REQUEST.propellerCsv, { text, blades: field(this.blades), hub_ratio: field(this.hub) }));
     } catch (e) {
       if (e.cancelled) return;
-      this.fileError(`${file.name}: ${e.message}`);
+      this.fileError(`${name}: ${e.message}`);
       this.sync(this.deps.form.scenario);
       say('The blade table was not used: the propeller stays as it was (the reason is under the file field).', true);
       this.file.focus();
@@ -153,9 +164,14 @@ export class PropellerPanel {
     const sc = this.deps.form.current();
     Object.assign(sc.propeller, { model: 'geometry', geometry });
     const before = this.custom;
-    this.custom = { spec: clone(geometry), file: file.name };
-    if (!(await this.accept(sc, `Blade table ${file.name} read: the run uses its ${geometry.blades} blades.`, file.name))) this.custom = before;
+    this.custom = { spec: clone(geometry), file: name, text };
+    if (!(await this.accept(sc, `Blade table ${name} read: the run uses its ${geometry.blades} blades, hub ${geometry.hub_ratio} D.`, name))) this.custom = before;
     else this.fileError('');
+  }
+
+  // The blades or hub ratio changed while a table of one's own runs: the table read again with them.
+  reread() {
+    if (this.deps && !this.deps.busy() && this.custom && this.custom.text && this.select.value === 'custom') this.readTable(this.custom.text, this.custom.file);
   }
 
   // A run was drawn: what its summary says of the blades it ran on (nothing on another model).
