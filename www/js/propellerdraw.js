@@ -44,6 +44,9 @@ export function drawOutline(canvas, sheet) {
   g.textAlign = 'left';
   label(g, `hub, ${num(sheet.hub_ratio)} D`, box.l + 4, sy(sheet.hub_ratio) - 3, C.text);
   const skewed = rows.some((r) => r.skew_deg !== 0);
-  label(g, `${sheet.blades} blades, Ae/A0 ${num(sheet.area_ratio)}; dashed: mid-chord${skewed ? ' (skewed)' : ', no skew'}`, box.l, box.t - 5, C.text);
+  // Above the frame, the longest of these that fits.
+  const says = [`${sheet.blades} blades, Ae/A0 ${num(sheet.area_ratio)}; dashed: mid-chord${skewed ? ' (skewed)' : ', no skew'}`,
+    `${sheet.blades} blades, Ae/A0 ${num(sheet.area_ratio)}; dashed: mid-chord`, `${sheet.blades} blades, Ae/A0 ${num(sheet.area_ratio)}`];
+  label(g, says.find((t) => g.measureText(t).width <= box.r - box.l) || says[says.length - 1], box.l, box.t - 5, C.text);
   return { rows: rows.length, scale_px_per_d: s, width_px: w, height_px: h };
 }
