@@ -181,6 +181,8 @@ run_tests() {
   node tests/e2e/fuel.mjs "http://127.0.0.1:$port/" "$shots" target/release/aes-sim 2>&1 | tee -a "$log"
   say "browser test: the standard maneuvers booklet (issue 42)"
   node tests/e2e/maneuvers.mjs "http://127.0.0.1:$port/" "$shots" target/release/aes-sim 2>&1 | tee -a "$log"
+  say "browser test: the propeller panel, blades from their geometry (issue 54)"
+  node tests/e2e/propeller.mjs "http://127.0.0.1:$port/" "$shots" target/release/aes-sim 2>&1 | tee -a "$log"
   say "browser test: links and errors that help (issue 55)"
   node tests/e2e/links.mjs "http://127.0.0.1:$port/" "$shots" 2>&1 | tee -a "$log"
   say "browser test: one meaning per mark, units, the phone and the projector (issue 55)"

@@ -1,6 +1,6 @@
-//! Runs a short start-up, a turn, a run in head seas, a small operability polar and a rare-event
-//! study natively at build time and stores their summaries, so the wasm tests can check that the
-//! browser computes the same numbers bit for bit; and lists the golden record of every preset
+//! Runs a short start-up, a turn, a run in head seas, a small operability polar, a rare-event
+//! study and DTMB 4119's open-water curve (the propeller panel's) natively at build time and stores
+//! their results, so the wasm tests can check that the browser computes the same numbers bit for bit; and lists the golden record of every preset
 //! (tests/golden/NAME.json, from the preset list itself) for the wasm golden test. Any failure
 //! stops the build with its message: an empty file would only fail the comparison later, unexplained.
 use aes_core::studies::operability::{study::OperabilityPolar, study::PolarStudySpec, PolarRequest};
@@ -49,9 +49,21 @@ fn main() {
         ..Default::default()
     };
     let polar = summary::<OperabilityPolar>("operability", PolarStudySpec { scenario: r, request });
+    // Issue 54: DTMB 4119's open water over the propeller panel's 25 J in head-seas-ss6's design
+    // flow, as [[J, KT, KQ], ...].
+    let p = preset("head-seas-ss6");
+    let spec = aes_core::plant::propeller_geometry::GeometrySpec { name: "dtmb4119".into(), ..Default::default() };
+    let g = must(
+        "DTMB 4119",
+        spec.resolve(&p.propeller.b_series_of()).map_err(|(f, e)| format!("propeller.geometry.{f}: {e}")),
+    );
+    let js: Vec<f64> = (0..25).map(|k| 1.2 * k as f64 / 24.0).collect();
+    let ow = must("DTMB 4119's open water", aes_core::plant::blade::open_water(&g, &js, &p.propeller_design_flow()));
+    let curve = serde_json::to_string(&ow.iter().map(|a| [a.j, a.kt, a.kq]).collect::<Vec<_>>()).unwrap_or_default();
     let out = std::env::var("OUT_DIR").unwrap_or_else(|_| ".".into());
     let write = |name: &str, text: &str| must(name, std::fs::write(format!("{out}/{name}"), text));
     write("native_rare.json", &rare);
+    write("native_propeller_4119.json", &curve);
     write("native_operability.json", &polar);
     write("native_head_seas_10s.json", &seas);
     write("native_head_seas_10s_multirate.json", &multirate);

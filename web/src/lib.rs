@@ -564,6 +564,85 @@ pub fn hull_names() -> Vec<String> {
     aes_core::ship::hull::HULL_NAMES.iter().map(|s| s.to_string()).collect()
 }
 
+/// The advance ratios of the propeller panel's curves: `aes-sim propeller`'s default `--j
+/// 0:1.2:25`, so the page and the command line give the same points.
+const PANEL_J: (f64, f64, usize) = (0.0, 1.2, 25);
+
+/// A custom blade geometry (`propeller.geometry` with name "custom") from a CSV table with the
+/// header of core/data/dtmb4119_geometry.csv, as JSON; a bad table is refused with the core's
+/// message naming the row and column.
+#[wasm_bindgen(js_name = propellerGeometryCsv)]
+pub fn propeller_geometry_csv(text: JsValue, blades: f64, hub_ratio: f64) -> Result<String, JsError> {
+    let text = self::text(&text, "the blade table")?;
+    // A number from a form field: whole, then the core's range check names its range.
+    if !(blades.is_finite() && blades.fract() == 0.0 && blades >= 0.0) {
+        return Err(JsError::new(&format!(
+            "blades: {} is not a whole number of blades",
+            aes_core::checks::shorten(&blades.to_string())
+        )));
+    }
+    let blades = blades.min(u32::MAX as f64) as u32;
+    let spec = aes_core::plant::propeller_geometry::GeometrySpec::from_csv(&text, blades, hub_ratio)
+        .map_err(|e| JsError::new(&e))?;
+    serde_json::to_string(&spec).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The propeller panel of a scenario as JSON: the blades of its `propeller.geometry` (the ship's
+/// B-series equivalent without one) with the expanded outline (`rows`: r_r, c_d, p_d, skew_deg,
+/// `leading_d` and `trailing_d`: the edges' chordwise positions over D, half a chord either side
+/// of the mid-chord, which skew moves along the arc by (r/R)(D/2) times the skew angle),
+/// `pitch_07` and `area_ratio` (Ae/A0 from the chords); `open_water` (j, kt, kq, eta, converged:
+/// the lifting line in the flow the run's table is built in, `flow`) over J = 0 to 1.2 in 25
+/// points as `aes-sim propeller` gives them; `series` (blades, pitch_ratio, area_ratio, held and
+/// its `rows` j, kt, kq, eta: the B-series polynomial of the same Z, P/D at 0.7 R and Ae/A0);
+/// and `runs_it` (whether the scenario's `propeller.model` is "geometry").
+#[wasm_bindgen(js_name = propellerCurves)]
+pub fn propeller_curves(json: JsValue) -> Result<String, JsError> {
+    use aes_core::plant::{blade, propeller_table as table};
+    let mut sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let runs_it = sc.propeller.model == aes_core::scenario::PropellerModelKind::Geometry;
+    let spec = sc.propeller.geometry.clone().unwrap_or_default();
+    sc.propeller.geometry = Some(spec.clone());
+    let g = spec
+        .resolve(&sc.propeller.b_series_of())
+        .map_err(|(f, e)| JsError::new(&format!("propeller.geometry.{f}: {e}")))?;
+    let flow = sc.propeller_design_flow();
+    let (from, to, n) = PANEL_J;
+    let js: Vec<f64> = (0..n).map(|k| from + (to - from) * k as f64 / (n - 1) as f64).collect();
+    let curve = blade::open_water(&g, &js, &flow).map_err(|e| JsError::new(&e))?;
+    let e = table::series_equivalent(&g);
+    let series = aes_core::plant::propeller::OpenWater::b_series(e.pitch_ratio, e.area_ratio, e.blades)
+        .map_err(|e| JsError::new(&e))?;
+    let rows: Vec<_> = g
+        .rows
+        .iter()
+        .map(|r| {
+            let mid = 0.5 * r.r_r * r.skew_deg.to_radians();
+            serde_json::json!({
+                "r_r": r.r_r, "c_d": r.c_d, "p_d": r.p_d, "skew_deg": r.skew_deg,
+                "leading_d": mid - 0.5 * r.c_d, "trailing_d": mid + 0.5 * r.c_d,
+            })
+        })
+        .collect();
+    let out = serde_json::json!({
+        "name": spec.name,
+        "runs_it": runs_it,
+        "blades": g.blades,
+        "hub_ratio": g.hub_ratio,
+        "pitch_07": table::pitch_at_07(&g),
+        "area_ratio": table::area_ratio(&g),
+        "flow": flow,
+        "rows": rows,
+        "open_water": curve.iter().map(|p| serde_json::json!({"j": p.j, "kt": p.kt, "kq": p.kq, "eta": p.eta, "converged": p.converged})).collect::<Vec<_>>(),
+        "series": {
+            "blades": e.blades, "pitch_ratio": e.pitch_ratio, "area_ratio": e.area_ratio, "held": e.held,
+            "rows": js.iter().map(|&j| serde_json::json!({"j": j, "kt": series.kt(j), "kq": series.kq(j), "eta": series.efficiency(j)})).collect::<Vec<_>>(),
+        },
+    });
+    aes_core::checks::check_finite(&out).map_err(|e| JsError::new(&e))?;
+    Ok(out.to_string())
+}
+
 /// A run's sea surface for pictures: the same seeded wave components the run sails in
 /// (`sim::seaway::wave_components`), summed at points the page asks for.
 #[wasm_bindgen]

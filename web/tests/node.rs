@@ -461,3 +461,69 @@ fn stability_map_refuses_bad_input_by_name() {
     .unwrap();
     assert_eq!(page, serde_json::to_value(&native).unwrap());
 }
+
+/// The propeller panel (issue 54): DTMB 4119's KT and KQ over the command line's 25 J are the
+/// native lifting line's in the run's design flow, bit for bit (web/build.rs computed them
+/// natively); the outline is the table's chords about the mid-chord (no skew: symmetric), P/D at
+/// 0.7 R is the table's 1.084, the efficiency is J KT / (2 pi KQ), and the B-series beside it has the
+/// same Z, P/D and Ae/A0. A bad table is refused naming its row and column, a fractional blade
+/// count by name.
+#[wasm_bindgen_test]
+fn propeller_curves_are_the_native_lifting_line() {
+    let native: Vec<[f64; 3]> =
+        serde_json::from_str(include_str!(concat!(env!("OUT_DIR"), "/native_propeller_4119.json"))).unwrap();
+    let mut sc: serde_json::Value =
+        serde_json::from_str(&preset_json(JsValue::from("head-seas-ss6")).unwrap()).unwrap();
+    sc["propeller"]["model"] = serde_json::json!("geometry");
+    sc["propeller"]["geometry"] = serde_json::json!({"name": "dtmb4119"});
+    let out: serde_json::Value =
+        serde_json::from_str(&propeller_curves(JsValue::from(sc.to_string())).map_err(message).unwrap()).unwrap();
+    assert_eq!(out["runs_it"], true);
+    assert_eq!((out["name"].as_str(), out["blades"].as_u64()), (Some("dtmb4119"), Some(3)));
+    let ow = out["open_water"].as_array().unwrap();
+    assert_eq!(ow.len(), 25);
+    for (p, n) in ow.iter().zip(&native) {
+        let (j, kt, kq) = (p["j"].as_f64().unwrap(), p["kt"].as_f64().unwrap(), p["kq"].as_f64().unwrap());
+        assert_eq!(
+            [j.to_bits(), kt.to_bits(), kq.to_bits()],
+            [n[0].to_bits(), n[1].to_bits(), n[2].to_bits()],
+            "J = {j}"
+        );
+        let eta = p["eta"].as_f64().unwrap();
+        let want = if kt > 0.0 && kq > 0.0 { j * kt / (2.0 * std::f64::consts::PI * kq) } else { 0.0 };
+        assert!((eta - want).abs() <= 1e-12, "J = {j}: eta {eta} against {want}");
+    }
+    assert!((out["pitch_07"].as_f64().unwrap() - 1.084).abs() < 1e-12);
+    let rows = out["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 10);
+    for r in rows {
+        let (le, te, c) =
+            (r["leading_d"].as_f64().unwrap(), r["trailing_d"].as_f64().unwrap(), r["c_d"].as_f64().unwrap());
+        assert!((te - le - c).abs() < 1e-12 && (le + te).abs() < 1e-12, "{r}");
+    }
+    let s = &out["series"];
+    assert_eq!((s["blades"].as_u64(), s["held"].as_bool()), (Some(3), Some(false)));
+    assert_eq!(s["pitch_ratio"], out["pitch_07"]);
+    assert_eq!(s["area_ratio"], out["area_ratio"]);
+    let ow_b = aes_core::plant::propeller::OpenWater::b_series(
+        s["pitch_ratio"].as_f64().unwrap(),
+        s["area_ratio"].as_f64().unwrap(),
+        3,
+    )
+    .unwrap();
+    let at = &s["rows"][14]; // J = 0.7
+    let j = at["j"].as_f64().unwrap();
+    assert!((j - 0.7).abs() < 1e-12);
+    assert_eq!(at["kt"].as_f64().unwrap().to_bits(), ow_b.kt(j).to_bits());
+
+    let table = "r_R,c_D,P_D,f0_c,t0_c,skew_deg,rake_D\n0.2,0.3,1.0,0.02,0.2,0,0\n0.5,0.0,1.0,0.02,0.1,0,0\n\
+                 0.8,0.3,1.0,0.02,0.05,0,0\n1.0,0.0,1.0,0.0,0.03,0,0\n";
+    let e = message(propeller_geometry_csv(JsValue::from(table), 3.0, 0.2).unwrap_err());
+    assert!(e.contains("row 2 (r/R 0.5), column c_D"), "{e}");
+    let good = propeller_geometry_csv(JsValue::from(table.replace("0.5,0.0,", "0.5,0.4,")), 3.0, 0.2)
+        .map_err(message)
+        .unwrap();
+    assert!(good.contains("\"custom\""), "{good}");
+    let e = message(propeller_geometry_csv(JsValue::from(table), 2.5, 0.2).unwrap_err());
+    assert!(e.starts_with("blades: 2.5 is not a whole number"), "{e}");
+}

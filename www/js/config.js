@@ -278,6 +278,16 @@ export const HULL = {
   colors: { hull: '#1f3a5f', fill: 'rgba(93, 109, 126, 0.18)', water: '#0b5cad', waterFill: 'rgba(46, 134, 193, 0.12)', prop: '#b03a2e', rudder: '#a04000', axis: '#4a4a4a', grid: '#d5d8dc', text: '#1b1b1b' },
 };
 
+// The propeller panel (issue 54; every number from the wasm's propellerCurves): the outline's
+// tallest drawing [px], the largest blade table read [bytes] (the core refuses past 64 kB, in its
+// words), and the colours (>= 3:1 on white; the B-series lines lighter, thinner and dashed).
+export const PROPELLER = {
+  outlineMaxPx: 300,
+  maxFileBytes: 4 << 20,
+  colors: { blade: '#1f3a5f', bladeFill: 'rgba(31, 58, 95, 0.14)', section: '#6b6b6b', hub: 'rgba(93, 109, 126, 0.25)', text: '#1b1b1b',
+    kt: '#0b5cad', kq: '#b03a2e', eta: '#1e7b3c', ktSeries: '#6f97c8', kqSeries: '#cf6e63', etaSeries: '#4f9a66', pitch: '#1f3a5f' },
+};
+
 // The operability tab (issue 31): the grid the page asks the polar for (the command line's
 // defaults: `aes-sim operability` with no options gives the same cells), speeds above the scenario's
 // RAO table (seakeeping.grid.speed_max_kn) left out; the polar's seas, criteria, scatter diagram

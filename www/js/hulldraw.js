@@ -20,7 +20,7 @@ function tickStep(span, n) {
 }
 
 // A canvas sized to its box (CSS width, height in CSS pixels) at the device's pixel ratio.
-function prepare(canvas, height) {
+export function prepare(canvas, height) {
   const w = Math.max(200, canvas.clientWidth || canvas.parentElement.clientWidth);
   canvas.style.height = `${Math.round(height(w))}px`;
   const h = Math.round(height(w));
@@ -37,7 +37,7 @@ function prepare(canvas, height) {
 
 // Axes in metres: a frame, ticks and their labels, the axis titles. sx, sy map metres to pixels;
 // xLabel(v) writes a tick's value (the body plan writes half-breadths without sign).
-function axes(g, box, sx, sy, [x0, x1], [y0, y1], titles, xLabel = num) {
+export function axes(g, box, sx, sy, [x0, x1], [y0, y1], titles, xLabel = num) {
   const C = HULL.colors;
   g.strokeStyle = C.grid; g.lineWidth = 1; g.fillStyle = C.axis;
   const dx = tickStep(x1 - x0, Math.max(2, Math.floor((box.r - box.l) / 70)));
@@ -121,7 +121,7 @@ export function drawBodyPlan(canvas, sheet) {
 }
 
 // Text on a white ground (readable over the lines), baseline 'bottom', the current alignment.
-function label(g, text, x, y, color) {
+export function label(g, text, x, y, color) {
   const w = g.measureText(text).width, x0 = g.textAlign === 'right' ? x - w : g.textAlign === 'center' ? x - w / 2 : x;
   g.fillStyle = 'rgba(255, 255, 255, 0.85)';
   g.fillRect(x0 - 2, y - 14, w + 4, 15);

@@ -21,6 +21,7 @@ import { Drawn } from './drawn.js';
 import './views/summary.js';
 import './views/compare.js';
 import './views/hull.js';
+import './views/propeller.js';
 import './views/share.js';
 import './views/montecarlo.js';
 import './views/lessons.js';

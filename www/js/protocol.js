@@ -43,6 +43,13 @@ export const REQUEST = {
   findTrial: 'find-trial',
   rao: 'rao', // {scenario, speed_kn, heading_deg, omegas} -> done {result}: RAOs of the scenario's hull
   hullSheet: 'hull-sheet', // {scenario} -> done {sheet}: body plan, profile, hydrostatics (presentation::HullSheet)
+  // The propeller panel (issue 54): {scenario} -> done {sheet, wall_ms}: propellerCurves (the blades'
+  // outline and pitch, KT, KQ, efficiency over J by the lifting line, the B-series of the same Z,
+  // P/D and Ae/A0), wall_ms the worker's time for it.
+  propeller: 'propeller',
+  // {text, blades, hub_ratio} -> done {geometry}: a CSV blade table read by the core
+  // (propellerGeometryCsv: a "custom" propeller.geometry), or the core's refusal naming row and column.
+  propellerCsv: 'propeller-csv',
   fuel: 'fuel', // {scenario, omegas} -> done {rows}
   maneuvers: 'maneuvers', // {scenario} -> done {booklet} (`aes-sim maneuvers`' JSON: IMO's standard maneuvers)
   schedule: 'schedule', // {scenario} -> done {schedule} (`aes-sim schedule --json`'s schedule: turbines online by speed and sea state)

@@ -1,7 +1,7 @@
 // Module worker: loads the wasm and answers the requests of protocol.js. Runs go in chunks with
 // progress reports; the main thread never runs physics. Cancel = the page terminates this worker
 // and starts a fresh one.
-import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, studyEstimate, trialScenario, raoJson, fuelStudy, maneuversBooklet, turbineSchedule, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, rareScenario, rarePlace, lessonMeta, lessonOpen, traceCsvOf, stabilityPoint, stabilityAxis } from '../pkg/aes_web.js';
+import init, { presetNames, presetJson, validateScenario, signalMeta, paramMeta, thesisValues, pageConstants, Run, ipsAnalysis, ipsMeta, studyRange, studySummary, studyEstimate, trialScenario, raoJson, fuelStudy, maneuversBooklet, turbineSchedule, designLqgLtr, raoTableValues, raoTableLoad, trialBins, hullSheet, hullNames, propellerCurves, propellerGeometryCsv, rareScenario, rarePlace, lessonMeta, lessonOpen, traceCsvOf, stabilityPoint, stabilityAxis } from '../pkg/aes_web.js';
 import { REQUEST, reply, errorOf } from './protocol.js';
 import { RUN_CHUNK_STEPS, PROGRESS_EVERY_MS } from './config.js';
 
@@ -114,6 +114,15 @@ const handlers = {
   [REQUEST.rao]: (m) => ({ result: JSON.parse(raoJson(checked(m.scenario), m.speed_kn, m.heading_deg, new Float64Array(m.omegas))) }),
 
   [REQUEST.hullSheet]: (m) => ({ sheet: JSON.parse(hullSheet(checked(m.scenario))) }),
+
+  // The scenario is checked by propellerCurves itself; only a refusal asks for the fields by name.
+  [REQUEST.propeller]: (m) => {
+    const t0 = performance.now();
+    let text;
+    try { text = propellerCurves(m.scenario); } catch (e) { checked(m.scenario); throw e; }
+    return { sheet: JSON.parse(text), wall_ms: performance.now() - t0 };
+  },
+  [REQUEST.propellerCsv]: (m) => ({ geometry: JSON.parse(propellerGeometryCsv(m.text, m.blades, m.hub_ratio)) }),
 
   // The scenario every trial of a rare-event study runs (the ship's place at the event from a run
   // in waves), as JSON text.

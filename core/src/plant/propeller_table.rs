@@ -54,10 +54,34 @@ pub struct GeometryPropeller {
 /// What produces the first quadrant: kT and kQ at each advance ratio of `js`.
 pub type Curves = dyn Fn(&BladeGeometry, &[f64]) -> Result<Vec<(f64, f64)>, String>;
 
-/// The B-series polynomial of the geometry's equivalent (Z, P/D at 0.7 R, expanded area from the
-/// chords), within the series' ranges: a comparison curve, not the geometry model's.
+/// The B-series propeller a geometry is compared with.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SeriesEquivalent {
+    /// Blades Z \[-\].
+    pub blades: u32,
+    /// P/D at 0.7 R \[-\].
+    pub pitch_ratio: f64,
+    /// Expanded blade area ratio Ae/A0 from the chords \[-\].
+    pub area_ratio: f64,
+    /// Whether any of the three lay outside the series' polynomial ranges (Z 2..7, P/D 0.5..1.4,
+    /// Ae/A0 0.3..1.05) and was held at the range's end.
+    pub held: bool,
+}
+
+/// The geometry's B-series equivalent: its Z, P/D at 0.7 R and expanded area from the chords,
+/// each held within the series' ranges.
+pub fn series_equivalent(g: &BladeGeometry) -> SeriesEquivalent {
+    let (p, a) = (pitch_at_07(g), area_ratio(g));
+    let (blades, pitch_ratio, area_ratio) = (g.blades.clamp(2, 7), p.clamp(0.5, 1.4), a.clamp(0.3, 1.05));
+    let held = blades != g.blades || pitch_ratio != p || area_ratio != a;
+    SeriesEquivalent { blades, pitch_ratio, area_ratio, held }
+}
+
+/// The B-series polynomial of the geometry's equivalent (`series_equivalent`): a comparison
+/// curve, not the geometry model's.
 pub fn b_series_equivalent_curves(g: &BladeGeometry, js: &[f64]) -> Result<Vec<(f64, f64)>, String> {
-    let ow = OpenWater::b_series(pitch_at_07(g).clamp(0.5, 1.4), area_ratio(g).clamp(0.3, 1.05), g.blades.clamp(2, 7))?;
+    let e = series_equivalent(g);
+    let ow = OpenWater::b_series(e.pitch_ratio, e.area_ratio, e.blades)?;
     Ok(js.iter().map(|&j| (ow.kt(j), ow.kq(j))).collect())
 }
 

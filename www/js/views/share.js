@@ -19,13 +19,15 @@ async function share(ctx) {
   const r = getResult();
   const view = r && r.columns && JSON.stringify(r.scenario) === JSON.stringify(form.scenario) ? ctx.live.view() : null;
   const url = location.origin + location.pathname + ctx.hereHash(view);
-  // A custom hull's offsets can make the link longer than browsers, chat programs and mail keep:
+  // A custom hull's offsets (or a long blade table) can make the link longer than browsers, chat programs and mail keep:
   // then the page offers the scenario as a file instead of a link that would break.
   const tooLong = url.length > HULL.maxLinkChars;
   $('share-too-long').hidden = !tooLong;
   if (tooLong) {
     $('share-url').hidden = true;
-    $('share-too-long-text').textContent = `This scenario's link would be ${url.length.toLocaleString('en-US')} characters long (the custom hull's offsets are in it), more than the ${HULL.maxLinkChars.toLocaleString('en-US')} a link can safely carry. Download the scenario instead: it holds the hull, and opens here with "Load hull offsets or a scenario" (or with aes-sim).`;
+    const sc = form.scenario;
+    const big = [sc.ship.hull && sc.ship.hull.name === 'custom' && 'the custom hull\'s offsets', sc.propeller.geometry && sc.propeller.geometry.name === 'custom' && 'the blade table\'s rows'].filter(Boolean);
+    $('share-too-long-text').textContent = `This scenario's link would be ${url.length.toLocaleString('en-US')} characters long (${big.length ? `${big.join(' and ')} are in it` : 'its edits are in it'}), more than the ${HULL.maxLinkChars.toLocaleString('en-US')} a link can safely carry. Download the scenario instead: it holds them, and opens here with "Load hull offsets or a scenario" (or with aes-sim).`;
     status('No link: this scenario is too large for one. Download it as a file (below the buttons).');
     $('share-file').focus();
     return;

@@ -13,9 +13,9 @@ pub fn wrench(z: u32, tan_beta_w: f64, rc: f64, rv: f64) -> (f64, f64) {
     let zf = z as f64;
     let y = rc / (rv * tan_beta_w);
     let y0 = 1.0 / tan_beta_w;
-    let s = libm::sqrt(1.0 + y * y);
-    let s0 = libm::sqrt(1.0 + y0 * y0);
-    let a = libm::sqrt(s0 / s);
+    let s = (1.0 + y * y).sqrt();
+    let s0 = (1.0 + y0 * y0).sqrt();
+    let a = (s0 / s).sqrt();
     let b = ((9.0 * y0 * y0 + 2.0) / (s0 * s0 * s0) + (3.0 * y * y - 2.0) / (s * s * s)) / (24.0 * zf);
     // U = [y0 (s - 1) exp(s - s0) / (y (s0 - 1))]^Z, taken through its logarithm for large Z.
     let ln_u = zf * (libm::log(y0 * (s - 1.0) / (y * (s0 - 1.0))) + s - s0);
@@ -64,7 +64,7 @@ pub fn biot_savart(z: u32, tan_beta_w: f64, rc: f64, rv: f64, turns: usize, per_
     // carrying Z (tangential at rc) and a solenoid of Z / pitch turns per length (axial inside).
     let x_end = pitch * turns as f64;
     let zf = z as f64;
-    let far = |x: f64, r: f64| x / libm::sqrt(x * x + r * r);
+    let far = |x: f64, r: f64| x / (x * x + r * r).sqrt();
     uz += zf / (4.0 * PI * rc) * (1.0 - far(x_end, rc)) * if rc > rv { 1.0 } else { 0.0 };
     if rc < rv {
         ux += zf / pitch / 2.0 * (1.0 - far(x_end, rv));
@@ -78,8 +78,8 @@ fn segment(a: [f64; 3], b: [f64; 3], p: [f64; 3]) -> [f64; 3] {
     let r2 = [p[0] - b[0], p[1] - b[1], p[2] - b[2]];
     let c = [r1[1] * r2[2] - r1[2] * r2[1], r1[2] * r2[0] - r1[0] * r2[2], r1[0] * r2[1] - r1[1] * r2[0]];
     let c2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-    let n1 = libm::sqrt(r1[0] * r1[0] + r1[1] * r1[1] + r1[2] * r1[2]);
-    let n2 = libm::sqrt(r2[0] * r2[0] + r2[1] * r2[1] + r2[2] * r2[2]);
+    let n1 = (r1[0] * r1[0] + r1[1] * r1[1] + r1[2] * r1[2]).sqrt();
+    let n2 = (r2[0] * r2[0] + r2[1] * r2[1] + r2[2] * r2[2]).sqrt();
     if c2 < 1e-18 || n1 < 1e-12 || n2 < 1e-12 {
         return [0.0; 3];
     }

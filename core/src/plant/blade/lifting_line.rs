@@ -180,7 +180,7 @@ impl LiftingLine {
                 let ut: f64 = (0..m).map(|n| it[i * m + n] * gamma[n]).sum();
                 let (a, t) = (j + ua, PI * self.rc[i] + ut);
                 let v2 = a * a + t * t;
-                let v = libm::sqrt(v2);
+                let v = v2.sqrt();
                 let beta = libm::atan2(a, t);
                 let alpha = libm::atan(self.tan_pitch[i]) - beta;
                 let (cl, slope) = lift(alpha, self.f0_c[i], &corr[i]);
