@@ -29,8 +29,10 @@ __all__ = [
     "Result",
     "Scenario",
     "Trace",
+    "fuel_per_mile",
     "merge",
     "monte_carlo",
+    "operability",
     "params",
     "preset",
     "presets",
@@ -224,8 +226,8 @@ def monte_carlo(
 
 def _spec_text(spec: Mapping) -> str:
     d = dict(spec)
-    if isinstance(d.get("scenario"), Scenario):
-        d["scenario"] = d["scenario"].to_dict()
+    if isinstance(d.get("scenario"), (Scenario, str, os.PathLike)):
+        d["scenario"] = _scenario(d["scenario"]).to_dict()
     return json.dumps(d)
 
 
@@ -244,6 +246,59 @@ def study(
     text = spec.to_json() if isinstance(spec, Scenario) else _spec_text(spec)
     summary, shard = _aes_sim.run_study(kind, text, range, threads, progress)
     return json.loads(shard) if range is not None else json.loads(summary)
+
+
+def fuel_per_mile(
+    scenario: ScenarioLike = "preset:head-seas-ss6",
+    speeds_kn: Iterable[float] = (12, 15, 18, 21, 24, 27),
+    seeds: int = 3,
+    from_s: float | None = None,
+    *,
+    threads: int | None = None,
+    progress: Progress | None = None,
+) -> dict:
+    """Fuel per nautical mile against ordered speed over ``seeds`` seas each (``aes-sim
+    fuel-per-mile FILE --speeds ... --seeds N --from S``, the same defaults): its summary dict.
+    ``from_s`` (the start of the measurement) defaults to half the run."""
+    sc = _scenario(scenario)
+    if from_s is None:
+        from_s = 0.5 * sc["sim.duration_s"]
+    spec = {"scenario": sc, "speeds_kn": [float(v) for v in speeds_kn], "seeds": seeds, "from_s": from_s}
+    return study("fuel-per-mile", spec, threads=threads, progress=progress)
+
+
+def operability(
+    scenario: ScenarioLike = "preset:startup",
+    speeds_kn: Iterable[float] | None = None,
+    headings_deg: Iterable[float] | None = None,
+    sea_states: Iterable[int] | None = None,
+    seas: Iterable[tuple[float, float]] | None = None,
+    scatter: str | os.PathLike | None = None,
+    *,
+    threads: int | None = None,
+    progress: Progress | None = None,
+) -> dict:
+    """The operability polar (``aes-sim operability FILE --speeds --headings --sea-states --seas
+    --scatter``, the same defaults): speeds [kn], wave headings relative to the ship [deg] (180 head
+    seas), sea states of Table 2.4 or seas of one's own as (H_1/3 m, T_p s) pairs, and a wave scatter
+    diagram CSV file (``"none"`` for none; by default the IACS Rec. 34 North Atlantic)."""
+    request: dict[str, Any] = {}
+    if speeds_kn is not None:
+        request["speeds_kn"] = [float(v) for v in speeds_kn]
+    if headings_deg is not None:
+        request["headings_deg"] = [float(v) for v in headings_deg]
+    if sea_states is not None:
+        request["sea_states"] = list(sea_states)
+    if seas is not None:
+        request["seas"] = [[float(h), float(t)] for h, t in seas]
+    if scatter is not None:
+        if os.fspath(scatter) == "none":
+            request["scatter_csv"] = "none"
+        else:
+            with open(scatter, encoding="utf-8") as f:
+                request["scatter_csv"] = f.read()
+            request["scatter_name"] = os.fspath(scatter)
+    return study("operability", {"scenario": _scenario(scenario), "request": request}, threads=threads, progress=progress)
 
 
 def merge(shards: Iterable[Mapping | str | os.PathLike]) -> dict:

@@ -102,3 +102,17 @@ def test_an_unknown_preset_raises_the_cli_message(cli):
     with pytest.raises(aes_sim.AesSimError) as e:
         aes_sim.preset("nonesuch")
     assert str(e.value) == err.removeprefix("aes-sim: ").rstrip("\n")
+
+
+def test_fuel_per_mile_equals_the_cli(cli_json):
+    want = cli_json(
+        "fuel-per-mile", "preset:head-seas-ss6", "--speeds", "20,25", "--seeds", 1, "--set", "sim.duration_s=20", "--quiet"
+    )
+    sc = aes_sim.Scenario.from_preset("head-seas-ss6").set("sim.duration_s", 20)
+    assert aes_sim.fuel_per_mile(sc, speeds_kn=[20, 25], seeds=1) == want
+
+
+def test_operability_equals_the_cli(cli_json):
+    want = cli_json("operability", "--speeds", "10,20", "--headings", "180,90", "--sea-states", "4", "--quiet")
+    got = aes_sim.operability(speeds_kn=[10, 20], headings_deg=[180, 90], sea_states=[4], threads=1)
+    assert got == want
