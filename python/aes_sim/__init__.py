@@ -38,6 +38,7 @@ __all__ = [
     "presets",
     "run",
     "signals",
+    "storage_sizing",
     "study",
 ]
 
@@ -299,6 +300,27 @@ def operability(
                 request["scatter_csv"] = f.read()
             request["scatter_name"] = os.fspath(scatter)
     return study("operability", {"scenario": _scenario(scenario), "request": request}, threads=threads, progress=progress)
+
+
+def storage_sizing(
+    scenario: ScenarioLike = "preset:head-seas-ss6",
+    energies_mj: Iterable[float] = (25, 50, 100, 200, 400),
+    powers_mw: Iterable[float] = (2.5, 5, 10, 20),
+    duration_s: float = 600.0,
+    *,
+    threads: int | None = None,
+    progress: Progress | None = None,
+) -> dict:
+    """Storage sizing (``aes-sim storage-sizing FILE --energy-mj --power-mw --duration-s --json``,
+    the same defaults): one run per storage energy on each bus [MJ] and power rating [MW], each
+    ``duration_s`` long; its summary dict."""
+    sc = _scenario(scenario).copy().set("sim.duration_s", duration_s)
+    spec = {
+        "scenario": sc,
+        "energies_j": [float(v) * 1e6 for v in energies_mj],
+        "powers_w": [float(v) * 1e6 for v in powers_mw],
+    }
+    return study("storage-sizing", spec, threads=threads, progress=progress)
 
 
 def merge(shards: Iterable[Mapping | str | os.PathLike]) -> dict:

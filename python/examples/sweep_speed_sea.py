@@ -73,7 +73,7 @@ def main():
                 t = r.trace
                 ax1.plot(t["t_s"], t["h_over_r"], lw=0.8, label=f"SS{ss}, {kn} kn")
                 ax2.plot(t["t_s"], t["bus_voltage_v"] / 1e3, lw=0.8)
-            ax1.axhline(1.1, color="k", ls=":", lw=0.8)
+            ax1.axhline(1.1, color="k", ls=":", lw=0.8, label="h/R = 1.1 (ventilation below)")
             ax1.set_ylabel(f"h/R [{runs[0][2].units['h_over_r']}]")
             ax2.set_ylabel("bus voltage [kV]")
             ax2.set_xlabel("time [s]")

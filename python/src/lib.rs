@@ -4,7 +4,7 @@
 //! package's Python half (python/aes_sim/) makes dicts and numpy arrays of what this returns.
 //!
 //! Every run and study releases the GIL while Rust computes. A study runs on its own thread
-//! while the calling thread, every [`POLL`], takes the GIL back to call the progress callback
+//! while the calling thread, every 100 ms, takes the GIL back to call the progress callback
 //! and to look for Ctrl-C: either stops the study's remaining items, and the exception is raised.
 
 use aes_core::checks::shorten;

@@ -116,3 +116,12 @@ def test_operability_equals_the_cli(cli_json):
     want = cli_json("operability", "--speeds", "10,20", "--headings", "180,90", "--sea-states", "4", "--quiet")
     got = aes_sim.operability(speeds_kn=[10, 20], headings_deg=[180, 90], sea_states=[4], threads=1)
     assert got == want
+
+
+def test_storage_sizing_equals_the_cli(cli_json):
+    want = cli_json(
+        "storage-sizing", "preset:head-seas-ss6-storage", "--energy-mj", "50,100", "--power-mw", "10", "--duration-s", 20,
+        "--json", "--quiet",
+    )
+    got = aes_sim.storage_sizing("preset:head-seas-ss6-storage", energies_mj=[50, 100], powers_mw=[10], duration_s=20)
+    assert got == want
