@@ -103,6 +103,24 @@ def test_the_gil_is_released_while_rust_runs():
     assert box["r"].summary["final_time_s"] == pytest.approx(400.0, abs=1e-9)
 
 
+def interrupted_after(script, wait_s):
+    """Runs `script` in a new Python, sends it SIGINT `wait_s` after it prints its first line, and
+    gives its exit status, what it printed after, and how long it took to stop [s]."""
+    p = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True, cwd=os.sep)
+    try:
+        assert p.stdout.readline().strip() == "running"
+        time.sleep(wait_s)
+        t0 = time.monotonic()
+        p.send_signal(signal.SIGINT)
+        code = p.wait(timeout=10)
+        return code, p.stdout.read(), time.monotonic() - t0
+    finally:
+        p.kill()
+
+
+CATCH = "except KeyboardInterrupt:\n    print('interrupted', flush=True)\n    sys.exit(3)\n"
+
+
 def test_ctrl_c_stops_a_long_study_cleanly():
     script = (
         "import sys, aes_sim\n"
@@ -110,20 +128,23 @@ def test_ctrl_c_stops_a_long_study_cleanly():
         "def tell(done, total):\n"
         "    print('running', flush=True)\n"
         "try:\n"
-        "    aes_sim.monte_carlo(sc, threads=1, progress=tell)\n"
-        "except KeyboardInterrupt:\n"
-        "    print('interrupted', flush=True)\n"
-        "    sys.exit(3)\n"
+        "    aes_sim.monte_carlo(sc, threads=1, progress=tell)\n" + CATCH
     )
-    p = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True, cwd=os.sep)
-    try:
-        assert p.stdout.readline().strip() == "running"
-        t0 = time.monotonic()
-        p.send_signal(signal.SIGINT)
-        code = p.wait(timeout=10)
-        stopped_s = time.monotonic() - t0
-    finally:
-        p.kill()
-    assert code == 3 and "interrupted" in p.stdout.read()
+    code, out, stopped_s = interrupted_after(script, 0.0)
+    assert code == 3 and "interrupted" in out
     # 400 trials take about 40 s on a thread: it stopped after the trial in hand.
     assert stopped_s < 5.0
+
+
+def test_ctrl_c_stops_a_long_run_cleanly():
+    script = (
+        "import sys, aes_sim\n"
+        "sc = aes_sim.Scenario.from_preset('startup').update({'sim.duration_s': 50000, 'sim.record_interval_s': 1})\n"
+        "print('running', flush=True)\n"
+        "try:\n"
+        "    aes_sim.run(sc)\n" + CATCH
+    )
+    code, out, stopped_s = interrupted_after(script, 0.5)
+    assert code == 3 and "interrupted" in out
+    # The run takes about 45 s: it stopped within a chunk of steps.
+    assert stopped_s < 3.0
