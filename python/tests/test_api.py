@@ -118,33 +118,30 @@ def interrupted_after(script, wait_s):
         p.kill()
 
 
-CATCH = "except KeyboardInterrupt:\n    print('interrupted', flush=True)\n    sys.exit(3)\n"
+def catching(setup, call):
+    """A script: `setup`, then `call` with KeyboardInterrupt caught (it prints 'interrupted' and
+    exits with status 3)."""
+    return f"import sys, aes_sim\n{setup}\ntry:\n    {call}\nexcept KeyboardInterrupt:\n    print('interrupted', flush=True)\n    sys.exit(3)\n"
 
 
 def test_ctrl_c_stops_a_long_study_cleanly():
-    script = (
-        "import sys, aes_sim\n"
+    setup = (
         "sc = aes_sim.Scenario.from_preset('mc-wigley').update({'sim.duration_s': 10, 'monte_carlo.trials': 400})\n"
         "def tell(done, total):\n"
-        "    print('running', flush=True)\n"
-        "try:\n"
-        "    aes_sim.monte_carlo(sc, threads=1, progress=tell)\n" + CATCH
+        "    print('running', flush=True)"
     )
-    code, out, stopped_s = interrupted_after(script, 0.0)
+    code, out, stopped_s = interrupted_after(catching(setup, "aes_sim.monte_carlo(sc, threads=1, progress=tell)"), 0.0)
     assert code == 3 and "interrupted" in out
     # 400 trials take about 40 s on a thread: it stopped after the trial in hand.
     assert stopped_s < 5.0
 
 
 def test_ctrl_c_stops_a_long_run_cleanly():
-    script = (
-        "import sys, aes_sim\n"
+    setup = (
         "sc = aes_sim.Scenario.from_preset('startup').update({'sim.duration_s': 50000, 'sim.record_interval_s': 1})\n"
-        "print('running', flush=True)\n"
-        "try:\n"
-        "    aes_sim.run(sc)\n" + CATCH
+        "print('running', flush=True)"
     )
-    code, out, stopped_s = interrupted_after(script, 0.5)
+    code, out, stopped_s = interrupted_after(catching(setup, "aes_sim.run(sc)"), 0.5)
     assert code == 3 and "interrupted" in out
     # The run takes about 45 s: it stopped within a chunk of steps.
     assert stopped_s < 3.0
