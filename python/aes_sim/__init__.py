@@ -30,6 +30,7 @@ __all__ = [
     "Scenario",
     "Trace",
     "fuel_per_mile",
+    "maneuvers",
     "merge",
     "monte_carlo",
     "operability",
@@ -37,6 +38,7 @@ __all__ = [
     "preset",
     "presets",
     "run",
+    "schedule",
     "signals",
     "storage_sizing",
     "study",
@@ -321,6 +323,24 @@ def storage_sizing(
         "powers_w": [float(v) * 1e6 for v in powers_mw],
     }
     return study("storage-sizing", spec, threads=threads, progress=progress)
+
+
+def maneuvers(scenario: ScenarioLike = "preset:turn-360", tracks: bool = True) -> dict:
+    """The standard maneuvers booklet of the scenario's ship (``aes-sim maneuvers FILE --json``,
+    IMO MSC.137(76)): the turning circle, the zig-zags, coasting, the crash stop and IMO's
+    verdicts; ``tracks=False`` leaves the tracks empty, as ``--no-tracks`` does."""
+    b = json.loads(_aes_sim.maneuvers(_scenario(scenario).to_json()))
+    if not tracks:
+        for key in ("turning", "zigzag_10", "zigzag_20", "stopping"):
+            if b.get(key) is not None:
+                b[key]["track"] = []
+    return b
+
+
+def schedule(scenario: ScenarioLike = "preset:startup") -> dict:
+    """How many gas turbines should run, speed by speed and sea state by sea state (``aes-sim
+    schedule FILE --json``'s ``schedule``, thesis ch. 6.1)."""
+    return json.loads(_aes_sim.schedule(_scenario(scenario).to_json()))
 
 
 def merge(shards: Iterable[Mapping | str | os.PathLike]) -> dict:

@@ -143,6 +143,23 @@ fn monte_carlo(
     Ok(drive(py, &s, None, threads, progress)?.summary)
 }
 
+/// The standard maneuvers booklet of a scenario's ship (`aes-sim maneuvers`, IMO MSC.137(76)) as
+/// JSON, tracks included.
+#[pyfunction]
+fn maneuvers(py: Python<'_>, text: &str) -> PyResult<String> {
+    let sc = Scenario::from_json(text).map_err(err)?;
+    py.detach(|| summary_text(&aes_core::studies::maneuvers::booklet(&sc)?)).map_err(err)
+}
+
+/// How many gas turbines should run, speed by speed and sea state by sea state (`aes-sim
+/// schedule`, thesis ch. 6.1): the schedule as JSON (`--json`'s `schedule`).
+#[pyfunction]
+fn schedule(py: Python<'_>, text: &str) -> PyResult<String> {
+    let sc = Scenario::from_json(text).map_err(err)?;
+    sc.validate().map_err(err)?;
+    py.detach(|| summary_text(&aes_core::studies::schedule::run(&sc)?)).map_err(err)
+}
+
 /// What [`drive`] gives: the summary as JSON (when the study was whole) and the shard as JSON.
 struct Outcome {
     summary: String,
@@ -335,5 +352,7 @@ fn _aes_sim(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(monte_carlo, m)?)?;
     m.add_function(wrap_pyfunction!(run_study, m)?)?;
     m.add_function(wrap_pyfunction!(merge, m)?)?;
+    m.add_function(wrap_pyfunction!(maneuvers, m)?)?;
+    m.add_function(wrap_pyfunction!(schedule, m)?)?;
     Ok(())
 }

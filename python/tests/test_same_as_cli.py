@@ -125,3 +125,9 @@ def test_storage_sizing_equals_the_cli(cli_json):
     )
     got = aes_sim.storage_sizing("preset:head-seas-ss6-storage", energies_mj=[50, 100], powers_mw=[10], duration_s=20)
     assert got == want
+
+
+def test_maneuvers_and_schedule_equal_the_cli(cli_json):
+    assert aes_sim.maneuvers(tracks=False) == cli_json("maneuvers", "--no-tracks")
+    got = aes_sim.schedule()
+    assert got == cli_json("schedule", "--json")["schedule"] and got["cells"]
