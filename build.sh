@@ -96,11 +96,15 @@ ensure_python_package() {
   fi
   if ! python3 -m maturin --version >/dev/null 2>&1 || ! python3 -c 'import numpy, pytest' 2>/dev/null; then
     say "installing maturin, numpy and pytest from PyPI"
-    pip_install 'maturin>=1.5,<2' numpy pytest
+    pip_install 'maturin>=1.5,<2' numpy pytest || true
   fi
   say "building and installing the Python package aes_sim (pip install ./python)"
-  # No build isolation: the maturin just installed builds it, nothing is fetched again.
-  pip_install --no-build-isolation --force-reinstall --no-deps ./python
+  # No build isolation: the maturin just installed builds it, nothing is fetched again. A failure
+  # is said but does not stop the page's set-up (./build.sh test then fails at the Python tests).
+  if ! pip_install --no-build-isolation --force-reinstall --no-deps ./python; then
+    echo "build.sh: the Python package aes_sim was not installed (see above); docs/python.md" >&2
+    return
+  fi
   mkdir -p target
   (cd / && python3 -c 'import aes_sim._aes_sim as m; print(m.__file__)') > "$stamp"
 }

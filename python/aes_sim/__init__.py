@@ -40,6 +40,7 @@ __all__ = [
     "run",
     "schedule",
     "signals",
+    "stability_map",
     "storage_sizing",
     "study",
 ]
@@ -341,6 +342,20 @@ def schedule(scenario: ScenarioLike = "preset:startup") -> dict:
     """How many gas turbines should run, speed by speed and sea state by sea state (``aes-sim
     schedule FILE --json``'s ``schedule``, thesis ch. 6.1)."""
     return json.loads(_aes_sim.schedule(_scenario(scenario).to_json()))
+
+
+def stability_map(
+    scenario: ScenarioLike,
+    x: tuple[str, float, float, int] | None = None,
+    y: tuple[str, float, float, int] | None = None,
+    *,
+    threads: int | None = None,
+    progress: Progress | None = None,
+) -> dict:
+    """The bus's stability (``aes-sim stability-map FILE [--x PATH=FROM:TO:N --y ...]``): without
+    axes the eigenvalues at the scenario's operating point (its ``initial.speed_kn``, above 0);
+    with ``x`` and ``y`` as ``(path, from, to, n)`` the map over those two parameters."""
+    return json.loads(_aes_sim.stability_map(_scenario(scenario).to_json(), x, y, threads, progress))
 
 
 def merge(shards: Iterable[Mapping | str | os.PathLike]) -> dict:

@@ -160,6 +160,35 @@ fn schedule(py: Python<'_>, text: &str) -> PyResult<String> {
     py.detach(|| summary_text(&aes_core::studies::schedule::run(&sc)?)).map_err(err)
 }
 
+/// One axis of a stability map: a scenario number's path, from, to, number of values.
+type AxisArg = (String, f64, f64, usize);
+
+/// The bus's stability (`aes-sim stability-map`): without axes the eigenvalues at the scenario's
+/// operating point, with both a map over the two parameters on the study pipeline; as JSON.
+#[pyfunction]
+#[pyo3(signature = (text, x=None, y=None, threads=None, progress=None))]
+fn stability_map(
+    py: Python<'_>,
+    text: &str,
+    x: Option<AxisArg>,
+    y: Option<AxisArg>,
+    threads: Option<usize>,
+    progress: Option<Py<PyAny>>,
+) -> PyResult<String> {
+    use aes_core::studies::stability_map::{linearize, Axis, StabilityMapSpec, StabilityMapStudy};
+    let sc = Scenario::from_json(text).map_err(err)?;
+    let axis = |which: &str, (path, lo, hi, n): AxisArg| Axis::checked(&sc, which, path.trim(), lo, hi, n).map_err(err);
+    match (x, y) {
+        (None, None) => py.detach(|| summary_text(&linearize(&sc)?)).map_err(err),
+        (Some(x), Some(y)) => {
+            let spec = StabilityMapSpec { x: axis("x", x)?, y: axis("y", y)?, scenario: sc.clone() };
+            let s = StabilityMapStudy::new(spec).map_err(err)?;
+            Ok(drive(py, &s, None, threads, progress)?.summary)
+        }
+        _ => Err(err("give both x and y for a map, or neither for the eigenvalues at the point")),
+    }
+}
+
 /// What [`drive`] gives: the summary as JSON (when the study was whole) and the shard as JSON.
 struct Outcome {
     summary: String,
@@ -354,5 +383,6 @@ fn _aes_sim(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(merge, m)?)?;
     m.add_function(wrap_pyfunction!(maneuvers, m)?)?;
     m.add_function(wrap_pyfunction!(schedule, m)?)?;
+    m.add_function(wrap_pyfunction!(stability_map, m)?)?;
     Ok(())
 }

@@ -131,3 +131,15 @@ def test_maneuvers_and_schedule_equal_the_cli(cli_json):
     assert aes_sim.maneuvers(tracks=False) == cli_json("maneuvers", "--no-tracks")
     got = aes_sim.schedule()
     assert got == cli_json("schedule", "--json")["schedule"] and got["cells"]
+
+
+def test_the_stability_map_equals_the_cli(cli_json):
+    assert aes_sim.stability_map("preset:acceleration") == cli_json("stability-map", "preset:acceleration")
+    x, y = ("plant.loads.ship_service_w", 1e6, 2e7, 3), ("plant.loads.filter_capacitance_f", 0.005, 0.04, 2)
+    want = cli_json(
+        "stability-map", "preset:acceleration", "--x", "plant.loads.ship_service_w=1e6:2e7:3",
+        "--y", "plant.loads.filter_capacitance_f=0.005:0.04:2", "--quiet",
+    )
+    assert aes_sim.stability_map("preset:acceleration", x, y) == want
+    with pytest.raises(aes_sim.AesSimError, match="give both x and y"):
+        aes_sim.stability_map("preset:acceleration", x)
