@@ -20,7 +20,14 @@ from typing import Any
 
 import numpy as np
 
-from . import _aes_sim
+try:
+    from . import _aes_sim
+except ImportError as e:  # pragma: no cover - a set-up problem, said in words
+    raise ImportError(
+        f"aes_sim: its native module is missing next to {__file__}: this is the source folder "
+        "(python/aes_sim: run from another folder), or the package is not built (./build.sh, or "
+        "pip install ./python; docs/python.md)"
+    ) from e
 from ._aes_sim import KINDS, AesSimError
 
 __all__ = [
