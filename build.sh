@@ -75,7 +75,8 @@ pip_install() {
   if python3 -c 'import sys, sysconfig, os; sys.exit(not os.path.exists(os.path.join(sysconfig.get_path("stdlib"), "EXTERNALLY-MANAGED")) or sys.prefix != sys.base_prefix)'; then
     extra=(--user --break-system-packages)
   fi
-  python3 -m pip install --quiet --disable-pip-version-check "${extra[@]}" "$@"
+  # (The empty array spelled so that bash 3.2 with set -u accepts it.)
+  python3 -m pip install --quiet --disable-pip-version-check ${extra[@]+"${extra[@]}"} "$@"
 }
 
 # The Python package aes_sim (python/, docs/python.md): maturin, numpy and pytest from PyPI when
