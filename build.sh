@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # aes-sim: the one entry point.
 #
-#   ./build.sh            set up what is missing, build the wasm into www/pkg, serve www on
-#                         http://127.0.0.1:${PORT:-8080}
+#   ./build.sh            set up what is missing (the Python package aes_sim included), build the
+#                         wasm into www/pkg, serve www on http://127.0.0.1:${PORT:-8080}
 #   ./build.sh build      set up and build only (native CLI and www/pkg)
 #   ./build.sh test       set up, then rustfmt check, the book's links and generated tables (docs/),
 #                         clippy and cargo doc (warnings denied), every native test
 #                         (release mode), the cluster recipes (GNU parallel and Slurm shards
 #                         merge to the single run), the wasm-bindgen tests in Node and the browser
-#                         end-to-end test in headless Chromium (screenshots in target/)
+#                         end-to-end test in headless Chromium (screenshots in target/), the
+#                         Python package's tests (pytest: its numbers equal the command line's)
 #   ./build.sh bench      simulated seconds per wall second of the start-up preset
 #   ./build.sh fuzz       the property tests of every entry point (tests/fuzz.rs) with many more
 #                         cases (AES_FUZZ_CASES, default 20000; a few minutes), before releases
@@ -64,6 +65,49 @@ setup() {
       echo "build.sh: npm not found; skipping uPlot and wasm-opt (the page still builds)" >&2
     fi
   fi
+  ensure_python_package
+}
+
+# pip for the aes_sim package: plain, or on an interpreter whose packages the system manages
+# (PEP 668) into the user's site (~/.local), which leaves the system's packages alone.
+pip_install() {
+  local extra=()
+  if python3 -c 'import sys, sysconfig, os; sys.exit(not os.path.exists(os.path.join(sysconfig.get_path("stdlib"), "EXTERNALLY-MANAGED")) or sys.prefix != sys.base_prefix)'; then
+    extra=(--user --break-system-packages)
+  fi
+  # (The empty array spelled so that bash 3.2 with set -u accepts it.)
+  python3 -m pip install --quiet --disable-pip-version-check ${extra[@]+"${extra[@]}"} "$@"
+}
+
+# The Python package aes_sim (python/, docs/python.md): maturin, numpy and pytest from PyPI when
+# missing, then one release build of the thin crate into this workspace's target/ (aes-core's
+# release build is reused, not rebuilt) and `pip install ./python`. Skipped when the installed
+# package is this checkout's and no source is newer than its install.
+ensure_python_package() {
+  if ! python3 -c 'import sys; sys.exit(sys.version_info < (3, 11))' 2>/dev/null; then
+    echo "build.sh: the Python package aes_sim needs python3 >= 3.11; skipping it" >&2
+    return
+  fi
+  local stamp=target/python-package.stamp so
+  so="$(cd / && python3 -c 'import aes_sim._aes_sim as m; print(m.__file__)' 2>/dev/null || true)"
+  if [ -n "$so" ] && [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$so" ] && [ ! "$so" -nt "$stamp" ] &&
+    [ -z "$(find core python .cargo Cargo.toml Cargo.lock -newer "$stamp" \
+      -not -path '*/__pycache__*' -not -path '*/.pytest_cache*' -print -quit)" ]; then
+    return
+  fi
+  if ! python3 -m maturin --version >/dev/null 2>&1 || ! python3 -c 'import numpy, pytest' 2>/dev/null; then
+    say "installing maturin, numpy and pytest from PyPI"
+    pip_install 'maturin>=1.5,<2' numpy pytest || true
+  fi
+  say "building and installing the Python package aes_sim (pip install ./python)"
+  # No build isolation: the maturin just installed builds it, nothing is fetched again. A failure
+  # is said but does not stop the page's set-up (./build.sh test then fails at the Python tests).
+  if ! pip_install --no-build-isolation --force-reinstall --no-deps ./python; then
+    echo "build.sh: the Python package aes_sim was not installed (see above); docs/python.md" >&2
+    return
+  fi
+  mkdir -p target
+  (cd / && python3 -c 'import aes_sim._aes_sim as m; print(m.__file__)') > "$stamp"
 }
 
 ensure_chromium() {
@@ -189,8 +233,10 @@ run_tests() {
   node tests/e2e/marks.mjs "http://127.0.0.1:$port/" "$shots" 2>&1 | tee -a "$log"
   kill "$server" 2>/dev/null || true
   trap - EXIT
+  say "the Python package: its numbers equal the command line's (issue 58; pytest)"
+  python3 -m pytest -q -p no:cacheprovider python/tests 2>&1 | tee -a "$log"
   # One closing line for the whole suite (pipefail has already stopped us on any failure).
-  awk '/^test result:/ { p += $4; f += $6 } /^e2e: / { p += $2; f += $4 } END { printf "all tests: %d passed, %d failed\n", p, f }' "$log"
+  awk '/^test result:/ { p += $4; f += $6 } /^e2e: / { p += $2; f += $4 } /^[0-9]+ passed/ { p += $1 } END { printf "all tests: %d passed, %d failed\n", p, f }' "$log"
   rm -f "$log"
 }
 
