@@ -270,15 +270,7 @@ pub fn load(file: &str, sets: &[String]) -> Result<Scenario, String> {
     // All at once: fields that change together (a significant height with its peak frequency)
     // are checked together. An error names its field.
     if !pairs.is_empty() {
-        // Every flag's path is named (the error's field may be another that they move together),
-        // the first few of a long list.
-        const NAMED: usize = 4;
-        let mut paths: Vec<String> = pairs.iter().take(NAMED).map(|(p, _)| shorten(p)).collect();
-        if pairs.len() > NAMED {
-            paths.push(format!("and {} more", pairs.len() - NAMED));
-        }
-        let what = format!("--set {}", paths.join(", "));
-        sc = sc.with_overrides(&pairs).map_err(|e| format!("{what}: {e}"))?;
+        sc = sc.with_set_flags(&pairs)?;
     }
     Ok(sc)
 }

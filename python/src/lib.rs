@@ -74,12 +74,8 @@ fn scenario_json(text: &str, source: &str) -> PyResult<String> {
 fn scenario_set(text: &str, sets: Vec<(String, String)>) -> PyResult<String> {
     let sc = Scenario::from_json(text).map_err(err)?;
     let pairs: Vec<(&str, &str)> = sets.iter().map(|(p, v)| (p.trim(), v.trim())).collect();
-    // The command line's words (cli/src/common.rs, `load`): one setting is named, several are not.
-    let what = match pairs.as_slice() {
-        [(path, _)] => format!("--set {}", shorten(path)),
-        _ => "--set".to_string(),
-    };
-    sc.with_overrides(&pairs).map(|s| s.to_json()).map_err(|e| err(format!("{what}: {e}")))
+    // The command line's words (`Scenario::with_set_flags`, as `aes-sim run --set` says them).
+    sc.with_set_flags(&pairs).map(|s| s.to_json()).map_err(err)
 }
 
 /// A summary as the command line prints it: every number checked finite, the keys sorted.

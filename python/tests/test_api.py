@@ -60,7 +60,7 @@ def test_bad_input_raises_errors_that_name_the_field():
     with pytest.raises(TypeError):
         aes_sim.run(42)
     # Several settings at once are checked together, named as several --set flags are.
-    with pytest.raises(aes_sim.AesSimError, match=r"^--set: "):
+    with pytest.raises(aes_sim.AesSimError, match=r"^--set sim.duration_s, stepping.dt_s: stepping.dt_s = -1"):
         aes_sim.Scenario.from_preset("startup").update({"sim.duration_s": 5, "stepping.dt_s": -1})
 
 

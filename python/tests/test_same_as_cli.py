@@ -96,6 +96,15 @@ def test_a_refused_parameter_raises_the_cli_message(cli):
     assert sc == aes_sim.Scenario.from_preset("startup")
 
 
+def test_several_settings_refused_together_name_them_as_the_cli_does(cli):
+    code, _, err = cli("run", "preset:startup", "--set", "sim.duration_s=1", "--set", "stepping.dt_s=0.003")
+    assert code == 1 and err.startswith("aes-sim: --set sim.duration_s, stepping.dt_s: ")
+    sc = aes_sim.Scenario.from_preset("startup")
+    with pytest.raises(aes_sim.AesSimError) as e:
+        sc.update({"sim.duration_s": 1, "stepping.dt_s": 0.003})
+    assert str(e.value) == err.removeprefix("aes-sim: ").rstrip("\n")
+
+
 def test_an_unknown_preset_raises_the_cli_message(cli):
     code, _, err = cli("preset", "nonesuch")
     assert code == 1

@@ -79,6 +79,20 @@ impl Scenario {
         self.with_overrides(&[(path, value_text)])
     }
 
+    /// `with_overrides` for the command line's `--set PATH=VALUE` flags (and the Python package's
+    /// `Scenario.set`), refused in the flags' words: every flag's path is named (the error's field
+    /// may be another that they move together), the first few of a long list.
+    pub fn with_set_flags(&self, sets: &[(&str, &str)]) -> Result<Scenario, String> {
+        const NAMED: usize = 4;
+        self.with_overrides(sets).map_err(|e| {
+            let mut paths: Vec<String> = sets.iter().take(NAMED).map(|(p, _)| crate::checks::shorten(p)).collect();
+            if sets.len() > NAMED {
+                paths.push(format!("and {} more", sets.len() - NAMED));
+            }
+            format!("--set {}: {e}", paths.join(", "))
+        })
+    }
+
     /// The same for several (path, value) pairs at once, checked together: fields that must
     /// change together (sea.h_sig_m with sea.omega_n_rad_s) can, in either order.
     pub fn with_overrides(&self, sets: &[(&str, &str)]) -> Result<Scenario, ScenarioError> {
