@@ -629,7 +629,7 @@ fn the_engines_story_states_the_scenarios_rating_and_efficiency() {
 }
 
 /// The numbers the stopping lesson's story states (a constant text) are its scenario's: the
-/// approach speed, the crash stop's time, the diode rectifiers and the storages' rating; and a
+/// approach speed it starts at, the crash stop's time, the diode rectifiers and the storages' rating; and a
 /// storage of each size is the only change from the preset.
 #[test]
 fn the_stopping_story_states_the_scenarios_speed_order_and_rating() {
@@ -639,7 +639,7 @@ fn the_stopping_story_states_the_scenarios_speed_order_and_rating() {
     assert_eq!(sc.plant.storage.energy_j, 0.0, "the lesson opens without storage");
     let order = sc.commands.iter().find(|c| c.crash_stop).expect("the crash stop");
     for words in [
-        format!("steams at {} knots", sc.initial.speed_kn),
+        format!("steams ahead ({} knots to start)", sc.initial.speed_kn),
         format!("At {} s the bridge orders full astern", order.t_s),
         "The diode rectifiers".to_string(),
     ] {
