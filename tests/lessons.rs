@@ -637,6 +637,9 @@ fn the_stopping_story_states_the_scenarios_speed_order_and_rating() {
     let none = lessons::open(&l, &[]).unwrap();
     let sc = &none.scenario;
     assert_eq!(sc.plant.storage.energy_j, 0.0, "the lesson opens without storage");
+    // "none" sets the rating back to the preset's own (a run after a storage keeps no rating).
+    let own = aes_core::scenario::presets::preset("crash-stop").unwrap().plant.storage.power_w;
+    assert_eq!(sc.plant.storage.power_w, own);
     let order = sc.commands.iter().find(|c| c.crash_stop).expect("the crash stop");
     for words in [
         format!("steams ahead ({} knots to start)", sc.initial.speed_kn),

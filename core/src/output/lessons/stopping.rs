@@ -10,9 +10,10 @@ use crate::studies::stopping::IMO_TRACK_REACH_L;
 
 /// The control: the storage's energy on each bus \[J\], and the power rating each storage is
 /// given with it (`crash-stop-storage`'s, 20 MW: it takes the motors' returned power but its
-/// first peak).
+/// first peak); without storage the preset's own rating, so that no rating is set for nothing.
 const STORAGE_J: &str = "plant.storage.energy_j";
 const RATING: &[(&str, &str)] = &[("plant.storage.power_w", "20000000")];
+const NO_RATING: &[(&str, &str)] = &[("plant.storage.power_w", "10000000")];
 
 /// Brake energies closer than this \[J\] are "about the same".
 const BRAKE_BY_J: f64 = 1.0e6;
@@ -38,7 +39,7 @@ pub(super) fn lesson() -> Lesson {
             kind: ControlKind::Toggle {
                 values: &["0", "50000000", "100000000", "150000000", "200000000"],
                 labels: &["none", "50 MJ", "100 MJ", "150 MJ (crash-stop-storage's)", "200 MJ"],
-                settings: &[&[], RATING, RATING, RATING, RATING],
+                settings: &[NO_RATING, RATING, RATING, RATING, RATING],
             },
         }, speed(15.0, 30.0)],
         question: "Fit a storage on each DC bus and make it bigger. What happens to the energy the brake resistors burn in the crash stop?",
