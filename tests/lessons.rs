@@ -363,7 +363,6 @@ const PLAIN: &[&str] = &[
     "the rest of the swing",
     "takes more of each swing",
     "make it bigger",
-    "the furthest point of its track",
     "a bigger storage does not help",
 ];
 

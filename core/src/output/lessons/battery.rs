@@ -68,7 +68,6 @@ pub(super) fn lesson() -> Lesson {
 
 /// A swing smaller by more than the margin is steadier; under a quarter of the one before, the
 /// swing "almost vanishes".
-
 fn steadier(away: f64, toward: f64, by: f64) -> Result<usize, &'static str> {
     Ok(match Relation::of(toward, away, by) {
         Relation::Less if toward < 0.25 * away => 0,

@@ -83,7 +83,7 @@ fn stopping(b: &mut Book, sc: &serde_json::Value, energy_j: f64, t0: f64, length
     let back = b.stat(&["p_inverter_w"], Stat::Min, t0, end);
     b.say(
         format!(
-            "At {} s full astern is ordered at {} knots: the water drives the propellers, and the motors brake as generators and returned up to {} MW to the buses ({} s, the instant the drive-train picture shows).",
+            "At {} s full astern is ordered at {} knots: the motors brake as generators and returned up to {} MW to the buses ({} s, as pictured).",
             f(t0, 0),
             f(v0.1, 1),
             f(-back.1 / 1e6, 1),
@@ -103,7 +103,7 @@ fn stopping(b: &mut Book, sc: &serde_json::Value, energy_j: f64, t0: f64, length
         let i = b.last();
         b.say(
             format!(
-                "The ship was dead in the water {} s after the order, {} m on ({} ship lengths; IMO's limit for merchant ships is {}): the furthest point of its track, after which it went astern.",
+                "The ship was dead in the water {} s later, {} m on ({} ship lengths; IMO's limit for merchant ships: {}), after which it went astern.",
                 f(far.2 - t0, 1),
                 f(reach, 0),
                 f(reach / length_m, 2),
@@ -119,19 +119,12 @@ fn stopping(b: &mut Book, sc: &serde_json::Value, energy_j: f64, t0: f64, length
         );
     }
     let brake = b.energy("brake_power_w", t0, end);
-    b.say(
-        format!(
-            "From the order to the end of the run ({} s) the brake resistors burnt {} MJ as heat.",
-            f(end, 0),
-            mj(brake.1)
-        ),
-        &[brake.0],
-    );
+    b.say(format!("The brake resistors burnt {} MJ as heat by the end ({} s).", mj(brake.1), f(end, 0)), &[brake.0]);
     if energy_j > 0.0 {
         storage(b, sc, energy_j, (t0, far.2), end);
     } else {
         b.say(
-            "No storage is fitted on the buses: what the motors return and the diode rectifiers cannot pass to the turbines, the resistors burn.".into(),
+            "With no storage, the resistors burn what the diode rectifiers cannot pass to the turbines.".into(),
             &[brake.0],
         );
     }
@@ -206,12 +199,11 @@ fn storage(b: &mut Book, sc: &serde_json::Value, energy_j: f64, (t0, dead): (f64
         let i = b.last();
         b.say(
             format!(
-                "Then, as the motors drove the shafts astern, the storages gave the buses {} MJ and their charge went down to {} % ({} s), {} its floor: from {} % of charge down to its lowest allowed charge ({} %) the controller gives less and less, and the turbines take the motors' whole load.",
+                "Then, as the motors drove the shafts astern, the storages gave the buses {} MJ and their charge went down to {} % ({} s), {} its floor ({} %), where the controller gives less and less and the turbines take the motors' whole load.",
                 mj(gave.1),
                 f(100.0 * low.1, 0),
                 f(low.2, 1),
                 pct_points(low.1 - floor),
-                f(100.0 * edge, 0),
                 f(100.0 * floor, 0)
             ),
             &[gave.0, zero, gi, low.0, lv, i, fl],
@@ -231,25 +223,24 @@ fn bus(b: &mut Book, t0: f64, end: f64) {
     } else {
         format!("inside its band (up to {} pu)", f(high, 2))
     };
-    let i = b.last();
-    b.say(format!("The bus voltage rose to {} pu ({} s), {where_}.", f(peak.1, 3), f(peak.2, 1)), &[peak.0, hl, i]);
+    let mut ids = vec![peak.0, hl, b.last()];
     let lowest = b.stat(&["bus_voltage_pu"], Stat::Min, t0, end);
     let ll = b.push(Fact::Level { name: "bus band's lower edge [pu]", value: BUS_LOW_PU });
     let below = b.compare((lowest.0, lowest.1), (ll, BUS_LOW_PU), 0.0) == Relation::Less;
-    let mut ids = vec![lowest.0, ll, b.last()];
+    ids.extend([lowest.0, ll, b.last()]);
     let (v, t, edge) = (f(lowest.1, 3), f(lowest.2, 1), f(BUS_LOW_PU, 1));
-    let text = if below {
+    let then = if below {
         // The instant's motor power: what the buses were feeding when they sagged.
         let p = b.at("p_inverter_w", lowest.2);
         ids.push(p.0);
         format!(
-            "It went down to {v} pu at {t} s, below its band's lower edge of {edge} pu, while the motors took {} MW.",
+            "it went down to {v} pu at {t} s, below its band's lower edge of {edge} pu, while the motors took {} MW",
             f(p.1 / 1e6, 1)
         )
     } else {
-        format!("Its lowest was {v} pu ({t} s), above its band's lower edge of {edge} pu.")
+        format!("its lowest was {v} pu ({t} s), above its band's lower edge of {edge} pu")
     };
-    b.say(text, &ids);
+    b.say(format!("The bus voltage rose to {} pu ({} s), {where_}; {then}.", f(peak.1, 3), f(peak.2, 1)), &ids);
     let lo = b.stat(&["turbine_speed_pu"], Stat::Min, t0, end);
     let hi = b.stat(&["turbine_speed_pu"], Stat::Max, t0, end);
     let over = b.push(Fact::Level { name: "turbines' overspeed level [pu]", value: TURBINE_OVERSPEED_PU });
@@ -263,7 +254,7 @@ fn bus(b: &mut Book, t0: f64, end: f64) {
     b.compare((hi.0, hi.1), (lo.0, lo.1), 0.0);
     let mi = b.last();
     b.say(
-        format!("The turbines' speed moved between {} and {} pu of its set speed{tail}.", f(lo.1, 3), f(hi.1, 3)),
+        format!("The turbines' speed moved between {} and {} pu{tail}.", f(lo.1, 3), f(hi.1, 3)),
         &[lo.0, hi.0, mi, over, oi],
     );
 }
