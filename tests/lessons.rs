@@ -94,7 +94,15 @@ fn measure(r: &RunResult, m: &Measure, submerged: f64) -> f64 {
             let rows = rows(r, *from_s, end(r));
             rows.iter().map(|&i| col(r, signal)[i]).sum::<f64>() / rows.len() as f64
         }
+        Measure::Energy { signal, from_s } => energy(r, signal, *from_s, end(r)),
     }
+}
+
+/// The time integral of a power column over the rows in [from, to] [J], by the trapezoid rule.
+fn energy(r: &RunResult, name: &str, from: f64, to: f64) -> f64 {
+    let (t, p) = (col(r, "t_s"), col(r, name));
+    let rows = rows(r, from, to);
+    rows.windows(2).map(|w| 0.5 * (p[w[0]] + p[w[1]]) * (t[w[1]] - t[w[0]])).sum()
 }
 
 /// A question about a change: its controls, its margin, its decision (see `question`).
@@ -130,6 +138,8 @@ fn question(name: &str) -> Option<Question> {
                 _ => 2,
             })
         }),
+        // More storage: less brake energy is "it falls", more "it rises", else "about the same".
+        "stopping" => (&["plant.storage.energy_j"], 1.0e6, |a, t, by| Some([2, 0, 1][rel(a, t, by) as usize])),
         _ => return None,
     })
 }
@@ -186,6 +196,15 @@ fn check_fact(r: &RunResult, facts: &[Fact], i: usize, submerged: f64, what: &st
             assert!(
                 (own - value_j).abs() <= 0.02 * own.abs() + 0.5e6,
                 "{what}: brake energy {value_j} J, the trace's {own} J"
+            );
+            *value_j
+        }
+        Fact::Energy { signal, from_s, to_s, value_j } => {
+            let own = energy(r, signal, *from_s, *to_s);
+            assert!(
+                (own - value_j).abs() <= 1e-9 * own.abs().max(1.0),
+                "{what}: fact {i} {:?} says {value_j} J, the trace {own} J",
+                facts[i]
             );
             *value_j
         }
@@ -294,6 +313,11 @@ const WORDS: &[(&str, &[Relation])] = &[
     ("points above", &[Relation::Less, Relation::About]),
     ("point below", &[Relation::Less, Relation::About]),
     ("point above", &[Relation::Less, Relation::About]),
+    ("after which it went astern", &[Relation::Less]),
+    ("still had way ahead", &[Relation::About]),
+    ("inside its band (up to", &[Relation::Less, Relation::About]),
+    ("above its band's top", &[Relation::More]),
+    ("above the 1.1 pu overspeed level", &[Relation::More]),
 ];
 
 /// Phrases that state a statistic of the trace (Some: that statistic among the sentence's facts;
@@ -311,6 +335,7 @@ const STATED: &[(&str, Option<Stat>)] = &[
     ("highest", Some(Stat::Max)),
     ("lowest", Some(Stat::Min)),
     ("ran from", Some(Stat::Max)),
+    ("returned up to", Some(Stat::Min)),
     ("a swing of", Some(Stat::Max)),
     ("the largest loss is", Some(Stat::At)),
     ("surface losses started", None),
@@ -337,6 +362,8 @@ const PLAIN: &[&str] = &[
     "take back the swings",
     "the rest of the swing",
     "takes more of each swing",
+    "make it bigger",
+    "a bigger storage does not help",
 ];
 
 fn check_case(l: &Lesson, set: &[(&'static str, String)]) -> String {
@@ -598,6 +625,37 @@ fn the_engines_story_states_the_scenarios_rating_and_efficiency() {
     let one = lessons::open(&l, &[("plant.online.sets", "[1]")]).unwrap();
     assert!(one.refused.is_empty(), "{:?}", one.refused);
     assert_eq!(one.scenario.plant.online.sets, vec![1]);
+}
+
+/// The numbers the stopping lesson's story states (a constant text) are its scenario's: the
+/// approach speed it starts at, the crash stop's time, the diode rectifiers and the storages' rating; and a
+/// storage of each size is the only change from the preset.
+#[test]
+fn the_stopping_story_states_the_scenarios_speed_order_and_rating() {
+    let l = lessons::lesson("stopping").unwrap();
+    let none = lessons::open(&l, &[]).unwrap();
+    let sc = &none.scenario;
+    assert_eq!(sc.plant.storage.energy_j, 0.0, "the lesson opens without storage");
+    // "none" sets the rating back to the preset's own (a run after a storage keeps no rating).
+    let own = aes_core::scenario::presets::preset("crash-stop").unwrap().plant.storage.power_w;
+    assert_eq!(sc.plant.storage.power_w, own);
+    let order = sc.commands.iter().find(|c| c.crash_stop).expect("the crash stop");
+    for words in [
+        format!("steams ahead ({} knots to start)", sc.initial.speed_kn),
+        format!("At {} s the bridge orders full astern", order.t_s),
+        "The diode rectifiers".to_string(),
+    ] {
+        assert!(l.story.contains(&words), "{words}: {}", l.story);
+    }
+    assert_eq!(sc.plant.dc_link.rectifier, aes_core::scenario::RectifierKind::Diode);
+    let with = lessons::open(&l, &[("plant.storage.energy_j", "150000000")]).unwrap();
+    let rated = with.scenario.plant.storage.power_w;
+    assert!(l.story.contains(&format!("rated {} MW", rated / 1e6)), "{rated}: {}", l.story);
+    let preset = aes_core::scenario::presets::preset("crash-stop-storage").unwrap();
+    assert_eq!(
+        (with.scenario.plant.storage.energy_j, rated),
+        (preset.plant.storage.energy_j, preset.plant.storage.power_w)
+    );
 }
 
 #[test]

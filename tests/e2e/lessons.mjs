@@ -9,7 +9,7 @@
 // words and fuel figure against the native run; the battery lesson's drive-train storage block
 // against the native trace; axe-core finds no serious violation before and after a run; every
 // lesson about a change answered, changed, and its verdict with both numbers against the native
-// one (issue 55).
+// one (issue 55), the crash stop's lesson (issue 56) among them.
 // Usage: node tests/e2e/lessons.mjs http://127.0.0.1:PORT/ SCREENSHOT_DIR [path of aes-sim]
 import { mkdirSync, readFileSync, writeFileSync, existsSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
@@ -399,7 +399,7 @@ await check('a lesson link with non-default values opens to the same numbers', a
 await check('one value per lesson: the page says the words the native claim check gives (aes-sim lesson)', async () => {
   assert(existsSync(native), `no native ${native}`);
   const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 } });
-  const VALUES = { power: 'commands.0.speed_kn=20', waves: 'sea.sea_state=4', turn: 'commands.1.heading_deg=45', braking: 'plant.dc_link.brake_resistor_ohm=0', bus: 'controllers.field.kp=0.001', sign: 'seakeeping.stern_motion=thesis_eq_2_57', battery: 'plant.storage.energy_j=50000000' };
+  const VALUES = { power: 'commands.0.speed_kn=20', waves: 'sea.sea_state=4', turn: 'commands.1.heading_deg=45', braking: 'plant.dc_link.brake_resistor_ohm=0', bus: 'controllers.field.kp=0.001', sign: 'seakeeping.stern_motion=thesis_eq_2_57', battery: 'plant.storage.energy_j=50000000', stopping: 'plant.storage.energy_j=150000000' };
   for (const [name, value] of Object.entries(VALUES)) {
     const p = await openPage(ctx, `${base}#lesson=${name}&${value}`, base, errors);
     await idle(p);
@@ -419,7 +419,7 @@ await check('one value per lesson: the page says the words the native claim chec
 // question's control moved one step; the verdict on the prediction (#lesson-verdict) gives the
 // run before's number and the run now's and is the native `aes-sim lesson --before default
 // --answer N` verdict for the same values, to the character.
-const CHANGES = { waves: 'ship.hull.hub_above_base_m', sign: 'seakeeping.stern_motion', braking: 'plant.dc_link.brake_resistor_ohm', bus: 'controllers.field.kp', engines: 'plant.online.sets', battery: 'plant.storage.energy_j' };
+const CHANGES = { waves: 'ship.hull.hub_above_base_m', sign: 'seakeeping.stern_motion', braking: 'plant.dc_link.brake_resistor_ohm', bus: 'controllers.field.kp', engines: 'plant.online.sets', battery: 'plant.storage.energy_j', stopping: 'plant.storage.energy_j' };
 await check('every lesson about a change, answered and changed, says its verdict with the numbers before and now, the same as aes-sim lesson\'s (issue 55)', async () => {
   assert(existsSync(native), `no native ${native}`);
   const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 } });

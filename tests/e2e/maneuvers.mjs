@@ -1,6 +1,7 @@
 // Browser test of the standard maneuvers fold (issue 42) and the turbine schedule fold (issue 45): the booklet the page computes in its
 // worker is the command line's bit for bit (`aes-sim maneuvers`, run here on the same preset), the
-// table says its IMO verdicts, a booklet of another study is hidden, and the fold fits and is axe
+// table says its IMO verdicts, the full-astern stop (issue 56) is drawn from above with its traces
+// on one time axis and its numbers in the table, a booklet of another study is hidden, and the fold fits and is axe
 // clean at the three sizes (screenshots maneuvers-*.png). Also the stability tab's bus stability
 // map (issue 44): the command line's map bit for bit, its cells said in words, its refusals at
 // the box, and its fit at the three sizes in one page load (screenshots busmap-*.png).
@@ -43,6 +44,35 @@ await check('the fold sails the maneuvers in the worker: the command line\'s boo
   for (const cr of cli.criteria) assert(table.includes(cr.name) && table.includes(Number(cr.value).toPrecision(3)), `the table lacks ${cr.name}: ${table}`);
   assert(st.includes(`all ${cli.criteria.length} IMO criteria met`), st);
   assert(await p.$$eval('#maneuvers-plots canvas', (cs) => cs.length) >= 3, 'the turning circle and the two zig-zags are not all drawn');
+  // The full-astern stop (issue 56): its plan view and its three traces on one time axis, each
+  // number shown the command line's to the digits shown.
+  const stp = cli.stopping, p3 = (x) => Number(x).toPrecision(3);
+  const stop = await p.evaluate(() => {
+    const figs = [...document.querySelectorAll('#maneuvers-plots figure.plot')];
+    const plan = figs.find((f) => /^Full-astern stop/.test(f.querySelector('h3').textContent));
+    const traces = figs.filter((f) => /^Crash stop/.test(f.querySelector('h3').textContent));
+    const cv = plan && plan.querySelector('canvas.track');
+    return {
+      aria: cv ? cv.getAttribute('aria-label') : '', axes: cv ? cv.drawnAxes : null,
+      titles: traces.map((f) => f.querySelector('h3').textContent),
+      data: traces.map((f) => f.querySelector('.chart').uplot.data.map((d) => Array.from(d))),
+      keys: traces.map((f) => (f.querySelector('.key') || {}).textContent || ''),
+    };
+  });
+  assert(stop.axes && stop.axes.tick_l > 0 && stop.axes.scale_px > 20, `the stop's plan view is not drawn: ${JSON.stringify(stop.axes)}`);
+  assert(stop.aria.includes(`track reach ${p3(stp.track_reach_l)} ship lengths`) && stop.aria.includes(`dead in the water ${p3(stp.time_to_dead_s)} s`), stop.aria);
+  assert(stop.titles.length === 3, `the stop's traces: ${stop.titles}`);
+  assert(stop.titles[1].includes(`highest ${p3(stp.peak_bus_voltage_pu)} pu`) && stop.titles[2].includes(`${p3(stp.peak_regenerated_w / 1e6)} MW`), stop.titles.join(' | '));
+  // One time axis: every trace's times are the booklet's from the order; the bus drawn is the booklet's.
+  const n = stop.data[0][0].length, times = stp.track.slice(0, n).map((s) => s.t_s);
+  assert(n > 2 * stp.time_to_dead_s && stop.data.every((d) => JSON.stringify(d[0]) === JSON.stringify(times)), 'the stop\'s traces are not on one time axis');
+  assert(JSON.stringify(stop.data[1][1]) === JSON.stringify(stp.track.slice(0, n).map((s) => s.bus_voltage_pu)), 'the bus drawn is not the booklet\'s');
+  assert(stop.keys.every((k) => k.includes(`dead in the water at ${p3(stp.time_to_dead_s)} s`)) && /shaded: the bus's band, 0.9 to 1.15 pu/.test(stop.keys[1]), stop.keys.join(' | '));
+  for (const [what, v] of [['head reach', `${p3(stp.head_reach_l)} L`], ['time to dead in the water', `${p3(stp.time_to_dead_s)} s`], ['highest bus voltage', `${p3(stp.peak_bus_voltage_pu)} pu`],
+    ['brake energy until dead in the water', `${p3(stp.brake_energy_j / 1e6)} MJ`], ['highest power the motors returned', `${p3(stp.peak_regenerated_w / 1e6)} MW`], ['lateral deviation', `${p3(stp.lateral_deviation_l)} L`]]) {
+    assert(table.includes(what) && table.includes(v), `the table lacks the stop's ${what} ${v}`);
+  }
+  console.log(`     stop from ${stp.approach_kn} kn: track reach ${p3(stp.track_reach_l)} L, dead in the water after ${p3(stp.time_to_dead_s)} s, brake ${p3(stp.brake_energy_j / 1e6)} MJ`);
   console.log(`     tactical diameter ${(cli.turning.tactical_diameter_m / cli.length_m).toFixed(2)} L, advance ${(cli.turning.advance_m / cli.length_m).toFixed(2)} L`);
   // Another speed in the form: the booklet of the old one is no longer shown.
   await setField(p, 'initial.speed_kn', 20);

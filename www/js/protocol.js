@@ -51,7 +51,7 @@ export const REQUEST = {
   // (propellerGeometryCsv: a "custom" propeller.geometry), or the core's refusal naming row and column.
   propellerCsv: 'propeller-csv',
   fuel: 'fuel', // {scenario, omegas} -> done {rows}
-  maneuvers: 'maneuvers', // {scenario} -> done {booklet} (`aes-sim maneuvers`' JSON: IMO's standard maneuvers)
+  maneuvers: 'maneuvers', // {scenario} -> done {booklet, constants} (`aes-sim maneuvers`' JSON: IMO's standard maneuvers; the page constants)
   schedule: 'schedule', // {scenario} -> done {schedule} (`aes-sim schedule --json`'s schedule: turbines online by speed and sea state)
   // {args: {side, closed, point: {omega_rad_s, v_fd_v, load_a, torque_nm, from_hz, to_hz, points}}}
   // -> done {result} (the JSON of `aes-sim ips bode`)

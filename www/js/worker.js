@@ -107,7 +107,7 @@ const handlers = {
     return { trial: null };
   },
 
-  [REQUEST.maneuvers]: (m) => ({ booklet: JSON.parse(maneuversBooklet(checked(m.scenario))) }),
+  [REQUEST.maneuvers]: (m) => ({ booklet: JSON.parse(maneuversBooklet(checked(m.scenario))), constants: constantsOf(m.scenario) }),
   [REQUEST.schedule]: (m) => ({ schedule: JSON.parse(turbineSchedule(checked(m.scenario))) }),
   [REQUEST.fuel]: (m) => ({ rows: JSON.parse(fuelStudy(checked(m.scenario), new Float64Array(m.omegas))) }),
 

@@ -8,7 +8,7 @@ use aes_core::output::lessons;
 // The command line of `aes-sim lesson`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// Lesson name (power, waves, turn, braking, bus, engines, sign, battery); without one, the list.
+    /// Lesson name (power, waves, turn, braking, bus, engines, sign, battery, stopping); without one, the list.
     name: Option<String>,
     /// A control's value, as the lesson's link carries it, e.g. `--value sea.sea_state=4`
     /// (repeatable).

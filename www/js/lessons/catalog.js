@@ -8,4 +8,7 @@ export const GLOSSARY = [
   ['set', 'a gas turbine and the generator it turns; a set running burns fuel and shares the load with the others running'],
   ['fuel power', 'the fuel burnt each second times its heating value: the power the fuel brings, of which a gas turbine turns about 37 % into shaft power at its rating and less below it'],
   ['gain', 'how strongly a controller reacts to an error: proportional to the error now, or integral to the error summed over time'],
+  ['crash stop', 'full astern ordered at once from full speed ahead: the shafts reverse while the ship still runs ahead, until it is dead in the water (no way ahead left) and then goes astern'],
+  ['brake resistor', 'a resistor a chopper switches across the DC bus when its voltage rises too far: it burns the power the motors return as heat'],
+  ['storage', 'a battery on a DC bus behind a DC-DC converter: it takes power from the bus (charging) or gives it, up to its power rating, between its lowest and highest allowed charge'],
 ];

@@ -185,7 +185,7 @@ registerView({
           if (path !== null && c.path !== path) continue;
           const x = values[c.path];
           for (const p of [c.path, ...c.with_paths]) setPath(form.scenario, p, typed(getPath(form.scenario, p), x));
-          if (c.kind === 'toggle') for (const [q, y] of c.settings[c.values.indexOf(String(x))] || []) setPath(form.scenario, q, y);
+          if (c.kind === 'toggle') for (const [q, y] of c.settings[c.values.indexOf(String(x))] || []) setPath(form.scenario, q, typed(getPath(form.scenario, q), y));
         }
         // A settled value is a step in the history (Back returns to the one before).
         // (Values that change nothing, "Set it" of values already set, are no step.)

@@ -68,13 +68,6 @@ pub(super) fn lesson() -> Lesson {
 
 /// A swing smaller by more than the margin is steadier; under a quarter of the one before, the
 /// swing "almost vanishes".
-/// A difference of charge in percentage points ("8 points above").
-fn pct_points(d: f64) -> String {
-    let n = libm::round(100.0 * d.abs());
-    let w = if d >= 0.0 { "above" } else { "below" };
-    format!("{n:.0} point{} {w}", if n == 1.0 { "" } else { "s" })
-}
-
 fn steadier(away: f64, toward: f64, by: f64) -> Result<usize, &'static str> {
     Ok(match Relation::of(toward, away, by) {
         Relation::Less if toward < 0.25 * away => 0,

@@ -56,6 +56,9 @@ pub enum Fact {
     Onsets { count: usize },
     /// Energy \[J\] burnt in the brake resistor (the time integral of its power).
     BrakeEnergy { value_j: f64 },
+    /// The time integral \[J\] of the power `signal` \[W\] over \[from_s, to_s\], by the trapezoid
+    /// rule over the recorded rows ([`energy`]).
+    Energy { signal: &'static str, from_s: f64, to_s: f64, value_j: f64 },
     /// A level of the model (`sim::health`'s thresholds), named.
     Level { name: &'static str, value: f64 },
     /// Facts `a` and `b` (indices, each a Stat, BrakeEnergy or Level) compare as `relation`.
@@ -93,6 +96,11 @@ pub enum Measure {
     },
     /// The mean of `signal`'s rows at or after `from_s`.
     Mean {
+        signal: &'static str,
+        from_s: f64,
+    },
+    /// The time integral of the power `signal` at or after `from_s` \[J\] ([`energy`]).
+    Energy {
         signal: &'static str,
         from_s: f64,
     },
@@ -175,6 +183,16 @@ pub fn stat(trace: &Trace, signals: &[&str], stat: Stat, from: f64, to: f64) -> 
     best
 }
 
+/// The time integral of the power `signal` \[W\] over the rows in \[from, to\] \[J\]: the trapezoid
+/// rule, exact for a power that is linear between rows (a lesson that quotes a short spike of
+/// power records its rows densely).
+pub fn energy(trace: &Trace, signal: &str, from: f64, to: f64) -> f64 {
+    let t = trace.get(Signal::TS);
+    let c = col(trace, signal);
+    let w = window(t, from, to);
+    (w.start + 1..w.end).map(|i| 0.5 * (c[i] + c[i - 1]) * (t[i] - t[i - 1])).sum()
+}
+
 /// Surface-loss onsets: rows where beta_T drops below its submerged value (the page's markers).
 pub fn onsets(trace: &Trace, submerged: f64) -> usize {
     let b = trace.get(Signal::BetaT);
@@ -203,6 +221,11 @@ impl<'a> Book<'a> {
         let (value, t) = stat(self.run.trace, signals, s, from, to);
         let to = if s == Stat::At { from } else { to };
         (self.push(Fact::Stat { signals: signals.to_vec(), stat: s, from_s: from, to_s: to, value, t_s: t }), value, t)
+    }
+    /// The energy of a power signal over \[from, to\]: (fact index, value \[J\]).
+    pub(super) fn energy(&mut self, signal: &'static str, from: f64, to: f64) -> (usize, f64) {
+        let value_j = energy(self.run.trace, signal, from, to);
+        (self.push(Fact::Energy { signal, from_s: from, to_s: to, value_j }), value_j)
     }
     pub(super) fn at(&mut self, signal: &'static str, t: f64) -> (usize, f64) {
         let (i, v, _) = self.stat(&[signal], Stat::At, t, t);
@@ -245,6 +268,12 @@ pub(super) fn f(x: f64, d: usize) -> String {
 }
 pub(super) fn pct(x: f64) -> String {
     format!("{:.0} %", 100.0 * x)
+}
+/// A difference of charge in percentage points ("8 points above").
+pub(super) fn pct_points(d: f64) -> String {
+    let n = libm::round(100.0 * d.abs());
+    let w = if d >= 0.0 { "above" } else { "below" };
+    format!("{n:.0} point{} {w}", if n == 1.0 { "" } else { "s" })
 }
 pub(super) fn value_text(x: f64) -> String {
     let s = format!("{}", (x * 1e6).round() / 1e6);

@@ -25,12 +25,13 @@ mod engines;
 mod facts;
 mod power;
 mod sign;
+mod stopping;
 mod turn;
 mod verdict;
 mod waves;
 
 use facts::Book;
-pub use facts::{onsets, stat, Explanation, Fact, Measure, Next, Promise, Relation, Run, Stat};
+pub use facts::{energy, onsets, stat, Explanation, Fact, Measure, Next, Promise, Relation, Run, Stat};
 pub use facts::{Reading, Verdict};
 pub use verdict::{measure, Before};
 
@@ -148,6 +149,7 @@ pub fn lessons() -> Vec<Lesson> {
         engines::lesson(),
         sign::lesson(),
         battery::lesson(),
+        stopping::lesson(),
     ]
 }
 

@@ -4,7 +4,7 @@
 //! both numbers side by side, or "about the same" when they differ by no more than the margin.
 
 use super::facts::{
-    col, f, nearest, onsets, stat, submerged, value_text, window, Measure, Relation, Run, Stat, Verdict,
+    col, energy, f, nearest, onsets, stat, submerged, value_text, window, Measure, Relation, Run, Stat, Verdict,
 };
 use super::{as_text, Control, ControlKind, Lesson};
 use crate::signals::Signal;
@@ -102,6 +102,7 @@ pub fn measure(run: &Run, m: &Measure) -> f64 {
             let n = w.len().max(1) as f64;
             w.map(|i| c[i]).sum::<f64>() / n
         }
+        Measure::Energy { signal, from_s } => energy(run.trace, signal, *from_s, end),
     }
 }
 
