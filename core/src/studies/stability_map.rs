@@ -155,12 +155,14 @@ impl Axis {
     /// to [`MAX_AXIS_VALUES`], `lo` below `hi`, both ends a value the scenario takes there (its
     /// own check, naming the parameter and its range). `which` names the axis in the message.
     pub fn checked(sc: &Scenario, which: &str, path: &str, lo: f64, hi: f64, n: usize) -> Result<Axis, String> {
+        // The path as messages show it: escaped and cut (a page may send a megabyte).
+        let shown_path = crate::checks::shorten(path);
         if !(2..=MAX_AXIS_VALUES).contains(&n) {
             return Err(format!("{which}: {n} values: from 2 to {MAX_AXIS_VALUES}"));
         }
         if let Some(held) = held_controller(path) {
             return Err(format!(
-                "{which}: {path}: the map holds the {held} at its steady output: its settings do not move it; \
+                "{which}: {shown_path}: the map holds the {held} at its steady output: its settings do not move it; \
                  axes that do: the plant's and the ship's parameters (plant.*, ship.*, e.g. \
                  plant.loads.ship_service_w, plant.loads.filter_capacitance_f), initial.speed_kn and \
                  controllers.field.bus_voltage_ref_v (the operating point)"
@@ -168,14 +170,14 @@ impl Axis {
         }
         if path.starts_with("sea.") || path.starts_with("seakeeping.grid.") {
             return Err(format!(
-                "{which}: {path}: the map linearises the plant about its calm-water steady state: the sea and the \
+                "{which}: {shown_path}: the map linearises the plant about its calm-water steady state: the sea and the \
                  RAO table's grid do not move it; axes that do: the plant's and the ship's parameters (plant.*, \
                  ship.*), initial.speed_kn and controllers.field.bus_voltage_ref_v"
             ));
         }
         if path.starts_with("stepping.") || path.starts_with("sim.") {
             return Err(format!(
-                "{which}: {path}: the map linearises the plant and does not step it in time: the time step and \
+                "{which}: {shown_path}: the map linearises the plant and does not step it in time: the time step and \
                  the run's settings do not move it; axes that do: the plant's and the ship's parameters (plant.*, \
                  ship.*), initial.speed_kn and controllers.field.bus_voltage_ref_v"
             ));
@@ -189,7 +191,7 @@ impl Axis {
                 }
             };
             return Err(format!(
-                "{which}: from {} to {} {path}: two finite numbers, the first below the second",
+                "{which}: from {} to {} {shown_path}: two finite numbers, the first below the second",
                 shown(lo),
                 shown(hi)
             ));
