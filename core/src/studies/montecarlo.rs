@@ -318,7 +318,7 @@ impl Partial {
                 "im_power_pu" => (-p, p, "100 times the motor's rating: beyond its pull-out torque"),
                 _ => continue,
             };
-            if let Some((k, v)) = col.iter().enumerate().find(|(_, v)| !(**v >= lo && **v <= hi)) {
+            if let Some((k, v)) = col.iter().enumerate().find(|(_, v)| !(lo..=hi).contains(*v)) {
                 return Err(format!(
                     "columns.{name}.{k} = {}: must be from {} to {} ({why})",
                     num(*v),

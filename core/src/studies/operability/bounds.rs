@@ -92,7 +92,7 @@ impl CellLimits {
                 let c = &judge.criteria[i];
                 let field = |f: &str| format!("{f}.{s}.{i}");
                 if let Some(l) = *l {
-                    if !(l >= 0.0 && l <= MAX_LIMIT_HS_M) {
+                    if !(0.0..=MAX_LIMIT_HS_M).contains(&l) {
                         return Err(format!(
                             "{} = {}: a limiting H_1/3 is from 0 to {} m (the root of a finite a / ln(r0 / limit))",
                             field("limit_hs_m"),
