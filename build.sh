@@ -260,6 +260,7 @@ case "${1:-serve}" in
     ;;
   fuzz)
     AES_FUZZ_CASES="${AES_FUZZ_CASES:-20000}" cargo test --release -p aes-tests --test fuzz
+    AES_FUZZ_CASES="${AES_FUZZ_CASES:-20000}" cargo test --release -p aes-tests --test shard_checks
     cargo test --release -p aes-cli --test hardening
     ;;
   validate)

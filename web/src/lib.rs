@@ -9,12 +9,19 @@ use aes_core::studies::{stability_map, study};
 use aes_core::{Scenario, Simulation};
 use wasm_bindgen::prelude::*;
 
+/// Every error the exports give, through one guard: control characters escaped and long
+/// stretches cut (`checks::shorten_message`), so no input comes back whole or raw (a 1 MB axis
+/// path with ESC and BEL in it was echoed in full).
+fn js_error(msg: &str) -> JsError {
+    JsError::new(&aes_core::checks::shorten_message(msg))
+}
+
 /// A text argument from JavaScript, refused by name when it is not a string (a number or an
 /// object given for a `&str` trapped with "memory access out of bounds", issue 34).
 fn text(v: &JsValue, what: &str) -> Result<String, JsError> {
     v.as_string().ok_or_else(|| {
         let kind = v.js_typeof().as_string().unwrap_or_default();
-        JsError::new(&format!("{what}: expected a string, got a value of type {kind}"))
+        js_error(&format!("{what}: expected a string, got a value of type {kind}"))
     })
 }
 
@@ -30,7 +37,7 @@ pub fn preset_json(name: JsValue) -> Result<String, JsError> {
     let name = text(&name, "the preset's name")?;
     preset(&name)
         .map(|s| s.to_json())
-        .ok_or_else(|| JsError::new(&format!("no preset named '{}'", aes_core::checks::shorten(&name))))
+        .ok_or_else(|| js_error(&format!("no preset named '{}'", aes_core::checks::shorten(&name))))
 }
 
 /// Checks a scenario; returns every problem as a list of `{path, value, message}` (empty when valid).
@@ -40,7 +47,7 @@ pub fn validate_scenario(json: JsValue) -> Result<JsValue, JsError> {
         Ok(_) => Vec::new(),
         Err(e) => e.0,
     };
-    serde_wasm_bindgen::to_value(&errors).map_err(|e| JsError::new(&e.to_string()))
+    serde_wasm_bindgen::to_value(&errors).map_err(|e| js_error(&e.to_string()))
 }
 
 /// Every recorded signal's metadata, in trace column order, as JSON:
@@ -78,15 +85,15 @@ pub fn thesis_values() -> String {
 /// scenario, as JSON. The page copies none of these numbers.
 #[wasm_bindgen(js_name = pageConstants)]
 pub fn page_constants(json: JsValue) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let c = aes_core::output::presentation::PageConstants::of(&sc).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&c).map_err(|e| JsError::new(&e.to_string()))
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    let c = aes_core::output::presentation::PageConstants::of(&sc).map_err(|e| js_error(&e))?;
+    serde_json::to_string(&c).map_err(|e| js_error(&e.to_string()))
 }
 
 /// The signal of a column name, or an error naming it (cut to 40 characters).
 fn signal(name: &str) -> Result<aes_core::signals::Signal, JsError> {
     aes_core::signals::Signal::from_name(name)
-        .ok_or_else(|| JsError::new(&format!("no signal named '{}'", name.chars().take(40).collect::<String>())))
+        .ok_or_else(|| js_error(&format!("no signal named '{}'", name.chars().take(40).collect::<String>())))
 }
 
 /// A run that stopped, in words for the page: why nothing new is drawn and what to try.
@@ -106,10 +113,7 @@ fn stopped(e: &aes_core::SimError) -> String {
 pub fn trace_csv_of(data: Vec<f64>, rows: usize) -> Result<String, JsError> {
     let n = aes_core::signals::N_SIGNALS;
     if rows == 0 || data.len() != n * rows {
-        return Err(JsError::new(&format!(
-            "the trace's columns: {} values for {n} columns of {rows} rows",
-            data.len()
-        )));
+        return Err(js_error(&format!("the trace's columns: {} values for {n} columns of {rows} rows", data.len())));
     }
     Ok(aes_core::sim::Trace { columns: data.chunks(rows).map(|c| c.to_vec()).collect() }.to_csv())
 }
@@ -130,8 +134,8 @@ impl Run {
     /// Builds a run from scenario JSON; the error names every bad field.
     #[wasm_bindgen(constructor)]
     pub fn new(json: JsValue) -> Result<Run, JsError> {
-        let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-        let sim = Simulation::new(&sc).map_err(|e| JsError::new(&e.to_string()))?;
+        let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+        let sim = Simulation::new(&sc).map_err(|e| js_error(&e.to_string()))?;
         Ok(Run { sim: Some(sim), summary_json: String::new(), columns: Vec::new(), scenario: sc, summary: None })
     }
 
@@ -140,11 +144,11 @@ impl Run {
         let Some(sim) = self.sim.as_mut() else {
             return Ok(1.0);
         };
-        sim.advance(steps as u64).map_err(|e| JsError::new(&stopped(&e)))?;
+        sim.advance(steps as u64).map_err(|e| js_error(&stopped(&e)))?;
         if sim.done() {
             if let Some(sim) = self.sim.take() {
                 let r = sim.finish();
-                aes_core::checks::check_finite(&r.summary).map_err(|e| JsError::new(&e))?;
+                aes_core::checks::check_finite(&r.summary).map_err(|e| js_error(&e))?;
                 self.summary_json = serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default();
                 self.columns = r.trace.columns;
                 self.summary = Some(r.summary);
@@ -179,14 +183,15 @@ impl Run {
     /// as JSON.
     #[wasm_bindgen(js_name = lessonExplain)]
     pub fn lesson_explain(&self, name: JsValue, values: JsValue, before: JsValue) -> Result<String, JsError> {
-        let l = lessons::lesson(&text(&name, "the lesson's name")?).map_err(|e| JsError::new(&e))?;
+        let l = lessons::lesson(&text(&name, "the lesson's name")?).map_err(|e| js_error(&e))?;
         let values: serde_json::Map<String, serde_json::Value> =
-            serde_json::from_str(&text(&values, "the lesson's values")?).map_err(|e| JsError::new(&e.to_string()))?;
+            serde_json::from_str(&text(&values, "the lesson's values")?).map_err(|e| js_error(&e.to_string()))?;
         let before: Option<lessons::Before> = match before.as_string() {
-            Some(t) => serde_json::from_str(&t).map_err(|e| JsError::new(&format!("the run before: {e}")))?,
+            Some(t) => serde_json::from_str(&t).map_err(|e| js_error(&format!("the run before: {e}")))?,
             None => None,
         };
-        let summary = self.summary.as_ref().ok_or_else(|| JsError::new("the run has not finished"))?;
+        lessons::check_values(&l, &values).map_err(|e| js_error(&format!("the lesson's values: {e}")))?;
+        let summary = self.summary.as_ref().ok_or_else(|| js_error("the run has not finished"))?;
         let trace = aes_core::sim::Trace { columns: self.columns.clone() };
         let run = lessons::Run { scenario: &self.scenario, trace: &trace, summary };
         Ok(serde_json::to_string(&lessons::explain_after(&l, &values, &run, before.as_ref())).unwrap_or_default())
@@ -195,7 +200,7 @@ impl Run {
     /// One trace column as a Float64Array (after the run has finished).
     pub fn column(&self, name: JsValue) -> Result<js_sys::Float64Array, JsError> {
         let s = signal(&text(&name, "the signal's name")?)?;
-        let col = self.columns.get(s.index()).ok_or_else(|| JsError::new("the run has not finished"))?;
+        let col = self.columns.get(s.index()).ok_or_else(|| js_error("the run has not finished"))?;
         Ok(js_sys::Float64Array::from(col.as_slice()))
     }
 }
@@ -234,14 +239,14 @@ pub fn lesson_meta() -> String {
 /// text), `values`, `defaults`, `refused` (a sentence per value refused; the lesson's own used)}.
 #[wasm_bindgen(js_name = lessonOpen)]
 pub fn lesson_open(name: JsValue, values: JsValue) -> Result<String, JsError> {
-    let l = lessons::lesson(&text(&name, "the lesson's name")?).map_err(|e| JsError::new(&e))?;
+    let l = lessons::lesson(&text(&name, "the lesson's name")?).map_err(|e| js_error(&e))?;
     let given: serde_json::Map<String, serde_json::Value> =
-        serde_json::from_str(&text(&values, "the lesson's values")?).map_err(|e| JsError::new(&e.to_string()))?;
+        serde_json::from_str(&text(&values, "the lesson's values")?).map_err(|e| js_error(&e.to_string()))?;
     let given: Vec<(String, String)> =
         given.into_iter().map(|(k, v)| (k, v.as_str().map(str::to_string).unwrap_or_else(|| v.to_string()))).collect();
     let pairs: Vec<(&str, &str)> = given.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect();
-    let o = lessons::open(&l, &pairs).map_err(|e| JsError::new(&e))?;
-    let mut v = serde_json::to_value(&o).map_err(|e| JsError::new(&e.to_string()))?;
+    let o = lessons::open(&l, &pairs).map_err(|e| js_error(&e))?;
+    let mut v = serde_json::to_value(&o).map_err(|e| js_error(&e.to_string()))?;
     v["scenario"] = serde_json::Value::from(o.scenario.to_json());
     Ok(v.to_string())
 }
@@ -249,8 +254,8 @@ pub fn lesson_open(name: JsValue, values: JsValue) -> Result<String, JsError> {
 /// Runs a scenario to the end and returns its summary JSON.
 #[wasm_bindgen(js_name = runSummary)]
 pub fn run_summary(json: JsValue) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let r = aes_core::run(&sc).map_err(|e| JsError::new(&e.to_string()))?;
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    let r = aes_core::run(&sc).map_err(|e| js_error(&e.to_string()))?;
     Ok(serde_json::to_string(&r.summary.to_json_value()).unwrap_or_default())
 }
 
@@ -274,7 +279,7 @@ pub fn ips_analysis(
 ) -> Result<String, JsError> {
     use aes_core::studies::ips::study::{self, Analysis, IpsRequest, OperatingPoint, Side};
     let request = IpsRequest {
-        side: Side::from_name(&text(&side, "side")?).map_err(|e| JsError::new(&e))?,
+        side: Side::from_name(&text(&side, "side")?).map_err(|e| js_error(&e))?,
         analysis: Analysis::Bode,
         closed,
         point: OperatingPoint {
@@ -288,8 +293,8 @@ pub fn ips_analysis(
         },
         overrides: Vec::new(),
     };
-    let r = study::run(&request).map_err(|e| JsError::new(&e.to_string()))?;
-    serde_json::to_string(&r).map_err(|e| JsError::new(&e.to_string()))
+    let r = study::run(&request).map_err(|e| js_error(&e.to_string()))?;
+    serde_json::to_string(&r).map_err(|e| js_error(&e.to_string()))
 }
 
 /// The declarations of the IPS tool's operating point and Bode range, as JSON: `[{"path",
@@ -306,10 +311,10 @@ pub fn ips_meta() -> String {
 /// as JSON: `states`, `eigenvalues` [[re, im] 1/s], `spectral_abscissa` [1/s], `least_damped_hz`.
 #[wasm_bindgen(js_name = stabilityPoint)]
 pub fn stability_point(json: JsValue) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let m = aes_core::studies::stability_map::linearize(&sc).map_err(|e| JsError::new(&e))?;
-    aes_core::checks::check_finite(&m).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&m).map_err(|e| JsError::new(&e.to_string()))
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    let m = aes_core::studies::stability_map::linearize(&sc).map_err(|e| js_error(&e))?;
+    aes_core::checks::check_finite(&m).map_err(|e| js_error(&e))?;
+    serde_json::to_string(&m).map_err(|e| js_error(&e.to_string()))
 }
 
 /// One axis of a stability map (`aes-sim stability-map --x PATH=FROM:TO:N`) from the page's
@@ -326,16 +331,15 @@ pub fn stability_axis(
     to: f64,
     n: f64,
 ) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let path =
-        path.as_string().ok_or_else(|| JsError::new(&format!("{which}: the parameter's path must be a string")))?;
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    let path = path.as_string().ok_or_else(|| js_error(&format!("{which}: the parameter's path must be a string")))?;
     let max = stability_map::MAX_AXIS_VALUES;
     if !(n.fract() == 0.0 && (2.0..=max as f64).contains(&n)) {
         let shown = if n.is_finite() { aes_core::checks::num(n) } else { "a value that is not a finite number".into() };
-        return Err(JsError::new(&format!("{which}: {shown} values of {path}: a whole number from 2 to {max}")));
+        return Err(js_error(&format!("{which}: {shown} values of {path}: a whole number from 2 to {max}")));
     }
-    let axis = stability_map::Axis::checked(&sc, which, &path, from, to, n as usize).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&axis).map_err(|e| JsError::new(&e.to_string()))
+    let axis = stability_map::Axis::checked(&sc, which, &path, from, to, n as usize).map_err(|e| js_error(&e))?;
+    serde_json::to_string(&axis).map_err(|e| js_error(&e.to_string()))
 }
 
 /// The LQG/LTR design (thesis ch. 3.1) for a scenario's drive train and `controllers.lqg_ltr`
@@ -343,10 +347,10 @@ pub fn stability_axis(
 /// `aes-sim design lqg-ltr --plant aes`).
 #[wasm_bindgen(js_name = designLqgLtr)]
 pub fn design_lqg_ltr(json: JsValue) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let d = aes_core::sim::lqg::analyse(&sc).map_err(|e| JsError::new(&e))?;
-    aes_core::checks::check_finite(&d).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&d).map_err(|e| JsError::new(&e.to_string()))
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    let d = aes_core::sim::lqg::analyse(&sc).map_err(|e| js_error(&e))?;
+    aes_core::checks::check_finite(&d).map_err(|e| js_error(&e))?;
+    serde_json::to_string(&d).map_err(|e| js_error(&e.to_string()))
 }
 
 /// The histogram bins trial `i` of a Monte Carlo study falls in (`at_time`, `excess`,
@@ -354,12 +358,12 @@ pub fn design_lqg_ltr(json: JsValue) -> Result<String, JsError> {
 /// from a histogram bar with it.
 #[wasm_bindgen(js_name = trialBins)]
 pub fn trial_bins(json: JsValue, i: u32) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
     if i as u64 >= sc.monte_carlo.trials {
-        return Err(JsError::new(&format!("trial {i}: the study has {} trials", sc.monte_carlo.trials)));
+        return Err(js_error(&format!("trial {i}: the study has {} trials", sc.monte_carlo.trials)));
     }
-    let b = aes_core::studies::montecarlo::trial_bins(&sc, i as u64).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&b).map_err(|e| JsError::new(&e.to_string()))
+    let b = aes_core::studies::montecarlo::trial_bins(&sc, i as u64).map_err(|e| js_error(&e))?;
+    serde_json::to_string(&b).map_err(|e| js_error(&e.to_string()))
 }
 
 /// The scenario of Monte Carlo trial `i` as JSON text: the study's scenario sailing the sea of
@@ -367,9 +371,9 @@ pub fn trial_bins(json: JsValue, i: u32) -> Result<String, JsError> {
 /// seed uses all 64 bits and a JavaScript number keeps 53.
 #[wasm_bindgen(js_name = trialScenario)]
 pub fn trial_scenario(json: JsValue, i: u32) -> Result<String, JsError> {
-    let mut sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let mut sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
     if i as u64 >= sc.monte_carlo.trials {
-        return Err(JsError::new(&format!(
+        return Err(js_error(&format!(
             "trial {i}: the study has trials 0 to {}",
             sc.monte_carlo.trials.saturating_sub(1)
         )));
@@ -394,7 +398,7 @@ pub fn study_range(kind: JsValue, spec: JsValue, a: u32, b: u32) -> Result<Vec<u
     }
     let kind = text(&kind, "the study kind")?;
     let spec = text(&spec, "the study JSON")?;
-    study::dispatch(&kind, Range(spec, a as u64, b as u64)).and_then(|r| r).map_err(|e| JsError::new(&e))
+    study::dispatch(&kind, Range(spec, a as u64, b as u64)).and_then(|r| r).map_err(|e| js_error(&e))
 }
 
 /// The summary JSON of a study (as its `aes-sim` command prints it, keys sorted) from the binary
@@ -419,7 +423,7 @@ pub fn study_summary(kind: JsValue, spec: JsValue, shards: Vec<js_sys::Uint8Arra
     }
     let kind = text(&kind, "the study kind")?;
     let spec = text(&spec, "the study JSON")?;
-    study::dispatch(&kind, Summary(spec, shards)).and_then(|r| r).map_err(|e| JsError::new(&e))
+    study::dispatch(&kind, Summary(spec, shards)).and_then(|r| r).map_err(|e| js_error(&e))
 }
 
 /// The estimate of a study on the shared pipeline before it starts, as JSON: `{"items",
@@ -440,7 +444,7 @@ pub fn study_estimate(kind: JsValue, spec: JsValue, workers: u32) -> Result<Stri
     }
     let kind = text(&kind, "the study kind")?;
     let spec = text(&spec, "the study JSON")?;
-    study::dispatch(&kind, Ask(spec, workers.max(1) as usize)).and_then(|r| r).map_err(|e| JsError::new(&e))
+    study::dispatch(&kind, Ask(spec, workers.max(1) as usize)).and_then(|r| r).map_err(|e| js_error(&e))
 }
 
 /// A study's definition from JSON ([`study::Study::spec_from_json`]).
@@ -454,8 +458,8 @@ fn spec_of<S: study::Study>(text: &str) -> Result<S::Spec, String> {
 /// builds it again.
 #[wasm_bindgen(js_name = raoTableValues)]
 pub fn rao_table_values(json: JsValue) -> Result<Vec<f64>, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    sc.rao_table_values().map_err(|e| JsError::new(&e))
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    sc.rao_table_values().map_err(|e| js_error(&e))
 }
 
 /// The scenario every trial of a rare-event study runs (`rare_event` set, the ship's place at
@@ -464,8 +468,8 @@ pub fn rao_table_values(json: JsValue) -> Result<Vec<f64>, JsError> {
 /// seed to replay that trial.
 #[wasm_bindgen(js_name = rareScenario)]
 pub fn rare_scenario(json: JsValue) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let t = aes_core::studies::rare::trial_scenario(&sc).map_err(|e| JsError::new(&e))?;
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    let t = aes_core::studies::rare::trial_scenario(&sc).map_err(|e| js_error(&e))?;
     Ok(t.to_json())
 }
 
@@ -474,33 +478,33 @@ pub fn rare_scenario(json: JsValue) -> Result<String, JsError> {
 /// "most_likely"`) slows the ship less than a random sea, so its place is found in it.
 #[wasm_bindgen(js_name = rarePlace)]
 pub fn rare_place(json: JsValue, passes: u32) -> Result<String, JsError> {
-    let mut sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let mut sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
     if passes > 5 {
-        return Err(JsError::new("rarePlace: at most 5 passes"));
+        return Err(js_error("rarePlace: at most 5 passes"));
     }
-    aes_core::studies::rare::place_ship(&mut sc, passes as usize).map_err(|e| JsError::new(&e))?;
+    aes_core::studies::rare::place_ship(&mut sc, passes as usize).map_err(|e| js_error(&e))?;
     Ok(sc.to_json())
 }
 
 /// Puts the table of `raoTableValues` (from another worker) into this worker's cache.
 #[wasm_bindgen(js_name = raoTableLoad)]
 pub fn rao_table_load(json: JsValue, values: &[f64]) -> Result<(), JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    sc.insert_rao_table(values).map_err(|e| JsError::new(&e))
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    sc.insert_rao_table(values).map_err(|e| js_error(&e))
 }
 
 /// RAOs of a scenario's hull (`aes-sim rao`'s JSON) at `speed_kn` and `heading_deg` over
 /// `omegas` [rad/s].
 #[wasm_bindgen(js_name = raoJson)]
 pub fn rao_json(json: JsValue, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
     if omegas.is_empty() || omegas.len() > 400 || omegas.iter().any(|w| !(w.is_finite() && (0.05..=10.0).contains(w))) {
-        return Err(JsError::new("RAOs: 1 to 400 frequencies from 0.05 to 10 rad/s"));
+        return Err(js_error("RAOs: 1 to 400 frequencies from 0.05 to 10 rad/s"));
     }
     if !(speed_kn.is_finite() && (0.0..=40.0).contains(&speed_kn) && heading_deg.is_finite()) {
-        return Err(JsError::new("RAOs: speed 0 to 40 kn and a finite heading"));
+        return Err(js_error("RAOs: speed 0 to 40 kn and a finite heading"));
     }
-    let mut ship = sc.ship_hull().and_then(|h| h.strip_ship()).map_err(|e| JsError::new(&e))?;
+    let mut ship = sc.ship_hull().and_then(|h| h.strip_ship()).map_err(|e| js_error(&e))?;
     ship.aft_end_terms = sc.seakeeping.aft_end_terms;
     ship.short_wave = sc.seakeeping.short_wave_force;
     let v = aes_core::sea::seakeeping::tables::rao_json(
@@ -510,7 +514,7 @@ pub fn rao_json(json: JsValue, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>
         &omegas,
         1.0,
     )
-    .map_err(|e| JsError::new(&e))?;
+    .map_err(|e| js_error(&e))?;
     Ok(v.to_string())
 }
 
@@ -518,44 +522,44 @@ pub fn rao_json(json: JsValue, speed_kn: f64, heading_deg: f64, omegas: Vec<f64>
 /// frequencies: Fig. 5-12's).
 #[wasm_bindgen(js_name = fuelStudy)]
 pub fn fuel_study(json: JsValue, omegas: Vec<f64>) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let rows = aes_core::studies::fuel::run(&sc, &omegas).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&rows).map_err(|e| JsError::new(&e.to_string()))
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    let rows = aes_core::studies::fuel::run(&sc, &omegas).map_err(|e| js_error(&e))?;
+    serde_json::to_string(&rows).map_err(|e| js_error(&e.to_string()))
 }
 
 /// The turbine schedule of a scenario's plant (`aes-sim schedule --json`'s `schedule`): for each
 /// speed and sea state 2-6 the online sets that burn least fuel with the reserve.
 #[wasm_bindgen(js_name = turbineSchedule)]
 pub fn turbine_schedule(json: JsValue) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let s = aes_core::studies::schedule::run(&sc).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&s).map_err(|e| JsError::new(&e.to_string()))
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    let s = aes_core::studies::schedule::run(&sc).map_err(|e| js_error(&e))?;
+    serde_json::to_string(&s).map_err(|e| js_error(&e.to_string()))
 }
 
 /// The standard maneuvers booklet of a scenario's ship (`aes-sim maneuvers`' JSON, tracks included).
 #[wasm_bindgen(js_name = maneuversBooklet)]
 pub fn maneuvers_booklet(json: JsValue) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let b = aes_core::studies::maneuvers::booklet(&sc).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&b).map_err(|e| JsError::new(&e.to_string()))
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    let b = aes_core::studies::maneuvers::booklet(&sc).map_err(|e| js_error(&e))?;
+    serde_json::to_string(&b).map_err(|e| js_error(&e.to_string()))
 }
 
 /// The side profile and waterline of the hull a run in waves uses, as JSON (the live stern and
 /// plan views draw it; positions from the aft perpendicular, heights from the calm waterline).
 #[wasm_bindgen(js_name = hullProfile)]
 pub fn hull_profile(json: JsValue) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let p = aes_core::output::presentation::HullProfile::of(&sc).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    let p = aes_core::output::presentation::HullProfile::of(&sc).map_err(|e| js_error(&e))?;
+    serde_json::to_string(&p).map_err(|e| js_error(&e.to_string()))
 }
 
 /// The hull panel of a scenario's hull as JSON: body plan (every station's offsets), profile,
 /// appendages and hydrostatics at its loading (`presentation::HullSheet`).
 #[wasm_bindgen(js_name = hullSheet)]
 pub fn hull_sheet(json: JsValue) -> Result<String, JsError> {
-    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
-    let p = aes_core::output::presentation::HullSheet::of(&sc).map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&p).map_err(|e| JsError::new(&e.to_string()))
+    let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    let p = aes_core::output::presentation::HullSheet::of(&sc).map_err(|e| js_error(&e))?;
+    serde_json::to_string(&p).map_err(|e| js_error(&e.to_string()))
 }
 
 /// The embedded hulls' names, then "custom" (offsets of one's own).
@@ -576,15 +580,15 @@ pub fn propeller_geometry_csv(text: JsValue, blades: f64, hub_ratio: f64) -> Res
     let text = self::text(&text, "the blade table")?;
     // A number from a form field: whole, then the core's range check names its range.
     if !(blades.is_finite() && blades.fract() == 0.0 && blades >= 0.0) {
-        return Err(JsError::new(&format!(
+        return Err(js_error(&format!(
             "blades: {} is not a whole number of blades",
             aes_core::checks::shorten(&blades.to_string())
         )));
     }
     let blades = blades.min(u32::MAX as f64) as u32;
     let spec = aes_core::plant::propeller_geometry::GeometrySpec::from_csv(&text, blades, hub_ratio)
-        .map_err(|e| JsError::new(&e))?;
-    serde_json::to_string(&spec).map_err(|e| JsError::new(&e.to_string()))
+        .map_err(|e| js_error(&e))?;
+    serde_json::to_string(&spec).map_err(|e| js_error(&e.to_string()))
 }
 
 /// The propeller panel of a scenario as JSON: the blades of its `propeller.geometry` (the ship's
@@ -599,20 +603,20 @@ pub fn propeller_geometry_csv(text: JsValue, blades: f64, hub_ratio: f64) -> Res
 #[wasm_bindgen(js_name = propellerCurves)]
 pub fn propeller_curves(json: JsValue) -> Result<String, JsError> {
     use aes_core::plant::{blade, propeller_table as table};
-    let mut sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+    let mut sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
     let runs_it = sc.propeller.model == aes_core::scenario::PropellerModelKind::Geometry;
     let spec = sc.propeller.geometry.clone().unwrap_or_default();
     sc.propeller.geometry = Some(spec.clone());
     let g = spec
         .resolve(&sc.propeller.b_series_of())
-        .map_err(|(f, e)| JsError::new(&format!("propeller.geometry.{f}: {e}")))?;
+        .map_err(|(f, e)| js_error(&format!("propeller.geometry.{f}: {e}")))?;
     let flow = sc.propeller_design_flow();
     let (from, to, n) = PANEL_J;
     let js: Vec<f64> = (0..n).map(|k| from + (to - from) * k as f64 / (n - 1) as f64).collect();
-    let curve = blade::open_water(&g, &js, &flow).map_err(|e| JsError::new(&e))?;
+    let curve = blade::open_water(&g, &js, &flow).map_err(|e| js_error(&e))?;
     let e = table::series_equivalent(&g);
     let series = aes_core::plant::propeller::OpenWater::b_series(e.pitch_ratio, e.area_ratio, e.blades)
-        .map_err(|e| JsError::new(&e))?;
+        .map_err(|e| js_error(&e))?;
     let rows: Vec<_> = g
         .rows
         .iter()
@@ -639,7 +643,7 @@ pub fn propeller_curves(json: JsValue) -> Result<String, JsError> {
             "rows": js.iter().map(|&j| serde_json::json!({"j": j, "kt": series.kt(j), "kq": series.kq(j), "eta": series.efficiency(j)})).collect::<Vec<_>>(),
         },
     });
-    aes_core::checks::check_finite(&out).map_err(|e| JsError::new(&e))?;
+    aes_core::checks::check_finite(&out).map_err(|e| js_error(&e))?;
     Ok(out.to_string())
 }
 
@@ -654,13 +658,16 @@ pub struct Sea {
 /// How far from the origin [m] the sea's elevation is given: five days at 40 kn, where the
 /// shortest waves' phase (k x, some 1e7 rad) is still good to 1e-9 rad.
 const MAX_SEA_POINT_M: f64 = 1.0e7;
+/// Latest time [s] the sea's elevation is given: 115 days, where the fastest components' phase
+/// (omega t, some 5e7 rad) is still good to 1e-8 rad (at 1e308 s it overflowed to NaN).
+const MAX_SEA_TIME_S: f64 = 1.0e7;
 
 #[wasm_bindgen]
 impl Sea {
     /// The sea of a scenario (no components in calm water).
     #[wasm_bindgen(constructor)]
     pub fn new(json: JsValue) -> Result<Sea, JsError> {
-        let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| JsError::new(&e.to_string()))?;
+        let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
         Ok(Sea { comps: aes_core::sim::seaway::wave_components(&sc), out: Vec::new() })
     }
 
@@ -673,17 +680,20 @@ impl Sea {
     /// Surface elevation [m, up] at the points (xs\[i\] north, ys\[i\] east) \[m\] at time t \[s\]
     /// (eq. 2.55's superposition; at most 20,000 points a call).
     pub fn elevations(&mut self, t: f64, xs: &[f64], ys: &[f64]) -> Result<js_sys::Float64Array, JsError> {
-        if !t.is_finite() {
-            return Err(JsError::new(&format!("elevations: t = {}: the time must be a finite number of seconds", t)));
+        if !(t.abs() <= MAX_SEA_TIME_S) {
+            let shown = if t.is_finite() { aes_core::checks::num(t) } else { "a value that is not finite".into() };
+            return Err(js_error(&format!(
+                "elevations: t = {shown}: the time must be a finite number of seconds within {MAX_SEA_TIME_S:e}"
+            )));
         }
         if xs.len() != ys.len() || xs.len() > 20_000 {
-            return Err(JsError::new("elevations: xs and ys of equal length, at most 20000 points"));
+            return Err(js_error("elevations: xs and ys of equal length, at most 20000 points"));
         }
         // Far out the wave phases k x lose their digits (at 1e300 m nothing of them is left).
         if let Some(i) = (0..xs.len()).find(|&i| !(xs[i].abs() <= MAX_SEA_POINT_M && ys[i].abs() <= MAX_SEA_POINT_M)) {
             let coord =
                 |x: f64| if x.is_finite() { aes_core::checks::num(x) } else { "a value that is not finite".into() };
-            return Err(JsError::new(&format!(
+            return Err(js_error(&format!(
                 "elevations: point {i} at ({}, {}) m: each coordinate must be a finite number of metres within {MAX_SEA_POINT_M:e}",
                 coord(xs[i]),
                 coord(ys[i])
@@ -691,6 +701,9 @@ impl Sea {
         }
         self.out.resize(xs.len(), 0.0);
         aes_core::sea::waves::elevations(&self.comps, xs, ys, t, &mut self.out);
+        if let Some(i) = self.out.iter().position(|z| !z.is_finite()) {
+            return Err(js_error(&format!("elevations: point {i}: the elevation is not a finite number")));
+        }
         Ok(js_sys::Float64Array::from(self.out.as_slice()))
     }
 }

@@ -526,4 +526,33 @@ fn propeller_curves_are_the_native_lifting_line() {
     assert!(good.contains("\"custom\""), "{good}");
     let e = message(propeller_geometry_csv(JsValue::from(table), 2.5, 0.2).unwrap_err());
     assert!(e.starts_with("blades: 2.5 is not a whole number"), "{e}");
+
+/// Issue 57 at the wasm boundary: a 1 MB axis path with ESC and BEL comes back cut and escaped;
+/// an elevation at t = 1e308 s (it was NaN) is refused naming the time; a lesson's explanation
+/// from values lacking its control (it wrote "Lower the hub to NaN m") is refused naming it.
+#[wasm_bindgen_test]
+fn the_boundary_shortens_escapes_and_refuses_what_is_not_finite() {
+    let mut sc: serde_json::Value = serde_json::from_str(&preset_json(JsValue::from("startup")).unwrap()).unwrap();
+    sc["initial"]["speed_kn"] = serde_json::json!(25.0);
+    let json = sc.to_string();
+    let path = format!("plant.\u{1b}[31m\u{7}{}", "x".repeat(1 << 20));
+    let m = message(stability_axis(JsValue::from(&json), "x axis", JsValue::from(&path), 0.0, 1.0, 3.0).unwrap_err());
+    assert!(m.len() < 2000 && !m.chars().any(|c| c.is_control()), "{} bytes: {}", m.len(), &m[..m.len().min(200)]);
+    assert!(m.contains("\\u{1b}"), "{}", &m[..m.len().min(200)]);
+    let waves = preset_json(JsValue::from("head-seas-ss6")).unwrap();
+    let mut sea = Sea::new(JsValue::from(waves)).unwrap();
+    for t in [1e308, -1e308, 1.0e8] {
+        let m = message(sea.elevations(t, &[0.0], &[0.0]).unwrap_err());
+        assert!(m.starts_with("elevations: t = ") && m.contains("within 1e7"), "{m}");
+    }
+    assert!(sea.elevations(1.0e7, &[0.0], &[0.0]).unwrap().to_vec()[0].is_finite());
+    let opened: serde_json::Value =
+        serde_json::from_str(&lesson_open(JsValue::from("waves"), JsValue::from("{}")).unwrap()).unwrap();
+    let run = Run::new(JsValue::from(opened["scenario"].as_str().unwrap())).unwrap();
+    let mut values = opened["values"].clone();
+    values.as_object_mut().unwrap().remove("ship.hull.hub_above_base_m");
+    let m = message(
+        run.lesson_explain(JsValue::from("waves"), JsValue::from(values.to_string()), JsValue::NULL).unwrap_err(),
+    );
+    assert!(m.contains("ship.hull.hub_above_base_m: missing"), "{m}");
 }

@@ -482,6 +482,12 @@ impl Scenario {
         crate::ship::rao_cache::rao_table_with(&self.table_spec(&self.ship_hull()?), each)
     }
 
+    /// Whether this scenario's RAO table is built and kept (nothing is built; false when the
+    /// hull cannot be made).
+    pub fn rao_table_is_cached(&self) -> bool {
+        self.ship_hull().is_ok_and(|h| crate::ship::rao_cache::is_cached(&self.table_spec(&h)))
+    }
+
     /// The RAO table's values and their digest, for another web worker ([`Self::insert_rao_table`]).
     pub fn rao_table_values(&self) -> Result<Vec<f64>, String> {
         crate::ship::rao_cache::rao_table_values(

@@ -43,6 +43,13 @@ fn keep(k: Key, t: Arc<RaoTable>) {
     }
 }
 
+/// Whether the table of `spec` is built and kept (nothing is built).
+pub fn is_cached(spec: &TableSpec) -> bool {
+    let k = key(spec);
+    let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
+    cache.lock().map(|c| c.iter().any(|(g, _)| *g == k)).unwrap_or(false)
+}
+
 /// The RAO table of `spec`, computed on first use, its build's parts run by `each` (`Serial`, or
 /// the command line's threads).
 pub fn rao_table_with(spec: &TableSpec, each: &dyn ForEach) -> Result<Arc<RaoTable>, String> {

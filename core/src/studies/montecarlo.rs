@@ -173,6 +173,7 @@ impl Partial {
                     x.n, x.clamped
                 ));
             }
+            h.check_within(x).map_err(|e| format!("{name}: {e}"))?;
         }
         if !sc.monte_carlo.excess_energy && (self.excess_energy_mj.n > 0 || self.excess_vs_calm_mj.n > 0) {
             return Err("excess_energy_mj: samples, but the scenario's monte_carlo.excess_energy is off".into());
@@ -241,6 +242,18 @@ impl Partial {
         {
             return Err("periodogram_hz: must be finite, one per periodogram row".into());
         }
+        // Welch's frequencies: k / (segment x dt), the same arithmetic as `welch`.
+        let seg = libm::round(sc.monte_carlo.periodogram_segment_s / dt) as usize;
+        if let Some((k, f)) =
+            self.periodogram_hz.iter().enumerate().find(|&(k, f)| *f != k as f64 / (seg as f64 * dt) || k > seg / 2)
+        {
+            return Err(format!(
+                "periodogram_hz.{k} = {}: Welch's frequencies are k / ({seg} samples x {} s), up to k = {}",
+                crate::checks::num(*f),
+                crate::checks::num(dt),
+                seg / 2
+            ));
+        }
         if self.traces.len() > sc.monte_carlo.keep_traces as usize {
             return Err(format!(
                 "traces: {} kept, the scenario keeps {}",
@@ -262,6 +275,78 @@ impl Partial {
                 || t.t_s.iter().chain(t.columns.iter().flat_map(|(_, c)| c)).any(|x| !x.is_finite())
             {
                 return Err(format!("traces: trial {} is not a finite trace of a trial in the ranges", t.trial));
+            }
+            self.check_trace(sc, t).map_err(|e| format!("traces: trial {}: {e}", t.trial))?;
+        }
+        Ok(())
+    }
+
+    /// A kept trace is one trial's own rows: its seed, the study's columns, time from 0 rising
+    /// one record interval a row (to 1e-9 of the run), and every value of an enveloped signal
+    /// within that row's envelope, which counts the same trial (the envelope's min and max are
+    /// the values themselves, so the check is exact).
+    fn check_trace(&self, sc: &Scenario, t: &KeptTrace) -> Result<(), String> {
+        use crate::checks::num;
+        let want = trial_seed(sc.sim.seed, t.trial);
+        if t.seed != want {
+            return Err(format!("seed = {}: trial {}'s seed is {want}", t.seed, t.trial));
+        }
+        let names = trace_columns(&sc.monte_carlo);
+        if t.columns.len() != names.len() || t.columns.iter().zip(&names).any(|((a, _), b)| a != b) {
+            return Err(format!("columns: must be {}", names.join(", ")));
+        }
+        let dt = sc.sim.record_interval_s;
+        let tol = 1e-9 * sc.sim.duration_s.max(1.0);
+        if let Some(k) =
+            (0..t.t_s.len()).find(|&k| (t.t_s[k] - k as f64 * dt).abs() > tol || (k > 0 && t.t_s[k] <= t.t_s[k - 1]))
+        {
+            return Err(format!(
+                "t_s.{k} = {}: time rises from 0 by the record interval, {} s a row (row {k} is at {} s)",
+                num(t.t_s[k]),
+                num(dt),
+                num(k as f64 * dt)
+            ));
+        }
+        // Columns without an envelope: within what a run allows.
+        let radius = 0.5 * sc.propeller.diameter_m;
+        let h = crate::studies::rare::checks::MAX_HUB_DEPTH_M / radius;
+        let p = crate::studies::rare::checks::MAX_POWER_DROP_OF_RATED;
+        for (name, col) in &t.columns {
+            let (lo, hi, why) = match name.as_str() {
+                "beta_t" => (0.0, 1.0, "the thrust kept, from 0 (no thrust) to 1 (fully submerged)"),
+                "h_over_r" => (-h, h, "the hub within 200 m of the surface"),
+                "im_power_pu" => (-p, p, "100 times the motor's rating: beyond its pull-out torque"),
+                _ => continue,
+            };
+            if let Some((k, v)) = col.iter().enumerate().find(|(_, v)| !(lo..=hi).contains(*v)) {
+                return Err(format!(
+                    "columns.{name}.{k} = {}: must be from {} to {} ({why})",
+                    num(*v),
+                    num(lo),
+                    num(hi)
+                ));
+            }
+        }
+        for env in &self.envelopes {
+            let Some((_, col)) = t.columns.iter().find(|(n, _)| n == &env.signal) else { continue };
+            if col.len() > env.rows.len() {
+                return Err(format!(
+                    "columns.{}: {} rows, but its envelope has {}: the envelope counts every kept trial's rows",
+                    env.signal,
+                    col.len(),
+                    env.rows.len()
+                ));
+            }
+            if let Some((k, (v, r))) =
+                col.iter().zip(&env.rows).enumerate().find(|(_, (v, r))| r.n == 0 || **v < r.min || **v > r.max)
+            {
+                return Err(format!(
+                    "columns.{}.{k} = {}: outside its envelope's row, min = {}, max = {} (the envelope counts this trial)",
+                    env.signal,
+                    num(*v),
+                    num(r.min),
+                    num(r.max)
+                ));
             }
         }
         Ok(())

@@ -32,6 +32,15 @@ pub const MAX_CELLS: usize = 10_000;
 /// Most values on one axis of a map.
 pub const MAX_AXIS_VALUES: usize = 200;
 
+/// Units of work of one cell ([`crate::scenario::WORK_PER_S`] a second), for the estimate said
+/// before a map starts: a cell's scenario, steady state and linearisation took 15 ms on one core
+/// (a 200 x 50 map of head-seas-ss6 over ship.hull.kxx_m, 146 s); the acceleration preset's
+/// cells are faster.
+pub const CELL_WORK: f64 = 0.015 * crate::scenario::WORK_PER_S;
+
+/// Linearisations of a row's boundary besides its cells (the bisection's halvings).
+const BOUNDARY_HALVINGS: u32 = 40;
+
 /// The plant linearised about its steady state.
 #[derive(Debug, Clone, Serialize)]
 pub struct BusModel {
@@ -80,7 +89,13 @@ pub fn linearize(sc: &Scenario) -> Result<BusModel, String> {
             sc.initial.speed_kn
         ));
     }
-    let sim = Simulation::new(sc).map_err(|e| e.to_string())?;
+    // The steady state is calm water's and the plant's equations do not read the sea: without
+    // it the simulation builds no seaway, so no RAO table (a map over a hull parameter in a sea
+    // built one a cell, about 2 s each, for nothing). The abscissa moves by rounding only (head
+    // seas SS6: -0.019679121583758345 1/s in the sea, ...355 without).
+    let mut calm = sc.clone();
+    calm.sea.kind = crate::scenario::SeaKind::Calm;
+    let sim = Simulation::new(&calm).map_err(|e| e.to_string())?;
     let (x0, h0) = (*sim.state(), *sim.held());
     let plant = sim.plant();
     let st = states(sc);
@@ -140,20 +155,29 @@ impl Axis {
     /// to [`MAX_AXIS_VALUES`], `lo` below `hi`, both ends a value the scenario takes there (its
     /// own check, naming the parameter and its range). `which` names the axis in the message.
     pub fn checked(sc: &Scenario, which: &str, path: &str, lo: f64, hi: f64, n: usize) -> Result<Axis, String> {
+        // The path as messages show it: escaped and cut (a page may send a megabyte).
+        let shown_path = crate::checks::shorten(path);
         if !(2..=MAX_AXIS_VALUES).contains(&n) {
             return Err(format!("{which}: {n} values: from 2 to {MAX_AXIS_VALUES}"));
         }
         if let Some(held) = held_controller(path) {
             return Err(format!(
-                "{which}: {path}: the map holds the {held} at its steady output: its settings do not move it; \
+                "{which}: {shown_path}: the map holds the {held} at its steady output: its settings do not move it; \
                  axes that do: the plant's and the ship's parameters (plant.*, ship.*, e.g. \
                  plant.loads.ship_service_w, plant.loads.filter_capacitance_f), initial.speed_kn and \
                  controllers.field.bus_voltage_ref_v (the operating point)"
             ));
         }
+        if path.starts_with("sea.") || path.starts_with("seakeeping.grid.") {
+            return Err(format!(
+                "{which}: {shown_path}: the map linearises the plant about its calm-water steady state: the sea and the \
+                 RAO table's grid do not move it; axes that do: the plant's and the ship's parameters (plant.*, \
+                 ship.*), initial.speed_kn and controllers.field.bus_voltage_ref_v"
+            ));
+        }
         if path.starts_with("stepping.") || path.starts_with("sim.") {
             return Err(format!(
-                "{which}: {path}: the map linearises the plant and does not step it in time: the time step and \
+                "{which}: {shown_path}: the map linearises the plant and does not step it in time: the time step and \
                  the run's settings do not move it; axes that do: the plant's and the ship's parameters (plant.*, \
                  ship.*), initial.speed_kn and controllers.field.bus_voltage_ref_v"
             ));
@@ -167,7 +191,7 @@ impl Axis {
                 }
             };
             return Err(format!(
-                "{which}: from {} to {} {path}: two finite numbers, the first below the second",
+                "{which}: from {} to {} {shown_path}: two finite numbers, the first below the second",
                 shown(lo),
                 shown(hi)
             ));
@@ -303,7 +327,7 @@ fn map_row(sc: &Scenario, x: &Axis, y: &Axis, j: usize) -> MapRow {
     let boundary_x = row.windows(2).zip(x.values.windows(2)).find_map(|(a, xs)| match (a[0], a[1]) {
         (Some(a0), Some(a1)) if (a0 < 0.0) != (a1 < 0.0) => {
             let (lo, hi) = if a0 < 0.0 { (xs[0], xs[1]) } else { (xs[1], xs[0]) };
-            bisect_boundary(sc, &x.path, lo, hi, (&y.path, yv), 40).ok()
+            bisect_boundary(sc, &x.path, lo, hi, (&y.path, yv), BOUNDARY_HALVINGS).ok()
         }
         _ => None,
     });
@@ -346,6 +370,10 @@ impl Study for StabilityMapStudy {
     }
     fn items(&self) -> u64 {
         self.spec.y.values.len() as u64
+    }
+    /// A row's cells and its boundary's bisection, each a linearisation of [`CELL_WORK`].
+    fn item_work(&self) -> Option<f64> {
+        Some((self.spec.x.values.len() as f64 + BOUNDARY_HALVINGS as f64) * CELL_WORK)
     }
     /// Linearisations, not runs: no seakeeping table.
     fn needs_rao_table(&self) -> bool {
@@ -464,6 +492,37 @@ pub fn stiff_bus_check(c_f: f64) -> Result<(f64, f64), String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 57: the linearisation does not read the sea. In SS6 head seas on an RAO grid of its
+    /// own, linearising builds no table (it built one a cell: about 2 s each over a hull or grid
+    /// axis), and gives the eigenvalues of the same plant in calm water, bit for bit. A map over
+    /// the sea or the table's grid, which cannot move, is refused by name; over a hull parameter,
+    /// every cell is made and no table built.
+    #[test]
+    fn the_linearisation_builds_no_rao_table() {
+        let mut sc = crate::scenario::presets::preset("head-seas-ss6").unwrap();
+        sc.seakeeping.grid.n_omega = 37;
+        sc.seakeeping.grid.omega_max = 1.913;
+        assert!(!sc.rao_table_is_cached());
+        let m = linearize(&sc).unwrap();
+        assert!(!sc.rao_table_is_cached(), "the linearisation built the RAO table");
+        let mut calm = sc.clone();
+        calm.sea.kind = crate::scenario::SeaKind::Calm;
+        assert_eq!(m.eigenvalues, linearize(&calm).unwrap().eigenvalues);
+        for path in ["seakeeping.grid.omega_max", "sea.h_sig_m"] {
+            let e = Axis::checked(&sc, "--x", path, 1.0, 2.0, 3).unwrap_err();
+            assert!(e.contains(path) && e.contains("do not move it"), "{e}");
+        }
+        let x = Axis::checked(&sc, "--x", "ship.hull.kxx_m", 4.0, 5.0, 2).unwrap();
+        let y = Axis::checked(&sc, "--y", "plant.loads.filter_capacitance_f", 0.01, 0.04, 2).unwrap();
+        let map = map(&sc, &x, &y).unwrap();
+        assert!(map.abscissa.iter().flatten().all(|a| a.is_some()), "{:?}", map.failures);
+        for kxx in [4.0, 5.0] {
+            let mut cell = sc.clone();
+            cell.ship.hull.kxx_m = Some(kxx);
+            assert!(!cell.rao_table_is_cached(), "kxx {kxx}: a table was built");
+        }
+    }
 
     /// Issue 55: a governor or exciter gain cannot move the map (the controllers are held at their
     /// steady outputs; the map was flat at -3.3e-5 1/s from field K_p 1e-5 to 1 and governor K_p 1

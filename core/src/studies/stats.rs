@@ -228,8 +228,11 @@ impl ExactMoments {
         let slack = |bound: f64| 1e-9 * bound.abs() + 1.0;
         let big = lo.abs().max(hi.abs());
         let mut bad = Vec::new();
-        if s[0] < n * lo - slack(n * lo) || s[0] > n * hi + slack(n * hi) {
-            bad.push("the sum lies outside n x [min, max]");
+        // The extremes are two of the samples (one when n = 1): the sum holds min and max and
+        // n - 2 values between them, so it lies in [max + (n - 1) min, min + (n - 1) max].
+        let (s_lo, s_hi) = (hi + (n - 1.0) * lo, lo + (n - 1.0) * hi);
+        if s[0] < s_lo - slack(s_lo) || s[0] > s_hi + slack(s_hi) {
+            bad.push("the sum lies outside [max + (n - 1) min, min + (n - 1) max], the sums of n values whose extremes are min and max");
         }
         if order >= 2 {
             let top = n * big * big;
@@ -426,6 +429,38 @@ impl Histogram {
     pub fn mode(&self) -> f64 {
         let k = self.counts.iter().enumerate().max_by_key(|(_, c)| **c).map_or(0, |(k, _)| k);
         self.lo + (k as f64 + 0.5) * (self.hi - self.lo) / self.counts.len() as f64
+    }
+
+    /// Checks that every count lies where the values `x` counts can be: a bin holds values only
+    /// if it meets [min, max] of `x`, `below` only a value under `lo` (or one not finite), `above`
+    /// only one from `hi` up (or an infinite one). So the median and mode read from the bins lie
+    /// within the accumulator's extremes. Room of 1e-9 of the range for the bin's rounding.
+    pub fn check_within(&self, x: &ExactMoments) -> Result<(), String> {
+        use crate::checks::num;
+        let n = self.counts.len();
+        let (lo, hi) = (self.lo, self.hi);
+        let w = (hi - lo) / n as f64;
+        let slack = 1e-9 * (hi - lo).abs().max(1.0);
+        let extremes = || format!("the values' min = {}, max = {}", num(x.min), num(x.max));
+        let finite = x.n > 0;
+        if self.below > 0 && x.clamped == 0 && !(finite && x.min < lo + slack) {
+            return Err(format!("below = {}: values under {} counted, but {}", self.below, num(lo), extremes()));
+        }
+        if self.above > 0 && x.clamped == 0 && !(finite && x.max >= hi - slack) {
+            return Err(format!("above = {}: values from {} up counted, but {}", self.above, num(hi), extremes()));
+        }
+        for (k, &c) in self.counts.iter().enumerate() {
+            let (a, b) = (lo + w * k as f64, lo + w * (k + 1) as f64);
+            if c > 0 && !(finite && x.max >= a - slack && x.min <= b + slack) {
+                return Err(format!(
+                    "counts.{k} = {c}: bin [{}, {}) lies outside {} of the values it counts",
+                    num(a),
+                    num(b),
+                    extremes()
+                ));
+            }
+        }
+        Ok(())
     }
 }
 

@@ -321,6 +321,23 @@ pub fn open(l: &Lesson, given: &[(&str, &str)]) -> Result<Opened, String> {
     Ok(Opened { scenario, values, defaults, refused, snapped })
 }
 
+/// Checks the controls' values an explanation is written from (as `open` gives them): every
+/// control of the lesson there with a value it takes, and nothing else; the error names the
+/// first that is not (an explanation from a missing value read "Lower the hub to NaN m").
+pub fn check_values(l: &Lesson, values: &serde_json::Map<String, serde_json::Value>) -> Result<(), String> {
+    let paths: Vec<&str> = l.controls.iter().map(|c| c.path).collect();
+    if let Some(k) = values.keys().find(|k| !paths.contains(&k.as_str())) {
+        return Err(format!("{}: not a control of lesson {} (its controls: {})", shorten(k), l.name, paths.join(", ")));
+    }
+    for c in &l.controls {
+        let v = values.get(c.path).ok_or_else(|| {
+            format!("{}: missing: lesson {}'s explanation is written from each of its controls' values", c.path, l.name)
+        })?;
+        c.accept(&as_text(v)).map_err(|e| format!("{}: {e}", c.path))?;
+    }
+    Ok(())
+}
+
 /// Explains a finished run of lesson `l` (`values`: the controls' values, as `open` gives them)
 /// by the lesson's own explainer.
 pub fn explain(l: &Lesson, values: &serde_json::Map<String, serde_json::Value>, run: &Run) -> Explanation {
@@ -346,4 +363,31 @@ pub fn explain_after(
         e.reading = Some(Reading { measure: m, value });
     }
     e
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Issue 57: an explanation is written only from the lesson's own values: the values `open`
+    /// gives pass; one lacking the hub control, one with it not a number, one of another lesson's
+    /// control are refused naming the control (the page wrote "Lower the hub to NaN m").
+    #[test]
+    fn an_explanation_needs_every_control_of_its_lesson() {
+        let l = lesson("waves").unwrap();
+        let opened = open(&l, &[]).unwrap();
+        check_values(&l, &opened.values).unwrap();
+        let hub = "ship.hull.hub_above_base_m";
+        let mut lacking = opened.values.clone();
+        lacking.remove(hub);
+        let e = check_values(&l, &lacking).unwrap_err();
+        assert!(e.starts_with(&format!("{hub}: missing")), "{e}");
+        let mut nan = opened.values.clone();
+        nan.insert(hub.into(), "NaN".into());
+        assert!(check_values(&l, &nan).unwrap_err().starts_with(hub));
+        let mut other = opened.values.clone();
+        other.insert("plant.storage.energy_j".into(), 1.0.into());
+        let e = check_values(&l, &other).unwrap_err();
+        assert!(e.starts_with("plant.storage.energy_j: not a control of lesson waves"), "{e}");
+    }
 }

@@ -18,6 +18,7 @@
 //! freeboard, exp(-f^2 / 2 m0). The relative motion is the hull's rigid motion against the
 //! undisturbed wave: the bow's swell-up and the ship's own waves are not in the model.
 
+pub mod bounds;
 pub mod response;
 pub mod scatter;
 pub mod study;

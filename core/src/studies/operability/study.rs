@@ -1,7 +1,7 @@
 //! The operability polar on the shared study pipeline: item j is speed j of the request, a part
 //! is the cells and scatter shares of some speeds, and the summary is the polar.
 
-use super::{assemble, scatter::Scatter, Cell, Polar, PolarRequest, PolarSetup, PolarSpec};
+use super::{assemble, bounds::CellLimits, scatter::Scatter, Cell, Polar, PolarRequest, PolarSetup, PolarSpec};
 use crate::scenario::Scenario;
 use crate::studies::study::{merge_records, missing, records_of, Study};
 use serde::{Deserialize, Serialize};
@@ -33,6 +33,9 @@ pub struct OperabilityPolar {
     normalised: PolarSpec,
     criteria: usize,
     scatter: Option<Scatter>,
+    /// The setup and the bounds the rows of shards from outside are checked against, made at
+    /// the first check (the RAO table is cached, and a merge's summary needs it anyway).
+    bounds: std::sync::OnceLock<Result<(PolarSetup, CellLimits), String>>,
 }
 
 impl Study for OperabilityPolar {
@@ -52,7 +55,7 @@ impl Study for OperabilityPolar {
         let mut normalised = polar.clone();
         normalised.normalise();
         let criteria = spec.scenario.operability.criteria.len();
-        Ok(OperabilityPolar { spec, polar, normalised, criteria, scatter })
+        Ok(OperabilityPolar { spec, polar, normalised, criteria, scatter, bounds: std::sync::OnceLock::new() })
     }
     fn spec(&self) -> &PolarStudySpec {
         &self.spec
@@ -83,24 +86,67 @@ impl Study for OperabilityPolar {
     /// One row for each speed of the ranges, in order: one cell per heading of the polar (after
     /// [`PolarSpec::normalise`]) at its own speed and heading, each sea's values and limits for
     /// every criterion, a limiting criterion among them, at most every sea passed, and a share in
-    /// [0, 1] per heading with a scatter diagram (none without).
+    /// [0, 1] per heading with a scatter diagram (none without); then each cell's numbers within
+    /// what the RAO table allows and consistent with each other ([`CellLimits::check`]).
     fn check_part(&self, part: &Vec<SpeedRow>, ranges: &[(u64, u64)]) -> Result<(), String> {
+        use crate::checks::num;
         let (h, nseas, nc) = (&self.normalised.headings_deg, self.normalised.seas.len(), self.criteria);
         for (r, j) in records_of(part, ranges, |r| r.speed, "speed")? {
             let speed = self.polar.speeds_kn[j as usize];
+            let not =
+                |what: String| Err(format!("speed {j}: {what}: not the row of speed {j} ({speed} kn) of this polar"));
             let shares = if self.scatter.is_some() { h.len() } else { 0 };
-            let cells_fit = r.cells.len() == h.len()
-                && r.cells.iter().zip(h).all(|(c, &hd)| {
-                    c.speed_kn == speed
-                        && c.heading_deg == hd
-                        && c.values.len() == nseas
-                        && c.limit_hs_m.len() == nseas
-                        && c.values.iter().chain(&c.limit_hs_m).all(|v| v.len() == nc)
-                        && c.limiting_criterion.is_none_or(|k| k < nc)
-                        && c.seas_passed <= nseas
-                });
-            if !cells_fit || r.shares.len() != shares || r.shares.iter().any(|x| !(0.0..=1.0).contains(x)) {
-                return Err(format!("speed {j}: not the row of speed {j} ({speed} kn) of this polar"));
+            if r.cells.len() != h.len() || r.shares.len() != shares {
+                return not(format!(
+                    "{} cells and {} shares for its {} headings",
+                    r.cells.len(),
+                    r.shares.len(),
+                    h.len()
+                ));
+            }
+            if let Some((k, x)) = r.shares.iter().enumerate().find(|(_, x)| !(0.0..=1.0).contains(*x)) {
+                return not(format!("shares.{k} = {}: an operable share is from 0 to 1", num(*x)));
+            }
+            for (k, (c, &hd)) in r.cells.iter().zip(h).enumerate() {
+                if c.speed_kn != speed || c.heading_deg != hd {
+                    return not(format!(
+                        "cells.{k}: speed_kn = {}, heading_deg = {}: the cell of {speed} kn, {hd} deg",
+                        num(c.speed_kn),
+                        num(c.heading_deg)
+                    ));
+                }
+                if c.values.len() != nseas
+                    || c.limit_hs_m.len() != nseas
+                    || c.values.iter().chain(&c.limit_hs_m).any(|v| v.len() != nc)
+                {
+                    return not(format!("cells.{k}: values and limit_hs_m must hold {nseas} seas x {nc} criteria"));
+                }
+                if c.limiting_criterion.is_some_and(|i| i >= nc) || c.seas_passed > nseas {
+                    return not(format!(
+                        "cells.{k}: limiting_criterion = {:?}, seas_passed = {}: at most criterion {} and {nseas} seas",
+                        c.limiting_criterion,
+                        c.seas_passed,
+                        nc.saturating_sub(1)
+                    ));
+                }
+            }
+        }
+        let (setup, limits) = self
+            .bounds
+            .get_or_init(|| {
+                self.prepare().map(|s| {
+                    let l = CellLimits::of(&s);
+                    (s, l)
+                })
+            })
+            .as_ref()
+            .map_err(|e| e.clone())?;
+        let hs: Vec<f64> = self.normalised.seas.iter().map(|s| s.h_sig_m).collect();
+        for r in part {
+            for (k, c) in r.cells.iter().enumerate() {
+                limits.check(&setup.judge, c, &hs).map_err(|e| {
+                    format!("speed {}: cells.{k} ({} deg): {e}", r.speed, crate::checks::num(c.heading_deg))
+                })?;
             }
         }
         Ok(())
@@ -149,7 +195,11 @@ mod tests {
             change(&mut bad.part[0]);
             check_shard(&study, &bad).unwrap_err()
         };
-        assert!(refused(&|r| r.cells[1].heading_deg = 45.0).starts_with("speed 1: not the row of speed 1"));
+        let e = refused(&|r| r.cells[1].heading_deg = 45.0);
+        assert!(
+            e.starts_with("speed 1: cells.1: speed_kn = 18, heading_deg = 45") && e.contains("not the row of speed 1"),
+            "{e}"
+        );
         assert!(refused(&|r| {
             r.cells.pop();
         })

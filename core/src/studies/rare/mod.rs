@@ -28,7 +28,7 @@ use crate::studies::study::Study;
 use serde::{Deserialize, Serialize};
 
 mod brute_force;
-mod checks;
+pub mod checks;
 mod comparison;
 mod consequences;
 mod summary;
