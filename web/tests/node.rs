@@ -526,6 +526,7 @@ fn propeller_curves_are_the_native_lifting_line() {
     assert!(good.contains("\"custom\""), "{good}");
     let e = message(propeller_geometry_csv(JsValue::from(table), 2.5, 0.2).unwrap_err());
     assert!(e.starts_with("blades: 2.5 is not a whole number"), "{e}");
+}
 
 /// Issue 57 at the wasm boundary: a 1 MB axis path with ESC and BEL comes back cut and escaped;
 /// an elevation at t = 1e308 s (it was NaN) is refused naming the time; a lesson's explanation
