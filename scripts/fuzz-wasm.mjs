@@ -151,9 +151,9 @@ function makeGen(r, fx) {
   const studyKind = () => (r.chance(0.9) ? r.pick(fx.kinds) : text());
   const spec = (kind) => {
     if (r.chance(0.12)) return text();
-    const text = scenario();
+    const raw = scenario();
     let sc;
-    try { sc = JSON.parse(text); } catch (_) { return text; }
+    try { sc = JSON.parse(raw); } catch (_) { return raw; }
     switch (kind) {
       case 'monte-carlo': return JSON.stringify(sc);
       case 'operability': return JSON.stringify({ scenario: sc, request: { speeds_kn: [r.pick([12, 15, -1, NaN, 1e308])], headings_deg: [180], sea_states: [r.pick([4, 2, 9])] } });

@@ -964,4 +964,22 @@ fn class20_a_flag_the_command_would_not_read_is_refused() {
         b"",
         "--set: `bench seakeeping` sets only the loading of --hull's hull (give --hull)",
     );
+    // `ips`: the motor side read none of the generator's numbers (an infinite field voltage passed).
+    refused(
+        &["ips", "steady", "--side", "motor", "--vfd", "inf"],
+        b"",
+        "--vfd is for --side generator; --side motor does not read it",
+    );
+    refused(
+        &["ips", "bode", "--side", "motor", "--omega", "400", "--points", "20"],
+        b"",
+        "--omega is for --side generator",
+    );
+    refused(
+        &["ips", "linear", "--side", "generator", "--torque", "5"],
+        b"",
+        "--torque is for --side motor; --side generator does not read it",
+    );
+    let o = run(&["ips", "steady", "--side", "motor", "--torque", "80", "--vfd", "28.5"], b"");
+    assert_eq!(o.code, Some(0), "{}", o.err);
 }
