@@ -47,10 +47,11 @@ UNIT_KEY = re.compile(
 )
 # Keys whose null is a deliberate "none" (an Option in the code): no wave sums to time on a calm
 # preset, a signal that never settles or recovers in the run, fuel per mile at 0 kn, a
-# sensitivity with one turbine online, the excess energy of a study that does not collect it.
+# sensitivity with one turbine online, the excess energy of a study that does not collect it, an
+# arrival rate with no exposure (every event at the start), one seed's spread.
 NULL_MEANS_NONE = {"wave_sums_s", "settling_time_s", "bus_recovery_s", "turbine_recovery_s",
                    "fuel_per_nmi_j", "sensitivity_w_per_n", "excess_energy_mj", "excess_vs_calm_mj",
-                   "phase_crossover_rad_s", "gain_crossover_rad_s", "kg_per_nmi_std"}
+                   "phase_crossover_rad_s", "gain_crossover_rad_s", "kg_per_nmi_std", "rate_per_s"}
 TIMEOUT_S = 60.0
 WEIGHTS = {"validate": 0.15}
 # The valid span of each numeric flag (values outside it come from the hostile list), and of each
@@ -267,7 +268,10 @@ def flag_value(gen, cmd, flag, outputs):
     if flag in ("out", "partial"):
         name = rng.choice(["out.csv", "shard.bin", "o.json"])
         if g.chance(0.15):
-            return rng.choice(["", "/dev/null", "missing_dir/x.csv", ".", "/proc/nope", "a\x1bb"]), None, None
+            bad = rng.choice(["", "/dev/null", "missing_dir/x.csv", ".", "/proc/nope", "a\x1bb"])
+            if bad == "a\x1bb":
+                outputs.add(bad)  # an odd name, but the one named: it may be written
+            return bad, None, None
         outputs.add(name)
         return name, None, None
     if flag == "figures":

@@ -30,7 +30,7 @@ const UNIT_KEY = /_(s|m|kn|w|j|pu|deg|kg|hz|rad|n|nm|v|a|rpm|m2|m3|mj|mw|kw|kj|p
 // Keys whose null is a deliberate "none" (an Option in the core), as in scripts/fuzz-cli.py.
 const NULL_MEANS_NONE = new Set(['wave_sums_s', 'settling_time_s', 'bus_recovery_s', 'turbine_recovery_s',
   'fuel_per_nmi_j', 'sensitivity_w_per_n', 'excess_energy_mj', 'excess_vs_calm_mj', 'phase_crossover_rad_s',
-  'gain_crossover_rad_s']);
+  'gain_crossover_rad_s', 'kg_per_nmi_std', 'rate_per_s', 'bilge_keels_m']);
 
 // A small seeded generator (mulberry32): the same seed gives the same calls.
 function rng(seed) {
@@ -313,6 +313,20 @@ function impossibleOf(name, args) {
 async function main() {
   const argv = process.argv.slice(2);
   const opt = (name, dflt) => { const k = argv.indexOf(`--${name}`); return k >= 0 ? Number(argv[k + 1]) : dflt; };
+  const replay = argv.indexOf('--replay');
+  if (replay >= 0) {
+    // One saved call in a fresh instance: is the trap its own, or left by an earlier call?
+    const dec = (x) => (Array.isArray(x) ? x.map(dec) : x && typeof x === 'object'
+      ? ('type' in x ? new globalThis[x.type](x.values.map(dec)) : 'number' in x ? Number(x.number) : 'undefined' in x ? undefined : x) : x);
+    const c = JSON.parse(readFileSync(argv[replay + 1], 'utf8'));
+    c.args = dec(c.args);
+    const w = new Worker(fileURLToPath(import.meta.url), { workerData: { gen: 0 } });
+    w.on('message', (m) => {
+      if (m.ready) w.postMessage(c);
+      else if (m.start === undefined) { console.log(JSON.stringify({ call: c.name, ok: m.ok, trap: m.trap, msg: m.msg && m.msg.slice(0, 300) })); w.terminate(); }
+    });
+    return;
+  }
   const cases = opt('cases', 1000);
   const seed = opt('seed', 1);
   const boundMs = opt('bound-s', 30) * 1000;
@@ -415,6 +429,14 @@ async function main() {
     pe[kind]++;
     counts[kind]++;
     for (const [k] of problems) byKind[k] = (byKind[k] || 0) + 1;
+    if (problems.some(([k]) => k === 'trap' || k === 'slow')) {
+      // The whole call, to replay in a fresh instance (`--replay FILE`): typed arrays as
+      // {type, values}, non-finite numbers as text.
+      const enc = (x) => (x instanceof Float64Array || x instanceof Uint8Array ? { type: x.constructor.name, values: Array.from(x).map(enc) }
+        : Array.isArray(x) ? x.map(enc) : typeof x === 'number' && !Number.isFinite(x) ? { number: String(x) } : x === undefined ? { undefined: true } : x);
+      const { impossible, ...whole } = c;
+      writeFileSync(path.join(outDir, `wasm-replay-seed${seed}-${c.i}.json`), JSON.stringify({ ...whole, args: enc(c.args) }));
+    }
     if (problems.length) {
       findings.push({ call: c.name, args: printable(c.args), ctor: c.ctor !== undefined ? printable(c.ctor) : undefined, problems, error: res.msg ? res.msg.slice(0, 400) : undefined });
     }
