@@ -928,3 +928,58 @@ fn class19_rare_intervals_are_never_falsely_narrow() {
         "the brute-force interval has zero width (no event past it was counted): it has no width to scale"
     );
 }
+
+/// Issue 57's closing fuzz run: flags that the chosen form of a command would not read were
+/// ignored with exit status 0. `lesson` without a NAME printed the list and dropped `--value`,
+/// `--before`, `--answer` and `--json`; `bench propeller` dropped `--set` and `--hull`, a preset's
+/// bench dropped `--hull`, and `bench seakeeping` dropped `--set` without `--hull`. Each is refused
+/// by name now.
+#[test]
+fn class20_a_flag_the_command_would_not_read_is_refused() {
+    let names = "(one of power, waves, turn, braking, bus, engines, sign, battery)";
+    refused(&["lesson", "--value", "sea.sea_state=4"], b"", &format!("--value needs a lesson NAME first {names}"));
+    refused(&["lesson", "--before", "default"], b"", "--before needs a lesson NAME first");
+    refused(&["lesson", "--answer", "1"], b"", "--answer needs a lesson NAME first");
+    refused(&["lesson", "--json"], b"", "--json needs a lesson NAME first");
+    let o = run(&["lesson"], b"");
+    assert_eq!(o.code, Some(0), "{}", o.err);
+    assert!(o.out.contains("battery"), "{}", o.out);
+    refused(
+        &["bench", "propeller", "--repeat", "1", "--set", "sim.duration_s=5"],
+        b"",
+        "--set: `bench propeller` times DTMB 4119's own blades and takes no parameter",
+    );
+    refused(
+        &["bench", "propeller", "--hull", "wigley"],
+        b"",
+        "--hull is for `bench seakeeping` only, not `bench propeller`",
+    );
+    refused(
+        &["bench", "startup", "--hull", "wigley"],
+        b"",
+        "--hull is for `bench seakeeping` only, not `bench startup`",
+    );
+    refused(
+        &["bench", "seakeeping", "--set", "ship.hull.draft_m=5"],
+        b"",
+        "--set: `bench seakeeping` sets only the loading of --hull's hull (give --hull)",
+    );
+    // `ips`: the motor side read none of the generator's numbers (an infinite field voltage passed).
+    refused(
+        &["ips", "steady", "--side", "motor", "--vfd", "inf"],
+        b"",
+        "--vfd is for --side generator; --side motor does not read it",
+    );
+    refused(
+        &["ips", "bode", "--side", "motor", "--omega", "400", "--points", "20"],
+        b"",
+        "--omega is for --side generator",
+    );
+    refused(
+        &["ips", "linear", "--side", "generator", "--torque", "5"],
+        b"",
+        "--torque is for --side motor; --side generator does not read it",
+    );
+    let o = run(&["ips", "steady", "--side", "motor", "--torque", "80", "--vfd", "28.5"], b"");
+    assert_eq!(o.code, Some(0), "{}", o.err);
+}

@@ -30,6 +30,16 @@ pub fn run(Args { name, repeat, hull, sets }: Args) -> Result<(), Failure> {
     if !(1..=most).contains(&repeat) {
         return Err(format!("--repeat = {repeat}: must be a whole number from 1 to {most}").into());
     }
+    // A flag the chosen benchmark does not read would be ignored without a word: refused.
+    if name != "seakeeping" && hull.is_some() {
+        return Err(format!("--hull is for `bench seakeeping` only, not `bench {}`", shorten(&name)).into());
+    }
+    if name == "propeller" && !sets.is_empty() {
+        return Err("--set: `bench propeller` times DTMB 4119's own blades and takes no parameter".into());
+    }
+    if name == "seakeeping" && hull.is_none() && !sets.is_empty() {
+        return Err("--set: `bench seakeeping` sets only the loading of --hull's hull (give --hull)".into());
+    }
     if name == "seakeeping" {
         seakeeping(repeat, hull, sets)
     } else if name == "propeller" {

@@ -86,6 +86,19 @@ pub fn run(command: Cmd) -> Result<(), Failure> {
         Cmd::Linear { point, loop_kind } => (point, loop_kind, Analysis::Linear, (d.from_hz, d.to_hz, d.points)),
         Cmd::Bode { point, loop_kind, from, to, points } => (point, loop_kind, Analysis::Bode, (from, to, points)),
     };
+    // A number the chosen side does not read would be ignored without a word: refused by name (a
+    // value equal to the default is what leaving the flag out gives).
+    let (unread, this, other): (&[(&str, f64, f64)], _, _) = match p.side {
+        Side::Motor => (
+            &[("--omega", p.omega, d.omega_rad_s), ("--vfd", p.vfd, d.v_fd_v), ("--load", p.load, d.load_a)],
+            "motor",
+            "generator",
+        ),
+        Side::Generator => (&[("--torque", p.torque, d.torque_nm)], "generator", "motor"),
+    };
+    if let Some((flag, ..)) = unread.iter().find(|(_, v, dflt)| v.to_bits() != dflt.to_bits()) {
+        return Err(format!("{flag} is for --side {other}; --side {this} does not read it").into());
+    }
     let overrides: Vec<(String, String)> = p
         .sets
         .iter()

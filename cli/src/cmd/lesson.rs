@@ -30,6 +30,17 @@ pub struct Args {
 
 pub fn run(a: Args) -> Result<(), Failure> {
     let Some(name) = a.name else {
+        // The list takes no values: a flag given without a lesson would be ignored, so it is refused.
+        let given = [
+            (!a.values.is_empty(), "--value"),
+            (!a.before.is_empty(), "--before"),
+            (a.answer.is_some(), "--answer"),
+            (a.json, "--json"),
+        ];
+        if let Some((_, flag)) = given.iter().find(|(g, _)| *g) {
+            let names: Vec<&str> = lessons::lessons().iter().map(|l| l.name).collect();
+            return Err(format!("{flag} needs a lesson NAME first (one of {})", names.join(", ")).into());
+        }
         let text: Vec<String> = lessons::lessons().iter().map(|l| format!("{:<8} {}", l.name, l.title)).collect();
         emit(&text.join("\n"))?;
         return Ok(());
