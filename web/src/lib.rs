@@ -25,6 +25,18 @@ fn text(v: &JsValue, what: &str) -> Result<String, JsError> {
     })
 }
 
+/// A count from JavaScript (a number of steps, a trial, passes, workers), refused by name when it
+/// is not a whole number from 0 to `max`: the glue of a `u32` argument would turn NaN, infinities
+/// and negatives into 0 or wrap them before Rust saw them.
+fn whole(x: f64, what: &str, max: u32) -> Result<u32, JsError> {
+    if x.is_finite() && x.fract() == 0.0 && (0.0..=max as f64).contains(&x) {
+        Ok(x as u32)
+    } else {
+        let shown = if x.is_finite() { aes_core::checks::num(x) } else { "a value that is not a finite number".into() };
+        Err(js_error(&format!("{what} = {shown}: must be a whole number from 0 to {max}")))
+    }
+}
+
 /// Names of the preset scenarios.
 #[wasm_bindgen(js_name = presetNames)]
 pub fn preset_names() -> Vec<String> {
@@ -140,7 +152,8 @@ impl Run {
     }
 
     /// Advances by at most `steps` time steps; returns the fraction done (1 when finished).
-    pub fn advance(&mut self, steps: u32) -> Result<f64, JsError> {
+    pub fn advance(&mut self, steps: f64) -> Result<f64, JsError> {
+        let steps = whole(steps, "advance: steps", u32::MAX)?;
         let Some(sim) = self.sim.as_mut() else {
             return Ok(1.0);
         };
@@ -325,13 +338,16 @@ pub fn stability_point(json: JsValue) -> Result<String, JsError> {
 #[wasm_bindgen(js_name = stabilityAxis)]
 pub fn stability_axis(
     json: JsValue,
-    which: &str,
+    which: JsValue,
     path: JsValue,
     from: f64,
     to: f64,
     n: f64,
 ) -> Result<String, JsError> {
     let sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
+    // Text by a check of its own: a `&str` argument given a boolean or number trapped in the glue.
+    let which = text(&which, "stabilityAxis: the axis's name")?;
+    let which = which.as_str();
     let path = path.as_string().ok_or_else(|| js_error(&format!("{which}: the parameter's path must be a string")))?;
     let max = stability_map::MAX_AXIS_VALUES;
     if !(n.fract() == 0.0 && (2.0..=max as f64).contains(&n)) {
@@ -370,7 +386,8 @@ pub fn trial_bins(json: JsValue, i: u32) -> Result<String, JsError> {
 /// seed `trial_seed(sim.seed, i)`, which reproduces the trial as a single run. Text, because the
 /// seed uses all 64 bits and a JavaScript number keeps 53.
 #[wasm_bindgen(js_name = trialScenario)]
-pub fn trial_scenario(json: JsValue, i: u32) -> Result<String, JsError> {
+pub fn trial_scenario(json: JsValue, i: f64) -> Result<String, JsError> {
+    let i = whole(i, "trialScenario: trial", u32::MAX)?;
     let mut sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
     if i as u64 >= sc.monte_carlo.trials {
         return Err(js_error(&format!(
@@ -431,7 +448,8 @@ pub fn study_summary(kind: JsValue, spec: JsValue, shards: Vec<js_sys::Uint8Arra
 /// `workers` workers (`study::wall_estimate_s`), or `{"items"}` alone for a study whose items
 /// are not runs. The page asks before a long Compute.
 #[wasm_bindgen(js_name = studyEstimate)]
-pub fn study_estimate(kind: JsValue, spec: JsValue, workers: u32) -> Result<String, JsError> {
+pub fn study_estimate(kind: JsValue, spec: JsValue, workers: f64) -> Result<String, JsError> {
+    let workers = whole(workers, "studyEstimate: workers", 1024)?;
     struct Ask(String, usize);
     impl study::Visit for Ask {
         type Out = Result<String, String>;
@@ -477,7 +495,8 @@ pub fn rare_scenario(json: JsValue) -> Result<String, JsError> {
 /// the scenario's own conditioned sea: the most likely wave group (`rare_event.shape =
 /// "most_likely"`) slows the ship less than a random sea, so its place is found in it.
 #[wasm_bindgen(js_name = rarePlace)]
-pub fn rare_place(json: JsValue, passes: u32) -> Result<String, JsError> {
+pub fn rare_place(json: JsValue, passes: f64) -> Result<String, JsError> {
+    let passes = whole(passes, "rarePlace: passes", 5)?;
     let mut sc = Scenario::from_json(&text(&json, "the scenario JSON")?).map_err(|e| js_error(&e.to_string()))?;
     if passes > 5 {
         return Err(js_error("rarePlace: at most 5 passes"));
@@ -680,7 +699,7 @@ impl Sea {
     /// Surface elevation [m, up] at the points (xs\[i\] north, ys\[i\] east) \[m\] at time t \[s\]
     /// (eq. 2.55's superposition; at most 20,000 points a call).
     pub fn elevations(&mut self, t: f64, xs: &[f64], ys: &[f64]) -> Result<js_sys::Float64Array, JsError> {
-        if !(t.abs() <= MAX_SEA_TIME_S) {
+        if t.is_nan() || t.abs() > MAX_SEA_TIME_S {
             let shown = if t.is_finite() { aes_core::checks::num(t) } else { "a value that is not finite".into() };
             return Err(js_error(&format!(
                 "elevations: t = {shown}: the time must be a finite number of seconds within {MAX_SEA_TIME_S:e}"

@@ -36,7 +36,7 @@ fn startup_runs_in_chunks() {
     let mut run = Run::new(JsValue::from(&json)).unwrap();
     let mut progress = 0.0;
     while progress < 1.0 {
-        progress = run.advance(5000).unwrap();
+        progress = run.advance(5000.0).unwrap();
     }
     let chunked = run.summary_json();
     assert_eq!(chunked, run_summary(JsValue::from(&json)).unwrap());
@@ -134,14 +134,14 @@ fn operability_and_rare_events_match_native() {
     );
     // The estimate the page says before a study (issue 46): a rare-event trial's work counts its
     // runs that place the ship, in this browser's time on 2 workers; a polar's speeds are not runs.
-    let e: serde_json::Value = serde_json::from_str(&study_estimate(kind, spec, 2).unwrap()).unwrap();
+    let e: serde_json::Value = serde_json::from_str(&study_estimate(kind, spec, 2.0).unwrap()).unwrap();
     let trial: aes_core::Scenario = aes_core::Scenario::from_json(&t).unwrap();
     let w = aes_core::studies::rare::trial_work(&trial);
     assert_eq!(e["items"], 3);
     assert_eq!(e["item_work"].as_f64(), Some(w));
     let want = 3.0 * w / aes_core::scenario::WORK_PER_S * aes_core::scenario::WASM_SLOWDOWN / 2.0;
     assert!((e["seconds"].as_f64().unwrap() - want).abs() <= 1e-12 * want, "{e}");
-    let polar = study_estimate(JsValue::from("operability"), JsValue::from(&polar), 2).unwrap();
+    let polar = study_estimate(JsValue::from("operability"), JsValue::from(&polar), 2.0).unwrap();
     assert_eq!(polar, r#"{"items":2}"#);
 }
 
@@ -298,7 +298,7 @@ fn live_view_exports() {
     let mut streamed: Vec<f64> = Vec::new();
     let mut progress = 0.0;
     while progress < 1.0 {
-        progress = run.advance(400).unwrap();
+        progress = run.advance(400.0).unwrap();
         streamed.extend(run.column_from(JsValue::from("h_over_r"), streamed.len()).unwrap().to_vec());
     }
     assert_eq!(streamed, run.column(JsValue::from("h_over_r")).unwrap().to_vec());
@@ -318,10 +318,10 @@ fn live_view_exports() {
     let hull: serde_json::Value = serde_json::from_str(&hull_profile(JsValue::from(&json)).unwrap()).unwrap();
     assert!(hull["x_m"].as_array().unwrap().len() > 20);
 
-    let trial: serde_json::Value = serde_json::from_str(&trial_scenario(JsValue::from(&json), 2).unwrap()).unwrap();
+    let trial: serde_json::Value = serde_json::from_str(&trial_scenario(JsValue::from(&json), 2.0).unwrap()).unwrap();
     let seed = sc["sim"]["seed"].as_u64().unwrap();
     assert_eq!(trial["sim"]["seed"].as_u64(), Some(aes_core::studies::stats::trial_seed(seed, 2)));
-    assert!(trial_scenario(JsValue::from(&json), 1_000_000).is_err());
+    assert!(trial_scenario(JsValue::from(&json), 1e6).is_err());
 }
 
 /// The thesis' numbers reach the page as the file prints them (Table 5.8's "1.00", not 1).
@@ -412,7 +412,7 @@ fn stability_map_refuses_bad_input_by_name() {
     let json = sc.to_string();
     let (p, c) = ("plant.loads.ship_service_w", "plant.loads.filter_capacitance_f");
     let axis = |which: &str, path: JsValue, from: f64, to: f64, n: f64| {
-        stability_axis(JsValue::from(&json), which, path, from, to, n)
+        stability_axis(JsValue::from(&json), JsValue::from(which), path, from, to, n)
     };
     let refused = |r: Result<String, wasm_bindgen::JsError>, want: &str| {
         let m = message(r.unwrap_err());
@@ -537,7 +537,9 @@ fn the_boundary_shortens_escapes_and_refuses_what_is_not_finite() {
     sc["initial"]["speed_kn"] = serde_json::json!(25.0);
     let json = sc.to_string();
     let path = format!("plant.\u{1b}[31m\u{7}{}", "x".repeat(1 << 20));
-    let m = message(stability_axis(JsValue::from(&json), "x axis", JsValue::from(&path), 0.0, 1.0, 3.0).unwrap_err());
+    let m = message(
+        stability_axis(JsValue::from(&json), JsValue::from("x axis"), JsValue::from(&path), 0.0, 1.0, 3.0).unwrap_err(),
+    );
     assert!(m.len() < 2000 && !m.chars().any(|c| c.is_control()), "{} bytes: {}", m.len(), &m[..m.len().min(200)]);
     assert!(m.contains("\\u{1b}"), "{}", &m[..m.len().min(200)]);
     let waves = preset_json(JsValue::from("head-seas-ss6")).unwrap();
@@ -556,4 +558,36 @@ fn the_boundary_shortens_escapes_and_refuses_what_is_not_finite() {
         run.lesson_explain(JsValue::from("waves"), JsValue::from(values.to_string()), JsValue::NULL).unwrap_err(),
     );
     assert!(m.contains("ship.hull.hub_above_base_m: missing"), "{m}");
+}
+
+/// The closing fuzz run's wasm findings (issue 57): an axis name that is not a string is refused
+/// by name (it trapped with "memory access out of bounds" in the glue), and a count given NaN, an
+/// infinity, a negative or a fraction is refused naming the count (the glue made it 0 before).
+#[wasm_bindgen_test]
+fn counts_and_names_that_are_not_what_they_say_are_refused() {
+    let json = preset_json(JsValue::from("startup")).unwrap();
+    let m = message(
+        stability_axis(
+            JsValue::from(&json),
+            JsValue::from(true),
+            JsValue::from("plant.loads.ship_service_w"),
+            1.0,
+            2.0,
+            2.0,
+        )
+        .unwrap_err(),
+    );
+    assert!(m.starts_with("stabilityAxis: the axis's name: expected a string"), "{m}");
+    let mut run = Run::new(JsValue::from(&json)).unwrap();
+    for bad in [f64::NAN, f64::NEG_INFINITY, -1.0, 2.5] {
+        let m = message(run.advance(bad).unwrap_err());
+        assert!(m.starts_with("advance: steps = ") && m.contains("must be a whole number from 0 to"), "{m}");
+        let m = message(trial_scenario(JsValue::from(&json), bad).unwrap_err());
+        assert!(m.starts_with("trialScenario: trial = "), "{m}");
+        let m = message(rare_place(JsValue::from(&json), bad).unwrap_err());
+        assert!(m.starts_with("rarePlace: passes = "), "{m}");
+        let m = message(study_estimate(JsValue::from("monte-carlo"), JsValue::from("{}"), bad).unwrap_err());
+        assert!(m.starts_with("studyEstimate: workers = "), "{m}");
+    }
+    assert!(run.advance(10.0).is_ok());
 }
