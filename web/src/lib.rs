@@ -207,7 +207,8 @@ impl Run {
         let summary = self.summary.as_ref().ok_or_else(|| js_error("the run has not finished"))?;
         let trace = aes_core::sim::Trace { columns: self.columns.clone() };
         let run = lessons::Run { scenario: &self.scenario, trace: &trace, summary };
-        Ok(serde_json::to_string(&lessons::explain_after(&l, &values, &run, before.as_ref())).unwrap_or_default())
+        let e = lessons::explain_checked(&l, &values, &run, before.as_ref()).map_err(|e| js_error(&e))?;
+        Ok(serde_json::to_string(&e).unwrap_or_default())
     }
 
     /// One trace column as a Float64Array (after the run has finished).

@@ -365,9 +365,62 @@ pub fn explain_after(
     e
 }
 
+/// [`explain_after`] for a run from outside (the page's worker): refused, naming the lesson, when
+/// the run does not give the lesson's facts (a run of another scenario, too short to reach the
+/// lesson's order: its facts came out infinite or NaN, and the words read "the bus dipped to inf
+/// pu"). A lesson's own run always gives them (tests/lessons.rs).
+pub fn explain_checked(
+    l: &Lesson,
+    values: &serde_json::Map<String, serde_json::Value>,
+    run: &Run,
+    before: Option<&Before>,
+) -> Result<Explanation, String> {
+    let e = explain_after(l, values, run, before);
+    // Every text of it (sentences, the verdict's words, "try this next") without a number that
+    // is not one.
+    fn words_hold(v: &serde_json::Value) -> bool {
+        match v {
+            serde_json::Value::String(s) => s
+                .split(|c: char| c.is_whitespace() || matches!(c, '(' | ')' | ',' | ':' | ';' | '"'))
+                .all(|w| !matches!(w.trim_end_matches('.'), "NaN" | "inf" | "-inf")),
+            serde_json::Value::Array(a) => a.iter().all(words_hold),
+            serde_json::Value::Object(m) => m.values().all(words_hold),
+            _ => true,
+        }
+    }
+    let words_hold = serde_json::to_value(&e).is_ok_and(|v| words_hold(&v));
+    match crate::checks::check_finite(&e) {
+        Ok(()) if words_hold => Ok(e),
+        _ => Err(format!(
+            "lesson {}: this run does not give the lesson's facts (a number of them is not finite): explain the \
+             lesson's own run, as it opens",
+            l.name
+        )),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The closing fuzz run (issue 57): the bus lesson explaining a run of another scenario (a turn
+    /// ended before the lesson's order: "the bus dipped to inf pu") is refused naming the lesson;
+    /// its own run is explained.
+    #[test]
+    fn an_explanation_of_another_run_is_refused() {
+        let l = lesson("bus").unwrap();
+        let opened = open(&l, &[]).unwrap();
+        let explain = |sc: &Scenario| {
+            let r = crate::sim::run(sc).unwrap();
+            let run = Run { scenario: sc, trace: &r.trace, summary: &r.summary };
+            explain_checked(&l, &opened.values, &run, None).map(|e| e.sentences.len())
+        };
+        assert!(explain(&opened.scenario).unwrap() > 0);
+        let mut turn = crate::scenario::presets::preset("turn-45").unwrap();
+        turn.sim.duration_s = 5.0;
+        let e = explain(&turn).unwrap_err();
+        assert!(e.starts_with("lesson bus: this run does not give the lesson's facts"), "{e}");
+    }
 
     /// Issue 57: an explanation is written only from the lesson's own values: the values `open`
     /// gives pass; one lacking the hub control, one with it not a number, one of another lesson's
