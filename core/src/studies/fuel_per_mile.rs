@@ -254,7 +254,7 @@ impl Study for FuelPerMileStudy {
         Ok(())
     }
     /// One row per speed, each counting exactly the runs of its speed in the ranges, with the
-    /// moments' own consistency and each number within what a run can give ([`Self::check_row`]).
+    /// moments' own consistency and each number within what a run can give (`check_row`).
     fn check_part(&self, part: &Vec<SpeedMoments>, ranges: &[(u64, u64)]) -> Result<(), String> {
         if part.len() != self.spec.speeds_kn.len() {
             return Err(format!("{} rows for {} speeds", part.len(), self.spec.speeds_kn.len()));
