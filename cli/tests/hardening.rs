@@ -936,7 +936,8 @@ fn class19_rare_intervals_are_never_falsely_narrow() {
 /// by name now.
 #[test]
 fn class20_a_flag_the_command_would_not_read_is_refused() {
-    let names = "(one of power, waves, turn, braking, bus, engines, sign, battery)";
+    let names: Vec<&str> = aes_core::output::lessons::lessons().iter().map(|l| l.name).collect();
+    let names = format!("(one of {})", names.join(", "));
     refused(&["lesson", "--value", "sea.sea_state=4"], b"", &format!("--value needs a lesson NAME first {names}"));
     refused(&["lesson", "--before", "default"], b"", "--before needs a lesson NAME first");
     refused(&["lesson", "--answer", "1"], b"", "--answer needs a lesson NAME first");
