@@ -46,3 +46,33 @@ fn every_preset_matches_its_golden_record() {
         failed.join("\n")
     );
 }
+
+/// Every stage efficiency in the records is a fraction (0 to 1) or `null` with its reason in
+/// `not_given`: in the records made with the final time's ratio of powers, head-seas-ss6 gave a
+/// generator efficiency of 1.81, mc-excess-energy 1.42, ac-braking a propeller 1.26 and
+/// head-seas-ss6-storage power electronics 1.05 (a rotor or the ship giving up stored energy).
+#[test]
+fn every_stage_efficiency_is_a_fraction_or_says_why() {
+    for name in PRESET_NAMES {
+        let text = std::fs::read_to_string(path(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let eff = &v["summary"]["efficiency"];
+        let not_given = eff["not_given"].as_array().unwrap_or_else(|| panic!("{name}: no not_given list"));
+        let mut missing = 0;
+        for stage in ["generator", "power_electronics", "motor", "propeller"] {
+            match eff[stage].as_f64() {
+                Some(x) => assert!((0.0..=1.0).contains(&x), "{name}: {stage} efficiency {x}"),
+                None => {
+                    assert!(eff[stage].is_null(), "{name}: {stage} = {}", eff[stage]);
+                    missing += 1;
+                }
+            }
+        }
+        assert_eq!(missing, not_given.len(), "{name}: {missing} stages not given, {} reasons", not_given.len());
+        let (from, to) = (eff["from_s"].as_f64().unwrap(), eff["to_s"].as_f64().unwrap());
+        assert!(
+            from < to && to - from <= aes_core::sim::summary::EFFICIENCY_WINDOW_S + 1e-9,
+            "{name}: window {from}..{to}"
+        );
+    }
+}

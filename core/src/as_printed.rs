@@ -163,10 +163,9 @@ mod tests {
         let mut sc = crate::scenario::presets::startup();
         sc.as_printed = AsPrintedParams::default().with(name, true).unwrap_or_default();
         let r = crate::run(&sc).unwrap();
-        let e = r.summary.efficiency;
         let s = &r.summary.signals;
         (
-            [e.generator, e.power_electronics, e.motor, e.propeller],
+            r.summary.efficiency.all().unwrap(),
             s["prop_rpm"].final_,
             s["ship_speed_kn"].final_,
             s["bus_voltage_v"].final_,

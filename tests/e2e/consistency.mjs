@@ -212,7 +212,10 @@ await check('power ratios are named for what they are, headings never read -0, c
   const p = await open(link('acceleration'));
   await pressAndWait(p);
   const heads = await p.$$eval('#inventory th[scope=col]', (t) => t.map((x) => x.textContent));
-  assert(!heads.some((h) => /efficiency/i.test(h)) && heads.includes('out / in now'), `inventory columns: ${heads}`);
+  // The efficiency column is core's (energies over the last minute, stores counted): never over 100 %.
+  assert(heads.some((h) => /^efficiency, \d+(\.\d+)?–\d+(\.\d+)? s$/.test(h)) && !heads.some((h) => /now/.test(h) && /out \/ in/.test(h)), `inventory columns: ${heads}`);
+  const effs = await p.$$eval('#inventory tr', (rows) => rows.slice(1).map((r) => r.cells[3] && r.cells[3].textContent));
+  assert(effs.filter((t) => t !== '–').length === 4 && effs.every((t) => t === '–' || (/^\d+\.\d %$/.test(t) && parseFloat(t) <= 100)), `efficiencies: ${effs}`);
   assert((await p.evaluate(async () => (await import('./js/live/shared.js')).fixed(-0.2, 0))) === '0', 'a heading of -0.2 deg reads -0');
   const words = await p.evaluate(async () => { const { keeps } = await import('./js/live/drivetrain.js'); return [keeps(130.5, 100), keeps(95, 100)]; });
   assert(words[0] === 'out/in 130.5 %' && words[1] === 'keeps 95.0 %', `the drive train says ${words}`);

@@ -152,8 +152,8 @@ pub(crate) fn as_printed(base: &aes_core::RunResult) -> Result<Section, String> 
     add(
         format!("power electronics efficiency, {su}"),
         sw,
-        e.summary.efficiency.power_electronics,
-        s0.summary.efficiency.power_electronics,
+        e.summary.efficiency.all()?[1],
+        s0.summary.efficiency.all()?[1],
         "-",
         why,
     );
@@ -162,7 +162,14 @@ pub(crate) fn as_printed(base: &aes_core::RunResult) -> Result<Section, String> 
                voltage at 200 rpm; it works at its peak-torque slip, and cannot carry the propeller at 25 kn from the \
                start (peak 654 kN m against 944 kN m: the head-seas run refuses to start)";
     let sw = "as_printed.motor_p_is_poles";
-    add(format!("motor efficiency, {su}"), sw, m.summary.efficiency.motor, s0.summary.efficiency.motor, "-", why);
+    add(
+        format!("motor efficiency, {su}"),
+        sw,
+        m.summary.efficiency.all()?[2],
+        s0.summary.efficiency.all()?[2],
+        "-",
+        why,
+    );
     add(
         format!("slip speed, {su}"),
         sw,
@@ -180,7 +187,14 @@ pub(crate) fn as_printed(base: &aes_core::RunResult) -> Result<Section, String> 
     let sw = "as_printed.eq_2_5_copper_loss";
     add(format!("ship speed, {su}"), sw, sig(&q, "ship_speed_kn").final_, sig(&s0, "ship_speed_kn").final_, "kn", why);
     add(format!("shaft speed, {su}"), sw, sig(&q, "prop_rpm").final_, sig(&s0, "prop_rpm").final_, "rpm", why);
-    add(format!("motor efficiency, {su}"), sw, q.summary.efficiency.motor, s0.summary.efficiency.motor, "-", why);
+    add(
+        format!("motor efficiency, {su}"),
+        sw,
+        q.summary.efficiency.all()?[2],
+        s0.summary.efficiency.all()?[2],
+        "-",
+        why,
+    );
 
     // The preset with every switch that lets the run start.
     let all = run(&preset("as-printed").ok_or("no preset")?)?;

@@ -15,8 +15,8 @@ use aes_core::studies::thesis_values;
 pub(crate) fn table_5_7(st25: &aes_core::RunResult) -> Result<Section, String> {
     let mut rows = Vec::new();
     for (kn, want) in thesis_values::TABLE_5_7 {
-        let e = if kn == 25.0 { st25.summary.efficiency } else { run(&startup_to(kn))?.summary.efficiency };
-        let got = [e.generator, e.power_electronics, e.motor, e.propeller];
+        let got =
+            if kn == 25.0 { st25.summary.efficiency.all()? } else { run(&startup_to(kn))?.summary.efficiency.all()? };
         let src = format!("Table 5.7, {kn} kn");
         rows.push(calibrated(
             &format!("generator efficiency at {kn} kn"),
@@ -29,7 +29,7 @@ pub(crate) fn table_5_7(st25: &aes_core::RunResult) -> Result<Section, String> {
         ));
         let mut line = startup_to(kn);
         line.as_printed.ea_line_to_line = true;
-        let pe_line = run(&line)?.summary.efficiency.power_electronics;
+        let pe_line = run(&line)?.summary.efficiency.all()?[1];
         rows.push(
             explained(
                 &format!("power electronics efficiency at {kn} kn"),

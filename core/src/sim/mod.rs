@@ -188,6 +188,10 @@ pub struct Simulation {
     multi: MultiRate,
     /// Which turbine-generator sets run, start or stop (`plant.online`, the orders' `online_sets`).
     sets: crate::plant::online::Sets,
+    /// The step that opens the stage efficiencies' window, and the books there (at the start
+    /// until then).
+    window_step: u64,
+    window: summary::WindowStart,
 }
 
 /// The multi-rate step's bookkeeping: the hull steps once per `substeps` drive-train steps.
@@ -273,6 +277,14 @@ impl Clock {
     /// Room for the recorded rows of a whole run.
     fn rows(&self) -> usize {
         (self.total_steps / self.rec_every + 2) as usize
+    }
+
+    /// The step that opens the stage efficiencies' window (`summary::EFFICIENCY_WINDOW_S`, at
+    /// most half the run), on a hull step's boundary so that the hull's books are whole there.
+    fn window_step(&self) -> u64 {
+        let window = (summary::EFFICIENCY_WINDOW_S / self.dt).round() as u64;
+        let from = self.total_steps - window.min(self.total_steps / 2);
+        from - from % self.hull_substeps
     }
 }
 
@@ -369,6 +381,8 @@ impl Simulation {
                 rate: [0.0; HULL_STATES],
             },
             sets: crate::plant::online::Sets::new(&scenario.plant.online),
+            window_step: clock.window_step(),
+            window: summary::WindowStart { time_s: 0.0, energy: [0.0; N_ENERGY], stores: Default::default() },
         };
         sim.sync_online();
         sim.initialise()?;
@@ -380,6 +394,7 @@ impl Simulation {
     fn start(mut self) -> Simulation {
         self.sea_step();
         self.stored0 = self.plant.stored_energy(&self.x);
+        self.open_window();
         self.apply_commands();
         self.refresh_outputs();
         self.record();
@@ -782,6 +797,9 @@ impl Simulation {
             self.step += 1;
             self.t = self.step as f64 * self.clock.dt;
             self.check()?;
+            if self.step == self.window_step {
+                self.open_window();
+            }
             self.apply_commands();
             if self.step % self.clock.rec_every == 0 {
                 self.refresh_outputs();
@@ -835,6 +853,12 @@ impl Simulation {
         std::array::from_fn(|k| self.out.turbine_torque[k] * self.x[slot::turbine_speed(k)])
     }
 
+    /// Books the energies and stores now as the start of the stage efficiencies' window.
+    fn open_window(&mut self) {
+        let energy = self.x[ENERGY].try_into().unwrap_or([0.0; N_ENERGY]);
+        self.window = summary::WindowStart { time_s: self.t, energy, stores: self.plant.stage_stores(&self.x) };
+    }
+
     /// Ends the run: the trace and its summary.
     pub fn finish(mut self) -> RunResult {
         self.refresh_outputs();
@@ -849,8 +873,12 @@ impl Simulation {
             &self.trace,
             self.t,
             self.step,
-            &energy,
-            stored_change,
+            summary::Books {
+                energy: &energy,
+                stored_change,
+                window: &self.window,
+                stores: self.plant.stage_stores(&self.x),
+            },
             std::mem::take(&mut self.warnings),
         );
         let summary =

@@ -645,6 +645,36 @@ impl Plant {
         dx[ENERGY].copy_from_slice(&e);
     }
 
+    /// The same stored energy split by the Table 5.7 stage that holds it \[J\] (the sum equals
+    /// [`Plant::stored_energy`] up to rounding), for the stage efficiencies over a window.
+    pub fn stage_stores(&self, x: &State) -> StageStores {
+        let mut s = StageStores::default();
+        for k in 0..N_SETS {
+            s.rotors += 0.5 * self.turbine.inertia * x[slot::turbine_speed(k)] * x[slot::turbine_speed(k)];
+        }
+        for b in 0..N_SHAFTS {
+            s.bus += 0.5 * self.dc_link.capacitance * x[slot::bus_voltage(b)] * x[slot::bus_voltage(b)];
+            s.drive += 0.5 * self.shaft_inertia * x[slot::shaft_speed(b)] * x[slot::shaft_speed(b)];
+        }
+        self.bus.add_stored_energy(&x[slots(Block::BusParts)], &mut s.bus);
+        s.drive += 0.5 * self.surge_mass * x[SURGE] * x[SURGE] + self.sway_yaw_energy(x);
+        s
+    }
+
+    /// Kinetic energy of sway and yaw with the symmetric part of the mass block (eq. 2.21) \[J\]
+    /// (0 with the surge-only hull).
+    fn sway_yaw_energy(&self, x: &State) -> f64 {
+        let block = match &self.hull_model {
+            HullModel::Maneuvering { abkowitz, .. } => Some(&abkowitz.m22),
+            HullModel::Own { model, .. } => Some(&model.m22),
+            HullModel::Surge => None,
+        };
+        block.map_or(0.0, |m| {
+            let (v, r) = (x[SWAY], x[YAW_RATE]);
+            0.5 * (m[0][0] * v * v + (m[0][1] + m[1][0]) * v * r + m[1][1] * r * r)
+        })
+    }
+
     /// Kinetic and electric energy stored in the state \[J\]: turbine rotors, bus capacitors,
     /// propeller shafts, the bus parts and the ship (with its added mass).
     pub fn stored_energy(&self, x: &State) -> f64 {
@@ -658,18 +688,24 @@ impl Plant {
         }
         e += 0.5 * self.surge_mass * x[SURGE] * x[SURGE];
         self.bus.add_stored_energy(&x[slots(Block::BusParts)], &mut e);
-        let block = match &self.hull_model {
-            HullModel::Maneuvering { abkowitz, .. } => Some(&abkowitz.m22),
-            HullModel::Own { model, .. } => Some(&model.m22),
-            HullModel::Surge => None,
-        };
-        if let Some(m) = block {
-            // Sway and yaw, with the symmetric part of the mass block (eq. 2.21).
-            let (v, r) = (x[SWAY], x[YAW_RATE]);
-            e += 0.5 * (m[0][0] * v * v + (m[0][1] + m[1][0]) * v * r + m[1][1] * r * r);
+        match &self.hull_model {
+            HullModel::Surge => e,
+            _ => e + self.sway_yaw_energy(x),
         }
-        e
     }
+}
+
+/// Energy stored inside each Table 5.7 stage \[J\].
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct StageStores {
+    /// The turbine-generator rotors (between the turbines' work and the generators' output).
+    pub rotors: f64,
+    /// The bus capacitors and the bus parts' stores, storage charge included (between the
+    /// generators' output and what the motors and bus loads take).
+    pub bus: f64,
+    /// The propeller shafts and the ship's motion (between the motors' shaft work and the work
+    /// against the resistance).
+    pub drive: f64,
 }
 
 /// One step of `dt` \[s\] by `method` with the controls held (no allocation; the outputs are not

@@ -1,7 +1,7 @@
 //! The run summary: statistics of every recorded signal, the power inventory of Table 5.6 at the
-//! final time, stage efficiencies (Table 5.7) and the energy books of the whole run.
+//! final time, stage efficiencies (Table 5.7) over its last minute and the energy books of the whole run.
 
-use super::plant::{part_accounts, Energy, DRIVE_ACCOUNTS, N_ENERGY};
+use super::plant::{part_accounts, Energy, StageStores, DRIVE_ACCOUNTS, N_ENERGY};
 use super::Trace;
 use crate::plant::bus_part::Book;
 use crate::scenario::Scenario;
@@ -81,18 +81,100 @@ pub struct PowerInventory {
     pub storage: f64,
 }
 
-/// Stage efficiencies at the final time (Table 5.7 definitions: each stage's output over its
-/// input in the Table 5.6 chain).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+/// The stage efficiencies' window: the run's last minute, or its second half when it is shorter
+/// than two \[s\].
+pub const EFFICIENCY_WINDOW_S: f64 = 60.0;
+
+/// Stage efficiencies (Table 5.7 definitions: each stage's output over its input in the Table 5.6
+/// chain) from the energies of the run's last [`EFFICIENCY_WINDOW_S`], each stage's input less
+/// what it stored over the window. The thesis gives them for steady running; a ratio of powers at
+/// one instant is not one in a transient or a seaway (a rotor giving up speed passes on more
+/// than it takes), a ratio of energies with the stores counted is, and it never exceeds 1.
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Efficiencies {
-    /// generator / turbine.
-    pub generator: f64,
-    /// inverter / generator (rectifier, stator resistance, notching, inverter).
-    pub power_electronics: f64,
+    /// The window's start and end \[s\].
+    pub from_s: f64,
+    pub to_s: f64,
+    /// generator / (turbine - the rotors' stored energy).
+    pub generator: Option<f64>,
+    /// (inverter + bus loads) / (generator - the bus's stored energy, the storage's charge
+    /// included): rectifier, stator resistance, notching, inverter, brake resistors, filters and
+    /// the storage's losses. Without bus parts this is Table 5.7's inverter / generator.
+    pub power_electronics: Option<f64>,
     /// motor / inverter.
-    pub motor: f64,
-    /// ship / motor.
-    pub propeller: f64,
+    pub motor: Option<f64>,
+    /// ship / (motor - the shafts' and the ship's kinetic energy).
+    pub propeller: Option<f64>,
+    /// Each stage not given and why (its net input over the window was not positive: the power
+    /// flowed back through it, as in braking).
+    pub not_given: Vec<String>,
+}
+
+/// The run's books at its end: its energy accounts \[J\], the change of its stored energy since
+/// the start \[J\], and the efficiency window's start and the stages' stores now.
+pub(crate) struct Books<'a> {
+    pub energy: &'a [f64; N_ENERGY],
+    pub stored_change: f64,
+    pub window: &'a WindowStart,
+    pub stores: StageStores,
+}
+
+/// What the run books at the start of the efficiency window (see [`Efficiencies`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct WindowStart {
+    pub time_s: f64,
+    pub energy: [f64; N_ENERGY],
+    pub stores: StageStores,
+}
+
+impl Efficiencies {
+    /// The four, generator to propeller, or the first reason one is not given.
+    pub fn all(&self) -> Result<[f64; 4], String> {
+        match [self.generator, self.power_electronics, self.motor, self.propeller] {
+            [Some(g), Some(p), Some(m), Some(q)] => Ok([g, p, m, q]),
+            _ => Err(self.not_given.first().cloned().unwrap_or_default()),
+        }
+    }
+
+    /// Over the window from `start` to the run's end at `end_s`, with its books `energy` and
+    /// stores `stores` there.
+    fn over(start: &WindowStart, end_s: f64, energy: &[f64; N_ENERGY], stores: &StageStores) -> Efficiencies {
+        let d = |k: Energy| energy[k as usize] - start.energy[k as usize];
+        let loads = |e: &[f64; N_ENERGY]| {
+            part_accounts().zip(DRIVE_ACCOUNTS..).filter(|(a, _)| a.book == Book::Load).map(|(_, i)| e[i]).sum::<f64>()
+        };
+        let stages = [
+            ("generator", d(Energy::Generator), d(Energy::Turbine) - (stores.rotors - start.stores.rotors)),
+            (
+                "power electronics",
+                d(Energy::Inverter) + loads(energy) - loads(&start.energy),
+                d(Energy::Generator) - (stores.bus - start.stores.bus),
+            ),
+            ("motor", d(Energy::Motor), d(Energy::Inverter)),
+            ("propeller", d(Energy::Ship), d(Energy::Motor) - (stores.drive - start.stores.drive)),
+        ];
+        let mut not_given = Vec::new();
+        let mut eta = stages.iter().map(|&(name, out, into)| {
+            let ratio = out / into;
+            let given = into > 0.0 && out >= 0.0 && ratio <= 1.0;
+            if !given {
+                let why = if into > 0.0 && out >= 0.0 {
+                    format!("its books over the window give {ratio:.4}, more than it took")
+                } else {
+                    format!(
+                        "power flowed back through it over the window (in {:.3} MJ, out {:.3} MJ), as in braking",
+                        into / 1e6,
+                        out / 1e6
+                    )
+                };
+                not_given.push(format!("{name} efficiency: {why}"));
+            }
+            given.then_some(ratio)
+        });
+        let (generator, power_electronics, motor, propeller) =
+            (eta.next().flatten(), eta.next().flatten(), eta.next().flatten(), eta.next().flatten());
+        Efficiencies { from_s: start.time_s, to_s: end_s, generator, power_electronics, motor, propeller, not_given }
+    }
 }
 
 /// Energy books over the whole run \[J\].
@@ -290,10 +372,10 @@ impl Summary {
         trace: &Trace,
         final_time_s: f64,
         steps: u64,
-        energy: &[f64; N_ENERGY],
-        stored_change: f64,
+        books: Books<'_>,
         warnings: Vec<String>,
     ) -> Summary {
+        let Books { energy, stored_change, window, stores } = books;
         let mut signals = BTreeMap::new();
         for (info, col) in SIGNALS.iter().zip(&trace.columns) {
             let name = info.name;
@@ -346,12 +428,7 @@ impl Summary {
             steps,
             signals,
             power_inventory_w: inv,
-            efficiency: Efficiencies {
-                generator: ratio(inv.generator, inv.turbine),
-                power_electronics: ratio(inv.inverter, inv.generator),
-                motor: ratio(inv.motor, inv.inverter),
-                propeller: ratio(inv.ship, inv.motor),
-            },
+            efficiency: Efficiencies::over(window, final_time_s, energy, &stores),
             energy_j: EnergyBalance {
                 turbine: e(Energy::Turbine),
                 generator: e(Energy::Generator),

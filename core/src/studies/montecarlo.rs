@@ -837,6 +837,13 @@ pub struct StudySummary {
     pub traces: Vec<KeptTrace>,
 }
 
+/// `x`, read from a histogram of the values `m` counts, held within their extremes: a bin's
+/// interpolation or centre can lie beyond them (four arrivals at 0 s gave a median of 0.111 s,
+/// the first bin's middle, beside a mean and maximum of 0).
+fn within(x: f64, m: &ExactMoments) -> f64 {
+    x.max(m.min).min(m.max)
+}
+
 /// A statistic of `n` samples: None (JSON null) when undefined because there are none.
 fn stat(n: u64, x: f64) -> Option<f64> {
     (n > 0).then_some(x)
@@ -880,8 +887,8 @@ pub fn study_summary(sc: &Scenario, ranges: &[(u64, u64)], p: &Partial) -> Resul
             std: p.arrival.std_defined(),
             skewness: p.arrival.skewness_defined(),
             kurtosis: p.arrival.kurtosis_defined(),
-            median: stat(p.arrival_hist.total(), p.arrival_hist.median()),
-            mode: stat(p.arrival_hist.total(), p.arrival_hist.mode()),
+            median: stat(p.arrival_hist.total(), within(p.arrival_hist.median(), &p.arrival)),
+            mode: stat(p.arrival_hist.total(), within(p.arrival_hist.mode(), &p.arrival)),
             histogram: (&p.arrival_hist).into(),
             mean_censored: stat(p.exposure.n, p.exposure.mean()),
             std_censored: p.exposure.std_defined(),

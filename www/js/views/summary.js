@@ -9,29 +9,26 @@ function showSummary(signals, s, constants) {
     const v = s.signals[name];
     return row(signals.labelWithUnit(name, constants), [v.final, v.min, v.max].map((x) => Number(x).toPrecision(4)));
   }));
-  // Tables 5.6 and 5.7: each stage's power at the end and what it passes on of the power it
-  // takes, now and over the whole run (energies). A ratio of powers in a transient is not an
-  // efficiency: a stage that gives up stored energy passes on more than it takes.
-  const inv = s.power_inventory_w || {}, en = s.energy_j || {};
-  const stages = [['turbine', 'gas turbines, shaft'], ['generator', 'generators, electrical'], ['inverter', 'into the motors'], ['motor', 'motors, shaft'], ['ship', 'ship, resistance x speed']]
+  // Tables 5.6 and 5.7: each stage's power at the end, its energy over the whole run, and its
+  // efficiency as core gives it: energies over the run's last minute with what the stage stored
+  // counted (a ratio of powers in a transient is not an efficiency: a rotor giving up speed passes
+  // on more than it takes). A stage core does not give (power flowed back through it) shows a dash.
+  const inv = s.power_inventory_w || {}, en = s.energy_j || {}, eff = s.efficiency || {};
+  const stages = [['turbine', 'gas turbines, shaft'], ['generator', 'generators, electrical', 'generator'], ['inverter', 'into the motors and bus loads', 'power_electronics'], ['motor', 'motors, shaft', 'motor'], ['ship', 'ship, resistance x speed', 'propeller']]
     .filter(([k]) => k in inv);
-  const ratio = (out, into) => (into > 0 && out >= 0 ? `${(100 * out / into).toFixed(1)} %` : '–');
-  // With storage or other loads on the buses the motors' input is the generators' output plus
-  // what the storage gives, less what the loads take (the drive train's picture counts the same).
-  const bus = { storage: ['storage', 'storage_to_bus', 'storage, to the buses (+) or from them (-)'], loads: ['bus_loads', 'bus_loads', 'ship service and pulsed loads'] };
-  const extra = Object.values(bus).filter(([p, e]) => (inv[p] || 0) !== 0 || (en[e] || 0) !== 0);
-  const busIn = (o, key) => o.generator + (o[bus.storage[key]] || 0) - (o[bus.loads[key]] || 0);
-  const into = (k, prev, o, key) => (k === 'inverter' ? busIn(o, key) : o[prev]);
+  const pct = (x) => (x == null ? '–' : `${(100 * x).toFixed(1)} %`);
+  const bus = [['storage', 'storage_to_bus', 'storage, to the buses (+) or from them (-)'], ['bus_loads', 'bus_loads', 'ship service and pulsed loads']]
+    .filter(([p, e]) => (inv[p] || 0) !== 0 || (en[e] || 0) !== 0);
+  const window = 'from_s' in eff ? `efficiency, ${+eff.from_s.toFixed(1)}–${+eff.to_s.toFixed(1)} s` : 'efficiency';
   const body = $('inventory').querySelector('tbody');
-  body.replaceChildren(el('tr', {}, ...['stage', 'power now [MW]', 'out / in now', 'energy, whole run [MJ]', 'out / in, whole run'].map((h) => el('th', { scope: 'col', textContent: h }))),
-    ...stages.flatMap(([k, label], i) => {
-      const prev = i > 0 ? stages[i - 1][0] : null;
-      const r = row(label, [fmt(inv[k] / 1e6), prev ? ratio(inv[k], into(k, prev, inv, 0)) : '–', k in en ? fmt(en[k] / 1e6) : '–', prev && k in en ? ratio(en[k], into(k, prev, en, 1)) : '–']);
-      const parts = k === 'generator' ? extra.map(([p, e, l]) => row(l, [fmt((inv[p] || 0) / 1e6), '–', fmt((en[e] || 0) / 1e6), '–'])) : [];
+  body.replaceChildren(el('tr', {}, ...['stage', 'power now [MW]', 'energy, whole run [MJ]', window].map((h) => el('th', { scope: 'col', textContent: h }))),
+    ...stages.flatMap(([k, label, e]) => {
+      const r = row(label, [fmt(inv[k] / 1e6), k in en ? fmt(en[k] / 1e6) : '–', e ? pct(eff[e]) : '–']);
+      const parts = k === 'generator' ? bus.map(([p, b, l]) => row(l, [fmt((inv[p] || 0) / 1e6), fmt((en[b] || 0) / 1e6), '–'])) : [];
       return [r, ...parts];
     }));
-  const over = stages.some(([k], i) => i > 0 && into(k, stages[i - 1][0], inv, 0) > 0 && inv[k] > into(k, stages[i - 1][0], inv, 0));
-  $('inventory-over').hidden = !over;
+  $('inventory-not-given').replaceChildren(...(eff.not_given || []).map((w) => el('li', { textContent: w })));
+  $('inventory-not-given').hidden = !(eff.not_given || []).length;
   // The summary's warnings (core's health checks and the model's range), above the tables.
   $('warnings').replaceChildren(...(s.warnings || []).map((w) => el('li', { textContent: w })));
   $('warnings-box').hidden = !(s.warnings || []).length;
