@@ -24,7 +24,8 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-say() { printf '\033[1m==> %s\033[0m\n' "$*"; }
+# Each step's heading carries the seconds since the script started, so a log shows where the time goes.
+say() { printf '\033[1m==> %s\033[0m (at %d s)\n' "$*" "$SECONDS"; }
 
 # Exact wasm-bindgen version of Cargo.lock: the CLI must match it.
 wasm_bindgen_version() {
