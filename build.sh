@@ -50,13 +50,12 @@ setup() {
   done
   local want
   want="$(wasm_bindgen_version)"
-  if [ "$(wasm-bindgen --version 2>/dev/null | awk '{print $2}')" != "$want" ]; then
+  # wasm-bindgen-cli brings wasm-bindgen (the JS glue of the page's wasm) and
+  # wasm-bindgen-test-runner (the wasm tests in Node); plain cargo does the rest.
+  if [ "$(wasm-bindgen --version 2>/dev/null | awk '{print $2}')" != "$want" ] ||
+    [ "$(wasm-bindgen-test-runner --version 2>/dev/null | awk '{print $2}')" != "$want" ]; then
     say "installing wasm-bindgen-cli $want (about 3 minutes)"
     cargo install wasm-bindgen-cli --version "=$want" --locked
-  fi
-  if ! command -v wasm-pack >/dev/null; then
-    say "installing wasm-pack (about 3 minutes)"
-    cargo install wasm-pack --locked
   fi
   if [ ! -d node_modules ] || [ package-lock.json -nt node_modules ]; then
     if command -v npm >/dev/null; then
@@ -135,8 +134,9 @@ ensure_parallel() {
 
 build_web() {
   say "building the wasm (release) into www/pkg"
-  # no-install: wasm-pack uses the wasm-bindgen on PATH and never downloads anything.
-  wasm-pack build web --release --mode no-install --target web --no-typescript --out-dir ../www/pkg
+  # cargo and the wasm-bindgen on PATH: nothing is downloaded at build time.
+  cargo build --release --target wasm32-unknown-unknown -p aes-web
+  wasm-bindgen --target web --no-typescript --out-dir www/pkg "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/release/aes_web.wasm"
   # npm's binaryen only: Debian's binaryen breaks current wasm-bindgen output (toolchain notes).
   if [ -x node_modules/.bin/wasm-opt ]; then
     node_modules/.bin/wasm-opt -O3 --enable-simd --enable-bulk-memory --enable-nontrapping-float-to-int \
@@ -199,7 +199,8 @@ run_tests() {
   ensure_parallel
   scripts/check-sharding.sh target/release/aes-sim 2>&1 | tee -a "$log"
   say "wasm-bindgen tests in Node"
-  (cd web && wasm-pack test --node --release --mode no-install) 2>&1 | tee -a "$log"
+  CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner WASM_BINDGEN_TEST_ONLY_NODE=1 \
+    cargo test --release --target wasm32-unknown-unknown -p aes-web 2>&1 | tee -a "$log"
   say "browser end-to-end test (headless Chromium)"
   ensure_chromium
   build_web
