@@ -249,7 +249,16 @@ impl Plant {
             beta_t: sc.propeller.beta_t,
             beta_q: sc.propeller.beta_q,
             extra_resistance: 0.0,
-            bus: BusParts::new(&sc.plant, v_ref),
+            bus: {
+                let mut parts = BusParts::new(&sc.plant, v_ref);
+                let rate = crate::plant::storage::handover_rate_w_per_s(
+                    SETS_PER_SHAFT as f64,
+                    sc.plant.turbine.rated_power_w,
+                    sc.controllers.governor.slew_rate_per_s,
+                );
+                parts.storage = parts.storage.map(|s| s.with_handover(rate));
+                parts
+            },
         })
         .and_then(|p| p.check_bus_rating(sc))
     }

@@ -197,8 +197,10 @@ fn battery(b: &mut Book, sc: &serde_json::Value, energy_j: f64, power_w: f64, en
             &[s0.0, smin.0, s1.0],
         );
         // Below this charge the controller gives less and less (its taper, at least a second of its
-        // rated power wide), handing the swings back to the turbines.
-        let edge = (floor + crate::plant::storage::taper_j(energy_j, power_w) / energy_j).min(1.0);
+        // rated power wide, or the reserve it keeps to hand its rating back to the turbines),
+        // handing the swings back to the turbines.
+        let edge =
+            (floor + crate::plant::storage::discharge_edge_j(energy_j, power_w, handover_rate(sc)) / energy_j).min(1.0);
         let lv =
             b.push(Fact::Level { name: "lowest charge where the controller starts to give less [-]", value: edge });
         let fl = b.push(Fact::Level { name: "lowest allowed charge [-]", value: floor });

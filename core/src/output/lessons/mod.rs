@@ -246,6 +246,16 @@ impl Control {
 }
 
 /// A JSON value as a link writes it (a whole number without its ".0").
+/// The rate at which the scenario `sc`'s storage hands its power back near its floor \[W/s\]
+/// (`plant::storage::handover_rate_w_per_s` with its turbines' rating and governor slew).
+fn handover_rate(sc: &serde_json::Value) -> f64 {
+    crate::plant::storage::handover_rate_w_per_s(
+        crate::plant::layout::SETS_PER_SHAFT as f64,
+        number(sc, "plant.turbine.rated_power_w"),
+        number(sc, "controllers.governor.slew_rate_per_s"),
+    )
+}
+
 fn as_text(v: &serde_json::Value) -> String {
     match v {
         serde_json::Value::String(s) => s.clone(),

@@ -188,7 +188,8 @@ fn storage(b: &mut Book, sc: &serde_json::Value, energy_j: f64, (t0, dead): (f64
     let power_w = st["power_w"].as_f64().unwrap_or(f64::NAN);
     let low = b.stat(&["storage_soc"], Stat::Min, top.2, end);
     // Below this charge the controller gives less and less (its taper above the floor).
-    let edge = (floor + crate::plant::storage::taper_j(energy_j, power_w) / energy_j).min(1.0);
+    let edge =
+        (floor + crate::plant::storage::discharge_edge_j(energy_j, power_w, handover_rate(sc)) / energy_j).min(1.0);
     let lv = b.push(Fact::Level { name: "lowest charge where the controller starts to give less [-]", value: edge });
     let fl = b.push(Fact::Level { name: "lowest allowed charge [-]", value: floor });
     let gave = b.energy("storage_power_w", top.2, low.2);
