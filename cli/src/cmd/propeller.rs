@@ -258,7 +258,7 @@ pub fn run(a: Args) -> Result<(), Failure> {
         .map(|p| serde_json::json!({"j": p.j, "kt": p.kt, "kq": p.kq, "eta": p.eta, "converged": p.converged}))
         .collect();
     let mut out = serde_json::json!({
-        "model": "lifting line (Wrench induction, hub image, Eckhardt & Morgan 1955 camber factor)",
+        "model": "lifting line (Wrench induction, hub image, Morgan, Silovic & Denny 1968 lifting-surface corrections)",
         "blades": g.blades,
         "hub_ratio": g.hub_ratio,
         "flow": flow,
