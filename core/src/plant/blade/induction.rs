@@ -73,7 +73,7 @@ pub fn biot_savart(z: u32, tan_beta_w: f64, rc: f64, rv: f64, turns: usize, per_
 }
 
 /// Velocity induced at `p` by a straight vortex segment from `a` to `b` of unit circulation.
-fn segment(a: [f64; 3], b: [f64; 3], p: [f64; 3]) -> [f64; 3] {
+pub(crate) fn segment(a: [f64; 3], b: [f64; 3], p: [f64; 3]) -> [f64; 3] {
     let r1 = [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
     let r2 = [p[0] - b[0], p[1] - b[1], p[2] - b[2]];
     let c = [r1[1] * r2[2] - r1[2] * r2[1], r1[2] * r2[0] - r1[0] * r2[2], r1[0] * r2[1] - r1[1] * r2[0]];

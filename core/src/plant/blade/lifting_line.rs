@@ -13,7 +13,7 @@ use super::friction::section_drag;
 use super::induction::wrench;
 use super::lifting_surface::{self, Corrections};
 use super::section_lift::{equivalent_2d_angle_rad, lift};
-use super::{Analysis, BladeGeometry, Flow, SectionLoad, ADVANCE_RATIO};
+use super::{Analysis, BladeGeometry, Flow, SectionLoad};
 use std::f64::consts::PI;
 
 /// Horseshoe vortices on the blade (Kerwin's PVL uses 10 to 20).
@@ -47,11 +47,14 @@ pub struct LiftingLine {
     ear: f64,
     /// Blade thickness fraction (t0/D at the axis), for Morgan's thickness correction.
     btf: f64,
+    /// Whether the sections lift with Morgan's lifting-surface factors (always, but in the check
+    /// that a narrow blade's lifting surface is this line without them).
+    surface: bool,
     flow: Flow,
 }
 
 /// Linear interpolation in a radial table (`xs` increasing), held constant beyond its ends.
-fn interp(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+pub(crate) fn interp(xs: &[f64], ys: &[f64], x: f64) -> f64 {
     let n = xs.len();
     if x <= xs[0] {
         return ys[0];
@@ -101,8 +104,23 @@ impl LiftingLine {
             t0_c,
             ear: lifting_surface::expanded_area_ratio(g),
             btf: lifting_surface::blade_thickness_fraction(g),
+            surface: true,
             flow: *flow,
         })
+    }
+
+    /// The same line with sections that lift as in two dimensions (no lifting-surface factors).
+    #[cfg(test)]
+    pub(crate) fn without_surface_corrections(mut self) -> Self {
+        self.surface = false;
+        self
+    }
+
+    /// The wake pitch lambda_w (over R) of a solved point `a` of this line (see `wake_lambda`).
+    pub(crate) fn wake_pitch(&self, a: &Analysis) -> f64 {
+        let tan_bi: Vec<f64> = a.sections.iter().map(|s| libm::tan(s.beta_i_rad)).collect();
+        let gamma: Vec<f64> = a.sections.iter().map(|s| s.circulation).collect();
+        self.wake_lambda(&tan_bi, &gamma)
     }
 
     /// Axial and tangential influence of each horseshoe's unit circulation at each control point,
@@ -139,6 +157,9 @@ impl LiftingLine {
 
     /// Morgan's lifting-surface factors at control point `i` with inflow tan(beta_i) `tan_bi`.
     fn corrections(&self, i: usize, tan_bi: f64) -> Corrections {
+        if !self.surface {
+            return Corrections::NONE;
+        }
         lifting_surface::morgan_1968(self.blades, self.ear, self.btf, self.rc[i], tan_bi)
     }
 
@@ -150,14 +171,7 @@ impl LiftingLine {
     /// The open-water point at advance ratio `j`, starting from a neighbouring point's circulation
     /// and inflow (a curve's points then take one wake pitch fewer, 4 to 5 instead of 5 to 7).
     pub fn solve_from(&self, j: f64, start: Option<&Analysis>) -> Result<Analysis, String> {
-        if !(j.is_finite() && ADVANCE_RATIO.contains(&j)) {
-            return Err(format!(
-                "j: {} is outside {}..={}",
-                crate::checks::shorten(&j.to_string()),
-                ADVANCE_RATIO.start(),
-                ADVANCE_RATIO.end()
-            ));
-        }
+        super::check_advance_ratio(j)?;
         let m = self.rc.len();
         // Start from an inflow halfway between the undisturbed one and the blade's pitch.
         let mut tan_bi: Vec<f64> =
@@ -318,7 +332,7 @@ impl LiftingLine {
 }
 
 /// Solves the dense system a x = b (n x n, row-major) by Gaussian elimination with partial pivoting.
-fn solve_linear(a: &mut [f64], b: &mut [f64], n: usize) -> Option<Vec<f64>> {
+pub(crate) fn solve_linear(a: &mut [f64], b: &mut [f64], n: usize) -> Option<Vec<f64>> {
     for c in 0..n {
         let p = (c..n).max_by(|&r, &s| a[r * n + c].abs().total_cmp(&a[s * n + c].abs()))?;
         if a[p * n + c].abs() < 1e-14 {

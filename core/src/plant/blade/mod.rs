@@ -16,6 +16,7 @@ pub mod mean_line;
 pub mod panel;
 pub mod section_lift;
 pub mod section_shape;
+pub mod vortex_lattice;
 
 pub use geometry::{BladeGeometry, MeanLine, Row, Thickness};
 
@@ -65,6 +66,14 @@ impl Flow {
 
 /// The advance ratios an analysis accepts \[-\]: from bollard pull (0) to well past zero thrust.
 pub const ADVANCE_RATIO: std::ops::RangeInclusive<f64> = 0.0..=2.5;
+
+/// Refuses an advance ratio outside [`ADVANCE_RATIO`], naming it.
+pub fn check_advance_ratio(j: f64) -> Result<(), String> {
+    if j.is_finite() && ADVANCE_RATIO.contains(&j) {
+        return Ok(());
+    }
+    Err(format!("j: {} is outside {}..={}", shorten(&j.to_string()), ADVANCE_RATIO.start(), ADVANCE_RATIO.end()))
+}
 
 /// The loading of one control point of the key blade.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
