@@ -17,6 +17,18 @@ enum WaterKind {
     Sea,
 }
 
+/// The open-water analysis.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Method {
+    /// The lifting line with Morgan's lifting-surface factors (the run's model).
+    Line,
+    /// The vortex lattice: the chord resolved, its check (open-water rows only; about 30 to 100 ms a point).
+    Lattice,
+}
+
+/// The most advance ratios the vortex lattice is asked for in one command (a few seconds' work).
+const MAX_LATTICE_POINTS: usize = 50;
+
 // The command line of `aes-sim propeller`.
 #[derive(clap::Args)]
 pub struct Args {
@@ -58,6 +70,10 @@ pub struct Args {
     /// Markdown tables instead of JSON.
     #[arg(long)]
     markdown: bool,
+    /// The analysis: `line` (the lifting line, the run's model) or `lattice` (the vortex lattice that
+    /// checks it: open-water rows only, at most 50 advance ratios).
+    #[arg(long, value_enum, default_value = "line")]
+    method: Method,
 }
 
 /// The advance ratios of `--j FROM:TO:N`.
@@ -231,6 +247,9 @@ pub fn run(a: Args) -> Result<(), Failure> {
     let s = if is_scenario(&a.input) { scenario(&a)? } else { table(&a)? };
     let (g, flow) = (&s.geometry, s.flow);
     let js = advance_ratios(&a.j)?;
+    if a.method == Method::Lattice {
+        return lattice(&a, &s, &js);
+    }
     if let Some(h) = a.depth_m {
         check_depth(h, flow.diameter_m)?;
     }
@@ -281,6 +300,52 @@ pub fn run(a: Args) -> Result<(), Failure> {
     }
     if let Some(p) = at {
         out["at_j"] = serde_json::to_value(p).map_err(|e| e.to_string())?;
+    }
+    emit_json(&out)
+}
+
+/// `--method lattice`: the vortex lattice's open-water rows.
+fn lattice(a: &Args, s: &Subject, js: &[f64]) -> Result<(), Failure> {
+    for (flag, given) in [("--at-j", a.at_j.is_some()), ("--depth-m", a.depth_m.is_some())] {
+        if given {
+            return Err(
+                format!("{flag}: the vortex lattice gives open-water rows only (--method line has {flag})").into()
+            );
+        }
+    }
+    if js.len() > MAX_LATTICE_POINTS {
+        return Err(format!(
+            "--j N: {} points; --method lattice takes 1..={MAX_LATTICE_POINTS} (30 to 100 ms a point)",
+            js.len()
+        )
+        .into());
+    }
+    let rows = blade::vortex_lattice::open_water(&s.geometry, js, &s.flow)?;
+    if a.markdown {
+        let mut out = String::from("| J | KT | 10KQ | eta | wake pitch | converged |\n|---|---|---|---|---|---|\n");
+        for p in &rows {
+            out += &format!(
+                "| {:.3} | {:.4} | {:.4} | {:.3} | {:.4} | {} |\n",
+                p.j,
+                p.kt,
+                10.0 * p.kq,
+                p.eta,
+                p.wake_pitch,
+                p.converged
+            );
+        }
+        return emit(out.trim_end());
+    }
+    let mut out = serde_json::json!({
+        "model": "vortex lattice (6 x 12 horseshoes on the nose-tail helicoid, aligned helical wake, hub image; \
+                  no lifting-surface factors, no thickness): the lifting line's check, docs/propeller.md",
+        "blades": s.geometry.blades,
+        "hub_ratio": s.geometry.hub_ratio,
+        "flow": s.flow,
+        "open_water": rows,
+    });
+    if let Some(sp) = &s.scenario {
+        out["scenario"] = serde_json::json!({"name": sp.name, "geometry": sp.geometry, "rpm_from": sp.rpm_from});
     }
     emit_json(&out)
 }
