@@ -126,13 +126,13 @@ fn efficiency_below_the_actuator_disc_and_no_nan() {
     assert!(kt(1.1) > 0.0 && kt(1.25) < 0.0);
 }
 
-/// The vortex lattice (the chord resolved, no lifting-surface factors, no thickness) beside the
-/// lifting line, against the same two references: the check of what Morgan's factors carry. On
-/// DTMB 4119 at J 0.5/0.7/0.833/0.9 the lattice's KT is -9.3/-7.4/-3.3/-2.7 % (the line's +17.6 to
-/// +2.9 %), its 10KQ -20.6/-13.2/-6.5/-3.7 % (the line's +12.6 to +0.7 %); on B4-70 its KT is within
-/// -14.9 to +7.3 % from J 0.2 to 0.6 and its KQ short by up to 40 % at heavy load (P/D 1.2, J 0.2):
-/// at heavy load both models give less torque per thrust than measured (docs/propeller.md). Held at
-/// what the lattice reaches: DTMB 4119 10 % and 21.5 %, B4-70's KT 15.5 % to J 0.6 (its KQ printed).
+/// The vortex lattice (the chord resolved, the leading edge's suction turned normal to the blade by
+/// Polhamus's analogy, no lifting-surface factors, no thickness, no constant fitted) beside the
+/// lifting line, against the same two references. On DTMB 4119 at J 0.5/0.7/0.833/0.9 its KT is
+/// -6.0/-5.6/-2.6/-2.5 % (the line's +17.6 to +2.9 %) and its 10KQ +3.0/-1.2/-1.7/-2.4 % (the line's
+/// +12.6 to +0.7 %); on B4-70 (P/D 0.8, 1.0, 1.2) its KT is within 10 % from J 0.2 to 0.6 (-9.6 % at
+/// worst) and its KQ within 3.4 % wherever KT is above 0.05. Held at 7 % and 4 % (4119), 10 % and 4 %
+/// (B4-70), what it reaches.
 #[test]
 fn the_vortex_lattice_against_jessup_and_the_polynomial() {
     use aes_core::plant::blade::vortex_lattice::{open_water as lattice, Lattice};
@@ -145,7 +145,7 @@ fn the_vortex_lattice_against_jessup_and_the_polynomial() {
         assert!(p.converged, "J {j}");
         let (dt, dq) = print_against_jessup([j, kt_m, kq10_m], p.kt, p.kq);
         if [0.5, 0.7, 0.833, 0.9].contains(&j) {
-            assert!(dt.abs() < 0.10 && dq.abs() < 0.215, "J {j}: KT {dt:+.3}, 10KQ {dq:+.3}");
+            assert!(dt.abs() < 0.07 && dq.abs() < 0.04, "J {j}: KT {dt:+.3}, 10KQ {dq:+.3}");
         }
     }
     let b_flow = Flow::fresh_water(0.5, 10.4);
@@ -157,8 +157,12 @@ fn the_vortex_lattice_against_jessup_and_the_polynomial() {
             assert!(p.converged);
             let dt = p.kt / ow.kt(p.j) - 1.0;
             print_against(p.j, p.kt, p.kq, &ow);
+            let dq = p.kq / ow.kq(p.j) - 1.0;
             if p.j <= 0.6 {
-                assert!(dt.abs() < 0.155, "B4-70 P/D {scale} J {}: KT {dt:+.3}", p.j);
+                assert!(dt.abs() < 0.10, "B4-70 P/D {scale} J {}: KT {dt:+.3}", p.j);
+            }
+            if ow.kt(p.j) >= 0.05 {
+                assert!(dq.abs() < 0.04, "B4-70 P/D {scale} J {}: KQ {dq:+.3}", p.j);
             }
         }
     }

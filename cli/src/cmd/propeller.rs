@@ -337,8 +337,9 @@ fn lattice(a: &Args, s: &Subject, js: &[f64]) -> Result<(), Failure> {
         return emit(out.trim_end());
     }
     let mut out = serde_json::json!({
-        "model": "vortex lattice (6 x 12 horseshoes on the nose-tail helicoid, aligned helical wake, hub image; \
-                  no lifting-surface factors, no thickness): the lifting line's check, docs/propeller.md",
+        "model": "vortex lattice (6 x 12 horseshoes on the nose-tail helicoid, aligned helical wake, hub image, \
+                  leading-edge suction turned normal by Polhamus's analogy; no lifting-surface factors, no \
+                  thickness): the lifting line's check, docs/propeller.md",
         "blades": s.geometry.blades,
         "hub_ratio": s.geometry.hub_ratio,
         "flow": s.flow,
