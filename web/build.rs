@@ -58,7 +58,10 @@ fn main() {
         spec.resolve(&p.propeller.b_series_of()).map_err(|(f, e)| format!("propeller.geometry.{f}: {e}")),
     );
     let js: Vec<f64> = (0..25).map(|k| 1.2 * k as f64 / 24.0).collect();
-    let ow = must("DTMB 4119's open water", aes_core::plant::blade::open_water(&g, &js, &p.propeller_design_flow()));
+    let ow = must(
+        "DTMB 4119's open water",
+        aes_core::plant::blade::vortex_lattice::open_water(&g, &js, &p.propeller_design_flow()),
+    );
     let curve = serde_json::to_string(&ow.iter().map(|a| [a.j, a.kt, a.kq]).collect::<Vec<_>>()).unwrap_or_default();
     let out = std::env::var("OUT_DIR").unwrap_or_else(|_| ".".into());
     let write = |name: &str, text: &str| must(name, std::fs::write(format!("{out}/{name}"), text));

@@ -688,37 +688,46 @@ fn propeller_from_a_blade_table() {
     }
 }
 
-/// `propeller --method lattice`: the vortex lattice's rows at the four compared advance ratios, each
-/// the library's number (tests/propeller.rs compares them with Jessup's), KT falling with J; its
-/// limits refused by name.
+/// `propeller`: by default the vortex lattice (the run's model), its rows the library's numbers
+/// (tests/propeller.rs compares them with Jessup's), KT falling with J; `--method line` the lifting
+/// line's; the radial loading at `--at-j` is the lifting line's with either, and says so.
 #[test]
 fn propeller_by_the_vortex_lattice() {
     let csv = concat!(env!("CARGO_MANIFEST_DIR"), "/../core/data/dtmb4119_geometry.csv");
-    let base = ["propeller", csv, "--blades", "3", "--hub-ratio", "0.2", "--method", "lattice"];
-    let (ok, out, err) = aes_sim(&[&base[..], &["--j", "0.5:0.9:3"]].concat());
-    assert!(ok, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
-    let rows = v["open_water"].as_array().unwrap();
+    let base = ["propeller", csv, "--blades", "3", "--hub-ratio", "0.2"];
     let g = aes_core::plant::blade::BladeGeometry::from_csv(&std::fs::read_to_string(csv).unwrap(), 3, 0.2).unwrap();
     let flow = aes_core::plant::blade::Flow::fresh_water(0.3048, 10.0);
-    let lib = aes_core::plant::blade::vortex_lattice::open_water(&g, &[0.5, 0.7, 0.9], &flow).unwrap();
-    assert_eq!(rows.len(), 3);
-    for (r, p) in rows.iter().zip(&lib) {
-        assert_eq!(r["kt"].as_f64().unwrap(), p.kt);
-        assert_eq!(r["kq"].as_f64().unwrap(), p.kq);
-        assert!(r["converged"].as_bool().unwrap() && r["wake_pitch"].as_f64().unwrap() > 0.0);
+    let js = [0.5, 0.7, 0.9];
+    let lattice = aes_core::plant::blade::vortex_lattice::open_water(&g, &js, &flow).unwrap();
+    let line = aes_core::plant::blade::open_water(&g, &js, &flow).unwrap();
+    let lib: [Vec<(f64, f64)>; 2] =
+        [lattice.iter().map(|p| (p.kt, p.kq)).collect(), line.iter().map(|p| (p.kt, p.kq)).collect()];
+    for (method, want, model) in [(None, &lib[0], "vortex lattice"), (Some("line"), &lib[1], "lifting line")] {
+        let mut args = [&base[..], &["--j", "0.5:0.9:3"]].concat();
+        if let Some(m) = method {
+            args.extend(["--method", m]);
+        }
+        let (ok, out, err) = aes_sim(&args);
+        assert!(ok, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        assert!(v["model"].as_str().unwrap().starts_with(model), "{}", v["model"]);
+        let rows = v["open_water"].as_array().unwrap();
+        assert_eq!(rows.len(), 3);
+        for (r, p) in rows.iter().zip(want) {
+            assert_eq!((r["kt"].as_f64().unwrap(), r["kq"].as_f64().unwrap()), *p);
+            assert!(r["converged"].as_bool().unwrap());
+            assert_eq!(r["wake_pitch"].is_f64(), method.is_none());
+        }
     }
-    assert!(lib[0].kt > lib[1].kt && lib[1].kt > lib[2].kt);
+    assert!(lib[0][0].0 > lib[0][1].0 && lib[0][1].0 > lib[0][2].0);
     let (ok, md, _) = aes_sim(&[&base[..], &["--j", "0.833:0.833:1", "--markdown"]].concat());
     assert!(ok && md.contains("| J | KT | 10KQ | eta | wake pitch | converged |") && md.contains("| 0.833 |"), "{md}");
-    for (args, said) in [
-        (vec!["--at-j", "0.7"], "--at-j: the vortex lattice gives open-water rows only"),
-        (vec!["--depth-m", "6"], "--depth-m: the vortex lattice gives open-water rows only"),
-        (vec!["--j", "0:1:51"], "--j N: 51 points; --method lattice takes 1..=50"),
-    ] {
-        let (ok, _, err) = aes_sim(&[&base[..], &args[..]].concat());
-        assert!(!ok && err.contains(said), "{err}");
-    }
+    let (ok, out, err) = aes_sim(&[&base[..], &["--j", "0.7:0.7:1", "--at-j", "0.7"]].concat());
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert!(v["at_j_model"].as_str().unwrap().starts_with("lifting line") && v["at_j"]["sections"].is_array());
+    // The line's own point at J 0.7 (started afresh, not from a neighbour: the same to its tolerance).
+    assert!((v["at_j"]["kt"].as_f64().unwrap() / line[1].kt - 1.0).abs() < 1e-8, "{}", v["at_j"]["kt"]);
 }
 
 /// `propeller --depth-m`: DTMB 4119 at 4.5 m and 180 rpm in sea water, J = 0.833, hub 6 m deep:

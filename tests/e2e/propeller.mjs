@@ -81,7 +81,7 @@ await check('the panel beside the hull\'s: DTMB 4119 picked runs its blades, in 
     `J = 0.7: the page shows KT ${shown[1]}, 10KQ ${shown[2]}; the command line ${cli.open_water[at].kt}, ${10 * cli.open_water[at].kq}`);
   const page = median(samples.map((s) => s.request_to_drawn_ms)), worker = median(samples.map((s) => s.worker_ms)), nat = median(times);
   console.log(`     DTMB 4119 at D ${f.diameter_m} m, ${(f.rev_per_s * 60).toFixed(1)} rpm: KT(0.7) ${shown[1]}, 10KQ(0.7) ${shown[2]} on the page and the command line`);
-  console.log(`     25 J: the page draws the curves in ${page.toFixed(1)} ms (request to drawn; the worker's lifting line ${worker.toFixed(1)} ms); aes-sim propeller ${nat.toFixed(1)} ms (process, median of 5); ratio ${(page / nat).toFixed(2)} (worker alone ${(worker / nat).toFixed(2)})`);
+  console.log(`     25 J: the page draws the curves in ${page.toFixed(1)} ms (request to drawn; the worker's vortex lattice ${worker.toFixed(1)} ms); aes-sim propeller ${nat.toFixed(1)} ms (process, median of 5); ratio ${(page / nat).toFixed(2)} (worker alone ${(worker / nat).toFixed(2)})`);
   await c.close();
 });
 

@@ -616,7 +616,7 @@ pub fn propeller_geometry_csv(text: JsValue, blades: f64, hub_ratio: f64) -> Res
 /// `leading_d` and `trailing_d`: the edges' chordwise positions over D, half a chord either side
 /// of the mid-chord, which skew moves along the arc by (r/R)(D/2) times the skew angle),
 /// `pitch_07` and `area_ratio` (Ae/A0 from the chords); `open_water` (j, kt, kq, eta, converged:
-/// the lifting line in the flow the run's table is built in, `flow`) over J = 0 to 1.2 in 25
+/// the vortex lattice, the run's model, in the flow the run's table is built in, `flow`) over J = 0 to 1.2 in 25
 /// points as `aes-sim propeller` gives them; `series` (blades, pitch_ratio, area_ratio, held and
 /// its `rows` j, kt, kq, eta: the B-series polynomial of the same Z, P/D at 0.7 R and Ae/A0);
 /// and `runs_it` (whether the scenario's `propeller.model` is "geometry").
@@ -633,7 +633,7 @@ pub fn propeller_curves(json: JsValue) -> Result<String, JsError> {
     let flow = sc.propeller_design_flow();
     let (from, to, n) = PANEL_J;
     let js: Vec<f64> = (0..n).map(|k| from + (to - from) * k as f64 / (n - 1) as f64).collect();
-    let curve = blade::open_water(&g, &js, &flow).map_err(|e| js_error(&e))?;
+    let curve = blade::vortex_lattice::open_water(&g, &js, &flow).map_err(|e| js_error(&e))?;
     let e = table::series_equivalent(&g);
     let series = aes_core::plant::propeller::OpenWater::b_series(e.pitch_ratio, e.area_ratio, e.blades)
         .map_err(|e| js_error(&e))?;

@@ -463,13 +463,13 @@ fn stability_map_refuses_bad_input_by_name() {
 }
 
 /// The propeller panel (issue 54): DTMB 4119's KT and KQ over the command line's 25 J are the
-/// native lifting line's in the run's design flow, bit for bit (web/build.rs computed them
+/// native vortex lattice's in the run's design flow, bit for bit (web/build.rs computed them
 /// natively); the outline is the table's chords about the mid-chord (no skew: symmetric), P/D at
 /// 0.7 R is the table's 1.084, the efficiency is J KT / (2 pi KQ), and the B-series beside it has the
 /// same Z, P/D and Ae/A0. A bad table is refused naming its row and column, a fractional blade
 /// count by name.
 #[wasm_bindgen_test]
-fn propeller_curves_are_the_native_lifting_line() {
+fn propeller_curves_are_the_native_vortex_lattice() {
     let native: Vec<[f64; 3]> =
         serde_json::from_str(include_str!(concat!(env!("OUT_DIR"), "/native_propeller_4119.json"))).unwrap();
     let mut sc: serde_json::Value =

@@ -1,6 +1,6 @@
 // The propeller (issue 54): the panel beside the hull's, with its picker. The blades of the study
 // (the ship's B-series equivalent, DTMB 4119, or a CSV blade table read by the core), their expanded
-// outline and pitch, and KT, 10KQ and the efficiency over J from the lifting line, with the B-series
+// outline and pitch, and KT, 10KQ and the efficiency over J from the vortex lattice, with the B-series
 // polynomial of the same Z, P/D and Ae/A0 faint beside them. Picking blades sets
 // propeller.model = "geometry" and propeller.geometry in the form's scenario, so the run, the
 // address and a downloaded scenario use them. Every number comes from the wasm (propellerCurves,
@@ -218,7 +218,7 @@ export class PropellerPanel {
     const e = s.series;
     const rpm = s.flow.rev_per_s * 60;
     this.note.textContent = `${s.blades} blades, P/D at 0.7 R ${num(s.pitch_07)}, Ae/A0 ${num(s.area_ratio)} (from the chords), hub ${num(s.hub_ratio)} D, at the study's diameter D = ${num(s.flow.diameter_m)} m. `
-      + `KT and KQ from the lifting line (thesis ch. 3.2) in sea water at ${num(rpm)} rpm, the flow the run's table is built in. `
+      + `KT and KQ from a vortex lattice on the blades (thesis ch. 3.2) in sea water at ${num(rpm)} rpm, the flow the run's table is built in. `
       + (s.runs_it ? 'The run uses these curves (propeller.model = geometry; astern and past zero thrust the four-quadrant series, scaled to them). '
         : 'The run uses the study\'s own model; pick blades above to run them. ')
       + `Faint and dashed: the B-series polynomial of ${e.blades} blades, P/D ${num(e.pitch_ratio)}, Ae/A0 ${num(e.area_ratio)}${e.held ? ' (held at the edge of the series\' range)' : ''}.`;
@@ -243,7 +243,7 @@ export class PropellerPanel {
       { data: positive(series, (p) => p.eta), label: 'η0, B-series (faint)', color: PROPELLER.colors.etaSeries, width: 1.2, dash: [6, 4] },
     ], [{ scale: 'y', label: 'KT, 10KQ, η0 [-]' }], { key: ['η0 = J KT / (2π KQ), drawn where KT > 0.'] });
     const head = ['J [-]', 'KT', '10KQ', 'η0', 'KT, B-series', '10KQ, B-series', 'η0, B-series'];
-    this.table.replaceChildren(el('caption', { textContent: `Open water of ${name} by the lifting line, and the B-series polynomial beside it` }),
+    this.table.replaceChildren(el('caption', { textContent: `Open water of ${name} by the vortex lattice, and the B-series polynomial beside it` }),
       el('thead', {}, el('tr', {}, ...head.map((t) => el('th', { scope: 'col', textContent: t })))),
       el('tbody', {}, ...s.open_water.map((p, i) => el('tr', {}, el('th', { scope: 'row', textContent: p.j.toFixed(3) }),
         ...[d4(p.kt), d4(10 * p.kq), p.kt > 0 ? p.eta.toFixed(3) : '–', d4(series[i].kt), d4(10 * series[i].kq), series[i].kt > 0 ? series[i].eta.toFixed(3) : '–']

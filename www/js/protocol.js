@@ -44,7 +44,7 @@ export const REQUEST = {
   rao: 'rao', // {scenario, speed_kn, heading_deg, omegas} -> done {result}: RAOs of the scenario's hull
   hullSheet: 'hull-sheet', // {scenario} -> done {sheet}: body plan, profile, hydrostatics (presentation::HullSheet)
   // The propeller panel (issue 54): {scenario} -> done {sheet, wall_ms}: propellerCurves (the blades'
-  // outline and pitch, KT, KQ, efficiency over J by the lifting line, the B-series of the same Z,
+  // outline and pitch, KT, KQ, efficiency over J by the vortex lattice, the B-series of the same Z,
   // P/D and Ae/A0), wall_ms the worker's time for it.
   propeller: 'propeller',
   // {text, blades, hub_ratio} -> done {geometry}: a CSV blade table read by the core

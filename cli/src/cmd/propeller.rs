@@ -1,7 +1,8 @@
 //! `aes-sim propeller`: open-water KT, 10KQ and efficiency of a propeller computed from its blade
-//! geometry by the lifting line (thesis ch. 3.2), its radial loading at one advance ratio, and its
-//! sections' cavitation margins with the blade at 12 o'clock (ch. 3.2.2); for a scenario, the
-//! ship's calm-water cavitation-inception speed.
+//! geometry by the vortex lattice (the run's model) or the lifting line (thesis ch. 3.2), the
+//! lifting line's radial loading at one advance ratio, and its sections' cavitation margins with
+//! the blade at 12 o'clock (ch. 3.2.2); for a scenario, the ship's calm-water cavitation-inception
+//! speed.
 
 use crate::common::{emit, emit_json, load, read_bounded, shorten, Failure};
 use aes_core::plant::blade::cavitation::{check_point, PointCavitation, PropellerBuckets, Water};
@@ -20,14 +21,12 @@ enum WaterKind {
 /// The open-water analysis.
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 enum Method {
-    /// The lifting line with Morgan's lifting-surface factors (the run's model).
-    Line,
-    /// The vortex lattice: the chord resolved, its check (open-water rows only; about 30 to 100 ms a point).
+    /// The vortex lattice: the chord resolved (the run's model).
     Lattice,
+    /// The lifting line with Morgan's lifting-surface factors (its sections give the radial
+    /// loading and the cavitation margins with either method).
+    Line,
 }
-
-/// The most advance ratios the vortex lattice is asked for in one command (a few seconds' work).
-const MAX_LATTICE_POINTS: usize = 50;
 
 // The command line of `aes-sim propeller`.
 #[derive(clap::Args)]
@@ -70,9 +69,10 @@ pub struct Args {
     /// Markdown tables instead of JSON.
     #[arg(long)]
     markdown: bool,
-    /// The analysis: `line` (the lifting line, the run's model) or `lattice` (the vortex lattice that
-    /// checks it: open-water rows only, at most 50 advance ratios).
-    #[arg(long, value_enum, default_value = "line")]
+    /// The open-water analysis: `lattice` (the vortex lattice, the run's model) or `line` (the
+    /// lifting line, high at heavy loading). The radial loading and the cavitation margins are the
+    /// lifting line's sections' with either.
+    #[arg(long, value_enum, default_value = "lattice")]
     method: Method,
 }
 
@@ -243,17 +243,57 @@ fn inception_json(i: &Option<pc::Inception>) -> serde_json::Value {
     i.map_or(serde_json::Value::Null, |i| serde_json::to_value(i).unwrap_or(serde_json::Value::Null))
 }
 
+/// One open-water row of either method.
+struct Row {
+    j: f64,
+    kt: f64,
+    kq: f64,
+    eta: f64,
+    converged: bool,
+    /// The lattice's aligned wake pitch over R (the lifting line's varies with radius).
+    wake_pitch: Option<f64>,
+}
+
+/// What the open-water rows are, by method.
+fn model_text(m: Method) -> &'static str {
+    match m {
+        Method::Lattice => {
+            "vortex lattice (6 x 12 horseshoes on the nose-tail helicoid, aligned helical wake, hub image, \
+             leading-edge suction turned normal by Polhamus's analogy; no lifting-surface factors, no thickness), \
+             the run's model: docs/propeller.md"
+        }
+        Method::Line => {
+            "lifting line (Wrench induction, hub image, Morgan, Silovic & Denny 1968 lifting-surface corrections)"
+        }
+    }
+}
+
 pub fn run(a: Args) -> Result<(), Failure> {
     let s = if is_scenario(&a.input) { scenario(&a)? } else { table(&a)? };
     let (g, flow) = (&s.geometry, s.flow);
     let js = advance_ratios(&a.j)?;
-    if a.method == Method::Lattice {
-        return lattice(&a, &s, &js);
-    }
     if let Some(h) = a.depth_m {
         check_depth(h, flow.diameter_m)?;
     }
-    let curve = blade::open_water(g, &js, &flow)?;
+    // The lifting line's sections carry the radial loading and the cavitation margins.
+    let line = blade::open_water(g, &js, &flow)?;
+    let rows: Vec<Row> = match a.method {
+        Method::Line => line
+            .iter()
+            .map(|p| Row { j: p.j, kt: p.kt, kq: p.kq, eta: p.eta, converged: p.converged, wake_pitch: None })
+            .collect(),
+        Method::Lattice => blade::vortex_lattice::open_water(g, &js, &flow)?
+            .into_iter()
+            .map(|p| Row {
+                j: p.j,
+                kt: p.kt,
+                kq: p.kq,
+                eta: p.eta,
+                converged: p.converged,
+                wake_pitch: Some(p.wake_pitch),
+            })
+            .collect(),
+    };
     let at = a.at_j.map(|j| blade::analyse(g, j, &flow).map_err(|e| format!("--at-j: {e}"))).transpose()?;
     // The cavitation margins: only when a depth is given (the sections' buckets cost a panel
     // solution each), at --at-j or else at every J of the curve.
@@ -264,20 +304,26 @@ pub fn run(a: Args) -> Result<(), Failure> {
             let w = Water::of(&flow);
             let points: Vec<&Analysis> = match &at {
                 Some(p) => vec![p],
-                None => curve.iter().collect(),
+                None => line.iter().collect(),
             };
             Some(points.into_iter().map(|p| check_point(&b, &w, p, flow.rev_per_s, h)).collect())
         }
     };
     if a.markdown {
-        return emit(markdown(&s, &curve, at.as_ref(), cavitation.as_deref()).trim_end());
+        return emit(markdown(&s, &rows, at.as_ref(), cavitation.as_deref()).trim_end());
     }
-    let rows: Vec<_> = curve
+    let rows: Vec<_> = rows
         .iter()
-        .map(|p| serde_json::json!({"j": p.j, "kt": p.kt, "kq": p.kq, "eta": p.eta, "converged": p.converged}))
+        .map(|p| {
+            let mut r = serde_json::json!({"j": p.j, "kt": p.kt, "kq": p.kq, "eta": p.eta, "converged": p.converged});
+            if let Some(w) = p.wake_pitch {
+                r["wake_pitch"] = w.into();
+            }
+            r
+        })
         .collect();
     let mut out = serde_json::json!({
-        "model": "lifting line (Wrench induction, hub image, Morgan, Silovic & Denny 1968 lifting-surface corrections)",
+        "model": model_text(a.method),
         "blades": g.blades,
         "hub_ratio": g.hub_ratio,
         "flow": flow,
@@ -300,66 +346,21 @@ pub fn run(a: Args) -> Result<(), Failure> {
     }
     if let Some(p) = at {
         out["at_j"] = serde_json::to_value(p).map_err(|e| e.to_string())?;
-    }
-    emit_json(&out)
-}
-
-/// `--method lattice`: the vortex lattice's open-water rows.
-fn lattice(a: &Args, s: &Subject, js: &[f64]) -> Result<(), Failure> {
-    for (flag, given) in [("--at-j", a.at_j.is_some()), ("--depth-m", a.depth_m.is_some())] {
-        if given {
-            return Err(
-                format!("{flag}: the vortex lattice gives open-water rows only (--method line has {flag})").into()
-            );
-        }
-    }
-    if js.len() > MAX_LATTICE_POINTS {
-        return Err(format!(
-            "--j N: {} points; --method lattice takes 1..={MAX_LATTICE_POINTS} (30 to 100 ms a point)",
-            js.len()
-        )
-        .into());
-    }
-    let rows = blade::vortex_lattice::open_water(&s.geometry, js, &s.flow)?;
-    if a.markdown {
-        let mut out = String::from("| J | KT | 10KQ | eta | wake pitch | converged |\n|---|---|---|---|---|---|\n");
-        for p in &rows {
-            out += &format!(
-                "| {:.3} | {:.4} | {:.4} | {:.3} | {:.4} | {} |\n",
-                p.j,
-                p.kt,
-                10.0 * p.kq,
-                p.eta,
-                p.wake_pitch,
-                p.converged
-            );
-        }
-        return emit(out.trim_end());
-    }
-    let mut out = serde_json::json!({
-        "model": "vortex lattice (6 x 12 horseshoes on the nose-tail helicoid, aligned helical wake, hub image, \
-                  leading-edge suction turned normal by Polhamus's analogy; no lifting-surface factors, no \
-                  thickness): the lifting line's check, docs/propeller.md",
-        "blades": s.geometry.blades,
-        "hub_ratio": s.geometry.hub_ratio,
-        "flow": s.flow,
-        "open_water": rows,
-    });
-    if let Some(sp) = &s.scenario {
-        out["scenario"] = serde_json::json!({"name": sp.name, "geometry": sp.geometry, "rpm_from": sp.rpm_from});
+        out["at_j_model"] = model_text(Method::Line).into();
     }
     emit_json(&out)
 }
 
 /// The `--markdown` tables.
-fn markdown(s: &Subject, curve: &[Analysis], at: Option<&Analysis>, cav: Option<&[PointCavitation]>) -> String {
-    let mut out = String::from("| J | KT | 10KQ | eta | converged |\n|---|---|---|---|---|\n");
-    for p in curve {
-        out += &format!("| {:.3} | {:.4} | {:.4} | {:.3} | {} |\n", p.j, p.kt, 10.0 * p.kq, p.eta, p.converged);
+fn markdown(s: &Subject, rows: &[Row], at: Option<&Analysis>, cav: Option<&[PointCavitation]>) -> String {
+    let mut out = String::from("| J | KT | 10KQ | eta | wake pitch | converged |\n|---|---|---|---|---|---|\n");
+    for p in rows {
+        let w = p.wake_pitch.map_or("-".to_string(), |w| format!("{w:.4}"));
+        out += &format!("| {:.3} | {:.4} | {:.4} | {:.3} | {w} | {} |\n", p.j, p.kt, 10.0 * p.kq, p.eta, p.converged);
     }
     if let Some(p) = at {
         out += &format!(
-            "\nAt J = {}: KT {:.4}, 10KQ {:.4}\n\n| r/R | chord [m] | G | beta_i [deg] | alpha [deg] | V* [m/s] | CL | CD | Re |\n|---|---|---|---|---|---|---|---|---|\n",
+            "\nAt J = {} by the lifting line: KT {:.4}, 10KQ {:.4}\n\n| r/R | chord [m] | G | beta_i [deg] | alpha [deg] | V* [m/s] | CL | CD | Re |\n|---|---|---|---|---|---|---|---|---|\n",
             p.j,
             p.kt,
             10.0 * p.kq

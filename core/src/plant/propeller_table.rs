@@ -17,6 +17,7 @@ const TABLE: usize = 513;
 /// The search for zero thrust: J from 0 in steps of `J_STEP` up to `J_SEARCH`.
 const J_STEP: f64 = 0.05;
 const J_SEARCH: f64 = 2.5;
+const J_FIRST: f64 = 1.6;
 /// Tables kept, the oldest dropped first (a table is 8 kB).
 const MAX_TABLES: usize = 8;
 
@@ -85,9 +86,19 @@ pub fn b_series_equivalent_curves(g: &BladeGeometry, js: &[f64]) -> Result<Vec<(
     Ok(js.iter().map(|&j| (ow.kt(j), ow.kq(j))).collect())
 }
 
-/// The lifting line's curves (`blade::open_water`) in `flow`: the geometry model's table.
+/// The lifting line's curves (`blade::open_water`) in `flow`: the lattice's comparison.
 pub fn lifting_line_curves(flow: Flow) -> impl Fn(&BladeGeometry, &[f64]) -> Result<Vec<(f64, f64)>, String> {
     move |g, js| Ok(crate::plant::blade::open_water(g, js, &flow)?.into_iter().map(|a| (a.kt, a.kq)).collect())
+}
+
+/// The vortex lattice's curves of `g` in `flow` (`blade::vortex_lattice`): the geometry model's
+/// table. The lattice is built once for `g` (its wake table kept between calls); the closure's
+/// own geometry argument is not read.
+pub fn lattice_curves(g: &BladeGeometry, flow: Flow) -> Result<Box<Curves>, String> {
+    let lattice = crate::plant::blade::vortex_lattice::Lattice::new(g, &flow)?;
+    Ok(Box::new(move |_: &BladeGeometry, js: &[f64]| {
+        Ok(lattice.curve(js)?.into_iter().map(|a| (a.kt, a.kq)).collect())
+    }))
 }
 
 /// Local P/D at r/R = 0.7, linear between rows \[-\].
@@ -148,7 +159,7 @@ fn monotone_cubic(x: &[f64], y: &[f64], at: f64) -> f64 {
 }
 
 impl GeometryPropeller {
-    /// The table of `g` from the lifting line in `flow`, remembered per geometry and flow (a run,
+    /// The table of `g` from the vortex lattice in `flow`, remembered per geometry and flow (a run,
     /// its Monte Carlo trials and the page's repeated runs build it once).
     pub fn new(g: &BladeGeometry, flow: Flow) -> Result<GeometryPropeller, String> {
         type Cache = Mutex<Vec<((BladeGeometry, Flow), GeometryPropeller)>>;
@@ -160,7 +171,7 @@ impl GeometryPropeller {
             }
         }
         flow.check().map_err(|e| format!("propeller.geometry: the design flow's {e}"))?;
-        let p = GeometryPropeller::build(g, &lifting_line_curves(flow))?;
+        let p = GeometryPropeller::build(g, &lattice_curves(g, flow)?)?;
         if let Ok(mut c) = cache.lock() {
             if c.len() >= MAX_TABLES {
                 c.remove(0);
@@ -172,9 +183,15 @@ impl GeometryPropeller {
 
     /// Builds the table of `g` from `curves` (not remembered).
     pub fn build(g: &BladeGeometry, curves: &Curves) -> Result<GeometryPropeller, String> {
-        // Zero thrust: the first sign change of kT on a coarse grid, then secant steps.
-        let coarse: Vec<f64> = (0..=(J_SEARCH / J_STEP) as usize).map(|i| i as f64 * J_STEP).collect();
-        let k = curves(g, &coarse)?;
+        // Zero thrust: the first sign change of kT on a coarse grid (up to J_FIRST, where most
+        // propellers have theirs, then on to J_SEARCH), then secant steps.
+        let grid = |to: f64| -> Vec<f64> { (0..=(to / J_STEP).round() as usize).map(|i| i as f64 * J_STEP).collect() };
+        let mut coarse = grid(J_FIRST);
+        let mut k = curves(g, &coarse)?;
+        if k.iter().all(|p| p.0 > 0.0) {
+            coarse = grid(J_SEARCH);
+            k = curves(g, &coarse)?;
+        }
         if !(k[0].0 > 0.0 && k[0].1 > 0.0) {
             return Err(format!(
                 "propeller.geometry: the blades give no bollard thrust and torque (kT(0) = {:.4}, kQ(0) = {:.5})",
@@ -343,19 +360,26 @@ mod lifting_line_tests {
     use super::*;
     use crate::plant::blade::Flow;
 
-    /// The table builds from the lifting line for DTMB 4119 at full scale (4.5 m, 3.5 rev/s):
+    /// The table builds from the vortex lattice for DTMB 4119 at full scale (4.5 m, 3.5 rev/s):
     /// bollard kT and kQ positive, J0 between 1.0 and 1.6 (the measured curve reaches kT 0 near
-    /// J = 1.2, Jessup 1989), and the hand-over scaled to it. Prints the build time.
+    /// J = 1.2, Jessup 1989), and the hand-over scaled to it; the lifting line's table beside it
+    /// builds too. Prints the build times.
     #[test]
-    fn builds_from_the_lifting_line() {
+    fn builds_from_the_lattice_and_the_lifting_line() {
         let g = crate::plant::propeller_geometry::GeometrySpec { name: "dtmb4119".into(), ..Default::default() }
             .resolve(&crate::plant::propeller::PropellerParams::default().b_series_of())
             .unwrap();
-        let t = std::time::Instant::now();
-        let p = GeometryPropeller::build(&g, &lifting_line_curves(Flow::sea_water(4.5, 3.5))).unwrap();
-        println!("4119 table from the lifting line: {:?} in {:?}", p.handover, t.elapsed());
-        assert!(p.handover.kt0 > 0.0 && p.handover.kq0 > 0.0);
-        assert!(p.handover.j0 > 1.0 && p.handover.j0 < 1.6, "J0 = {}", p.handover.j0);
+        let flow = Flow::sea_water(4.5, 3.5);
+        for (name, curves) in [
+            ("vortex lattice", lattice_curves(&g, flow).unwrap()),
+            ("lifting line", Box::new(lifting_line_curves(flow))),
+        ] {
+            let t = std::time::Instant::now();
+            let p = GeometryPropeller::build(&g, &curves).unwrap();
+            println!("4119 table from the {name}: {:?} in {:?}", p.handover, t.elapsed());
+            assert!(p.handover.kt0 > 0.0 && p.handover.kq0 > 0.0);
+            assert!(p.handover.j0 > 1.0 && p.handover.j0 < 1.6, "J0 = {}", p.handover.j0);
+        }
     }
 }
 
@@ -383,13 +407,13 @@ mod run_tests {
         let g = geo.propeller.geometry.as_ref().unwrap().resolve(&geo.propeller.b_series_of()).unwrap();
         let flow = geo.propeller_design_flow();
         let t = std::time::Instant::now();
-        let p = super::GeometryPropeller::build(&g, &super::lifting_line_curves(flow)).unwrap();
+        let p = super::GeometryPropeller::build(&g, &super::lattice_curves(&g, flow).unwrap()).unwrap();
         println!("table for the default geometry at {flow:?}: {:?} in {:?}", p.handover, t.elapsed());
         let (a, b) = (crate::sim::run(&base).unwrap().summary, crate::sim::run(&geo).unwrap().summary);
         let j = b.signals["advance_ratio"].mean;
         let ow = crate::plant::propeller::OpenWater::from_params(&base.propeller).unwrap();
         println!(
-            "mean J {j:.3}: lifting line kT {:.4} kQ {:.5}, polynomial kT {:.4} kQ {:.5}",
+            "mean J {j:.3}: vortex lattice kT {:.4} kQ {:.5}, polynomial kT {:.4} kQ {:.5}",
             p.table(j).0,
             p.table(j).1,
             ow.kt(j),
@@ -402,7 +426,7 @@ mod run_tests {
         }
         assert!(a.propeller.is_none());
         let note = b.propeller.unwrap();
-        assert!(note.note.contains("from the lifting line"), "{}", note.note);
+        assert!(note.note.contains("from the vortex lattice"), "{}", note.note);
         assert_eq!(note.rows_handed_over, 0, "{}", note.note);
     }
 }

@@ -304,7 +304,7 @@ impl GeometryNote {
             Some(t0) => format!("{} recorded rows handed over, the first at t = {t0:.1} s", rows.len()),
         };
         let note = format!(
-            "propeller.geometry \"{}\": its own table from the lifting line (at n = {:.2} rev/s) for 0 <= J <= J0 = {:.3} \
+            "propeller.geometry \"{}\": its own table from the vortex lattice (at n = {:.2} rev/s) for 0 <= J <= J0 = {:.3} \
              (kT(0) = {:.4}, 10 kQ(0) = {:.4}); astern and past zero thrust the four-quadrant B4-70 series scaled to these points: {place}",
             spec.name,
             flow.rev_per_s,

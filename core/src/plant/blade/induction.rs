@@ -89,6 +89,30 @@ pub(crate) fn segment(a: [f64; 3], b: [f64; 3], p: [f64; 3]) -> [f64; 3] {
     [f * c[0], f * c[1], f * c[2]]
 }
 
+/// Velocity induced at `p` by the polyline through `pts` of unit circulation: the sum of
+/// [`segment`] over its segments, each vertex's distance computed once.
+pub(crate) fn polyline(pts: &[[f64; 3]], p: [f64; 3]) -> [f64; 3] {
+    let mut v = [0.0; 3];
+    let Some(first) = pts.first() else { return v };
+    let mut r1 = [p[0] - first[0], p[1] - first[1], p[2] - first[2]];
+    let mut n1 = (r1[0] * r1[0] + r1[1] * r1[1] + r1[2] * r1[2]).sqrt();
+    for b in &pts[1..] {
+        let r2 = [p[0] - b[0], p[1] - b[1], p[2] - b[2]];
+        let n2 = (r2[0] * r2[0] + r2[1] * r2[1] + r2[2] * r2[2]).sqrt();
+        let c = [r1[1] * r2[2] - r1[2] * r2[1], r1[2] * r2[0] - r1[0] * r2[2], r1[0] * r2[1] - r1[1] * r2[0]];
+        let c2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+        if c2 >= 1e-18 && n1 >= 1e-12 && n2 >= 1e-12 {
+            let r0 = [r1[0] - r2[0], r1[1] - r2[1], r1[2] - r2[2]];
+            let k = (r0[0] * r1[0] + r0[1] * r1[1] + r0[2] * r1[2]) / n1
+                - (r0[0] * r2[0] + r0[1] * r2[1] + r0[2] * r2[2]) / n2;
+            let f = k / (4.0 * PI * c2);
+            v = [v[0] + f * c[0], v[1] + f * c[1], v[2] + f * c[2]];
+        }
+        (r1, n1) = (r2, n2);
+    }
+    v
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -108,6 +132,22 @@ mod tests {
                 (wa - ba).abs() < 0.02 * scale && (wt - bt).abs() < 0.02 * scale,
                 "Z {z} tan {tb} rc {rc} rv {rv}: Wrench ({wa:.5}, {wt:.5}), Biot-Savart ({ba:.5}, {bt:.5})"
             );
+        }
+    }
+
+    #[test]
+    fn a_polyline_is_its_segments() {
+        // The same sum as segment by segment, to rounding (1e-15 of the largest component).
+        let pts: Vec<[f64; 3]> =
+            (0..40).map(|i| [0.1 * i as f64, libm::cos(0.3 * i as f64), libm::sin(0.3 * i as f64)]).collect();
+        for p in [[0.05, 0.2, 0.1], [1.0, 0.9, -0.4], [0.0, 1.0, 0.0]] {
+            let v = polyline(&pts, p);
+            let w = pts.windows(2).fold([0.0; 3], |s, w| {
+                let u = segment(w[0], w[1], p);
+                [s[0] + u[0], s[1] + u[1], s[2] + u[2]]
+            });
+            let big = w.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+            assert!(v.iter().zip(&w).all(|(a, b)| (a - b).abs() <= 1e-13 * big), "{v:?} against {w:?}");
         }
     }
 }
