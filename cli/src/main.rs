@@ -104,8 +104,8 @@ enum Cmd {
     /// `seakeeping`: the time to build the default RAO tables of the DTMB 5415 (and, with
     /// --hull, of that hull beside it, in the same run).
     Bench(cmd::bench::Args),
-    /// Open-water KT, 10KQ and efficiency of a propeller from its blade table (a lifting line,
-    /// thesis ch. 3.2), `--at-j J` for its radial loading; JSON, or `--markdown`.
+    /// Open-water KT, 10KQ and efficiency of a propeller from its blade table (a vortex lattice,
+    /// thesis ch. 3.2), `--at-j J` for its radial loading (a lifting line); JSON, or `--markdown`.
     Propeller(cmd::propeller::Args),
     /// The validation report: every thesis number we compare with, beside ours, with the
     /// difference, tolerance, verdict and reason (Markdown; docs/validation.md). Exit status 1 when

@@ -388,16 +388,15 @@ mod run_tests {
     use crate::scenario::presets::preset;
     use crate::scenario::PropellerModelKind;
 
-    /// head-seas-ss6 on the ship's B-series-equivalent geometry (Z 5, P/D 1.0, Ae/A0 0.75), now
-    /// through the lifting line's table, against the polynomial of the same Z, P/D, Ae/A0. The two
-    /// curves are different models: on B4-70 the lifting line is up to 12 % off the polynomial over
-    /// J 0.2-0.8 (docs/propeller.md), so the run differs where the propeller's coefficients enter.
-    /// Measured: turbine power -6.2 %, shaft speed -3.2 %, ship speed +0.18 %, thrust +0.7 %.
-    /// At the run's mean J 0.745 the lifting line's kT is 16 % and its kQ 8 % above the polynomial's.
-    /// Asserted: power within 8 % and rpm within 5 % (the stronger kT turns the shaft slower;
-    /// power follows kQ n^3), ship speed and thrust within 1 % (the speed order holds
-    /// the speed, so the thrust is the hull's resistance at it, whichever curve makes it). The run
-    /// stays in the first quadrant, and the summary's note names the lifting line.
+    /// head-seas-ss6 on the ship's B-series-equivalent geometry (Z 5, P/D 1.0, Ae/A0 0.75) through
+    /// the vortex lattice's table, against the polynomial of the same Z, P/D, Ae/A0. The two curves
+    /// are different models: at the run's mean J 0.735 the lattice's kT is 9 % and its kQ 6 % above
+    /// the polynomial's (on B4-70 it is within 7 % over J 0.2-0.8, docs/propeller.md). Measured:
+    /// turbine power -4.1 %, shaft speed -2.3 %, ship speed -0.24 %, thrust -0.7 %. Asserted: power
+    /// within 5 % and rpm within 3 % (the stronger kT turns the shaft slower; power follows kQ n^3),
+    /// ship speed and thrust within 1 % (the speed order holds the speed, so the thrust is the hull's
+    /// resistance at it, whichever curve makes it). The run stays in the first quadrant, and the
+    /// summary's note names the lattice.
     #[test]
     fn head_seas_on_the_b_series_equivalent_matches_the_polynomial() {
         let base = preset("head-seas-ss6").unwrap();
@@ -419,7 +418,7 @@ mod run_tests {
             ow.kt(j),
             ow.kq(j)
         );
-        for (name, tol) in [("p_turbine_w", 0.08), ("ship_speed_kn", 0.01), ("prop_rpm", 0.05), ("thrust_kn", 0.01)] {
+        for (name, tol) in [("p_turbine_w", 0.05), ("ship_speed_kn", 0.01), ("prop_rpm", 0.03), ("thrust_kn", 0.01)] {
             let (x, y) = (a.signals[name].mean, b.signals[name].mean);
             println!("{name}: b_series {x:.5e}, geometry {y:.5e}, {:+.2} %", 100.0 * (y - x) / x);
             assert!((y - x).abs() < tol * x.abs(), "{name}: {x} vs {y}");
