@@ -167,3 +167,40 @@ fn the_vortex_lattice_against_jessup_and_the_polynomial() {
         }
     }
 }
+
+/// Held out from the derived B4-70 table: other members of the series through the vortex lattice,
+/// their blades from `b_series_equivalent` (chords scaled by Ae/A0 / Z, the series' thickness and
+/// camber rules, constant pitch but for Z = 4), against the polynomial of the same Z, P/D, Ae/A0,
+/// at J 0.2 to 0.8 where the polynomial's KT is at least 0.05. Measured: B5-75 P/D 1.0 (the ship's)
+/// KT -1.4 to +14.8 %, KQ +6 to +9 %; B3-50 P/D 1.0 KT -8.5 to +1.2 %, KQ within 2.3 %; B6-85 P/D 1.0
+/// KT 0 to +17.7 %, KQ +7 to +10 %; B5-60 P/D 0.8 KT +6.5 to +18.7 %, KQ +8 to +15 %; B3-65 P/D 1.2
+/// KT -12 to -18 %, KQ -10 to -13 %. Worst 18.7 % in KT and 14.6 % in KQ; held 19 % and 15 %. Not the
+/// 10 % of B4-70: the polynomial is a regression over the series' models (15 deg rake, their own
+/// sections), and these blades are the series' rules applied to our table, not those models.
+#[test]
+fn the_vortex_lattice_on_other_b_series_members() {
+    use aes_core::plant::blade::vortex_lattice::open_water as lattice;
+    use aes_core::plant::propeller_geometry::b_series_equivalent;
+    let b_flow = Flow::fresh_water(0.5, 10.4);
+    let js = [0.2, 0.4, 0.6, 0.8];
+    let (mut worst_kt, mut worst_kq) = (0.0f64, 0.0f64);
+    for (z, pd, ae) in [(3, 1.0, 0.50), (5, 1.0, 0.75), (6, 1.0, 0.85), (5, 0.8, 0.60), (3, 1.2, 0.65)] {
+        let g = b_series_equivalent(z, pd, ae, 0.167).unwrap();
+        let ow = OpenWater::b_series(pd, ae, z).unwrap();
+        eprintln!(
+            "B{z}-{:.0} P/D {pd}: | J | KT lattice | KT B-series | diff | 10KQ lattice | 10KQ B-series | diff |",
+            100.0 * ae
+        );
+        for p in lattice(&g, &js, &b_flow).unwrap() {
+            assert!(p.converged);
+            print_against(p.j, p.kt, p.kq, &ow);
+            let (dt, dq) = (p.kt / ow.kt(p.j) - 1.0, p.kq / ow.kq(p.j) - 1.0);
+            if ow.kt(p.j) >= 0.05 {
+                worst_kt = worst_kt.max(dt.abs());
+                worst_kq = worst_kq.max(dq.abs());
+            }
+        }
+    }
+    eprintln!("worst KT {worst_kt:.3}, KQ {worst_kq:.3}");
+    assert!(worst_kt < 0.19 && worst_kq < 0.15, "worst KT {worst_kt:.3}, KQ {worst_kq:.3}");
+}
