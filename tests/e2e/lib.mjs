@@ -30,11 +30,22 @@ export function checker() {
 
 // The browser; every page of its contexts loads the page's test hooks (www/js/testhooks.js: the
 // window.__* names the tests read), asked for by a flag set before the page's scripts run.
+// A browser that dies while starting (seen once: a crash before the first page, nothing of ours
+// loaded) is started again, up to three times, and said so; a crash after it has started fails
+// the test as before.
 export async function launch() {
-  const browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-  });
+  let browser = null;
+  for (let attempt = 1; !browser; attempt++) {
+    try {
+      browser = await chromium.launch({
+        executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+        args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+      });
+    } catch (e) {
+      if (attempt >= 3) throw e;
+      console.log(`     the browser did not start (attempt ${attempt} of 3: ${String(e.message).split('\n')[0]}); starting it again`);
+    }
+  }
   const newContext = browser.newContext.bind(browser);
   browser.newContext = async (options) => {
     const c = await newContext(options);
