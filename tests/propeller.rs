@@ -17,8 +17,12 @@ const P4119_MEASURED: &str = include_str!("../core/data/dtmb4119_open_water.csv"
 const B4_70: &str = include_str!("../core/data/b4_70_geometry.csv");
 
 fn measured_4119() -> Vec<[f64; 3]> {
-    P4119_MEASURED
-        .lines()
+    measured(P4119_MEASURED)
+}
+
+/// The [J, KT, 10KQ] rows of a measured open-water file (comment lines `#`, a header `J,...`).
+fn measured(text: &str) -> Vec<[f64; 3]> {
+    text.lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with('J'))
         .map(|l| {
             let v: Vec<f64> = l.split(',').map(|c| c.parse().unwrap()).collect();
@@ -203,4 +207,42 @@ fn the_vortex_lattice_on_other_b_series_members() {
     }
     eprintln!("worst KT {worst_kt:.3}, KQ {worst_kq:.3}");
     assert!(worst_kt < 0.19 && worst_kq < 0.15, "worst KT {worst_kt:.3}, KQ {worst_kq:.3}");
+}
+
+/// Held out: the PPTC propeller VP1304 (SVA Potsdam; five blades, P/D 1.635 at 0.7 R, Ae/A0 0.78,
+/// 18.8 deg skew that neither model sees, SVA's own sections read as a = 0.8 camber), against SVA
+/// Report 3752's open-water test at n = 15 1/s in fresh water (core/data/vp1304_*.csv give the
+/// sources). Nothing was looked at before the models were finished. Measured at J 0.80 / 0.93 /
+/// 1.07 / 1.20 / 1.33 / 1.46: the vortex lattice's KT -12.4 / -8.9 / -4.2 / +2.5 / +14.3 / +35.3 %,
+/// 10KQ -2.6 / -2.0 / -1.1 / +0.4 / +3.5 / +7.5 %; the lifting line's KT +4.0 / +5.5 / +5.7 / +4.1 /
+/// -1.0 / -16.8 %. The lattice's KT falls too slowly with J on this heavily pitched blade; its torque
+/// holds. Held: the lattice's KT within 13 % to J 1.2 and 36 % beyond, its 10KQ within 8 %.
+#[test]
+fn vp1304_held_out() {
+    use aes_core::plant::blade::vortex_lattice::open_water as lattice;
+    let g = BladeGeometry::from_csv(include_str!("../core/data/vp1304_geometry.csv"), 5, 0.3).unwrap();
+    let m = measured(include_str!("../core/data/vp1304_open_water.csv"));
+    let flow = Flow::fresh_water(0.25, 15.0);
+    let js: Vec<f64> = m.iter().map(|r| r[0]).collect();
+    let (ours, line) = (lattice(&g, &js, &flow).unwrap(), open_water(&g, &js, &flow).unwrap());
+    eprintln!("| J | KT lattice | KT line | KT measured | 10KQ lattice | 10KQ line | 10KQ measured |");
+    for ((r, p), l) in m.iter().zip(&ours).zip(&line) {
+        assert!(p.converged && l.converged, "J {}", r[0]);
+        let (dt, dq, lt) = (p.kt / r[1] - 1.0, 10.0 * p.kq / r[2] - 1.0, l.kt / r[1] - 1.0);
+        eprintln!(
+            "| {:.4} | {:.4} ({:+.1} %) | {:.4} ({:+.1} %) | {:.4} | {:.4} ({:+.1} %) | {:.4} | {:.4} |",
+            r[0],
+            p.kt,
+            100.0 * dt,
+            l.kt,
+            100.0 * lt,
+            r[1],
+            10.0 * p.kq,
+            100.0 * dq,
+            10.0 * l.kq,
+            r[2]
+        );
+        let kt_tol = if r[0] <= 1.21 { 0.13 } else { 0.36 };
+        assert!(dt.abs() < kt_tol && dq.abs() < 0.08, "J {}: KT {dt:+.3}, 10KQ {dq:+.3}", r[0]);
+    }
 }
